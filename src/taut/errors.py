@@ -1,0 +1,26 @@
+"""Typed exceptions.  Every error caused by the caller's input derives from
+:class:`TautError`; the command line turns those into one message and exit status 2."""
+
+
+class TautError(Exception):
+    """Bad input to taut: a malformed file, an impossible pose, unreachable lengths."""
+
+
+class RobotFileError(TautError):
+    """A robot description that cannot be read or does not validate."""
+
+
+class PoseError(TautError):
+    """A pose of the wrong size, non-finite, or outside joint limits."""
+
+
+class InfeasiblePoseError(PoseError):
+    """A pose at which the requested quantity does not exist (e.g. a zero-length cable)."""
+
+
+class SingularConfigurationError(TautError):
+    """A configuration at which the structure matrix or a Jacobian is singular."""
+
+
+class UnreachableLengthsError(TautError):
+    """Cable lengths that no pose of the robot fits."""

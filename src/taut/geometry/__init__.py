@@ -1,0 +1,10 @@
+"""Pure geometry, no robot: rotations and pose conventions."""
+
+from taut.geometry.rotation import (
+    CONVENTIONS,
+    angles_from_matrix,
+    planar_rotation,
+    rotation_matrix,
+)
+
+__all__ = ["CONVENTIONS", "angles_from_matrix", "planar_rotation", "rotation_matrix"]

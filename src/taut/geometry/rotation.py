@@ -1,0 +1,76 @@
+"""Rotation matrices for the orientation conventions of ``DESIGN.md`` §2.
+
+* ``xyz-fixed``: ``R = Rz(c) Ry(b) Rx(a)`` — rotations about the fixed x, y, z axes
+  (the convention of Tables 4.3–4.6 of ``001_eb92e2f6589fc229.txt``).
+* ``xyz-moving``: ``R = Rx(a) Ry(b) Rz(c)`` — Eq. (3.1.1) of ``004_f30792d78b61e7c2.txt``.
+* ``tilt-torsion``: ``R = Rz(φ) Ry(θ) Rz(σ − φ)`` — Eq. (1) of ``002_19d5d688a3999fb0.txt``;
+  the angles are given in the order ``(φ, θ, σ)``.
+
+All functions work over arrays: angles of shape ``(..., 3)`` give matrices ``(..., 3, 3)``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+CONVENTIONS = ("xyz-fixed", "xyz-moving", "tilt-torsion")
+
+
+def _rx(a):
+    c, s = np.cos(a), np.sin(a)
+    o, z = np.ones_like(a), np.zeros_like(a)
+    return np.stack([np.stack([o, z, z], -1), np.stack([z, c, -s], -1), np.stack([z, s, c], -1)], -2)
+
+
+def _ry(a):
+    c, s = np.cos(a), np.sin(a)
+    o, z = np.ones_like(a), np.zeros_like(a)
+    return np.stack([np.stack([c, z, s], -1), np.stack([z, o, z], -1), np.stack([-s, z, c], -1)], -2)
+
+
+def _rz(a):
+    c, s = np.cos(a), np.sin(a)
+    o, z = np.ones_like(a), np.zeros_like(a)
+    return np.stack([np.stack([c, -s, z], -1), np.stack([s, c, z], -1), np.stack([z, z, o], -1)], -2)
+
+
+def planar_rotation(theta) -> np.ndarray:
+    """``R(θ)`` of shape ``(..., 2, 2)`` for angles of shape ``(...)``."""
+    theta = np.asarray(theta, dtype=float)
+    c, s = np.cos(theta), np.sin(theta)
+    return np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)
+
+
+def rotation_matrix(angles, convention: str = "xyz-fixed") -> np.ndarray:
+    """Rotation matrices ``(..., 3, 3)`` from three angles ``(..., 3)`` in ``convention``."""
+    angles = np.asarray(angles, dtype=float)
+    a, b, c = angles[..., 0], angles[..., 1], angles[..., 2]
+    if convention == "xyz-fixed":
+        return _rz(c) @ _ry(b) @ _rx(a)
+    if convention == "xyz-moving":
+        return _rx(a) @ _ry(b) @ _rz(c)
+    if convention == "tilt-torsion":
+        return _rz(a) @ _ry(b) @ _rz(c - a)
+    raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
+
+
+def angles_from_matrix(R, convention: str = "xyz-fixed") -> np.ndarray:
+    """Inverse of :func:`rotation_matrix`: angles ``(..., 3)`` with the middle angle in
+    ``[-π/2, π/2]`` (``[0, π]`` for tilt-and-torsion)."""
+    R = np.asarray(R, dtype=float)
+    if convention == "xyz-fixed":
+        b = np.arcsin(np.clip(-R[..., 2, 0], -1.0, 1.0))
+        a = np.arctan2(R[..., 2, 1], R[..., 2, 2])
+        c = np.arctan2(R[..., 1, 0], R[..., 0, 0])
+    elif convention == "xyz-moving":
+        b = np.arcsin(np.clip(R[..., 0, 2], -1.0, 1.0))
+        a = np.arctan2(-R[..., 1, 2], R[..., 2, 2])
+        c = np.arctan2(-R[..., 0, 1], R[..., 0, 0])
+    elif convention == "tilt-torsion":
+        b = np.arccos(np.clip(R[..., 2, 2], -1.0, 1.0))
+        a = np.arctan2(R[..., 1, 2], R[..., 0, 2])
+        sigma_minus_phi = np.arctan2(R[..., 2, 1], -R[..., 2, 0])
+        c = sigma_minus_phi + a
+    else:
+        raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
+    return np.stack([a, b, c], -1)

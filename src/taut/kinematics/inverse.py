@@ -1,0 +1,101 @@
+"""Inverse kinematics of the standard CDPR model (``000_3d5147f1d4639546.txt`` §2.1.1).
+
+Cable *i* runs from its exit point ``a_i`` to ``b_i = p + R r_i`` (Eq. 2.1); its length is
+``l_i = ‖a_i − b_i‖`` and its unit vector ``u_i = (a_i − b_i)/l_i`` points from the
+platform to the exit point.  The structure matrix is ``W = [u_i ; (b_i − p) × u_i]``
+(Eq. 2.8; Eq. 2.10 for a point mass), so that equilibrium reads ``W τ + w_ext = 0``
+(Eq. 2.11).  For jointed platforms (``004_…``) ``b_i`` is the anchor on the cable's own
+body and moments are still taken about the platform reference point ``p``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from taut.errors import InfeasiblePoseError
+from taut.kinematics.pose import as_poses, body_frames, platform_frame
+from taut.model.robot import Robot
+
+#: A cable shorter than this [m] has no direction: the pose is rejected.
+MIN_LENGTH = 1e-12
+
+
+@dataclass(frozen=True)
+class IKResult:
+    """Inverse kinematics over ``N`` poses of a robot with ``n`` cables in ``d`` dimensions."""
+
+    lengths: np.ndarray  #: ``(N, n)`` cable lengths
+    directions: np.ndarray  #: ``(N, n, d)`` unit vectors ``u_i`` (platform → exit point)
+    anchors: np.ndarray  #: ``(N, n, d)`` platform anchors ``b_i`` in the fixed frame
+    structure_matrix: np.ndarray  #: ``(N, m, n)`` wrench matrix ``W``
+
+
+def anchor_points(robot: Robot, poses) -> np.ndarray:
+    """Platform anchors ``b_i`` in the fixed frame, ``(N, n, d)`` (``(n, d)`` for one pose)."""
+    arr, single = as_poses(robot, poses)
+    b = _anchors(robot, arr)
+    return b[0] if single else b
+
+
+def _anchors(robot: Robot, poses: np.ndarray) -> np.ndarray:
+    if robot.is_point_mass:
+        return np.broadcast_to(poses[:, None, : robot.dimension], (poses.shape[0], robot.n_cables, robot.dimension))
+    if robot.n_joints == 0:
+        p, R = platform_frame(robot, poses)
+        return p[:, None, :] + np.einsum("nij,kj->nki", R, robot.anchors)
+    pos, rot = body_frames(robot, poses)
+    idx = robot.cable_bodies
+    return pos[:, idx, :] + np.einsum("nkij,kj->nki", rot[:, idx], robot.anchors)
+
+
+def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    if a.shape[-1] == 2:
+        return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+    return np.stack(
+        [
+            a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
+            a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
+            a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0],
+        ],
+        -1,
+    )
+
+
+def inverse_kinematics(robot: Robot, poses) -> IKResult:
+    """Lengths, unit vectors, anchors and structure matrix at each pose.
+
+    Raises :class:`InfeasiblePoseError` when a cable has zero length (its direction and the
+    structure matrix do not exist there)."""
+    arr, single = as_poses(robot, poses)
+    b = _anchors(robot, arr)
+    v = robot.exits[None, :, :] - b
+    lengths = np.sqrt(np.einsum("nki,nki->nk", v, v))
+    if lengths.size and lengths.min() < MIN_LENGTH:
+        k, i = np.unravel_index(np.argmin(lengths), lengths.shape)
+        raise InfeasiblePoseError(
+            f"{robot.name}: at pose {k + 1} cable {i + 1} has zero length (its anchor is at its exit point)"
+        )
+    u = v / lengths[..., None]
+    if robot.is_point_mass:
+        W = np.swapaxes(u, 1, 2)
+    else:
+        arm = b - arr[:, None, : robot.dimension]
+        m = _cross(arm, u)
+        m = m[..., None] if m.ndim == 2 else m
+        W = np.concatenate([np.swapaxes(u, 1, 2), np.swapaxes(m, 1, 2)], axis=1)
+    res = IKResult(lengths, u, b, W)
+    if single:
+        return IKResult(lengths[0], u[0], b[0], W[0])
+    return res
+
+
+def cable_lengths(robot: Robot, poses) -> np.ndarray:
+    """Cable lengths ``(N, n)`` (``(n,)`` for one pose)."""
+    return inverse_kinematics(robot, poses).lengths
+
+
+def structure_matrix(robot: Robot, poses) -> np.ndarray:
+    """Structure (wrench) matrix ``W`` of shape ``(N, m, n)`` (``(m, n)`` for one pose)."""
+    return inverse_kinematics(robot, poses).structure_matrix

@@ -1,0 +1,123 @@
+"""Reading and writing robot files (YAML or JSON) with one clear message per problem.
+
+A file that cannot be read, is not YAML/JSON, or does not validate raises
+:class:`taut.RobotFileError` whose message names the file, the field (1-based list
+positions, as cable numbers are shown to users) and what was expected.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import yaml
+from pydantic import ValidationError
+
+from taut.errors import RobotFileError
+from taut.model.robot import Robot
+
+
+def _field(loc: tuple) -> str:
+    out = ""
+    for part in loc:
+        if isinstance(part, int):
+            out += f"[{part + 1}]"
+        elif part in ("Circle", "Polygon", "circle", "polygon", "function-after[_consistent(), Robot]"):
+            continue
+        else:
+            out += ("." if out else "") + str(part)
+    return out or "(top level)"
+
+
+def _message(err: dict) -> str:
+    kind, msg = err["type"], err["msg"]
+    if kind == "extra_forbidden":
+        return "unknown key (not part of the taut/1 format)"
+    if kind == "missing":
+        return "required field is missing"
+    if kind == "value_error":
+        return msg.removeprefix("Value error, ")
+    if kind == "union_tag_invalid":
+        return f"unknown kind; expected one of {err.get('ctx', {}).get('expected_tags', '')}"
+    if kind == "finite_number":
+        return "expected a finite number"
+    inp = err.get("input")
+    got = "" if isinstance(inp, (dict, list)) else f", got {inp!r}"
+    return f"{msg.lower()}{got}"
+
+
+def validation_message(source: str, exc: ValidationError) -> str:
+    """Turn a pydantic error into lines ``SOURCE: FIELD: what is wrong``."""
+    lines = []
+    for err in exc.errors():
+        loc = tuple(err["loc"])
+        msg = _message(err)
+        field = _field(loc)
+        if field == "(top level)" and ": " in msg and msg.split(": ", 1)[0].replace(".", "").replace("[", "").replace("]", "").replace("_", "").isalnum():
+            field, msg = msg.split(": ", 1)
+        lines.append(f"{source}: {field}: {msg}")
+    return "\n".join(lines)
+
+
+def robot_from_dict(data, source: str = "<robot>") -> Robot:
+    """Validate a parsed robot description."""
+    if not isinstance(data, dict):
+        raise RobotFileError(f"{source}: expected a mapping of robot fields at the top level, got {type(data).__name__}")
+    try:
+        return Robot.model_validate(data)
+    except ValidationError as exc:
+        raise RobotFileError(validation_message(source, exc)) from None
+
+
+def parse_robot(text: str, source: str = "<robot>", *, json_text: bool = False) -> Robot:
+    """Parse YAML or JSON text into a validated :class:`Robot`.
+
+    JSON is read by :mod:`json` (which knows ``Infinity`` for unbounded tensions), YAML by
+    ``yaml.safe_load`` (where it is ``.inf``)."""
+    if json_text:
+        try:
+            data = json.loads(text)
+        except json.JSONDecodeError as exc:
+            raise RobotFileError(f"{source}: not valid JSON at line {exc.lineno}, column {exc.colno}: {exc.msg}") from None
+        return robot_from_dict(data, source)
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as exc:
+        where = getattr(exc, "problem_mark", None)
+        at = f" at line {where.line + 1}, column {where.column + 1}" if where is not None else ""
+        raise RobotFileError(f"{source}: not valid YAML/JSON{at}: {getattr(exc, 'problem', exc)}") from None
+    return robot_from_dict(data, source)
+
+
+def load_robot(spec: str | Path) -> Robot:
+    """Load a robot from a file path, or a built-in example by name (``taut examples``)."""
+    from taut.model.examples import example, example_names
+
+    path = Path(spec)
+    if not path.exists():
+        if str(spec) in example_names():
+            return example(str(spec))
+        raise RobotFileError(
+            f"{spec}: no such file and not a built-in example (see `taut examples`)"
+        )
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise RobotFileError(f"{path}: cannot read the file: {exc}") from None
+    return parse_robot(text, str(path), json_text=path.suffix.lower() == ".json")
+
+
+def robot_to_dict(robot: Robot) -> dict:
+    """The robot as plain data, without fields left at their defaults."""
+    return robot.model_dump(mode="python", exclude_defaults=True) | {"format": robot.format}
+
+
+def save_robot(robot: Robot, path: str | Path) -> None:
+    """Write ``robot`` as JSON (``.json``) or YAML (anything else)."""
+    path = Path(path)
+    data = robot_to_dict(robot)
+    if path.suffix.lower() == ".json":
+        text = json.dumps(data, indent=2)
+    else:
+        text = yaml.safe_dump(data, sort_keys=False, default_flow_style=None)
+    path.write_text(text, encoding="utf-8")

@@ -1,0 +1,178 @@
+"""External wrenches and wrench sets.
+
+The external wrench on the platform (``000_3d5147f1d4639546.txt`` Eq. 2.11 writes
+equilibrium as ``W τ = −w_ext``) is the robot's constant wrench plus its weight, both
+applied at ``platform.wrench_point``, with moments taken about the platform reference
+point ``p``.
+
+A wrench set is described by its support function ``h(n) = max_{w ∈ set} n·w``; every
+convex set below (a single wrench, a box, a polytope given by its vertices, and the
+ellipsoid ``{c + L v : ‖v‖ ≤ 1}`` of ``002_19d5d688a3999fb0.txt`` §2) provides it, which is
+all the wrench-feasibility tests of :mod:`taut.statics.feasibility` need.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from taut.errors import TautError
+from taut.kinematics.inverse import _cross
+from taut.kinematics.pose import as_poses, platform_frame
+from taut.model.robot import Robot
+
+
+def external_wrench(robot: Robot, poses) -> np.ndarray:
+    """``w_ext`` at each pose, ``(N, m)`` (``(m,)`` for one pose)."""
+    arr, single = as_poses(robot, poses)
+    d, m = robot.dimension, robot.wrench_dim
+    plat = robot.platform
+    force = np.zeros(d)
+    wrench = np.zeros(m)
+    if plat.wrench is not None:
+        wrench += np.asarray(plat.wrench, float)
+    if plat.mass is not None:
+        g = np.asarray(plat.gravity, float) if plat.gravity is not None else -9.81 * np.eye(d)[d - 1]
+        force = plat.mass * g
+        wrench[:d] += force
+    out = np.broadcast_to(wrench, (arr.shape[0], m)).copy()
+    if not robot.is_point_mass and plat.wrench_point is not None:
+        _, R = platform_frame(robot, arr)
+        arm = R @ np.asarray(plat.wrench_point, float)
+        moment = _cross(arm, out[:, :d])
+        out[:, d:] += moment[:, None] if moment.ndim == 1 else moment
+    return out[0] if single else out
+
+
+class WrenchSet:
+    """A convex set of wrenches, known through its support function."""
+
+    dim: int
+
+    def support(self, normals: np.ndarray) -> np.ndarray:
+        """``h(n) = max_{w ∈ set} n·w`` for normals ``(..., dim)``."""
+        raise TypeError(f"{type(self).__name__} does not define a support function")
+
+    def center(self) -> np.ndarray:
+        raise TypeError(f"{type(self).__name__} does not define a center")
+
+
+def _vector(x, what: str) -> np.ndarray:
+    arr = np.asarray(x, dtype=float)
+    if arr.ndim != 1 or arr.size == 0 or not np.all(np.isfinite(arr)):
+        raise TautError(f"{what} must be a finite vector, got {x!r}")
+    return arr
+
+
+@dataclass(frozen=True)
+class SingleWrench(WrenchSet):
+    """One wrench ``w``."""
+
+    wrench: np.ndarray
+
+    def __post_init__(self):
+        object.__setattr__(self, "wrench", _vector(self.wrench, "wrench"))
+
+    @property
+    def dim(self) -> int:
+        return self.wrench.size
+
+    def support(self, normals):
+        return np.asarray(normals) @ self.wrench
+
+    def center(self):
+        return self.wrench
+
+
+@dataclass(frozen=True)
+class BoxWrenchSet(WrenchSet):
+    """The box ``lower ≤ w ≤ upper`` (componentwise)."""
+
+    lower: np.ndarray
+    upper: np.ndarray
+
+    def __post_init__(self):
+        lo, hi = _vector(self.lower, "box lower corner"), _vector(self.upper, "box upper corner")
+        if lo.shape != hi.shape:
+            raise TautError(f"box corners have different sizes: {lo.size} and {hi.size}")
+        if np.any(lo > hi):
+            raise TautError(f"box wrench set is inverted: lower {lo.tolist()} > upper {hi.tolist()}")
+        object.__setattr__(self, "lower", lo)
+        object.__setattr__(self, "upper", hi)
+
+    @classmethod
+    def around(cls, center, half_widths) -> "BoxWrenchSet":
+        c, r = _vector(center, "box center"), np.abs(_vector(half_widths, "box half-widths"))
+        return cls(c - r, c + r)
+
+    @property
+    def dim(self) -> int:
+        return self.lower.size
+
+    def support(self, normals):
+        n = np.asarray(normals)
+        c, r = (self.lower + self.upper) / 2, (self.upper - self.lower) / 2
+        return n @ c + np.abs(n) @ r
+
+    def center(self):
+        return (self.lower + self.upper) / 2
+
+    def vertices(self) -> np.ndarray:
+        """The ``2^dim`` corners."""
+        bits = (np.arange(2**self.dim)[:, None] >> np.arange(self.dim)) & 1
+        return np.where(bits, self.upper, self.lower)
+
+
+@dataclass(frozen=True)
+class PolytopeWrenchSet(WrenchSet):
+    """The convex hull of ``vertices`` ``(k, dim)``."""
+
+    vertices: np.ndarray
+
+    def __post_init__(self):
+        v = np.asarray(self.vertices, dtype=float)
+        if v.ndim != 2 or v.shape[0] == 0 or not np.all(np.isfinite(v)):
+            raise TautError("a polytope wrench set needs a (k, dim) array of finite vertices")
+        object.__setattr__(self, "vertices", v)
+
+    @property
+    def dim(self) -> int:
+        return self.vertices.shape[1]
+
+    def support(self, normals):
+        return (np.asarray(normals) @ self.vertices.T).max(axis=-1)
+
+    def center(self):
+        return self.vertices.mean(axis=0)
+
+
+@dataclass(frozen=True)
+class EllipsoidWrenchSet(WrenchSet):
+    """The ellipsoid ``{c + L v : ‖v‖ ≤ 1}`` with ``shape = L Lᵀ`` positive semi-definite
+    (``002_…`` §2: the wrench uncertainty ``(w − w0)ᵀ E⁻¹ (w − w0) ≤ 1``, ``E = shape``)."""
+
+    center_wrench: np.ndarray
+    shape: np.ndarray
+
+    def __post_init__(self):
+        c = _vector(self.center_wrench, "ellipsoid center")
+        S = np.asarray(self.shape, dtype=float)
+        if S.shape != (c.size, c.size) or not np.all(np.isfinite(S)):
+            raise TautError(f"ellipsoid shape must be a finite {c.size}x{c.size} matrix")
+        if not np.allclose(S, S.T) or np.linalg.eigvalsh(S).min() < -1e-12 * max(1.0, np.abs(S).max()):
+            raise TautError("ellipsoid shape must be symmetric positive semi-definite")
+        object.__setattr__(self, "center_wrench", c)
+        object.__setattr__(self, "shape", S)
+
+    @property
+    def dim(self) -> int:
+        return self.center_wrench.size
+
+    def support(self, normals):
+        n = np.asarray(normals)
+        q = np.einsum("...i,ij,...j->...", n, self.shape, n)
+        return n @ self.center_wrench + np.sqrt(np.maximum(q, 0.0))
+
+    def center(self):
+        return self.center_wrench
