@@ -17,7 +17,7 @@ def unstretched_length(lengths, tensions, stiffness) -> np.ndarray:
         raise TautError("axial stiffness EA must be positive and finite")
     if np.any(t < 0):
         raise TautError("cable tensions must be non-negative")
-    return ea * l / (ea + t)
+    return l / (1.0 + t / ea)
 
 
 def tension_from_stretch(lengths, unstretched, stiffness) -> np.ndarray:

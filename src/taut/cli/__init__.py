@@ -1,0 +1,1 @@
+"""The ``taut`` command line (``DESIGN.md`` §4): thin wrappers over the library."""

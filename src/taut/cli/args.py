@@ -1,0 +1,64 @@
+"""Parsing of the command line's value syntax: poses, vectors, grids."""
+
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+
+from taut.errors import PoseError, TautError
+from taut.kinematics.pose import as_poses
+from taut.model.robot import Robot
+
+
+_PI = re.compile(r"^([+-]?)(\d*\.?\d*)\*?pi(?:/(\d*\.?\d+))?$")
+
+
+def number(text: str, what: str) -> float:
+    """A float; angles may be written ``35deg`` or as multiples of pi (``pi/8``, ``-3pi/4``)."""
+    t = text.strip().lower().replace(" ", "")
+    scale = 1.0
+    if t.endswith("deg"):
+        t, scale = t[:-3], math.pi / 180
+    m = _PI.match(t)
+    try:
+        if m:
+            sign, k, div = m.groups()
+            value = (-1 if sign == "-" else 1) * float(k or 1) * math.pi / float(div or 1)
+        else:
+            value = float(t)
+    except (ValueError, ZeroDivisionError):
+        raise TautError(f"{what}: {text!r} is not a number") from None
+    value *= scale
+    if not math.isfinite(value):
+        raise TautError(f"{what}: {text!r} is not finite")
+    return value
+
+
+def vector(text: str, what: str) -> np.ndarray:
+    """Comma-separated numbers."""
+    parts = [p for p in text.split(",")]
+    if not text.strip() or any(not p.strip() for p in parts):
+        raise TautError(f"{what}: expected comma-separated numbers, got {text!r}")
+    return np.array([number(p, what) for p in parts])
+
+
+def pose(robot: Robot, text: str) -> np.ndarray:
+    """``x,y`` / ``x,y,theta`` / ``x,y,z,a,b,c`` followed by joint coordinates."""
+    values = vector(text, "--pose")
+    if values.size != robot.pose_size:
+        raise PoseError(
+            f"--pose: {robot.name} needs {robot.pose_size} coordinates ({','.join(robot.pose_names)}), got {values.size}"
+        )
+    return as_poses(robot, values)[0][0]
+
+
+def default_pose(robot: Robot) -> np.ndarray:
+    """The example's `home` reference pose if it has one, else the centroid of the exits."""
+    if robot.reference is not None and robot.reference.poses:
+        name = "home" if "home" in robot.reference.poses else next(iter(robot.reference.poses))
+        return np.asarray(robot.reference.poses[name], float)
+    from taut.kinematics.forward import default_guess
+
+    return default_guess(robot)

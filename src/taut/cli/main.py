@@ -1,0 +1,279 @@
+"""``taut COMMAND ROBOT [options]`` (``DESIGN.md`` §4).
+
+Exit status: 0 success, 2 bad input (any :class:`taut.TautError`, or bad options),
+1 internal error.  ``--json`` prints the machine-readable result on stdout; the
+fields named in the issues are a contract.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+from taut.cli import args as A
+from taut.errors import TautError
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):
+        self.print_usage(sys.stderr)
+        print(f"taut: error: {message}", file=sys.stderr)
+        raise SystemExit(2)
+
+
+def _robot(spec: str):
+    from taut.model import load_robot
+
+    return load_robot(spec)
+
+
+def _emit(data: dict, as_json: bool, human) -> None:
+    if as_json:
+        print(json.dumps(data, indent=2, allow_nan=False))
+    else:
+        human(data)
+
+
+def _console():
+    from rich.console import Console
+
+    return Console()
+
+
+def _matrix_table(title, rows, header):
+    from rich.table import Table
+
+    t = Table(title=title)
+    for h in header:
+        t.add_column(h, justify="right")
+    for r in rows:
+        t.add_row(*r)
+    return t
+
+
+def _fmt(x: float) -> str:
+    return f"{x:.6g}"
+
+
+# ---- commands --------------------------------------------------------------------
+
+
+def cmd_examples(ns) -> int:
+    from taut.model import example_descriptions
+
+    desc = example_descriptions()
+    if ns.json:
+        print(json.dumps({"examples": [{"name": k, "description": v} for k, v in desc.items()]}, indent=2))
+    else:
+        width = max(map(len, desc))
+        for k, v in desc.items():
+            print(f"{k:<{width}}  {v}")
+    return 0
+
+
+def cmd_schema(ns) -> int:
+    from taut.model.schema import schema_text
+
+    sys.stdout.write(schema_text())
+    return 0
+
+
+def cmd_ik(ns) -> int:
+    from taut.kinematics import inverse_kinematics
+
+    robot = _robot(ns.robot)
+    pose = A.pose(robot, ns.pose) if ns.pose else A.default_pose(robot)
+    ik = inverse_kinematics(robot, pose)
+    data = {
+        "robot": robot.name,
+        "pose": pose.tolist(),
+        "lengths": ik.lengths.tolist(),
+        "directions": ik.directions.tolist(),
+        "anchors": ik.anchors.tolist(),
+        "structure_matrix": ik.structure_matrix.tolist(),
+    }
+
+    def human(d):
+        con = _console()
+        con.print(f"[bold]{robot.name}[/] at pose {', '.join(f'{n}={_fmt(v)}' for n, v in zip(robot.pose_names, pose))}")
+        dims = "xyz"[: robot.dimension]
+        rows = [[str(i + 1), _fmt(length), *(_fmt(c) for c in u)] for i, (length, u) in enumerate(zip(ik.lengths, ik.directions))]
+        con.print(_matrix_table("cables", rows, ["cable", "length [m]", *(f"u_{c}" for c in dims)]))
+        W = ik.structure_matrix
+        rows = [[f"{x:.4g}" for x in row] for row in W]
+        con.print(_matrix_table("structure matrix W", rows, [str(i + 1) for i in range(W.shape[1])]))
+
+    _emit(data, ns.json, human)
+    if ns.plot:
+        from taut.viz import draw_robot
+
+        ax = draw_robot(robot, pose)
+        ax.figure.savefig(ns.plot, dpi=110, bbox_inches="tight")
+    return 0
+
+
+def cmd_tensions(ns) -> int:
+    from taut.statics.tension import distribute_tensions
+
+    robot = _robot(ns.robot)
+    pose = A.pose(robot, ns.pose) if ns.pose else A.default_pose(robot)
+    wrench = None
+    if ns.wrench:
+        wrench = A.vector(ns.wrench, "--wrench")
+        if wrench.size != robot.wrench_dim:
+            raise TautError(f"--wrench: {robot.name} takes a wrench of {robot.wrench_dim} components, got {wrench.size}")
+    res = distribute_tensions(robot, pose, wrench=wrench, method=ns.method)
+    feasible = bool(res.feasible)
+    data = {
+        "robot": robot.name,
+        "pose": pose.tolist(),
+        "tensions": res.tensions.tolist() if feasible else None,
+        "feasible": feasible,
+        "status": str(res.status),
+        "method": res.method,
+    }
+
+    def human(d):
+        con = _console()
+        if not feasible:
+            why = "no tension distribution exists" if d["status"] == "infeasible" else f"method {ns.method} found no solution"
+            con.print(f"[bold red]infeasible[/]: {why} at this pose within the tension bounds")
+            return
+        rows = [[str(i + 1), _fmt(t)] for i, t in enumerate(res.tensions)]
+        con.print(_matrix_table(f"tensions ({res.method})", rows, ["cable", "tension [N]"]))
+
+    _emit(data, ns.json, human)
+    return 0
+
+
+def _progress(enabled: bool):
+    if not enabled:
+        return None, None
+    from rich.progress import Progress
+
+    bar = Progress(transient=True)
+    bar.start()
+    task = bar.add_task("workspace", total=None)
+    return bar, lambda done, total: bar.update(task, completed=done, total=total)
+
+
+def cmd_workspace(ns) -> int:
+    from taut.parallel import get_executor
+    from taut.workspace import evaluate_workspace
+
+    robot = _robot(ns.robot)
+    grid = None
+    if ns.grid and "," in ns.grid or (ns.grid and ":" in ns.grid):
+        grid = [tuple(A.vector(axis.replace(":", ","), "--grid")) for axis in ns.grid.split(";")] if ";" in ns.grid else None
+    resolution = int(ns.grid) if ns.grid and ns.grid.isdigit() else None
+    orientation = A.vector(ns.orientation, "--orientation") if ns.orientation else None
+    executor = get_executor(workers=ns.workers, scheduler=ns.scheduler)
+    show = sys.stdout.isatty() and not ns.json
+    bar, progress = _progress(show)
+    try:
+        kwargs = dict(orientation=orientation, executor=executor, progress=progress)
+        if resolution:
+            kwargs["resolution"] = resolution
+        if grid:
+            kwargs["grid"] = grid
+        res = evaluate_workspace(robot, ns.condition, **kwargs)
+    finally:
+        if bar is not None:
+            bar.stop()
+    data = {"robot": robot.name, "condition": ns.condition} | res.summary()
+    if ns.out:
+        res.save(ns.out)
+        data["out"] = str(ns.out)
+    if ns.plot:
+        from taut.viz import plot_workspace
+
+        ax = plot_workspace(res, robot)
+        ax.figure.savefig(ns.plot, dpi=110, bbox_inches="tight")
+        data["plot"] = str(ns.plot)
+
+    def human(d):
+        _console().print(
+            f"{robot.name}: {d['condition']} workspace: {d['inside']} of {d['poses']} poses inside "
+            f"({100 * d['fraction']:.1f} %), {d['elapsed_s']:.3f} s"
+        )
+
+    _emit(data, ns.json, human)
+    return 0
+
+
+def cmd_demo(ns) -> int:
+    from taut.demo import run_demo
+
+    path = run_demo(Path(ns.out))
+    if ns.json:
+        print(json.dumps({"report": str(path)}))
+    else:
+        print(f"report written to {path}")
+    return 0
+
+
+# ---- parser ----------------------------------------------------------------------
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = _Parser(prog="taut", description="Cable-driven parallel robots: kinematics, statics, workspaces.")
+    sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
+
+    def command(name, help, fn, robot=True):
+        c = sub.add_parser(name, help=help, description=help)
+        if robot:
+            c.add_argument("robot", help="robot file (YAML/JSON) or built-in example name (see `taut examples`)")
+        c.add_argument("--json", action="store_true", help="machine-readable result on stdout")
+        c.set_defaults(fn=fn)
+        return c
+
+    command("examples", "list the built-in example robots", cmd_examples, robot=False)
+    command("schema", "print the JSON Schema of the robot file format", cmd_schema, robot=False)
+
+    pose_help = "pose x,y | x,y,theta | x,y,z,a,b,c then joint coordinates (angles in rad, or 30deg, pi/8); write --pose=-1,... for a leading minus"
+    c = command("ik", "inverse kinematics: cable lengths, directions, structure matrix", cmd_ik)
+    c.add_argument("--pose", help=pose_help)
+    c.add_argument("--plot", metavar="FILE.png", help="draw the robot at the pose")
+
+    c = command("tensions", "tension distribution at a pose", cmd_tensions)
+    c.add_argument("--pose", help=pose_help)
+    c.add_argument("--wrench", help="external wrench (default: the robot's own, weight included)")
+    c.add_argument("--method", default="lp", help="lp | qp | inf | closed-form | improved-closed-form | barycentric")
+
+    c = command("workspace", "workspace over a grid of poses", cmd_workspace)
+    c.add_argument("--condition", required=True, help="wrench-closure | wrench-feasible | static")
+    c.add_argument("--grid", help="points per axis (e.g. 50), or per-axis ranges 'x0:x1:n;y0:y1:n[;z0:z1:n]'")
+    c.add_argument("--orientation", help="fixed platform orientation (theta, or a,b,c) and joint coordinates")
+    c.add_argument("--out", metavar="FILE.npz", help="save poses and verdicts")
+    c.add_argument("--plot", metavar="FILE.png", help="plot the workspace")
+    c.add_argument("--workers", type=int, default=None, help="local worker processes")
+    c.add_argument("--scheduler", metavar="ADDRESS", help="dask.distributed scheduler, e.g. tcp://host:8786")
+
+    c = command("demo", "run taut on the built-in robots and write an HTML report", cmd_demo, robot=False)
+    c.add_argument("--out", default="report", help="report directory (default: report)")
+    return p
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    ns = parser.parse_args(argv)
+    try:
+        return ns.fn(ns)
+    except TautError as exc:
+        print(f"taut: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("taut: interrupted", file=sys.stderr)
+        return 130
+    except Exception as exc:  # noqa: BLE001 — the CLI reports, it does not dump tracebacks
+        print(f"taut: internal error: {type(exc).__name__}: {exc} (please report it)", file=sys.stderr)
+        return 1
+
+
+def entry() -> None:
+    raise SystemExit(main())
