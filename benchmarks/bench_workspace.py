@@ -1,0 +1,101 @@
+"""Wrench-feasible workspace of ``spatial-8cable`` (box wrench set): hyperplane shifting
+(:mod:`taut.statics.feasibility`) against a loop of ``scipy.optimize.linprog(method="highs")``.
+
+Prints poses/s of the whole evaluation on one core (IK + external wrench + facet test,
+first JIT compile excluded; target >= 100 000 poses/s), the facet test alone, and the
+ratio against the LP loop (one LP per box vertex, stopping at the first infeasible vertex)
+measured on a random subsample and extrapolated per pose, with the number of poses where
+the verdicts differ (must be 0).
+
+    python benchmarks/bench_workspace.py [--resolution 60] [--sample 200]
+"""
+
+import os
+
+for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
+import argparse  # noqa: E402
+import time  # noqa: E402
+
+import numpy as np  # noqa: E402
+from scipy.optimize import linprog  # noqa: E402
+
+import taut  # noqa: E402
+from taut.kinematics import structure_matrix  # noqa: E402
+from taut.kinematics.batch import batch_structure_matrices  # noqa: E402
+from taut.statics.feasibility import wrench_feasible  # noqa: E402
+from taut.statics.wrench import external_wrench  # noqa: E402
+from taut.workspace import default_wrench_set, evaluate_workspace  # noqa: E402
+
+
+def lp_verdict(W, tmin, tmax, w, vertices) -> bool:
+    bounds = [(lo, None if np.isinf(hi) else hi) for lo, hi in zip(tmin, tmax)]
+    for v in vertices:
+        res = linprog(np.zeros(W.shape[1]), A_eq=W, b_eq=-(w + v), bounds=bounds, method="highs")
+        if res.status != 0:
+            return False
+    return True
+
+
+def best_of(fn, repeat=3):
+    times = []
+    out = None
+    for _ in range(repeat):
+        t = time.perf_counter()
+        out = fn()
+        times.append(time.perf_counter() - t)
+    return min(times), out
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--resolution", type=int, default=60)
+    ap.add_argument("--sample", type=int, default=200)
+    args = ap.parse_args()
+
+    robot = taut.example("spatial-8cable")
+    box = default_wrench_set(robot)
+    print(f"robot: {robot.name} ({robot.n_cables} cables, m = {robot.wrench_dim})")
+    print(f"wrench set: box around the external wrench, half-widths {np.round(box.upper, 4).tolist()}")
+
+    t = time.perf_counter()
+    evaluate_workspace(robot, "wrench-feasible", resolution=3)  # JIT compile / cache load
+    print(f"first call (compile or cache load): {time.perf_counter() - t:.2f} s")
+
+    dt, res = best_of(lambda: evaluate_workspace(robot, "wrench-feasible", resolution=args.resolution))
+    N = res.inside.size
+    rate = N / dt
+    print(f"\nworkspace: {N} poses ({args.resolution}^3 grid), {res.count} inside ({100 * res.fraction:.1f} %)")
+    print(f"  evaluate_workspace, one core: {dt:.3f} s = {rate:,.0f} poses/s (target >= 100,000)")
+
+    poses = res.poses
+    _, W, ok = batch_structure_matrices(robot, poses)
+    w = external_wrench(robot, poses)
+    tmin, tmax = robot.tension_bounds
+    dt_k, _ = best_of(lambda: wrench_feasible(W, tmin, tmax, box, w))
+    dt_ik, _ = best_of(lambda: batch_structure_matrices(robot, poses))
+    dt_w, _ = best_of(lambda: external_wrench(robot, poses))
+    print(f"  parts: facet test {N / dt_k:,.0f} poses/s, batch IK {N / dt_ik:,.0f} poses/s, external wrench {N / dt_w:,.0f} poses/s")
+
+    rng = np.random.default_rng(0)
+    pick = rng.choice(N, size=min(args.sample, N), replace=False)
+    Ws = structure_matrix(robot, poses[pick])
+    ws = external_wrench(robot, poses[pick])
+    vertices = box.vertices()
+    t = time.perf_counter()
+    lp = np.array([lp_verdict(Ws[k], tmin, tmax, ws[k], vertices) for k in range(len(pick))])
+    dt_lp = time.perf_counter() - t
+    per_pose_lp = dt_lp / len(pick)
+    differ = int(np.count_nonzero(lp != res.inside[pick]))
+    print(f"\nbaseline: linprog(method='highs') over the {len(vertices)} box vertices (stop at the first infeasible)")
+    print(f"  {len(pick)} poses ({int(lp.sum())} feasible) in {dt_lp:.2f} s = {1 / per_pose_lp:,.1f} poses/s")
+    print(f"  extrapolated to the grid: {per_pose_lp * N:,.0f} s vs {dt:.3f} s")
+    print(f"  speed-up of evaluate_workspace over the LP loop: {per_pose_lp * rate:,.0f}x")
+    print(f"  poses where the verdicts differ: {differ} (must be 0)")
+    if differ:
+        raise SystemExit(1)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,163 @@
+"""Batched inverse kinematics in a Numba kernel: cable lengths and structure matrices of
+many poses at once, for workspace grids (``000_3d5147f1d4639546.txt`` §2.1.1, Eqs. 2.1,
+2.8 and 2.10; the conventions of :mod:`taut.kinematics.inverse`).
+
+Same quantities as :func:`taut.kinematics.inverse.inverse_kinematics` for robots without
+jointed bodies (point-mass, planar and spatial rigid platforms, all orientation
+conventions), in one pass over the poses instead of a chain of NumPy temporaries.  A pose
+with a zero-length cable does not raise: it is flagged in ``ok`` and its structure
+matrix is left zero, which is what a workspace grid needs.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from taut.geometry.rotation import CONVENTIONS
+from taut.kinematics.inverse import MIN_LENGTH, inverse_kinematics
+from taut.kinematics.pose import as_poses
+from taut.model.robot import Robot
+
+__all__ = ["batch_structure_matrices", "supports_batch"]
+
+
+@njit(cache=True, nogil=True)
+def _rot_axis(axis, t, out):
+    c = np.cos(t)
+    s = np.sin(t)
+    for i in range(3):
+        for j in range(3):
+            out[i, j] = 0.0
+    if axis == 0:
+        out[0, 0] = 1.0
+        out[1, 1] = c
+        out[1, 2] = -s
+        out[2, 1] = s
+        out[2, 2] = c
+    elif axis == 1:
+        out[0, 0] = c
+        out[0, 2] = s
+        out[1, 1] = 1.0
+        out[2, 0] = -s
+        out[2, 2] = c
+    else:
+        out[0, 0] = c
+        out[0, 1] = -s
+        out[1, 0] = s
+        out[1, 1] = c
+        out[2, 2] = 1.0
+
+
+@njit(cache=True, nogil=True)
+def _mul3(X, Y, out):
+    for i in range(3):
+        for j in range(3):
+            out[i, j] = X[i, 0] * Y[0, j] + X[i, 1] * Y[1, j] + X[i, 2] * Y[2, j]
+
+
+@njit(cache=True, nogil=True)
+def _rotation(conv, a, b, c, R, T1, T2, T3, T4):
+    """``R`` for the angles ``(a, b, c)``: 0 ``xyz-fixed`` ``Rz(c)Ry(b)Rx(a)``,
+    1 ``xyz-moving`` ``Rx(a)Ry(b)Rz(c)``, 2 ``tilt-torsion`` ``Rz(a)Ry(b)Rz(c−a)``."""
+    if conv == 0:
+        _rot_axis(2, c, T1)
+        _rot_axis(1, b, T2)
+        _rot_axis(0, a, T3)
+    elif conv == 1:
+        _rot_axis(0, a, T1)
+        _rot_axis(1, b, T2)
+        _rot_axis(2, c, T3)
+    else:
+        _rot_axis(2, a, T1)
+        _rot_axis(1, b, T2)
+        _rot_axis(2, c - a, T3)
+    _mul3(T1, T2, T4)
+    _mul3(T4, T3, R)
+
+
+@njit(cache=True, nogil=True)
+def _ik_kernel(poses, exits, anchors, dim, point_mass, conv, min_length, lengths, W, ok):
+    N = poses.shape[0]
+    n = exits.shape[0]
+    R = np.zeros((3, 3))
+    T1 = np.empty((3, 3))
+    T2 = np.empty((3, 3))
+    T3 = np.empty((3, 3))
+    T4 = np.empty((3, 3))
+    arm = np.zeros(3)
+    u = np.zeros(3)
+    for k in range(N):
+        if not point_mass:
+            if dim == 2:
+                ct = np.cos(poses[k, 2])
+                st = np.sin(poses[k, 2])
+                R[0, 0] = ct
+                R[0, 1] = -st
+                R[1, 0] = st
+                R[1, 1] = ct
+            else:
+                _rotation(conv, poses[k, 3], poses[k, 4], poses[k, 5], R, T1, T2, T3, T4)
+        good = True
+        for i in range(n):
+            for r in range(dim):
+                acc = 0.0
+                if not point_mass:
+                    for s in range(dim):
+                        acc += R[r, s] * anchors[i, s]
+                arm[r] = acc
+            ll = 0.0
+            for r in range(dim):
+                v = exits[i, r] - poses[k, r] - arm[r]
+                u[r] = v
+                ll += v * v
+            ll = np.sqrt(ll)
+            lengths[k, i] = ll
+            if ll < min_length:
+                good = False
+                continue
+            for r in range(dim):
+                u[r] /= ll
+                W[k, r, i] = u[r]
+            if point_mass:
+                continue
+            if dim == 2:
+                W[k, 2, i] = arm[0] * u[1] - arm[1] * u[0]
+            else:
+                W[k, 3, i] = arm[1] * u[2] - arm[2] * u[1]
+                W[k, 4, i] = arm[2] * u[0] - arm[0] * u[2]
+                W[k, 5, i] = arm[0] * u[1] - arm[1] * u[0]
+        ok[k] = good
+        if not good:
+            for r in range(W.shape[1]):
+                for i in range(n):
+                    W[k, r, i] = 0.0
+
+
+def supports_batch(robot: Robot) -> bool:
+    """True when the kernel handles the robot (no jointed bodies)."""
+    return robot.n_joints == 0
+
+
+def batch_structure_matrices(robot: Robot, poses) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Cable lengths ``(N, n)``, structure matrices ``W (N, m, n)`` and a mask ``ok (N,)``
+    of the poses where every cable has a length of at least ``MIN_LENGTH`` (elsewhere
+    ``W`` is zero).  Robots with jointed bodies go through the NumPy implementation."""
+    arr, _ = as_poses(robot, poses)
+    N, n, m, d = arr.shape[0], robot.n_cables, robot.wrench_dim, robot.dimension
+    if not supports_batch(robot):
+        from taut.kinematics.inverse import anchor_points
+
+        b = anchor_points(robot, arr).reshape(N, n, d)
+        lengths = np.linalg.norm(robot.exits[None] - b, axis=-1)
+        ok = lengths.min(axis=1) >= MIN_LENGTH
+        W = np.zeros((N, m, n))
+        if ok.any():
+            W[ok] = inverse_kinematics(robot, arr[ok]).structure_matrix
+        return lengths, W, ok
+    lengths = np.empty((N, n))
+    W = np.zeros((N, m, n))
+    ok = np.empty(N, np.bool_)
+    _ik_kernel(np.ascontiguousarray(arr), robot.exits, robot.anchors, d, robot.is_point_mass,
+               CONVENTIONS.index(robot.orientation), MIN_LENGTH, lengths, W, ok)
+    return lengths, W, ok

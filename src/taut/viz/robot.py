@@ -1,0 +1,377 @@
+"""Drawing of a robot at one pose: :func:`draw_robot`.
+
+Planar robots (2-D axes, equal aspect) are drawn like the configuration figures of the
+variable-structure robots of ``000_3d5147f1d4639546.txt`` (Figs. 6.5, 6.12, 6.19: the
+installation space, grey disallowed regions, circular obstacles, the platform and its
+cables in colour; Fig. 3.5 for the installation space): frame exit points (squares,
+labelled with 1-based cable numbers), one straight line per cable from exit point to
+platform anchor, the platform outline (``platform.shape.polygon`` moved to the pose, or
+else the convex hull of the anchors of each body), capsules as rounded outlines, a point
+mass as a dot, obstacles (circles, polygons), the installation-space outline and the
+shaded disallowed regions.
+
+Spatial robots (3-D ``mplot3d`` axes, equal scale on all axes) are drawn like the
+configurations of simulations a)–d) of ``004_f30792d78b61e7c2.txt`` (Figs. 4.3–4.4):
+exit points, cables, each body as the convex hull of its anchors (faces and edges),
+capsules as thick segments, spherical obstacles as wireframes, and the faint hull of
+the exit points (the frame).
+
+Cables are straight segments ``a_i → b_i`` (``DESIGN.md`` §2); wrapped cables are not
+drawn here.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from taut.kinematics.inverse import anchor_points
+from taut.kinematics.pose import as_poses, body_frames
+from taut.model.robot import Circle, Robot
+from taut.viz._style import (
+    DISALLOWED,
+    FRAME,
+    OBSTACLE,
+    PLATFORM,
+    cable_color,
+    is_3d,
+    new_axes,
+    set_equal_3d,
+)
+
+__all__ = ["draw_robot"]
+
+
+# ---------------------------------------------------------------------------------------
+# geometry helpers (drawing only)
+# ---------------------------------------------------------------------------------------
+def _hull_2d(points: np.ndarray) -> np.ndarray:
+    """Vertices of the convex hull of planar points, counter-clockwise (k, 2); k < 3 when
+    the points are collinear (the two extremes) or coincide (one point)."""
+    pts = np.unique(np.asarray(points, float).reshape(-1, 2), axis=0)
+    if len(pts) <= 2:
+        return pts
+    c = pts.mean(axis=0)
+    _, s, vt = np.linalg.svd(pts - c)
+    if s[1] <= 1e-9 * max(s[0], 1e-300):
+        t = (pts - c) @ vt[0]
+        return pts[[np.argmin(t), np.argmax(t)]]
+    from scipy.spatial import ConvexHull
+
+    return pts[ConvexHull(pts).vertices]
+
+
+def _hull_faces_3d(points: np.ndarray) -> list[np.ndarray]:
+    """Faces of the convex hull of spatial points, each an ordered polygon (k, 3).
+
+    Coplanar triangles of the hull are merged (a box has six quadrilateral faces); flat
+    point sets give one polygon, collinear ones a segment (one 2-vertex "face"), a single
+    point a 1-vertex face."""
+    pts = np.unique(np.asarray(points, float).reshape(-1, 3), axis=0)
+    if len(pts) <= 2:
+        return [pts]
+    c = pts.mean(axis=0)
+    _, s, vt = np.linalg.svd(pts - c)
+    tol = 1e-9 * max(s[0], 1e-300)
+    rank = int((s > tol).sum())
+    if rank <= 1:
+        t = (pts - c) @ vt[0]
+        return [pts[[np.argmin(t), np.argmax(t)]]]
+    if rank == 2:
+        uv = (pts - c) @ vt[:2].T
+        from scipy.spatial import ConvexHull
+
+        return [pts[ConvexHull(uv).vertices]]
+    from scipy.spatial import ConvexHull
+
+    hull = ConvexHull(pts)
+    groups: dict[tuple, set[int]] = {}
+    for simplex, eq in zip(hull.simplices, hull.equations):
+        key = tuple(np.round(eq, 9))
+        groups.setdefault(key, set()).update(int(k) for k in simplex)
+    faces = []
+    for key, idx in groups.items():
+        f = pts[sorted(idx)]
+        n = np.asarray(key[:3])
+        fc = f.mean(axis=0)
+        e1 = f[0] - fc
+        e1 /= np.linalg.norm(e1)
+        e2 = np.cross(n, e1)
+        ang = np.arctan2((f - fc) @ e2, (f - fc) @ e1)
+        faces.append(f[np.argsort(ang)])
+    return faces
+
+
+def _transform(points, p, R) -> np.ndarray:
+    """Body-frame points (k, d') to the fixed frame; 2-D points on a spatial body lie in
+    its x–y plane, extra coordinates on a planar body are dropped."""
+    pts = np.asarray(points, float)
+    d = len(p)
+    if pts.shape[1] < d:
+        pts = np.concatenate([pts, np.zeros((len(pts), d - pts.shape[1]))], axis=1)
+    return p + pts[:, :d] @ np.asarray(R).T
+
+
+def _frame_outline(robot: Robot) -> list[np.ndarray]:
+    if robot.dimension == 2:
+        h = _hull_2d(robot.exits)
+        return [h] if len(h) >= 3 else []
+    faces = _hull_faces_3d(robot.exits)
+    return [f for f in faces if len(f) >= 3]
+
+
+def _label_offsets(exits: np.ndarray) -> np.ndarray:
+    """Unit directions from the centre of the exits outwards (labels go there)."""
+    v = exits - exits.mean(axis=0)
+    n = np.linalg.norm(v, axis=1, keepdims=True)
+    out = np.where(n > 0, v / np.where(n > 0, n, 1.0), 0.0)
+    out[np.all(out == 0, axis=1), 0] = 1.0
+    return out
+
+
+def _exit_labels(exits: np.ndarray) -> list[tuple[np.ndarray, str, int]]:
+    """(exit point, label, first cable index) with the numbers of cables sharing an exit joined."""
+    groups: dict[tuple, list[int]] = {}
+    for i, e in enumerate(exits):
+        groups.setdefault(tuple(np.round(e, 12)), []).append(i)
+    return [(exits[ix[0]], ",".join(str(i + 1) for i in ix), ix[0]) for ix in groups.values()]
+
+
+def _scene_scale(robot: Robot) -> float:
+    pts = [robot.exits]
+    if robot.installation_space:
+        pts.append(np.asarray(robot.installation_space, float)[:, : robot.dimension])
+    span = max(float(np.ptp(np.concatenate(pts), axis=0).max()), 0.0)
+    return span if span > 0 else 1.0
+
+
+def _default_pose(robot: Robot) -> np.ndarray:
+    if robot.reference is not None and robot.reference.poses:
+        name = "home" if "home" in robot.reference.poses else next(iter(robot.reference.poses))
+        return np.asarray(robot.reference.poses[name], float)
+    from taut.kinematics.forward import default_guess
+
+    return default_guess(robot)
+
+
+# ---------------------------------------------------------------------------------------
+# the fixed scene: frame, installation space, disallowed regions, obstacles, exits
+# ---------------------------------------------------------------------------------------
+def draw_scene_2d(ax, robot: Robot, *, labels: bool = True) -> None:
+    """Everything of a planar robot that does not move: installation space, disallowed
+    regions, obstacles, the frame outline and the exit points with cable numbers."""
+    from matplotlib.patches import Circle as CirclePatch
+    from matplotlib.patches import Polygon as PolygonPatch
+
+    for outline in _frame_outline(robot):
+        ax.add_patch(PolygonPatch(outline, closed=True, fill=False, ec=FRAME, lw=0.8, ls=":", zorder=0.5, gid="frame"))
+    if robot.installation_space:
+        pts = np.asarray(robot.installation_space, float)[:, :2]
+        ax.add_patch(
+            PolygonPatch(pts, closed=True, fill=False, ec="black", lw=1.4, zorder=0.6,
+                         label="installation space", gid="installation-space")
+        )
+    for k, region in enumerate(robot.disallowed):
+        pts = np.asarray(region, float)[:, :2]
+        ax.add_patch(
+            PolygonPatch(pts, closed=True, fc=DISALLOWED, ec=DISALLOWED, alpha=0.25, hatch="//", lw=0.8,
+                         zorder=0.7, label="disallowed" if k == 0 else None, gid="disallowed")
+        )
+    for k, o in enumerate(robot.obstacles):
+        lab = "obstacle" if k == 0 else None
+        if isinstance(o, Circle):
+            patch = CirclePatch(o.center[:2], o.radius, fc=OBSTACLE, ec="#555555", lw=1.0, zorder=1,
+                                label=lab, gid="obstacle")
+        else:
+            patch = PolygonPatch(np.asarray(o.vertices, float)[:, :2], closed=True, fc=OBSTACLE, ec="#555555",
+                                 lw=1.0, zorder=1, label=lab, gid="obstacle")
+        ax.add_patch(patch)
+    ex = robot.exits
+    ax.plot(ex[:, 0], ex[:, 1], ls="none", marker="s", ms=6, mfc="white", mec="black", zorder=4, gid="exits")
+    if labels:
+        offs = _label_offsets(ex)
+        for point, text, i in _exit_labels(ex):
+            ax.annotate(text, point, xytext=tuple(11 * offs[i]), textcoords="offset points", ha="center",
+                        va="center", fontsize=9, color=cable_color(i), fontweight="bold", gid="cable-label")
+
+
+def draw_scene_3d(ax, robot: Robot, *, labels: bool = True) -> np.ndarray:
+    """The fixed parts of a spatial robot; returns the points drawn (for the limits)."""
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    drawn = [robot.exits]
+    for face in _frame_outline(robot):
+        loop = np.vstack([face, face[:1]])
+        ax.plot(loop[:, 0], loop[:, 1], loop[:, 2], color=FRAME, lw=0.6, ls=":", gid="frame")
+    z0 = float(robot.exits[:, 2].min())
+
+    def lift(region):
+        pts = np.asarray(region, float)
+        if pts.shape[1] == 2:  # a footprint: drawn on the floor of the frame
+            pts = np.column_stack([pts, np.full(len(pts), z0)])
+        return pts[:, :3]
+
+    if robot.installation_space:
+        pts = lift(robot.installation_space)
+        loop = np.vstack([pts, pts[:1]])
+        ax.plot(loop[:, 0], loop[:, 1], loop[:, 2], color="black", lw=1.2, gid="installation-space")
+        drawn.append(pts)
+    for region in robot.disallowed:
+        pts = lift(region)
+        ax.add_collection3d(Poly3DCollection([pts], facecolor=DISALLOWED, alpha=0.25, edgecolor=DISALLOWED, gid="disallowed"))
+        drawn.append(pts)
+    for o in robot.obstacles:
+        if isinstance(o, Circle):
+            c = np.asarray(o.center, float)
+            u, v = np.meshgrid(np.linspace(0, 2 * np.pi, 17), np.linspace(0, np.pi, 9))
+            x = c[0] + o.radius * np.cos(u) * np.sin(v)
+            y = c[1] + o.radius * np.sin(u) * np.sin(v)
+            z = c[2] + o.radius * np.cos(v)
+            ax.plot_wireframe(x, y, z, color="#666666", lw=0.5, gid="obstacle")
+            drawn.append(np.column_stack([x.ravel(), y.ravel(), z.ravel()]))
+        else:
+            pts = np.asarray(o.vertices, float)
+            ax.add_collection3d(Poly3DCollection([pts], facecolor=OBSTACLE, alpha=0.5, edgecolor="#555555", gid="obstacle"))
+            drawn.append(pts)
+    ex = robot.exits
+    ax.plot(ex[:, 0], ex[:, 1], ex[:, 2], ls="none", marker="s", ms=5, mfc="white", mec="black", gid="exits")
+    if labels:
+        offs = _label_offsets(ex) * 0.04 * _scene_scale(robot)
+        for point, text, i in _exit_labels(ex):
+            q = point + offs[i]
+            ax.text(q[0], q[1], q[2], text, color=cable_color(i), fontsize=9, fontweight="bold",
+                    ha="center", va="center", gid="cable-label")
+    return np.concatenate(drawn)
+
+
+# ---------------------------------------------------------------------------------------
+# the robot at a pose
+# ---------------------------------------------------------------------------------------
+def _capsules(robot: Robot):
+    """(body index, capsule) for the platform shape and every extra body."""
+    out = []
+    if robot.platform.shape is not None:
+        out += [(0, c) for c in robot.platform.shape.capsules]
+    for k, body in enumerate(robot.platform.bodies, 1):
+        out += [(k, c) for c in body.capsules]
+    return out
+
+
+def _pose_title(robot: Robot, pose: np.ndarray) -> str:
+    return ", ".join(f"{n}={v:.3g}" for n, v in zip(robot.pose_names, pose))
+
+
+def draw_robot(robot: Robot, pose=None, ax=None):
+    """Draw ``robot`` at ``pose`` (default: its ``home`` reference pose, else the centroid of
+    its exit points) and return the matplotlib ``Axes``.
+
+    A planar robot needs 2-D axes, a spatial one 3-D axes (``projection="3d"``); with
+    ``ax=None`` a new figure of the right kind is made.  Each cable is one line with
+    ``gid="cable-<i>"`` and label ``"cable <i>"`` (1-based ``i``)."""
+    pose = _default_pose(robot) if pose is None else pose
+    arr, _ = as_poses(robot, pose)
+    if arr.shape[0] != 1:
+        raise ValueError(f"draw_robot draws one pose, got {arr.shape[0]}")
+    spatial = robot.dimension == 3
+    if ax is None:
+        ax = new_axes(spatial)
+    elif is_3d(ax) != spatial:
+        want = "3-D axes (projection='3d')" if spatial else "2-D axes"
+        raise ValueError(f"{robot.name} is {'spatial' if spatial else 'planar'}: draw it on {want}")
+    if spatial:
+        _draw_3d(ax, robot, arr)
+    else:
+        _draw_2d(ax, robot, arr)
+    ax.set_title(f"{robot.name}\n{_pose_title(robot, arr[0])}", fontsize=10)
+    return ax
+
+
+def _draw_2d(ax, robot: Robot, arr: np.ndarray) -> None:
+    from matplotlib.patches import Polygon as PolygonPatch
+    from shapely import LineString, Point
+
+    draw_scene_2d(ax, robot)
+    b = anchor_points(robot, arr)[0]
+    pos, rot = body_frames(robot, arr)
+    pos, rot = pos[0], rot[0]
+    for i, (a, bi) in enumerate(zip(robot.exits, b)):
+        ax.plot([a[0], bi[0]], [a[1], bi[1]], color=cable_color(i), lw=1.6, zorder=2,
+                label=f"cable {i + 1}", gid=f"cable-{i + 1}")
+    p = arr[0, :2]
+    if robot.is_point_mass:
+        ax.plot([p[0]], [p[1]], ls="none", marker="o", ms=9, color=PLATFORM, zorder=5, label="platform", gid="platform")
+    else:
+        shape = robot.platform.shape
+        parents = {"platform": 0} | {bb.name: j for j, bb in enumerate(robot.platform.bodies, 1)}
+        for k in range(pos.shape[0]):
+            if k == 0 and shape is not None and shape.polygon:
+                outline = _transform(shape.polygon, pos[0], rot[0])
+            else:
+                on_body = robot.cable_bodies == k
+                outline = _hull_2d(b[on_body]) if on_body.any() else np.empty((0, 2))
+            if len(outline) >= 3:
+                ax.add_patch(PolygonPatch(outline, closed=True, fc=PLATFORM, ec="black", alpha=0.45, lw=1.2,
+                                          zorder=3, label="platform" if k == 0 else None, gid="platform"))
+            elif len(outline) == 2:
+                ax.plot(outline[:, 0], outline[:, 1], color=PLATFORM, lw=4, solid_capstyle="round", zorder=3, gid="platform")
+            if k > 0:  # the joint: parent frame origin to body frame origin
+                par = parents[robot.platform.bodies[k - 1].parent]
+                ax.plot([pos[par][0], pos[k][0]], [pos[par][1], pos[k][1]], color="black", lw=1, ls="--", zorder=3, gid="joint")
+        for k, cap in _capsules(robot):
+            ends = _transform([cap.a, cap.b], pos[k], rot[k])
+            geom = (LineString(ends) if np.ptp(ends, axis=0).max() > 0 else Point(ends[0])).buffer(cap.radius, 24)
+            if not geom.is_empty:
+                ax.add_patch(PolygonPatch(np.asarray(geom.exterior.coords), closed=True, fill=False, ec=PLATFORM,
+                                          lw=1.0, ls="--", zorder=3, gid="capsule"))
+        ax.plot([p[0]], [p[1]], ls="none", marker="+", ms=9, color="black", zorder=5, gid="reference-point")
+    ax.plot(b[:, 0], b[:, 1], ls="none", marker="o", ms=3.5, color="black", zorder=4, gid="anchors")
+    ax.set_aspect("equal")
+    ax.margins(0.08)
+    ax.autoscale_view()
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.grid(True, lw=0.3, alpha=0.5)
+    handles = [h for h in ax.patches if h.get_label() in ("installation space", "disallowed", "obstacle")]
+    if handles:
+        ax.legend(handles=handles, fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+
+
+def _draw_3d(ax, robot: Robot, arr: np.ndarray) -> None:
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    drawn = [draw_scene_3d(ax, robot)]
+    b = anchor_points(robot, arr)[0]
+    pos, rot = body_frames(robot, arr)
+    pos, rot = pos[0], rot[0]
+    drawn.append(b)
+    for i, (a, bi) in enumerate(zip(robot.exits, b)):
+        ax.plot([a[0], bi[0]], [a[1], bi[1]], [a[2], bi[2]], color=cable_color(i), lw=1.4,
+                label=f"cable {i + 1}", gid=f"cable-{i + 1}")
+    p = arr[0, :3]
+    if robot.is_point_mass:
+        ax.plot([p[0]], [p[1]], [p[2]], ls="none", marker="o", ms=8, color=PLATFORM, gid="platform")
+    else:
+        shape = robot.platform.shape
+        for k in range(pos.shape[0]):
+            on_body = robot.cable_bodies == k
+            if k == 0 and shape is not None and shape.polygon:
+                faces = [_transform(shape.polygon, pos[0], rot[0])]
+            else:
+                faces = _hull_faces_3d(b[on_body]) if on_body.any() else []
+            polys = [f for f in faces if len(f) >= 3]
+            if polys:
+                ax.add_collection3d(Poly3DCollection(polys, facecolor=PLATFORM, alpha=0.3, edgecolor="black",
+                                                     linewidths=0.8, gid="platform"))
+            for f in faces:
+                if len(f) == 2:
+                    ax.plot(f[:, 0], f[:, 1], f[:, 2], color=PLATFORM, lw=4, gid="platform")
+        for k, cap in _capsules(robot):
+            ends = _transform([cap.a, cap.b], pos[k], rot[k])
+            ax.plot(ends[:, 0], ends[:, 1], ends[:, 2], color=PLATFORM, lw=7, alpha=0.35, solid_capstyle="round",
+                    gid="capsule")
+            drawn.append(ends)
+        ax.plot([p[0]], [p[1]], [p[2]], ls="none", marker="+", ms=8, color="black", gid="reference-point")
+    ax.plot(b[:, 0], b[:, 1], b[:, 2], ls="none", marker="o", ms=3, color="black", gid="anchors")
+    set_equal_3d(ax, np.concatenate(drawn))
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.set_zlabel("z [m]")

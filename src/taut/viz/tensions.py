@@ -1,0 +1,93 @@
+"""Cable tensions along a sequence of poses: :func:`plot_tensions`.
+
+One line per cable (labelled with its 1-based number, in the cable's colour used by every
+taut figure), the tension bounds ``τ_min``/``τ_max`` dashed, and the samples where no
+feasible tension distribution exists shaded in red with a mark on the x axis.  The layout
+follows the per-cable time plots of ``000_3d5147f1d4639546.txt`` (Figs. 4.7, 4.10, 6.10:
+one curve per cable over the trajectory, markers at events), with tensions in place of
+lengths.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from taut.viz._style import DISALLOWED, cable_color, is_3d, new_axes
+
+__all__ = ["plot_tensions"]
+
+
+def _runs(flags: np.ndarray) -> list[tuple[int, int]]:
+    """Maximal runs ``[start, stop)`` of True in a boolean vector."""
+    d = np.diff(np.concatenate([[0], flags.astype(np.int8), [0]]))
+    return list(zip(np.flatnonzero(d == 1).tolist(), np.flatnonzero(d == -1).tolist()))
+
+
+def plot_tensions(times_or_index, tensions, tmin, tmax, feasible=None, ax=None, *, mask_infeasible: bool = True):
+    """Plot tensions ``(N, n)`` against ``times_or_index`` (``N`` times; ``None`` for the
+    sample index) and return the ``Axes``.
+
+    ``tmin``/``tmax`` are scalars or one bound per cable (infinite bounds are not drawn);
+    ``feasible (N,)`` marks the samples without a feasible distribution; their tensions
+    (NaN, zeros or a best effort, depending on the method) are not drawn unless
+    ``mask_infeasible=False``: the lines break there.  Cable lines have ``gid="tension-<i>"``; the
+    infeasible marks are one line with ``gid="infeasible"`` whose x data are the
+    infeasible samples."""
+    T = np.asarray(tensions, float)
+    if T.ndim == 1:
+        T = T[None, :]
+    if T.ndim != 2:
+        raise ValueError(f"tensions must be (N, n), got shape {np.shape(tensions)}")
+    N, n = T.shape
+    if times_or_index is None:
+        x, xlabel = np.arange(N, dtype=float), "sample"
+    else:
+        x, xlabel = np.asarray(times_or_index, float).ravel(), "time [s]"
+        if x.size != N:
+            raise ValueError(f"{x.size} times for {N} tension samples")
+    ok = np.ones(N, bool) if feasible is None else np.asarray(feasible, bool).ravel()
+    if ok.size != N:
+        raise ValueError(f"{ok.size} feasibility flags for {N} tension samples")
+    if mask_infeasible and not ok.all():
+        T = np.where(ok[:, None], T, np.nan)
+    lo = np.broadcast_to(np.asarray(tmin, float), (n,))
+    hi = np.broadcast_to(np.asarray(tmax, float), (n,))
+    if ax is None:
+        ax = new_axes(False, figsize=(7.0, 4.0))
+    elif is_3d(ax):
+        raise ValueError("tensions are drawn on 2-D axes")
+
+    for i in range(n):
+        ax.plot(x, T[:, i], color=cable_color(i), lw=1.5, marker="." if N <= 40 else None,
+                label=f"cable {i + 1}", gid=f"tension-{i + 1}")
+    for bounds, name in ((lo, "τ_min"), (hi, "τ_max")):
+        finite = np.isfinite(bounds)
+        if not finite.any():
+            continue
+        if np.all(bounds[finite] == bounds[finite][0]):
+            ax.axhline(bounds[finite][0], color="black", ls="--", lw=1.0, label=name, gid="bound")
+        else:
+            for i in np.flatnonzero(finite):
+                ax.axhline(bounds[i], color=cable_color(i), ls="--", lw=0.9, alpha=0.8,
+                           label=name if i == np.flatnonzero(finite)[0] else None, gid="bound")
+    bad = ~ok
+    if bad.any():
+        order = np.argsort(x, kind="stable")
+        xs, bs = x[order], bad[order]
+        half = np.diff(xs) / 2 if N > 1 else np.array([0.5])
+        left = np.concatenate([[half[0]], half])
+        right = np.concatenate([half, [half[-1]]])
+        for k, (a, b) in enumerate(_runs(bs)):
+            ax.axvspan(xs[a] - left[a], xs[b - 1] + right[b - 1], color=DISALLOWED, alpha=0.15, lw=0,
+                       label="infeasible" if k == 0 else None, gid="infeasible-span")
+        ax.plot(x[bad], np.zeros(int(bad.sum())), ls="none", marker="x", color=DISALLOWED, ms=6, clip_on=False,
+                transform=ax.get_xaxis_transform(), gid="infeasible")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("tension [N]")
+    ax.grid(True, lw=0.3, alpha=0.5)
+    title = f"cable tensions: {int(ok.sum())} of {N} samples feasible"
+    ax.set_title(title, fontsize=10)
+    ax.legend(fontsize=8, ncol=1 + (n + 3) // 14, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+    if N > 1 and np.ptp(x) > 0:
+        ax.set_xlim(x.min(), x.max())
+    return ax

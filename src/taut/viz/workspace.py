@@ -1,0 +1,144 @@
+"""Workspace figure: :func:`plot_workspace` for a grid ``WorkspaceResult``.
+
+Planar grids (two position axes) are drawn as an image of the inside mask over x–y
+(inside green, outside light grey), with the robot's fixed parts overlaid (exit points
+with cable numbers, frame outline, obstacles, installation space, disallowed regions);
+this is the look of the approximate workspaces of ``000_3d5147f1d4639546.txt``
+(Figs. 5.9 c, 6.5, 6.12) and of the constant-orientation WFW slice of
+``001_eb92e2f6589fc229.txt`` (Fig. 4.4).  A spatial grid with one axis of a single value
+is such a slice too.  Full spatial grids are a 3-D scatter of the inside poses (randomly
+subsampled, with a fixed seed, beyond ``max_points``), coloured by height, over the exit
+points.  The title names the condition and the inside fraction.
+
+The result is duck-typed: anything with ``condition``, ``poses (N, pose_size)``,
+``inside (N,)``, ``axes`` (1-D coordinates per position axis) and ``grid_shape``
+(``inside.reshape(grid_shape)`` in C order, axes x, y[, z]) is drawn; ``fraction`` is
+used when present.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from taut.viz._style import INSIDE, OUTSIDE, is_3d, new_axes, set_equal_3d
+from taut.viz.robot import draw_scene_2d, draw_scene_3d
+
+__all__ = ["plot_workspace"]
+
+_AXIS_NAMES = ("x", "y", "z")
+
+
+def _fixed_coordinates(result, robot, used: list[int]) -> str:
+    """'theta=0' for pose coordinates that are the same at every grid pose (orientation
+    of a constant-orientation workspace, the held coordinate of a slice)."""
+    poses = np.asarray(result.poses, float)
+    if poses.ndim != 2 or not len(poses):
+        return ""
+    names = list(robot.pose_names) if robot is not None and len(robot.pose_names) == poses.shape[1] else [
+        (_AXIS_NAMES[j] if j < len(result.axes) else f"q{j + 1}") for j in range(poses.shape[1])
+    ]
+    out = []
+    for j in range(poses.shape[1]):
+        if j in used:
+            continue
+        col = poses[:, j]
+        if np.all(col == col[0]):
+            out.append(f"{names[j]}={col[0]:.3g}")
+    return ", ".join(out)
+
+
+def _edges(c: np.ndarray) -> tuple[float, float]:
+    c = np.asarray(c, float)
+    if len(c) == 1:
+        return c[0] - 0.5, c[0] + 0.5
+    h = (c[-1] - c[0]) / (len(c) - 1) / 2
+    return c[0] - h, c[-1] + h
+
+
+def plot_workspace(result, robot=None, ax=None, *, max_points: int = 4000):
+    """Draw a grid workspace result (see the module docstring); return the ``Axes``.
+
+    ``robot`` (optional) overlays its fixed parts.  A planar result draws on 2-D axes; a
+    full spatial one on 3-D axes (``ax=None`` makes the right kind)."""
+    shape = tuple(int(s) for s in result.grid_shape)
+    inside = np.asarray(result.inside, bool).ravel()
+    coords = [np.asarray(a, float) for a in result.axes]
+    if len(coords) != len(shape) or len(shape) not in (2, 3):
+        raise ValueError(f"plot_workspace draws 2- or 3-axis grids, got grid_shape {shape} with {len(coords)} axes")
+    if inside.size != int(np.prod(shape)):
+        raise ValueError(f"inside has {inside.size} values, grid_shape {shape} needs {int(np.prod(shape))}")
+    n_in, total = int(inside.sum()), inside.size
+    fraction = float(getattr(result, "fraction", n_in / total if total else 0.0))
+    mask = inside.reshape(shape)
+    keep = [j for j, s in enumerate(shape) if s > 1] if len(shape) == 3 else [0, 1]
+    if len(shape) == 3 and len(keep) == 3:
+        ax = _scatter(result, robot, ax, mask, coords, max_points)
+        shown = min(n_in, max_points)
+        extra = f", {shown} shown" if shown < n_in else ""
+    else:
+        if len(keep) < 2:  # a line or a point of a spatial grid: show its first two axes
+            keep = [j for j in range(3) if j not in keep][: 2 - len(keep)] + keep
+            keep.sort()
+        ax = _image(result, robot, ax, mask, coords, keep)
+        extra = ""
+    held = _fixed_coordinates(result, robot, keep)
+    title = f"{result.condition} workspace: {n_in} of {total} grid poses ({100 * fraction:.1f} %{extra})"
+    if held:
+        title += f"\nat {held}"
+    ax.set_title(title, fontsize=10)
+    return ax
+
+
+def _image(result, robot, ax, mask, coords, keep):
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Patch
+
+    if ax is None:
+        ax = new_axes(False)
+    elif is_3d(ax):
+        raise ValueError("a planar workspace (or a slice) is drawn on 2-D axes")
+    img = mask
+    if img.ndim == 3:
+        drop = next(j for j in range(3) if j not in keep)
+        img = np.take(img, 0, axis=drop)
+    i, j = keep
+    xe, ye = _edges(coords[i]), _edges(coords[j])
+    ax.imshow(img.T.astype(float), origin="lower", extent=(*xe, *ye), cmap=ListedColormap([OUTSIDE, INSIDE]),
+              vmin=0, vmax=1, interpolation="nearest", aspect="equal", zorder=0, gid="workspace")
+    if robot is not None and robot.dimension == 2 and keep == [0, 1]:
+        draw_scene_2d(ax, robot)
+        ax.margins(0.05)
+        ax.autoscale_view()
+    ax.set_aspect("equal")
+    ax.set_xlabel(f"{_AXIS_NAMES[i]} [m]")
+    ax.set_ylabel(f"{_AXIS_NAMES[j]} [m]")
+    ax.legend(handles=[Patch(fc=INSIDE, label="inside"), Patch(fc=OUTSIDE, ec="#bbbbbb", label="outside")],
+              fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+    return ax
+
+
+def _scatter(result, robot, ax, mask, coords, max_points):
+    if ax is None:
+        ax = new_axes(True)
+    elif not is_3d(ax):
+        raise ValueError("a spatial workspace is drawn on 3-D axes (projection='3d')")
+    poses = np.asarray(result.poses, float)
+    if poses.ndim == 2 and poses.shape[0] == mask.size and poses.shape[1] >= 3:
+        pts = poses[mask.ravel(), :3]
+    else:  # positions from the grid axes
+        grid = np.stack(np.meshgrid(*coords, indexing="ij"), axis=-1).reshape(-1, 3)
+        pts = grid[mask.ravel()]
+    if len(pts) > max_points:
+        pick = np.sort(np.random.default_rng(0).choice(len(pts), max_points, replace=False))
+        pts = pts[pick]
+    ax.scatter(pts[:, 0], pts[:, 1], pts[:, 2], c=pts[:, 2], cmap="viridis", s=5, alpha=0.45, depthshade=False,
+               gid="workspace")
+    bounds = np.array([[c.min(), c.max()] for c in coords]).T
+    drawn = [bounds]
+    if robot is not None and robot.dimension == 3:
+        drawn.append(draw_scene_3d(ax, robot))
+    set_equal_3d(ax, np.concatenate(drawn))
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.set_zlabel("z [m]")
+    return ax

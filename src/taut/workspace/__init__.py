@@ -1,0 +1,22 @@
+"""Workspaces (``000_3d5147f1d4639546.txt`` §2.1.4): conditions (wrench closure, wrench
+feasibility, static equilibrium) in a registry, pose grids, and grid evaluation over an
+executor of :mod:`taut.parallel`."""
+
+from taut.workspace.conditions import (
+    CONDITIONS,
+    StaticEquilibrium,
+    WorkspaceCondition,
+    WrenchClosure,
+    WrenchCondition,
+    WrenchFeasible,
+    default_wrench_set,
+    make_condition,
+)
+from taut.workspace.evaluate import WorkspaceResult, evaluate_workspace
+from taut.workspace.grid import PoseGrid, default_bounds, make_grid, pose_grid, position_grid
+
+__all__ = [
+    "CONDITIONS", "PoseGrid", "StaticEquilibrium", "WorkspaceCondition", "WorkspaceResult", "WrenchClosure",
+    "WrenchCondition", "WrenchFeasible", "default_bounds", "default_wrench_set", "evaluate_workspace",
+    "make_condition", "make_grid", "pose_grid", "position_grid",
+]

@@ -1,0 +1,268 @@
+"""Hyperplane-shifting feasibility tests against LP oracles (scipy.optimize.linprog)."""
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from scipy.optimize import linprog
+
+from taut.errors import TautError
+from taut.statics.feasibility import facet_normals, static_equilibrium, wrench_closure, wrench_feasible
+from taut.statics.wrench import BoxWrenchSet, EllipsoidWrenchSet, PolytopeWrenchSet, SingleWrench, WrenchSet
+
+
+def lp_equilibrium(W, tmin, tmax, w) -> bool:
+    """Oracle: is there tmin <= t <= tmax with W t + w = 0?"""
+    bounds = [(lo, None if np.isinf(hi) else hi) for lo, hi in zip(tmin, tmax)]
+    res = linprog(np.zeros(W.shape[1]), A_eq=W, b_eq=-np.asarray(w), bounds=bounds, method="highs")
+    return res.status == 0
+
+
+def lp_closure(W) -> bool:
+    """Oracle: full row rank and a strictly positive null vector (W t = 0, t >= 1)."""
+    m, n = W.shape
+    if np.linalg.matrix_rank(W) < m:
+        return False
+    res = linprog(np.zeros(n), A_eq=W, b_eq=np.zeros(m), bounds=[(1, None)] * n, method="highs")
+    return res.status == 0
+
+
+# Entries on a coarse lattice (multiples of 1/4): exact degeneracies (coplanar columns,
+# zero dot products, rank deficiency) happen often, and no verdict sits within LP
+# tolerance of a boundary without being on it.
+lattice = st.integers(-8, 8).map(lambda k: k / 4)
+
+
+@st.composite
+def problems(draw, m_choices=(2, 3, 6), max_n=9):
+    m = draw(st.sampled_from(m_choices))
+    n = draw(st.integers(1, max_n))
+    rank = draw(st.integers(1, m))
+    left = np.array(draw(st.lists(lattice, min_size=m * rank, max_size=m * rank))).reshape(m, rank)
+    right = np.array(draw(st.lists(lattice, min_size=rank * n, max_size=rank * n))).reshape(rank, n)
+    W = left @ right if rank < m else np.array(draw(st.lists(lattice, min_size=m * n, max_size=m * n))).reshape(m, n)
+    tmin = np.array(draw(st.lists(st.integers(0, 4), min_size=n, max_size=n)), float)
+    width = np.array(draw(st.lists(st.integers(0, 6), min_size=n, max_size=n)), float)
+    tmax = tmin + width
+    inf = np.array(draw(st.lists(st.booleans(), min_size=n, max_size=n)))
+    if draw(st.booleans()):
+        tmax[inf] = np.inf
+    w = np.array(draw(st.lists(lattice, min_size=m, max_size=m))) * 2
+    return W, tmin, tmax, w
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(problems())
+def test_static_equilibrium_agrees_with_lp(prob):
+    W, tmin, tmax, w = prob
+    assert static_equilibrium(W[None], tmin, tmax, w[None])[0] == lp_equilibrium(W, tmin, tmax, w)
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(problems(m_choices=(2, 3)), st.lists(st.integers(0, 2).map(lambda k: k / 4), min_size=3, max_size=3))
+def test_box_feasibility_agrees_with_lp_over_vertices(prob, half):
+    W, tmin, tmax, w = prob
+    m = W.shape[0]
+    box = BoxWrenchSet.around(np.zeros(m), half[:m])
+    expected = all(lp_equilibrium(W, tmin, tmax, w + v) for v in box.vertices())
+    assert wrench_feasible(W[None], tmin, tmax, box, offset=w)[0] == expected
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(problems(m_choices=(6,), max_n=9), st.lists(st.integers(0, 2).map(lambda k: k / 4), min_size=6, max_size=6))
+def test_spatial_box_feasibility_agrees_with_lp(prob, half):
+    W, tmin, tmax, w = prob
+    box = BoxWrenchSet.around(np.zeros(6), half)
+    expected = all(lp_equilibrium(W, tmin, tmax, w + v) for v in np.unique(box.vertices(), axis=0))
+    assert wrench_feasible(W[None], tmin, tmax, box, offset=w)[0] == expected
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(problems())
+def test_wrench_closure_agrees_with_lp(prob):
+    W = prob[0]
+    assert wrench_closure(W[None])[0] == lp_closure(W)
+
+
+def test_random_spatial_batch_agrees_with_lp():
+    """Continuous random data, a batch of poses with mixed verdicts, m = 6, n = 8."""
+    rng = np.random.default_rng(7)
+    N = 60
+    W = rng.normal(size=(N, 6, 8))
+    tmin, tmax = np.full(8, 1.0), np.full(8, 8.0)
+    tau = rng.uniform(0, 9, size=(N, 8))
+    w = -np.einsum("kij,kj->ki", W, tau)  # balanced by tau, which may violate the bounds
+    box = BoxWrenchSet.around(np.zeros(6), np.full(6, 0.3))
+    got = wrench_feasible(W, tmin, tmax, box, offset=w)
+    expected = [all(lp_equilibrium(W[k], tmin, tmax, w[k] + v) for v in box.vertices()) for k in range(N)]
+    assert 0 < got.sum() < N
+    assert got.tolist() == expected
+    got_static = static_equilibrium(W, tmin, tmax, w)
+    assert got_static.tolist() == [lp_equilibrium(W[k], tmin, tmax, w[k]) for k in range(N)]
+    assert np.all(got <= got_static)  # the box contains the single wrench
+
+
+def test_signs_on_a_hand_example():
+    """Planar point mass hanging from two cables pulling up-left and up-right."""
+    u = np.array([[-1.0, 1.0], [1.0, 1.0]]).T / np.sqrt(2)
+    W = u[None]
+    lo, hi = np.zeros(2), np.full(2, 100.0)
+    weight = np.array([0.0, -9.81])  # external wrench: gravity pulls down
+    assert static_equilibrium(W, lo, hi, weight)[0]
+    assert not static_equilibrium(W, lo, hi, -weight)[0]  # cables cannot push down
+    # each cable carries 9.81/sqrt(2) = 6.94 N: a bound of 6.9 N is too small
+    assert not static_equilibrium(W, lo, np.full(2, 6.9), weight)[0]
+    assert static_equilibrium(W, lo, np.full(2, 7.0), weight)[0]
+    # a box of side wrenches: ±1 N sideways needs tension differences within bounds
+    box = BoxWrenchSet.around([0.0, 0.0], [1.0, 0.0])
+    assert wrench_feasible(W, lo, hi, box, offset=weight)[0]
+    assert not wrench_feasible(W, lo, np.full(2, 7.0), box, offset=weight)[0]
+    assert not wrench_closure(W)[0]
+
+
+def test_closure_of_a_triangle_of_cables():
+    dirs = np.array([[1.0, 0.0], [-0.5, 0.8], [-0.5, -0.8]]).T
+    assert wrench_closure(dirs[None])[0]
+    assert not wrench_closure(dirs[None, :, :2])[0]  # two cables never span the plane positively
+    tilted = np.array([[1.0, 0.0], [-0.5, 0.8], [0.5, -0.8]]).T  # all in a half-plane
+    assert not wrench_closure(tilted[None])[0]
+
+
+def test_infinite_upper_bounds_and_zero_dot_products():
+    """0·inf must be 0: a column orthogonal to a facet normal with tmax = inf."""
+    W = np.array([[1.0, 0.0, -1.0, 0.0], [0.0, 1.0, 0.0, -1.0]])[None]
+    lo, hi = np.ones(4), np.full(4, np.inf)
+    assert static_equilibrium(W, lo, hi, [5.0, -3.0])[0]
+    assert wrench_feasible(W, lo, hi, BoxWrenchSet.around([0, 0], [100, 100]))[0]
+    hi2 = np.array([np.inf, 2.0, 2.0, np.inf])  # column 3 (pushes -x) at most 2
+    assert not static_equilibrium(W, lo, hi2, [5.0, 0.0])[0]  # needs t1 - t3 = -5
+    assert static_equilibrium(W, lo, hi2, [1.0, 0.0])[0]
+
+
+def test_constant_tension_cables_move_into_the_offset():
+    W = np.array([[1.0, -1.0, 0.0, 0.0], [0.0, 0.0, 1.0, -1.0]])[None]
+    lo = np.array([2.0, 2.0, 0.0, 0.0])
+    hi = np.array([2.0, 5.0, 3.0, 3.0])  # cable 1 carries exactly 2 N
+    assert static_equilibrium(W, lo, hi, [1.0, 0.0])[0]  # t2 = 3
+    assert not static_equilibrium(W, lo, hi, [-1.0, 0.0])[0]  # t2 = 1 < 2
+    assert static_equilibrium(W, lo, hi, [1.0, 0.0])[0] == lp_equilibrium(W[0], lo, hi, [1.0, 0.0])
+
+
+class GenericBox(WrenchSet):
+    """A box known only by its support function: exercises the NumPy path."""
+
+    def __init__(self, box):
+        self.box = box
+        self.dim = box.dim
+
+    def support(self, normals):
+        return self.box.support(normals)
+
+
+@pytest.mark.parametrize("m,n", [(2, 4), (3, 5), (6, 8)])
+def test_generic_support_path_matches_the_kernel(m, n):
+    rng = np.random.default_rng(m * 10 + n)
+    N = 200
+    W = rng.normal(size=(N, m, n))
+    lo, hi = np.full(n, 0.5), np.full(n, 4.0)
+    hi[0] = np.inf
+    w = -np.einsum("kij,kj->ki", W, rng.uniform(0, 4.5, (N, n)))
+    sets = [
+        BoxWrenchSet.around(np.full(m, 0.1), np.full(m, 0.2)),
+        EllipsoidWrenchSet(np.zeros(m), np.diag(rng.uniform(0.01, 0.1, m))),
+        PolytopeWrenchSet(rng.normal(scale=0.2, size=(5, m))),
+    ]
+    for ws in sets:
+        fast = wrench_feasible(W, lo, hi, ws, w)
+        generic = wrench_feasible(W, lo, hi, GenericBox(ws) if isinstance(ws, BoxWrenchSet) else _wrap(ws), w)
+        assert 0 < fast.sum() < N
+        assert np.array_equal(fast, generic)
+
+
+def _wrap(ws):
+    class Wrapped(WrenchSet):
+        dim = ws.dim
+
+        def support(self, normals):
+            return ws.support(normals)
+
+    return Wrapped()
+
+
+def test_ellipsoid_between_inscribed_and_circumscribed_boxes():
+    rng = np.random.default_rng(3)
+    N, m, n = 300, 3, 6
+    W = rng.normal(size=(N, m, n))
+    lo, hi = np.zeros(n), np.full(n, 3.0)
+    w = -np.einsum("kij,kj->ki", W, rng.uniform(0, 3, (N, n)))
+    r = np.array([0.2, 0.3, 0.1])
+    ell = EllipsoidWrenchSet(np.zeros(m), np.diag(r**2))
+    inner = BoxWrenchSet.around(np.zeros(m), r / np.sqrt(m))  # inside the ellipsoid
+    outer = BoxWrenchSet.around(np.zeros(m), r)  # contains the ellipsoid
+    f_ell, f_in, f_out = (wrench_feasible(W, lo, hi, s, w) for s in (ell, inner, outer))
+    assert np.all(f_out <= f_ell) and np.all(f_ell <= f_in)
+    assert f_out.sum() < f_in.sum()
+
+
+def test_polytope_equals_box_with_the_same_vertices():
+    rng = np.random.default_rng(4)
+    W = rng.normal(size=(300, 3, 5))
+    lo, hi = np.ones(5), np.full(5, 5.0)
+    w = -np.einsum("kij,kj->ki", W, rng.uniform(0, 6, (300, 5)))
+    box = BoxWrenchSet([-0.2, -0.1, 0.0], [0.3, 0.1, 0.4])
+    assert np.array_equal(wrench_feasible(W, lo, hi, box, w), wrench_feasible(W, lo, hi, PolytopeWrenchSet(box.vertices()), w))
+
+
+def test_rank_deficient_structure_matrices():
+    """Flat zonotopes: a single wrench goes to the LP, a full-dimensional set is infeasible."""
+    W = np.array([[1.0, 0.0, -1.0], [0.0, 0.0, 0.0], [0.0, 1.0, 0.0]])  # rank 2 in R^3
+    lo, hi = np.zeros(3), np.full(3, 10.0)
+    assert static_equilibrium(W[None], lo, hi, [1.0, 0.0, -2.0])[0]
+    assert not static_equilibrium(W[None], lo, hi, [1.0, 0.5, -2.0])[0]  # out of range(W)
+    assert not wrench_feasible(W[None], lo, hi, BoxWrenchSet.around(np.zeros(3), [0.1, 0.1, 0.1]), [1.0, 0.0, -2.0])[0]
+    # a box flat along the missing direction lies in the plane: decided by vertex LPs
+    flat = BoxWrenchSet.around(np.zeros(3), [0.5, 0.0, 0.5])
+    assert wrench_feasible(W[None], lo, hi, flat, [1.0, 0.0, -2.0])[0]
+    assert not wrench_feasible(W[None], lo, hi, flat, [1.0, 0.0, -0.2])[0]  # needs t2 = -0.3
+    # fewer cables than wrench components (under-constrained): 3 cables, m = 6
+    W6 = np.zeros((6, 3))
+    W6[:3] = np.eye(3)
+    assert static_equilibrium(W6[None], np.zeros(3), np.full(3, np.inf), [-1.0, -2.0, -3.0, 0, 0, 0])[0]
+    assert not static_equilibrium(W6[None], np.zeros(3), np.full(3, np.inf), [1.0, -2.0, -3.0, 0, 0, 0])[0]
+    assert not wrench_closure(W6[None])[0]
+
+
+def test_facet_normals_are_unit_and_orthogonal_to_their_columns():
+    rng = np.random.default_rng(5)
+    W = rng.normal(size=(10, 6, 8))
+    W[0, :, 3] = W[0, :, 1] * 2  # dependent pair: combinations with both have no normal
+    normals, hz, valid = facet_normals(W, np.zeros(8), np.ones(8))
+    import itertools
+
+    combos = list(itertools.combinations(range(8), 5))
+    assert normals.shape == (10, len(combos), 6)
+    for c, cols in enumerate(combos):
+        if 1 in cols and 3 in cols:
+            assert not valid[0, c]
+        else:
+            assert valid[0, c]
+    n = normals[valid]
+    np.testing.assert_allclose(np.linalg.norm(n, axis=-1), 1.0)
+    for k in range(10):
+        for c, cols in enumerate(combos):
+            if valid[k, c]:
+                np.testing.assert_allclose(normals[k, c] @ W[k][:, list(cols)], 0.0, atol=1e-12)
+                dots = normals[k, c] @ W[k]
+                np.testing.assert_allclose(hz[k, c], [np.maximum(dots, 0).sum(), np.maximum(-dots, 0).sum()], atol=1e-12)
+
+
+def test_bad_inputs():
+    W = np.eye(2)[None]
+    with pytest.raises(TautError):
+        wrench_feasible(W, [1, 1], [0, 0], SingleWrench([0.0, 0.0]))
+    with pytest.raises(TautError):
+        wrench_feasible(W, [0, 0], [1, 1], SingleWrench([0.0, 0.0, 0.0]))
+    with pytest.raises(TautError):
+        wrench_feasible(W, [0, 0], [1, 1], SingleWrench([0.0, 0.0]), offset=np.zeros((3, 2)))
+    with pytest.raises(TautError):
+        wrench_closure(np.full((1, 2, 3), np.nan))

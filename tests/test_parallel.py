@@ -1,0 +1,118 @@
+"""Executors: serial, local processes, dask.distributed — identical results."""
+
+import sys
+
+import numpy as np
+import pytest
+
+import taut
+from taut.errors import TautError
+from taut.parallel import DaskExecutor, ProcessExecutor, SerialExecutor, get_executor
+from taut.workspace import evaluate_workspace
+
+PLANAR = taut.example("planar-4cable")
+SPATIAL = taut.example("spatial-8cable")
+
+
+def _square(x):
+    return x * x
+
+
+def _fail(x):
+    if x == 3:
+        raise TautError("item 3 is bad")
+    return x
+
+
+def _reference():
+    return {
+        "planar": evaluate_workspace(PLANAR, "wrench-feasible", resolution=40),
+        "spatial": evaluate_workspace(SPATIAL, "static", resolution=9),
+    }
+
+
+def _run_all(executor):
+    return {
+        "planar": evaluate_workspace(PLANAR, "wrench-feasible", resolution=40, executor=executor, chunk=300),
+        "spatial": evaluate_workspace(SPATIAL, "static", resolution=9, executor=executor, chunk=100),
+    }
+
+
+def _assert_same(got, ref):
+    for key in ref:
+        assert np.array_equal(got[key].inside, ref[key].inside)
+        assert np.array_equal(got[key].poses, ref[key].poses)
+        assert 0 < ref[key].count < ref[key].inside.size
+
+
+def test_get_executor_kinds_and_errors():
+    assert isinstance(get_executor(), SerialExecutor)
+    assert isinstance(get_executor(workers=1), SerialExecutor)
+    ex = get_executor(workers=3)
+    assert isinstance(ex, ProcessExecutor) and ex.workers == 3
+    ex.close()
+    for bad in (0, -2, 1.5, "2", True):
+        with pytest.raises(TautError):
+            get_executor(workers=bad)
+    with pytest.raises(TautError, match="not both"):
+        get_executor(workers=2, scheduler="tcp://127.0.0.1:8786")
+    with pytest.raises(TautError, match="executor"):
+        evaluate_workspace(PLANAR, "static", resolution=3, executor=4)
+
+
+def test_serial_map_order_callback_and_errors():
+    seen = []
+    assert SerialExecutor().map(_square, range(5), callback=seen.append) == [0, 1, 4, 9, 16]
+    assert seen == [0, 1, 2, 3, 4]
+    with pytest.raises(TautError, match="item 3"):
+        SerialExecutor().map(_fail, range(5))
+
+
+def test_missing_dask_extra_is_a_clear_error(monkeypatch):
+    monkeypatch.setitem(sys.modules, "distributed", None)  # import distributed -> ImportError
+    with pytest.raises(TautError, match=r"taut\[dist\]"):
+        get_executor(scheduler="tcp://127.0.0.1:8786")
+
+
+def test_unreachable_scheduler_is_a_clear_error():
+    with pytest.raises(TautError, match="cannot reach"):
+        get_executor(scheduler="tcp://127.0.0.1:9", timeout=1.0)
+
+
+def test_processes_give_identical_results():
+    ref = _reference()
+    with get_executor(workers=2) as ex:
+        seen = []
+        assert ex.map(_square, range(6), callback=seen.append) == [0, 1, 4, 9, 16, 25]
+        assert sorted(seen) == list(range(6))
+        with pytest.raises(TautError, match="item 3"):
+            ex.map(_fail, range(5))
+        _assert_same(_run_all(ex), ref)
+
+
+def test_dask_local_cluster_gives_identical_results():
+    distributed = pytest.importorskip("distributed")
+    ref = _reference()
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        ex = get_executor(scheduler=cluster.scheduler_address)
+        try:
+            assert isinstance(ex, DaskExecutor)
+            calls = []
+            got = {
+                "planar": evaluate_workspace(PLANAR, "wrench-feasible", resolution=40, executor=ex, chunk=300,
+                                             progress=lambda d, t: calls.append((d, t))),
+                "spatial": evaluate_workspace(SPATIAL, "static", resolution=9, executor=ex, chunk=100),
+            }
+            _assert_same(got, ref)
+            assert calls[-1] == (1600, 1600) and len(calls) == 1 + 6
+            with pytest.raises(TautError, match="item 3"):
+                ex.map(_fail, range(5))
+        finally:
+            ex.close()
+        with distributed.Client(cluster) as client:  # an existing client is used as is
+            ex2 = get_executor(scheduler=client)
+            assert ex2.map(_square, [1, 2, 3]) == [1, 4, 9]
+            ex2.close()
+            assert client.status == "running"
+            direct = evaluate_workspace(SPATIAL, "static", resolution=9, executor=client, chunk=250)
+            assert np.array_equal(direct.inside, ref["spatial"].inside)

@@ -1,0 +1,224 @@
+"""Workspace conditions, grids and grid evaluation."""
+
+import numpy as np
+import pytest
+from scipy.optimize import linprog
+
+import taut
+from taut.errors import PoseError, TautError
+from taut.kinematics import structure_matrix
+from taut.kinematics.batch import batch_structure_matrices
+from taut.model import robot_from_dict
+from taut.statics.wrench import BoxWrenchSet, external_wrench
+from taut.workspace import (
+    CONDITIONS,
+    WorkspaceCondition,
+    WorkspaceResult,
+    default_bounds,
+    default_wrench_set,
+    evaluate_workspace,
+    make_condition,
+    position_grid,
+)
+
+PLANAR = taut.example("planar-4cable")
+SPATIAL = taut.example("spatial-8cable")
+
+
+def lp_equilibrium(W, tmin, tmax, w) -> bool:
+    bounds = [(lo, None if np.isinf(hi) else hi) for lo, hi in zip(tmin, tmax)]
+    return linprog(np.zeros(W.shape[1]), A_eq=W, b_eq=-w, bounds=bounds, method="highs").status == 0
+
+
+def lp_closure(W) -> bool:
+    m, n = W.shape
+    if np.linalg.matrix_rank(W) < m:
+        return False
+    return linprog(np.zeros(n), A_eq=W, b_eq=np.zeros(m), bounds=[(1, None)] * n, method="highs").status == 0
+
+
+def triangle_robot(**platform):
+    return robot_from_dict({
+        "name": "planar point-mass triangle",
+        "dimension": 2,
+        "platform": {"kind": "point-mass", **platform},
+        "cables": [{"exit": [0, 0]}, {"exit": [2, 0]}, {"exit": [1, 2]}],
+    })
+
+
+def test_registry_and_condition_factory():
+    assert {"wrench-closure", "wrench-feasible", "static"} <= set(CONDITIONS)
+    for name, cls in CONDITIONS.items():
+        assert issubclass(cls, WorkspaceCondition) and cls.name == name
+    assert make_condition("static").name == "static"
+    ws = BoxWrenchSet.around(np.zeros(3), np.ones(3))
+    assert make_condition("wrench-feasible", wrench_set=ws).wrench_set is ws
+    with pytest.raises(TautError, match="unknown workspace condition"):
+        make_condition("nope")
+    with pytest.raises(TautError, match="does not take"):
+        make_condition("wrench-closure", wrench_set=ws)
+
+
+def test_wrench_closure_of_a_point_mass_triangle_is_its_interior():
+    robot = triangle_robot()
+    axis = 0.05 + 0.1 * np.arange(20)  # never on an edge of the triangle
+    res = evaluate_workspace(robot, "wrench-closure", grid=[axis, axis])
+    X, Y = np.meshgrid(axis, axis, indexing="ij")
+    expected = (Y > 0) & (Y < 2 * X) & (Y < 4 - 2 * X)
+    assert res.grid_shape == (20, 20)
+    assert np.array_equal(res.inside.reshape(res.grid_shape), expected)
+    np.testing.assert_allclose(res.poses.reshape(20, 20, 2)[..., 0], X)
+    assert res.measure == pytest.approx(expected.sum() * 0.01)
+
+
+def test_static_of_a_hanging_point_mass_triangle():
+    """Weight down: the cables hold it where the upward cables can (y below the apex)."""
+    robot = triangle_robot(mass=1.0, gravity=[0, -9.81])
+    res = evaluate_workspace(robot, "static", resolution=15)
+    W = structure_matrix(robot, res.poses)
+    w = external_wrench(robot, res.poses)
+    expected = [lp_equilibrium(W[k], *robot.tension_bounds, w[k]) for k in range(len(res.poses))]
+    assert res.inside.tolist() == expected
+    assert 0 < res.count < len(res.poses)
+
+
+def test_zero_length_cable_poses_are_outside():
+    robot = triangle_robot(mass=1.0)
+    poses = np.array([[1.0, 0.5], [1.0, 2.0], [0.0, 0.0], [1.0, 0.6]])  # two poses on exits
+    for name in CONDITIONS:
+        res = evaluate_workspace(robot, name, poses=poses)
+        assert res.inside.tolist()[1:3] == [False, False]
+        assert res.axes == () and res.grid_shape == (4,) and res.measure is None
+    assert evaluate_workspace(robot, "wrench-closure", poses=poses).inside.tolist() == [True, False, False, True]
+
+
+@pytest.mark.parametrize("robot", [PLANAR, SPATIAL], ids=["planar-4cable", "spatial-8cable"])
+def test_static_and_closure_agree_with_lp_oracles(robot):
+    res_s = evaluate_workspace(robot, "static", resolution=9 if robot.dimension == 3 else 25)
+    res_c = evaluate_workspace(robot, "wrench-closure", resolution=9 if robot.dimension == 3 else 25)
+    rng = np.random.default_rng(0)
+    pick = rng.choice(len(res_s.poses), 120, replace=False)
+    W = structure_matrix(robot, res_s.poses[pick])
+    w = external_wrench(robot, res_s.poses[pick])
+    tmin, tmax = robot.tension_bounds
+    assert res_s.inside[pick].tolist() == [lp_equilibrium(W[k], tmin, tmax, w[k]) for k in range(len(pick))]
+    assert res_c.inside[pick].tolist() == [lp_closure(W[k]) for k in range(len(pick))]
+    assert 0 < res_s.count < len(res_s.poses)
+
+
+@pytest.mark.parametrize("robot", [PLANAR, SPATIAL], ids=["planar-4cable", "spatial-8cable"])
+def test_wrench_feasible_agrees_with_vertex_lps(robot):
+    res = evaluate_workspace(robot, "wrench-feasible", resolution=7 if robot.dimension == 3 else 21)
+    rng = np.random.default_rng(1)
+    inside, outside = np.flatnonzero(res.inside), np.flatnonzero(~res.inside)
+    assert inside.size and outside.size
+    pick = np.concatenate([rng.choice(inside, 12, replace=False), rng.choice(outside, 12, replace=False)])
+    W = structure_matrix(robot, res.poses[pick])
+    w = external_wrench(robot, res.poses[pick])
+    box = default_wrench_set(robot)
+    tmin, tmax = robot.tension_bounds
+    expected = [all(lp_equilibrium(W[k], tmin, tmax, w[k] + v) for v in box.vertices()) for k in range(len(pick))]
+    assert res.inside[pick].tolist() == expected
+
+
+def test_wrench_feasible_nests_and_reduces_to_static():
+    for robot in (PLANAR, SPATIAL):
+        res_f = evaluate_workspace(robot, "wrench-feasible", resolution=11)
+        res_s = evaluate_workspace(robot, "static", resolution=11)
+        assert np.all(res_f.inside <= res_s.inside)  # the box contains the external wrench
+        assert res_f.count < res_s.count
+        zero = BoxWrenchSet.around(np.zeros(robot.wrench_dim), np.zeros(robot.wrench_dim))
+        res_0 = evaluate_workspace(robot, "wrench-feasible", resolution=11, wrench_set=zero)
+        assert np.array_equal(res_0.inside, res_s.inside)
+
+
+def test_default_wrench_set_values():
+    box = default_wrench_set(SPATIAL)  # 5 kg: F = 49.05 N; moments from the platform radius
+    f = 0.1 * 5 * 9.81
+    rho = max(np.linalg.norm(c.anchor) for c in SPATIAL.cables)
+    np.testing.assert_allclose(box.upper, [f, f, f] + [f * rho] * 3)
+    np.testing.assert_allclose(box.lower, -box.upper)
+    box2 = default_wrench_set(PLANAR)  # 1 kg: 0.98 N raised to the 1 N floor
+    np.testing.assert_allclose(box2.upper, [1.0, 1.0, np.hypot(0.1, 0.05)])
+    assert default_wrench_set(triangle_robot()).upper.tolist() == [1.0, 1.0]
+
+
+def test_under_constrained_robot_static():
+    """3 cables, 6 DOF: equilibrium hanging below the centroid of the exits (LP fallback)."""
+    exits = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.5, 0.866, 0.0]])
+    c = exits.mean(axis=0)
+    robot = robot_from_dict({
+        "name": "3-cable suspended",
+        "dimension": 3,
+        "platform": {"kind": "rigid", "mass": 2.0, "gravity": [0, 0, -9.81]},
+        "cables": [{"exit": e.tolist(), "anchor": (0.1 * (e - c)).tolist()} for e in exits],
+    })
+    home = np.array([c[0], c[1], -1.0, 0, 0, 0])
+    poses = np.array([home, home + [0.05, 0, 0, 0, 0, 0], home + [0, 0, 0, 0, 0, 0.1], home * [1, 1, -1, 1, 1, 1]])
+    res = evaluate_workspace(robot, "static", poses=poses)
+    # shifted sideways or twisted it cannot balance; above the exits the cables push
+    assert res.inside.tolist() == [True, False, False, False]
+    assert not evaluate_workspace(robot, "wrench-closure", poses=poses).inside.any()
+    assert not evaluate_workspace(robot, "wrench-feasible", poses=poses).inside.any()
+
+
+def test_grid_defaults_and_bounds():
+    b = default_bounds(PLANAR)
+    np.testing.assert_allclose(b, [[-0.96, 0.96], [-0.96, 0.96]])
+    g = position_grid(SPATIAL, 5)
+    assert g.shape == (5, 5, 5) and g.poses().shape == (125, 6)
+    assert np.all(g.poses()[:, 3:] == 0)
+    res = evaluate_workspace(PLANAR, "static", grid=[(-0.5, 0.5, 5), (-0.2, 0.2, 3)], orientation=[0.1])
+    assert res.grid_shape == (5, 3) and np.all(res.poses[:, 2] == 0.1)
+    np.testing.assert_allclose(res.axes[1], [-0.2, 0.0, 0.2])
+    assert res.poses[1].tolist() == [-0.5, 0.0, 0.1]  # C order: the last axis varies fastest
+    full = evaluate_workspace(PLANAR, "static", grid=[(-0.5, 0.5, 3), (-0.5, 0.5, 3), (-0.2, 0.2, 3)])
+    assert full.grid_shape == (3, 3, 3) and len(np.unique(full.poses[:, 2])) == 3
+    flat = default_bounds(triangle_robot().model_copy(update={"dimension": 2}))
+    assert flat.shape == (2, 2)
+    with pytest.raises(TautError):
+        evaluate_workspace(PLANAR, "static", grid=[(-0.5, 0.5, 2.5), (0, 1, 3)])
+    with pytest.raises(TautError):
+        evaluate_workspace(PLANAR, "static", orientation=[0.1, 0.2])
+    with pytest.raises(PoseError):
+        evaluate_workspace(PLANAR, "static", poses=np.zeros((3, 2)))
+
+
+def test_result_summary_save_load_and_progress(tmp_path):
+    calls = []
+    res = evaluate_workspace(PLANAR, "wrench-feasible", resolution=30, chunk=100, progress=lambda d, t: calls.append((d, t)))
+    assert calls[0] == (0, 900) and calls[-1] == (900, 900)
+    assert [d for d, _ in calls] == sorted(d for d, _ in calls) and len(calls) == 10
+    again = evaluate_workspace(PLANAR, "wrench-feasible", resolution=30)  # one chunk
+    assert np.array_equal(res.inside, again.inside)
+    s = res.summary()
+    assert s["poses"] == 900 and s["inside"] == res.count and s["fraction"] == pytest.approx(res.count / 900)
+    cell = (res.axes[0][1] - res.axes[0][0]) * (res.axes[1][1] - res.axes[1][0])
+    assert s["measure"] == pytest.approx(res.count * cell)
+    path = tmp_path / "ws.npz"
+    res.save(path)
+    back = WorkspaceResult.load(path)
+    assert back.condition == "wrench-feasible" and back.robot_name == PLANAR.name
+    assert np.array_equal(back.inside, res.inside) and np.array_equal(back.poses, res.poses)
+    assert back.grid_shape == (30, 30) and back.axis_names == ("x", "y")
+    np.testing.assert_array_equal(back.axes[1], res.axes[1])
+
+
+def test_jointed_robot_uses_the_numpy_path():
+    robot = taut.example("adjustable-8cable")
+    res = evaluate_workspace(robot, "wrench-closure", resolution=4)
+    assert res.grid_shape == (4, 4, 4) and res.poses.shape == (64, robot.pose_size)
+    assert np.all(res.poses[:, -1] == robot.joint_limits.mean(axis=1))  # joint at mid-range
+    W = structure_matrix(robot, res.poses)
+    assert res.inside.tolist() == [lp_closure(W[k]) for k in range(64)]
+
+
+def test_batch_structure_matrices_match_inverse_kinematics():
+    rng = np.random.default_rng(2)
+    for robot, size in ((PLANAR, 3), (SPATIAL, 6), (triangle_robot(), 2)):
+        poses = rng.uniform(-0.4, 0.4, (50, size))
+        for conv in (("xyz-fixed", "xyz-moving", "tilt-torsion") if robot.dimension == 3 else (robot.orientation,)):
+            r = robot.model_copy(update={"orientation": conv})
+            _, W, ok = batch_structure_matrices(r, poses)
+            assert ok.all()
+            np.testing.assert_allclose(W, structure_matrix(r, poses), atol=1e-14)
