@@ -63,32 +63,43 @@ def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     )
 
 
+def _zero_length(robot: Robot, lengths: np.ndarray) -> InfeasiblePoseError:
+    k, i = np.unravel_index(np.argmin(lengths), lengths.shape)
+    return InfeasiblePoseError(
+        f"{robot.name}: at pose {k + 1} cable {i + 1} has zero length (its anchor is at its exit point)"
+    )
+
+
 def inverse_kinematics(robot: Robot, poses) -> IKResult:
     """Lengths, unit vectors, anchors and structure matrix at each pose.
 
+    Robots without jointed bodies go through the Numba kernel of
+    :mod:`taut.kinematics.batch`; jointed platforms through NumPy over body frames.
     Raises :class:`InfeasiblePoseError` when a cable has zero length (its direction and the
     structure matrix do not exist there)."""
+    from taut.kinematics.batch import batch_structure_matrices, supports_batch
+
     arr, single = as_poses(robot, poses)
-    b = _anchors(robot, arr)
-    v = robot.exits[None, :, :] - b
-    lengths = np.sqrt(np.einsum("nki,nki->nk", v, v))
-    if lengths.size and lengths.min() < MIN_LENGTH:
-        k, i = np.unravel_index(np.argmin(lengths), lengths.shape)
-        raise InfeasiblePoseError(
-            f"{robot.name}: at pose {k + 1} cable {i + 1} has zero length (its anchor is at its exit point)"
-        )
-    u = v / lengths[..., None]
-    if robot.is_point_mass:
-        W = np.swapaxes(u, 1, 2)
+    d = robot.dimension
+    if supports_batch(robot):
+        lengths, W, ok = batch_structure_matrices(robot, arr)
+        if not ok.all():
+            raise _zero_length(robot, lengths)
+        u = np.swapaxes(W[:, :d, :], 1, 2)
+        b = robot.exits[None, :, :] - u * lengths[..., None]
     else:
-        arm = b - arr[:, None, : robot.dimension]
-        m = _cross(arm, u)
+        b = _anchors(robot, arr)
+        v = robot.exits[None, :, :] - b
+        lengths = np.sqrt(np.einsum("nki,nki->nk", v, v))
+        if lengths.size and lengths.min() < MIN_LENGTH:
+            raise _zero_length(robot, lengths)
+        u = v / lengths[..., None]
+        m = _cross(b - arr[:, None, :d], u)
         m = m[..., None] if m.ndim == 2 else m
         W = np.concatenate([np.swapaxes(u, 1, 2), np.swapaxes(m, 1, 2)], axis=1)
-    res = IKResult(lengths, u, b, W)
     if single:
         return IKResult(lengths[0], u[0], b[0], W[0])
-    return res
+    return IKResult(lengths, u, b, W)
 
 
 def cable_lengths(robot: Robot, poses) -> np.ndarray:
