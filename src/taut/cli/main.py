@@ -162,29 +162,46 @@ def _progress(enabled: bool):
     return bar, lambda done, total: bar.update(task, completed=done, total=total)
 
 
+def _grid(text: str | None):
+    """``--grid N`` (points per axis) or ``lo:hi:n;lo:hi:n[;...]`` (one range per axis)."""
+    if text is None:
+        return None, None
+    if text.strip().isdigit():
+        return None, int(text)
+    axes = []
+    for part in text.split(";"):
+        lo, hi, n = (part.split(":") + [None, None])[:3]
+        if n is None or not n.strip().isdigit():
+            raise TautError(f"--grid: expected N or lo:hi:n;lo:hi:n[;...], got {text!r}")
+        axes.append((A.number(lo, "--grid"), A.number(hi, "--grid"), int(n)))
+    return axes, None
+
+
 def cmd_workspace(ns) -> int:
     from taut.parallel import get_executor
+    from taut.statics.wrench import BoxWrenchSet
     from taut.workspace import evaluate_workspace
 
     robot = _robot(ns.robot)
-    grid = None
-    if ns.grid and "," in ns.grid or (ns.grid and ":" in ns.grid):
-        grid = [tuple(A.vector(axis.replace(":", ","), "--grid")) for axis in ns.grid.split(";")] if ";" in ns.grid else None
-    resolution = int(ns.grid) if ns.grid and ns.grid.isdigit() else None
+    grid, resolution = _grid(ns.grid)
     orientation = A.vector(ns.orientation, "--orientation") if ns.orientation else None
-    executor = get_executor(workers=ns.workers, scheduler=ns.scheduler)
+    wrench_set = None
+    if ns.box:
+        if ns.condition != "wrench-feasible":
+            raise TautError("--box sets the wrench set of --condition wrench-feasible")
+        half = A.vector(ns.box, "--box")
+        if half.size != robot.wrench_dim:
+            raise TautError(f"--box: {robot.name} takes {robot.wrench_dim} half-widths, got {half.size}")
+        wrench_set = BoxWrenchSet.around(np.zeros(robot.wrench_dim), half)
     show = sys.stdout.isatty() and not ns.json
-    bar, progress = _progress(show)
-    try:
-        kwargs = dict(orientation=orientation, executor=executor, progress=progress)
-        if resolution:
-            kwargs["resolution"] = resolution
-        if grid:
-            kwargs["grid"] = grid
-        res = evaluate_workspace(robot, ns.condition, **kwargs)
-    finally:
-        if bar is not None:
-            bar.stop()
+    with get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor:
+        bar, progress = _progress(show)
+        try:
+            res = evaluate_workspace(robot, ns.condition, grid=grid, resolution=resolution, orientation=orientation,
+                                     wrench_set=wrench_set, executor=executor, progress=progress)
+        finally:
+            if bar is not None:
+                bar.stop()
     data = {"robot": robot.name, "condition": ns.condition} | res.summary()
     if ns.out:
         res.save(ns.out)
@@ -247,7 +264,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     c = command("workspace", "workspace over a grid of poses", cmd_workspace)
     c.add_argument("--condition", required=True, help="wrench-closure | wrench-feasible | static")
-    c.add_argument("--grid", help="points per axis (e.g. 50), or per-axis ranges 'x0:x1:n;y0:y1:n[;z0:z1:n]'")
+    c.add_argument("--grid", help="points per axis (e.g. 50), or per-axis ranges 'x0:x1:n;y0:y1:n[;z0:z1:n]' (one per pose coordinate for a full pose grid)")
+    c.add_argument("--box", metavar="HALF_WIDTHS", help="wrench-feasible: box of wrenches around the external wrench, one half-width per component (default: 10 %% of the weight)")
     c.add_argument("--orientation", help="fixed platform orientation (theta, or a,b,c) and joint coordinates")
     c.add_argument("--out", metavar="FILE.npz", help="save poses and verdicts")
     c.add_argument("--plot", metavar="FILE.png", help="plot the workspace")

@@ -33,6 +33,9 @@ def as_poses(robot: Robot, poses) -> tuple[np.ndarray, bool]:
     if not np.all(np.isfinite(arr)):
         bad = np.argwhere(~np.isfinite(arr))[0]
         raise PoseError(f"{robot.name}: pose {bad[0] + 1}, coordinate {robot.pose_names[bad[1]]} is not finite")
+    if arr.size and np.abs(arr).max() > 1e9:
+        k, j = np.unravel_index(np.argmax(np.abs(arr)), arr.shape)
+        raise PoseError(f"{robot.name}: pose {k + 1}, coordinate {robot.pose_names[j]} = {arr[k, j]:g} is beyond 1e9")
     if robot.n_joints:
         q = arr[:, robot.wrench_dim :]
         lo, hi = robot.joint_limits[:, 0], robot.joint_limits[:, 1]

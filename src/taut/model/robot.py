@@ -24,6 +24,8 @@ FORMAT = "taut/1"
 
 Number = Annotated[float, Field(allow_inf_nan=True)]
 Finite = Annotated[float, Field(allow_inf_nan=False)]
+#: Coordinates [m]: beyond a million kilometres squares overflow, and no robot is that large.
+Coordinate = Annotated[float, Field(allow_inf_nan=False, ge=-1e9, le=1e9)]
 
 
 class _Strict(BaseModel):
@@ -54,8 +56,8 @@ class Cable(_Strict):
     """Cable *i*: from the fixed exit point ``a_i`` to the anchor ``r_i`` on a platform body."""
 
     name: str | None = None
-    exit: list[Finite]
-    anchor: list[Finite] | None = None
+    exit: list[Coordinate]
+    anchor: list[Coordinate] | None = None
     body: str | None = None
     tension: tuple[Number, Number] = (0.0, math.inf)
     length: tuple[Number, Number] | None = None
@@ -84,7 +86,7 @@ class Joint(_Strict):
 
     kind: Literal["prismatic", "revolute"]
     axis: list[Finite]
-    origin: list[Finite] | None = None
+    origin: list[Coordinate] | None = None
     limits: tuple[Finite, Finite]
     name: str | None = None
 
@@ -106,8 +108,8 @@ class Joint(_Strict):
 class Capsule(_Strict):
     """A segment swept by a sphere: the collision model of ``004_…`` §2.3.2."""
 
-    a: list[Finite]
-    b: list[Finite]
+    a: list[Coordinate]
+    b: list[Coordinate]
     radius: Finite = Field(ge=0)
     name: str | None = None
 
@@ -124,7 +126,7 @@ class Body(_Strict):
 class Shape(_Strict):
     """Platform outline in its body frame: a polygon (planar) and/or capsules (collision)."""
 
-    polygon: list[list[Finite]] | None = None
+    polygon: list[list[Coordinate]] | None = None
     capsules: list[Capsule] = []
 
 
@@ -136,21 +138,21 @@ class Platform(_Strict):
     wrench: list[Finite] | None = None
     mass: Finite | None = Field(default=None, gt=0)
     gravity: list[Finite] | None = None
-    wrench_point: list[Finite] | None = None
+    wrench_point: list[Coordinate] | None = None
     shape: Shape | None = None
     bodies: list[Body] = []
 
 
 class Circle(_Strict):
     kind: Literal["circle"]
-    center: list[Finite]
+    center: list[Coordinate]
     radius: Finite = Field(ge=0)
     name: str | None = None
 
 
 class Polygon(_Strict):
     kind: Literal["polygon"]
-    vertices: list[list[Finite]]
+    vertices: list[list[Coordinate]]
     name: str | None = None
 
     @field_validator("vertices")
@@ -199,8 +201,8 @@ class Robot(_Strict):
     platform: Platform = Platform()
     cables: list[Cable] = Field(min_length=1)
     obstacles: list[Obstacle] = []
-    installation_space: list[list[Finite]] | None = None
-    disallowed: list[list[list[Finite]]] = []
+    installation_space: list[list[Coordinate]] | None = None
+    disallowed: list[list[list[Coordinate]]] = []
     reference: Reference | None = None
     trajectories: dict[str, Trajectory] = {}
 

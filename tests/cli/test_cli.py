@@ -1,0 +1,141 @@
+"""Every command on every built-in example it applies to; bad input gives exit status 2."""
+
+import json
+
+import numpy as np
+import pytest
+
+import taut
+from taut.cli.main import main
+
+EXAMPLES = taut.example_names()
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def run_json(capsys, *argv):
+    code, out, err = run(capsys, *argv, "--json")
+    assert code == 0, err
+    return json.loads(out)
+
+
+def test_examples_lists_every_builtin(capsys):
+    data = run_json(capsys, "examples")
+    names = [e["name"] for e in data["examples"]]
+    assert names == list(EXAMPLES)
+    required = {"suspended-3cable", "cogiro", "marionet-vr", "teaching-prototype", "robocrane", "vscr-single-cable",
+                "vscr-four-cable", "vscr-agriculture", "vscr-rehabilitation", "vscr-t-shaped", "adjustable-8cable"}
+    assert required <= set(names)
+    assert all(e["description"] for e in data["examples"])
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_ik_and_tensions_on_every_example(name, capsys):
+    robot = taut.example(name)
+    ik = run_json(capsys, "ik", name)
+    assert len(ik["lengths"]) == robot.n_cables and min(ik["lengths"]) > 0
+    W = np.array(ik["structure_matrix"])
+    assert W.shape == (robot.wrench_dim, robot.n_cables)
+    u = np.array(ik["directions"])
+    np.testing.assert_allclose(np.linalg.norm(u, axis=1), 1.0)
+    t = run_json(capsys, "tensions", name, "--method", "lp")
+    assert t["method"] == "lp" and isinstance(t["feasible"], bool)
+    if t["feasible"]:
+        tau = np.array(t["tensions"])
+        from taut.statics import external_wrench
+
+        w = external_wrench(robot, t["pose"])
+        np.testing.assert_allclose(W @ tau + w, 0, atol=1e-7 * max(1, np.abs(w).max()))
+        lo, hi = robot.tension_bounds
+        assert np.all(tau >= lo - 1e-9) and np.all(tau <= hi + 1e-9)
+    else:
+        assert t["tensions"] is None
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+@pytest.mark.parametrize("condition", ["wrench-closure", "static"])
+def test_workspace_on_every_example(name, condition, capsys):
+    robot = taut.example(name)
+    res = run_json(capsys, "workspace", name, "--condition", condition, "--grid", "5")
+    assert res["poses"] == 5 ** robot.dimension
+    assert 0 <= res["inside"] <= res["poses"] and res["fraction"] == pytest.approx(res["inside"] / res["poses"])
+    assert res["elapsed_s"] >= 0
+
+
+def test_workspace_outputs(tmp_path, capsys):
+    out, plot = tmp_path / "ws.npz", tmp_path / "ws.png"
+    res = run_json(capsys, "workspace", "planar-4cable", "--condition", "wrench-feasible", "--grid=-1:1:21;-1:1:11",
+                   "--orientation", "0", "--box", "1,1,0.1", "--out", str(out), "--plot", str(plot))
+    assert res["poses"] == 231 and 0 < res["inside"] < 231
+    saved = np.load(out)
+    assert saved["inside"].sum() == res["inside"]
+    assert plot.stat().st_size > 10_000
+    # a larger wrench box can only shrink the wrench-feasible workspace
+    bigger = run_json(capsys, "workspace", "planar-4cable", "--condition", "wrench-feasible", "--grid=-1:1:21;-1:1:11",
+                      "--orientation", "0", "--box", "20,20,2")
+    assert bigger["inside"] < res["inside"]
+
+
+def test_human_output_and_plot(tmp_path, capsys):
+    code, out, _ = run(capsys, "ik", "spatial-8cable", "--pose", "0.1,0,0.2,0,0,5deg", "--plot", str(tmp_path / "r.png"))
+    assert code == 0 and "structure matrix" in out and (tmp_path / "r.png").exists()
+    code, out, _ = run(capsys, "tensions", "planar-4cable", "--pose", "0,0,0", "--method", "qp")
+    assert code == 0 and "tensions (qp)" in out
+    code, out, _ = run(capsys, "tensions", "planar-4cable", "--pose", "0,0,0", "--wrench", "0,-1000,0")
+    assert code == 0 and "infeasible" in out
+
+
+@pytest.mark.parametrize("method", ["lp", "qp", "inf", "closed-form", "improved-closed-form", "barycentric"])
+def test_every_tension_method(method, capsys):
+    t = run_json(capsys, "tensions", "spatial-8cable", "--pose", "0.1,0.1,0,0,0,0", "--method", method)
+    assert t["feasible"] and t["method"] == method and len(t["tensions"]) == 8
+
+
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["ik", "planar-4cable", "--pose", "0,0"], "needs 3 coordinates"),
+        (["ik", "planar-4cable", "--pose", "0,zero,0"], "not a number"),
+        (["ik", "spatial-8cable", "--pose=-1.65,-0.9,-1.05,0,0,0"], "zero length"),
+        (["ik", "adjustable-8cable", "--pose", "5,5,4.5,0,0,0,9"], "outside its limits"),
+        (["ik", "no-such-robot"], "not a built-in example"),
+        (["tensions", "planar-4cable", "--method", "magic"], "magic"),
+        (["tensions", "planar-4cable", "--wrench", "1,2"], "3 components"),
+        (["workspace", "planar-4cable", "--condition", "reachable"], "reachable"),
+        (["workspace", "planar-4cable", "--condition", "static", "--grid", "1:2"], "--grid"),
+        (["workspace", "planar-4cable", "--condition", "wrench-feasible", "--box", "1,2"], "half-widths"),
+        (["workspace", "planar-4cable", "--condition", "static", "--workers", "0"], "worker"),
+        (["workspace", "planar-4cable", "--condition", "static", "--grid", "4", "--scheduler", "tcp://127.0.0.1:1"], "scheduler"),
+    ],
+)
+def test_bad_input_exits_2(argv, words, capsys):
+    code, _, err = run(capsys, *argv)
+    assert code == 2, err
+    assert words in err and "Traceback" not in err
+    assert err.startswith("taut: error: ")
+
+
+def test_usage_errors_exit_2(capsys):
+    with pytest.raises(SystemExit) as info:
+        main(["workspace", "planar-4cable"])
+    assert info.value.code == 2
+    assert "--condition" in capsys.readouterr().err
+
+
+def test_schema_command(capsys):
+    code, out, _ = run(capsys, "schema")
+    assert code == 0 and json.loads(out)["title"].startswith("taut robot file")
+
+
+def test_demo_writes_report(tmp_path, capsys):
+    data = run_json(capsys, "demo", "--out", str(tmp_path / "report"))
+    index = tmp_path / "report" / "index.html"
+    assert data["report"] == str(index) and index.exists()
+    html = index.read_text()
+    pngs = sorted(p.name for p in (tmp_path / "report").glob("*.png"))
+    assert len(pngs) >= 6 and all(f'src="{p}"' in html for p in pngs)
+    assert "wrench-feasible" in html
