@@ -8,19 +8,16 @@ Target: >= 1 000 000 poses/s on one core (first JIT compile excluded).
     python benchmarks/bench_ik.py [--poses 1000000] [--loop 5000]
 """
 
-import os
+from _common import best_of  # first: it pins the thread pools to one core
 
-for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS"):
-    os.environ.setdefault(_var, "1")
+import argparse
+import time
 
-import argparse  # noqa: E402
-import time  # noqa: E402
+import numpy as np
 
-import numpy as np  # noqa: E402
-
-import taut  # noqa: E402
-from taut.kinematics import inverse_kinematics  # noqa: E402
-from taut.kinematics.batch import batch_structure_matrices  # noqa: E402
+import taut
+from taut.kinematics import inverse_kinematics
+from taut.kinematics.batch import batch_structure_matrices
 
 
 def naive_structure_matrix(robot, pose):
@@ -36,14 +33,6 @@ def naive_structure_matrix(robot, pose):
         cols.append(np.concatenate([u, np.cross(arm, u)]))
     return np.array(cols).T
 
-
-def best_of(fn, repeat=3):
-    times, out = [], None
-    for _ in range(repeat):
-        t = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - t)
-    return min(times), out
 
 
 def main():
@@ -73,7 +62,7 @@ def main():
     print(f"  inverse_kinematics : {n / dt_n:>12,.0f} poses/s  (lengths, directions, anchors, W)")
     print(f"  per-pose loop      : {1 / dt_l:>12,.0f} poses/s  ({args.loop} poses, extrapolated)")
     print(f"  ratio batch / loop : {dt_l * n / dt_b:,.0f}x;  batch / inverse_kinematics: {dt_n / dt_b:.1f}x")
-    print(f"  max |W_batch - W_numpy| = {err:.1e}, vs loop {err_loop:.1e}; all poses valid: {bool(ok.all())}")
+    print(f"  max |W_batch - W_inverse_kinematics| = {err:.1e}, vs loop {err_loop:.1e}; all poses valid: {bool(ok.all())}")
     if err > 1e-12 or err_loop > 1e-12:
         raise SystemExit(1)
 

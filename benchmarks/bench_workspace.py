@@ -10,23 +10,20 @@ the verdicts differ (must be 0).
     python benchmarks/bench_workspace.py [--resolution 60] [--sample 200]
 """
 
-import os
+from _common import best_of  # first: it pins the thread pools to one core
 
-for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS"):
-    os.environ.setdefault(_var, "1")
+import argparse
+import time
 
-import argparse  # noqa: E402
-import time  # noqa: E402
+import numpy as np
+from scipy.optimize import linprog
 
-import numpy as np  # noqa: E402
-from scipy.optimize import linprog  # noqa: E402
-
-import taut  # noqa: E402
-from taut.kinematics import structure_matrix  # noqa: E402
-from taut.kinematics.batch import batch_structure_matrices  # noqa: E402
-from taut.statics.feasibility import wrench_feasible  # noqa: E402
-from taut.statics.wrench import external_wrench  # noqa: E402
-from taut.workspace import default_wrench_set, evaluate_workspace  # noqa: E402
+import taut
+from taut.kinematics import structure_matrix
+from taut.kinematics.batch import batch_structure_matrices
+from taut.statics.feasibility import wrench_feasible
+from taut.statics.wrench import external_wrench
+from taut.workspace import default_wrench_set, evaluate_workspace
 
 
 def lp_verdict(W, tmin, tmax, w, vertices) -> bool:
@@ -37,15 +34,6 @@ def lp_verdict(W, tmin, tmax, w, vertices) -> bool:
             return False
     return True
 
-
-def best_of(fn, repeat=3):
-    times = []
-    out = None
-    for _ in range(repeat):
-        t = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - t)
-    return min(times), out
 
 
 def main():

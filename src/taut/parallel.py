@@ -22,6 +22,7 @@ import multiprocessing
 import operator
 import weakref
 from collections.abc import Callable, Iterable
+from abc import ABC, abstractmethod
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from typing import Any
 
@@ -33,13 +34,14 @@ __all__ = ["DaskExecutor", "Executor", "ProcessExecutor", "SerialExecutor", "as_
 CONNECT_TIMEOUT = 5.0
 
 
-class Executor:
+class Executor(ABC):
     """Base interface: ``map(fn, items, *, callback=None) -> list`` and ``close()``."""
 
     name = "executor"
 
+    @abstractmethod
     def map(self, fn: Callable[[Any], Any], items: Iterable[Any], *, callback: Callable[[int], None] | None = None) -> list:
-        raise NotImplementedError
+        """``[fn(item) for item in items]`` in order; ``callback(i)`` as item ``i`` completes."""
 
     def close(self) -> None:
         """Release workers (a no-op where there are none)."""

@@ -13,6 +13,7 @@ all the wrench-feasibility tests of :mod:`taut.statics.feasibility` need.
 
 from __future__ import annotations
 
+from abc import ABC, abstractmethod
 from dataclasses import dataclass
 
 import numpy as np
@@ -45,17 +46,15 @@ def external_wrench(robot: Robot, poses) -> np.ndarray:
     return out[0] if single else out
 
 
-class WrenchSet:
+class WrenchSet(ABC):
     """A convex set of wrenches, known through its support function."""
 
     dim: int
 
+    @abstractmethod
     def support(self, normals: np.ndarray) -> np.ndarray:
         """``h(n) = max_{w ∈ set} n·w`` for normals ``(..., dim)``."""
-        raise TypeError(f"{type(self).__name__} does not define a support function")
 
-    def center(self) -> np.ndarray:
-        raise TypeError(f"{type(self).__name__} does not define a center")
 
 
 def _vector(x, what: str) -> np.ndarray:
@@ -81,8 +80,6 @@ class SingleWrench(WrenchSet):
     def support(self, normals):
         return np.asarray(normals) @ self.wrench
 
-    def center(self):
-        return self.wrench
 
 
 @dataclass(frozen=True)
@@ -115,8 +112,6 @@ class BoxWrenchSet(WrenchSet):
         c, r = (self.lower + self.upper) / 2, (self.upper - self.lower) / 2
         return n @ c + np.abs(n) @ r
 
-    def center(self):
-        return (self.lower + self.upper) / 2
 
     def vertices(self) -> np.ndarray:
         """The ``2^dim`` corners."""
@@ -143,8 +138,6 @@ class PolytopeWrenchSet(WrenchSet):
     def support(self, normals):
         return (np.asarray(normals) @ self.vertices.T).max(axis=-1)
 
-    def center(self):
-        return self.vertices.mean(axis=0)
 
 
 @dataclass(frozen=True)
@@ -174,5 +167,3 @@ class EllipsoidWrenchSet(WrenchSet):
         q = np.einsum("...i,ij,...j->...", n, self.shape, n)
         return n @ self.center_wrench + np.sqrt(np.maximum(q, 0.0))
 
-    def center(self):
-        return self.center_wrench

@@ -17,6 +17,8 @@ inverse kinematics does not exist (a zero-length cable) are outside.
 
 from __future__ import annotations
 
+from abc import ABC, abstractmethod
+
 from typing import ClassVar
 
 import numpy as np
@@ -44,7 +46,7 @@ DEFAULT_FRACTION = 0.1
 MIN_FORCE = 1.0
 
 
-class WorkspaceCondition:
+class WorkspaceCondition(ABC):
     """Base interface of a workspace condition.
 
     Subclasses set ``name`` (the registry key, used on the command line) and implement
@@ -53,9 +55,9 @@ class WorkspaceCondition:
     name: ClassVar[str] = ""
     description: ClassVar[str] = ""
 
+    @abstractmethod
     def evaluate(self, robot: Robot, poses: np.ndarray) -> np.ndarray:
         """``(N,)`` bool: which of the poses ``(N, pose_size)`` satisfy the condition."""
-        raise NotImplementedError
 
     def __repr__(self) -> str:
         return f"<{type(self).__name__} {self.name!r}>"
@@ -75,8 +77,9 @@ class WrenchCondition(WorkspaceCondition):
             out[ok] = self.test(robot, poses[ok], W[ok])
         return out
 
+    @abstractmethod
     def test(self, robot: Robot, poses: np.ndarray, W: np.ndarray) -> np.ndarray:
-        raise NotImplementedError
+        """``(N,)`` bool from the structure matrices ``W (N, m, n)`` of valid poses."""
 
 
 class WrenchClosure(WrenchCondition):

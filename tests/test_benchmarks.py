@@ -1,0 +1,23 @@
+"""The benchmark scripts run (on tiny sizes) and report agreeing verdicts: a benchmark that
+rots is found here, its timings are not judged."""
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+BENCH = Path(__file__).parents[1] / "benchmarks"
+
+
+@pytest.mark.parametrize(
+    "script, args, expect",
+    [
+        ("bench_ik.py", ["--poses", "2000", "--loop", "50"], "all poses valid: True"),
+        ("bench_workspace.py", ["--resolution", "6", "--sample", "4"], "poses where the verdicts differ: 0"),
+    ],
+)
+def test_benchmark_runs(script, args, expect):
+    out = subprocess.run([sys.executable, str(BENCH / script), *args], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert expect in out.stdout and "poses/s" in out.stdout
