@@ -26,20 +26,20 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-def _robot(spec: str):
+def load(spec: str):
     from taut.model import load_robot
 
     return load_robot(spec)
 
 
-def _emit(data: dict, as_json: bool, human) -> None:
+def emit(data: dict, as_json: bool, human) -> None:
     if as_json:
         print(json.dumps(data, indent=2, allow_nan=False))
     else:
         human(data)
 
 
-def _console():
+def console():
     from rich.console import Console
 
     return Console()
@@ -86,7 +86,7 @@ def cmd_schema(ns) -> int:
 def cmd_ik(ns) -> int:
     from taut.kinematics import inverse_kinematics
 
-    robot = _robot(ns.robot)
+    robot = load(ns.robot)
     pose = A.pose(robot, ns.pose) if ns.pose else A.default_pose(robot)
     ik = inverse_kinematics(robot, pose)
     data = {
@@ -99,7 +99,7 @@ def cmd_ik(ns) -> int:
     }
 
     def human(d):
-        con = _console()
+        con = console()
         con.print(f"[bold]{robot.name}[/] at pose {', '.join(f'{n}={_fmt(v)}' for n, v in zip(robot.pose_names, pose))}")
         dims = "xyz"[: robot.dimension]
         rows = [[str(i + 1), _fmt(length), *(_fmt(c) for c in u)] for i, (length, u) in enumerate(zip(ik.lengths, ik.directions))]
@@ -108,7 +108,7 @@ def cmd_ik(ns) -> int:
         rows = [[f"{x:.4g}" for x in row] for row in W]
         con.print(_matrix_table("structure matrix W", rows, [str(i + 1) for i in range(W.shape[1])]))
 
-    _emit(data, ns.json, human)
+    emit(data, ns.json, human)
     if ns.plot:
         from taut.viz import draw_robot
 
@@ -120,7 +120,7 @@ def cmd_ik(ns) -> int:
 def cmd_tensions(ns) -> int:
     from taut.statics.tension import distribute_tensions
 
-    robot = _robot(ns.robot)
+    robot = load(ns.robot)
     pose = A.pose(robot, ns.pose) if ns.pose else A.default_pose(robot)
     wrench = None
     if ns.wrench:
@@ -139,7 +139,7 @@ def cmd_tensions(ns) -> int:
     }
 
     def human(d):
-        con = _console()
+        con = console()
         if not feasible:
             why = "no tension distribution exists" if d["status"] == "infeasible" else f"method {ns.method} found no solution"
             con.print(f"[bold red]infeasible[/]: {why} at this pose within the tension bounds")
@@ -147,7 +147,7 @@ def cmd_tensions(ns) -> int:
         rows = [[str(i + 1), _fmt(t)] for i, t in enumerate(res.tensions)]
         con.print(_matrix_table(f"tensions ({res.method})", rows, ["cable", "tension [N]"]))
 
-    _emit(data, ns.json, human)
+    emit(data, ns.json, human)
     return 0
 
 
@@ -182,7 +182,7 @@ def cmd_workspace(ns) -> int:
     from taut.statics.wrench import BoxWrenchSet
     from taut.workspace import evaluate_workspace
 
-    robot = _robot(ns.robot)
+    robot = load(ns.robot)
     grid, resolution = _grid(ns.grid)
     orientation = A.vector(ns.orientation, "--orientation") if ns.orientation else None
     wrench_set = None
@@ -214,12 +214,12 @@ def cmd_workspace(ns) -> int:
         data["plot"] = str(ns.plot)
 
     def human(d):
-        _console().print(
+        console().print(
             f"{robot.name}: {d['condition']} workspace: {d['inside']} of {d['poses']} poses inside "
             f"({100 * d['fraction']:.1f} %), {d['elapsed_s']:.3f} s"
         )
 
-    _emit(data, ns.json, human)
+    emit(data, ns.json, human)
     return 0
 
 
@@ -274,7 +274,25 @@ def build_parser() -> argparse.ArgumentParser:
 
     c = command("demo", "run taut on the built-in robots and write an HTML report", cmd_demo, robot=False)
     c.add_argument("--out", default="report", help="report directory (default: report)")
+    for module in _command_modules():
+        module.register(command)
     return p
+
+
+def _command_modules():
+    """The modules of ``taut.cli`` that add commands: each defines ``register(command)``,
+    where ``command(name, help, fn, robot=True)`` returns a subparser with ROBOT and
+    ``--json`` already added."""
+    import importlib
+    import pkgutil
+
+    import taut.cli
+
+    for info in sorted(pkgutil.iter_modules(taut.cli.__path__), key=lambda i: i.name):
+        if info.name not in ("main", "args"):
+            module = importlib.import_module(f"taut.cli.{info.name}")
+            if hasattr(module, "register"):
+                yield module
 
 
 def main(argv: list[str] | None = None) -> int:
