@@ -15,6 +15,7 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
     [
         ("bench_ik.py", ["--poses", "2000", "--loop", "50"], "all poses valid: True"),
         ("bench_workspace.py", ["--resolution", "6", "--sample", "4"], "poses where the verdicts differ: 0"),
+        ("bench_check.py", ["--poses", "2000", "--loop", "30"], "poses where the verdicts differ: 0"),
     ],
 )
 def test_benchmark_runs(script, args, expect):

@@ -12,6 +12,7 @@ import numpy as np
 
 from taut.model import example, example_names
 from taut.viz import Report
+from taut.viz.check import check_section
 
 
 def robots_section(report: Report) -> None:
@@ -79,6 +80,7 @@ SECTIONS = [
     robots_section,
     lambda r: standard_model_section(r, "planar-4cable", shift=[0.8, 0.6], resolution=80),
     lambda r: standard_model_section(r, "spatial-8cable", shift=[1.2, 0.0, 0.8], resolution=30),
+    check_section,
 ]
 
 

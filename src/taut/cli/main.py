@@ -263,7 +263,7 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--method", default="lp", help="lp | qp | inf | closed-form | improved-closed-form | barycentric")
 
     c = command("workspace", "workspace over a grid of poses", cmd_workspace)
-    c.add_argument("--condition", required=True, help="wrench-closure | wrench-feasible | static")
+    c.add_argument("--condition", required=True, help="wrench-closure | wrench-feasible | static | interference-free")
     c.add_argument("--grid", help="points per axis (e.g. 50), or per-axis ranges 'x0:x1:n;y0:y1:n[;z0:z1:n]' (one per pose coordinate for a full pose grid)")
     c.add_argument("--box", metavar="HALF_WIDTHS", help="wrench-feasible: box of wrenches around the external wrench, one half-width per component (default: 10 %% of the weight)")
     c.add_argument("--orientation", help="fixed platform orientation (theta, or a,b,c) and joint coordinates")

@@ -9,7 +9,11 @@ registry, so that adding a condition is adding one class and one entry of
 * ``static`` — the cables balance the robot's external wrench (weight included) within
   their bounds: the WFW of a single wrench.  It also serves under-constrained robots
   (fewer cables than degrees of freedom), through the exact LP of
-  :mod:`taut.statics.feasibility`.
+  :mod:`taut.statics.feasibility`;
+* ``interference-free`` — no two capsules of the collision model interfere (cable–cable,
+  cable–platform body; ``004_…`` §3.4, :mod:`taut.collision`).  Cables of radius 0 are
+  lines; cables sharing an end point (a point-mass platform) are compared without the
+  shared end (see :mod:`taut.collision.capsules`).
 
 A condition maps an array of poses ``(N, pose_size)`` to ``(N,)`` bool.  Poses where the
 inverse kinematics does not exist (a zero-length cable) are outside.
@@ -23,6 +27,7 @@ from typing import ClassVar
 
 import numpy as np
 
+from taut.collision.proximity import proximity
 from taut.errors import TautError
 from taut.kinematics.batch import batch_structure_matrices
 from taut.model.robot import Robot
@@ -31,6 +36,7 @@ from taut.statics.wrench import BoxWrenchSet, WrenchSet, external_wrench
 
 __all__ = [
     "CONDITIONS",
+    "InterferenceFree",
     "StaticEquilibrium",
     "WorkspaceCondition",
     "WrenchClosure",
@@ -153,9 +159,17 @@ class StaticEquilibrium(WrenchCondition):
         return static_equilibrium(W, tmin, tmax, external_wrench(robot, poses))
 
 
+class InterferenceFree(WorkspaceCondition):
+    name = "interference-free"
+    description = "no cable–cable or cable–platform interference of the capsule model (004_… §3.4)"
+
+    def evaluate(self, robot, poses):
+        return proximity(robot, np.asarray(poses, dtype=float)).interference_free
+
+
 #: The registry: condition name → class.
 CONDITIONS: dict[str, type[WorkspaceCondition]] = {
-    cls.name: cls for cls in (WrenchClosure, WrenchFeasible, StaticEquilibrium)
+    cls.name: cls for cls in (WrenchClosure, WrenchFeasible, StaticEquilibrium, InterferenceFree)
 }
 
 

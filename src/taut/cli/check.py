@@ -1,0 +1,100 @@
+"""``taut check ROBOT --trajectory FILE|NAME``: self-collision and singularities along a
+trajectory (``004_f30792d78b61e7c2.txt`` §2.3, §3.4, §4.2; :mod:`taut.collision`)."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+import numpy as np
+
+from taut.errors import TautError
+
+HELP = """Check every step of a trajectory for cable/platform self-collision (capsule model),
+Jacobian singularity and force-closure singularity.
+
+--trajectory is the name of one of the robot's built-in trajectories (e.g. sim-a ... sim-d
+of adjustable-8cable) or a file:
+  CSV        one pose per line, comma-separated (x,y,z,a,b,c then joint coordinates);
+             an optional header line of the pose names; '#' starts a comment
+  YAML/JSON  a list of poses; or {poses: [...]}; or {waypoints: [...], steps: [...]}
+             (straight moves of steps[k] increments, default 100 each)
+Steps, cables and capsules are numbered from 1 (cables first, then the platform capsules).
+JSON: {"steps": [{"index", "collisions": [[i, j], ...], "jacobian_singular",
+"force_closure_singular", "min_clearance"}, ...], "summary": {...}}."""
+
+
+def _runs(flags: np.ndarray) -> list[list[int]]:
+    """1-based inclusive ranges of consecutive true flags."""
+    idx = np.flatnonzero(flags)
+    if not idx.size:
+        return []
+    breaks = np.flatnonzero(np.diff(idx) > 1)
+    starts = np.r_[idx[0], idx[breaks + 1]]
+    ends = np.r_[idx[breaks], idx[-1]]
+    return [[int(s) + 1, int(e) + 1] for s, e in zip(starts, ends)]
+
+
+def cmd_check(ns) -> int:
+    from taut.cli.main import console, emit, load
+    from taut.collision import check_poses, load_trajectory, trajectory_poses
+
+    robot = load(ns.robot)
+    spec = ns.trajectory
+    if spec in robot.trajectories:
+        poses = trajectory_poses(robot, spec)
+    elif Path(spec).is_file():
+        poses = load_trajectory(robot, spec)
+    else:
+        known = ", ".join(robot.trajectories) or "none"
+        raise TautError(f"--trajectory: {spec!r} is neither a file nor a built-in trajectory of {robot.name} (built-in: {known})")
+    res = check_poses(robot, poses, method=ns.method)
+    first = res.first(res.problems)
+    summary = {
+        "poses": len(poses),
+        "first_collision": res.first(res.collides),
+        "first_jacobian_singular": res.first(res.jacobian_singular),
+        "first_force_closure_singular": res.first(res.force_closure_singular),
+        "first_problem": first,
+        "collision_steps": _runs(res.collides),
+        "jacobian_singular_steps": _runs(res.jacobian_singular),
+        "force_closure_singular_steps": _runs(res.force_closure_singular),
+        "min_clearance": float(np.min(res.proximity.min_clearance)) if len(poses) else None,
+    }
+    data = {"robot": robot.name, "trajectory": spec, "capsules": list(res.model.names), "summary": summary,
+            "steps": res.steps()}
+    if ns.plot:
+        from taut.viz.check import plot_check
+
+        fig = plot_check(robot, res)
+        fig.savefig(ns.plot, dpi=110, bbox_inches="tight")
+        data["plot"] = str(ns.plot)
+
+    def human(d):
+        con = console()
+        s = d["summary"]
+        con.print(f"[bold]{robot.name}[/], trajectory {spec}: {s['poses']} steps, smallest clearance {s['min_clearance']:.4g} m")
+        names = res.model.names
+        for label, key in (("self-collision", "collision_steps"), ("Jacobian singular", "jacobian_singular_steps"),
+                           ("force-closure singular", "force_closure_singular_steps")):
+            runs = s[key]
+            text = ", ".join(f"{a}" if a == b else f"{a}-{b}" for a, b in runs) if runs else "none"
+            con.print(f"  {label:<23} steps {text}")
+        if s["first_collision"] is not None:
+            k = s["first_collision"] - 1
+            pairs = "; ".join(f"{names[i]} & {names[j]}" for i, j in res.proximity.collisions(k))
+            con.print(f"  first collision at step {k + 1}: {pairs}")
+
+    emit(data, ns.json, human)
+    return 0
+
+
+def register(command) -> None:
+    c = command("check", "self-collision and singularity check along a trajectory", cmd_check)
+    c.description = HELP
+    c.formatter_class = argparse.RawDescriptionHelpFormatter
+    c.add_argument("--trajectory", required=True, metavar="FILE|NAME",
+                   help="trajectory file (CSV, YAML, JSON) or built-in trajectory name (e.g. sim-c)")
+    c.add_argument("--method", default="fast", choices=("fast", "lp"),
+                   help="force-closure test: fast (vectorised) or lp (one LP per step, the reference)")
+    c.add_argument("--plot", metavar="FILE.png", help="clearance and singularity flags over the steps, robot at the first problem")

@@ -1,0 +1,15 @@
+"""Self-collision and singularity analysis for every robot of taut (``004_f30792d78b61e7c2.txt``
+§2.3): capsule models (:mod:`.capsules`), proximity matrices and colliding pairs
+(:mod:`.proximity`), Jacobian and force-closure singularities (:mod:`.singularity`), and the
+check of a trajectory (:mod:`.trajectory`)."""
+
+from taut.collision.capsules import CapsuleModel, capsule_model, capsule_segments
+from taut.collision.proximity import ProximityResult, proximity
+from taut.collision.singularity import force_closure_singular, jacobian_singular, positive_span_lp
+from taut.collision.trajectory import CheckResult, check_poses, load_trajectory, sample_waypoints, trajectory_poses
+
+__all__ = [
+    "CapsuleModel", "CheckResult", "ProximityResult", "capsule_model", "capsule_segments", "check_poses",
+    "force_closure_singular", "jacobian_singular", "load_trajectory", "positive_span_lp", "proximity",
+    "sample_waypoints", "trajectory_poses",
+]

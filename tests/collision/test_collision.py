@@ -1,0 +1,143 @@
+"""Self-collision (004_… §3.4) and singularities (§2.3.1) of the adjustable platform —
+simulations a–d of §4.2 — and of every built-in robot."""
+
+import numpy as np
+import pytest
+
+import taut
+from taut.collision import (capsule_model, check_poses, force_closure_singular, jacobian_singular, proximity,
+                            trajectory_poses)
+from taut.collision.capsules import capsule_segments
+from taut.errors import PoseError
+from taut.geometry.segments import segment_distance
+from taut.kinematics import inverse_kinematics
+from taut.model.io import robot_from_dict
+from taut.workspace import CONDITIONS, evaluate_workspace
+
+ROBOT = taut.example("adjustable-8cable")
+
+
+@pytest.fixture(scope="module")
+def sims():
+    return {name: check_poses(ROBOT, trajectory_poses(ROBOT, name)) for name in ("sim-a", "sim-b", "sim-c", "sim-d")}
+
+
+def test_trajectory_sampling_gives_the_steps_of_section_4_2():
+    a = trajectory_poses(ROBOT, "sim-a")
+    assert a.shape == (201, 7)
+    assert np.allclose(a[0], ROBOT.reference.poses["sim-a-step1"]) and np.allclose(a[200], ROBOT.reference.poses["sim-a-step201"])
+    assert np.allclose(a[100], [5, 5, 2.5, 0, 0, 0, 2])
+    for step in ("sim-b-step126", "sim-c-step71", "sim-d-step28"):
+        name, k = step.rsplit("-step", 1)
+        assert np.allclose(trajectory_poses(ROBOT, name)[int(k) - 1], ROBOT.reference.poses[step], atol=5e-6)
+
+
+def test_simulation_a_is_free_of_singularity_and_collision(sims):
+    a = sims["sim-a"]
+    assert not a.problems.any()
+    assert a.proximity.min_clearance.min() > 0
+
+
+def test_simulation_b_force_closure_singular_from_step_126(sims):
+    b = sims["sim-b"]
+    assert np.flatnonzero(b.force_closure_singular).tolist() == list(range(125, 201))  # steps 126..201
+    assert not b.collides.any() and not b.jacobian_singular.any()
+
+
+@pytest.mark.parametrize("name, step", [("sim-c", 71), ("sim-d", 28)])
+def test_first_self_collision(sims, name, step):
+    r = sims[name]
+    assert r.first(r.collides) == step
+    assert r.proximity.collisions(step - 1) == [(0, 4), (3, 7)]  # cables 1 & 5 and 4 & 8
+    assert r.steps()[step - 1]["collisions"] == [[1, 5], [4, 8]]
+    assert not r.force_closure_singular.any() and not r.jacobian_singular.any()
+
+
+def test_collision_model_of_the_adjustable_platform():
+    m = capsule_model(ROBOT)
+    assert m.n_capsules == 17 and m.radii[:8].tolist() == [0.1] * 8
+    # D_I: 28 cable pairs; D_II: 8 rectangle sides minus the 2 on each cable's anchor; D_III: the column
+    pairs = {tuple(p) for p in m.pairs.tolist()}
+    assert len(pairs) == 28 + 8 * 6 + 8
+    names = m.names
+    col = names.index("column 17")
+    assert all((i, col) in pairs for i in range(8))
+    assert (0, names.index("segment 9 (B1-B2)")) not in pairs and (0, names.index("segment 10 (B2-B3)")) in pairs
+    assert (4, names.index("segment 13 (B5-B6)")) not in pairs
+
+
+def test_D_and_E_match_direct_segment_distances():
+    pose = ROBOT.reference.poses["sim-d-step28"]
+    res = proximity(ROBOT, pose)
+    A, B = capsule_segments(ROBOT, np.atleast_2d(pose))
+    D, E = res.D[0], res.E[0]
+    assert D.shape == (8, 17)
+    m = res.model
+    for i in range(8):
+        for j in range(17):
+            if (i, j) in {tuple(p) for p in m.pairs.tolist()}:
+                d = segment_distance(A[0, i], B[0, i], A[0, j], B[0, j])
+                assert D[i, j] == pytest.approx(d, abs=1e-12)
+                assert E[i, j] == pytest.approx(d - m.radii[i] - m.radii[j], abs=1e-12)
+            else:
+                assert np.isnan(D[i, j]) and np.isnan(E[i, j])
+
+
+def test_point_mass_cables_share_their_end_without_interfering():
+    robot = taut.example("suspended-3cable")
+    m = capsule_model(robot)
+    assert m.shared.any() or not robot.is_point_mass
+    pose = np.asarray(next(iter(robot.reference.poses.values())), float) if robot.reference and robot.reference.poses else None
+    res = proximity(robot, pose) if pose is not None else None
+    if robot.is_point_mass:
+        assert res.interference_free.all()
+    # cables of radius 0 meeting at a point mass interfere only when they overlap (same
+    # direction); with a radius, when their angle is below about one degree
+    pm = robot_from_dict({"name": "three", "dimension": 2, "platform": {"kind": "point-mass"},
+                          "cables": [{"exit": [0, 0]}, {"exit": [2, 0]}, {"exit": [1, 3]}]})
+    assert proximity(pm, [[1.0, 1.0], [0.5, 0.0], [3.0, 0.0]]).interference_free.tolist() == [True, True, False]
+    thick = robot_from_dict({"name": "thick", "dimension": 2, "platform": {"kind": "point-mass"},
+                             "cables": [{"exit": [0, 0], "radius": 0.01}, {"exit": [10, 0.1], "radius": 0.01},
+                                        {"exit": [10, -20], "radius": 0.01}]})
+    # at (20, 0.2) cable 2 runs along cable 1 (interference); at (5, 5) they are far apart
+    free = proximity(thick, [[20.0, 0.2], [5.0, 5.0]])
+    assert free.collisions(0) == [(0, 1)] and free.interference_free[1]
+
+
+@pytest.mark.parametrize("name", taut.example_names())
+def test_interference_free_condition_on_every_builtin(name):
+    robot = taut.example(name)
+    assert "interference-free" in CONDITIONS
+    res = evaluate_workspace(robot, "interference-free", resolution=4)
+    assert res.inside.shape[0] == res.poses.shape[0] > 0
+
+
+def test_fast_and_lp_force_closure_agree():
+    rng = np.random.default_rng(3)
+    W = rng.normal(size=(300, 6, 8))
+    W[:100, 2, :] = np.abs(W[:100, 2, :])  # all cables pull one way: not closure
+    W[100:130, 2, :4] = 0.0
+    W[100:130, 2, 4:] = np.abs(W[100:130, 2, 4:])  # on the boundary: a facet with four columns on it
+    fast, lp = force_closure_singular(W), force_closure_singular(W, method="lp")
+    assert np.array_equal(fast, lp)
+    assert fast[:130].all() and not fast.all()
+    for name in ("sim-a", "sim-b"):
+        W = inverse_kinematics(ROBOT, trajectory_poses(ROBOT, name)).structure_matrix
+        assert np.array_equal(force_closure_singular(W), force_closure_singular(W, method="lp"))
+
+
+def test_jacobian_singularity_threshold():
+    J = np.random.default_rng(0).normal(size=(5, 9, 7))
+    J[0, :, 6] = J[0, :, 5]  # dependent columns: rank 6
+    J[1, :, 6] = J[1, :, 5] + 1e-3 * np.arange(9.0)
+    sing, ratio = jacobian_singular(J)
+    assert sing.tolist() == [True, False, False, False, False]
+    assert ratio[0] < 1e-12 < ratio[1]
+    assert jacobian_singular(np.ones((1, 2, 3)))[0].all()  # fewer actuators than DOF
+
+
+def test_bad_poses_are_rejected():
+    with pytest.raises(PoseError, match="outside its limits"):
+        check_poses(ROBOT, [[5, 5, 5, 0, 0, 0, 0.1]])
+    with pytest.raises(PoseError):
+        proximity(ROBOT, [[5, 5, 5, 0, 0, 0]])
