@@ -1,0 +1,54 @@
+"""``taut fk ROBOT [--lengths L1,...,Ln] [--max-taut K] [--workers N] [--scheduler ADDRESS] [--json]``:
+all equilibrium poses for given cable lengths (the direct geometrico-static problem,
+:func:`taut.dgp.solve_dgp`).  Without ``--lengths`` the robot's ``reference.lengths`` are
+used.  No equilibrium is an empty list, not an error."""
+
+from __future__ import annotations
+
+from taut.cli import args as A
+from taut.cli.main import console, emit, load
+from taut.errors import TautError
+
+
+def cmd_fk(ns) -> int:
+    from taut.dgp import solve_dgp
+    from taut.parallel import get_executor
+
+    robot = load(ns.robot)
+    lengths = A.vector(ns.lengths, "--lengths") if ns.lengths else None
+    if ns.max_taut is not None and ns.max_taut < 1:
+        raise TautError(f"--max-taut must be at least 1, got {ns.max_taut}")
+    with get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor:
+        res = solve_dgp(robot, lengths, max_taut=ns.max_taut, executor=executor)
+    data = {
+        "robot": robot.name,
+        "solutions": [s.as_dict() for s in res.solutions],
+        "subproblems": res.subproblems,
+        "undecided_boxes": res.undecided,
+        "elapsed_s": res.elapsed_s,
+    }
+
+    def human(d):
+        from rich.table import Table
+
+        con = console()
+        t = Table(title=f"{robot.name}: {len(res.solutions)} equilibria ({res.subproblems} sub-problems, {res.elapsed_s:.2f} s)")
+        for h in ("taut", "x", "y", "z", "a", "b", "c", *(f"τ{i + 1}" for i in range(robot.n_cables)), "stable"):
+            t.add_column(h, justify="right")
+        for s in res.solutions:
+            t.add_row(",".join(map(str, s.taut)), *(f"{v:.4f}" for v in s.position), *(f"{v:.4f}" for v in s.orientation),
+                      *(f"{v:.4f}" for v in s.tensions), "yes" if s.stable else "no")
+        con.print(t)
+        if res.undecided:
+            con.print(f"[yellow]{res.undecided} boxes could not be certified (near-singular solutions)[/]")
+
+    emit(data, ns.json, human)
+    return 0
+
+
+def register(command) -> None:
+    c = command("fk", "all equilibria for given cable lengths (direct geometrico-static problem)", cmd_fk)
+    c.add_argument("--lengths", help="cable lengths L1,...,Ln (default: the robot's reference lengths)")
+    c.add_argument("--max-taut", type=int, default=None, metavar="K", help="largest number of taut cables (default min(n, 6))")
+    c.add_argument("--workers", type=int, default=1, help="local worker processes")
+    c.add_argument("--scheduler", default=None, metavar="ADDRESS", help="dask.distributed scheduler tcp://HOST:PORT")

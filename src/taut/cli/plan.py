@@ -1,0 +1,147 @@
+"""``taut plan ROBOT --start POSE --goal POSE``: a wrench-feasible path between two
+configurations of a cable-driven hexapod (``002_19d5d688a3999fb0.txt``; :mod:`taut.planning`)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from taut.errors import TautError
+
+HELP = """Plan a path along which the cables balance every wrench of the ellipsoid
+(w - w0)^T E (w - w0) <= 1 with tensions and lengths strictly inside their bounds
+(higher-dimensional continuation + A*, 002_19d5d688a3999fb0.txt §4), or report that the
+connected component of the start does not reach the goal at the chart radius.
+POSE is x,y,z,phi,theta,sigma (tilt-and-torsion; 35deg, pi/8 accepted) or the name of a
+reference pose of the robot (e.g. q1).  The path is checked independently at --subdivide
+interpolated points per step (taut.statics.feasibility).
+JSON: {"found", "path": [[x,y,z,phi,theta,sigma], ...], "charts", "elapsed_s",
+"min_tension_margin", "expanded", "exhausted", "length", "verified"}."""
+
+
+def _pose(robot, text: str, what: str) -> np.ndarray:
+    from taut.cli import args as A
+
+    ref = robot.reference.poses if robot.reference is not None else {}
+    if text in ref:
+        return np.asarray(ref[text], float)
+    values = A.vector(text, what)
+    if values.size != 6:
+        raise TautError(f"{what}: expected x,y,z,phi,theta,sigma or a reference pose name, got {text!r}")
+    return values
+
+
+def _fixed(text: str | None, start: np.ndarray) -> dict[str, float]:
+    from taut.cli import args as A
+    from taut.planning.manifold import POSE_NAMES
+
+    out: dict[str, float] = {}
+    for item in (text or "").split(","):
+        if not item.strip():
+            continue
+        name, eq, value = item.partition("=")
+        name = name.strip().lower()
+        if name not in POSE_NAMES:
+            raise TautError(f"--fix: unknown coordinate {name!r}; expected {', '.join(POSE_NAMES)}")
+        out[name] = A.number(value, f"--fix {name}") if eq else float(start[POSE_NAMES.index(name)])
+    return out
+
+
+def _ellipsoid(text: str | None) -> np.ndarray:
+    from taut.cli import args as A
+
+    if text is None:
+        return 1e4 * np.eye(6)
+    v = A.vector(text, "--wrench-ellipsoid")
+    if v.size == 1:
+        E = v[0] * np.eye(6)
+    elif v.size == 6:
+        E = np.diag(v)
+    elif v.size == 36:
+        E = v.reshape(6, 6)
+    else:
+        raise TautError("--wrench-ellipsoid: give 1 (E = e·I), 6 (diagonal) or 36 (full E) numbers")
+    if not np.allclose(E, E.T) or np.linalg.eigvalsh(E).min() <= 0:
+        raise TautError("--wrench-ellipsoid: E must be symmetric positive definite")
+    return E
+
+
+def cmd_plan(ns) -> int:
+    from taut.cli.main import console, emit, load
+    from taut.planning import plan_path
+    from taut.planning.manifold import WrenchFeasibleManifold
+    from taut.planning.verify import verify_path
+
+    robot = load(ns.robot)
+    start, goal = _pose(robot, ns.start, "--start"), _pose(robot, ns.goal, "--goal")
+    fixed = _fixed(ns.fix, start)
+    if ns.radius <= 0 or ns.max_charts < 1 or ns.subdivide < 1:
+        raise TautError("--radius must be positive, --max-charts and --subdivide at least 1")
+    M = WrenchFeasibleManifold.from_robot(robot, E=_ellipsoid(ns.wrench_ellipsoid), fixed=fixed)
+    y0, y1 = M.lift(start), M.lift(goal)
+    res = plan_path(M.implicit(), y0, y1, ns.radius, metric=M.pose_metric, max_charts=ns.max_charts)
+    data = {"robot": robot.name, "found": res.found, "path": [], "charts": res.charts,
+            "elapsed_s": res.elapsed_s, "min_tension_margin": None, "expanded": res.expanded,
+            "exhausted": res.exhausted, "length": None, "verified": None, "fixed": fixed}
+    poses = lo = hi = None
+    if res.found:
+        poses = M.pose(res.path)
+        lo, hi = M.tension_range(res.path)
+        margin = np.minimum(lo - M.f_min, M.f_max - hi).min()
+        check = verify_path(robot, poses, E=M.E, subdivide=ns.subdivide)
+        data.update(path=poses.tolist(), min_tension_margin=float(margin), length=res.length,
+                    verified=check.all_feasible)
+
+    def human(d):
+        con = console()
+        if d["found"]:
+            con.print(f"[bold]{robot.name}[/]: path of {len(d['path'])} poses, length {d['length']:.4g} "
+                      f"(pose coordinates), {d['charts']} charts, {d['elapsed_s']:.3g} s")
+            con.print(f"min tension margin {d['min_tension_margin']:.4g}; independent check: "
+                      f"{'feasible' if d['verified'] else 'NOT feasible'} at every interpolated pose")
+        else:
+            why = "the start's component is exhausted" if d["exhausted"] else "the chart limit was reached"
+            con.print(f"[bold]{robot.name}[/]: no path ({why}; {d['charts']} charts explored, "
+                      f"{d['elapsed_s']:.3g} s)")
+
+    emit(data, ns.json, human)
+    if ns.out and poses is not None:
+        head = "x,y,z,phi,theta,sigma," + ",".join(f"f_min_{i + 1}" for i in range(6)) + "," + \
+            ",".join(f"f_max_{i + 1}" for i in range(6))
+        np.savetxt(ns.out, np.hstack([poses, lo, hi]), delimiter=",", header=head, comments="")
+    if ns.plot and poses is not None:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        fig, axes = plt.subplots(2, 3, figsize=(11, 5.5), sharex=True)
+        s = np.linspace(0, 1, len(poses))
+        for i, ax in enumerate(axes.flat):  # Fig. 6 bottom: extreme tensions of each cable
+            ax.plot(s, hi[:, i], color="tab:green", label="f0 + v_ii")
+            ax.plot(s, lo[:, i], color="tab:blue", label="f0 - v_ii")
+            ax.axhline(M.f_min[i], color="k", lw=0.5)
+            ax.axhline(M.f_max[i], color="k", lw=0.5)
+            ax.set_title(f"cable {i + 1}")
+        axes[0, 0].legend(fontsize=7)
+        fig.supxlabel("path parameter")
+        fig.tight_layout()
+        fig.savefig(ns.plot, dpi=110)
+        plt.close(fig)
+    return 0
+
+
+def register(command) -> None:
+    import argparse
+
+    c = command("plan", "wrench-feasible path between two configurations (cable hexapods)", cmd_plan)
+    c.description = HELP
+    c.formatter_class = argparse.RawDescriptionHelpFormatter
+    c.add_argument("--start", required=True, help="start pose x,y,z,phi,theta,sigma or reference pose name")
+    c.add_argument("--goal", required=True, help="goal pose, same syntax")
+    c.add_argument("--fix", help="slice: fixed pose coordinates, e.g. x=0,y=0,sigma=35deg (a name alone takes the start's value)")
+    c.add_argument("--wrench-ellipsoid", help="E of (w-w0)^T E (w-w0) <= 1: e (E = e*I), 6 diagonal or 36 entries (default 1e4)")
+    c.add_argument("--radius", type=float, default=0.2, help="chart radius, the resolution of a 'no path' answer (default 0.2)")
+    c.add_argument("--max-charts", type=int, default=20000, help="stop the search after this many charts (default 20000)")
+    c.add_argument("--subdivide", type=int, default=10, help="interpolated poses per path step for the independent check")
+    c.add_argument("--out", metavar="FILE.csv", help="path poses and extreme tensions")
+    c.add_argument("--plot", metavar="FILE.png", help="extreme tensions along the path (Fig. 6)")

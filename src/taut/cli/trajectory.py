@@ -1,0 +1,100 @@
+"""``taut trajectory ROBOT``: VSCR inverse kinematics along a trajectory (§4.3, §6.2 of
+``000_3d5147f1d4639546.txt``): cable lengths, CST transitions, tensions per sample."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+
+from taut.errors import TautError
+
+
+def _read_waypoints(spec: str, robot):
+    """``builtin`` / ``builtin:NAME`` (the robot's trajectories) or a file: JSON/YAML list
+    of waypoints, or text with one waypoint per line (commas or spaces)."""
+    if spec == "builtin" or spec.startswith("builtin:"):
+        return spec.partition(":")[2] or None, None
+    path = Path(spec)
+    if not path.is_file():
+        raise TautError(f"--waypoints: no such file {spec!r} (or write 'builtin')")
+    text = path.read_text()
+    try:
+        if path.suffix.lower() in (".json", ".yaml", ".yml"):
+            import yaml
+
+            data = yaml.safe_load(text)
+            data = data.get("waypoints", data) if isinstance(data, dict) else data
+            W = np.asarray(data, dtype=float)
+        else:
+            rows = [ln.replace(",", " ").split() for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
+            W = np.asarray(rows, dtype=float)
+    except (ValueError, TypeError, AttributeError) as exc:
+        raise TautError(f"--waypoints {spec}: expected rows of numbers ({exc})") from None
+    if W.ndim != 2 or len(W) < 1 or not np.isfinite(W).all():
+        raise TautError(f"--waypoints {spec}: expected rows of finite numbers")
+    return None, W
+
+
+def cmd_trajectory(ns) -> int:
+    from taut.cli.main import console, emit, load
+    from taut.wrapping.trajectory import DEFAULT_SPEED, builtin_trajectory, full_poses, run_trajectory, sample_waypoints
+
+    robot = load(ns.robot)
+    if not ns.dt > 0:
+        raise TautError(f"--dt must be > 0, got {ns.dt}")
+    name, W = _read_waypoints(ns.waypoints, robot)
+    if W is None:
+        t, P = builtin_trajectory(robot, name, dt=ns.dt, speed=ns.speed, dwell=ns.dwell)
+    else:
+        W = full_poses(robot, W)
+        t, P = sample_waypoints(W, ns.speed or DEFAULT_SPEED, 1.0 if ns.dwell is None else ns.dwell, ns.dt)
+    res = run_trajectory(robot, t, P)
+    data = {"robot": robot.name} | res.summary()
+    data["times"] = res.times.tolist()
+    data["length_controlled"] = res.controlled.tolist()
+    if ns.out:
+        n = robot.n_cables
+        head = ["time", *robot.pose_names, *(f"l{i + 1}" for i in range(n)), *(f"tau{i + 1}" for i in range(n)),
+                "feasible", *(f"state{i + 1}" for i in range(n))]
+        with open(ns.out, "w") as fh:
+            fh.write(",".join(head) + "\n")
+            for s in range(len(t)):
+                states = [" ".join(f"{k + 1}{'+' if d > 0 else '-'}" for k, d in res.ik.contacts(s, i)) for i in range(n)]
+                vals = [t[s], *res.ik.poses[s], *res.lengths[s], *res.tensions[s]]
+                fh.write(",".join(f"{v:.9g}" for v in vals) + f",{int(res.feasible[s])}," + ",".join(states) + "\n")
+        data["out"] = str(ns.out)
+    if ns.plot:
+        from taut.viz.trajectory import plot_trajectory
+
+        plot_trajectory(robot, res).savefig(ns.plot, dpi=110, bbox_inches="tight")
+        data["plot"] = str(ns.plot)
+
+    def human(d):
+        con = console()
+        con.print(f"[bold]{robot.name}[/]: {d['samples']} samples over {d['duration']:.3g} s, "
+                  f"{len(d['transitions'])} CST transitions")
+        for e in d["transitions"]:
+            con.print(f"  t = {e['time']:8.3f} s  cable {e['cable']}  {e['kind']:6s} object {e['object']}")
+        if d["tension_feasible"]:
+            con.print("tension distribution (LP) feasible at every sample")
+        else:
+            con.print(f"[bold red]no feasible tension distribution[/] at {len(d['infeasible_samples'])} samples")
+
+    if ns.json:
+        print(json.dumps(data, allow_nan=False))
+    else:
+        emit(data, False, human)
+    return 0
+
+
+def register(command) -> None:
+    c = command("trajectory", "VSCR trajectory: wrapping cable states, lengths, transitions, tensions", cmd_trajectory)
+    c.add_argument("--waypoints", default="builtin", metavar="FILE|builtin",
+                   help="waypoints file (x,y per line, or JSON/YAML list), or builtin[:NAME] (default: the robot's first trajectory)")
+    c.add_argument("--dt", type=float, default=0.01, help="sampling step [s] (default 0.01)")
+    c.add_argument("--speed", type=float, default=None, help="speed along waypoint moves [m/s] (default: the trajectory's, else 0.1)")
+    c.add_argument("--dwell", type=float, default=None, help="dwell at each waypoint [s] (default: the trajectory's, 1 s for files)")
+    c.add_argument("--out", metavar="FILE.csv", help="per-sample times, poses, lengths, tensions, cable states")
+    c.add_argument("--plot", metavar="FILE.png", help="lengths over time with transitions, and robot snapshots")

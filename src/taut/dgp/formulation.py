@@ -1,0 +1,216 @@
+"""The geometrico-static equations of one taut-cable subset (``001_eb92e2f6589fc229.txt``
+§2.3.1–2.3.6, initial domain §3.1.1, filters §3.1.3).
+
+Parameterisation (§2.3.5–2.3.6, "reference points"): the unknowns are the fixed-frame
+positions ``q_1, q_2, q_3`` of three non-collinear platform points and the scaled tensions
+``t_i = τ_i/ρ_i`` of the ``m`` taut cables — ``9 + m`` unknowns.  The reference points are
+the first non-collinear ones among the taut anchors, the load point ``G`` and the slack
+anchors, so that the length constraints of the taut reference anchors are plain spheres
+(Eq. 2.26).  Every other platform point is a *secondary point* (Eqs. 2.21–2.23)
+
+    s = q_1 + β_2 (q_2 − q_1) + β_3 (q_3 − q_1) + β_4 (q_2 − q_1) × (q_3 − q_1),
+
+with constants ``β`` from the body-frame geometry (Eq. 2.22).  Equations (all of degree
+≤ 3 and polynomial, no trigonometry):
+
+* 3 rigidity relations ``‖q_i − q_j‖² = d_ij²`` (Eq. 2.19/2.28);
+* ``m`` cable lengths ``‖b_i − a_i‖² = ρ_i²`` (Eqs. 2.20, 2.26, 2.27);
+* 6 equilibrium equations (Eq. 2.3): forces ``Σ t_i (a_i − b_i) + f = 0`` and moments about
+  the exit point ``a_p`` of the first taut cable,
+  ``Σ t_i (b_i − a_p) × (a_i − a_p) + (g − a_p) × f + m_ext = 0`` (using
+  ``(b − a_p) × (a_i − b) = (b − a_p) × (a_i − a_p)``, which keeps one occurrence of ``b``).
+
+Redundant constraints for the filter (§3.1.3): the moment equations about every other taut
+exit point, and the slack-cable inequalities ``‖b_k − a_k‖² ≤ ρ_k²`` (Eq. 3.7).  The
+initial box (§3.1.1, Eqs. 3.1–3.2) bounds each reference point by the spheres around the
+taut exit points, ``‖q − a_j‖ ≤ ρ_j + d_jq``; tensions start in ``[0, ∞)`` (§3.1.1: no
+upper bound is needed, HC4 and the bisection rule of §3.1.4 bound them).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from taut.geometry.rotation import angles_from_matrix
+from taut.interval.expression import Expr, System, Tape, compile_system, compile_tape, const, variables
+from taut.interval.hc4 import evaluate
+from taut.interval.linear import preconditioned_solve
+from taut.model.robot import Robot
+
+#: Three body points whose triangle has a smaller area ratio than this are collinear.
+COLLINEAR = 1e-9
+
+
+def load(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(f, m_ext, g')``: constant force and moment (fixed frame) and the body-frame point
+    where they act."""
+    plat = robot.platform
+    w = np.zeros(6)
+    if plat.wrench is not None:
+        w += np.asarray(plat.wrench, float)
+    if plat.mass is not None:
+        g = np.asarray(plat.gravity, float) if plat.gravity is not None else np.array([0.0, 0.0, -9.81])
+        w[:3] += plat.mass * g
+    gp = np.zeros(3) if plat.wrench_point is None else np.asarray(plat.wrench_point, float)
+    return w[:3], w[3:], gp
+
+
+def _cross(u, v):
+    return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+
+
+@dataclass(frozen=True)
+class StaticsFilter:
+    """The tension filter of §3.1.3 (Eqs. 3.9–3.12): over a box, the equilibrium
+    ``J(X) t = −w(X)`` is an interval linear system in the tensions alone; its
+    preconditioned interval-Gauss enclosure (generalised inverse of Eq. 3.12) bounds
+    ``t`` however wide the tension domain is, and proves boxes without equilibrium empty."""
+
+    tape: Tape  #: 6·m entries of J (row-major), then the 6 entries of the right-hand side
+    m: int
+
+    def __call__(self, lo: np.ndarray, hi: np.ndarray) -> bool:
+        vl, vh = evaluate(self.tape, lo, hi)
+        k = 6 * self.m
+        Jl, Jh = vl[:k].reshape(6, self.m), vh[:k].reshape(6, self.m)
+        sol = preconditioned_solve(Jl, Jh, vl[k:], vh[k:])
+        if sol is None:
+            return True
+        tl, th = sol
+        t0 = lo.size - self.m
+        lo[t0:] = np.maximum(lo[t0:], tl)
+        hi[t0:] = np.minimum(hi[t0:], th)
+        return bool(np.all(lo[t0:] <= hi[t0:]))
+
+
+@dataclass(frozen=True)
+class Subproblem:
+    """The system of one taut subset, its search box and what maps a solution back."""
+
+    taut: tuple[int, ...]  #: 0-based taut cables
+    system: System
+    lo: np.ndarray
+    hi: np.ndarray
+    primary: np.ndarray  #: pose variables (bisected first, §3.1.4)
+    body_refs: np.ndarray  #: (3, 3) body-frame reference points
+    statics: StaticsFilter
+
+    def pose(self, x: np.ndarray, convention: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(position p, angles, R)`` of the platform frame from the unknowns ``x``."""
+        q = x[:9].reshape(3, 3)
+        e1, e2 = q[1] - q[0], q[2] - q[0]
+        E = np.column_stack([e1, e2, np.cross(e1, e2)])
+        b = self.body_refs
+        f1, f2 = b[1] - b[0], b[2] - b[0]
+        Eb = np.column_stack([f1, f2, np.cross(f1, f2)])
+        R = E @ np.linalg.inv(Eb)
+        u, _, vt = np.linalg.svd(R)  # the nearest rotation (R is orthogonal at a solution)
+        R = u @ vt
+        p = q[0] - R @ b[0]
+        return p, angles_from_matrix(R, convention), R
+
+    def tensions(self, x: np.ndarray, lengths: np.ndarray, n: int) -> np.ndarray:
+        tau = np.zeros(n)
+        tau[list(self.taut)] = x[9:] * lengths[list(self.taut)]
+        return tau
+
+
+def _reference_choice(robot: Robot, taut, gp) -> tuple[list, np.ndarray]:
+    """Reference points: the first three non-collinear among taut anchors, G, slack anchors.
+    Returns their labels (cable index or "G") and body coordinates."""
+    r = robot.anchors
+    candidates = [(i, r[i]) for i in taut] + [("G", gp)] + [(k, r[k]) for k in range(robot.n_cables) if k not in taut]
+    scale = max(1e-12, max(np.linalg.norm(c[1] - candidates[0][1]) for c in candidates))
+    chosen = [candidates[0]]
+    for lab, pt in candidates[1:]:
+        if len(chosen) == 1 and np.linalg.norm(pt - chosen[0][1]) > COLLINEAR * scale:
+            chosen.append((lab, pt))
+        elif len(chosen) == 2:
+            area = np.linalg.norm(np.cross(chosen[1][1] - chosen[0][1], pt - chosen[0][1]))
+            if area > COLLINEAR * scale**2:
+                chosen.append((lab, pt))
+                break
+    if len(chosen) < 3:
+        raise ValueError("the platform points are collinear: three reference points are needed")
+    return [c[0] for c in chosen], np.array([c[1] for c in chosen])
+
+
+def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -> Subproblem:
+    """The square system of §2.3 for the taut cables ``taut`` (0-based), ``1 ≤ m ≤ 6``."""
+    n, m = robot.n_cables, len(taut)
+    a, r = robot.exits, robot.anchors
+    f, mext, gp = load(robot)
+    labels, refs = _reference_choice(robot, taut, gp)
+    v = variables(9 + m)
+    q = [v[0:3], v[3:6], v[6:9]]
+    t = dict(zip(taut, v[9:]))
+    e1 = [q[1][k] - q[0][k] for k in range(3)]
+    e2 = [q[2][k] - q[0][k] for k in range(3)]
+    n12 = _cross(e1, e2)
+    Eb = np.column_stack([refs[1] - refs[0], refs[2] - refs[0], np.cross(refs[1] - refs[0], refs[2] - refs[0])])
+
+    def point(label, body) -> list[Expr]:
+        if label in labels:
+            return q[labels.index(label)]
+        beta = np.linalg.solve(Eb, body - refs[0])
+        beta = np.where(np.abs(beta) < 1e-14, 0.0, beta)
+        return [q[0][k] + float(beta[0]) * e1[k] + float(beta[1]) * e2[k] + float(beta[2]) * n12[k] for k in range(3)]
+
+    b = {i: point(i, r[i]) for i in range(n)}
+    g = point("G", gp)
+
+    def dist2(p, c) -> Expr:
+        return sum(((p[k] - float(c[k])) ** 2 for k in range(3)), const(0.0))
+
+    eqs: list[Expr] = []
+    for i, j in ((0, 1), (0, 2), (1, 2)):
+        d = float(np.linalg.norm(refs[i] - refs[j]))
+        eqs.append(sum(((q[i][k] - q[j][k]) ** 2 for k in range(3)), const(0.0)) - const(d) ** 2)
+    for i in taut:
+        eqs.append(dist2(b[i], a[i]) - const(float(lengths[i])) ** 2)
+    for k in range(3):
+        eqs.append(sum((t[i] * (float(a[i][k]) - b[i][k]) for i in taut), const(0.0)) + float(f[k]))
+
+    def moment_arm(i, pole, k) -> Expr:
+        """``((b_i − pole) × (a_i − pole))_k``."""
+        k1, k2 = (k + 1) % 3, (k + 2) % 3
+        c = a[i] - pole
+        return (b[i][k1] - float(pole[k1])) * float(c[k2]) - (b[i][k2] - float(pole[k2])) * float(c[k1])
+
+    def load_moment(pole, k) -> Expr:
+        k1, k2 = (k + 1) % 3, (k + 2) % 3
+        return ((g[k1] - float(pole[k1])) * float(f[k2]) - (g[k2] - float(pole[k2])) * float(f[k1])) + float(mext[k])
+
+    def moments(pole) -> list[Expr]:
+        out = []
+        for k in range(3):
+            acc: Expr = load_moment(pole, k)
+            for i in taut:
+                acc = acc + t[i] * moment_arm(i, pole, k)
+            out.append(acc)
+        return out
+
+    eqs += moments(a[taut[0]])
+    extra = [(e, (0.0, 0.0)) for j in taut[1:] for e in moments(a[j])]
+    for k in range(n):
+        if k not in taut:
+            extra.append((dist2(b[k], a[k]) - const(float(lengths[k])) ** 2, (-np.inf, 0.0)))
+    system = compile_system(9 + m, eqs, extra)
+    pole = a[taut[0]]
+    J = [[float(a[i][k]) - b[i][k] for i in taut] for k in range(3)] + [[moment_arm(i, pole, k) for i in taut] for k in range(3)]
+    rhs = [const(-float(f[k])) for k in range(3)] + [-load_moment(pole, k) for k in range(3)]
+    statics_tape = compile_tape([e for row in J for e in row] + rhs, [(-np.inf, np.inf)] * (6 * m + 6))
+
+    lo = np.full(9 + m, -np.inf)
+    hi = np.full(9 + m, np.inf)
+    for s, (lab, body) in enumerate(zip(labels, refs)):
+        for j in taut:
+            d = float(np.linalg.norm(body - r[j]))
+            rad = lengths[j] + d
+            lo[3 * s : 3 * s + 3] = np.maximum(lo[3 * s : 3 * s + 3], a[j] - rad)
+            hi[3 * s : 3 * s + 3] = np.minimum(hi[3 * s : 3 * s + 3], a[j] + rad)
+    lo[9:], hi[9:] = 0.0, np.inf
+    primary = np.arange(9 + m) < 9
+    return Subproblem(tuple(taut), system, lo, hi, primary, refs, StaticsFilter(statics_tape, m))

@@ -1,0 +1,130 @@
+"""All equilibria of an under-constrained robot for given cable lengths — the direct
+geometrico-static problem (``001_eb92e2f6589fc229.txt`` Ch. 2–3).
+
+:func:`solve_dgp` enumerates the taut subsets of ``m = 1 … min(n, 6, max_taut)`` cables
+(Eq. 2.1), solves each one — ``m = 1`` in closed form (:mod:`taut.dgp.single_cable`),
+``m ≥ 2`` by certified branch-and-prune on the reference-point system of
+:mod:`taut.dgp.formulation` — through a :mod:`taut.parallel` executor, and classifies every
+solution by the reduced Hessian (:mod:`taut.dgp.stability`).  A solution with a zero
+tension is not reported by the larger subset (its tension enclosure straddles 0), it
+belongs to the smaller one.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from itertools import combinations
+
+import numpy as np
+
+from taut.dgp.formulation import build_subproblem, load
+from taut.dgp.single_cable import single_cable_equilibria
+from taut.dgp.stability import is_stable
+from taut.errors import TautError
+from taut.geometry.rotation import angles_from_matrix
+from taut.interval.branch_prune import branch_and_prune
+from taut.model.robot import Robot
+from taut.parallel import get_executor
+
+
+@dataclass(frozen=True)
+class DGPSolution:
+    taut: tuple[int, ...]  #: 1-based taut cables
+    position: np.ndarray
+    orientation: np.ndarray  #: angles in the robot's convention (xyz-fixed by default)
+    tensions: np.ndarray  #: all n cables (0 for slack ones)
+    stable: bool
+    certificate_width: float  #: width of the Krawczyk box proven to hold this solution
+    uniqueness_radius: float  #: half-width of the inflated box with no other solution
+    continuum: tuple[float, float] | None = None  #: spin arc of a one-cable family
+
+    def as_dict(self) -> dict:
+        d = {
+            "taut": list(self.taut),
+            "position": self.position.tolist(),
+            "orientation": self.orientation.tolist(),
+            "tensions": self.tensions.tolist(),
+            "stable": bool(self.stable),
+            "certificate_width": self.certificate_width,
+            "uniqueness_radius": self.uniqueness_radius,
+        }
+        if self.continuum is not None:
+            d["continuum"] = list(self.continuum)
+        return d
+
+
+@dataclass
+class DGPResult:
+    solutions: list[DGPSolution] = field(default_factory=list)
+    subproblems: int = 0
+    undecided: int = 0  #: boxes of width < eps that could not be certified (should be 0)
+    boxes: int = 0
+    elapsed_s: float = 0.0
+
+
+def check_lengths(robot: Robot, lengths) -> np.ndarray:
+    arr = np.asarray(lengths, dtype=float).ravel()
+    if arr.size != robot.n_cables:
+        raise TautError(f"{robot.name} has {robot.n_cables} cables, got {arr.size} lengths")
+    if not np.all(np.isfinite(arr)):
+        raise TautError(f"cable lengths must be finite, got {arr.tolist()}")
+    if np.any(arr <= 0):
+        raise TautError(f"cable lengths must be positive, got {arr.tolist()}")
+    return arr
+
+
+def _solve_subset(job) -> tuple[list[DGPSolution], int, int]:
+    robot, lengths, taut, eps = job
+    n = robot.n_cables
+    a, r = robot.exits, robot.anchors
+    _, _, gp = load(robot)
+    out: list[DGPSolution] = []
+    if len(taut) == 1:
+        for s in single_cable_equilibria(robot, lengths, taut[0]):
+            out.append(DGPSolution((taut[0] + 1,), s["p"], angles_from_matrix(s["R"], robot.orientation), s["tensions"],
+                                   s["stable"], 0.0, 0.0, s["continuum"]))
+        return out, 0, 0
+    sp = build_subproblem(robot, lengths, taut)
+    res = branch_and_prune(sp.system, sp.lo, sp.hi, primary=sp.primary, eps=eps, filters=(sp.statics,), certify_width=1.0)
+    idx = list(taut)
+    for c in res.solutions:
+        p, ang, R = sp.pose(c.x, robot.orientation)
+        tau = sp.tensions(c.x, lengths, n)
+        b = p + r @ R.T
+        g = p + R @ gp
+        stable = is_stable(a[idx], b[idx], g, tau[idx], lengths[idx])
+        out.append(DGPSolution(tuple(i + 1 for i in taut), p, ang, tau, stable, c.width, c.radius))
+    return out, len(res.undecided), res.boxes
+
+
+def solve_dgp(robot: Robot, lengths=None, *, max_taut: int | None = None, executor=None, eps: float = 1e-7) -> DGPResult:
+    """All admissible equilibria (``τ ≥ 0``) for the cable lengths (default: the robot's
+    ``reference.lengths``), each with its stability flag and certificate."""
+    if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
+        raise TautError("the DGP solver handles spatial rigid platforms without joints")
+    if lengths is None:
+        if robot.reference is None or robot.reference.lengths is None:
+            raise TautError(f"{robot.name} has no reference lengths: give the cable lengths")
+        lengths = robot.reference.lengths
+    lengths = check_lengths(robot, lengths)
+    n = robot.n_cables
+    top = min(n, 6) if max_taut is None else min(n, 6, int(max_taut))
+    if top < 1:
+        raise TautError(f"--max-taut must be at least 1, got {max_taut}")
+    jobs = [(robot, lengths, taut, eps) for m in range(top, 0, -1) for taut in combinations(range(n), m)]
+    t0 = time.perf_counter()
+    own = executor is None
+    ex = get_executor() if own else executor
+    try:
+        parts = ex.map(_solve_subset, jobs)
+    finally:
+        if own:
+            ex.close()
+    out = DGPResult(subproblems=len(jobs))
+    for sols, und, boxes in parts:
+        out.solutions.extend(sols)
+        out.undecided += und
+        out.boxes += boxes
+    out.elapsed_s = time.perf_counter() - t0
+    return out

@@ -1,0 +1,108 @@
+"""Planar intersection tests: segment–segment, segment–circle, segment–polygon, circle–circle.
+
+Appendix A.1 (line segment–line segment intercept) and A.2 (line segment–circle
+intercept) of ``000_3d5147f1d4639546.txt``, vectorised over leading axes.  The tests are
+*strict* where the cable model needs it: a cable that only touches a circle tangentially
+(the contact points of every taut path, and the tie of Fig. 4.5) does not meet it; a
+tolerance ``tol`` [m] absorbs round-off.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+#: Default tolerance [m] of the strict tests (round-off of tangent constructions).
+TOL = 1e-9
+
+
+def _cross(p, q):
+    return p[..., 0] * q[..., 1] - p[..., 1] * q[..., 0]
+
+
+def segments_intersect(a1, b1, a2, b2, tol: float = 0.0, collinear: bool = True):
+    """Whether segments ``a1b1`` and ``a2b2`` share a point (A.1).
+
+    With ``s = ((a2 − a1) × (b2 − a2)) / ((b1 − a1) × (b2 − a2))`` and ``u = ((a2 − a1) ×
+    (b1 − a1)) / ((b1 − a1) × (b2 − a2))`` they intercept iff ``0 ≤ s, u ≤ 1``; parallel
+    segments intercept iff collinear and overlapping.  ``tol > 0`` shrinks both segments
+    by ``tol`` at each end (a proper crossing, not an end point touching);
+    ``collinear=False`` does not count collinear overlaps (a segment running along another)."""
+    a1, b1, a2, b2 = (np.asarray(v, float) for v in (a1, b1, a2, b2))
+    r, q, w = b1 - a1, b2 - a2, a2 - a1
+    den = _cross(r, q)
+    len1 = np.hypot(r[..., 0], r[..., 1])
+    len2 = np.hypot(q[..., 0], q[..., 1])
+    scale = np.maximum(len1 * len2, np.finfo(float).tiny)
+    parallel = np.abs(den) <= 1e-12 * scale
+    safe = np.where(parallel, 1.0, den)
+    s = _cross(w, q) / safe
+    u = _cross(w, r) / safe
+    e1 = tol / np.maximum(len1, np.finfo(float).tiny)
+    e2 = tol / np.maximum(len2, np.finfo(float).tiny)
+    crossing = (s >= e1) & (s <= 1 - e1) & (u >= e2) & (u <= 1 - e2)
+    # collinear: positions of a2, b2 along r (in units of |r|)
+    on_line = parallel & (np.abs(_cross(w, r)) <= 1e-12 * np.maximum(len1 * len1, np.finfo(float).tiny) + tol * len1)
+    rr = np.maximum(len1 * len1, np.finfo(float).tiny)
+    sa = (w[..., 0] * r[..., 0] + w[..., 1] * r[..., 1]) / rr
+    sb = ((b2 - a1)[..., 0] * r[..., 0] + (b2 - a1)[..., 1] * r[..., 1]) / rr
+    overlap = (np.minimum(sa, sb) <= 1 - e1) & (np.maximum(sa, sb) >= e1)
+    return np.where(parallel, on_line & overlap & collinear, crossing)
+
+
+def closest_point_on_segment(a, b, c):
+    """The point ``q`` of segment ``ab`` closest to ``c`` (A.2)."""
+    a, b, c = (np.asarray(v, float) for v in (a, b, c))
+    ab = b - a
+    den = ab[..., 0] ** 2 + ab[..., 1] ** 2
+    s = ((c - a)[..., 0] * ab[..., 0] + (c - a)[..., 1] * ab[..., 1]) / np.where(den > 0, den, 1.0)
+    s = np.clip(np.where(den > 0, s, 0.0), 0.0, 1.0)
+    return a + s[..., None] * ab
+
+
+def segment_circle_distance(a, b, c):
+    """Distance from the centre ``c`` to segment ``ab`` (A.2: ``‖q − c‖``)."""
+    q = closest_point_on_segment(a, b, c)
+    d = q - np.asarray(c, float)
+    return np.hypot(d[..., 0], d[..., 1])
+
+
+def segment_meets_circle(a, b, c, r, tol: float = TOL):
+    """Whether segment ``ab`` enters the open disc ``(c, r)``: ``‖q − c‖ < r − tol``.
+
+    A.2 states ``≤ r``; the strict form lets a cable touch an object tangentially (a
+    zero-radius object is therefore never met)."""
+    return segment_circle_distance(a, b, c) < np.asarray(r, float) - tol
+
+
+def point_in_polygon(p, vertices):
+    """Whether points ``p`` (``(..., 2)``) lie strictly inside the polygon (even–odd rule)."""
+    p = np.asarray(p, float)
+    v = np.asarray(vertices, float)
+    x, y = p[..., 0][..., None], p[..., 1][..., None]
+    x1, y1 = v[:, 0], v[:, 1]
+    x2, y2 = np.roll(x1, -1), np.roll(y1, -1)
+    cond = (y1 > y) != (y2 > y)
+    xs = x1 + (y - y1) * (x2 - x1) / np.where(y2 != y1, y2 - y1, 1.0)
+    return (np.count_nonzero(cond & (x < xs), axis=-1) % 2) == 1
+
+
+def segment_enters_polygon(a, b, vertices, tol: float = TOL):
+    """Whether segment ``ab`` enters the interior of a polygon (a disallowed region, §4.2.1).
+
+    §4.2.1 checks the segment against each edge of the bounding polygon (A.1); a segment
+    wholly inside crosses no edge, so its midpoint is tested too.  Touching an edge or a
+    vertex (within ``tol``) is not entering."""
+    a = np.asarray(a, float)
+    b = np.asarray(b, float)
+    v = np.asarray(vertices, float)
+    w = np.roll(v, -1, axis=0)
+    hit = segments_intersect(a[..., None, :], b[..., None, :], v, w, tol=tol, collinear=False).any(axis=-1)
+    return hit | point_in_polygon(0.5 * (a + b), v)
+
+
+def circles_overlap(c1, r1, c2, r2, tol: float = TOL):
+    """Whether two closed discs share interior points (``‖c1 − c2‖ < r1 + r2 − tol``),
+    or coincide (two points at the same place)."""
+    d = np.asarray(c2, float) - np.asarray(c1, float)
+    dist = np.hypot(d[..., 0], d[..., 1])
+    return (dist < np.asarray(r1, float) + np.asarray(r2, float) - tol) | (dist <= tol)

@@ -1,0 +1,16 @@
+"""Interval analysis (``001_eb92e2f6589fc229.txt`` §1.3 and Ch. 3): outward-rounded
+interval arithmetic, polynomial constraint tapes, HC4 contraction, Krawczyk certificates
+with inflation, and a branch-and-prune solver."""
+
+from taut.interval.arithmetic import Interval, centred_form
+from taut.interval.branch_prune import BranchAndPruneResult, branch_and_prune
+from taut.interval.expression import System, compile_system, const, derivative, sqrt, variables
+from taut.interval.hc4 import contract, evaluate, evaluate_point
+from taut.interval.krawczyk import Certificate, certify, inflate, krawczyk, newton
+from taut.interval.linear import interval_gauss, preconditioned_solve
+
+__all__ = [
+    "BranchAndPruneResult", "Certificate", "Interval", "System", "branch_and_prune", "centred_form",
+    "certify", "compile_system", "const", "contract", "derivative", "evaluate", "evaluate_point",
+    "inflate", "interval_gauss", "krawczyk", "newton", "preconditioned_solve", "sqrt", "variables",
+]

@@ -1,0 +1,271 @@
+"""Polynomial expressions and their compiled *tape* (``001_eb92e2f6589fc229.txt`` §1.3.2, §3.1.3).
+
+Constraints are written with :class:`Expr` objects (``x[0]**2 + x[1]*x[2] - 3``) and
+compiled by :func:`compile_system` into flat arrays — one node per operation, children
+before parents, each constraint a contiguous run of nodes ending at its root — that the
+Numba kernels of :mod:`taut.interval.hc4` evaluate forwards (natural interval extension)
+and backwards (HC4 projections).  Within one constraint equal subexpressions (the same
+Python object) become one node, so a DAG is evaluated once and projected once.
+
+:func:`derivative` differentiates symbolically (the constraints are polynomials, so the
+partial derivatives are again expressions); :func:`compile_system` compiles the Jacobian
+of the *equations* into a second tape for interval Newton / Krawczyk.
+
+Constants are intervals: ``const(lo, hi)`` encloses a real that is not a float.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+# Opcodes shared with taut.interval.hc4.
+VAR, CONST, ADD, SUB, MUL, NEG, SQR, POW, SQRT, DIV = range(10)
+
+
+class Expr:
+    """A node of a polynomial expression; build with :func:`variables` and :func:`const`."""
+
+    __slots__ = ("op", "args", "index", "lo", "hi")
+    __array_priority__ = 1000
+
+    def __init__(self, op, args=(), index=0, lo=0.0, hi=0.0):
+        self.op, self.args, self.index, self.lo, self.hi = op, tuple(args), int(index), float(lo), float(hi)
+
+    def is_const(self, value=None) -> bool:
+        return self.op == CONST and (value is None or (self.lo == value and self.hi == value))
+
+    def __add__(self, o):
+        o = _coerce(o)
+        if self.is_const(0.0):
+            return o
+        if o.is_const(0.0):
+            return self
+        return Expr(ADD, (self, o))
+
+    def __radd__(self, o):
+        return _coerce(o) + self
+
+    def __sub__(self, o):
+        o = _coerce(o)
+        if o.is_const(0.0):
+            return self
+        if self.is_const(0.0):
+            return -o
+        return Expr(SUB, (self, o))
+
+    def __rsub__(self, o):
+        return _coerce(o) - self
+
+    def __mul__(self, o):
+        o = _coerce(o)
+        if self.is_const(0.0) or o.is_const(0.0):
+            return ZERO
+        if self.is_const(1.0):
+            return o
+        if o.is_const(1.0):
+            return self
+        return Expr(MUL, (self, o))
+
+    def __rmul__(self, o):
+        return _coerce(o) * self
+
+    def __truediv__(self, o):
+        return Expr(DIV, (self, _coerce(o)))
+
+    def __neg__(self):
+        if self.op == CONST:
+            return Expr(CONST, lo=-self.hi, hi=-self.lo)
+        return Expr(NEG, (self,))
+
+    def __pow__(self, n: int):
+        if int(n) != n or n < 0:
+            raise ValueError(f"expressions take non-negative integer powers, got {n!r}")
+        n = int(n)
+        if n == 0:
+            return ONE
+        if n == 1:
+            return self
+        if n == 2:
+            return Expr(SQR, (self,))
+        return Expr(POW, (self,), index=n)
+
+    def __repr__(self) -> str:
+        names = {VAR: f"x{self.index}", CONST: f"[{self.lo}, {self.hi}]"}
+        if self.op in names:
+            return names[self.op]
+        sym = {ADD: "+", SUB: "-", MUL: "*", DIV: "/"}
+        if self.op in sym:
+            return f"({self.args[0]!r} {sym[self.op]} {self.args[1]!r})"
+        fn = {NEG: "-", SQR: "sqr", POW: f"pow{self.index}", SQRT: "sqrt"}[self.op]
+        return f"{fn}({self.args[0]!r})"
+
+
+def const(lo: float, hi: float | None = None) -> Expr:
+    """The constant interval ``[lo, hi]`` (``[lo, lo]`` for a float)."""
+    return Expr(CONST, lo=lo, hi=lo if hi is None else hi)
+
+
+def _coerce(x) -> Expr:
+    return x if isinstance(x, Expr) else const(float(x))
+
+
+ZERO, ONE = const(0.0), const(1.0)
+
+
+def variables(n: int) -> list[Expr]:
+    """The unknowns ``x_0 … x_{n-1}``."""
+    return [Expr(VAR, index=i) for i in range(n)]
+
+
+def sqrt(e: Expr) -> Expr:
+    return Expr(SQRT, (_coerce(e),))
+
+
+def derivative(e: Expr, i: int, memo: dict | None = None) -> Expr:
+    """``∂e/∂x_i`` as an expression (constants folded)."""
+    memo = {} if memo is None else memo
+    key = id(e)
+    if key in memo:
+        return memo[key]
+    op = e.op
+    if op == VAR:
+        d = ONE if e.index == i else ZERO
+    elif op == CONST:
+        d = ZERO
+    else:
+        da = [derivative(a, i, memo) for a in e.args]
+        a = e.args
+        if op == ADD:
+            d = da[0] + da[1]
+        elif op == SUB:
+            d = da[0] - da[1]
+        elif op == NEG:
+            d = -da[0] if not da[0].is_const(0.0) else ZERO
+        elif op == MUL:
+            d = da[0] * a[1] + a[0] * da[1]
+        elif op == SQR:
+            d = ZERO if da[0].is_const(0.0) else 2.0 * a[0] * da[0]
+        elif op == POW:
+            d = ZERO if da[0].is_const(0.0) else float(e.index) * a[0] ** (e.index - 1) * da[0]
+        elif op == SQRT:
+            d = ZERO if da[0].is_const(0.0) else da[0] / (2.0 * e)
+        else:  # DIV
+            d = (da[0] * a[1] - a[0] * da[1]) / a[1] ** 2 if not (da[0].is_const(0.0) and da[1].is_const(0.0)) else ZERO
+    memo[key] = d
+    return d
+
+
+def _depends(e: Expr, memo: dict) -> frozenset:
+    key = id(e)
+    if key not in memo:
+        if e.op == VAR:
+            memo[key] = frozenset((e.index,))
+        elif e.op == CONST:
+            memo[key] = frozenset()
+        else:
+            memo[key] = frozenset().union(*(_depends(a, memo) for a in e.args))
+    return memo[key]
+
+
+@dataclass(frozen=True)
+class Tape:
+    """Compiled constraints ``blo[c] ≤ root_c(x) ≤ bhi[c]``: nodes ``start[c] … end[c]-1``."""
+
+    op: np.ndarray  #: (nodes,) opcodes
+    a: np.ndarray  #: first child, or the variable index of VAR nodes
+    b: np.ndarray  #: second child, or the exponent of POW nodes
+    clo: np.ndarray  #: constant lower bounds (CONST nodes)
+    chi: np.ndarray
+    start: np.ndarray  #: (constraints,)
+    end: np.ndarray
+    blo: np.ndarray  #: (constraints,) bounds on the constraint value
+    bhi: np.ndarray
+
+    @property
+    def arrays(self):
+        return (self.op, self.a, self.b, self.clo, self.chi, self.start, self.end, self.blo, self.bhi)
+
+    @property
+    def size(self) -> int:
+        return self.start.size
+
+
+def compile_tape(exprs, bounds) -> Tape:
+    """Compile expressions ``exprs[c]`` with value bounds ``bounds[c] = (lo, hi)``."""
+    op, a, b, clo, chi, start, end = [], [], [], [], [], [], []
+    for e in exprs:
+        e = _coerce(e)
+        start.append(len(op))
+        index: dict[int, int] = {}
+
+        def emit(node: Expr) -> int:
+            k = id(node)
+            if k in index:
+                return index[k]
+            kids = [emit(c) for c in node.args]
+            op.append(node.op)
+            if node.op == VAR:
+                a.append(node.index)
+                b.append(0)
+            elif node.op == POW:
+                a.append(kids[0])
+                b.append(node.index)
+            else:
+                a.append(kids[0] if kids else 0)
+                b.append(kids[1] if len(kids) > 1 else 0)
+            clo.append(node.lo)
+            chi.append(node.hi)
+            index[k] = len(op) - 1
+            return index[k]
+
+        emit(e)
+        end.append(len(op))
+    bl = np.array([lo for lo, _ in bounds], dtype=np.float64)
+    bh = np.array([hi for _, hi in bounds], dtype=np.float64)
+    return Tape(
+        np.array(op, np.int64), np.array(a, np.int64), np.array(b, np.int64),
+        np.array(clo, np.float64), np.array(chi, np.float64),
+        np.array(start, np.int64), np.array(end, np.int64), bl, bh,
+    )
+
+
+@dataclass(frozen=True)
+class System:
+    """A square system of ``h`` polynomial equations in ``h`` unknowns plus redundant
+    constraints (equalities or inequalities) that only the contractor uses.
+
+    ``tape`` holds the equations first (bounds ``[0, 0]``) then the redundant constraints;
+    ``jacobian`` holds the non-zero entries ``∂f_i/∂x_j`` at ``rows``, ``cols``."""
+
+    n: int
+    n_equations: int
+    tape: Tape
+    jacobian: Tape
+    rows: np.ndarray
+    cols: np.ndarray
+
+
+def compile_system(n: int, equations, constraints=()) -> System:
+    """Compile ``equations`` (expressions equal to 0, ``len == n``) and ``constraints``
+    (pairs ``(expr, (lo, hi))``) over the unknowns ``x_0 … x_{n-1}``."""
+    equations = [_coerce(e) for e in equations]
+    if len(equations) != n:
+        raise ValueError(f"a square system needs {n} equations, got {len(equations)}")
+    exprs = list(equations) + [_coerce(e) for e, _ in constraints]
+    bounds = [(0.0, 0.0)] * n + [tuple(map(float, bd)) for _, bd in constraints]
+    tape = compile_tape(exprs, bounds)
+    deps: dict = {}
+    jac, rows, cols = [], [], []
+    for i, e in enumerate(equations):
+        memo: dict = {}
+        for j in sorted(_depends(e, deps)):
+            memo.clear()
+            d = derivative(e, j, memo)
+            if not d.is_const(0.0):
+                jac.append(d)
+                rows.append(i)
+                cols.append(j)
+    jtape = compile_tape(jac, [(-np.inf, np.inf)] * len(jac))
+    return System(n, n, tape, jtape, np.array(rows, np.int64), np.array(cols, np.int64))

@@ -1,0 +1,227 @@
+"""HC4 (forward–backward, "2B") contraction of polynomial constraints
+(``001_eb92e2f6589fc229.txt`` §3.1.3, the 2B approach; Benhamou et al.'s HC4-revise).
+
+For each constraint of a :class:`~taut.interval.expression.Tape` the forward pass
+evaluates every node over the box (natural interval extension), the root is intersected
+with the constraint's bounds, and the backward pass projects each node's domain onto its
+children (``x ∈ z − y`` for ``z = x + y``, ``x ∈ ±√z`` for ``z = x²``, …) down to the
+variables, whose domains shrink.  :func:`contract` repeats the revisions until no
+domain shrinks by more than a fraction ``ratio`` of its width.  Every projection uses the
+outward-rounded kernels of :mod:`taut.interval.kernels`, so no solution is ever lost.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from taut.interval import kernels as K
+from taut.interval.expression import ADD, CONST, DIV, MUL, NEG, POW, SQR, SQRT, SUB, VAR, Tape
+
+
+@njit(cache=True, fastmath=False)
+def _forward(op, a, b, clo, chi, s, e, lo, hi, nl, nh):
+    for k in range(s, e):
+        o = op[k]
+        if o == VAR:
+            nl[k], nh[k] = lo[a[k]], hi[a[k]]
+        elif o == CONST:
+            nl[k], nh[k] = clo[k], chi[k]
+        elif o == ADD:
+            nl[k], nh[k] = K.add(nl[a[k]], nh[a[k]], nl[b[k]], nh[b[k]])
+        elif o == SUB:
+            nl[k], nh[k] = K.sub(nl[a[k]], nh[a[k]], nl[b[k]], nh[b[k]])
+        elif o == MUL:
+            nl[k], nh[k] = K.mul(nl[a[k]], nh[a[k]], nl[b[k]], nh[b[k]])
+        elif o == NEG:
+            nl[k], nh[k] = -nh[a[k]], -nl[a[k]]
+        elif o == SQR:
+            nl[k], nh[k] = K.sqr(nl[a[k]], nh[a[k]])
+        elif o == POW:
+            nl[k], nh[k] = K.power(nl[a[k]], nh[a[k]], b[k])
+        elif o == SQRT:
+            nl[k], nh[k] = K.sqrt(nl[a[k]], nh[a[k]])
+        else:
+            nl[k], nh[k] = K.div(nl[a[k]], nh[a[k]], nl[b[k]], nh[b[k]])
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def _meet(nl, nh, i, lo, hi):
+    """Intersect node ``i`` with ``[lo, hi]``; False when it becomes empty."""
+    if lo > nl[i]:
+        nl[i] = lo
+    if hi < nh[i]:
+        nh[i] = hi
+    return nl[i] <= nh[i]
+
+
+@njit(cache=True, fastmath=False)
+def _backward(op, a, b, s, e, lo, hi, nl, nh):
+    for k in range(e - 1, s - 1, -1):
+        o = op[k]
+        zl, zh = nl[k], nh[k]
+        if o == VAR:
+            j = a[k]
+            lo[j] = max(lo[j], zl)
+            hi[j] = min(hi[j], zh)
+            if not lo[j] <= hi[j]:
+                return False
+        elif o == CONST:
+            pass
+        elif o == ADD:
+            x, y = a[k], b[k]
+            l, h = K.sub(zl, zh, nl[y], nh[y])
+            if not _meet(nl, nh, x, l, h):
+                return False
+            l, h = K.sub(zl, zh, nl[x], nh[x])
+            if not _meet(nl, nh, y, l, h):
+                return False
+        elif o == SUB:
+            x, y = a[k], b[k]
+            l, h = K.add(zl, zh, nl[y], nh[y])
+            if not _meet(nl, nh, x, l, h):
+                return False
+            l, h = K.sub(nl[x], nh[x], zl, zh)
+            if not _meet(nl, nh, y, l, h):
+                return False
+        elif o == MUL:
+            x, y = a[k], b[k]
+            if not (nl[y] <= 0.0 <= nh[y]):
+                l, h = K.div(zl, zh, nl[y], nh[y])
+                if not _meet(nl, nh, x, l, h):
+                    return False
+            elif not (zl <= 0.0 <= zh) and nl[y] == 0.0 and nh[y] == 0.0:
+                return False
+            if not (nl[x] <= 0.0 <= nh[x]):
+                l, h = K.div(zl, zh, nl[x], nh[x])
+                if not _meet(nl, nh, y, l, h):
+                    return False
+        elif o == NEG:
+            if not _meet(nl, nh, a[k], -zh, -zl):
+                return False
+        elif o == SQR:
+            if zh < 0.0:
+                return False
+            rl, rh = K.sqrt(zl, zh)
+            x = a[k]
+            # x ∈ [-rh, -rl] ∪ [rl, rh]: keep the hull of the parts that meet x
+            pl, ph = max(nl[x], rl), min(nh[x], rh)
+            ml, mh = max(nl[x], -rh), min(nh[x], -rl)
+            pos, negp = pl <= ph, ml <= mh
+            if pos and negp:
+                nl[x], nh[x] = ml, ph
+            elif pos:
+                nl[x], nh[x] = pl, ph
+            elif negp:
+                nl[x], nh[x] = ml, mh
+            else:
+                return False
+        elif o == POW:
+            pass  # odd/even n-th roots are not correctly rounded: no projection (sound)
+        elif o == SQRT:
+            if zh < 0.0:
+                return False
+            l, h = K.sqr(max(zl, 0.0), zh)
+            if not _meet(nl, nh, a[k], -np.inf if zl <= 0.0 else l, h):
+                return False
+        else:  # DIV z = x / y
+            x, y = a[k], b[k]
+            l, h = K.mul(zl, zh, nl[y], nh[y])
+            if not _meet(nl, nh, x, l, h):
+                return False
+            if not (zl <= 0.0 <= zh):
+                l, h = K.div(nl[x], nh[x], zl, zh)
+                if not _meet(nl, nh, y, l, h):
+                    return False
+    return True
+
+
+@njit(cache=True, fastmath=False)
+def _revise(op, a, b, clo, chi, s, e, bl, bh, lo, hi, nl, nh):
+    _forward(op, a, b, clo, chi, s, e, lo, hi, nl, nh)
+    r = e - 1
+    if not _meet(nl, nh, r, bl, bh):
+        return False
+    return _backward(op, a, b, s, e, lo, hi, nl, nh)
+
+
+@njit(cache=True, fastmath=False)
+def contract_kernel(op, a, b, clo, chi, start, end, blo, bhi, lo, hi, ratio, max_rounds):
+    """HC4 fixpoint on the box ``lo, hi`` (modified in place); False when proven empty."""
+    nl = np.empty(op.size)
+    nh = np.empty(op.size)
+    n = lo.size
+    before = np.empty(n)
+    for _ in range(max_rounds):
+        for j in range(n):
+            before[j] = hi[j] - lo[j]
+        for c in range(start.size):
+            if not _revise(op, a, b, clo, chi, start[c], end[c], blo[c], bhi[c], lo, hi, nl, nh):
+                return False
+        gain = False
+        for j in range(n):
+            if hi[j] - lo[j] < (1.0 - ratio) * before[j]:
+                gain = True
+                break
+        if not gain:
+            break
+    return True
+
+
+@njit(cache=True, fastmath=False)
+def evaluate_kernel(op, a, b, clo, chi, start, end, lo, hi, out_lo, out_hi):
+    nl = np.empty(op.size)
+    nh = np.empty(op.size)
+    for c in range(start.size):
+        _forward(op, a, b, clo, chi, start[c], end[c], lo, hi, nl, nh)
+        out_lo[c], out_hi[c] = nl[end[c] - 1], nh[end[c] - 1]
+
+
+@njit(cache=True, fastmath=False)
+def point_kernel(op, a, b, clo, chi, start, end, x, out):
+    """Plain floating-point evaluation at ``x`` (constants at their midpoints): for Newton."""
+    v = np.empty(op.size)
+    for c in range(start.size):
+        for k in range(start[c], end[c]):
+            o = op[k]
+            if o == VAR:
+                v[k] = x[a[k]]
+            elif o == CONST:
+                v[k] = 0.5 * clo[k] + 0.5 * chi[k]
+            elif o == ADD:
+                v[k] = v[a[k]] + v[b[k]]
+            elif o == SUB:
+                v[k] = v[a[k]] - v[b[k]]
+            elif o == MUL:
+                v[k] = v[a[k]] * v[b[k]]
+            elif o == NEG:
+                v[k] = -v[a[k]]
+            elif o == SQR:
+                v[k] = v[a[k]] * v[a[k]]
+            elif o == POW:
+                v[k] = v[a[k]] ** b[k]
+            elif o == SQRT:
+                v[k] = np.sqrt(v[a[k]])
+            else:
+                v[k] = v[a[k]] / v[b[k]]
+        out[c] = v[end[c] - 1]
+
+
+def contract(tape: Tape, lo: np.ndarray, hi: np.ndarray, ratio: float = 0.05, max_rounds: int = 50) -> bool:
+    """Contract the box ``[lo, hi]`` in place with HC4; False when it holds no solution."""
+    return bool(contract_kernel(*tape.arrays, lo, hi, ratio, max_rounds))
+
+
+def evaluate(tape: Tape, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Natural interval evaluation of every constraint over the box."""
+    out_lo, out_hi = np.empty(tape.size), np.empty(tape.size)
+    op, a, b, clo, chi, start, end, _, _ = tape.arrays
+    evaluate_kernel(op, a, b, clo, chi, start, end, np.asarray(lo, float), np.asarray(hi, float), out_lo, out_hi)
+    return out_lo, out_hi
+
+
+def evaluate_point(tape: Tape, x: np.ndarray) -> np.ndarray:
+    out = np.empty(tape.size)
+    op, a, b, clo, chi, start, end, _, _ = tape.arrays
+    point_kernel(op, a, b, clo, chi, start, end, np.asarray(x, float), out)
+    return out

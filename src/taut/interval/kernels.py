@@ -1,0 +1,130 @@
+"""Scalar interval kernels with outward rounding (``001_eb92e2f6589fc229.txt`` §1.3.1).
+
+An interval is a pair ``(lo, hi)`` of floats.  Every operation computes its endpoints in
+round-to-nearest and moves each one a single ulp outwards with ``np.nextafter``: IEEE 754
+``+ − × ÷ √`` are correctly rounded (error ≤ ½ ulp), so the moved endpoint is a proven
+bound of the exact result.  Infinite endpoints are allowed (``0 × ∞`` is taken as ``0``,
+the usual convention for endpoint products), an empty interval has ``lo > hi`` (or NaN).
+
+The kernels are Numba functions (``cache=True``, ``fastmath=False``: fast-math would let
+the compiler reorder and contract the roundings away) so that :mod:`taut.interval.hc4`
+and :mod:`taut.interval.krawczyk` can call them inside their own compiled loops;
+:mod:`taut.interval.arithmetic` lifts them to arrays.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+INF = np.inf
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def down(x):
+    """Largest float below ``x`` (a lower bound of any real within ½ ulp of ``x``)."""
+    return np.nextafter(x, -INF)
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def up(x):
+    return np.nextafter(x, INF)
+
+
+@njit(cache=True, fastmath=False)
+def add(al, ah, bl, bh):
+    return down(al + bl), up(ah + bh)
+
+
+@njit(cache=True, fastmath=False)
+def sub(al, ah, bl, bh):
+    return down(al - bh), up(ah - bl)
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def _prod_down(a, b):
+    """Lower bound of ``a·b``: exact 0 only when a factor is 0 (an underflow to 0 is not)."""
+    if a == 0.0 or b == 0.0:
+        return 0.0
+    return down(a * b)
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def _prod_up(a, b):
+    if a == 0.0 or b == 0.0:
+        return 0.0
+    return up(a * b)
+
+
+@njit(cache=True, fastmath=False)
+def mul(al, ah, bl, bh):
+    lo = min(min(_prod_down(al, bl), _prod_down(al, bh)), min(_prod_down(ah, bl), _prod_down(ah, bh)))
+    hi = max(max(_prod_up(al, bl), _prod_up(al, bh)), max(_prod_up(ah, bl), _prod_up(ah, bh)))
+    return lo, hi
+
+
+@njit(cache=True, fastmath=False)
+def scale(c, al, ah):
+    """``c × [a]`` for a float ``c``."""
+    return mul(c, c, al, ah)
+
+
+@njit(cache=True, fastmath=False)
+def sqr(al, ah):
+    """``[a]²`` — sharper than ``[a]×[a]``: ``[-1, 2]² = [0, 4]``."""
+    if al >= 0.0:
+        lo, hi = _prod_down(al, al), _prod_up(ah, ah)
+    elif ah <= 0.0:
+        lo, hi = _prod_down(ah, ah), _prod_up(al, al)
+    else:
+        lo, hi = 0.0, max(_prod_up(al, al), _prod_up(ah, ah))
+    return max(lo, 0.0), hi
+
+
+@njit(cache=True, fastmath=False)
+def sqrt(al, ah):
+    """``√[a]`` of the non-negative part of ``[a]`` (empty when ``ah < 0``)."""
+    if ah < 0.0:
+        return 1.0, -1.0
+    lo = 0.0 if al <= 0.0 else np.sqrt(al)
+    return (down(lo) if lo > 0.0 else 0.0), up(np.sqrt(ah))
+
+
+@njit(cache=True, fastmath=False)
+def div(al, ah, bl, bh):
+    """``[a] / [b]`` for ``0 ∉ [b]`` (``[-∞, ∞]`` when ``0 ∈ [b]``)."""
+    if bl <= 0.0 <= bh:
+        return -INF, INF
+    q1, q2, q3, q4 = al / bl, al / bh, ah / bl, ah / bh
+    lo = min(min(q1, q2), min(q3, q4))
+    hi = max(max(q1, q2), max(q3, q4))
+    return down(lo), up(hi)
+
+
+@njit(cache=True, fastmath=False)
+def power(al, ah, n):
+    """``[a]^n`` for an integer ``n ≥ 0``: even powers by repeated :func:`sqr`, odd powers
+    (monotone) as ``x·x^(n-1)`` at each endpoint separately; every product is rounded
+    outwards."""
+    if n == 0:
+        return 1.0, 1.0
+    if n == 1:
+        return al, ah
+    if n % 2 == 0:
+        sl, sh = sqr(al, ah)
+        return power(sl, sh, n // 2)
+    el, eh = power(al, al, n - 1)
+    lo = mul(al, al, el, eh)[0]
+    el, eh = power(ah, ah, n - 1)
+    hi = mul(ah, ah, el, eh)[1]
+    return lo, hi
+
+
+@njit(cache=True, fastmath=False)
+def neg(al, ah):
+    return -ah, -al
+
+
+@njit(cache=True, fastmath=False)
+def intersect(al, ah, bl, bh):
+    return max(al, bl), min(ah, bh)

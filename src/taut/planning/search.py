@@ -1,0 +1,116 @@
+"""A* over the charts of a growing atlas, and the path refined on the manifold.
+
+§4 of ``002_19d5d688a3999fb0.txt``: the atlas of :mod:`taut.planning.continuation` is
+expanded in A* order (Russell & Norvig, ref. [25]) from the chart at the start point:
+the open chart of least ``g + h`` is closed next, where ``g`` is the length of the
+chart-centre path found so far and ``h`` the straight-line distance to the goal in the
+same coordinates (admissible: no path on the manifold is shorter).  The search stops as
+soon as a chart's map reaches the goal point; when no open chart is left the connected
+component of the start has been covered without reaching the goal — *no path exists at
+the resolution of the chart radius*.
+
+The returned path is refined on the manifold: between consecutive chart centres ``x_a``
+and ``x_b`` it follows chart ``a`` up to the middle of the tangent segment and chart ``b``
+from there, each half mapped by Newton projection at a spacing of at most ``spacing``.
+"""
+
+from __future__ import annotations
+
+import heapq
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from taut.errors import TautError
+from taut.planning.continuation import Atlas, ImplicitManifold
+
+__all__ = ["PathResult", "plan_path", "refine_path"]
+
+
+@dataclass(frozen=True)
+class PathResult:
+    found: bool
+    path: np.ndarray  #: ``(N, n)`` points on the manifold, start to goal (empty if not found)
+    charts: int  #: charts in the atlas when the search stopped
+    expanded: int  #: charts closed by the search
+    exhausted: bool  #: every chart closed (``found=False`` is then a proof at this resolution)
+    length: float  #: length of ``path`` in the atlas metric
+    elapsed_s: float
+    atlas: Atlas
+
+
+def _segment(atlas: Atlas, i: int, u0: np.ndarray, u1: np.ndarray, spacing: float) -> list[np.ndarray]:
+    n = max(1, int(np.ceil(np.linalg.norm(u1 - u0) / spacing)))
+    pts = []
+    for t in np.linspace(0.0, 1.0, n + 1)[1:]:
+        y = atlas.chart_map(i, u0 + t * (u1 - u0))
+        if y is None:
+            raise TautError(f"path refinement: the map of chart {i} failed")
+        pts.append(y)
+    return pts
+
+
+def refine_path(atlas: Atlas, charts: list[int], goal: np.ndarray, spacing: float) -> np.ndarray:
+    """Manifold points along the chart sequence ``charts`` (starting at the start chart's
+    centre), ending at ``goal`` reached through the last chart."""
+    pts = [atlas.charts[charts[0]].centre]
+    for a, b in zip(charts[:-1], charts[1:]):
+        ca, cb = atlas.charts[a], atlas.charts[b]
+        ub = ca.coordinates(cb.centre)
+        pts += _segment(atlas, a, np.zeros_like(ub), 0.5 * ub, spacing)
+        pts += _segment(atlas, b, cb.coordinates(pts[-1]), np.zeros_like(ub), spacing)
+    last = atlas.charts[charts[-1]]
+    pts += _segment(atlas, charts[-1], np.zeros(last.basis.shape[1]), last.coordinates(goal), spacing)
+    pts[-1] = np.asarray(goal, float)
+    return np.array(pts)
+
+
+def plan_path(manifold: ImplicitManifold, start, goal, radius: float, epsilon: float = 0.1,
+              metric=None, max_charts: int = 20_000, spacing: float | None = None) -> PathResult:
+    """A path on ``manifold`` from ``start`` to ``goal`` (both on it), or proof that the
+    connected component of ``start`` does not reach ``goal`` at resolution ``radius``."""
+    t0 = time.perf_counter()
+    start, goal = np.asarray(start, float), np.asarray(goal, float)
+    if np.linalg.norm(manifold.function(goal)) > 1e-6 * (1 + np.linalg.norm(goal)):
+        raise TautError("the goal point is not on the manifold (|F(goal)| too large)")
+    atlas = Atlas(manifold, start, radius, epsilon, metric=metric)
+    h = lambda i: atlas.cost(atlas.charts[i].centre, goal)  # noqa: E731
+    g = {0: 0.0}
+    parent = {0: -1}
+    heap = [(h(0), 0)]
+    done: set[int] = set()
+    found_at = None
+    expanded = 0
+    while heap:
+        f, i = heapq.heappop(heap)
+        if i in done:
+            continue
+        if atlas.reaches(i, goal):
+            found_at = i
+            break
+        done.add(i)
+        if len(atlas.charts) >= max_charts:
+            break
+        atlas.grow(i)
+        expanded += 1
+        for j, c in atlas.charts[i].neighbours.items():
+            if j in done:
+                continue
+            gj = g[i] + c
+            if gj < g.get(j, np.inf):
+                g[j], parent[j] = gj, i
+                heapq.heappush(heap, (gj + h(j), j))
+    exhausted = found_at is None and not heap
+    if found_at is None:
+        return PathResult(False, np.empty((0, start.size)), len(atlas.charts), expanded, exhausted,
+                          float("nan"), time.perf_counter() - t0, atlas)
+    seq = [found_at]
+    while parent[seq[-1]] >= 0:
+        seq.append(parent[seq[-1]])
+    seq.reverse()
+    path = refine_path(atlas, seq, goal, spacing or radius / 4)
+    length = float(np.sum(np.linalg.norm(np.diff(path[:, atlas.metric], axis=0), axis=1)))
+    return PathResult(True, path, len(atlas.charts), expanded, False, length,
+                      time.perf_counter() - t0, atlas)
+

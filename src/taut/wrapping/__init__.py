@@ -1,0 +1,11 @@
+"""Collidable cables of planar variable-structure CDPRs (Chs. 3–4, 6 of ``000_3d5147f1d4639546.txt``):
+cable state (§4.1), cable-state tree (§4.2.1), state update (§4.2.2), VSCR IK (§4.3), trajectories (§6.2)."""
+
+from taut.wrapping.ik import WrappedIK, wrapped_inverse_kinematics
+from taut.wrapping.state import CablePath, CableState, rebuild_path
+from taut.wrapping.trajectory import TrajectoryResult, builtin_trajectory, run_trajectory
+from taut.wrapping.tree import CableStateTree
+from taut.wrapping.update import track, update_state
+
+__all__ = ["CablePath", "CableState", "CableStateTree", "TrajectoryResult", "WrappedIK", "builtin_trajectory",
+           "rebuild_path", "run_trajectory", "track", "update_state", "wrapped_inverse_kinematics"]

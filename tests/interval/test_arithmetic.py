@@ -1,0 +1,81 @@
+"""Interval enclosures contain the exact (rational) results: fractions.Fraction oracle."""
+
+from fractions import Fraction as F
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from taut.interval import Interval
+
+finite = st.floats(min_value=-1e6, max_value=1e6, allow_nan=False, allow_infinity=False)
+unit = st.floats(min_value=0.0, max_value=1.0)
+
+
+def _interval(draw):
+    a, b = draw(finite), draw(finite)
+    return min(a, b), max(a, b)
+
+
+@st.composite
+def intervals_and_points(draw):
+    lo, hi = _interval(draw)
+    t = draw(unit)
+    x = F(lo) + (F(hi) - F(lo)) * F(t)  # an exact rational inside [lo, hi]
+    return lo, hi, x
+
+
+def _inside(x: F, iv: Interval) -> bool:
+    lo, hi = float(iv.lo), float(iv.hi)
+    return (lo == -np.inf or F(lo) <= x) and (hi == np.inf or x <= F(hi))
+
+
+@settings(max_examples=300, deadline=None)
+@given(intervals_and_points(), intervals_and_points())
+def test_binary_operations_enclose_exact_results(a, b):
+    al, ah, x = a
+    bl, bh, y = b
+    A, B = Interval(al, ah), Interval(bl, bh)
+    assert _inside(x + y, A + B)
+    assert _inside(x - y, A - B)
+    assert _inside(x * y, A * B)
+    if not bl <= 0.0 <= bh:
+        assert _inside(x / y, A / B)
+
+
+@settings(max_examples=300, deadline=None)
+@given(intervals_and_points(), st.integers(min_value=0, max_value=5))
+def test_unary_operations_enclose_exact_results(a, n):
+    al, ah, x = a
+    A = Interval(al, ah)
+    assert _inside(x * x, A.sqr())
+    assert _inside(x**n, A**n)
+    if x >= 0:
+        s = A.sqrt()
+        # √x ∈ [lo, hi]  ⇔  lo² ≤ x ≤ hi² (lo, hi ≥ 0)
+        assert F(float(s.lo)) ** 2 <= x <= F(float(s.hi)) ** 2
+
+
+@settings(max_examples=200, deadline=None)
+@given(intervals_and_points())
+def test_bounds_are_outward_even_for_exact_float_inputs(a):
+    """A sum of floats is usually inexact; the enclosure must still hold the exact value."""
+    al, ah, x = a
+    s = Interval(al, ah) + Interval(0.1)
+    assert _inside(x + F(0.1), s)
+
+
+def test_sqr_is_sharper_than_product_and_infinities_are_safe():
+    a = Interval(-1.0, 2.0)
+    assert (float(a.sqr().lo), float(a.sqr().hi)) == (0.0, np.nextafter(4.0, 5.0))
+    assert (a * a).lo < 0
+    z = Interval(0.0, 0.0) * Interval(0.0, np.inf)
+    assert (float(z.lo), float(z.hi)) == (0.0, 0.0)
+    assert np.isinf((Interval(1.0, 2.0) / Interval(-1.0, 1.0)).hi)
+    assert Interval(-2.0, -1.0).sqrt().is_empty()
+
+
+def test_negative_power_is_rejected():
+    with pytest.raises(ValueError):
+        Interval(1.0, 2.0) ** -1

@@ -1,0 +1,61 @@
+"""HC4, interval Gauss, Krawczyk + inflation and branch-and-prune on small systems."""
+
+import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from taut.interval import (
+    branch_and_prune, certify, compile_system, contract, inflate, krawczyk, preconditioned_solve, variables,
+)
+
+X, Y = variables(2)
+CIRCLES = compile_system(2, [X**2 + Y**2 - 1, (X - 1) ** 2 + Y**2 - 1])  # Example 1 of §3.2.1
+
+
+def test_hc4_keeps_solutions_and_proves_emptiness():
+    lo, hi = np.array([-2.0, 0.0]), np.array([2.0, 2.0])
+    assert contract(CIRCLES.tape, lo, hi)
+    s = np.array([0.5, np.sqrt(3) / 2])
+    assert np.all(lo <= s) and np.all(s <= hi)
+    assert hi[0] <= 1.0 + 1e-12 and lo[0] >= -1e-12  # x ∈ [0, 1] from the two circles
+    lo, hi = np.array([1.5, 1.5]), np.array([2.0, 2.0])
+    assert not contract(CIRCLES.tape, lo, hi)
+
+
+def test_krawczyk_proves_uniqueness_and_inflation_gives_a_wider_box():
+    s = np.array([0.5, np.sqrt(3) / 2])
+    assert krawczyk(CIRCLES, s - 0.05, s + 0.05).status == "unique"
+    assert krawczyk(CIRCLES, s + 0.5, s + 0.6).status == "empty"
+    cert = certify(CIRCLES, [0.4, 0.8])
+    assert np.allclose(cert.x, s, atol=1e-15) and np.all(cert.lo <= s) and np.all(s <= cert.hi)
+    assert cert.width < 1e-6
+    r = inflate(CIRCLES, s)
+    # Eq. 3.40 gives √3/4 with exact symbolic cancellation; the natural extension is sound but smaller
+    assert 0.05 < r <= np.sqrt(3) / 4
+    assert krawczyk(CIRCLES, s - r, s + r).status != "empty"
+
+
+def test_branch_and_prune_finds_all_solutions():
+    res = branch_and_prune(CIRCLES, [-3.0, -3.0], [3.0, 3.0])
+    xs = sorted(tuple(np.round(c.x, 12)) for c in res.solutions)
+    assert xs == [(0.5, round(-np.sqrt(3) / 2, 12)), (0.5, round(np.sqrt(3) / 2, 12))]
+    assert not res.undecided
+
+
+def test_branch_and_prune_cubic_roots_and_inequalities():
+    (x,) = variables(1)
+    sys = compile_system(1, [(x - 1) * (x - 2) * (x + 3)], [(x, (0.0, np.inf))])
+    res = branch_and_prune(sys, [-10.0], [10.0])
+    assert sorted(round(float(c.x[0]), 12) for c in res.solutions) == [1.0, 2.0]
+
+
+@settings(max_examples=50, deadline=None)
+@given(st.lists(st.floats(-3, 3), min_size=9, max_size=9), st.lists(st.floats(-3, 3), min_size=3, max_size=3))
+def test_preconditioned_gauss_encloses_the_solution(a, x):
+    A = np.array(a).reshape(3, 3) + 10 * np.eye(3)
+    x = np.array(x)
+    b = A @ x
+    out = preconditioned_solve(A, A, b - 1e-9, b + 1e-9)
+    assert out is not None
+    lo, hi = out
+    assert np.all(lo <= x + 1e-7) and np.all(x - 1e-7 <= hi)

@@ -1,0 +1,111 @@
+"""Henderson's continuation and A* on manifolds of known geometry (circle, sphere, torus)."""
+
+import numpy as np
+import pytest
+
+from taut.errors import TautError
+from taut.planning import Atlas, ImplicitManifold, Polytope, plan_path, tangent_basis
+
+CIRCLE = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 1)
+SPHERE = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
+R0, R1 = 1.0, 0.4
+
+
+def _torus_f(x):
+    q = np.hypot(x[0], x[1])
+    return np.array([(q - R0) ** 2 + x[2] ** 2 - R1 ** 2])
+
+
+def _torus_j(x):
+    q = np.hypot(x[0], x[1])
+    return np.array([[2 * (q - R0) * x[0] / q, 2 * (q - R0) * x[1] / q, 2 * x[2]]])
+
+
+TORUS = ImplicitManifold(_torus_f, _torus_j, 2)
+
+
+def _sphere_points(n, seed=0):
+    p = np.random.default_rng(seed).normal(size=(n, 3))
+    return p / np.linalg.norm(p, axis=1)[:, None]
+
+
+def _torus_points(n, seed=0):
+    a, b = np.random.default_rng(seed).uniform(0, 2 * np.pi, (2, n))
+    return np.stack([(R0 + R1 * np.cos(b)) * np.cos(a), (R0 + R1 * np.cos(b)) * np.sin(a), R1 * np.sin(b)], 1)
+
+
+def test_tangent_basis_is_orthonormal_null_space():
+    J = np.random.default_rng(1).normal(size=(3, 7))
+    Q = tangent_basis(J, 4)
+    assert np.allclose(Q.T @ Q, np.eye(4)) and np.allclose(J @ Q, 0)
+
+
+def test_polytope_cut_keeps_halfspace_and_vertex_count():
+    P = Polytope(3, 1.0)
+    assert P.cut(np.array([1.0, 1.0, 1.0]), 2.0, 10)  # cuts off the corner (1, 1, 1)
+    assert len(P.vertices) == 10 and np.all(P.vertices @ np.ones(3) <= 2 + 1e-9)
+    assert not P.cut(np.array([1.0, 0, 0]), 5.0, 11)
+
+
+def test_circle_atlas_spacing():
+    a = Atlas(CIRCLE, [1.0, 0.0], 0.1)
+    assert a.complete()
+    n = len(a.charts)
+    assert 0.95 * 2 * np.pi / 0.1 <= n <= 1.2 * 2 * np.pi / 0.1  # one chart per step r
+    assert np.allclose(np.linalg.norm(a.centres, axis=1), 1)
+    ang = np.sort(np.arctan2(a.centres[:, 1], a.centres[:, 0]))
+    gaps = np.diff(np.concatenate([ang, ang[:1] + 2 * np.pi]))
+    assert gaps.max() < 0.2  # consecutive chart centres never farther than 2 r
+
+
+@pytest.mark.parametrize("manifold,x0,points,area,factor", [
+    (SPHERE, [0, 0, 1.0], _sphere_points(400), 4 * np.pi, 3),
+    # the tube radius 0.4 is only twice the chart radius: steps shrink with the curvature
+    (TORUS, [R0 + R1, 0, 0], _torus_points(400), 4 * np.pi ** 2 * R0 * R1, 4),
+])
+def test_complete_atlas_covers_the_surface(manifold, x0, points, area, factor):
+    r = 0.2
+    a = Atlas(manifold, x0, r)
+    assert a.complete()
+    assert all(abs(manifold.function(c)[0]) < 1e-9 for c in a.centres)  # centres on M
+    assert not any(c.frontier for c in a.charts)
+    # hexagons of circumradius r: area / (3√3/2 r²) charts at least; centres a step r
+    # apart on a hexagonal lattice would need three times as many
+    ideal = area / (1.5 * np.sqrt(3) * r ** 2)
+    assert ideal <= len(a.charts) <= factor * ideal
+    assert all(a.covering_chart(p) is not None for p in points)
+    assert max(np.linalg.norm(a.centres - p, axis=1).min() for p in points) < r
+
+
+def test_sphere_antipodes_path_close_to_geodesic():
+    res = plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], 0.2)
+    assert res.found
+    assert np.allclose(res.path[0], [0, 0, 1]) and np.allclose(res.path[-1], [0, 0, -1])
+    assert np.allclose(np.linalg.norm(res.path, axis=1), 1, atol=1e-9)
+    assert np.linalg.norm(np.diff(res.path, axis=0), axis=1).max() < 0.1  # refined, continuous
+    assert np.pi <= res.length <= 1.15 * np.pi
+
+
+def test_torus_path_around_the_hole_and_over_the_tube():
+    start, goal = [R0 + R1, 0, 0], [-(R0 - R1), 0, 0]  # outer equator → inner equator, opposite side
+    res = plan_path(TORUS, start, goal, 0.1)
+    assert res.found
+    assert np.abs([_torus_f(p)[0] for p in res.path]).max() < 1e-9
+    # geodesic ≥ the planar distance, and the path cannot cross the hole
+    assert res.length >= np.linalg.norm(np.subtract(goal, start))
+    assert np.hypot(res.path[:, 0], res.path[:, 1]).min() >= R0 - R1 - 1e-9
+
+
+def test_boxed_component_gives_no_path_with_exhaustion():
+    # a sphere cut by the box z ≥ 0.5 (frontier charts stop the atlas): the south pole is
+    # unreachable and the search ends having closed every chart
+    box = ImplicitManifold(SPHERE.function, SPHERE.jacobian, 2,
+                           lower=np.array([-2, -2, 0.5]), upper=np.array([2, 2, 2]))
+    res = plan_path(box, [0, 0, 1.0], [0, 0, -1.0], 0.2)
+    assert not res.found and res.exhausted and res.charts > 5
+    assert res.atlas.centres[:, 2].min() > 0.5 - 0.2
+
+
+def test_start_off_manifold_is_rejected():
+    with pytest.raises(TautError):
+        Atlas(SPHERE, [0, 0, 2.0], 0.2)
