@@ -70,15 +70,6 @@ class CapsuleModel:
         return len(self.names)
 
 
-def _body_capsules(robot: Robot):
-    out = []
-    if robot.platform.shape is not None:
-        out += [(0, c) for c in robot.platform.shape.capsules]
-    for k, body in enumerate(robot.platform.bodies, 1):
-        out += [(k, c) for c in body.capsules]
-    return out
-
-
 def _point_on_segment(p, a, b) -> bool:
     v = b - a
     vv = float(v @ v)
@@ -89,7 +80,7 @@ def _point_on_segment(p, a, b) -> bool:
 def capsule_model(robot: Robot) -> CapsuleModel:
     """The capsule model of ``robot``: capsules, radii and the pairs to check."""
     n = robot.n_cables
-    caps = _body_capsules(robot)
+    caps = robot.body_capsules
     pad = np.zeros(3 - robot.dimension)
     names = [f"cable {i + 1}" for i in range(n)] + [c.name or f"body {k} capsule" for k, c in caps]
     radii = np.array([c.radius for c in robot.cables] + [c.radius for _, c in caps], float)

@@ -343,6 +343,14 @@ class Robot(_Strict):
         t = np.array([c.length if c.length is not None else (0.0, math.inf) for c in self.cables], dtype=float)
         return t[:, 0], t[:, 1]
 
+    @property
+    def body_capsules(self) -> list[tuple[int, Capsule]]:
+        """``(body index, capsule)`` for the platform shape (body 0) and every extra body."""
+        out = [(0, c) for c in self.platform.shape.capsules] if self.platform.shape is not None else []
+        for k, body in enumerate(self.platform.bodies, 1):
+            out += [(k, c) for c in body.capsules]
+        return out
+
     @cached_property
     def joint_limits(self) -> np.ndarray:
         return np.array([b.joint.limits for b in self.platform.bodies], dtype=float).reshape(-1, 2)

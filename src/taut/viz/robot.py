@@ -246,16 +246,6 @@ def draw_scene_3d(ax, robot: Robot, *, labels: bool = True) -> np.ndarray:
 # ---------------------------------------------------------------------------------------
 # the robot at a pose
 # ---------------------------------------------------------------------------------------
-def _capsules(robot: Robot):
-    """(body index, capsule) for the platform shape and every extra body."""
-    out = []
-    if robot.platform.shape is not None:
-        out += [(0, c) for c in robot.platform.shape.capsules]
-    for k, body in enumerate(robot.platform.bodies, 1):
-        out += [(k, c) for c in body.capsules]
-    return out
-
-
 def _pose_title(robot: Robot, pose: np.ndarray) -> str:
     return ", ".join(f"{n}={v:.3g}" for n, v in zip(robot.pose_names, pose))
 
@@ -316,7 +306,7 @@ def _draw_2d(ax, robot: Robot, arr: np.ndarray) -> None:
             if k > 0:  # the joint: parent frame origin to body frame origin
                 par = parents[robot.platform.bodies[k - 1].parent]
                 ax.plot([pos[par][0], pos[k][0]], [pos[par][1], pos[k][1]], color="black", lw=1, ls="--", zorder=3, gid="joint")
-        for k, cap in _capsules(robot):
+        for k, cap in robot.body_capsules:
             ends = _transform([cap.a, cap.b], pos[k], rot[k])
             geom = (LineString(ends) if np.ptp(ends, axis=0).max() > 0 else Point(ends[0])).buffer(cap.radius, 24)
             if not geom.is_empty:
@@ -364,7 +354,7 @@ def _draw_3d(ax, robot: Robot, arr: np.ndarray) -> None:
             for f in faces:
                 if len(f) == 2:
                     ax.plot(f[:, 0], f[:, 1], f[:, 2], color=PLATFORM, lw=4, gid="platform")
-        for k, cap in _capsules(robot):
+        for k, cap in robot.body_capsules:
             ends = _transform([cap.a, cap.b], pos[k], rot[k])
             ax.plot(ends[:, 0], ends[:, 1], ends[:, 2], color=PLATFORM, lw=7, alpha=0.35, solid_capstyle="round",
                     gid="capsule")
