@@ -13,6 +13,7 @@ import numpy as np
 from taut.model import example, example_names
 from taut.viz import Report
 from taut.viz.check import check_section
+from taut.viz.plan import plan_section
 from taut.viz.trajectory import trajectory_section
 
 
@@ -83,6 +84,7 @@ SECTIONS = [
     lambda r: standard_model_section(r, "spatial-8cable", shift=[1.2, 0.0, 0.8], resolution=30),
     trajectory_section,
     check_section,
+    plan_section,
 ]
 
 

@@ -47,3 +47,16 @@ def test_plan_bad_input_exit_2(capsys, argv):
 
 def test_plan_needs_a_hexapod(capsys):
     assert main(["plan", "suspended-3cable", "--start", "0,0,0,0,0,0", "--goal", "0,0,0,0,0,0"]) == 2
+
+
+def test_plan_q3_q4_and_a_proof_of_no_path(capsys):
+    assert main(["plan", "robocrane", "--start", "q3", "--goal", "q4", "--fix", SLICE,
+                 "--radius", "0.3", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert d["found"] and d["verified"] and d["length"] > 4
+    # two islands of the slice (tests/planning/test_robocrane.py): the atlas of the start's
+    # component completes inside the angle window φ ∈ [−π, π], θ ∈ [0, π]
+    assert main(["plan", "robocrane", "--start", "0,0,2,-1.3,2.2,35deg", "--goal", "0,0,2,0.6,2.4,35deg",
+                 "--fix", SLICE, "--radius", "0.3", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert not d["found"] and d["exhausted"] and d["path"] == [] and d["charts"] == d["expanded"]

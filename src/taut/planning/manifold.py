@@ -21,6 +21,10 @@ the wrench ``ŵ`` applied to the platform.  Moments are taken about the point ``
 nominal wrench (``c_i = b_i − P_m`` in the platform frame), where §5 states
 ``ŵ_0 = [0, 0, m, 0, 0, 0]`` is constant; in taut's convention ``W = −J`` about ``P_m``.
 
+Angles: ``θ ∈ [0, π]`` and ``φ`` in a ``2π`` window (``phi_window``) are box bounds of the
+slice (charts beyond them are frontier charts), so that the atlas of a slice is finite and
+can complete — the no-path proof of §4; poses are lifted with canonical angles.
+
 The positivity of ``v_i,i``, ``s_i``, ``t_i``, ``g_i`` is implicit on each connected component
 (Appendix A), so only upper bounds on ``s``, ``t``, ``g`` are imposed, to keep atlases finite.
 The Jacobian ``F_x`` is analytic (chain rule through ``J(R, u, ρ)``).
@@ -92,6 +96,11 @@ class WrenchFeasibleManifold:
     #: :meth:`implicit`: a linear change of variables that keeps chart steps in pose space
     #: of the order of the chart radius (the slacks vary like 1/margin near the boundary)
     weights: tuple = (1.0, 1.0, 0.1, 0.1, 0.1, 0.01, 1.0, 10.0, 0.01, 0.01)
+    #: window of the torsion-free tilt azimuth φ (length 2π): with θ ∈ [0, π] every rotation
+    #: has tilt-and-torsion angles in ``[φ_lo, φ_lo + 2π] × [0, π]``, so an atlas of a slice
+    #: that frees φ or θ stays bounded and can complete (charts whose centre leaves the
+    #: window are frontier charts, like those beyond ``slack_max``)
+    phi_window: tuple = (-np.pi, np.pi)
 
     def __post_init__(self):
         self.a = np.asarray(self.a, float).reshape(6, 3)
@@ -119,6 +128,9 @@ class WrenchFeasibleManifold:
         for blk, wi in zip(blocks, self.weights):
             w[blk] = wi
         self._w = w[self.free]
+        lo, hi = (float(v) for v in self.phi_window)
+        if not np.isclose(hi - lo, 2 * np.pi):
+            raise TautError(f"phi_window must span 2π, got {self.phi_window}")
 
     @classmethod
     def from_robot(cls, robot, E=None, fixed=None, **kw) -> "WrenchFeasibleManifold":
@@ -264,11 +276,26 @@ class WrenchFeasibleManifold:
     def implicit(self) -> ImplicitManifold:
         """The slice as an :class:`ImplicitManifold` in its weighted free variables
         ``y = w · x_free``, with the box ``s_i, t_i, g_i ≤ slack_max``."""
-        hi = np.full(N_VARS, np.inf)
+        lo, hi = np.full(N_VARS, -np.inf), np.full(N_VARS, np.inf)
         hi[_G] = hi[_S] = hi[_T] = self.slack_max
+        lo[3], hi[3] = self.phi_window  # φ
+        lo[4], hi[4] = 0.0, np.pi  # θ
         return ImplicitManifold(lambda y: self.full_function(self.full(y)),
                                 lambda y: self.full_jacobian(self.full(y))[:, self.free] / self._w,
-                                self.dim, upper=hi[self.free] * self._w)
+                                self.dim, lower=lo[self.free] * self._w, upper=hi[self.free] * self._w)
+
+    def canonical(self, pose) -> np.ndarray:
+        """The same pose(s) ``(..., 6)`` with ``θ ∈ [0, π]`` and ``φ`` in :attr:`phi_window`:
+        ``(φ, θ)`` and ``(φ + π, −θ)`` give the same ``R`` of Eq. (1) for any ``σ``, and ``φ``
+        and ``θ`` are ``2π``-periodic."""
+        q = np.array(pose, float)
+        q[..., 4] = np.mod(q[..., 4] + np.pi, 2 * np.pi) - np.pi  # θ is 2π-periodic too
+        neg = q[..., 4] < 0
+        q[..., 4] = np.abs(q[..., 4])
+        q[..., 3] = q[..., 3] + np.where(neg, np.pi, 0.0)
+        lo = self.phi_window[0]
+        q[..., 3] = lo + np.mod(q[..., 3] - lo, 2 * np.pi)
+        return q
 
     @property
     def pose_metric(self) -> np.ndarray:
@@ -286,10 +313,13 @@ class WrenchFeasibleManifold:
 
     def lift(self, pose) -> np.ndarray:
         """The free vector of the point of the slice over ``pose`` (Eqs. 1–8 solved in closed
-        form); :class:`InfeasiblePoseError` if the pose is not wrench-feasible."""
+        form, angles made :meth:`canonical`); :class:`InfeasiblePoseError` if the pose is not
+        wrench-feasible."""
         q = np.asarray(pose, float).reshape(-1)
         if q.size != 6 or not np.all(np.isfinite(q)):
             raise PoseError(f"a pose is [x, y, z, phi, theta, sigma], got {pose!r}")
+        if not {"phi", "theta"} & set(self.fixed):
+            q = self.canonical(q)
         for n, v in self.fixed.items():
             if not np.isclose(q[POSE_NAMES.index(n)], v, atol=1e-9):
                 raise PoseError(f"pose {q.tolist()} is not on the slice {n} = {v}")
@@ -323,7 +353,10 @@ class WrenchFeasibleManifold:
             Binv = np.linalg.inv(J.T @ self.E @ J)
         except np.linalg.LinAlgError:
             return None
-        V = (Binv / np.sqrt(np.diag(Binv))[None, :]).T  # v_i = B⁻¹ e_i / sqrt(B⁻¹_ii)
+        d = np.diag(Binv)
+        if not (np.all(np.isfinite(d)) and np.all(d > 0)):
+            return None  # J numerically singular
+        V = (Binv / np.sqrt(d)[None, :]).T  # v_i = B⁻¹ e_i / sqrt(B⁻¹_ii)
         return R, u, rho, f0, V
 
     def tension_range(self, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
