@@ -19,6 +19,7 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
         ("bench_wrapping.py", ["--samples", "2001"], "state updates per second per cable"),
         ("bench_check.py", ["--poses", "2000", "--loop", "30"], "poses where the verdicts differ: 0"),
         ("bench_plan.py", ["--repeat", "1"], "all feasible True"),
+        ("bench_atlas.py", ["--queries", "2000", "--naive", "10", "--repeat", "1"], "same lengths at 100 %"),
         pytest.param("bench_dgp.py", [], "6 solutions (1 stable)", marks=pytest.mark.slow),
     ],
 )

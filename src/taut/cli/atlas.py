@@ -1,0 +1,106 @@
+"""``taut atlas ROBOT``: the structure atlas of a planar point-mass VSCR and its workspace
+(Ch. 5, Algs. 5.1–5.2 of ``000_3d5147f1d4639546.txt``; :mod:`taut.atlas`)."""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+import numpy as np
+
+from taut.errors import TautError
+
+HELP = """Build the structure atlas of a planar point-mass VSCR (one chart per reachable
+structure, Alg. 5.1) from a start point, and its workspace under a condition (Alg. 5.2).
+
+--start x,y     start point (default: the robot's first reference pose)
+--theta T       platform orientation; only 0 for a point-mass platform
+--condition C   wrench-feasible (default), wrench-closure or static
+--out FILE.json the charts: structure (per cable, wrapped objects as [object, +1|-1],
+                1-based), domain polygon, area, neighbours; and the edges
+JSON: {"charts", "edges", "reachable_area", "workspace_area", "pruned", "time"}."""
+
+
+def _chart_json(atlas, c) -> dict:
+    C = atlas.charts[c]
+    dom = C.domain
+    return {
+        "index": c + 1,
+        "structure": [[[k + 1, d] for k, d in s] for s in C.states],
+        "area": float(dom.area),
+        "seed": C.seed.tolist(),
+        "domain": [np.asarray(g.exterior.coords).tolist() for g in getattr(dom, "geoms", [dom])],
+        "neighbours": sorted(n + 1 for n in C.neighbours),
+    }
+
+
+def cmd_atlas(ns) -> int:
+    import time
+
+    from taut.atlas import atlas_workspace, build_atlas
+    from taut.cli import args as A
+    from taut.cli.main import console, emit, load
+
+    robot = load(ns.robot)
+    if ns.start is not None:
+        start = A.vector(ns.start, "--start")
+        if start.size != 2:
+            raise TautError(f"--start: expected x,y, got {ns.start!r}")
+    elif robot.reference is not None and robot.reference.poses:
+        start = np.asarray(next(iter(robot.reference.poses.values())), float)[:2]
+    else:
+        raise TautError(f"{robot.name} has no reference pose; give --start x,y")
+    if ns.theta is not None and A.number(ns.theta, "--theta") != 0.0 and robot.is_point_mass:
+        raise TautError("--theta: a point-mass platform has no orientation (only 0)")
+    t0 = time.perf_counter()
+    atlas = build_atlas(robot, start)
+    ws = atlas_workspace(atlas, ns.condition)
+    data = {
+        "robot": robot.name,
+        "start": start.tolist(),
+        "charts": len(atlas.charts),
+        "edges": atlas.n_edges,
+        "reachable_area": float(atlas.reachable_area().area),
+        "workspace_area": ws.area,
+        "condition": ws.condition,
+        "pruned": [c + 1 for c in ws.pruned],
+        "time": time.perf_counter() - t0,
+    }
+    if ns.out:
+        full = data | {
+            "chart_list": [_chart_json(atlas, c) for c in range(len(atlas.charts))],
+            "edge_list": [{"charts": [e.charts[0] + 1, e.charts[1] + 1], "cable": e.cable + 1, "kind": e.kind,
+                           "object": e.obj + 1, "segment": e.segment.tolist()} for e in atlas.edges],
+        }
+        with open(ns.out, "w") as fh:
+            json.dump(full, fh, indent=1)
+        data["out"] = str(ns.out)
+    if ns.plot:
+        from taut.viz.atlas import plot_atlas
+
+        plot_atlas(atlas, ws).savefig(ns.plot, dpi=110, bbox_inches="tight")
+        data["plot"] = str(ns.plot)
+
+    def human(d):
+        con = console()
+        con.print(f"[bold]{robot.name}[/]: {d['charts']} charts, {d['edges']} adjacent pairs, "
+                  f"reachable area {d['reachable_area']:.6g} m², {d['condition']} workspace {d['workspace_area']:.6g} m² "
+                  f"({len(d['pruned'])} charts pruned) in {d['time']:.2f} s")
+        for c in atlas.charts:
+            states = "; ".join(" ".join(f"{k + 1}{'+' if s > 0 else '-'}" for k, s in st) or "-" for st in c.states)
+            con.print(f"  chart {c.index + 1:3d}  area {c.area:10.6f}  wraps [{states}]")
+
+    emit(data, ns.json, human)
+    return 0
+
+
+def register(command) -> None:
+    c = command("atlas", "structure atlas and workspace of a planar point-mass VSCR", cmd_atlas)
+    c.description = HELP
+    c.formatter_class = argparse.RawDescriptionHelpFormatter
+    c.add_argument("--start", metavar="x,y", help="start point (default: the first reference pose)")
+    c.add_argument("--theta", metavar="T", help="platform orientation (0 for a point mass)")
+    c.add_argument("--condition", default="wrench-feasible", choices=("wrench-feasible", "wrench-closure", "static"),
+                   help="workspace condition (Alg. 5.2)")
+    c.add_argument("--out", metavar="FILE.json", help="write the charts and edges")
+    c.add_argument("--plot", metavar="FILE.png", help="atlas and workspace figure (Figs. 5.4, 5.9)")
