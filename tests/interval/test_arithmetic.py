@@ -79,3 +79,24 @@ def test_sqr_is_sharper_than_product_and_infinities_are_safe():
 def test_negative_power_is_rejected():
     with pytest.raises(ValueError):
         Interval(1.0, 2.0) ** -1
+
+
+@settings(max_examples=500, deadline=None)
+@given(st.floats(allow_nan=False, allow_infinity=False, width=64))
+def test_outward_steps_are_one_or_two_ulps(x):
+    from taut.interval.kernels import down, up
+
+    u, d = up(x), down(x)
+    with np.errstate(over="ignore"):  # nextafter(±max, ±inf) overflows to ±inf: still a valid bound check
+        assert np.nextafter(x, np.inf) <= u <= np.nextafter(np.nextafter(x, np.inf), np.inf)
+        assert np.nextafter(np.nextafter(x, -np.inf), -np.inf) <= d <= np.nextafter(x, -np.inf)
+
+
+def test_outward_steps_at_the_edges():
+    from taut.interval.kernels import down, up
+
+    tiny, big = 5e-324, np.finfo(float).max
+    for x in (0.0, -0.0, tiny, -tiny, 2.2250738585072014e-308, 1.0, -1.0, 2.0**-1022, big, -big):
+        assert up(x) > x and down(x) < x
+    assert up(np.inf) == np.inf and down(-np.inf) == -np.inf and up(-np.inf) == -np.inf
+    assert np.isnan(up(np.nan)) and np.isnan(down(np.nan))

@@ -1,12 +1,15 @@
 """HC4, interval Gauss, Krawczyk + inflation and branch-and-prune on small systems."""
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from taut.interval import (
-    branch_and_prune, certify, compile_system, contract, inflate, krawczyk, preconditioned_solve, variables,
+    branch_and_prune, certify, compile_system, const, contract, inflate, krawczyk, preconditioned_solve, variables,
 )
+from taut.interval.expression import compile_tape
+from taut.interval.linear import LinearFilter, float_inverse
 
 X, Y = variables(2)
 CIRCLES = compile_system(2, [X**2 + Y**2 - 1, (X - 1) ** 2 + Y**2 - 1])  # Example 1 of §3.2.1
@@ -59,3 +62,41 @@ def test_preconditioned_gauss_encloses_the_solution(a, x):
     assert out is not None
     lo, hi = out
     assert np.all(lo <= x + 1e-7) and np.all(x - 1e-7 <= hi)
+
+
+@pytest.mark.parametrize("passes", [1, 3])
+def test_compiled_and_python_loops_agree(passes):
+    """The Numba driver and the reference Python loop find the same certified solutions."""
+    ref = branch_and_prune(CIRCLES, [-3.0, -3.0], [3.0, 3.0], method="python")
+    fast = branch_and_prune(CIRCLES, [-3.0, -3.0], [3.0, 3.0], method="numba", passes=passes)
+    key = lambda r: sorted(tuple(np.round(c.x, 12)) for c in r.solutions)  # noqa: E731
+    assert key(fast) == key(ref) and not fast.undecided
+    assert fast.boxes > 0 and sum(fast.stats.values()) > 0
+    assert all(c.radius > 0 and c.width < 1e-6 for c in fast.solutions)
+
+
+def test_compiled_loop_with_a_linear_filter_matches_the_python_filter():
+    """x² + y² = 1 with a tension-like unknown t: (1 + x²) t = 2 (the LinearFilter bounds t)."""
+    x, y, t = variables(3)
+    sys = compile_system(3, [x**2 + y**2 - 1, x - y, (1 + x**2) * t - 2])
+    filt = LinearFilter(compile_tape([1 + x**2, const(2.0)], [(-np.inf, np.inf)] * 2), 1)
+    lo, hi = np.array([-2.0, -2.0, 0.0]), np.array([2.0, 2.0, np.inf])
+    primary = np.array([True, True, False])
+    res = {m: branch_and_prune(sys, lo, hi, primary=primary, filters=(filt,), method=m, certify_width=1.0)
+           for m in ("python", "numba")}
+    for r in res.values():
+        xs = sorted(tuple(np.round(c.x, 10)) for c in r.solutions)
+        s = np.sqrt(0.5)
+        assert xs == [(-round(s, 10), -round(s, 10), round(2 / 1.5, 10)), (round(s, 10), round(s, 10), round(2 / 1.5, 10))]
+        assert not r.undecided
+    b_lo, b_hi = np.array([0.5, 0.5, 0.0]), np.array([0.75, 0.75, np.inf])
+    assert filt(b_lo, b_hi) and 2 / (1 + 0.75**2) * (1 - 1e-12) <= b_lo[2] and b_hi[2] <= 2 / 1.25 * (1 + 1e-12)
+    with pytest.raises(ValueError):
+        branch_and_prune(sys, lo, hi, filters=(lambda lo, hi: True,), method="numba")
+
+
+def test_float_inverse_flags_singular_matrices():
+    ok, inv = float_inverse(np.array([[2.0, 1.0], [1.0, 3.0]]))
+    assert ok and np.allclose(inv @ np.array([[2.0, 1.0], [1.0, 3.0]]), np.eye(2))
+    assert not float_inverse(np.array([[1.0, 2.0], [2.0, 4.0]]))[0]
+    assert not float_inverse(np.array([[np.inf, 0.0], [0.0, 1.0]]))[0]

@@ -35,8 +35,7 @@ import numpy as np
 
 from taut.geometry.rotation import angles_from_matrix
 from taut.interval.expression import Expr, System, Tape, compile_system, compile_tape, const, variables
-from taut.interval.hc4 import evaluate
-from taut.interval.linear import preconditioned_solve
+from taut.interval.linear import LinearFilter
 from taut.model.robot import Robot
 
 #: Three body points whose triangle has a smaller area ratio than this are collinear.
@@ -61,28 +60,12 @@ def _cross(u, v):
     return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
 
 
-@dataclass(frozen=True)
-class StaticsFilter:
+class StaticsFilter(LinearFilter):
     """The tension filter of §3.1.3 (Eqs. 3.9–3.12): over a box, the equilibrium
     ``J(X) t = −w(X)`` is an interval linear system in the tensions alone; its
     preconditioned interval-Gauss enclosure (generalised inverse of Eq. 3.12) bounds
-    ``t`` however wide the tension domain is, and proves boxes without equilibrium empty."""
-
-    tape: Tape  #: 6·m entries of J (row-major), then the 6 entries of the right-hand side
-    m: int
-
-    def __call__(self, lo: np.ndarray, hi: np.ndarray) -> bool:
-        vl, vh = evaluate(self.tape, lo, hi)
-        k = 6 * self.m
-        Jl, Jh = vl[:k].reshape(6, self.m), vh[:k].reshape(6, self.m)
-        sol = preconditioned_solve(Jl, Jh, vl[k:], vh[k:])
-        if sol is None:
-            return True
-        tl, th = sol
-        t0 = lo.size - self.m
-        lo[t0:] = np.maximum(lo[t0:], tl)
-        hi[t0:] = np.minimum(hi[t0:], th)
-        return bool(np.all(lo[t0:] <= hi[t0:]))
+    ``t`` however wide the tension domain is, and proves boxes without equilibrium empty.
+    ``tape``: 6·m entries of J (row-major), then the 6 entries of the right-hand side."""
 
 
 @dataclass(frozen=True)

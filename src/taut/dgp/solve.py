@@ -86,7 +86,8 @@ def _solve_subset(job) -> tuple[list[DGPSolution], int, int]:
                                    s["stable"], 0.0, 0.0, s["continuum"]))
         return out, 0, 0
     sp = build_subproblem(robot, lengths, taut)
-    res = branch_and_prune(sp.system, sp.lo, sp.hi, primary=sp.primary, eps=eps, filters=(sp.statics,), certify_width=1.0)
+    res = branch_and_prune(sp.system, sp.lo, sp.hi, primary=sp.primary, eps=eps, filters=(sp.statics,),
+                           certify_width=1.0, passes=4)
     idx = list(taut)
     for c in res.solutions:
         p, ang, R = sp.pose(c.x, robot.orientation)

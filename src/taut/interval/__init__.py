@@ -7,10 +7,10 @@ from taut.interval.branch_prune import BranchAndPruneResult, branch_and_prune
 from taut.interval.expression import System, compile_system, const, derivative, sqrt, variables
 from taut.interval.hc4 import contract, evaluate, evaluate_point
 from taut.interval.krawczyk import Certificate, certify, inflate, krawczyk, newton
-from taut.interval.linear import interval_gauss, preconditioned_solve
+from taut.interval.linear import LinearFilter, interval_gauss, preconditioned_solve
 
 __all__ = [
-    "BranchAndPruneResult", "Certificate", "Interval", "System", "branch_and_prune", "centred_form",
+    "BranchAndPruneResult", "Certificate", "Interval", "LinearFilter", "System", "branch_and_prune", "centred_form",
     "certify", "compile_system", "const", "contract", "derivative", "evaluate", "evaluate_point",
     "inflate", "interval_gauss", "krawczyk", "newton", "preconditioned_solve", "sqrt", "variables",
 ]

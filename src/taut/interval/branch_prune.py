@@ -15,6 +15,10 @@ Each box popped from the list is
 
 Boxes narrower than ``eps`` in every variable that could not be certified are returned as
 ``undecided`` (singular or nearly-coincident solutions): nothing is silently dropped.
+
+The loop runs in a Numba kernel (:func:`_drive`, a depth-first stack of boxes) when the
+filters are :class:`~taut.interval.linear.LinearFilter` s; it hands a box back to Python
+only to certify a solution (Newton, Krawczyk, inflation: a handful of calls per solution).
 """
 
 from __future__ import annotations
@@ -23,9 +27,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from numba import njit
+
 from taut.interval.expression import System
-from taut.interval.hc4 import contract, evaluate
-from taut.interval.krawczyk import Certificate, certify, krawczyk
+from taut.interval.hc4 import _forward, contract, contract_kernel, evaluate, evaluate_kernel
+from taut.interval.krawczyk import Certificate, _krawczyk, certify, krawczyk
+from taut.interval.linear import LinearFilter, float_inverse, linear_filter_kernel
 
 
 @dataclass
@@ -33,6 +40,7 @@ class BranchAndPruneResult:
     solutions: list[Certificate] = field(default_factory=list)
     undecided: list[tuple[np.ndarray, np.ndarray]] = field(default_factory=list)
     boxes: int = 0  #: boxes processed
+    stats: dict = field(default_factory=dict)  #: boxes discarded by each operator (compiled loop only)
 
 
 def _bisect_index(width: np.ndarray, primary: np.ndarray, eps: float) -> int:
@@ -65,6 +73,10 @@ def branch_and_prune(
     newton_width: float = 1e-3,
     max_boxes: int = 2_000_000,
     filters=(),
+    method: str = "auto",
+    passes: int = 1,
+    gain: float = 0.2,
+    ratio: float = 0.05,
 ) -> BranchAndPruneResult:
     """All solutions of ``system`` in the box ``[lo, hi]`` (see module docstring).
 
@@ -74,7 +86,27 @@ def branch_and_prune(
     ``newton_width``;
     ``filters`` are extra contractors ``f(lo, hi) -> bool`` (in place, False = empty)
     applied after HC4.
+
+    ``method="numba"`` runs the box loop in a compiled kernel (:func:`_drive`) and returns
+    to Python only to certify a solution; it needs every filter to be a
+    :class:`~taut.interval.linear.LinearFilter`.  ``"python"`` is the reference loop (any
+    filter); ``"auto"`` picks ``"numba"`` when it can.  With ``passes=1`` both run the same
+    algorithm (box counts may differ by a few: the preconditioners are inverted by
+    different float routines).  With ``passes > 1`` the compiled loop repeats
+    HC4 → filter → HC4 → Krawczyk narrowing on a box while Krawczyk shrinks its widest
+    primary variable by more than the fraction ``gain`` (a fixpoint of the contractors
+    before bisecting); ``ratio`` is the HC4 stopping threshold of
+    :func:`taut.interval.hc4.contract` in the compiled loop.  The result's ``stats`` count
+    the boxes each operator discarded (compiled loop only).
     """
+    kernel_ok = all(isinstance(f, LinearFilter) for f in filters) and len(filters) <= 1
+    if method not in ("auto", "numba", "python"):
+        raise ValueError(f"method must be 'auto', 'numba' or 'python', got {method!r}")
+    if method == "numba" and not kernel_ok:
+        raise ValueError("method='numba' takes at most one filter, a LinearFilter")
+    if method != "python" and kernel_ok:
+        return _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters,
+                                       passes, gain, ratio)
     lo0, hi0 = np.array(lo, float), np.array(hi, float)
     primary = np.ones(lo0.size, bool) if primary is None else np.asarray(primary, bool)
     out = BranchAndPruneResult()
@@ -120,6 +152,244 @@ def branch_and_prune(
         a, b = _split(lo, hi, _bisect_index(width, primary, eps))
         stack.append(b)
         stack.append(a)
+    return out
+
+
+# Return codes of :func:`_drive`.
+_DONE, _CERTIFY, _UNDECIDED, _MAX_BOXES, _STACK_FULL = range(5)
+
+
+@njit(cache=True, fastmath=False)
+def _krawczyk_box(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, lo, hi):
+    """Numba twin of :func:`taut.interval.krawczyk.krawczyk`: ``(status, lo, hi)`` with
+    status 0 unknown, 1 unique, 2 empty."""
+    n = lo.size
+    nj = jstart.size
+    vl, vh = np.empty(nj), np.empty(nj)
+    evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, vl, vh)
+    Jl, Jh, Jm = np.zeros((h, n)), np.zeros((h, n)), np.zeros((h, n))
+    for k in range(nj):
+        Jl[rows[k], cols[k]], Jh[rows[k], cols[k]] = vl[k], vh[k]
+    for i in range(h):
+        for j in range(n):
+            Jm[i, j] = 0.5 * Jl[i, j] + 0.5 * Jh[i, j]
+    ok, C = float_inverse(Jm)
+    if not ok:
+        return 0, lo, hi
+    y = 0.5 * lo + 0.5 * hi
+    nodes = np.empty(op.size)
+    nodeh = np.empty(op.size)
+    fl, fh = np.empty(h), np.empty(h)
+    for c in range(h):
+        _forward(op, a, b, clo, chi, start[c], end[c], y, y, nodes, nodeh)
+        fl[c], fh[c] = nodes[end[c] - 1], nodeh[end[c] - 1]
+    kl, kh = _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)
+    nl, nh = np.maximum(kl, lo), np.minimum(kh, hi)
+    inner = True
+    for i in range(n):
+        if nl[i] > nh[i]:
+            return 2, nl, nh
+        if not (kl[i] > lo[i] and kh[i] < hi[i]):
+            inner = False
+    if inner:
+        return 1, kl, kh
+    return 0, nl, nh
+
+
+@njit(cache=True, fastmath=False)
+def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
+           jop, ja, jb, jclo, jchi, jstart, jend, rows, cols,
+           fop, fa, fb, fclo, fchi, fstart, fend, fm,
+           stk_lo, stk_hi, sp, sol_x, sol_r, nsol, lo0, hi0, primary,
+           eps, certify_width, newton_width, max_boxes, boxes, out, passes, gain, ratio, stats):
+    """The loop of :func:`branch_and_prune` on the stack ``stk_lo[:sp], stk_hi[:sp]``
+    until a box needs Python (a certification, an undecided box, the box budget, a full
+    stack).  Returns ``(code, sp, boxes, unique)``; ``out`` rows hold the box, the
+    Krawczyk box and the Krawczyk result (code ``_CERTIFY``)."""
+    n = lo0.size
+    cap = stk_lo.shape[0]
+    while sp > 0:
+        sp -= 1
+        lo = stk_lo[sp].copy()
+        hi = stk_hi[sp].copy()
+        boxes += 1
+        if boxes > max_boxes:
+            return _MAX_BOXES, sp + 1, boxes, False
+        dead = False
+        cert = False
+        unique = False
+        klo, khi, rl, rh = lo, hi, lo, hi
+        for it in range(passes):
+            if not contract_kernel(op, a, b, clo, chi, start, end, blo, bhi, lo, hi, ratio, 50):
+                stats[0] += 1
+                dead = True
+                break
+            if fm > 0:
+                if not linear_filter_kernel(fop, fa, fb, fclo, fchi, fstart, fend, fm, lo, hi):
+                    stats[1] += 1
+                    dead = True
+                    break
+                # the tensions just bounded feed the equilibrium equations back to the pose
+                if passes > 1 and not contract_kernel(op, a, b, clo, chi, start, end, blo, bhi, lo, hi, ratio, 50):
+                    stats[2] += 1
+                    dead = True
+                    break
+            for s in range(nsol):
+                inside = True
+                for i in range(n):
+                    if not (lo[i] >= sol_x[s, i] - sol_r[s] and hi[i] <= sol_x[s, i] + sol_r[s]):
+                        inside = False
+                        break
+                if inside:
+                    stats[3] += 1
+                    dead = True
+                    break
+            if dead:
+                break
+            width = hi - lo
+            wp = 0.0
+            finite = True
+            for i in range(n):
+                if not np.isfinite(width[i]):
+                    finite = False
+                if primary[i] and width[i] > wp:
+                    wp = width[i]
+            if not (wp < certify_width and finite):
+                break
+            klo, khi = np.empty(n), np.empty(n)
+            for i in range(n):
+                pad = max(1e-3 * width[i], 1e-10 * (1.0 + abs(lo[i]) + abs(hi[i])))
+                klo[i] = max(lo[i] - pad, lo0[i])
+                khi[i] = min(hi[i] + pad, hi0[i])
+            status, rl, rh = _krawczyk_box(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend,
+                                           rows, cols, klo, khi)
+            stats[6] += 1
+            if status == 2:
+                stats[4] += 1
+                dead = True
+                break
+            if status == 1 or np.max(width) < newton_width:
+                cert, unique = True, status == 1
+                break
+            wp2 = 0.0
+            for i in range(n):
+                lo[i] = max(lo[i], rl[i])
+                hi[i] = min(hi[i], rh[i])
+                if lo[i] > hi[i]:
+                    dead = True
+                if primary[i]:
+                    wp2 = max(wp2, hi[i] - lo[i])
+            width = hi - lo
+            if dead or wp2 > (1.0 - gain) * wp:  # Krawczyk narrowed little: bisect
+                break
+        if dead:
+            continue
+        if cert:
+            out[0], out[1], out[2], out[3], out[4], out[5] = lo, hi, klo, khi, rl, rh
+            return _CERTIFY, sp, boxes, unique
+        if np.max(width) < eps:
+            out[0], out[1] = lo, hi
+            return _UNDECIDED, sp, boxes, False
+        if sp + 2 > cap:
+            stk_lo[sp], stk_hi[sp] = lo, hi
+            return _STACK_FULL, sp + 1, boxes - 1, False
+        # bisection rule of §3.1.4 (as _bisect_index / _split)
+        j = -1
+        best = -1.0
+        for i in range(n):
+            if primary[i] and width[i] > best:
+                best, j = width[i], i
+        if best < eps:
+            j = int(np.argmax(width))
+        m = 0.5 * lo[j] + 0.5 * hi[j]
+        if not np.isfinite(m):
+            if np.isfinite(lo[j]):
+                m = max(2.0 * lo[j], 1.0)
+            elif np.isfinite(hi[j]):
+                m = min(2.0 * hi[j], -1.0)
+            else:
+                m = 0.0
+        stats[5] += 1
+        stk_lo[sp], stk_hi[sp] = lo, hi
+        stk_lo[sp, j] = m
+        stk_lo[sp + 1], stk_hi[sp + 1] = lo, hi
+        stk_hi[sp + 1, j] = m
+        sp += 2
+    return _DONE, sp, boxes, False
+
+
+def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters, passes, gain, ratio):
+    lo0, hi0 = np.array(lo, float), np.array(hi, float)
+    n = lo0.size
+    primary = np.ones(n, bool) if primary is None else np.asarray(primary, bool)
+    out = BranchAndPruneResult()
+    t, jt = system.tape, system.jacobian
+    if filters:
+        f = filters[0]
+        ftape, fm = f.tape.arrays[:7], f.m
+    else:
+        ftape, fm = jt.arrays[:7], 0
+    cap = 4096
+    stk_lo, stk_hi = np.empty((cap, n)), np.empty((cap, n))
+    stk_lo[0], stk_hi[0] = lo0, hi0
+    sp, boxes = 1, 0
+    sol_x, sol_r = np.zeros((0, n)), np.zeros(0)
+    buf = np.empty((6, n))
+    stats = np.zeros(8, np.int64)
+
+    def push(blo, bhi):
+        nonlocal sp, stk_lo, stk_hi
+        if sp >= stk_lo.shape[0]:
+            stk_lo = np.concatenate([stk_lo, np.empty_like(stk_lo)])
+            stk_hi = np.concatenate([stk_hi, np.empty_like(stk_hi)])
+        stk_lo[sp], stk_hi[sp] = blo, bhi
+        sp += 1
+
+    while True:
+        code, sp, boxes, unique = _drive(
+            *t.arrays, system.n_equations, *jt.arrays[:7], system.rows, system.cols, *ftape, fm,
+            stk_lo, stk_hi, sp, sol_x, sol_r, len(out.solutions), lo0, hi0, primary,
+            float(eps), float(certify_width), float(newton_width), int(max_boxes), boxes, buf, int(passes), float(gain), float(ratio), stats,
+        )
+        if code == _DONE:
+            break
+        if code == _MAX_BOXES:
+            out.undecided.extend((stk_lo[i].copy(), stk_hi[i].copy()) for i in range(sp))
+            break
+        if code == _STACK_FULL:
+            stk_lo = np.concatenate([stk_lo, np.empty_like(stk_lo)])
+            stk_hi = np.concatenate([stk_hi, np.empty_like(stk_hi)])
+            continue
+        blo, bhi = buf[0].copy(), buf[1].copy()
+        if code == _UNDECIDED:
+            out.undecided.append((blo, bhi))
+            continue
+        # _CERTIFY: the Python tail of the evaluation operator, as in the reference loop
+        klo, khi, rl, rh = buf[2].copy(), buf[3].copy(), buf[4].copy(), buf[5].copy()
+        cert = certify(system, 0.5 * rl + 0.5 * rh)
+        if cert is not None and np.all(cert.x >= klo) and np.all(cert.x <= khi):
+            if _admissible(system, cert, lo0, hi0) and not any(
+                np.all(np.abs(cert.x - c.x) <= max(c.radius, 1e-9)) for c in out.solutions
+            ):
+                out.solutions.append(cert)
+                sol_x = np.array([c.x for c in out.solutions])
+                sol_r = np.array([c.radius for c in out.solutions])
+            if unique:
+                continue
+            if np.all(blo >= cert.x - cert.radius) and np.all(bhi <= cert.x + cert.radius):
+                continue
+        blo, bhi = np.maximum(blo, rl), np.minimum(bhi, rh)
+        if np.any(blo > bhi):
+            continue
+        width = bhi - blo
+        if np.max(width) < eps:
+            out.undecided.append((blo, bhi))
+            continue
+        (alo, ahi), (b2lo, b2hi) = _split(blo, bhi, _bisect_index(width, primary, eps))
+        push(b2lo, b2hi)
+        push(alo, ahi)
+    out.boxes = boxes
+    out.stats = dict(zip(('hc4', 'statics', 'hc4_after_statics', 'covered', 'krawczyk_empty', 'bisections', 'krawczyk'), stats.tolist()))
     return out
 
 

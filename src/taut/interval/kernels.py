@@ -1,9 +1,13 @@
 """Scalar interval kernels with outward rounding (``001_eb92e2f6589fc229.txt`` §1.3.1).
 
 An interval is a pair ``(lo, hi)`` of floats.  Every operation computes its endpoints in
-round-to-nearest and moves each one a single ulp outwards with ``np.nextafter``: IEEE 754
-``+ − × ÷ √`` are correctly rounded (error ≤ ½ ulp), so the moved endpoint is a proven
-bound of the exact result.  Infinite endpoints are allowed (``0 × ∞`` is taken as ``0``,
+round-to-nearest and moves each one outwards by at least one ulp: IEEE 754 ``+ − × ÷ √``
+are correctly rounded (error ≤ ½ ulp), so the moved endpoint is a proven bound of the
+exact result.  The move is the branch-free successor/predecessor of Rump, Zimmermann,
+Boldo & Melquiond ("Computing predecessor and successor in rounding to nearest", BIT 49,
+2009, Algorithm 2): ``x + (φ|x| + η)`` with ``φ = u(1 + 2u)``, ``u = 2⁻⁵³`` and ``η`` the
+smallest subnormal is at least ``succ(x)`` (and at most ``succ(succ(x))``) in
+round-to-nearest — two flops instead of a ``nextafter`` call.  Infinite endpoints are allowed (``0 × ∞`` is taken as ``0``,
 the usual convention for endpoint products), an empty interval has ``lo > hi`` (or NaN).
 
 The kernels are Numba functions (``cache=True``, ``fastmath=False``: fast-math would let
@@ -18,17 +22,25 @@ import numpy as np
 from numba import njit
 
 INF = np.inf
+_PHI = 2.0**-53 * (1.0 + 2.0**-52)  #: u(1 + 2u), u = 2⁻⁵³ (Rump et al. 2009)
+_ETA = 5e-324  #: smallest positive subnormal, 2⁻¹⁰⁷⁴
 
 
 @njit(cache=True, fastmath=False, inline="always")
 def down(x):
-    """Largest float below ``x`` (a lower bound of any real within ½ ulp of ``x``)."""
-    return np.nextafter(x, -INF)
+    """A float ``≤ pred(x)`` (a lower bound of any real within ½ ulp of ``x``); ``±∞`` and
+    NaN are returned unchanged."""
+    if abs(x) == INF:
+        return x
+    return x - (_PHI * abs(x) + _ETA)
 
 
 @njit(cache=True, fastmath=False, inline="always")
 def up(x):
-    return np.nextafter(x, INF)
+    """A float ``≥ succ(x)``."""
+    if abs(x) == INF:
+        return x
+    return x + (_PHI * abs(x) + _ETA)
 
 
 @njit(cache=True, fastmath=False)

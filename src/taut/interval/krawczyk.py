@@ -74,7 +74,13 @@ def _precondition(C, Jl, Jh):
         for j in range(n):
             sl, sh = 0.0, 0.0
             for k in range(C.shape[1]):
-                pl, ph = K.mul(C[i, k], C[i, k], Jl[k, j], Jh[k, j])
+                c, jl, jh = C[i, k], Jl[k, j], Jh[k, j]
+                if c == 0.0 or (jl == 0.0 and jh == 0.0):
+                    continue
+                if c > 0.0:  # point × interval: two rounded products instead of eight
+                    pl, ph = K._prod_down(c, jl), K._prod_up(c, jh)
+                else:
+                    pl, ph = K._prod_down(c, jh), K._prod_up(c, jl)
                 sl, sh = K.add(sl, sh, pl, ph)
             Sl[i, j], Sh[i, j] = sl, sh
     return Sl, Sh

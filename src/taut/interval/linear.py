@@ -17,6 +17,7 @@ import numpy as np
 from numba import njit
 
 from taut.interval import kernels as K
+from taut.interval.hc4 import evaluate_kernel
 from taut.interval.krawczyk import _precondition
 
 
@@ -75,3 +76,128 @@ def preconditioned_solve(Al, Ah, bl, bh, K_=None):
     Cl, Ch = _precondition(K_, Al, Ah)
     rl, rh = _precondition(K_, bl[:, None], bh[:, None])
     return interval_gauss(Cl, Ch, rl[:, 0], rh[:, 0])
+
+
+@njit(cache=True, fastmath=False)
+def float_inverse(A):
+    """``(ok, A⁻¹)`` by Gauss–Jordan with partial pivoting, in plain floating point.
+
+    Only used for preconditioners (any float matrix gives a sound enclosure), so no
+    rounding control; ``ok`` is False for a (numerically) singular or non-finite ``A``."""
+    n = A.shape[0]
+    M = A.copy()
+    inv = np.eye(n)
+    scale = 0.0
+    for i in range(n):
+        for j in range(n):
+            scale = max(scale, abs(M[i, j]))
+    if not (scale > 0.0 and scale < np.inf):
+        return False, inv
+    for k in range(n):
+        p = k
+        for i in range(k + 1, n):
+            if abs(M[i, k]) > abs(M[p, k]):
+                p = i
+        if not abs(M[p, k]) > 1e-14 * scale:
+            return False, inv
+        if p != k:
+            for j in range(n):
+                M[k, j], M[p, j] = M[p, j], M[k, j]
+                inv[k, j], inv[p, j] = inv[p, j], inv[k, j]
+        d = M[k, k]
+        for j in range(n):
+            M[k, j] /= d
+            inv[k, j] /= d
+        for i in range(n):
+            if i != k and M[i, k] != 0.0:
+                f = M[i, k]
+                for j in range(n):
+                    M[i, j] -= f * M[k, j]
+                    inv[i, j] -= f * inv[k, j]
+    for i in range(n):
+        for j in range(n):
+            if not np.isfinite(inv[i, j]):
+                return False, inv
+    return True, inv
+
+
+@njit(cache=True, fastmath=False)
+def _generalised_inverse(J):
+    """Numba twin of :func:`generalised_inverse`."""
+    r, m = J.shape
+    if r == m:
+        return float_inverse(J)
+    half = r // 2
+    W = np.empty_like(J)
+    W[:half] = J[half:]
+    W[half:] = J[:half]
+    A = np.zeros((m, m))
+    for i in range(m):
+        for j in range(m):
+            for k in range(r):
+                A[i, j] += W[k, i] * J[k, j]
+    ok, Ainv = float_inverse(A)
+    Kp = np.zeros((m, r))
+    for i in range(m):
+        for j in range(r):
+            for k in range(m):
+                Kp[i, j] += Ainv[i, k] * W[j, k]
+    return ok, Kp
+
+
+@njit(cache=True, fastmath=False)
+def linear_filter_kernel(op, a, b, clo, chi, start, end, m, lo, hi):
+    """Contract the last ``m`` variables of the box with the interval linear system
+    ``[A](X) t = [b](X)`` whose ``r·m`` matrix entries (row-major) and ``r`` right-hand
+    sides are the constraints of the tape; False when the box is proven empty."""
+    nc = start.size
+    vl, vh = np.empty(nc), np.empty(nc)
+    evaluate_kernel(op, a, b, clo, chi, start, end, lo, hi, vl, vh)
+    r = nc // (m + 1)
+    k = r * m
+    Al, Ah = np.empty((r, m)), np.empty((r, m))
+    Am = np.empty((r, m))
+    for i in range(r):
+        for j in range(m):
+            Al[i, j], Ah[i, j] = vl[i * m + j], vh[i * m + j]
+            Am[i, j] = 0.5 * Al[i, j] + 0.5 * Ah[i, j]
+            if not np.isfinite(Am[i, j]):
+                return True
+    ok, Kp = _generalised_inverse(Am)
+    if not ok:
+        return True
+    for i in range(Kp.shape[0]):
+        for j in range(Kp.shape[1]):
+            if not np.isfinite(Kp[i, j]):
+                return True
+    Cl, Ch = _precondition(Kp, Al, Ah)
+    bl, bh = np.empty((r, 1)), np.empty((r, 1))
+    for i in range(r):
+        bl[i, 0], bh[i, 0] = vl[k + i], vh[k + i]
+    rl, rh = _precondition(Kp, bl, bh)
+    ok, tl, th = _gauss(Cl, Ch, rl[:, 0].copy(), rh[:, 0].copy())
+    if not ok:
+        return True
+    t0 = lo.size - m
+    for j in range(m):
+        if tl[j] > lo[t0 + j]:
+            lo[t0 + j] = tl[j]
+        if th[j] < hi[t0 + j]:
+            hi[t0 + j] = th[j]
+        if not lo[t0 + j] <= hi[t0 + j]:
+            return False
+    return True
+
+
+class LinearFilter:
+    """A filter ``f(lo, hi) -> bool`` for :func:`taut.interval.branch_and_prune`: the last
+    ``m`` variables solve the interval linear system compiled in ``tape`` (``r·m`` matrix
+    entries row-major, then the ``r`` right-hand sides), enclosed by
+    :func:`preconditioned_solve`.  The branch-and-prune kernel runs it without Python."""
+
+    def __init__(self, tape, m: int):
+        self.tape, self.m = tape, int(m)
+
+    def __call__(self, lo: np.ndarray, hi: np.ndarray) -> bool:
+        op, a, b, clo, chi, start, end, _, _ = self.tape.arrays
+        return bool(linear_filter_kernel(op, a, b, clo, chi, start, end, self.m, lo, hi))
