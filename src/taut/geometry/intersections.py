@@ -91,13 +91,17 @@ def segment_enters_polygon(a, b, vertices, tol: float = TOL):
 
     §4.2.1 checks the segment against each edge of the bounding polygon (A.1); a segment
     wholly inside crosses no edge, so its midpoint is tested too.  Touching an edge or a
-    vertex (within ``tol``) is not entering."""
+    vertex (within ``tol``) is not entering, and neither is running along an edge (a cable
+    wrapped round one corner of a polygon obstacle onto the next): the midpoint of such a
+    segment lies on the boundary, which the even–odd test may count as inside."""
     a = np.asarray(a, float)
     b = np.asarray(b, float)
     v = np.asarray(vertices, float)
     w = np.roll(v, -1, axis=0)
     hit = segments_intersect(a[..., None, :], b[..., None, :], v, w, tol=tol, collinear=False).any(axis=-1)
-    return hit | point_in_polygon(0.5 * (a + b), v)
+    mid = 0.5 * (a + b)
+    on_boundary = (segment_circle_distance(v, w, mid[..., None, :]) <= max(tol, 0.0)).any(axis=-1)
+    return hit | (point_in_polygon(mid, v) & ~on_boundary)
 
 
 def circles_overlap(c1, r1, c2, r2, tol: float = TOL):

@@ -19,7 +19,18 @@ step is too large to jump over a collision:
 ``h`` is linear in ``τ``, so each event time is one division.  Events are handled in time
 order and the search restarts from each (several transitions in one step); separations are
 strict (``h < 0``) and collisions inclusive (``h ≥ 0``), the same function for a node and
-the child it came from, so a wrap and its unwrap can never fire at the same instant.  The
+the child it came from, so a wrap and its unwrap can never fire at the same instant.
+
+A zero-radius object (a polygon corner, or a point) has one line for both wrap directions,
+so the sibling of an unwrapped node on the same point — and any other point on that line —
+has ``h_sibling = −h = 0`` at the unwrap instant and rising: the inclusive collision test
+alone would re-wrap the point the other way at the same instant (which one of the two
+happened was decided by round-off).  Physically the cable has just straightened over the
+point and moves off it; a collision needs the straight cable to have been on the other
+side of the point *in this state*, which it never was.  So right after an unwrap, zero-radius
+children whose line the cable lies on (``h_child = 0`` within round-off) do not collide at
+that instant (and, ``h_child`` rising, not later in the step either).  A circle of positive
+radius that touches the straightened cable does collide: the cable swings into it.  The
 kernel (Numba) stops when it reaches a node that the lazily expanded tree has not expanded
 yet; :func:`track` expands it and resumes.
 
@@ -86,12 +97,18 @@ def _track(F, I, circles, P, node, j0, t0, nodes, lengths, dirs, ev_j, ev_t, ev_
                         qx, qy = ax + tau * (bx - ax) - ex, ay + tau * (by - ay) - ey
                         if qx * ux + qy * uy >= 0.0:
                             best, kind, target = tau, 2, p
+                # entered at this very instant by an unwrap: the cable has just straightened
+                # over the object it left and now only moves off the line it lies on
+                fresh = n_ev > 0 and ev_kind[n_ev - 1] == 2 and ev_j[n_ev - 1] == j and ev_t[n_ev - 1] == t
                 f0, nc = I[node, 2], I[node, 3]
                 for c in range(f0, f0 + nc):  # collisions with the children
                     d, ux, uy, ex, ey = F[c, 9], F[c, 4], F[c, 5], F[c, 2], F[c, 3]
                     ga = d * (ux * (ay - ey) - uy * (ax - ex))
                     gb = d * (ux * (by - ey) - uy * (bx - ex))
-                    if gb >= 0.0 and ga + t * (gb - ga) <= 0.0 and gb != ga:
+                    gt = ga + t * (gb - ga)
+                    if fresh and circles[I[c, 1], 2] == 0.0 and gt >= -TIE * (abs(ga) + abs(gb)):
+                        continue  # a point on the straightened cable: no collision (see above)
+                    if gb >= 0.0 and gt <= 0.0 and gb != ga:
                         tau = max(t, ga / (ga - gb))
                         if tau > 1.0:
                             tau = 1.0
