@@ -97,7 +97,7 @@ def test_bad_input():
     with pytest.raises(PoseError):
         build_atlas(robot, [0.6096, -0.4064])  # the centre of idler 1
     with pytest.raises(TautError):
-        build_atlas(example("planar-4cable"), [0.5, 0.5])
+        build_atlas(example("spatial-8cable"), [0.5, 0.5])
     atlas = build_atlas(example("vscr-agriculture"), [0.0, 0.991])
     with pytest.raises(TautError):
         atlas_workspace(atlas, "interference-free")

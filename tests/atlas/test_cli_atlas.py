@@ -26,7 +26,22 @@ def test_atlas_bad_input(capsys):
     assert "outside the installation space" in capsys.readouterr().err
     assert main(["atlas", "vscr-t-shaped", "--start", "1"]) == 2
     assert main(["atlas", "vscr-t-shaped", "--theta", "0.3"]) == 2
-    assert main(["atlas", "planar-4cable"]) == 2
+    assert main(["atlas", "spatial-8cable"]) == 2
+    assert main(["atlas", "vscr-rigid-t-shaped", "--theta", "x"]) == 2
     with pytest.raises(SystemExit) as exc:
         main(["atlas", "vscr-t-shaped", "--condition", "nope"])
     assert exc.value.code == 2
+
+
+def test_atlas_rigid_page(capsys):
+    """A rigid platform: one atlas page per orientation (§5.2)."""
+    assert main(["atlas", "vscr-rigid-t-shaped", "--json"]) == 0
+    d0 = json.loads(capsys.readouterr().out)
+    assert main(["atlas", "vscr-rigid-t-shaped", "--theta", "15deg", "--condition", "wrench-closure", "--json"]) == 0
+    d1 = json.loads(capsys.readouterr().out)
+    assert d0["theta"] == 0.0 and abs(d1["theta"] - 0.2617993877991494) < 1e-12
+    assert d0["charts"] >= 10 and d1["charts"] >= 10
+    # the platform must stay in the T, off the idlers and its cables: less than the point mass's 0.9
+    assert 0.5 < d1["reachable_area"] < d0["reachable_area"] < 0.8
+    assert main(["atlas", "vscr-rigid-t-shaped", "--theta", "0.1"]) == 0
+    assert "page θ = 0.1 rad" in capsys.readouterr().out

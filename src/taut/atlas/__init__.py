@@ -1,13 +1,15 @@
-"""Structure atlas of planar point-mass variable-structure CDPRs (Ch. 5 of ``000_3d5147f1d4639546.txt``):
+"""Structure atlas of planar variable-structure CDPRs (Ch. 5 of ``000_3d5147f1d4639546.txt``):
 cable-reachable areas (§5.1.2), charts (§5.1.1), the atlas (§5.1.3, Alg. 5.1), its workspace
-(§5.3.1, Alg. 5.2) and inverse kinematics (§5.3.2, Algs. 5.3–5.4)."""
+(§5.3.1, Alg. 5.2) and inverse kinematics (§5.3.2, Algs. 5.3–5.4); for rigid platforms the
+platform-reachable area (§5.2.1) and one atlas page per orientation (§5.2.2)."""
 
 from taut.atlas.atlas import Edge, StructureAtlas, build_atlas
 from taut.atlas.chart import Chart, chart_lengths, structure_reachable_area
 from taut.atlas.ik import AtlasIK, direct_ik, iterative_ik, iterative_step, locate
+from taut.atlas.platform import platform_outline, platform_reachable_area
 from taut.atlas.reachable import cable_reachable_area
 from taut.atlas.workspace import AtlasWorkspace, atlas_workspace
 
 __all__ = ["AtlasIK", "AtlasWorkspace", "Chart", "Edge", "StructureAtlas", "atlas_workspace", "build_atlas",
            "cable_reachable_area", "chart_lengths", "direct_ik", "iterative_ik", "iterative_step", "locate",
-           "structure_reachable_area"]
+           "platform_outline", "platform_reachable_area", "structure_reachable_area"]

@@ -21,6 +21,13 @@ structure whose SRA has two components reachable from the start gives two charts
 
 A robot without an installation space is bounded by the box around its exits, objects
 and start point, grown by half its size.
+
+*Rigid platforms* (§5.2.2): the atlas is one *page* — a slice of constant orientation
+``θ``.  Charts live in the plane of the reference point ``p``; cable ``i`` is attached at
+``p + R(θ) r_i``, so its cable-reachable area and its transition rays are shifted by
+``−R(θ) r_i``, and the structure-reachable area is cut down to the platform-reachable
+area (Eq. 5.15, :mod:`taut.atlas.platform`).  A point-mass platform is the page ``θ = 0``
+with zero offsets.
 """
 
 from __future__ import annotations
@@ -32,6 +39,7 @@ import shapely
 from shapely.geometry import LineString, Polygon
 
 from taut.atlas.chart import Chart, chart_lengths, component_containing, structure_reachable_area
+from taut.atlas.platform import fixed_collision_region, platform_outline, rotation, structure_collision_region
 from taut.atlas.reachable import ARC_STEP, cable_reachable_area
 from taut.errors import PoseError, TautError
 from taut.model.robot import Robot
@@ -63,7 +71,8 @@ class Edge:
 
 @dataclass
 class StructureAtlas:
-    """The structure atlas (SA) of a point-mass planar VSCR: charts and their adjacency."""
+    """The structure atlas (SA) of a planar VSCR — for a rigid platform one page, at
+    orientation ``theta`` (§5.2.2): charts and their adjacency."""
 
     robot: Robot
     trees: list[CableStateTree] = field(repr=False)
@@ -71,6 +80,16 @@ class StructureAtlas:
     charts: list[Chart]
     edges: list[Edge]
     start: np.ndarray
+    theta: float = 0.0  #: platform orientation of the page (0 for a point mass)
+    offsets: np.ndarray | None = field(default=None, repr=False)  #: ``(n, 2)`` anchor offsets ``R(θ) r_i``
+
+    def poses(self, points) -> np.ndarray:
+        """Robot poses at reference points ``(N, 2)``: ``(x, y)``, or ``(x, y, θ)`` for a
+        rigid platform."""
+        P = np.atleast_2d(np.asarray(points, float))
+        if self.robot.is_point_mass:
+            return P
+        return np.column_stack([P, np.full(len(P), self.theta)])
 
     @property
     def n_edges(self) -> int:
@@ -83,16 +102,19 @@ class StructureAtlas:
 
     def lengths(self, chart: int, points) -> np.ndarray:
         """Cable lengths ``(N, n)`` at ``points`` in chart ``chart`` (Eq. 4.9)."""
-        return chart_lengths(self.trees, self.charts[chart].nodes, points)[0]
+        return chart_lengths(self.trees, self.charts[chart].nodes, points, self.offsets)[0]
 
 
 class _Builder:
-    def __init__(self, robot: Robot, trees, space, arc_step: float):
+    def __init__(self, robot: Robot, trees, space, arc_step: float, theta: float, offsets: np.ndarray):
         self.robot, self.trees, self.space, self.arc_step = robot, trees, space, arc_step
+        self.offsets = offsets
         self.cra: dict[tuple[int, int], object] = {}
         self.sra: dict[tuple[int, ...], object] = {}
         x0, y0, x1, y1 = space.bounds
-        self.reach = 4.0 * float(np.hypot(x1 - x0, y1 - y0)) + 1.0
+        self.reach = 4.0 * float(np.hypot(x1 - x0, y1 - y0) + np.abs(offsets).max()) + 1.0
+        self.outline = platform_outline(robot, theta)
+        self.fixed = fixed_collision_region(robot, self.outline, space, trees) if self.outline is not None else None
 
     def cable_area(self, i: int, node: int):
         key = (i, node)
@@ -102,7 +124,12 @@ class _Builder:
 
     def area(self, nodes: tuple[int, ...]):
         if nodes not in self.sra:
-            self.sra[nodes] = structure_reachable_area([self.cable_area(i, n) for i, n in enumerate(nodes)])
+            pra = None
+            if self.outline is not None:  # Eq. (5.14)
+                H = structure_collision_region(self.outline, self.trees, nodes, self.offsets, self.arc_step, self.reach)
+                pra = self.space.difference(shapely.union_all([self.fixed, H]))
+            self.sra[nodes] = structure_reachable_area([self.cable_area(i, n) for i, n in enumerate(nodes)],
+                                                       self.offsets, pra)
         return self.sra[nodes]
 
     def transitions(self, nodes: tuple[int, ...]):
@@ -134,30 +161,39 @@ def _edge_pieces(domain: Polygon, e: np.ndarray, u: np.ndarray, reach: float):
 
 
 def build_atlas(robot: Robot, start, initial: dict | None = None, arc_step: float = ARC_STEP,
-                max_charts: int = MAX_CHARTS) -> StructureAtlas:
-    """The structure atlas of a point-mass planar VSCR from the start point ``start``
-    (Alg. 5.1).  ``initial`` maps a 0-based cable index to its starting state (see
-    :func:`taut.wrapping.ik.wrapped_inverse_kinematics`)."""
-    if not robot.is_point_mass:
-        raise TautError(f"{robot.name}: the structure atlas is implemented for point-mass platforms")
+                max_charts: int = MAX_CHARTS, theta: float = 0.0) -> StructureAtlas:
+    """The structure atlas of a planar VSCR from the start point ``start`` (Alg. 5.1) —
+    for a rigid platform the page of orientation ``theta`` (§5.2.2), ``start`` being the
+    platform reference point.  ``initial`` maps a 0-based cable index to its starting
+    state (see :func:`taut.wrapping.ik.wrapped_inverse_kinematics`)."""
+    theta = float(theta)
+    if not np.isfinite(theta):
+        raise PoseError(f"{robot.name}: the orientation must be finite, got {theta}")
+    if robot.is_point_mass and theta != 0.0:
+        raise PoseError(f"{robot.name}: a point-mass platform has no orientation (theta must be 0)")
+    if not robot.is_point_mass and (robot.dimension != 2 or robot.n_joints):
+        raise TautError(f"{robot.name}: the structure atlas is implemented for planar platforms without joints")
     p0 = np.asarray(start, float).reshape(-1)
     if p0.shape != (2,) or not np.isfinite(p0).all():
         raise PoseError(f"{robot.name}: the start point must be 2 finite coordinates, got {list(np.ravel(start))}")
+    offsets = (np.zeros((robot.n_cables, 2)) if robot.is_point_mass
+               else np.asarray(robot.anchors, float)[:, :2] @ rotation(theta).T)
     space = Polygon(np.asarray(robot.installation_space, float)) if robot.installation_space else None
     if space is not None and not space.covers(shapely.Point(p0)):
         raise PoseError(f"{robot.name}: the start point {p0.tolist()} is outside the installation space")
-    ik = wrapped_inverse_kinematics(robot, p0[None], initial)
+    pose0 = p0[None] if robot.is_point_mass else np.array([[p0[0], p0[1], theta]])
+    ik = wrapped_inverse_kinematics(robot, pose0, initial)
     if space is None:  # the box of the exits, the objects and the start, grown by half its size
         x0, y0, x1, y1 = _objects_bounds(ik.trees)
         x0, y0, x1, y1 = min(x0, p0[0]), min(y0, p0[1]), max(x1, p0[0]), max(y1, p0[1])
-        g = 0.5 * max(x1 - x0, y1 - y0)
+        g = 0.5 * max(x1 - x0, y1 - y0) + float(np.abs(offsets).max())
         space = shapely.box(x0 - g, y0 - g, x1 + g, y1 + g)
-    b = _Builder(robot, ik.trees, space, arc_step)
+    b = _Builder(robot, ik.trees, space, arc_step, theta, offsets)
     nodes0 = tuple(int(x) for x in ik.nodes[0])
     q0 = component_containing(b.area(nodes0), p0, tol=1e-7)
     if q0 is None:
         raise PoseError(f"{robot.name}: the start point {p0.tolist()} is not in the reachable area of its structure "
-                        "(on an object, or a cable is blocked there)")
+                        "(on an object, a cable is blocked there, or the platform hits something)")
     charts = [Chart(0, nodes0, q0, p0, _states(ik.trees, nodes0))]
     edges: list[Edge] = []
     stack = [0]
@@ -166,7 +202,7 @@ def build_atlas(robot: Robot, start, initial: dict | None = None, arc_step: floa
         C = charts[ci]
         for i, new, ray_node, side, kind, obj in b.transitions(C.nodes):
             tree = b.trees[i]
-            e = tree.F[ray_node, [EX, EY]]
+            e = tree.F[ray_node, [EX, EY]] - b.offsets[i]
             u = tree.F[ray_node, [UX, UY]]
             nrm = side * np.array([-u[1], u[0]])
             nodes = C.nodes[:i] + (new,) + C.nodes[i + 1:]
@@ -183,7 +219,7 @@ def build_atlas(robot: Robot, start, initial: dict | None = None, arc_step: floa
                 if target is not None and target != ci:
                     edges.append(Edge((ci, target), i, kind, obj, seg, nrm))
                     C.neighbours.setdefault(target, []).append(len(edges) - 1)
-    return StructureAtlas(robot, b.trees, space, charts, edges, p0)
+    return StructureAtlas(robot, b.trees, space, charts, edges, p0, theta, offsets)
 
 
 def _states(trees, nodes):

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import shapely
+import shapely.affinity
 from shapely.geometry import Polygon
 
 from taut.atlas.reachable import close_cracks
@@ -45,15 +46,19 @@ class Chart:
         return float(self.domain.area)
 
 
-def chart_lengths(trees: list[CableStateTree], nodes, points) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``(l (N, n), l_0 + ν (N, n), A (N, n, 2))`` of structure ``nodes`` at ``points``
-    ``(N, 2)``: Eq. (4.9) with the chart elements of Eqs. (5.3)–(5.5), vectorised."""
-    P = np.atleast_2d(np.asarray(points, float))
+def chart_lengths(trees: list[CableStateTree], nodes, points, offsets=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(l (N, n), l_0 + ν (N, n), A (N, n, 2))`` of structure ``nodes`` at reference
+    points ``points`` ``(N, 2)``: Eq. (4.9) with the chart elements of Eqs. (5.3)–(5.5),
+    vectorised.  Cable ``i`` is attached at ``points + offsets[i]`` (the anchor offsets
+    ``R(θ) r_i`` of a rigid platform at a fixed orientation; default 0)."""
+    P0 = np.atleast_2d(np.asarray(points, float))
     n = len(trees)
-    L_out = np.empty((len(P), n))
-    wrapped = np.empty((len(P), n))
-    A = np.empty((len(P), n, 2))
+    off = np.zeros((n, 2)) if offsets is None else np.asarray(offsets, float).reshape(n, 2)
+    L_out = np.empty((len(P0), n))
+    wrapped = np.empty((len(P0), n))
+    A = np.empty((len(P0), n, 2))
     for i, (tree, node) in enumerate(zip(trees, nodes)):
+        P = P0 + off[i]
         k = int(tree.I[node, OBJ])
         cx, cy, r = tree.circles[k]
         d = tree.F[node, DIR]
@@ -71,9 +76,17 @@ def chart_lengths(trees: list[CableStateTree], nodes, points) -> tuple[np.ndarra
     return L_out, wrapped, A
 
 
-def structure_reachable_area(cras: list):
-    """``SRA^S = ∩_i CRA^{s_i}`` (Eq. 5.6) of the cables' reachable areas."""
-    return close_cracks(shapely.intersection_all(cras))
+def structure_reachable_area(cras: list, offsets=None, pra=None):
+    """``SRA^S = ∩_i CRA^{s_i}`` (Eq. 5.6) of the cables' reachable areas; for a rigid
+    platform at orientation ``θ``, ``SRA^{S,θ} = (∩_i (CRA^{s_i} − R(θ) r_i)) ∩ PRA^{S,θ}``
+    (Eq. 5.15) with ``offsets[i] = R(θ) r_i`` and ``pra`` the platform-reachable area."""
+    if offsets is not None:
+        cras = [shapely.affinity.translate(a, -float(o[0]), -float(o[1])) if (o[0] or o[1]) else a
+                for a, o in zip(cras, np.asarray(offsets, float))]
+    sra = shapely.intersection_all(cras)
+    if pra is not None:
+        sra = sra.intersection(pra)
+    return close_cracks(sra)
 
 
 def component_containing(area, point, tol: float = 1e-9) -> Polygon | None:

@@ -1,9 +1,11 @@
-"""Structure-atlas inverse kinematics of a point-mass VSCR (§5.3.2, Algs. 5.3 and 5.4 of ``000_3d5147f1d4639546.txt``).
+"""Structure-atlas inverse kinematics of a planar VSCR (§5.3.2, Algs. 5.3 and 5.4 of ``000_3d5147f1d4639546.txt``).
 
 *Direct* (Alg. 5.3): the active chart of a point is the first chart whose domain ``Q``
 contains it (a point-in-polygon test, here shapely's prepared ``contains_xy`` over all
 query points of a chart at once); the lengths follow from the chart's elements by
-Eq. (4.9), ``l_i = l_{0,i} + ν_i(p) + ‖a_i(p) − p‖`` (:func:`taut.atlas.chart.chart_lengths`).
+Eq. (4.9), ``l_i = l_{0,i} + ν_i(b_i) + ‖a_i(b_i) − b_i‖`` with the anchor
+``b_i = p + R(θ) r_i`` of the atlas page (``b_i = p`` for a point mass;
+:func:`taut.atlas.chart.chart_lengths`).
 Several charts may contain a point (Fig. 5.1); Alg. 5.3 takes the first, and so does
 :func:`direct_ik` unless ``charts`` restricts the search (e.g. to the workspace).
 
@@ -67,7 +69,7 @@ def _evaluate(atlas: StructureAtlas, P: np.ndarray, ch: np.ndarray) -> AtlasIK:
     exits = np.full((len(P), n, 2), np.nan)
     for c in np.unique(ch[ch >= 0]):
         sel = ch == c
-        L, _, A = chart_lengths(atlas.trees, atlas.charts[c].nodes, P[sel])
+        L, _, A = chart_lengths(atlas.trees, atlas.charts[c].nodes, P[sel], atlas.offsets)
         lengths[sel], exits[sel] = L, A
     return AtlasIK(ch, lengths, exits)
 

@@ -1,9 +1,10 @@
-"""Workspace of a point-mass VSCR from its structure atlas, and pruning (§5.3.1, Alg. 5.2 of ``000_3d5147f1d4639546.txt``).
+"""Workspace of a planar VSCR from its structure atlas, and pruning (§5.3.1, Alg. 5.2 of ``000_3d5147f1d4639546.txt``).
 
 Within a chart the VSCR is a standard CDPR whose exit points are ``A(p)`` (Eq. 5.5), so
 any workspace condition of :mod:`taut.workspace.conditions` that tests structure
 matrices (``wrench-closure``, ``wrench-feasible``, ``static``) decides a point:
-``W = [u_i]`` with ``u_i = (a_i(p) − p)/‖a_i(p) − p‖``.  As in §5.3.1 each chart's
+``W = [u_i]`` with ``u_i = (a_i − b_i)/‖a_i − b_i‖``, ``b_i = p + R(θ) r_i`` the anchor,
+and for a rigid platform the moment row ``(R(θ) r_i) × u_i`` (poses at the page's ``θ``).  As in §5.3.1 each chart's
 sub-workspace is its domain discretised on a grid (one global grid of step ``step``, so
 that overlapping charts share points).  Alg. 5.2 visits the charts from the initial one:
 a chart with an empty sub-workspace is pruned; otherwise its adjacent charts are visited
@@ -48,14 +49,19 @@ class AtlasWorkspace:
 def _feasible(atlas: StructureAtlas, cond: WrenchCondition, chart: int, P: np.ndarray) -> np.ndarray:
     if not len(P):
         return np.zeros(0, bool)
-    _, _, A = chart_lengths(atlas.trees, atlas.charts[chart].nodes, P)
-    D = A - P[:, None, :]
+    _, _, A = chart_lengths(atlas.trees, atlas.charts[chart].nodes, P, atlas.offsets)
+    off = np.zeros((A.shape[1], 2)) if atlas.offsets is None else atlas.offsets
+    D = A - (P[:, None, :] + off[None])
     L = np.hypot(D[..., 0], D[..., 1])
     ok = (L > 1e-12).all(axis=1)
     U = D / np.where(L > 1e-12, L, 1.0)[..., None]
+    W = np.swapaxes(U, 1, 2)
+    if not atlas.robot.is_point_mass:  # moment row (R r_i) × u_i
+        mom = off[None, :, 0] * U[..., 1] - off[None, :, 1] * U[..., 0]
+        W = np.concatenate([W, mom[:, None, :]], axis=1)
     out = np.zeros(len(P), bool)
     if ok.any():
-        out[ok] = cond.test(atlas.robot, P[ok], np.swapaxes(U[ok], 1, 2))
+        out[ok] = cond.test(atlas.robot, atlas.poses(P[ok]), W[ok])
     return out
 
 

@@ -1,5 +1,6 @@
-"""``taut atlas ROBOT``: the structure atlas of a planar point-mass VSCR and its workspace
-(Ch. 5, Algs. 5.1–5.2 of ``000_3d5147f1d4639546.txt``; :mod:`taut.atlas`)."""
+"""``taut atlas ROBOT``: the structure atlas of a planar VSCR and its workspace — for a rigid
+platform one page of constant orientation (Ch. 5, Algs. 5.1–5.2 and §5.2 of
+``000_3d5147f1d4639546.txt``; :mod:`taut.atlas`)."""
 
 from __future__ import annotations
 
@@ -10,15 +11,19 @@ import numpy as np
 
 from taut.errors import TautError
 
-HELP = """Build the structure atlas of a planar point-mass VSCR (one chart per reachable
-structure, Alg. 5.1) from a start point, and its workspace under a condition (Alg. 5.2).
+HELP = """Build the structure atlas of a planar VSCR (one chart per reachable structure,
+Alg. 5.1) from a start point, and its workspace under a condition (Alg. 5.2).  For a
+rigid platform the atlas is the page of constant orientation T (§5.2): charts hold the
+platform reference points whose anchors R(T) r_i + p are cable-reachable and where the
+platform outline (platform.shape.polygon) hits no object, border or cable.
 
 --start x,y     start point (default: the robot's first reference pose)
---theta T       platform orientation; only 0 for a point-mass platform
+--theta T       platform orientation [rad] of a rigid platform (default: that of the
+                first reference pose, else 0); only 0 for a point-mass platform
 --condition C   wrench-feasible (default), wrench-closure or static
 --out FILE.json the charts: structure (per cable, wrapped objects as [object, +1|-1],
                 1-based), domain polygon, area, neighbours; and the edges
-JSON: {"charts", "edges", "reachable_area", "workspace_area", "pruned", "time"}."""
+JSON: {"charts", "edges", "theta", "reachable_area", "workspace_area", "pruned", "time"}."""
 
 
 def _chart_json(atlas, c) -> dict:
@@ -42,22 +47,29 @@ def cmd_atlas(ns) -> int:
     from taut.cli.main import console, emit, load
 
     robot = load(ns.robot)
+    ref = None
+    if robot.reference is not None and robot.reference.poses:
+        ref = np.asarray(next(iter(robot.reference.poses.values())), float)
     if ns.start is not None:
         start = A.vector(ns.start, "--start")
         if start.size != 2:
             raise TautError(f"--start: expected x,y, got {ns.start!r}")
-    elif robot.reference is not None and robot.reference.poses:
-        start = np.asarray(next(iter(robot.reference.poses.values())), float)[:2]
+    elif ref is not None:
+        start = ref[:2]
     else:
         raise TautError(f"{robot.name} has no reference pose; give --start x,y")
-    if ns.theta is not None and A.number(ns.theta, "--theta") != 0.0 and robot.is_point_mass:
+    theta = A.number(ns.theta, "--theta") if ns.theta is not None else 0.0
+    if robot.is_point_mass and theta != 0.0:
         raise TautError("--theta: a point-mass platform has no orientation (only 0)")
+    if ns.theta is None and not robot.is_point_mass and ref is not None and ref.size == 3:
+        theta = float(ref[2])
     t0 = time.perf_counter()
-    atlas = build_atlas(robot, start)
+    atlas = build_atlas(robot, start, theta=theta)
     ws = atlas_workspace(atlas, ns.condition)
     data = {
         "robot": robot.name,
         "start": start.tolist(),
+        "theta": float(theta),
         "charts": len(atlas.charts),
         "edges": atlas.n_edges,
         "reachable_area": float(atlas.reachable_area().area),
@@ -83,7 +95,8 @@ def cmd_atlas(ns) -> int:
 
     def human(d):
         con = console()
-        con.print(f"[bold]{robot.name}[/]: {d['charts']} charts, {d['edges']} adjacent pairs, "
+        page = "" if robot.is_point_mass else f" (page θ = {d['theta']:.6g} rad)"
+        con.print(f"[bold]{robot.name}[/]{page}: {d['charts']} charts, {d['edges']} adjacent pairs, "
                   f"reachable area {d['reachable_area']:.6g} m², {d['condition']} workspace {d['workspace_area']:.6g} m² "
                   f"({len(d['pruned'])} charts pruned) in {d['time']:.2f} s")
         for c in atlas.charts:
@@ -95,11 +108,11 @@ def cmd_atlas(ns) -> int:
 
 
 def register(command) -> None:
-    c = command("atlas", "structure atlas and workspace of a planar point-mass VSCR", cmd_atlas)
+    c = command("atlas", "structure atlas and workspace of a planar VSCR (rigid: one orientation page)", cmd_atlas)
     c.description = HELP
     c.formatter_class = argparse.RawDescriptionHelpFormatter
     c.add_argument("--start", metavar="x,y", help="start point (default: the first reference pose)")
-    c.add_argument("--theta", metavar="T", help="platform orientation (0 for a point mass)")
+    c.add_argument("--theta", metavar="T", help="orientation [rad] of a rigid platform's atlas page (0 for a point mass)")
     c.add_argument("--condition", default="wrench-feasible", choices=("wrench-feasible", "wrench-closure", "static"),
                    help="workspace condition (Alg. 5.2)")
     c.add_argument("--out", metavar="FILE.json", help="write the charts and edges")

@@ -306,6 +306,10 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("taut: interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:
+        # the reader (e.g. `| head`) has gone: stop quietly, as Unix tools do
+        sys.stderr.close()
+        return 0
     except Exception as exc:  # noqa: BLE001 — the CLI reports, it does not dump tracebacks
         print(f"taut: internal error: {type(exc).__name__}: {exc} (please report it)", file=sys.stderr)
         return 1

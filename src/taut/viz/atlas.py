@@ -1,6 +1,6 @@
 """Figures of a structure atlas (Figs. 5.4 and 5.9 of ``000_3d5147f1d4639546.txt``):
 :func:`plot_atlas` — the charts in grey (darker where they overlap) with their traversable
-edges and the start point, and, given a workspace (Alg. 5.2), the workspace in purple over
+edges, the start point (and a rigid platform's outline there, at the page's orientation), and, given a workspace (Alg. 5.2), the workspace in purple over
 the charts kept; :func:`atlas_section`, the demo's atlas of the T-shaped VSCR."""
 
 from __future__ import annotations
@@ -10,6 +10,7 @@ import time
 import numpy as np
 
 from taut.atlas import atlas_workspace, build_atlas, direct_ik
+from taut.atlas.platform import platform_outline
 from taut.model import example
 from taut.viz.robot import draw_scene_2d
 
@@ -45,6 +46,10 @@ def _draw_charts(ax, atlas, charts, title: str) -> None:
                     gid="edge")
             first = False
     ax.plot(*atlas.start, marker="o", color="black", ms=5, zorder=5, label="start", gid="start")
+    M = platform_outline(atlas.robot, atlas.theta)
+    if M is not None:  # the platform at the start, at the page's orientation
+        ax.fill(*(np.asarray(M.exterior.coords) + atlas.start).T, fc="none", ec="black", lw=1.0, zorder=5,
+                label=f"platform (θ = {atlas.theta:.3g} rad)", gid="platform")
     ax.set_aspect("equal")
     ax.autoscale_view()
     ax.set_title(title, fontsize=10)
