@@ -44,7 +44,8 @@ def cmd_atlas(ns) -> int:
 
     from taut.atlas import atlas_workspace, build_atlas
     from taut.cli import args as A
-    from taut.cli.main import console, emit, load
+    from taut.cli.main import console, emit, load, save_figure
+    from taut.wrapping.state import contacts_text
 
     robot = load(ns.robot)
     ref = None
@@ -90,8 +91,7 @@ def cmd_atlas(ns) -> int:
     if ns.plot:
         from taut.viz.atlas import plot_atlas
 
-        plot_atlas(atlas, ws).savefig(ns.plot, dpi=110, bbox_inches="tight")
-        data["plot"] = str(ns.plot)
+        save_figure(plot_atlas(atlas, ws), ns.plot, data)
 
     def human(d):
         con = console()
@@ -100,7 +100,7 @@ def cmd_atlas(ns) -> int:
                   f"reachable area {d['reachable_area']:.6g} m², {d['condition']} workspace {d['workspace_area']:.6g} m² "
                   f"({len(d['pruned'])} charts pruned) in {d['time']:.2f} s")
         for c in atlas.charts:
-            states = "; ".join(" ".join(f"{k + 1}{'+' if s > 0 else '-'}" for k, s in st) or "-" for st in c.states)
+            states = "; ".join(contacts_text(st) or "-" for st in c.states)
             con.print(f"  chart {c.index + 1:3d}  area {c.area:10.6f}  wraps [{states}]")
 
     emit(data, ns.json, human)

@@ -36,7 +36,7 @@ def _runs(flags: np.ndarray) -> list[list[int]]:
 
 
 def cmd_check(ns) -> int:
-    from taut.cli.main import console, emit, load
+    from taut.cli.main import console, emit, load, save_figure
     from taut.collision import check_poses, load_trajectory, trajectory_poses
 
     robot = load(ns.robot)
@@ -66,9 +66,7 @@ def cmd_check(ns) -> int:
     if ns.plot:
         from taut.viz.check import plot_check
 
-        fig = plot_check(robot, res)
-        fig.savefig(ns.plot, dpi=110, bbox_inches="tight")
-        data["plot"] = str(ns.plot)
+        save_figure(plot_check(robot, res), ns.plot, data)
 
     def human(d):
         con = console()

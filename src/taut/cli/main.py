@@ -39,6 +39,16 @@ def emit(data: dict, as_json: bool, human) -> None:
         human(data)
 
 
+def save_figure(fig, path, data: dict | None = None) -> None:
+    """Write a figure of a ``--plot`` option and close it; record the path in ``data``."""
+    import matplotlib.pyplot as plt
+
+    fig.savefig(path, dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    if data is not None:
+        data["plot"] = str(path)
+
+
 def console():
     from rich.console import Console
 
@@ -108,12 +118,11 @@ def cmd_ik(ns) -> int:
         rows = [[f"{x:.4g}" for x in row] for row in W]
         con.print(_matrix_table("structure matrix W", rows, [str(i + 1) for i in range(W.shape[1])]))
 
-    emit(data, ns.json, human)
     if ns.plot:
         from taut.viz import draw_robot
 
-        ax = draw_robot(robot, pose)
-        ax.figure.savefig(ns.plot, dpi=110, bbox_inches="tight")
+        save_figure(draw_robot(robot, pose).figure, ns.plot, data)
+    emit(data, ns.json, human)
     return 0
 
 
@@ -209,9 +218,7 @@ def cmd_workspace(ns) -> int:
     if ns.plot:
         from taut.viz import plot_workspace
 
-        ax = plot_workspace(res, robot)
-        ax.figure.savefig(ns.plot, dpi=110, bbox_inches="tight")
-        data["plot"] = str(ns.plot)
+        save_figure(plot_workspace(res, robot).figure, ns.plot, data)
 
     def human(d):
         console().print(

@@ -66,7 +66,7 @@ def _ellipsoid(text: str | None) -> np.ndarray:
 
 
 def cmd_plan(ns) -> int:
-    from taut.cli.main import console, emit, load
+    from taut.cli.main import console, emit, load, save_figure
     from taut.planning import plan_path
     from taut.planning.manifold import WrenchFeasibleManifold
     from taut.planning.verify import verify_path
@@ -108,25 +108,14 @@ def cmd_plan(ns) -> int:
         head = "x,y,z,phi,theta,sigma," + ",".join(f"f_min_{i + 1}" for i in range(6)) + "," + \
             ",".join(f"f_max_{i + 1}" for i in range(6))
         np.savetxt(ns.out, np.hstack([poses, lo, hi]), delimiter=",", header=head, comments="")
-    if ns.plot and poses is not None:
-        import matplotlib
+    if ns.plot:
+        from taut.planning.manifold import POSE_NAMES
+        from taut.viz.plan import plot_plan
 
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-
-        fig, axes = plt.subplots(2, 3, figsize=(11, 5.5), sharex=True)
-        s = np.linspace(0, 1, len(poses))
-        for i, ax in enumerate(axes.flat):  # Fig. 6 bottom: extreme tensions of each cable
-            ax.plot(s, hi[:, i], color="tab:green", label="f0 + v_ii")
-            ax.plot(s, lo[:, i], color="tab:blue", label="f0 - v_ii")
-            ax.axhline(M.f_min[i], color="k", lw=0.5)
-            ax.axhline(M.f_max[i], color="k", lw=0.5)
-            ax.set_title(f"cable {i + 1}")
-        axes[0, 0].legend(fontsize=7)
-        fig.supxlabel("path parameter")
-        fig.tight_layout()
-        fig.savefig(ns.plot, dpi=110)
-        plt.close(fig)
+        free = [n for n in POSE_NAMES if n not in fixed]
+        if len(free) < 2:
+            raise TautError("--plot draws a map of two free coordinates: fix at most four")
+        save_figure(plot_plan(M, res, axes=tuple(free[:2])), ns.plot)
     return 0
 
 

@@ -38,7 +38,8 @@ def _read_waypoints(spec: str, robot):
 
 
 def cmd_trajectory(ns) -> int:
-    from taut.cli.main import console, emit, load
+    from taut.cli.main import console, emit, load, save_figure
+    from taut.wrapping.state import contacts_text
     from taut.wrapping.trajectory import DEFAULT_SPEED, builtin_trajectory, full_poses, run_trajectory, sample_waypoints
 
     robot = load(ns.robot)
@@ -61,15 +62,14 @@ def cmd_trajectory(ns) -> int:
         with open(ns.out, "w") as fh:
             fh.write(",".join(head) + "\n")
             for s in range(len(t)):
-                states = [" ".join(f"{k + 1}{'+' if d > 0 else '-'}" for k, d in res.ik.contacts(s, i)) for i in range(n)]
+                states = [contacts_text(res.ik.contacts(s, i)) for i in range(n)]
                 vals = [t[s], *res.ik.poses[s], *res.lengths[s], *res.tensions[s]]
                 fh.write(",".join(f"{v:.9g}" for v in vals) + f",{int(res.feasible[s])}," + ",".join(states) + "\n")
         data["out"] = str(ns.out)
     if ns.plot:
         from taut.viz.trajectory import plot_trajectory
 
-        plot_trajectory(robot, res).savefig(ns.plot, dpi=110, bbox_inches="tight")
-        data["plot"] = str(ns.plot)
+        save_figure(plot_trajectory(robot, res), ns.plot, data)
 
     def human(d):
         con = console()

@@ -112,3 +112,9 @@ def rebuild_path(circles, winch_direction: int, state: CableState, b) -> CablePa
         length += phi * r1 + float(L)
         theta_in = float(contact_angle(u, nd))
     return CablePath(np.array(segs, float), np.array(arcs, float), length)
+
+
+def contacts_text(contacts) -> str:
+    """A cable's contacts as users read them: 1-based object numbers with the wrap
+    direction, e.g. ``"2+ 3-"`` (empty for a straight cable)."""
+    return " ".join(f"{k + 1}{'+' if d > 0 else '-'}" for k, d in contacts)
