@@ -2,6 +2,7 @@ import json
 
 import pytest
 
+import taut
 from taut.cli.main import main
 
 
@@ -45,3 +46,14 @@ def test_atlas_rigid_page(capsys):
     assert 0.5 < d1["reachable_area"] < d0["reachable_area"] < 0.8
     assert main(["atlas", "vscr-rigid-t-shaped", "--theta", "0.1"]) == 0
     assert "page θ = 0.1 rad" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("name", [n for n in taut.example_names() if n.startswith("vscr-")])
+def test_atlas_with_plot_on_every_planar_vscr_example(name, tmp_path, capsys):
+    """Also the examples whose wrench-feasible workspace is empty (no weight is printed for
+    them): the plot shows the charts and an empty workspace panel."""
+    png = tmp_path / "atlas.png"
+    assert main(["atlas", name, "--json", "--plot", str(png)]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["charts"] >= 1 and 0 <= data["workspace_area"] <= data["reachable_area"] + 1e-9
+    assert png.stat().st_size > 10_000

@@ -71,8 +71,9 @@ def plot_atlas(atlas, workspace=None):
         _draw_charts(ax, atlas, workspace.charts,
                      f"{workspace.condition} workspace: {workspace.area:.4g} m², {len(workspace.pruned)} charts pruned")
         P = workspace.points
-        ax.scatter(P[:, 0], P[:, 1], s=(72 * 0.6 * workspace.step / max(np.ptp(P[:, 0]), 1e-9) * 6) ** 2,
-                   marker="s", color=WORKSPACE, alpha=0.5, lw=0, zorder=1.5, label="workspace", gid="workspace")
+        if len(P):
+            ax.scatter(P[:, 0], P[:, 1], s=(72 * 0.6 * workspace.step / max(np.ptp(P[:, 0]), 1e-9) * 6) ** 2,
+                       marker="s", color=WORKSPACE, alpha=0.5, lw=0, zorder=1.5, label="workspace", gid="workspace")
         ax.legend(loc="best", fontsize=7)
     fig.tight_layout()
     return fig
