@@ -93,3 +93,23 @@ def test_robocrane_q1_q2_path_is_wrench_feasible_where_the_straight_line_is_not(
     assert chk.all_feasible and chk.poses.shape[0] > 500
     lo, hi = M.tension_range(res.path)  # Fig. 6: f_0 ± v_ii inside (0, 1)
     assert lo.min() > 0 and hi.max() < 1
+
+
+def test_continuation_on_the_full_six_dimensional_c_space():
+    """k = 6: the children of the first chart of the unsliced manifold lie on it, spread in
+    all six pose coordinates, and are wrench-feasible by the independent check."""
+    from taut.planning.continuation import Atlas
+
+    robot = load_robot("robocrane")
+    M = WrenchFeasibleManifold.from_robot(robot)
+    manifold = M.implicit()
+    assert manifold.dim == 6
+    atlas = Atlas(manifold, M.lift(np.asarray(robot.reference.poses["q1"])), 0.2, metric=M.pose_metric)
+    atlas.grow(0)
+    assert len(atlas.charts) >= 1 + 2 * 6
+    residual = max(np.linalg.norm(manifold.function(c)) for c in atlas.centres)
+    assert residual < 1e-8
+    poses = M.pose(atlas.centres)
+    assert np.all(np.ptp(poses, axis=0) > 0.1)
+    for pose in poses:
+        assert verify_path(robot, pose[None, :], subdivide=1).all_feasible
