@@ -15,11 +15,12 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
     "script, args, expect",
     [
         ("bench_ik.py", ["--poses", "2000", "--loop", "50"], "all poses valid: True"),
-        ("bench_workspace.py", ["--resolution", "6", "--sample", "4"], "poses where the verdicts differ: 0"),
+        ("bench_workspace.py", ["--resolution", "6", "--check-resolution", "3"], "poses where the verdicts differ: 0"),
         ("bench_wrapping.py", ["--samples", "2001"], "state updates per second per cable"),
         ("bench_check.py", ["--poses", "2000", "--loop", "30"], "poses where the verdicts differ: 0"),
         ("bench_plan.py", ["--repeat", "1"], "all feasible True"),
         ("bench_atlas.py", ["--queries", "2000", "--naive", "10", "--repeat", "1"], "same lengths at 100 %"),
+        ("bench_tracking.py", ["--repeat", "1"], "back to start within"),
         pytest.param("bench_dgp.py", [], "6 solutions (1 stable)", marks=pytest.mark.slow),
     ],
 )

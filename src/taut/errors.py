@@ -24,3 +24,8 @@ class SingularConfigurationError(TautError):
 
 class UnreachableLengthsError(TautError):
     """Cable lengths that no pose of the robot fits."""
+
+
+class TrackingLostError(TautError):
+    """Tracking forward kinematics could not certify the equilibrium that follows the
+    previous one (no convergence, or no unique solution proven around the step)."""

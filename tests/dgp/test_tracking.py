@@ -1,0 +1,93 @@
+"""Tracking forward kinematics (001_eb92e2f6589fc229.txt §4.1.2) from the stable Table 4.3
+equilibrium of the suspended 3-cable robot: small length steps along a path and back."""
+
+import numpy as np
+import pytest
+
+from taut.dgp.formulation import build_subproblem, load
+from taut.dgp.solve import DGPSolution
+from taut.dgp.tracking import track, track_path
+from taut.errors import TautError, TrackingLostError
+from taut.geometry.rotation import rotation_matrix
+from taut.interval.krawczyk import certify
+from taut.model import load_robot
+
+ROBOT = load_robot("suspended-3cable")
+LENGTHS = np.array(ROBOT.reference.lengths)
+POSE, TENSIONS = [2.7505, 3.9798, 5.5061, 3.0064, 0.3417, 0.1089], [0.526, 0.512, 0.581]  # Conf. 1
+DIRECTION = np.array([1.0, -1.0, 0.5])
+
+
+@pytest.fixture(scope="module")
+def start():
+    sp = build_subproblem(ROBOT, LENGTHS, (0, 1, 2))
+    R = rotation_matrix(np.array(POSE[3:]), "xyz-fixed")
+    b = np.array(POSE[:3]) + sp.body_refs @ R.T
+    cert = certify(sp.system, np.concatenate([b.ravel(), np.array(TENSIONS) / LENGTHS]))
+    p, ang, _ = sp.pose(cert.x, "xyz-fixed")
+    return DGPSolution((1, 2, 3), p, ang, sp.tensions(cert.x, LENGTHS, 3), True, cert.width, cert.radius)
+
+
+def _assert_equilibrium(sol, lengths):
+    R = rotation_matrix(sol.orientation, ROBOT.orientation)
+    b = sol.position + ROBOT.anchors @ R.T
+    a = ROBOT.exits
+    f, m, gp = load(ROBOT)
+    taut = [i - 1 for i in sol.taut]
+    assert np.all(sol.tensions >= 0.0)
+    span = np.linalg.norm(b - a, axis=1)
+    assert np.allclose(span[taut], lengths[taut], atol=1e-9, rtol=0)
+    assert np.all(span <= lengths + 1e-9)  # slack cables are not stretched
+    u = (a - b) / lengths[:, None] * sol.tensions[:, None]  # cable forces on the platform
+    g = sol.position + R @ gp
+    force = u.sum(axis=0) + f
+    moment = np.cross(b, u).sum(axis=0) + np.cross(g, f) + m
+    assert np.max(np.abs(force)) < 1e-9 and np.max(np.abs(moment)) < 1e-9
+
+
+def test_path_and_back_satisfies_the_equations_and_returns_to_the_start(start):
+    path = [LENGTHS + k * 0.002 * DIRECTION for k in range(1, 41)]
+    there = track_path(ROBOT, start, path)
+    back = track_path(ROBOT, there[-1], path[-2::-1] + [LENGTHS])
+    for sol, lengths in zip(there + back, path + path[-2::-1] + [LENGTHS]):
+        assert sol.taut == (1, 2, 3) and sol.stable and sol.certificate_width < 1e-3
+        _assert_equilibrium(sol, lengths)
+    assert not np.allclose(there[-1].position, start.position, atol=1e-3)  # it did move
+    assert np.allclose(back[-1].position, start.position, atol=1e-9, rtol=0)
+    assert np.allclose(back[-1].orientation, start.orientation, atol=1e-9, rtol=0)
+    assert np.allclose(back[-1].tensions, start.tensions, atol=1e-9, rtol=0)
+
+
+def test_a_cable_going_slack_switches_sub_problem_and_back(start):
+    d = np.array([-1.0, 1.0, 0.0])  # cable 1 in, cable 2 out: cable 2 goes slack near 2.5 m
+    out = [LENGTHS + k * 0.02 * d for k in range(1, 151)]
+    path = out + out[-2::-1] + [LENGTHS]
+    sols = track_path(ROBOT, start, path)
+    sets = [s.taut for s in sols]
+    first, last = sets.index((1, 3)), len(sets) - 1 - sets[::-1].index((1, 3))
+    assert set(sets[:first]) == {(1, 2, 3)} and set(sets[first:last + 1]) == {(1, 3)}
+    assert set(sets[last + 1:]) == {(1, 2, 3)}
+    assert 0.0 < sols[first - 1].tensions[1] < 0.02  # dropped where its tension reached zero
+    assert sols[first].tensions[1] == 0.0
+    for sol, lengths in zip(sols, path):
+        _assert_equilibrium(sol, lengths)
+    assert np.allclose(sols[-1].position, start.position, atol=1e-9, rtol=0)
+
+
+def test_single_track_step_matches_track_path(start):
+    lengths = LENGTHS + 0.001 * DIRECTION
+    one = track(ROBOT, start, lengths)
+    _assert_equilibrium(one, lengths)
+    assert np.allclose(one.position, track_path(ROBOT, start, [lengths])[0].position, atol=1e-12)
+
+
+def test_lengths_no_pose_fits_lose_tracking(start):
+    with pytest.raises(TrackingLostError, match="Krawczyk|Newton|cycles"):
+        track(ROBOT, start, 0.3 * LENGTHS)  # cables 1 and 2 together shorter than their 10 m gap
+
+
+def test_bad_lengths(start):
+    with pytest.raises(TautError):
+        track(ROBOT, start, LENGTHS[:2])
+    with pytest.raises(TautError):
+        track(ROBOT, start, [1.0, -1.0, 1.0])
