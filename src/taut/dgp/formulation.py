@@ -32,6 +32,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 from taut.geometry.rotation import angles_from_matrix
 from taut.interval.expression import Expr, System, Tape, compile_system, compile_tape, const, variables
@@ -82,22 +83,34 @@ class Subproblem:
 
     def pose(self, x: np.ndarray, convention: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``(position p, angles, R)`` of the platform frame from the unknowns ``x``."""
-        q = x[:9].reshape(3, 3)
-        e1, e2 = q[1] - q[0], q[2] - q[0]
-        E = np.column_stack([e1, e2, np.cross(e1, e2)])
-        b = self.body_refs
-        f1, f2 = b[1] - b[0], b[2] - b[0]
-        Eb = np.column_stack([f1, f2, np.cross(f1, f2)])
-        R = E @ np.linalg.inv(Eb)
-        u, _, vt = np.linalg.svd(R)  # the nearest rotation (R is orthogonal at a solution)
-        R = u @ vt
-        p = q[0] - R @ b[0]
+        p, R = self.frame(x)
         return p, angles_from_matrix(R, convention), R
+
+    def frame(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``(position p, rotation R)`` of the platform frame from the unknowns ``x``."""
+        return _frame(np.ascontiguousarray(x[:9]).reshape(3, 3), self.body_refs)
 
     def tensions(self, x: np.ndarray, lengths: np.ndarray, n: int) -> np.ndarray:
         tau = np.zeros(n)
         tau[list(self.taut)] = x[9:] * lengths[list(self.taut)]
         return tau
+
+
+@njit(cache=True)
+def _frame(q: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Platform frame from the reference points ``q`` (fixed frame) and ``b`` (body frame):
+    ``R`` maps the body triad ``(b₂−b₁, b₃−b₁, their cross product)`` onto the fixed one,
+    projected on the nearest rotation (it is orthogonal at a solution).  Compiled: the
+    tracking update calls it once per step."""
+    e1, e2 = q[1] - q[0], q[2] - q[0]
+    f1, f2 = b[1] - b[0], b[2] - b[0]
+    E = np.empty((3, 3))
+    Eb = np.empty((3, 3))
+    E[:, 0], E[:, 1], E[:, 2] = e1, e2, np.cross(e1, e2)
+    Eb[:, 0], Eb[:, 1], Eb[:, 2] = f1, f2, np.cross(f1, f2)
+    u, _, vt = np.linalg.svd(E @ np.linalg.inv(Eb))
+    R = u @ vt
+    return q[0] - R @ b[0], R
 
 
 def _reference_choice(robot: Robot, taut, gp) -> tuple[list, np.ndarray]:

@@ -10,33 +10,45 @@ and the equilibrium is stable when ``H_r = Nᵀ H N`` is positive definite.
 from __future__ import annotations
 
 import numpy as np
+from numba import njit
 
 
-def _skew(v):
-    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
-
-
+@njit(cache=True)
 def reduced_hessian(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray, rho: np.ndarray) -> np.ndarray:
-    """``H_r`` for the taut cables: exit points ``a``, anchors ``b`` (``(m, 3)``), load point ``g``."""
+    """``H_r`` for the taut cables: exit points ``a``, anchors ``b`` (``(m, 3)``), load point
+    ``g``.  Compiled: the tracking update calls it once per step."""
     H = np.zeros((6, 6))
-    Jt = np.zeros((len(tau), 6))
-    G = _skew(g)
-    for i in range(len(tau)):
-        Bg = _skew(b[i]) - G
-        Ga = G - _skew(a[i])
-        H += tau[i] / rho[i] * np.block([[np.eye(3), -Bg], [Bg, 0.5 * (Bg @ Ga + Ga @ Bg)]])
-        Jt[i, :3] = (b[i] - a[i]) / rho[i]
-        Jt[i, 3:] = np.cross(b[i] - g, b[i] - a[i]) / rho[i]
+    Jt = np.zeros((tau.size, 6))
+    for i in range(tau.size):
+        w = tau[i] / rho[i]
+        bg = b[i] - g
+        ga = g - a[i]
+        Bg = np.array([[0.0, -bg[2], bg[1]], [bg[2], 0.0, -bg[0]], [-bg[1], bg[0], 0.0]])  # b̃_i − g̃
+        Ga = np.array([[0.0, -ga[2], ga[1]], [ga[2], 0.0, -ga[0]], [-ga[1], ga[0], 0.0]])  # g̃ − ã_i
+        S = 0.5 * (Bg @ Ga + Ga @ Bg)
+        for r in range(3):
+            H[r, r] += w
+            for c in range(3):
+                H[r, 3 + c] -= w * Bg[r, c]
+                H[3 + r, c] += w * Bg[r, c]
+                H[3 + r, 3 + c] += w * S[r, c]
+        d = b[i] - a[i]
+        Jt[i, :3] = d / rho[i]
+        Jt[i, 3:] = np.cross(bg, d) / rho[i]
     _, s, vt = np.linalg.svd(Jt)
-    rank = int(np.sum(s > 1e-10 * max(1.0, s[0] if s.size else 1.0)))
-    N = vt[rank:].T
+    top = max(1.0, s[0]) if s.size else 1.0
+    rank = 0
+    for v in s:
+        if v > 1e-10 * top:
+            rank += 1
+    N = np.ascontiguousarray(vt[rank:].T)
     return N.T @ H @ N
 
 
 def is_stable(a, b, g, tau, rho) -> bool:
     """Positive-definite reduced Hessian (sufficient condition of §3.2.2); a fully
     constrained equilibrium (empty null space) is stable."""
-    Hr = reduced_hessian(np.asarray(a), np.asarray(b), np.asarray(g), np.asarray(tau), np.asarray(rho))
+    Hr = reduced_hessian(*(np.ascontiguousarray(v, dtype=float) for v in (a, b, g, tau, rho)))
     if Hr.size == 0:
         return True
     return bool(np.all(np.linalg.eigvalsh(0.5 * (Hr + Hr.T)) > 0.0))

@@ -31,7 +31,7 @@ singular and tracking it raises :class:`~taut.errors.TrackingLostError`.
 from __future__ import annotations
 
 import weakref
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -41,7 +41,7 @@ from taut.dgp.stability import is_stable
 from taut.errors import TautError, TrackingLostError
 from taut.geometry.rotation import angles_from_matrix, rotation_matrix
 from taut.interval.expression import CONST, SQR
-from taut.interval.krawczyk import krawczyk, newton
+from taut.interval.krawczyk import certified_step
 from taut.model.robot import Robot
 
 #: Relative floor of the Krawczyk box half-width (a zero step still needs a box).
@@ -60,24 +60,35 @@ class _Compiled:
     nodes: np.ndarray  #: tape index of the CONST node ``ρ_i`` of each taut cable's length equation
 
     def system(self, lengths: np.ndarray):
-        """The square system with the lengths ``lengths`` (only ``clo``/``chi`` change)."""
+        """The square system with the lengths ``lengths``: its length constants are
+        patched in place (one update at a time per process, as tracking runs)."""
         tape = self.sub.system.tape
         rho = lengths[list(self.sub.taut)]
-        clo, chi = tape.clo.copy(), tape.chi.copy()
-        clo[self.nodes] = rho
-        chi[self.nodes] = rho
-        return replace(self.sub.system, tape=replace(tape, clo=clo, chi=chi))
+        tape.clo[self.nodes] = rho
+        tape.chi[self.nodes] = rho
+        return self.sub.system
 
 
-_CACHE: dict[int, dict[tuple[int, ...], _Compiled]] = {}
+@dataclass
+class _RobotCache:
+    load_point: np.ndarray  #: body-frame point where the external wrench acts
+    subsets: dict = field(default_factory=dict)  #: taut subset → :class:`_Compiled`
+
+
+_CACHE: dict[int, _RobotCache] = {}
+
+
+def _cache(robot: Robot) -> _RobotCache:
+    key = id(robot)
+    rc = _CACHE.get(key)
+    if rc is None:
+        rc = _CACHE[key] = _RobotCache(load(robot)[2])
+        weakref.finalize(robot, _CACHE.pop, key, None)
+    return rc
 
 
 def _compiled(robot: Robot, taut: tuple[int, ...]) -> _Compiled:
-    key = id(robot)
-    per_robot = _CACHE.get(key)
-    if per_robot is None:
-        per_robot = _CACHE[key] = {}
-        weakref.finalize(robot, _CACHE.pop, key, None)
+    per_robot = _cache(robot).subsets
     c = per_robot.get(taut)
     if c is None:
         ones = np.ones(robot.n_cables)  # placeholder lengths, patched per update
@@ -115,25 +126,15 @@ def _attempt(robot: Robot, s: _State, taut: tuple[int, ...], lengths: np.ndarray
         return f"a taut set of {len(taut)} cable(s) has no isolated equilibrium to track"
     c = _compiled(robot, taut)
     system = c.system(lengths)
-    x0 = _unknowns(c, s, lengths)
-    x, ok = newton(system, x0)
-    if not ok:
+    status, x, lo, hi = certified_step(system, _unknowns(c, s, lengths), margin=BOX_MARGIN, floor=BOX_FLOOR)
+    if status == "newton-failed":
         return "Newton did not converge"
-    step = np.abs(x - x0)
-    # per component: the step (so x0 is inside) plus a floor that absorbs the O(step²)
-    # curvature terms of K(X) in the components that barely move
-    r = BOX_MARGIN * step + BOX_FLOOR * max(1.0, np.max(np.abs(x))) + np.max(step) ** 2
-    for _ in range(10):  # epsilon-inflation (Rump): retry on K(X) widened, still holding x0
-        res = krawczyk(system, x - r, x + r)
-        if res.status != "unknown":
-            break
-        r = np.maximum(r, 1.1 * np.maximum(res.hi - x, x - res.lo))
-    if res.status != "unique":
-        kind = "holds no equilibrium" if res.status == "empty" else "was not proven to hold a unique equilibrium"
-        return f"the Krawczyk box of half-width {np.max(r):.3g} around the step {kind}"
-    p, _, R = c.sub.pose(x, robot.orientation)
+    if status != "unique":
+        kind = "holds no equilibrium" if status == "empty" else "was not proven to hold a unique equilibrium"
+        return f"the Krawczyk box of half-width {0.5 * np.max(hi - lo):.3g} around the step {kind}"
+    p, R = c.sub.frame(x)
     n = robot.n_cables
-    return _State(taut, lengths, p, R, c.sub.tensions(x, lengths, n)), float(np.max(res.hi - res.lo))
+    return _State(taut, lengths, p, R, c.sub.tensions(x, lengths, n)), float(np.max(hi - lo))
 
 
 def _step(robot: Robot, s: _State, lengths: np.ndarray, halvings: int = MAX_HALVINGS) -> tuple[_State, float]:
@@ -194,7 +195,7 @@ def _state(robot: Robot, sol: DGPSolution, lengths: np.ndarray) -> _State:
 
 def _solution(robot: Robot, s: _State, lengths: np.ndarray, width: float) -> DGPSolution:
     idx = list(s.taut)
-    _, _, gp = load(robot)
+    gp = _cache(robot).load_point
     b = s.p + robot.anchors @ s.R.T
     stable = is_stable(robot.exits[idx], b[idx], s.p + s.R @ gp, s.tensions[idx], lengths[idx])
     return DGPSolution(tuple(i + 1 for i in s.taut), s.p, angles_from_matrix(s.R, robot.orientation),

@@ -30,9 +30,9 @@ import numpy as np
 from numba import njit
 
 from taut.interval.expression import System
-from taut.interval.hc4 import _forward, contract, contract_kernel, evaluate, evaluate_kernel
-from taut.interval.krawczyk import Certificate, _krawczyk, certify, krawczyk
-from taut.interval.linear import LinearFilter, float_inverse, linear_filter_kernel
+from taut.interval.hc4 import contract, contract_kernel, evaluate
+from taut.interval.krawczyk import Certificate, _krawczyk_box, certify, krawczyk
+from taut.interval.linear import LinearFilter, linear_filter_kernel
 
 
 @dataclass
@@ -157,43 +157,6 @@ def branch_and_prune(
 
 # Return codes of :func:`_drive`.
 _DONE, _CERTIFY, _UNDECIDED, _MAX_BOXES, _STACK_FULL = range(5)
-
-
-@njit(cache=True, fastmath=False)
-def _krawczyk_box(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, lo, hi):
-    """Numba twin of :func:`taut.interval.krawczyk.krawczyk`: ``(status, lo, hi)`` with
-    status 0 unknown, 1 unique, 2 empty."""
-    n = lo.size
-    nj = jstart.size
-    vl, vh = np.empty(nj), np.empty(nj)
-    evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, vl, vh)
-    Jl, Jh, Jm = np.zeros((h, n)), np.zeros((h, n)), np.zeros((h, n))
-    for k in range(nj):
-        Jl[rows[k], cols[k]], Jh[rows[k], cols[k]] = vl[k], vh[k]
-    for i in range(h):
-        for j in range(n):
-            Jm[i, j] = 0.5 * Jl[i, j] + 0.5 * Jh[i, j]
-    ok, C = float_inverse(Jm)
-    if not ok:
-        return 0, lo, hi
-    y = 0.5 * lo + 0.5 * hi
-    nodes = np.empty(op.size)
-    nodeh = np.empty(op.size)
-    fl, fh = np.empty(h), np.empty(h)
-    for c in range(h):
-        _forward(op, a, b, clo, chi, start[c], end[c], y, y, nodes, nodeh)
-        fl[c], fh[c] = nodes[end[c] - 1], nodeh[end[c] - 1]
-    kl, kh = _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)
-    nl, nh = np.maximum(kl, lo), np.minimum(kh, hi)
-    inner = True
-    for i in range(n):
-        if nl[i] > nh[i]:
-            return 2, nl, nh
-        if not (kl[i] > lo[i] and kh[i] < hi[i]):
-            inner = False
-    if inner:
-        return 1, kl, kh
-    return 0, nl, nh
 
 
 @njit(cache=True, fastmath=False)

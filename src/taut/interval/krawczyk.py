@@ -24,7 +24,8 @@ from numba import njit
 
 from taut.interval import kernels as K
 from taut.interval.expression import System
-from taut.interval.hc4 import evaluate, evaluate_point
+from taut.interval.hc4 import _forward, evaluate, evaluate_kernel, evaluate_point, point_kernel
+from taut.interval.linear import _precondition, float_inverse
 
 
 def jacobian(system: System, lo, hi) -> tuple[np.ndarray, np.ndarray]:
@@ -62,28 +63,6 @@ def newton(system: System, x0, tol: float = 1e-13, max_iter: int = 30) -> tuple[
         if np.max(np.abs(dx)) <= tol * max(1.0, np.max(np.abs(x))):
             return x, bool(np.all(np.isfinite(residual(system, x))))
     return x, False
-
-
-@njit(cache=True, fastmath=False)
-def _precondition(C, Jl, Jh):
-    """``S = C·J`` for a float matrix ``C`` and an interval matrix ``J``."""
-    h, n = C.shape[0], Jl.shape[1]
-    Sl = np.zeros((h, n))
-    Sh = np.zeros((h, n))
-    for i in range(h):
-        for j in range(n):
-            sl, sh = 0.0, 0.0
-            for k in range(C.shape[1]):
-                c, jl, jh = C[i, k], Jl[k, j], Jh[k, j]
-                if c == 0.0 or (jl == 0.0 and jh == 0.0):
-                    continue
-                if c > 0.0:  # point × interval: two rounded products instead of eight
-                    pl, ph = K._prod_down(c, jl), K._prod_up(c, jh)
-                else:
-                    pl, ph = K._prod_down(c, jh), K._prod_up(c, jl)
-                sl, sh = K.add(sl, sh, pl, ph)
-            Sl[i, j], Sh[i, j] = sl, sh
-    return Sl, Sh
 
 
 @njit(cache=True, fastmath=False)
@@ -155,6 +134,101 @@ def krawczyk(system: System, lo, hi) -> KrawczykResult:
     if np.all((kl > lo) & (kh < hi)):
         return KrawczykResult("unique", kl, kh)
     return KrawczykResult("unknown", nl, nh)
+
+
+@njit(cache=True, fastmath=False)
+def _krawczyk_box(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, lo, hi):
+    """Numba twin of :func:`krawczyk`: ``(status, lo, hi)`` with
+    status 0 unknown, 1 unique, 2 empty."""
+    n = lo.size
+    nj = jstart.size
+    vl, vh = np.empty(nj), np.empty(nj)
+    evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, vl, vh)
+    Jl, Jh, Jm = np.zeros((h, n)), np.zeros((h, n)), np.zeros((h, n))
+    for k in range(nj):
+        Jl[rows[k], cols[k]], Jh[rows[k], cols[k]] = vl[k], vh[k]
+    for i in range(h):
+        for j in range(n):
+            Jm[i, j] = 0.5 * Jl[i, j] + 0.5 * Jh[i, j]
+    ok, C = float_inverse(Jm)
+    if not ok:
+        return 0, lo, hi
+    y = 0.5 * lo + 0.5 * hi
+    nodes = np.empty(op.size)
+    nodeh = np.empty(op.size)
+    fl, fh = np.empty(h), np.empty(h)
+    for c in range(h):
+        _forward(op, a, b, clo, chi, start[c], end[c], y, y, nodes, nodeh)
+        fl[c], fh[c] = nodes[end[c] - 1], nodeh[end[c] - 1]
+    kl, kh = _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)
+    nl, nh = np.maximum(kl, lo), np.minimum(kh, hi)
+    inner = True
+    for i in range(n):
+        if nl[i] > nh[i]:
+            return 2, nl, nh
+        if not (kl[i] > lo[i] and kh[i] < hi[i]):
+            inner = False
+    if inner:
+        return 1, kl, kh
+    return 0, nl, nh
+
+@njit(cache=True, fastmath=False)
+def _certified_step(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, x0,
+                    margin, floor, tol, max_iter, inflations):
+    """Newton from ``x0``, then Krawczyk on the box around the limit ``x`` whose
+    half-width covers the step: ``margin·|x − x₀| + floor·max(1, ‖x‖∞) + ‖x − x₀‖∞²`` per
+    component, widened ``inflations`` times to the Krawczyk hull (ε-inflation, Rump 1983).
+    Returns ``(status, x, lo, hi)``: status 1 — ``[lo, hi]`` holds ``x₀`` and exactly one
+    solution, ``x``; 2 — the box holds none; 0 — undecided; −1 — Newton failed."""
+    n = x0.size
+    x = x0.copy()
+    f = np.empty(h)
+    jv = np.empty(jstart.size)
+    converged = False
+    for _ in range(max_iter):
+        point_kernel(op, a, b, clo, chi, start[:h], end[:h], x, f)
+        point_kernel(jop, ja, jb, jclo, jchi, jstart, jend, x, jv)
+        J = np.zeros((h, n))
+        for k in range(jv.size):
+            J[rows[k], cols[k]] = jv[k]
+        ok, C = float_inverse(J)
+        if not ok:
+            return -1, x, x, x
+        dx = C @ f
+        big, size = 0.0, 1.0
+        for i in range(n):
+            if not np.isfinite(dx[i]):
+                return -1, x, x, x
+            x[i] -= dx[i]
+            big = max(big, abs(dx[i]))
+            size = max(size, abs(x[i]))
+        if big <= tol * size:
+            converged = True
+            break
+    if not converged:
+        return -1, x, x, x
+    step = np.abs(x - x0)
+    r = margin * step + floor * max(1.0, np.max(np.abs(x))) + np.max(step) ** 2
+    status, rl, rh = 0, x, x
+    for _ in range(inflations):
+        status, rl, rh = _krawczyk_box(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend,
+                                       rows, cols, x - r, x + r)
+        if status != 0:
+            break
+        r = np.maximum(r, 1.1 * np.maximum(rh - x, x - rl))
+    return status, x, rl, rh
+
+
+def certified_step(system: System, x0, *, margin: float = 1.25, floor: float = 1e-8, tol: float = 1e-13,
+                   max_iter: int = 30, inflations: int = 10) -> tuple[str, np.ndarray, np.ndarray, np.ndarray]:
+    """One compiled Newton + Krawczyk step from ``x0`` (see :func:`_certified_step`):
+    ``(status, x, lo, hi)`` with status ``"unique"``, ``"empty"``, ``"unknown"`` or
+    ``"newton-failed"``.  The tracking update of :mod:`taut.dgp.tracking`."""
+    t, jt = system.tape, system.jacobian
+    code, x, lo, hi = _certified_step(*t.arrays[:7], system.n_equations, *jt.arrays[:7], system.rows, system.cols,
+                                      np.asarray(x0, float), float(margin), float(floor), float(tol), int(max_iter),
+                                      int(inflations))
+    return {1: "unique", 2: "empty", 0: "unknown", -1: "newton-failed"}[int(code)], x, lo, hi
 
 
 def inflate(system: System, x, delta: float = 1e-9, max_doublings: int = 60) -> float:

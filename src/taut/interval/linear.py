@@ -18,8 +18,28 @@ from numba import njit
 
 from taut.interval import kernels as K
 from taut.interval.hc4 import evaluate_kernel
-from taut.interval.krawczyk import _precondition
 
+
+@njit(cache=True, fastmath=False)
+def _precondition(C, Jl, Jh):
+    """``S = C·J`` for a float matrix ``C`` and an interval matrix ``J``."""
+    h, n = C.shape[0], Jl.shape[1]
+    Sl = np.zeros((h, n))
+    Sh = np.zeros((h, n))
+    for i in range(h):
+        for j in range(n):
+            sl, sh = 0.0, 0.0
+            for k in range(C.shape[1]):
+                c, jl, jh = C[i, k], Jl[k, j], Jh[k, j]
+                if c == 0.0 or (jl == 0.0 and jh == 0.0):
+                    continue
+                if c > 0.0:  # point × interval: two rounded products instead of eight
+                    pl, ph = K._prod_down(c, jl), K._prod_up(c, jh)
+                else:
+                    pl, ph = K._prod_down(c, jh), K._prod_up(c, jl)
+                sl, sh = K.add(sl, sh, pl, ph)
+            Sl[i, j], Sh[i, j] = sl, sh
+    return Sl, Sh
 
 @njit(cache=True, fastmath=False)
 def _gauss(Al, Ah, bl, bh):
