@@ -30,6 +30,7 @@ upper bound is needed, HC4 and the bisection rule of §3.1.4 bound them).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from fractions import Fraction
 
 import numpy as np
 from numba import njit
@@ -133,11 +134,58 @@ def _reference_choice(robot: Robot, taut, gp) -> tuple[list, np.ndarray]:
     return [c[0] for c in chosen], np.array([c[1] for c in chosen])
 
 
+def _enclose(x: Fraction) -> Expr:
+    """The constant ``x`` (exact rational) as the tightest float interval holding it."""
+    f = float(x)  # correctly rounded
+    if Fraction(f) == x:
+        return const(f)
+    return const(float(np.nextafter(f, -np.inf)), float(np.nextafter(f, np.inf)))
+
+
+def _exact(v) -> list[Fraction]:
+    return [Fraction(float(c)) for c in np.ravel(v)]
+
+
+def _exact_cross(u, w) -> list[Fraction]:
+    return [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
+
+
+def _exact_load(robot: Robot) -> tuple[list[Fraction], list[Fraction]]:
+    """``(f, m_ext)`` of :func:`load` in exact rational arithmetic."""
+    plat = robot.platform
+    w = _exact(plat.wrench) if plat.wrench is not None else [Fraction(0)] * 6
+    if plat.mass is not None:
+        g = _exact(plat.gravity) if plat.gravity is not None else _exact([0.0, 0.0, -9.81])
+        w = [w[k] + Fraction(float(plat.mass)) * g[k] if k < 3 else w[k] for k in range(6)]
+    return w[:3], w[3:]
+
+
+def _coordinates(refs: np.ndarray, body: np.ndarray) -> list[Fraction]:
+    """Exact ``β`` of Eq. 2.22: ``body − r₁ = β₂(r₂ − r₁) + β₃(r₃ − r₁) + β₄(r₂ − r₁)×(r₃ − r₁)``,
+    by Cramer's rule on rationals (a zero ``β`` — coplanar points — is exactly zero)."""
+    r0, r1, r2, pt = (_exact(x) for x in (refs[0], refs[1], refs[2], body))
+    cols = [[r1[k] - r0[k] for k in range(3)], [r2[k] - r0[k] for k in range(3)]]
+    cols.append(_exact_cross(cols[0], cols[1]))
+    rhs = [pt[k] - r0[k] for k in range(3)]
+
+    def det(c):
+        return sum(c[0][k] * _exact_cross(c[1], c[2])[k] for k in range(3))
+
+    d = det(cols)
+    return [det(cols[:j] + [rhs] + cols[j + 1:]) / d for j in range(3)]
+
+
 def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -> Subproblem:
-    """The square system of §2.3 for the taut cables ``taut`` (0-based), ``1 ≤ m ≤ 6``."""
+    """The square system of §2.3 for the taut cables ``taut`` (0-based), ``1 ≤ m ≤ 6``.
+
+    Every constant derived from the robot's data (the ``β`` of secondary points, squared
+    distances between reference points, exit-point differences, the load) is computed in
+    exact rational arithmetic and entered as the float interval enclosing it, so the
+    system holds the exact one of the data (DESIGN §5: outward rounding throughout)."""
     n, m = robot.n_cables, len(taut)
     a, r = robot.exits, robot.anchors
-    f, mext, gp = load(robot)
+    _, _, gp = load(robot)
+    f, mext = _exact_load(robot)
     labels, refs = _reference_choice(robot, taut, gp)
     v = variables(9 + m)
     q = [v[0:3], v[3:6], v[6:9]]
@@ -145,14 +193,12 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
     e1 = [q[1][k] - q[0][k] for k in range(3)]
     e2 = [q[2][k] - q[0][k] for k in range(3)]
     n12 = _cross(e1, e2)
-    Eb = np.column_stack([refs[1] - refs[0], refs[2] - refs[0], np.cross(refs[1] - refs[0], refs[2] - refs[0])])
 
     def point(label, body) -> list[Expr]:
         if label in labels:
             return q[labels.index(label)]
-        beta = np.linalg.solve(Eb, body - refs[0])
-        beta = np.where(np.abs(beta) < 1e-14, 0.0, beta)
-        return [q[0][k] + float(beta[0]) * e1[k] + float(beta[1]) * e2[k] + float(beta[2]) * n12[k] for k in range(3)]
+        beta = [_enclose(x) for x in _coordinates(refs, body)]
+        return [q[0][k] + beta[0] * e1[k] + beta[1] * e2[k] + beta[2] * n12[k] for k in range(3)]
 
     b = {i: point(i, r[i]) for i in range(n)}
     g = point("G", gp)
@@ -162,22 +208,23 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
 
     eqs: list[Expr] = []
     for i, j in ((0, 1), (0, 2), (1, 2)):
-        d = float(np.linalg.norm(refs[i] - refs[j]))
-        eqs.append(sum(((q[i][k] - q[j][k]) ** 2 for k in range(3)), const(0.0)) - const(d) ** 2)
+        d2 = sum((x - y) ** 2 for x, y in zip(_exact(refs[i]), _exact(refs[j])))
+        eqs.append(sum(((q[i][k] - q[j][k]) ** 2 for k in range(3)), const(0.0)) - _enclose(d2))
     for i in taut:
         eqs.append(dist2(b[i], a[i]) - const(float(lengths[i])) ** 2)
     for k in range(3):
-        eqs.append(sum((t[i] * (float(a[i][k]) - b[i][k]) for i in taut), const(0.0)) + float(f[k]))
+        eqs.append(sum((t[i] * (float(a[i][k]) - b[i][k]) for i in taut), const(0.0)) + _enclose(f[k]))
 
     def moment_arm(i, pole, k) -> Expr:
         """``((b_i − pole) × (a_i − pole))_k``."""
         k1, k2 = (k + 1) % 3, (k + 2) % 3
-        c = a[i] - pole
-        return (b[i][k1] - float(pole[k1])) * float(c[k2]) - (b[i][k2] - float(pole[k2])) * float(c[k1])
+        c = [x - y for x, y in zip(_exact(a[i]), _exact(pole))]
+        return (b[i][k1] - float(pole[k1])) * _enclose(c[k2]) - (b[i][k2] - float(pole[k2])) * _enclose(c[k1])
 
     def load_moment(pole, k) -> Expr:
         k1, k2 = (k + 1) % 3, (k + 2) % 3
-        return ((g[k1] - float(pole[k1])) * float(f[k2]) - (g[k2] - float(pole[k2])) * float(f[k1])) + float(mext[k])
+        return ((g[k1] - float(pole[k1])) * _enclose(f[k2]) - (g[k2] - float(pole[k2])) * _enclose(f[k1])) \
+            + _enclose(mext[k])
 
     def moments(pole) -> list[Expr]:
         out = []
@@ -196,17 +243,17 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
     system = compile_system(9 + m, eqs, extra)
     pole = a[taut[0]]
     J = [[float(a[i][k]) - b[i][k] for i in taut] for k in range(3)] + [[moment_arm(i, pole, k) for i in taut] for k in range(3)]
-    rhs = [const(-float(f[k])) for k in range(3)] + [-load_moment(pole, k) for k in range(3)]
+    rhs = [-_enclose(f[k]) for k in range(3)] + [-load_moment(pole, k) for k in range(3)]
     statics_tape = compile_tape([e for row in J for e in row] + rhs, [(-np.inf, np.inf)] * (6 * m + 6))
 
     lo = np.full(9 + m, -np.inf)
     hi = np.full(9 + m, np.inf)
     for s, (lab, body) in enumerate(zip(labels, refs)):
         for j in taut:
-            d = float(np.linalg.norm(body - r[j]))
-            rad = lengths[j] + d
-            lo[3 * s : 3 * s + 3] = np.maximum(lo[3 * s : 3 * s + 3], a[j] - rad)
-            hi[3 * s : 3 * s + 3] = np.minimum(hi[3 * s : 3 * s + 3], a[j] + rad)
+            # radius rounded up by a few ulps, the box edges outwards: the sphere is inside
+            rad = (lengths[j] + float(np.linalg.norm(body - r[j]))) * (1.0 + 4.0 * np.finfo(float).eps)
+            lo[3 * s : 3 * s + 3] = np.maximum(lo[3 * s : 3 * s + 3], np.nextafter(a[j] - rad, -np.inf))
+            hi[3 * s : 3 * s + 3] = np.minimum(hi[3 * s : 3 * s + 3], np.nextafter(a[j] + rad, np.inf))
     lo[9:], hi[9:] = 0.0, np.inf
     primary = np.arange(9 + m) < 9
     return Subproblem(tuple(taut), system, lo, hi, primary, refs, StaticsFilter(statics_tape, m))
