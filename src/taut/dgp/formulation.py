@@ -25,6 +25,10 @@ exit point, and the slack-cable inequalities ``‖b_k − a_k‖² ≤ ρ_k²`` 
 initial box (§3.1.1, Eqs. 3.1–3.2) bounds each reference point by the spheres around the
 taut exit points, ``‖q − a_j‖ ≤ ρ_j + d_jq``; tensions start in ``[0, ∞)`` (§3.1.1: no
 upper bound is needed, HC4 and the bisection rule of §3.1.4 bound them).
+
+Six taut cables (§3.1.3, last paragraph): the tensions are not unknowns — the 9 equations
+(rigidity, lengths) fix the pose, the statics is square, and its interval solution only
+discards boxes where a tension must be negative; a solution's tensions are then solved for.
 """
 
 from __future__ import annotations
@@ -37,6 +41,7 @@ from numba import njit
 
 from taut.geometry.rotation import angles_from_matrix
 from taut.interval.expression import Expr, System, Tape, compile_system, compile_tape, const, variables
+from taut.interval.hc4 import evaluate_point
 from taut.interval.linear import LinearFilter
 from taut.model.robot import Robot
 
@@ -91,9 +96,22 @@ class Subproblem:
         """``(position p, rotation R)`` of the platform frame from the unknowns ``x``."""
         return _frame(np.ascontiguousarray(x[:9]).reshape(3, 3), self.body_refs)
 
+    @property
+    def tension_unknowns(self) -> bool:
+        """False for six taut cables: the unknowns are the reference points alone and the
+        tensions follow from the (square) statics (§3.1.3)."""
+        return self.system.n > 9
+
     def tensions(self, x: np.ndarray, lengths: np.ndarray, n: int) -> np.ndarray:
+        """Tensions of all ``n`` cables (0 for slack ones) at the unknowns ``x``."""
+        idx = list(self.taut)
         tau = np.zeros(n)
-        tau[list(self.taut)] = x[9:] * lengths[list(self.taut)]
+        if self.tension_unknowns:
+            tau[idx] = x[9:] * lengths[idx]
+        else:
+            v = evaluate_point(self.statics.tape, np.asarray(x, float))
+            m = len(idx)
+            tau[idx] = np.linalg.solve(v[: 6 * m].reshape(6, m), v[6 * m :]) * lengths[idx]
         return tau
 
 
@@ -187,7 +205,9 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
     _, _, gp = load(robot)
     f, mext = _exact_load(robot)
     labels, refs = _reference_choice(robot, taut, gp)
-    v = variables(9 + m)
+    # six taut cables: the statics is square and only checks the sign of its solution
+    unknowns = 9 if m == 6 else 9 + m
+    v = variables(unknowns)
     q = [v[0:3], v[3:6], v[6:9]]
     t = dict(zip(taut, v[9:]))
     e1 = [q[1][k] - q[0][k] for k in range(3)]
@@ -212,8 +232,9 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
         eqs.append(sum(((q[i][k] - q[j][k]) ** 2 for k in range(3)), const(0.0)) - _enclose(d2))
     for i in taut:
         eqs.append(dist2(b[i], a[i]) - const(float(lengths[i])) ** 2)
-    for k in range(3):
-        eqs.append(sum((t[i] * (float(a[i][k]) - b[i][k]) for i in taut), const(0.0)) + _enclose(f[k]))
+    if m < 6:
+        for k in range(3):
+            eqs.append(sum((t[i] * (float(a[i][k]) - b[i][k]) for i in taut), const(0.0)) + _enclose(f[k]))
 
     def moment_arm(i, pole, k) -> Expr:
         """``((b_i − pole) × (a_i − pole))_k``."""
@@ -235,19 +256,21 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
             out.append(acc)
         return out
 
-    eqs += moments(a[taut[0]])
-    extra = [(e, (0.0, 0.0)) for j in taut[1:] for e in moments(a[j])]
+    extra = []
+    if m < 6:
+        eqs += moments(a[taut[0]])
+        extra += [(e, (0.0, 0.0)) for j in taut[1:] for e in moments(a[j])]
     for k in range(n):
         if k not in taut:
             extra.append((dist2(b[k], a[k]) - const(float(lengths[k])) ** 2, (-np.inf, 0.0)))
-    system = compile_system(9 + m, eqs, extra)
+    system = compile_system(unknowns, eqs, extra)
     pole = a[taut[0]]
     J = [[float(a[i][k]) - b[i][k] for i in taut] for k in range(3)] + [[moment_arm(i, pole, k) for i in taut] for k in range(3)]
     rhs = [-_enclose(f[k]) for k in range(3)] + [-load_moment(pole, k) for k in range(3)]
     statics_tape = compile_tape([e for row in J for e in row] + rhs, [(-np.inf, np.inf)] * (6 * m + 6))
 
-    lo = np.full(9 + m, -np.inf)
-    hi = np.full(9 + m, np.inf)
+    lo = np.full(unknowns, -np.inf)
+    hi = np.full(unknowns, np.inf)
     for s, (lab, body) in enumerate(zip(labels, refs)):
         for j in taut:
             # radius rounded up by a few ulps, the box edges outwards: the sphere is inside
@@ -255,5 +278,5 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
             lo[3 * s : 3 * s + 3] = np.maximum(lo[3 * s : 3 * s + 3], np.nextafter(a[j] - rad, -np.inf))
             hi[3 * s : 3 * s + 3] = np.minimum(hi[3 * s : 3 * s + 3], np.nextafter(a[j] + rad, np.inf))
     lo[9:], hi[9:] = 0.0, np.inf
-    primary = np.arange(9 + m) < 9
-    return Subproblem(tuple(taut), system, lo, hi, primary, refs, StaticsFilter(statics_tape, m))
+    primary = np.arange(unknowns) < 9
+    return Subproblem(tuple(taut), system, lo, hi, primary, refs, StaticsFilter(statics_tape, m, sign_only=m == 6))

@@ -89,14 +89,24 @@ def _solve_subset(job) -> tuple[list[DGPSolution], int, int]:
     res = branch_and_prune(sp.system, sp.lo, sp.hi, primary=sp.primary, eps=eps, filters=(sp.statics,),
                            certify_width=1.0, passes=4)
     idx = list(taut)
+    undecided = len(res.undecided)
     for c in res.solutions:
+        if not sp.tension_unknowns:
+            # the sign of the tensions over the certified box: all positive, or the
+            # solution is infeasible or belongs to a smaller subset (a zero tension)
+            enc = sp.statics.enclosure(c.lo, c.hi)
+            if enc is None:
+                undecided += 1
+                continue
+            if not np.all(enc[0] > 0.0):
+                continue
         p, ang, R = sp.pose(c.x, robot.orientation)
         tau = sp.tensions(c.x, lengths, n)
         b = p + r @ R.T
         g = p + R @ gp
         stable = is_stable(a[idx], b[idx], g, tau[idx], lengths[idx])
         out.append(DGPSolution(tuple(i + 1 for i in taut), p, ang, tau, stable, c.width, c.radius))
-    return out, len(res.undecided), res.boxes
+    return out, undecided, res.boxes
 
 
 def solve_dgp(robot: Robot, lengths=None, *, max_taut: int | None = None, executor=None, eps: float = 1e-7) -> DGPResult:

@@ -116,6 +116,8 @@ class _State:
 def _unknowns(c: _Compiled, s: _State, lengths: np.ndarray) -> np.ndarray:
     """The sub-problem's unknowns (reference points, ``τ/ρ``) of a pose and tensions."""
     q = s.p + c.sub.body_refs @ s.R.T
+    if not c.sub.tension_unknowns:
+        return q.ravel()
     idx = list(c.sub.taut)
     return np.concatenate([q.ravel(), s.tensions[idx] / lengths[idx]])
 

@@ -162,7 +162,7 @@ _DONE, _CERTIFY, _UNDECIDED, _MAX_BOXES, _STACK_FULL = range(5)
 @njit(cache=True, fastmath=False)
 def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
            jop, ja, jb, jclo, jchi, jstart, jend, rows, cols,
-           fop, fa, fb, fclo, fchi, fstart, fend, fm,
+           fop, fa, fb, fclo, fchi, fstart, fend, fm, fsign,
            stk_lo, stk_hi, sp, sol_x, sol_r, nsol, lo0, hi0, primary,
            eps, certify_width, newton_width, max_boxes, boxes, out, passes, gain, ratio, stats):
     """The loop of :func:`branch_and_prune` on the stack ``stk_lo[:sp], stk_hi[:sp]``
@@ -188,7 +188,7 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
                 dead = True
                 break
             if fm > 0:
-                if not linear_filter_kernel(fop, fa, fb, fclo, fchi, fstart, fend, fm, lo, hi):
+                if not linear_filter_kernel(fop, fa, fb, fclo, fchi, fstart, fend, fm, fsign, lo, hi):
                     stats[1] += 1
                     dead = True
                     break
@@ -289,9 +289,9 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
     t, jt = system.tape, system.jacobian
     if filters:
         f = filters[0]
-        ftape, fm = f.tape.arrays[:7], f.m
+        ftape, fm, fsign = f.tape.arrays[:7], f.m, f.sign_only
     else:
-        ftape, fm = jt.arrays[:7], 0
+        ftape, fm, fsign = jt.arrays[:7], 0, False
     cap = 4096
     stk_lo, stk_hi = np.empty((cap, n)), np.empty((cap, n))
     stk_lo[0], stk_hi[0] = lo0, hi0
@@ -310,7 +310,7 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
 
     while True:
         code, sp, boxes, unique = _drive(
-            *t.arrays, system.n_equations, *jt.arrays[:7], system.rows, system.cols, *ftape, fm,
+            *t.arrays, system.n_equations, *jt.arrays[:7], system.rows, system.cols, *ftape, fm, fsign,
             stk_lo, stk_hi, sp, sol_x, sol_r, len(out.solutions), lo0, hi0, primary,
             float(eps), float(certify_width), float(newton_width), int(max_boxes), boxes, buf, int(passes), float(gain), float(ratio), stats,
         )

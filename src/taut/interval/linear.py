@@ -166,10 +166,12 @@ def _generalised_inverse(J):
 
 
 @njit(cache=True, fastmath=False)
-def linear_filter_kernel(op, a, b, clo, chi, start, end, m, lo, hi):
-    """Contract the last ``m`` variables of the box with the interval linear system
-    ``[A](X) t = [b](X)`` whose ``r·m`` matrix entries (row-major) and ``r`` right-hand
-    sides are the constraints of the tape; False when the box is proven empty."""
+def enclosure_kernel(op, a, b, clo, chi, start, end, m, lo, hi):
+    """Enclosure ``(ok, t_lo, t_hi)`` of the solutions ``t`` (``m`` of them) of the interval
+    linear system ``[A](X) t = [b](X)`` whose ``r·m`` matrix entries (row-major) and ``r``
+    right-hand sides are the constraints of the tape, over the box ``X = [lo, hi]``:
+    preconditioned by the generalised inverse of ``mid A`` (Eq. 3.12), then interval Gauss.
+    ``ok`` is False when no enclosure is found (a singular or unbounded ``A``)."""
     nc = start.size
     vl, vh = np.empty(nc), np.empty(nc)
     evaluate_kernel(op, a, b, clo, chi, start, end, lo, hi, vl, vh)
@@ -177,26 +179,40 @@ def linear_filter_kernel(op, a, b, clo, chi, start, end, m, lo, hi):
     k = r * m
     Al, Ah = np.empty((r, m)), np.empty((r, m))
     Am = np.empty((r, m))
+    none = np.empty(0)
     for i in range(r):
         for j in range(m):
             Al[i, j], Ah[i, j] = vl[i * m + j], vh[i * m + j]
             Am[i, j] = 0.5 * Al[i, j] + 0.5 * Ah[i, j]
             if not np.isfinite(Am[i, j]):
-                return True
+                return False, none, none
     ok, Kp = _generalised_inverse(Am)
     if not ok:
-        return True
+        return False, none, none
     for i in range(Kp.shape[0]):
         for j in range(Kp.shape[1]):
             if not np.isfinite(Kp[i, j]):
-                return True
+                return False, none, none
     Cl, Ch = _precondition(Kp, Al, Ah)
     bl, bh = np.empty((r, 1)), np.empty((r, 1))
     for i in range(r):
         bl[i, 0], bh[i, 0] = vl[k + i], vh[k + i]
     rl, rh = _precondition(Kp, bl, bh)
-    ok, tl, th = _gauss(Cl, Ch, rl[:, 0].copy(), rh[:, 0].copy())
+    return _gauss(Cl, Ch, rl[:, 0].copy(), rh[:, 0].copy())
+
+
+@njit(cache=True, fastmath=False)
+def linear_filter_kernel(op, a, b, clo, chi, start, end, m, sign_only, lo, hi):
+    """Contract the last ``m`` variables of the box with the enclosure of
+    :func:`enclosure_kernel`, or — ``sign_only``, the unknowns hold no ``t`` — check that
+    every ``t_j`` may be non-negative; False when the box is proven empty."""
+    ok, tl, th = enclosure_kernel(op, a, b, clo, chi, start, end, m, lo, hi)
     if not ok:
+        return True
+    if sign_only:
+        for j in range(m):
+            if th[j] < 0.0:
+                return False
         return True
     t0 = lo.size - m
     for j in range(m):
@@ -213,11 +229,20 @@ class LinearFilter:
     """A filter ``f(lo, hi) -> bool`` for :func:`taut.interval.branch_and_prune`: the last
     ``m`` variables solve the interval linear system compiled in ``tape`` (``r·m`` matrix
     entries row-major, then the ``r`` right-hand sides), enclosed by
-    :func:`preconditioned_solve`.  The branch-and-prune kernel runs it without Python."""
+    :func:`enclosure_kernel`.  With ``sign_only`` the solutions ``t ≥ 0`` of the system are
+    not unknowns of the box: the filter only rejects boxes where some ``t_j`` must be
+    negative.  The branch-and-prune kernel runs it without Python."""
 
-    def __init__(self, tape, m: int):
-        self.tape, self.m = tape, int(m)
+    def __init__(self, tape, m: int, sign_only: bool = False):
+        self.tape, self.m, self.sign_only = tape, int(m), bool(sign_only)
 
     def __call__(self, lo: np.ndarray, hi: np.ndarray) -> bool:
         op, a, b, clo, chi, start, end, _, _ = self.tape.arrays
-        return bool(linear_filter_kernel(op, a, b, clo, chi, start, end, self.m, lo, hi))
+        return bool(linear_filter_kernel(op, a, b, clo, chi, start, end, self.m, self.sign_only, lo, hi))
+
+    def enclosure(self, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+        """``(t_lo, t_hi)`` enclosing the solutions of the system over the box, or None."""
+        op, a, b, clo, chi, start, end, _, _ = self.tape.arrays
+        ok, tl, th = enclosure_kernel(op, a, b, clo, chi, start, end, self.m, np.asarray(lo, float),
+                                      np.asarray(hi, float))
+        return (tl, th) if ok else None

@@ -1,0 +1,38 @@
+"""Table 4.5 of 001_eb92e2f6589fc229.txt (MARIONET-VR, 6 cables, platform anchors not
+coplanar): the sub-problem with all 6 cables taut has exactly Conf. 1–3, all stable.
+The OCR lost z of Conf. 1–2 and τ4 of Conf. 1, τ2 of Conf. 2–3 (None below): the equations
+give them (z = 0.778 and 0.338; τ4 = 0.078; τ2 = 0.291 and 0.271)."""
+
+import numpy as np
+import pytest
+
+from taut.dgp.solve import _solve_subset
+from taut.kinematics import inverse_kinematics
+from taut.model import load_robot
+
+ROBOT = load_robot("marionet-vr")
+LENGTHS = np.array(ROBOT.reference.lengths)
+TABLE = [  # Conf. 1-3 (m = 6): x, y, z, phi_x, phi_y, phi_z; tau_1..tau_6
+    ([-0.270, 0.235, None, 2.554, 0.124, 0.080], [0.398, 0.226, 0.248, None, 0.244, 0.268]),
+    ([0.253, -0.520, None, 0.960, -0.105, -3.077], [0.262, None, 0.293, 0.278, 0.314, 0.283]),
+    ([-0.278, -1.470, 0.549, -0.670, 0.014, -0.043], [0.374, None, 0.156, 0.004, 0.376, 0.220]),
+]
+
+
+def _close(values, printed, atol):
+    pairs = [(v, p) for v, p in zip(values, printed) if p is not None]
+    return all(abs(v - p) <= atol for v, p in pairs)
+
+
+@pytest.mark.slow
+def test_table_4_5_six_taut_cables():
+    sols, undecided, boxes = _solve_subset((ROBOT, LENGTHS, tuple(range(6)), 1e-7))
+    assert undecided == 0 and boxes > 0 and len(sols) == 3
+    for pose, tensions in TABLE:
+        match = [s for s in sols if _close(np.r_[s.position, s.orientation], pose, 2e-3)]
+        assert len(match) == 1, pose
+        s = match[0]
+        assert _close(s.tensions, tensions, 2e-3)
+        assert s.stable and s.uniqueness_radius > 0 and s.certificate_width < 1e-9
+        lengths = inverse_kinematics(ROBOT, np.concatenate([s.position, s.orientation])).lengths
+        assert np.allclose(lengths, LENGTHS, atol=1e-9)
