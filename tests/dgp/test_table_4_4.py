@@ -1,0 +1,46 @@
+"""Table 4.4 of 001_eb92e2f6589fc229.txt (CoGiRo, 8 cables, platform anchors not coplanar):
+the 28 sub-problems with 6 taut cables hold exactly Conf. 1–6, all stable.  The printed
+angles are ill-conditioned in the 3-digit data: Conf. 3 comes out at φx = 1.044, φz = −0.770
+(printed 1.048, −0.765) with the lengths met to 1e-9, hence the 1e-2 tolerance on angles."""
+
+from itertools import combinations
+
+import numpy as np
+import pytest
+
+from taut.dgp.solve import _solve_subset
+from taut.kinematics import inverse_kinematics
+from taut.model import load_robot
+from taut.parallel import get_executor
+
+ROBOT = load_robot("cogiro")
+LENGTHS = np.array(ROBOT.reference.lengths)
+TABLE = [  # Conf. 1-6 (m = 6): x, y, z, phi_x, phi_y, phi_z; tau_1..tau_8
+    ([-0.465, -0.309, 1.988, 2.177, -0.505, 1.499], [0, 0.655, 0, 0.680, 0.309, 0.311, 0.632, 0.136]),
+    ([-0.182, -0.481, 1.631, -0.027, -0.718, -3.121], [0, 0.874, 0.396, 0.071, 0.445, 0.279, 0.683, 0]),
+    ([0.519, 1.329, 2.460, 1.048, 1.339, -0.765], [0.454, 0.279, 0, 0.761, 0, 0.879, 0.340, 0.305]),
+    ([0.635, 0.381, 1.697, 0.396, 0.646, -2.999], [0.389, 0.269, 0.710, 0, 0, 0.818, 0.471, 0.091]),
+    ([0.921, 0.236, 1.989, -2.193, 0.243, 1.421], [0.358, 0.219, 0.617, 0.154, 0, 0.628, 0, 0.724]),
+    ([0.416, 0.564, 1.627, 2.761, -1.363, -1.210], [0.670, 0.085, 0.027, 0.589, 0, 0.741, 0.697, 0]),
+]
+
+
+@pytest.mark.slow
+def test_table_4_4_six_taut_cables():
+    jobs = [(ROBOT, LENGTHS, taut, 1e-7) for taut in combinations(range(8), 6)]
+    with get_executor(workers=2) as ex:
+        parts = ex.map(_solve_subset, jobs)
+    sols = [s for found, _, _ in parts for s in found]
+    assert sum(und for _, und, _ in parts) == 0
+    assert len(sols) == 6
+    for pose, tensions in TABLE:
+        match = [s for s in sols if np.allclose(s.position, pose[:3], atol=2e-3)
+                 and np.allclose(s.orientation, pose[3:], atol=1e-2)]
+        assert len(match) == 1, pose
+        s = match[0]
+        assert s.taut == tuple(i + 1 for i, t in enumerate(tensions) if t > 0)
+        assert np.allclose(s.tensions, tensions, atol=3e-3)
+        assert s.stable and s.uniqueness_radius > 0 and s.certificate_width < 1e-9
+        lengths = inverse_kinematics(ROBOT, np.concatenate([s.position, s.orientation])).lengths
+        assert np.allclose(lengths[list(np.array(s.taut) - 1)], LENGTHS[list(np.array(s.taut) - 1)], atol=1e-9)
+        assert np.all(lengths <= LENGTHS + 1e-9)
