@@ -91,3 +91,28 @@ def test_bad_lengths(start):
         track(ROBOT, start, LENGTHS[:2])
     with pytest.raises(TautError):
         track(ROBOT, start, [1.0, -1.0, 1.0])
+
+
+def test_six_taut_cables_track_without_tension_unknowns():
+    robot = load_robot("marionet-vr")  # Table 4.5 Conf. 3 (m = 6)
+    L = np.array(robot.reference.lengths)
+    sp = build_subproblem(robot, L, tuple(range(6)))
+    assert not sp.tension_unknowns
+    pose = np.array([-0.278, -1.470, 0.549, -0.670, 0.014, -0.043])
+    q = pose[:3] + sp.body_refs @ rotation_matrix(pose[3:], "xyz-fixed").T
+    cert = certify(sp.system, q.ravel())
+    p, ang, _ = sp.pose(cert.x, "xyz-fixed")
+    start = DGPSolution(tuple(range(1, 7)), p, ang, sp.tensions(cert.x, L, 6), True, cert.width, cert.radius)
+    assert np.all(start.tensions > 0)
+    path = [L + k * 0.001 * np.array([1.0, -1.0, 0.5, 0.0, 0.5, -1.0]) for k in range(1, 21)]
+    sols = track_path(robot, start, path)
+    for sol, lengths in zip(sols, path):
+        R = rotation_matrix(sol.orientation, robot.orientation)
+        b = sol.position + robot.anchors @ R.T
+        taut = [i - 1 for i in sol.taut]
+        assert np.allclose(np.linalg.norm(b[taut] - robot.exits[taut], axis=1), lengths[taut], atol=1e-9)
+        f, m, gp = load(robot)
+        u = (robot.exits - b) / np.linalg.norm(robot.exits - b, axis=1)[:, None] * sol.tensions[:, None]
+        assert np.max(np.abs(u.sum(axis=0) + f)) < 1e-9
+        assert np.max(np.abs(np.cross(b - sol.position, u).sum(axis=0) + np.cross(R @ gp, f) + m)) < 1e-9
+    assert not np.allclose(sols[-1].position, start.position, atol=1e-3)
