@@ -45,10 +45,15 @@ def reduced_hessian(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray
     return N.T @ H @ N
 
 
+@njit(cache=True)
+def _smallest_eigenvalue(a, b, g, tau, rho) -> float:
+    Hr = reduced_hessian(a, b, g, tau, rho)
+    if Hr.size == 0:
+        return np.inf
+    return np.linalg.eigvalsh(0.5 * (Hr + Hr.T))[0]
+
+
 def is_stable(a, b, g, tau, rho) -> bool:
     """Positive-definite reduced Hessian (sufficient condition of §3.2.2); a fully
     constrained equilibrium (empty null space) is stable."""
-    Hr = reduced_hessian(*(np.ascontiguousarray(v, dtype=float) for v in (a, b, g, tau, rho)))
-    if Hr.size == 0:
-        return True
-    return bool(np.all(np.linalg.eigvalsh(0.5 * (Hr + Hr.T)) > 0.0))
+    return bool(_smallest_eigenvalue(*(np.ascontiguousarray(v, dtype=float) for v in (a, b, g, tau, rho))) > 0.0)
