@@ -18,6 +18,15 @@ class InfeasiblePoseError(PoseError):
     """A pose at which the requested quantity does not exist (e.g. a zero-length cable)."""
 
 
+class CableSetError(TautError):
+    """A set of cable numbers out of range, duplicated, or of a size the analysis does not take."""
+
+
+class UnsupportedRobotError(TautError):
+    """A robot the requested analysis does not handle (e.g. a planar or point-mass platform
+    for the spatial geometrico-static problems)."""
+
+
 class SingularConfigurationError(TautError):
     """A configuration at which the structure matrix or a Jacobian is singular."""
 

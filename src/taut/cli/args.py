@@ -44,6 +44,23 @@ def vector(text: str, what: str) -> np.ndarray:
     return np.array([number(p, what) for p in parts])
 
 
+def assignments(text: str, what: str) -> dict[str, float | None]:
+    """``name=value,...`` (values as :func:`number`, so ``35deg`` and ``pi/8`` work); a bare
+    ``name`` maps to None (the caller decides what it stands for).  Names are lower-cased."""
+    out: dict[str, float | None] = {}
+    for item in text.split(","):
+        if not item.strip():
+            continue
+        name, eq, value = item.partition("=")
+        name = name.strip().lower()
+        if not name:
+            raise TautError(f"{what}: expected name=value, got {item.strip()!r}")
+        if name in out:
+            raise TautError(f"{what}: {name!r} is given twice")
+        out[name] = number(value, f"{what} {name}") if eq else None
+    return out
+
+
 def pose(robot: Robot, text: str) -> np.ndarray:
     """``x,y`` / ``x,y,theta`` / ``x,y,z,a,b,c`` followed by joint coordinates."""
     values = vector(text, "--pose")

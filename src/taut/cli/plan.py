@@ -34,16 +34,11 @@ def _fixed(text: str | None, start: np.ndarray) -> dict[str, float]:
     from taut.cli import args as A
     from taut.planning.manifold import POSE_NAMES
 
-    out: dict[str, float] = {}
-    for item in (text or "").split(","):
-        if not item.strip():
-            continue
-        name, eq, value = item.partition("=")
-        name = name.strip().lower()
+    values = A.assignments(text or "", "--fix")
+    for name in values:
         if name not in POSE_NAMES:
             raise TautError(f"--fix: unknown coordinate {name!r}; expected {', '.join(POSE_NAMES)}")
-        out[name] = A.number(value, f"--fix {name}") if eq else float(start[POSE_NAMES.index(name)])
-    return out
+    return {name: float(start[POSE_NAMES.index(name)]) if v is None else v for name, v in values.items()}
 
 
 def _ellipsoid(text: str | None) -> np.ndarray:

@@ -1,0 +1,119 @@
+"""``taut igp ROBOT --taut 1,2,3 --fix x=0.3,y=0.4,z=0.1 [--box ...] [--json]``: the inverse
+geometrico-static problem (:func:`taut.dgp.solve_igp`).  No solution is an empty list, not
+an error."""
+
+from __future__ import annotations
+
+from taut.errors import CableSetError, PoseError
+
+HELP = """With the cables of --taut taut (m of them, 2 <= m <= 6) only m pose coordinates
+can be assigned: give them with --fix (names x, y, z and the robot's angle names, e.g.
+a, b, c or phix, phiy, phiz for xyz conventions, phi, theta, sigma for tilt-torsion;
+angles in rad, or 30deg, pi/8).  Every equilibrium with tensions >= 0 is found and
+certified (001_eb92e2f6589fc229.txt §4.1.2; interval branch-and-prune): the free
+coordinates, the tensions and the cable lengths to command.  A slack cable's length is
+its span (pay out at least that much); cables outside their length bounds are listed.
+JSON: {"robot", "taut", "assigned", "solutions": [{"taut", "position", "orientation",
+"tensions", "lengths", "slack", "length_violations", "stable", "certificate_width",
+"uniqueness_radius"}], "undecided_boxes", "boxes", "exhausted", "elapsed_s"}; the list is
+complete when undecided_boxes is 0."""
+
+
+def _cables(text: str) -> list[int]:
+    try:
+        return [int(p) for p in text.split(",")]
+    except ValueError:
+        raise CableSetError(f"--taut: expected comma-separated cable numbers, got {text!r}") from None
+
+
+def _assigned(text: str) -> dict[str, float]:
+    from taut.cli import args as A
+
+    values = A.assignments(text, "--fix")
+    bare = [name for name, v in values.items() if v is None]
+    if bare:
+        raise PoseError(f"--fix: give a value to {', '.join(bare)} (e.g. {bare[0]}=0.1)")
+    return values
+
+
+def _box(text: str | None):
+    if text is None:
+        return None
+    from taut.cli import args as A
+
+    v = A.vector(text, "--box")
+    if v.size != 6:
+        raise PoseError(f"--box: expected xmin,ymin,zmin,xmax,ymax,zmax, got {v.size} numbers")
+    return v[:3], v[3:]
+
+
+def cmd_igp(ns) -> int:
+    from taut.cli.main import console, emit, load
+    from taut.dgp import solve_igp
+
+    robot = load(ns.robot)
+    cables = _cables(ns.taut)
+    res = solve_igp(robot, cables, _assigned(ns.fix), box=_box(ns.box), max_boxes=ns.max_boxes)
+    data = {
+        "robot": robot.name,
+        "taut": sorted(cables),
+        "assigned": res.assigned,
+        "solutions": [s.as_dict() for s in res.solutions],
+        "undecided_boxes": res.undecided,
+        "boxes": res.boxes,
+        "exhausted": res.exhausted,
+        "elapsed_s": res.elapsed_s,
+    }
+
+    def tables(con, d):
+        from rich.table import Table
+
+        free = [k for k, name in enumerate(robot.pose_names[:6]) if name not in res.assigned]
+        t = Table(title="free coordinates and tensions")
+        for h in ("#", *(robot.pose_names[k] for k in free), *(f"τ{i}" for i in d["taut"]), "stable"):
+            t.add_column(h, justify="right")
+        for k, s in enumerate(res.solutions, 1):
+            pose = [*s.position, *s.orientation]
+            t.add_row(str(k), *(f"{pose[j]:.4f}" for j in free), *(f"{s.tensions[i - 1]:.4f}" for i in d["taut"]),
+                      "yes" if s.stable else "no")
+        con.print(t)
+        # one column per solution: n cables would not fit across a terminal
+        t = Table(title="cable lengths to command (≥ span: slack cable)")
+        for h in ("cable", *(f"#{k}" for k in range(1, len(res.solutions) + 1))):
+            t.add_column(h, justify="right")
+        for i in range(robot.n_cables):
+            t.add_row(str(i + 1), *(f"≥{s.lengths[i]:.4f}" if i + 1 in s.slack else f"{s.lengths[i]:.4f}"
+                                    for s in res.solutions))
+        con.print(t)
+        for k, s in enumerate(res.solutions, 1):
+            if s.length_violations:
+                con.print(f"[yellow]solution {k}: cables {list(s.length_violations)} are outside their length bounds[/]")
+
+    def human(d):
+        con = console()
+        fixed = ", ".join(f"{k}={v:.6g}" for k, v in res.assigned.items())
+        con.print(f"[bold]{robot.name}[/]: {len(res.solutions)} equilibria with cables {d['taut']} taut at {fixed} "
+                  f"({res.boxes} boxes, {res.elapsed_s:.2f} s)")
+        if res.solutions:
+            tables(con, d)
+        if res.exhausted:
+            con.print(f"[yellow]the budget of {ns.max_boxes} boxes ran out ({res.undecided} undecided): the list may be "
+                      "incomplete — a continuum of solutions? (--max-boxes)[/]")
+        elif res.undecided:
+            con.print(f"[yellow]{res.undecided} boxes could not be certified (zero-tension or singular solutions)[/]")
+
+    emit(data, ns.json, human)
+    return 0
+
+
+def register(command) -> None:
+    import argparse
+
+    c = command("igp", "pose, tensions and lengths for chosen taut cables (inverse geometrico-static problem)", cmd_igp)
+    c.description = HELP
+    c.formatter_class = argparse.RawDescriptionHelpFormatter
+    c.add_argument("--taut", required=True, help="taut cables, e.g. 1,2,3 (2 to 6 of them)")
+    c.add_argument("--fix", required=True, help="as many pose coordinates as taut cables, e.g. x=0.3,y=0.4,z=0.1,a=5deg")
+    c.add_argument("--max-boxes", type=int, default=100_000, help="branch-and-prune box budget (default 100000)")
+    c.add_argument("--box", help="search box of the free position coordinates xmin,ymin,zmin,xmax,ymax,zmax "
+                                 "(default: the taut cables' reach around their exit points)")

@@ -1,0 +1,77 @@
+"""``taut igp``: the JSON contract, the human tables, and bad input (exit status 2)."""
+
+import json
+
+import numpy as np
+import pytest
+
+from taut.cli.main import main
+
+
+def test_igp_json_table_4_3(capsys):
+    code = main(["igp", "suspended-3cable", "--taut", "3,1,2", "--fix", "x=2.7505,y=3.9798,z=5.5061", "--json"])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    d = json.loads(out)
+    assert d["robot"] == "suspended 3-cable robot" and d["taut"] == [1, 2, 3] and d["elapsed_s"] > 0
+    assert d["assigned"] == {"x": 2.7505, "y": 3.9798, "z": 5.5061}
+    assert d["undecided_boxes"] == 0 and not d["exhausted"] and len(d["solutions"]) == 4
+    for s in d["solutions"]:
+        assert {"taut", "position", "orientation", "tensions", "lengths", "stable"} <= set(s)
+        assert s["taut"] == [1, 2, 3] and s["position"] == [2.7505, 3.9798, 5.5061]
+        assert len(s["tensions"]) == len(s["lengths"]) == 3 and min(s["tensions"]) > 0
+    (stable,) = [s for s in d["solutions"] if s["stable"]]
+    assert np.allclose(stable["lengths"], [7.5, 10, 9.5], atol=1e-3)
+    assert np.allclose(stable["orientation"], [3.0064, 0.3417, 0.1089], atol=1e-3)
+
+
+def test_igp_angles_in_degrees_and_slack_cables(capsys):
+    code = main(["igp", "teaching-prototype", "--taut", "1,2,3,4,6",
+                 "--fix", "x=0.363,y=0.454,z=0.122,phix=-2.42,phiy=23.262deg", "--json"])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    d = json.loads(out)
+    assert np.isclose(d["assigned"]["b"], np.radians(23.262))
+    assert len(d["solutions"]) == 2
+    for s in d["solutions"]:
+        assert s["slack"] == [5] and s["tensions"][4] == 0 and s["length_violations"] == []
+
+
+def test_igp_human_output(capsys):
+    code = main(["igp", "suspended-3cable", "--taut", "1,2,3", "--fix", "x=2.7505,y=3.9798,z=5.5061"])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    assert "4 equilibria" in out and "free coordinates and tensions" in out and "cable lengths" in out
+    assert "7.4999" in out and "yes" in out
+    code = main(["igp", "cogiro", "--taut", "3,4,6,7", "--fix", "x=0.255,y=-0.039,z=0.828,a=0.033"])
+    out, _ = capsys.readouterr()
+    assert code == 0 and "≥" in out  # the spans of the slack cables
+
+
+def test_igp_reports_an_exhausted_budget(capsys):
+    code = main(["igp", "robocrane", "--taut", "1,3,5", "--fix", "x=0,y=0,phi=2.8797932657906435", "--max-boxes", "500"])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    assert "0 equilibria" in out and "ran out" in out
+
+
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["suspended-3cable", "--taut", "1,2,3", "--fix", "x=1,y=2"], "exactly 3"),
+        (["suspended-3cable", "--taut", "1,2", "--fix", "x=1,w=2"], "unknown pose coordinate"),
+        (["suspended-3cable", "--taut", "1,2", "--fix", "x=1,y"], "give a value"),
+        (["suspended-3cable", "--taut", "1,2", "--fix", "x=1,y=nan"], "not finite"),
+        (["suspended-3cable", "--taut", "1,2", "--fix", "x=1,x=2"], "twice"),
+        (["suspended-3cable", "--taut", "1,9", "--fix", "x=1,y=2"], "out of range"),
+        (["suspended-3cable", "--taut", "1,1", "--fix", "x=1,y=2"], "twice"),
+        (["suspended-3cable", "--taut", "1,two", "--fix", "x=1,y=2"], "cable numbers"),
+        (["suspended-3cable", "--taut", "1,2", "--fix", "x=1,a=2", "--box", "0,0,0"], "--box"),
+        (["suspended-3cable", "--taut", "1,2", "--fix", "x=1,a=2", "--max-boxes", "0"], "max_boxes"),
+        (["planar-4cable", "--taut", "1,2", "--fix", "x=1,y=2"], "planar"),
+    ],
+)
+def test_igp_bad_input_exits_2(argv, words, capsys):
+    code = main(["igp", *argv])
+    _, err = capsys.readouterr()
+    assert code == 2 and err.startswith("taut: error: ") and words in err and "Traceback" not in err
