@@ -13,6 +13,7 @@ from taut.geometry.rotation import rotation_matrix
 from taut.interval.krawczyk import certify
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
+from taut.parallel import get_executor
 
 ROBOT = load_robot("suspended-3cable")
 LENGTHS = np.array(ROBOT.reference.lengths)
@@ -53,8 +54,10 @@ def test_no_equilibrium_with_one_or_two_taut_cables():
 
 
 @pytest.mark.slow
-def test_table_4_3_complete_solution_set():
-    res = solve_dgp(ROBOT)
+@pytest.mark.parametrize("workers, split", [(1, 0), (2, None), (1, 3)])
+def test_table_4_3_complete_solution_set(workers, split):
+    with get_executor(workers=workers) as ex:  # workers=2: the 3-taut domain in 8 pieces
+        res = solve_dgp(ROBOT, executor=ex, split=split)
     assert res.subproblems == 7 and res.undecided == 0
     assert len(res.solutions) == 6 and all(s.taut == (1, 2, 3) for s in res.solutions)
     assert sum(s.stable for s in res.solutions) == 1

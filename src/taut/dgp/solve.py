@@ -23,9 +23,10 @@ from taut.dgp.single_cable import single_cable_equilibria
 from taut.dgp.stability import is_stable
 from taut.errors import TautError
 from taut.geometry.rotation import angles_from_matrix
-from taut.interval.branch_prune import branch_and_prune
+from taut.interval.branch_prune import branch_and_prune, same_solution
+from taut.interval.hc4 import contract
 from taut.model.robot import Robot
-from taut.parallel import get_executor
+from taut.parallel import SerialExecutor, get_executor
 
 
 @dataclass(frozen=True)
@@ -74,8 +75,38 @@ def check_lengths(robot: Robot, lengths) -> np.ndarray:
     return arr
 
 
-def _solve_subset(job) -> tuple[list[DGPSolution], int, int]:
-    robot, lengths, taut, eps = job
+def _pieces(sp, split: int) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The sub-problem's domain cut into up to ``2**split`` pieces that may hold solutions:
+    breadth first, the widest piece is contracted (HC4, statics filter) and halved across
+    its widest pose variable, empty pieces dropped — most of the initial box is empty, and
+    pieces of it would leave all the work to one job."""
+    target = 2**split
+    live = [(sp.lo.copy(), sp.hi.copy())]
+    for _ in range(8 * target):
+        if len(live) >= target:
+            break
+        widths = [np.max(np.where(sp.primary, hi - lo, -1.0)) for lo, hi in live]
+        lo, hi = live.pop(int(np.argmax(widths)))
+        for part in _halves(lo, hi, sp.primary):
+            if contract(sp.system.tape, *part) and sp.statics(*part):
+                live.append(part)
+        if not live:
+            break
+    return live
+
+
+def _halves(lo, hi, primary):
+    j = int(np.argmax(np.where(primary, hi - lo, -1.0)))
+    mid = 0.5 * lo[j] + 0.5 * hi[j]
+    a_hi, b_lo = hi.copy(), lo.copy()
+    a_hi[j], b_lo[j] = mid, mid
+    return (lo.copy(), a_hi), (b_lo, hi.copy())
+
+
+def _solve_piece(job):
+    """One job of :func:`solve_dgp`: the sub-problem of ``taut`` on piece ``k`` of
+    ``pieces`` of its domain.  Returns ``(solutions, certificates, undecided, boxes)``."""
+    robot, lengths, taut, eps, split, k = job
     n = robot.n_cables
     a, r = robot.exits, robot.anchors
     _, _, gp = load(robot)
@@ -84,12 +115,17 @@ def _solve_subset(job) -> tuple[list[DGPSolution], int, int]:
         for s in single_cable_equilibria(robot, lengths, taut[0]):
             out.append(DGPSolution((taut[0] + 1,), s["p"], angles_from_matrix(s["R"], robot.orientation), s["tensions"],
                                    s["stable"], 0.0, 0.0, s["continuum"]))
-        return out, 0, 0
+        return out, [None] * len(out), 0, 0
     sp = build_subproblem(robot, lengths, taut)
-    res = branch_and_prune(sp.system, sp.lo, sp.hi, primary=sp.primary, eps=eps, filters=(sp.statics,),
-                           certify_width=1.0, passes=4)
+    pieces = _pieces(sp, split)
+    if k >= len(pieces):  # fewer pieces hold solutions than were asked for
+        return out, [], 0, 0
+    lo, hi = pieces[k]
+    res = branch_and_prune(sp.system, lo, hi, primary=sp.primary, eps=eps, filters=(sp.statics,),
+                           certify_width=1.0, passes=4, domain=(sp.lo, sp.hi))
     idx = list(taut)
     undecided = len(res.undecided)
+    certs = []
     for c in res.solutions:
         if not sp.tension_unknowns:
             # the sign of the tensions over the certified box: all positive, or the
@@ -106,12 +142,26 @@ def _solve_subset(job) -> tuple[list[DGPSolution], int, int]:
         g = p + R @ gp
         stable = is_stable(a[idx], b[idx], g, tau[idx], lengths[idx])
         out.append(DGPSolution(tuple(i + 1 for i in taut), p, ang, tau, stable, c.width, c.radius))
-    return out, undecided, res.boxes
+        certs.append(c)
+    return out, certs, undecided, res.boxes
 
 
-def solve_dgp(robot: Robot, lengths=None, *, max_taut: int | None = None, executor=None, eps: float = 1e-7) -> DGPResult:
+def _solve_subset(job) -> tuple[list[DGPSolution], int, int]:
+    """The whole sub-problem of ``taut``: ``(solutions, undecided boxes, boxes)``."""
+    robot, lengths, taut, eps = job
+    sols, _, undecided, boxes = _solve_piece((robot, lengths, taut, eps, 0, 0))
+    return sols, undecided, boxes
+
+
+def solve_dgp(robot: Robot, lengths=None, *, max_taut: int | None = None, executor=None, eps: float = 1e-7,
+              split: int | None = None) -> DGPResult:
     """All admissible equilibria (``τ ≥ 0``) for the cable lengths (default: the robot's
-    ``reference.lengths``), each with its stability flag and certificate."""
+    ``reference.lengths``), each with its stability flag and certificate.
+
+    ``split``: the domain of every sub-problem with at least 3 taut cables is cut into
+    ``2**split`` pieces solved as separate jobs (default 0 on the serial executor, 4 on a
+    parallel one, so that one hard sub-problem is shared by the workers); a solution
+    found by two neighbouring pieces is reported once (:func:`same_solution`)."""
     if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
         raise TautError("the DGP solver handles spatial rigid platforms without joints")
     if lengths is None:
@@ -123,18 +173,30 @@ def solve_dgp(robot: Robot, lengths=None, *, max_taut: int | None = None, execut
     top = min(n, 6) if max_taut is None else min(n, 6, int(max_taut))
     if top < 1:
         raise TautError(f"--max-taut must be at least 1, got {max_taut}")
-    jobs = [(robot, lengths, taut, eps) for m in range(top, 0, -1) for taut in combinations(range(n), m)]
     t0 = time.perf_counter()
     own = executor is None
     ex = get_executor() if own else executor
+    if split is None:
+        split = 0 if isinstance(ex, SerialExecutor) else 4
+    if split < 0:
+        raise TautError(f"split must be non-negative, got {split}")
+    subsets = [taut for m in range(top, 0, -1) for taut in combinations(range(n), m)]
+    jobs = [(robot, lengths, taut, eps, split if len(taut) >= 3 else 0, k)
+            for taut in subsets for k in range(2 ** split if len(taut) >= 3 else 1)]
     try:
-        parts = ex.map(_solve_subset, jobs)
+        parts = ex.map(_solve_piece, jobs)
     finally:
         if own:
             ex.close()
-    out = DGPResult(subproblems=len(jobs))
-    for sols, und, boxes in parts:
-        out.solutions.extend(sols)
+    out = DGPResult(subproblems=len(subsets))
+    kept: dict[tuple[int, ...], list] = {}
+    for sols, certs, und, boxes in parts:
+        for sol, cert in zip(sols, certs):
+            seen = kept.setdefault(sol.taut, [])
+            if cert is not None and any(same_solution(c, cert) or same_solution(cert, c) for c in seen):
+                continue
+            seen.append(cert)
+            out.solutions.append(sol)
         out.undecided += und
         out.boxes += boxes
     out.elapsed_s = time.perf_counter() - t0

@@ -77,8 +77,14 @@ def branch_and_prune(
     passes: int = 1,
     gain: float = 0.2,
     ratio: float = 0.05,
+    domain=None,
 ) -> BranchAndPruneResult:
     """All solutions of ``system`` in the box ``[lo, hi]`` (see module docstring).
+
+    ``domain`` (``(lo, hi)``, default the box itself) is the whole search domain when
+    ``[lo, hi]`` is one piece of it: a solution counts when its certified box lies in the
+    domain, so a solution on the border between two pieces is kept by both (merge them
+    with :func:`same_solution`).
 
     ``primary`` (boolean mask) marks the variables bisected first; ``certify_width`` is
     the width of the primary variables below which the Krawczyk operator contracts a box,
@@ -106,11 +112,11 @@ def branch_and_prune(
         raise ValueError("method='numba' takes at most one filter, a LinearFilter")
     if method != "python" and kernel_ok:
         return _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters,
-                                       passes, gain, ratio)
-    lo0, hi0 = np.array(lo, float), np.array(hi, float)
+                                       passes, gain, ratio, domain)
+    lo0, hi0 = _domain(lo, hi, domain)
     primary = np.ones(lo0.size, bool) if primary is None else np.asarray(primary, bool)
     out = BranchAndPruneResult()
-    stack = [(lo0.copy(), hi0.copy())]
+    stack = [(np.array(lo, float), np.array(hi, float))]
     while stack:
         lo, hi = stack.pop()
         out.boxes += 1
@@ -281,8 +287,23 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
     return _DONE, sp, boxes, False
 
 
-def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters, passes, gain, ratio):
-    lo0, hi0 = np.array(lo, float), np.array(hi, float)
+def _domain(lo, hi, domain) -> tuple[np.ndarray, np.ndarray]:
+    if domain is None:
+        return np.array(lo, float), np.array(hi, float)
+    dlo, dhi = (np.array(d, float) for d in domain)
+    if np.any(np.asarray(lo, float) < dlo) or np.any(np.asarray(hi, float) > dhi):
+        raise ValueError("the start box must lie in the search domain")
+    return dlo, dhi
+
+
+def same_solution(a: Certificate, b: Certificate) -> bool:
+    """``b`` is the solution certified by ``a``: it lies in ``a``'s box, which holds one."""
+    return bool(np.all(b.x >= a.lo) and np.all(b.x <= a.hi)) or bool(np.all(np.abs(a.x - b.x) <= a.radius))
+
+
+def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters, passes, gain, ratio,
+                            domain):
+    lo0, hi0 = _domain(lo, hi, domain)
     n = lo0.size
     primary = np.ones(n, bool) if primary is None else np.asarray(primary, bool)
     out = BranchAndPruneResult()
@@ -294,7 +315,7 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
         ftape, fm, fsign = jt.arrays[:7], 0, False
     cap = 4096
     stk_lo, stk_hi = np.empty((cap, n)), np.empty((cap, n))
-    stk_lo[0], stk_hi[0] = lo0, hi0
+    stk_lo[0], stk_hi[0] = lo, hi
     sp, boxes = 1, 0
     sol_x, sol_r = np.zeros((0, n)), np.zeros(0)
     buf = np.empty((6, n))
