@@ -1,9 +1,12 @@
 """The geometrico-static problems of under-constrained robots (``001_eb92e2f6589fc229.txt``):
 the direct one (Ch. 2–3, all equilibria for given cable lengths) and the inverse one
-(§4.1.2, the unassigned pose coordinates, tensions and lengths for chosen taut cables)."""
+(§4.1.2, the unassigned pose coordinates, tensions and lengths for chosen taut cables), and
+tracking forward kinematics (§4.1.2, the equilibrium that follows a known one)."""
 
 from taut.dgp.inverse import IGPResult, IGPSolution, solve_igp
 from taut.dgp.solve import DGPResult, DGPSolution, solve_dgp
 from taut.dgp.stability import is_stable, reduced_hessian
+from taut.dgp.tracking import track, track_path
 
-__all__ = ["DGPResult", "DGPSolution", "IGPResult", "IGPSolution", "is_stable", "reduced_hessian", "solve_dgp", "solve_igp"]
+__all__ = ["DGPResult", "DGPSolution", "IGPResult", "IGPSolution", "is_stable", "reduced_hessian", "solve_dgp", "solve_igp", "track",
+           "track_path"]

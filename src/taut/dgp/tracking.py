@@ -204,9 +204,10 @@ def _solution(robot: Robot, s: _State, lengths: np.ndarray, width: float) -> DGP
                        s.tensions, stable, width, 0.0)
 
 
-def track(robot: Robot, previous_solution: DGPSolution, lengths) -> DGPSolution:
-    """The equilibrium that continues ``previous_solution`` at the new cable ``lengths``
-    (see the module docstring); raises :class:`~taut.errors.TrackingLostError` when it
+def track(robot: Robot, previous_solution, lengths) -> DGPSolution:
+    """The equilibrium that continues ``previous_solution`` (a :class:`DGPSolution` or an
+    :class:`~taut.dgp.inverse.IGPSolution`) at the new cable ``lengths`` (see the module
+    docstring); raises :class:`~taut.errors.TrackingLostError` when it
     cannot be certified.  ``certificate_width`` is the width of the Krawczyk enclosure;
     ``uniqueness_radius`` is not computed (0)."""
     lengths = check_lengths(robot, lengths)
@@ -214,7 +215,7 @@ def track(robot: Robot, previous_solution: DGPSolution, lengths) -> DGPSolution:
     return _solution(robot, s, lengths, width)
 
 
-def track_path(robot: Robot, start_solution: DGPSolution, lengths_sequence) -> list[DGPSolution]:
+def track_path(robot: Robot, start_solution, lengths_sequence) -> list[DGPSolution]:
     """:func:`track` along a sequence of cable lengths (one solution per row)."""
     out, s = [], None
     for row in lengths_sequence:
