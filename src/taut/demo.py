@@ -14,6 +14,7 @@ from taut.model import example, example_names
 from taut.viz import Report
 from taut.viz.atlas import atlas_section
 from taut.viz.check import check_section
+from taut.viz.dgp import dgp_section
 from taut.viz.plan import plan_section
 from taut.viz.trajectory import trajectory_section
 
@@ -83,6 +84,7 @@ SECTIONS = [
     robots_section,
     lambda r: standard_model_section(r, "planar-4cable", shift=[0.8, 0.6], resolution=80),
     lambda r: standard_model_section(r, "spatial-8cable", shift=[1.2, 0.0, 0.8], resolution=30),
+    dgp_section,
     trajectory_section,
     atlas_section,
     check_section,

@@ -139,3 +139,4 @@ def test_demo_writes_report(tmp_path, capsys):
     pngs = sorted(p.name for p in (tmp_path / "report").glob("*.png"))
     assert len(pngs) >= 6 and all(f'src="{p}"' in html for p in pngs)
     assert "wrench-feasible" in html
+    assert {"dgp-equilibria.png", "dgp-tracking.png"} <= set(pngs)  # taut fk and tracking

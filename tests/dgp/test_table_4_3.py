@@ -71,6 +71,13 @@ def test_table_4_3_complete_solution_set(workers, split):
         assert np.allclose(lengths, LENGTHS, atol=1e-9)
 
 
+def test_cli_fk_plot(tmp_path, capsys):
+    out = tmp_path / "fk.png"
+    assert main(["fk", "suspended-3cable", "--max-taut", "2", "--plot", str(out), "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["plot"] == str(out)
+    assert out.stat().st_size > 1000
+
+
 def test_cli_fk_json_and_bad_input(capsys):
     assert main(["fk", "suspended-3cable", "--max-taut", "2", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)

@@ -1,4 +1,4 @@
-"""``taut fk ROBOT [--lengths L1,...,Ln] [--max-taut K] [--workers N] [--scheduler ADDRESS] [--json]``:
+"""``taut fk ROBOT [--lengths L1,...,Ln] [--max-taut K] [--workers N] [--scheduler ADDRESS] [--plot FILE] [--json]``:
 all equilibrium poses for given cable lengths (the direct geometrico-static problem,
 :func:`taut.dgp.solve_dgp`).  Without ``--lengths`` the robot's ``reference.lengths`` are
 used.  No equilibrium is an empty list, not an error."""
@@ -6,7 +6,7 @@ used.  No equilibrium is an empty list, not an error."""
 from __future__ import annotations
 
 from taut.cli import args as A
-from taut.cli.main import console, emit, load
+from taut.cli.main import console, emit, load, save_figure
 from taut.errors import TautError
 
 
@@ -27,6 +27,10 @@ def cmd_fk(ns) -> int:
         "undecided_boxes": res.undecided,
         "elapsed_s": res.elapsed_s,
     }
+    if ns.plot:
+        from taut.viz.dgp import plot_equilibria
+
+        save_figure(plot_equilibria(robot, res.solutions), ns.plot, data)
 
     def human(d):
         from rich.table import Table
@@ -52,3 +56,4 @@ def register(command) -> None:
     c.add_argument("--max-taut", type=int, default=None, metavar="K", help="largest number of taut cables (default min(n, 6))")
     c.add_argument("--workers", type=int, default=1, help="local worker processes")
     c.add_argument("--scheduler", default=None, metavar="ADDRESS", help="dask.distributed scheduler tcp://HOST:PORT")
+    c.add_argument("--plot", metavar="FILE.png", help="the robot in every equilibrium found")
