@@ -91,6 +91,10 @@ def test_bad_lengths(start):
         track(ROBOT, start, LENGTHS[:2])
     with pytest.raises(TautError):
         track(ROBOT, start, [1.0, -1.0, 1.0])
+    assert track_path(ROBOT, start, []) == []
+    for bad in ([LENGTHS, LENGTHS[:2]], [LENGTHS[:2], LENGTHS[:2]], [LENGTHS, [1.0, np.nan, 1.0]], LENGTHS):
+        with pytest.raises(TautError, match="cables|lengths|table"):
+            track_path(ROBOT, start, bad)
 
 
 def test_six_taut_cables_track_without_tension_unknowns():

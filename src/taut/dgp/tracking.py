@@ -160,10 +160,12 @@ def _advance(robot: Robot, s: _State, lengths: np.ndarray) -> tuple[_State, floa
             raise TrackingLostError(f"tracking lost with taut cables {[i + 1 for i in taut]} "
                                     f"at lengths {lengths.tolist()}: {out}")
         new, width = out
-        b = new.p + r @ new.R.T
-        dist = np.linalg.norm(b - a, axis=1)
         negative = [i for i in taut if new.tensions[i] < 0.0]
-        stretched = [k for k in range(robot.n_cables) if k not in taut and dist[k] > lengths[k]]
+        slack = [k for k in range(robot.n_cables) if k not in taut]
+        dist = np.zeros(robot.n_cables)
+        if slack:
+            dist[slack] = np.linalg.norm(new.p + r[slack] @ new.R.T - a[slack], axis=1)
+        stretched = [k for k in slack if dist[k] > lengths[k]]
         if not negative and not stretched:
             return new, width
         if negative:  # drop the most negative tension first, then re-check
@@ -217,9 +219,19 @@ def track(robot: Robot, previous_solution, lengths) -> DGPSolution:
 
 def track_path(robot: Robot, start_solution, lengths_sequence) -> list[DGPSolution]:
     """:func:`track` along a sequence of cable lengths (one solution per row)."""
+    try:
+        rows = np.asarray(lengths_sequence, dtype=float)
+    except ValueError as e:
+        raise TautError(f"the lengths sequence is not a table of numbers: {e}") from None
+    if rows.size == 0:
+        return []
+    if rows.ndim != 2 or rows.shape[1] != robot.n_cables:
+        raise TautError(f"{robot.name} has {robot.n_cables} cables: give one row of {robot.n_cables} lengths "
+                        f"per update, got an array of shape {rows.shape}")
+    for row in rows[~np.all(np.isfinite(rows) & (rows > 0), axis=1)][:1]:
+        check_lengths(robot, row)  # raises, naming what is wrong
     out, s = [], None
-    for row in lengths_sequence:
-        lengths = check_lengths(robot, row)
+    for lengths in rows:
         s = _state(robot, start_solution, lengths) if s is None else s
         s, width = _step(robot, s, lengths)
         out.append(_solution(robot, s, lengths, width))

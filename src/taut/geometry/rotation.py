@@ -11,7 +11,10 @@ All functions work over arrays: angles of shape ``(..., 3)`` give matrices ``(..
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
+from numba import njit
 
 CONVENTIONS = ("xyz-fixed", "xyz-moving", "tilt-torsion")
 
@@ -54,23 +57,35 @@ def rotation_matrix(angles, convention: str = "xyz-fixed") -> np.ndarray:
     raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
 
 
+@njit(cache=True)
+def _angles(R: np.ndarray, code: int) -> np.ndarray:
+    """Angles of the matrices ``R`` (``(N, 3, 3)``), convention ``code`` (index in
+    :data:`CONVENTIONS`).  Compiled: tracking converts one matrix per update, where array
+    ufuncs on a single matrix cost more than the arithmetic."""
+    out = np.empty((R.shape[0], 3))
+    for k in range(R.shape[0]):
+        M = R[k]
+        if code == 0:
+            b = math.asin(min(1.0, max(-1.0, -M[2, 0])))
+            a = math.atan2(M[2, 1], M[2, 2])
+            c = math.atan2(M[1, 0], M[0, 0])
+        elif code == 1:
+            b = math.asin(min(1.0, max(-1.0, M[0, 2])))
+            a = math.atan2(-M[1, 2], M[2, 2])
+            c = math.atan2(-M[0, 1], M[0, 0])
+        else:
+            b = math.acos(min(1.0, max(-1.0, M[2, 2])))
+            a = math.atan2(M[1, 2], M[0, 2])
+            c = math.atan2(M[2, 1], -M[2, 0]) + a  # σ − φ, then σ
+        out[k, 0], out[k, 1], out[k, 2] = a, b, c
+    return out
+
+
 def angles_from_matrix(R, convention: str = "xyz-fixed") -> np.ndarray:
     """Inverse of :func:`rotation_matrix`: angles ``(..., 3)`` with the middle angle in
     ``[-π/2, π/2]`` (``[0, π]`` for tilt-and-torsion)."""
-    R = np.asarray(R, dtype=float)
-    if convention == "xyz-fixed":
-        b = np.arcsin(np.clip(-R[..., 2, 0], -1.0, 1.0))
-        a = np.arctan2(R[..., 2, 1], R[..., 2, 2])
-        c = np.arctan2(R[..., 1, 0], R[..., 0, 0])
-    elif convention == "xyz-moving":
-        b = np.arcsin(np.clip(R[..., 0, 2], -1.0, 1.0))
-        a = np.arctan2(-R[..., 1, 2], R[..., 2, 2])
-        c = np.arctan2(-R[..., 0, 1], R[..., 0, 0])
-    elif convention == "tilt-torsion":
-        b = np.arccos(np.clip(R[..., 2, 2], -1.0, 1.0))
-        a = np.arctan2(R[..., 1, 2], R[..., 0, 2])
-        sigma_minus_phi = np.arctan2(R[..., 2, 1], -R[..., 2, 0])
-        c = sigma_minus_phi + a
-    else:
+    if convention not in CONVENTIONS:
         raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
-    return np.stack([a, b, c], -1)
+    R = np.asarray(R, dtype=float)
+    flat = np.ascontiguousarray(R.reshape(-1, 3, 3))
+    return _angles(flat, CONVENTIONS.index(convention)).reshape(R.shape[:-2] + (3,))
