@@ -8,6 +8,7 @@ from itertools import combinations
 import numpy as np
 import pytest
 
+from taut.dgp import solve_dgp
 from taut.dgp.solve import _solve_subset
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
@@ -44,3 +45,23 @@ def test_table_4_4_six_taut_cables():
         lengths = inverse_kinematics(ROBOT, np.concatenate([s.position, s.orientation])).lengths
         assert np.allclose(lengths[list(np.array(s.taut) - 1)], LENGTHS[list(np.array(s.taut) - 1)], atol=1e-9)
         assert np.all(lengths <= LENGTHS + 1e-9)
+
+
+def test_table_4_4_two_taut_cables():
+    res = solve_dgp(ROBOT, max_taut=2)  # Conf. 42-46 (the OCR lost parts of 44 and 45)
+    assert res.undecided == 0 and len(res.solutions) == 5
+    printed = [  # taut, x, y, z, phi_x, phi_y, phi_z (None: lost), the two tensions
+        ((4, 8), [0.123, -0.048, 4.169, -3.134, -0.012, -0.027], [2.110, 2.115]),
+        ((4, 7), [-0.250, 0.309, 2.232, 1.667, -1.008, 0.934], [1.822, 1.826]),
+        ((3, 7), [0.215, None, None, None, 0.005, 2.028], [1.808, 1.817]),
+        ((2, 6), [None, 0.171, None, None, 0.002, -1.928], [4.273, 4.277]),
+        ((2, 6), [0.169, 0.170, 5.359, -3.139, 0.004, -3.128], [4.273, 4.277]),
+    ]
+    found = list(res.solutions)
+    for taut, pose, tensions in printed:
+        match = [s for s in found if s.taut == taut
+                 and all(p is None or abs(v - p) <= 1e-2 for v, p in zip(np.r_[s.position, s.orientation], pose))]
+        assert len(match) == 1, (taut, pose)
+        s = match[0]
+        assert np.allclose(s.tensions[list(np.array(taut) - 1)], tensions, atol=1e-2) and not s.stable
+        found.remove(s)

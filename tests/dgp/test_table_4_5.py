@@ -6,6 +6,7 @@ give them (z = 0.778 and 0.338; τ4 = 0.078; τ2 = 0.291 and 0.271)."""
 import numpy as np
 import pytest
 
+from taut.dgp import solve_dgp
 from taut.dgp.solve import _solve_subset
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
@@ -36,3 +37,14 @@ def test_table_4_5_six_taut_cables():
         assert s.stable and s.uniqueness_radius > 0 and s.certificate_width < 1e-9
         lengths = inverse_kinematics(ROBOT, np.concatenate([s.position, s.orientation])).lengths
         assert np.allclose(lengths, LENGTHS, atol=1e-9)
+
+
+def test_table_4_5_two_taut_cables():
+    res = solve_dgp(ROBOT, max_taut=2)  # Conf. 16-17, and no single-cable equilibrium
+    assert res.undecided == 0 and len(res.solutions) == 2
+    printed = {(2, 3): [-0.218, -1.192, 1.499, 1.220, 0.379, 1.539, 0, 1.569, 1.612, 0, 0, 0],
+               (4, 5): [0.342, -0.676, 1.244, 1.194, -0.403, -1.458, 0, 0, 0, 1.691, 1.681, 0]}
+    for s in res.solutions:
+        row = printed[s.taut]
+        assert np.allclose(np.r_[s.position, s.orientation], row[:6], atol=2e-3)
+        assert np.allclose(s.tensions, row[6:], atol=2e-3) and not s.stable

@@ -4,6 +4,7 @@ anchors): the sub-problem with all 6 cables taut has exactly Conf. 1 and 2, both
 import numpy as np
 import pytest
 
+from taut.dgp import solve_dgp
 from taut.dgp.solve import _solve_subset
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
@@ -28,3 +29,8 @@ def test_table_4_6_six_taut_cables():
         assert s.stable and s.uniqueness_radius > 0 and s.certificate_width < 1e-9
         lengths = inverse_kinematics(ROBOT, np.concatenate([s.position, s.orientation])).lengths
         assert np.allclose(lengths, LENGTHS, atol=1e-9)
+
+
+def test_table_4_6_no_equilibrium_with_one_or_two_taut_cables():
+    res = solve_dgp(ROBOT, max_taut=2)  # the table's rows all have 3 to 6 taut cables
+    assert res.subproblems == 21 and res.undecided == 0 and res.solutions == []
