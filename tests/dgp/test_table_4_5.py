@@ -1,7 +1,9 @@
 """Table 4.5 of 001_eb92e2f6589fc229.txt (MARIONET-VR, 6 cables, platform anchors not
-coplanar): the sub-problem with all 6 cables taut has exactly Conf. 1–3, all stable.
-The OCR lost z of Conf. 1–2 and τ4 of Conf. 1, τ2 of Conf. 2–3 (None below): the equations
+coplanar): the sub-problems with 6, 3 and 2 taut cables hold exactly Conf. 1–3 (stable),
+12–15 and 16–17 (unstable).  The OCR lost z of Conf. 1–2 and τ4 of Conf. 1, τ2 of Conf. 2–3 (None below): the equations
 give them (z = 0.778 and 0.338; τ4 = 0.078; τ2 = 0.291 and 0.271)."""
+
+from itertools import combinations
 
 import numpy as np
 import pytest
@@ -48,3 +50,19 @@ def test_table_4_5_two_taut_cables():
         row = printed[s.taut]
         assert np.allclose(np.r_[s.position, s.orientation], row[:6], atol=2e-3)
         assert np.allclose(s.tensions, row[6:], atol=2e-3) and not s.stable
+
+
+@pytest.mark.slow
+def test_table_4_5_three_taut_cables():
+    sols = [s for taut in combinations(range(6), 3) for s in _solve_subset((ROBOT, LENGTHS, taut, 1e-7))[0]]
+    printed = {  # Conf. 12-15: x, y, z, phi_x, phi_y, phi_z, tau_1..tau_6
+        (2, 4, 6): [0.132, -0.597, 2.425, -2.065, 0.376, 3.057, 0, 1.355, 0, 0.471, 0, 1.419],
+        (1, 5, 6): [0.386, -0.364, 2.294, -1.703, -0.087, -3.059, 1.393, 0, 0, 0, 1.256, 0.480],
+        (1, 3, 5): [0.552, -0.525, 2.211, -2.131, -0.431, -2.963, 1.421, 0, 0.546, 0, 1.374, 0],
+        (1, 2, 6): [0.332, -0.383, 2.328, -1.700, 0.073, 3.132, 0.442, 1.229, 0, 0, 0, 1.373],
+    }
+    assert sorted(s.taut for s in sols) == sorted(printed)
+    for s in sols:
+        row = printed[s.taut]
+        assert np.allclose(np.r_[s.position, s.orientation], row[:6], atol=3e-3)
+        assert np.allclose(s.tensions, row[6:], atol=3e-3) and not s.stable
