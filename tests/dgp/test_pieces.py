@@ -3,9 +3,12 @@ pieces lie in the domain, do not overlap, and every equilibrium of Table 4.3 of
 001_eb92e2f6589fc229.txt lies in one of them."""
 
 import numpy as np
+import pytest
 
+from taut.dgp import solve_dgp
 from taut.dgp.formulation import build_subproblem
 from taut.dgp.solve import _pieces
+from taut.errors import TautError
 from taut.geometry.rotation import rotation_matrix
 from taut.interval.branch_prune import same_solution
 from taut.interval.krawczyk import Certificate, certify
@@ -49,3 +52,9 @@ def test_same_solution_by_certified_box_or_uniqueness_radius():
     assert same_solution(a, Certificate(x + 1e-13, x - 1e-12, x + 1e-12, 0.0))
     assert same_solution(a, Certificate(x + 5e-7, x, x + 1e-6, 0.0))
     assert not same_solution(a, Certificate(x + 1e-3, x, x + 2e-3, 1e-6))
+
+
+def test_split_out_of_range_is_refused():
+    for bad in (-1, 11):
+        with pytest.raises(TautError, match="split"):
+            solve_dgp(ROBOT, max_taut=2, split=bad)

@@ -173,13 +173,13 @@ def solve_dgp(robot: Robot, lengths=None, *, max_taut: int | None = None, execut
     top = min(n, 6) if max_taut is None else min(n, 6, int(max_taut))
     if top < 1:
         raise TautError(f"--max-taut must be at least 1, got {max_taut}")
+    if split is not None and not 0 <= split <= 10:
+        raise TautError(f"split must be between 0 and 10 (up to 1024 pieces), got {split}")
     t0 = time.perf_counter()
     own = executor is None
     ex = get_executor() if own else executor
     if split is None:
         split = 0 if isinstance(ex, SerialExecutor) else 4
-    if split < 0:
-        raise TautError(f"split must be non-negative, got {split}")
     subsets = [taut for m in range(top, 0, -1) for taut in combinations(range(n), m)]
     jobs = [(robot, lengths, taut, eps, split if len(taut) >= 3 else 0, k)
             for taut in subsets for k in range(2 ** split if len(taut) >= 3 else 1)]
