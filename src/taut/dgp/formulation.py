@@ -40,7 +40,7 @@ import numpy as np
 from numba import njit
 
 from taut.geometry.rotation import angles_from_matrix
-from taut.interval.expression import Expr, System, Tape, compile_system, compile_tape, const, variables
+from taut.interval.expression import Expr, System, compile_system, compile_tape, const, variables
 from taut.interval.hc4 import evaluate_point
 from taut.interval.linear import LinearFilter
 from taut.model.robot import Robot

@@ -41,6 +41,7 @@ def _precondition(C, Jl, Jh):
             Sl[i, j], Sh[i, j] = sl, sh
     return Sl, Sh
 
+
 @njit(cache=True, fastmath=False)
 def _gauss(Al, Ah, bl, bh):
     n = Al.shape[0]
