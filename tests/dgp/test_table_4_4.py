@@ -1,5 +1,6 @@
 """Table 4.4 of 001_eb92e2f6589fc229.txt (CoGiRo, 8 cables, platform anchors not coplanar):
-the 28 sub-problems with 6 taut cables hold exactly Conf. 1–6, all stable.  The printed
+the 28 sub-problems with 6 taut cables hold exactly Conf. 1–6, all stable; the 56 with 3,
+Conf. 38–41; the 28 with 2, Conf. 42–46 (all unstable).  The printed
 angles are ill-conditioned in the 3-digit data: Conf. 3 comes out at φx = 1.044, φz = −0.770
 (printed 1.048, −0.765) with the lengths met to 1e-9, hence the 1e-2 tolerance on angles."""
 
@@ -65,3 +66,23 @@ def test_table_4_4_two_taut_cables():
         s = match[0]
         assert np.allclose(s.tensions[list(np.array(taut) - 1)], tensions, atol=1e-2) and not s.stable
         found.remove(s)
+
+
+@pytest.mark.slow
+def test_table_4_4_three_taut_cables():
+    jobs = [(ROBOT, LENGTHS, taut, 1e-7) for taut in combinations(range(8), 3)]
+    with get_executor(workers=2) as ex:
+        parts = ex.map(_solve_subset, jobs)
+    sols = [s for found, _, _ in parts for s in found]
+    assert sum(und for _, und, _ in parts) == 0
+    printed = {  # Conf. 38-41: x, y, z, phi_x, phi_y, phi_z and the three tensions
+        (4, 7, 8): ([-0.414, 0.404, 2.333, 2.198, -0.937, 0.499], [1.717, 1.519, 0.198]),
+        (3, 6, 8): ([0.644, -0.429, 1.929, -1.728, 0.999, 0.879], [1.631, 0.015, 1.637]),
+        (3, 4, 7): ([0.072, 0.031, 1.854, 0.882, -0.799, 1.584], [0.302, 1.318, 1.634]),
+        (1, 6, 8): ([0.964, 0.458, 3.036, 1.711, 0.836, -0.959], [1.561, 1.571, 0.037]),
+    }
+    assert sorted(s.taut for s in sols) == sorted(printed)
+    for s in sols:
+        pose, tensions = printed[s.taut]
+        assert np.allclose(s.position, pose[:3], atol=2e-3) and np.allclose(s.orientation, pose[3:], atol=1e-2)
+        assert np.allclose(s.tensions[list(np.array(s.taut) - 1)], tensions, atol=3e-3) and not s.stable
