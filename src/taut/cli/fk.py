@@ -36,6 +36,8 @@ def cmd_fk(ns) -> int:
         from rich.table import Table
 
         con = console()
+        # a row is 7 pose values and n tensions of 7 characters: never squeeze it into "…"
+        con.width = max(con.width, 20 + 10 * (7 + robot.n_cables))
         t = Table(title=f"{robot.name}: {len(res.solutions)} equilibria ({res.subproblems} sub-problems, {res.elapsed_s:.2f} s)")
         for h in ("taut", "x", "y", "z", "a", "b", "c", *(f"τ{i + 1}" for i in range(robot.n_cables)), "stable"):
             t.add_column(h, justify="right")
