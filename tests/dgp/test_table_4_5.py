@@ -9,7 +9,11 @@ import numpy as np
 import pytest
 
 from taut.dgp import solve_dgp
+from taut.dgp.formulation import build_subproblem
 from taut.dgp.solve import _solve_subset
+from taut.geometry.rotation import rotation_matrix
+from taut.interval.branch_prune import _admissible
+from taut.interval.krawczyk import certify
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
 from taut.parallel import get_executor
@@ -91,3 +95,21 @@ def test_table_4_5_four_taut_cables():
         match = [s for s in sols if np.allclose(np.r_[s.position, s.orientation], row[:6], atol=3e-3)]
         assert len(match) == 1, row
         assert np.allclose(match[0].tensions, row[6:], atol=3e-3) and not match[0].stable
+
+
+def test_table_4_5_conf_4_stretches_its_slack_cable():
+    """Conf. 4 (cables 1,2,3,5,6 taut, 0.002 from Conf. 3 where τ4 = 0.004) solves the
+    5-taut equations, but cable 4 would then span 1.26 mm more than its length: with the
+    printed data it is not an admissible equilibrium, and the DGP does not report it."""
+    taut = (0, 1, 2, 4, 5)
+    sp = build_subproblem(ROBOT, LENGTHS, taut)
+    pose = np.array([-0.279, -1.470, 0.549, -0.669, 0.016, -0.046])
+    tau = np.array([0.381, 0.267, 0.161, 0.380, 0.213])
+    q = pose[:3] + sp.body_refs @ rotation_matrix(pose[3:], "xyz-fixed").T
+    cert = certify(sp.system, np.concatenate([q.ravel(), tau / LENGTHS[list(taut)]]))
+    assert cert is not None and cert.width < 1e-9
+    p, ang, _ = sp.pose(cert.x, "xyz-fixed")
+    assert np.allclose(np.r_[p, ang], pose, atol=2e-3)
+    span = inverse_kinematics(ROBOT, np.r_[p, ang]).lengths
+    assert span[3] - LENGTHS[3] == pytest.approx(1.26e-3, abs=1e-5)
+    assert not _admissible(sp.system, cert, sp.lo, sp.hi)
