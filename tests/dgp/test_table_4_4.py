@@ -4,16 +4,12 @@ Conf. 38–41; the 28 with 2, Conf. 42–46 (all unstable).  The printed
 angles are ill-conditioned in the 3-digit data: Conf. 3 comes out at φx = 1.044, φz = −0.770
 (printed 1.048, −0.765) with the lengths met to 1e-9, hence the 1e-2 tolerance on angles."""
 
-from itertools import combinations
-
 import numpy as np
 import pytest
 
 from taut.dgp import solve_dgp
-from taut.dgp.solve import _solve_subset
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
-from taut.parallel import get_executor
 
 ROBOT = load_robot("cogiro")
 LENGTHS = np.array(ROBOT.reference.lengths)
@@ -28,12 +24,10 @@ TABLE = [  # Conf. 1-6 (m = 6): x, y, z, phi_x, phi_y, phi_z; tau_1..tau_8
 
 
 @pytest.mark.slow
-def test_table_4_4_six_taut_cables():
-    jobs = [(ROBOT, LENGTHS, taut, 1e-7) for taut in combinations(range(8), 6)]
-    with get_executor(workers=2) as ex:
-        parts = ex.map(_solve_subset, jobs)
-    sols = [s for found, _, _ in parts for s in found]
-    assert sum(und for _, und, _ in parts) == 0
+def test_table_4_4_six_taut_cables(solve_subsets):
+    res = solve_subsets(ROBOT, 6)
+    sols = [s for found, _ in res.values() for s in found]
+    assert sum(und for _, und in res.values()) == 0
     assert len(sols) == 6
     for pose, tensions in TABLE:
         match = [s for s in sols if np.allclose(s.position, pose[:3], atol=2e-3)
@@ -69,12 +63,10 @@ def test_table_4_4_two_taut_cables():
 
 
 @pytest.mark.slow
-def test_table_4_4_three_taut_cables():
-    jobs = [(ROBOT, LENGTHS, taut, 1e-7) for taut in combinations(range(8), 3)]
-    with get_executor(workers=2) as ex:
-        parts = ex.map(_solve_subset, jobs)
-    sols = [s for found, _, _ in parts for s in found]
-    assert sum(und for _, und, _ in parts) == 0
+def test_table_4_4_three_taut_cables(solve_subsets):
+    res = solve_subsets(ROBOT, 3)
+    sols = [s for found, _ in res.values() for s in found]
+    assert sum(und for _, und in res.values()) == 0
     printed = {  # Conf. 38-41: x, y, z, phi_x, phi_y, phi_z and the three tensions
         (4, 7, 8): ([-0.414, 0.404, 2.333, 2.198, -0.937, 0.499], [1.717, 1.519, 0.198]),
         (3, 6, 8): ([0.644, -0.429, 1.929, -1.728, 0.999, 0.879], [1.631, 0.015, 1.637]),

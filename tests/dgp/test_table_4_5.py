@@ -3,8 +3,6 @@ coplanar): the sub-problems with 6, 4, 3 and 2 taut cables hold exactly Conf. 1�
 5–11, 12–15 and 16–17 (unstable).  The OCR lost z of Conf. 1–2 and τ4 of Conf. 1, τ2 of Conf. 2–3 (None below): the equations
 give them (z = 0.778 and 0.338; τ4 = 0.078; τ2 = 0.291 and 0.271)."""
 
-from itertools import combinations
-
 import numpy as np
 import pytest
 
@@ -16,7 +14,6 @@ from taut.interval.branch_prune import _admissible
 from taut.interval.krawczyk import certify
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
-from taut.parallel import get_executor
 
 ROBOT = load_robot("marionet-vr")
 LENGTHS = np.array(ROBOT.reference.lengths)
@@ -58,8 +55,10 @@ def test_table_4_5_two_taut_cables():
 
 
 @pytest.mark.slow
-def test_table_4_5_three_taut_cables():
-    sols = [s for taut in combinations(range(6), 3) for s in _solve_subset((ROBOT, LENGTHS, taut, 1e-7))[0]]
+def test_table_4_5_three_taut_cables(solve_subsets):
+    res = solve_subsets(ROBOT, 3)
+    assert sum(und for _, und in res.values()) == 0
+    sols = [s for found, _ in res.values() for s in found]
     printed = {  # Conf. 12-15: x, y, z, phi_x, phi_y, phi_z, tau_1..tau_6
         (2, 4, 6): [0.132, -0.597, 2.425, -2.065, 0.376, 3.057, 0, 1.355, 0, 0.471, 0, 1.419],
         (1, 5, 6): [0.386, -0.364, 2.294, -1.703, -0.087, -3.059, 1.393, 0, 0, 0, 1.256, 0.480],
@@ -74,13 +73,11 @@ def test_table_4_5_three_taut_cables():
 
 
 @pytest.mark.slow
-def test_table_4_5_four_taut_cables():
-    jobs = [(ROBOT, LENGTHS, taut, 1e-7) for taut in combinations(range(6), 4)]
-    with get_executor(workers=2) as ex:  # about 10 min
-        parts = ex.map(_solve_subset, jobs)
-    sols = [s for found, _, _ in parts for s in found]
+def test_table_4_5_four_taut_cables(solve_subsets):
+    res = solve_subsets(ROBOT, 4)  # about 10 min
+    sols = [s for found, _ in res.values() for s in found]
     # cables 1,3,4,5 spend the 2e6-box budget without a solution: undecided, reported
-    assert {taut: und for (_, _, taut, _), (_, und, _) in zip(jobs, parts) if und} == {(0, 2, 3, 4): 13}
+    assert {taut: und for taut, (_, und) in res.items() if und} == {(0, 2, 3, 4): 13}
     printed = [  # Conf. 5-11: x, y, z, phi_x, phi_y, phi_z, tau_1..tau_6
         [-0.502, -0.452, 0.351, 0.817, -0.913, -2.873, 0, 0.300, 0, 0.492, 0.243, 0.679],
         [-0.289, -0.592, 0.553, 0.940, 0.069, 0.008, 0, 0.395, 0.496, 0.464, 0.432, 0],
