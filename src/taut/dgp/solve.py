@@ -23,7 +23,7 @@ from taut.dgp.single_cable import single_cable_equilibria
 from taut.dgp.stability import is_stable
 from taut.errors import TautError
 from taut.geometry.rotation import angles_from_matrix
-from taut.interval.branch_prune import branch_and_prune, same_solution
+from taut.interval.branch_prune import _bisect_index, _split, branch_and_prune, same_solution
 from taut.interval.hc4 import contract
 from taut.model.robot import Robot
 from taut.parallel import SerialExecutor, get_executor
@@ -87,20 +87,12 @@ def _pieces(sp, split: int) -> list[tuple[np.ndarray, np.ndarray]]:
             break
         widths = [np.max(np.where(sp.primary, hi - lo, -1.0)) for lo, hi in live]
         lo, hi = live.pop(int(np.argmax(widths)))
-        for part in _halves(lo, hi, sp.primary):
+        for part in _split(lo, hi, _bisect_index(hi - lo, sp.primary, 0.0)):
             if contract(sp.system.tape, *part) and sp.statics(*part):
                 live.append(part)
         if not live:
             break
     return live
-
-
-def _halves(lo, hi, primary):
-    j = int(np.argmax(np.where(primary, hi - lo, -1.0)))
-    mid = 0.5 * lo[j] + 0.5 * hi[j]
-    a_hi, b_lo = hi.copy(), lo.copy()
-    a_hi[j], b_lo[j] = mid, mid
-    return (lo.copy(), a_hi), (b_lo, hi.copy())
 
 
 def _solve_piece(job):
