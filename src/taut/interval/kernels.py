@@ -24,21 +24,28 @@ from numba import njit
 INF = np.inf
 _PHI = 2.0**-53 * (1.0 + 2.0**-52)  #: u(1 + 2u), u = 2⁻⁵³ (Rump et al. 2009)
 _ETA = 5e-324  #: smallest positive subnormal, 2⁻¹⁰⁷⁴
+_MAX = float(np.finfo(np.float64).max)
 
 
 @njit(cache=True, fastmath=False, inline="always")
 def down(x):
-    """A float ``≤ pred(x)`` (a lower bound of any real within ½ ulp of ``x``); ``±∞`` and
-    NaN are returned unchanged."""
-    if abs(x) == INF:
+    """A float ``≤ pred(x)`` (a lower bound of any real within ½ ulp of ``x``).  ``-∞`` and
+    NaN are returned unchanged; ``+∞`` becomes the largest finite float, because a ``+∞``
+    computed from finite operands is an overflow whose exact value is finite, and ``+∞``
+    would not be a lower bound of it."""
+    if x == INF:
+        return _MAX
+    if x == -INF:
         return x
     return x - (_PHI * abs(x) + _ETA)
 
 
 @njit(cache=True, fastmath=False, inline="always")
 def up(x):
-    """A float ``≥ succ(x)``."""
-    if abs(x) == INF:
+    """A float ``≥ succ(x)``; ``-∞`` becomes the most negative finite float (see :func:`down`)."""
+    if x == -INF:
+        return -_MAX
+    if x == INF:
         return x
     return x + (_PHI * abs(x) + _ETA)
 
