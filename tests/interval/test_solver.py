@@ -1,8 +1,10 @@
 """HC4, interval Gauss, Krawczyk + inflation and branch-and-prune on small systems."""
 
+from fractions import Fraction
+
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from taut.interval import (
@@ -36,6 +38,72 @@ def test_krawczyk_proves_uniqueness_and_inflation_gives_a_wider_box():
     # Eq. 3.40 gives √3/4 with exact symbolic cancellation; the natural extension is sound but smaller
     assert 0.05 < r <= np.sqrt(3) / 4
     assert krawczyk(CIRCLES, s - r, s + r).status != "empty"
+
+
+@st.composite
+def systems_with_a_zero(draw):
+    """``f_i(x) = (x_i − s_i)(x_i + b_i) + Σ_j a_ij (x_j − s_j)``: every term vanishes
+    exactly at ``x = s`` (a float), so ``s`` is an exact zero; and a box around it."""
+    n = draw(st.integers(2, 5))
+    num = st.floats(-3.0, 3.0, allow_nan=False)
+    s = np.array(draw(st.lists(num, min_size=n, max_size=n)))
+    b = draw(st.lists(num, min_size=n, max_size=n))
+    a = np.array(draw(st.lists(num, min_size=n * n, max_size=n * n))).reshape(n, n)
+    x = variables(n)
+    eqs = [(x[i] - float(s[i])) * (x[i] + float(b[i]))
+           + sum(((x[j] - float(s[j])) * float(a[i, j]) for j in range(n)), const(0.0)) for i in range(n)]
+    below = np.array(draw(st.lists(st.floats(0.0, 0.5), min_size=n, max_size=n)))
+    above = np.array(draw(st.lists(st.floats(0.0, 0.5), min_size=n, max_size=n)))
+    return compile_system(n, eqs), s, s - below, s + above
+
+
+@settings(max_examples=300, deadline=None)
+@given(systems_with_a_zero())
+def test_krawczyk_never_loses_a_zero_of_the_box(case):
+    """A zero in X is in K(X) ∩ X: the box is never called empty and keeps the zero."""
+    system, s, lo, hi = case
+    res = krawczyk(system, lo, hi)
+    assert res.status != "empty"
+    assert np.all(res.lo <= s) and np.all(s <= res.hi)
+
+
+def _exact_krawczyk(C, y, fl, fh, Jl, Jh, lo, hi):
+    """``y − C f(y) + (I − C J)(X − y)`` over the interval data, in exact rationals."""
+    F = Fraction
+    n = y.size
+    out = []
+    for i in range(n):
+        cf = [sorted((F(C[i, k]) * F(fl[k]), F(C[i, k]) * F(fh[k]))) for k in range(n)]
+        acc_lo = F(y[i]) - sum(c[1] for c in cf)
+        acc_hi = F(y[i]) - sum(c[0] for c in cf)
+        for j in range(n):
+            terms = [sorted((F(C[i, k]) * F(Jl[k, j]), F(C[i, k]) * F(Jh[k, j]))) for k in range(n)]
+            d = F(1 if i == j else 0)
+            m_lo, m_hi = d - sum(t[1] for t in terms), d - sum(t[0] for t in terms)
+            x_lo, x_hi = F(lo[j]) - F(y[j]), F(hi[j]) - F(y[j])
+            prods = [m_lo * x_lo, m_lo * x_hi, m_hi * x_lo, m_hi * x_hi]
+            acc_lo, acc_hi = acc_lo + min(prods), acc_hi + max(prods)
+        out.append((acc_lo, acc_hi))
+    return out
+
+
+@settings(max_examples=100, deadline=None)
+@given(systems_with_a_zero())
+def test_midpoint_radius_krawczyk_encloses_the_exact_operator(case):
+    """The float midpoint-radius evaluation of K(X) holds the exact interval-arithmetic
+    K(X) of the same data (C, f(y), J(X)): its error bounds are not too small."""
+    from taut.interval.hc4 import evaluate
+    from taut.interval.krawczyk import _krawczyk, jacobian
+
+    system, _, lo, hi = case
+    Jl, Jh = jacobian(system, lo, hi)
+    assume(np.linalg.cond(0.5 * Jl + 0.5 * Jh) < 1e12)
+    C = np.linalg.inv(0.5 * Jl + 0.5 * Jh)
+    y = 0.5 * lo + 0.5 * hi
+    fl, fh = evaluate(system.tape, y, y)
+    kl, kh = _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)
+    for i, (elo, ehi) in enumerate(_exact_krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)):
+        assert Fraction(kl[i]) <= elo and ehi <= Fraction(kh[i])
 
 
 def test_branch_and_prune_finds_all_solutions():

@@ -23,7 +23,11 @@ subset, :mod:`taut.dgp.formulation`) to the new lengths ``ρ₁``:
    small instead.
 
 The sub-problem of each taut subset is compiled once per robot (the lengths only enter the
-constants ``ρ_i²`` of the length equations, which are patched per update).  A single taut
+constants ``ρ_i²`` of the length equations, which are patched per update), and steps 1–2
+together with everything a solution reports — the frame, the tensions, the slack cables'
+spans and the stability test of §3.2.2 — run in one compiled call (:func:`_update`): at a
+few tens of microseconds per update, Python-side array code would cost more than the
+arithmetic.  A single taut
 cable leaves the spin about the vertical free (a continuum, §2.3): its Jacobian is
 singular and tracking it raises :class:`~taut.errors.TrackingLostError`.
 """
@@ -35,12 +39,15 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from taut.dgp.formulation import Subproblem, build_subproblem, load
+from numba import njit
+
+from taut.dgp.formulation import Subproblem, _frame, build_subproblem, load
 from taut.dgp.solve import DGPSolution, check_lengths
-from taut.dgp.stability import is_stable
+from taut.dgp.stability import _smallest_eigenvalue
 from taut.errors import TautError, TrackingLostError
-from taut.geometry.rotation import angles_from_matrix, rotation_matrix
+from taut.geometry.rotation import CONVENTIONS, _angles, rotation_matrix
 from taut.interval.expression import CONST, SQR
+from taut.interval.hc4 import point_kernel
 from taut.interval.krawczyk import certified_step
 from taut.model.robot import Robot
 
@@ -58,20 +65,22 @@ class _Compiled:
 
     sub: Subproblem
     nodes: np.ndarray  #: tape index of the CONST node ``ρ_i`` of each taut cable's length equation
+    args: tuple  #: the leading arguments of :func:`_update` (tapes, geometry, taut indices)
 
-    def system(self, lengths: np.ndarray):
-        """The square system with the lengths ``lengths``: its length constants are
-        patched in place (one update at a time per process, as tracking runs)."""
+    def update(self, lengths: np.ndarray, s: "_State"):
+        """:func:`_update` from ``s`` to ``lengths``: the length constants of the tape are
+        patched in place first (one update at a time per process, as tracking runs)."""
         tape = self.sub.system.tape
         rho = lengths[list(self.sub.taut)]
         tape.clo[self.nodes] = rho
         tape.chi[self.nodes] = rho
-        return self.sub.system
+        return _update(*self.args, lengths, s.p, s.R, s.tensions)
 
 
 @dataclass
 class _RobotCache:
     load_point: np.ndarray  #: body-frame point where the external wrench acts
+    convention: int  #: index of the robot's orientation convention in ``CONVENTIONS``
     subsets: dict = field(default_factory=dict)  #: taut subset → :class:`_Compiled`
 
 
@@ -82,13 +91,14 @@ def _cache(robot: Robot) -> _RobotCache:
     key = id(robot)
     rc = _CACHE.get(key)
     if rc is None:
-        rc = _CACHE[key] = _RobotCache(load(robot)[2])
+        rc = _CACHE[key] = _RobotCache(load(robot)[2], CONVENTIONS.index(robot.orientation))
         weakref.finalize(robot, _CACHE.pop, key, None)
     return rc
 
 
 def _compiled(robot: Robot, taut: tuple[int, ...]) -> _Compiled:
-    per_robot = _cache(robot).subsets
+    rc = _cache(robot)
+    per_robot = rc.subsets
     c = per_robot.get(taut)
     if c is None:
         ones = np.ones(robot.n_cables)  # placeholder lengths, patched per update
@@ -100,7 +110,11 @@ def _compiled(robot: Robot, taut: tuple[int, ...]) -> _Compiled:
             sq = tape.b[root]
             assert tape.op[sq] == SQR and tape.op[tape.a[sq]] == CONST and tape.clo[tape.a[sq]] == 1.0
             nodes.append(tape.a[sq])
-        c = per_robot[taut] = _Compiled(sub, np.array(nodes, np.int64))
+        system, statics = sub.system, sub.statics.tape
+        args = (*system.tape.arrays[:7], system.n_equations, *system.jacobian.arrays[:7], system.rows, system.cols,
+                *statics.arrays[:7], sub.body_refs, robot.anchors, robot.exits, rc.load_point,
+                np.array(taut, np.int64), rc.convention)
+        c = per_robot[taut] = _Compiled(sub, np.array(nodes, np.int64), args)
     return c
 
 
@@ -111,32 +125,66 @@ class _State:
     p: np.ndarray
     R: np.ndarray
     tensions: np.ndarray  #: all n cables
+    angles: np.ndarray | None = None  #: orientation in the robot's convention (not kept for a start state)
+    stable: bool = False
 
 
-def _unknowns(c: _Compiled, s: _State, lengths: np.ndarray) -> np.ndarray:
-    """The sub-problem's unknowns (reference points, ``τ/ρ``) of a pose and tensions."""
-    q = s.p + c.sub.body_refs @ s.R.T
-    if not c.sub.tension_unknowns:
-        return q.ravel()
-    idx = list(c.sub.taut)
-    return np.concatenate([q.ravel(), s.tensions[idx] / lengths[idx]])
+@njit(cache=True)
+def _update(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend, rows, cols,
+            sop, sa, sb, sclo, schi, sstart, send, refs, anchors, exits, gp, idx, convention, lengths, p0, R0, tau0):
+    """Steps 1–2 of the module docstring and the solution's data, in one compiled call.
+
+    The unknowns of the pose ``(p0, R0)`` and tensions ``tau0`` (the three ``refs``
+    reference points, then ``τ/ρ`` unless six cables are taut) start :func:`~taut.interval.krawczyk.certified_step`;
+    from its limit come the frame (:func:`~taut.dgp.formulation._frame`), the tensions
+    (for six taut cables the square statics of the ``s*`` tape, §3.1.3), every cable's
+    span ``‖b_i − a_i‖`` and the smallest eigenvalue of the reduced Hessian (§3.2.2).
+    Returns ``(status, p, R, angles, tensions, spans, eigenvalue, box width)``; status as
+    :func:`certified_step` (1: certified)."""
+    n, m, pose = anchors.shape[0], idx.size, 9
+    x0 = np.empty(h)
+    for s in range(3):
+        x0[3 * s : 3 * s + 3] = p0 + R0 @ refs[s]
+    for j in range(h - pose):
+        x0[pose + j] = tau0[idx[j]] / lengths[idx[j]]
+    status, x, lo, hi = certified_step(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend,
+                                        rows, cols, x0, BOX_MARGIN, BOX_FLOOR, 1e-13, 30, 10)
+    width = np.max(hi - lo)
+    tau, spans = np.zeros(n), np.zeros(n)
+    if status != 1:
+        return status, p0, R0, np.zeros(3), tau, spans, 0.0, width
+    p, R = _frame(np.ascontiguousarray(x[:9]).reshape(3, 3), refs)
+    if h > pose:
+        for j in range(m):
+            tau[idx[j]] = x[pose + j] * lengths[idx[j]]
+    else:
+        vals = np.empty(sstart.size)
+        point_kernel(sop, sa, sb, sclo, schi, sstart, send, x, vals)
+        t = np.linalg.solve(np.ascontiguousarray(vals[: 6 * m]).reshape(6, m), vals[6 * m :])
+        for j in range(m):
+            tau[idx[j]] = t[j] * lengths[idx[j]]
+    for i in range(n):
+        spans[i] = np.sqrt(np.sum((p + R @ anchors[i] - exits[i]) ** 2))
+    at, bt, taut_tau, rho = np.empty((m, 3)), np.empty((m, 3)), np.empty(m), np.empty(m)
+    for j in range(m):
+        at[j], bt[j] = exits[idx[j]], p + R @ anchors[idx[j]]
+        taut_tau[j], rho[j] = tau[idx[j]], lengths[idx[j]]
+    eig = _smallest_eigenvalue(at, bt, p + R @ gp, taut_tau, rho)
+    ang = _angles(R.reshape(1, 3, 3), convention)[0]
+    return status, p, R, ang, tau, spans, eig, width
 
 
 def _attempt(robot: Robot, s: _State, taut: tuple[int, ...], lengths: np.ndarray):
     """Newton + Krawczyk on subset ``taut``; ``(state, box width)`` or a reason string."""
     if not 2 <= len(taut) <= 6:
         return f"a taut set of {len(taut)} cable(s) has no isolated equilibrium to track"
-    c = _compiled(robot, taut)
-    system = c.system(lengths)
-    status, x, lo, hi = certified_step(system, _unknowns(c, s, lengths), margin=BOX_MARGIN, floor=BOX_FLOOR)
-    if status == "newton-failed":
+    status, p, R, ang, tau, spans, eig, width = _compiled(robot, taut).update(lengths, s)
+    if status == -1:
         return "Newton did not converge"
-    if status != "unique":
-        kind = "holds no equilibrium" if status == "empty" else "was not proven to hold a unique equilibrium"
-        return f"the Krawczyk box of half-width {0.5 * np.max(hi - lo):.3g} around the step {kind}"
-    p, R = c.sub.frame(x)
-    n = robot.n_cables
-    return _State(taut, lengths, p, R, c.sub.tensions(x, lengths, n)), float(np.max(hi - lo))
+    if status != 1:
+        kind = "holds no equilibrium" if status == 2 else "was not proven to hold a unique equilibrium"
+        return f"the Krawczyk box of half-width {0.5 * width:.3g} around the step {kind}"
+    return _State(taut, lengths, p, R, tau, ang, bool(eig > 0.0)), float(width), spans
 
 
 def _step(robot: Robot, s: _State, lengths: np.ndarray, halvings: int = MAX_HALVINGS) -> tuple[_State, float]:
@@ -151,7 +199,6 @@ def _step(robot: Robot, s: _State, lengths: np.ndarray, halvings: int = MAX_HALV
 
 
 def _advance(robot: Robot, s: _State, lengths: np.ndarray) -> tuple[_State, float]:
-    a, r = robot.exits, robot.anchors
     taut, tried = s.taut, []
     while True:
         tried.append(taut)
@@ -159,13 +206,9 @@ def _advance(robot: Robot, s: _State, lengths: np.ndarray) -> tuple[_State, floa
         if isinstance(out, str):
             raise TrackingLostError(f"tracking lost with taut cables {[i + 1 for i in taut]} "
                                     f"at lengths {lengths.tolist()}: {out}")
-        new, width = out
+        new, width, dist = out
         negative = [i for i in taut if new.tensions[i] < 0.0]
-        slack = [k for k in range(robot.n_cables) if k not in taut]
-        dist = np.zeros(robot.n_cables)
-        if slack:
-            dist[slack] = np.linalg.norm(new.p + r[slack] @ new.R.T - a[slack], axis=1)
-        stretched = [k for k in slack if dist[k] > lengths[k]]
+        stretched = [k for k in range(robot.n_cables) if k not in taut and dist[k] > lengths[k]]
         if not negative and not stretched:
             return new, width
         if negative:  # drop the most negative tension first, then re-check
@@ -197,13 +240,8 @@ def _state(robot: Robot, sol: DGPSolution, lengths: np.ndarray) -> _State:
     return _State(taut, held, p, R, tau)
 
 
-def _solution(robot: Robot, s: _State, lengths: np.ndarray, width: float) -> DGPSolution:
-    idx = list(s.taut)
-    gp = _cache(robot).load_point
-    b = s.p + robot.anchors @ s.R.T
-    stable = is_stable(robot.exits[idx], b[idx], s.p + s.R @ gp, s.tensions[idx], lengths[idx])
-    return DGPSolution(tuple(i + 1 for i in s.taut), s.p, angles_from_matrix(s.R, robot.orientation),
-                       s.tensions, stable, width, 0.0)
+def _solution(s: _State, width: float) -> DGPSolution:
+    return DGPSolution(tuple(i + 1 for i in s.taut), s.p, s.angles, s.tensions, s.stable, width, 0.0)
 
 
 def track(robot: Robot, previous_solution, lengths) -> DGPSolution:
@@ -214,7 +252,7 @@ def track(robot: Robot, previous_solution, lengths) -> DGPSolution:
     ``uniqueness_radius`` is not computed (0)."""
     lengths = check_lengths(robot, lengths)
     s, width = _step(robot, _state(robot, previous_solution, lengths), lengths)
-    return _solution(robot, s, lengths, width)
+    return _solution(s, width)
 
 
 def track_path(robot: Robot, start_solution, lengths_sequence) -> list[DGPSolution]:
@@ -234,5 +272,5 @@ def track_path(robot: Robot, start_solution, lengths_sequence) -> list[DGPSoluti
     for lengths in rows:
         s = _state(robot, start_solution, lengths) if s is None else s
         s, width = _step(robot, s, lengths)
-        out.append(_solution(robot, s, lengths, width))
+        out.append(_solution(s, width))
     return out

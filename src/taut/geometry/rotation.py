@@ -19,22 +19,31 @@ from numba import njit
 CONVENTIONS = ("xyz-fixed", "xyz-moving", "tilt-torsion")
 
 
-def _rx(a):
-    c, s = np.cos(a), np.sin(a)
-    o, z = np.ones_like(a), np.zeros_like(a)
-    return np.stack([np.stack([o, z, z], -1), np.stack([z, c, -s], -1), np.stack([z, s, c], -1)], -2)
+@njit(cache=True)
+def _axis(k: int, t: float) -> np.ndarray:
+    """Rotation by ``t`` about axis ``k`` (0: x, 1: y, 2: z)."""
+    c, s = math.cos(t), math.sin(t)
+    M = np.zeros((3, 3))
+    i, j = (k + 1) % 3, (k + 2) % 3
+    M[k, k] = 1.0
+    M[i, i], M[i, j], M[j, i], M[j, j] = c, -s, s, c
+    return M
 
 
-def _ry(a):
-    c, s = np.cos(a), np.sin(a)
-    o, z = np.ones_like(a), np.zeros_like(a)
-    return np.stack([np.stack([c, z, s], -1), np.stack([z, o, z], -1), np.stack([-s, z, c], -1)], -2)
-
-
-def _rz(a):
-    c, s = np.cos(a), np.sin(a)
-    o, z = np.ones_like(a), np.zeros_like(a)
-    return np.stack([np.stack([c, -s, z], -1), np.stack([s, c, z], -1), np.stack([z, z, o], -1)], -2)
+@njit(cache=True)
+def _matrices(angles: np.ndarray, code: int) -> np.ndarray:
+    """Matrices ``(N, 3, 3)`` of the angles ``(N, 3)``, convention ``code`` (index in
+    :data:`CONVENTIONS`).  Compiled for the same reason as :func:`_angles`."""
+    out = np.empty((angles.shape[0], 3, 3))
+    for n in range(angles.shape[0]):
+        a, b, c = angles[n, 0], angles[n, 1], angles[n, 2]
+        if code == 0:
+            out[n] = _axis(2, c) @ _axis(1, b) @ _axis(0, a)
+        elif code == 1:
+            out[n] = _axis(0, a) @ _axis(1, b) @ _axis(2, c)
+        else:
+            out[n] = _axis(2, a) @ _axis(1, b) @ _axis(2, c - a)
+    return out
 
 
 def planar_rotation(theta) -> np.ndarray:
@@ -46,15 +55,11 @@ def planar_rotation(theta) -> np.ndarray:
 
 def rotation_matrix(angles, convention: str = "xyz-fixed") -> np.ndarray:
     """Rotation matrices ``(..., 3, 3)`` from three angles ``(..., 3)`` in ``convention``."""
+    if convention not in CONVENTIONS:
+        raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
     angles = np.asarray(angles, dtype=float)
-    a, b, c = angles[..., 0], angles[..., 1], angles[..., 2]
-    if convention == "xyz-fixed":
-        return _rz(c) @ _ry(b) @ _rx(a)
-    if convention == "xyz-moving":
-        return _rx(a) @ _ry(b) @ _rz(c)
-    if convention == "tilt-torsion":
-        return _rz(a) @ _ry(b) @ _rz(c - a)
-    raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
+    flat = np.ascontiguousarray(angles.reshape(-1, 3))
+    return _matrices(flat, CONVENTIONS.index(convention)).reshape(angles.shape[:-1] + (3, 3))
 
 
 @njit(cache=True)

@@ -65,27 +65,68 @@ def newton(system: System, x0, tol: float = 1e-13, max_iter: int = 30) -> tuple[
     return x, False
 
 
+_U = 2.0**-53  #: unit roundoff
+#: Added to every radius: bounds the underflow errors of a dot product (at most 2n·2⁻¹⁰⁷⁴).
+_TINY = 1e-300
+
+
+@njit(cache=True, fastmath=False)
+def _mid_rad(lo, hi):
+    """``(c, r)`` with ``[lo, hi] ⊆ [c − r, c + r]``; ``r`` rounded up."""
+    c = 0.5 * lo + 0.5 * hi
+    return c, K.up(max(c - lo, hi - c))
+
+
 @njit(cache=True, fastmath=False)
 def _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi):
-    h = y.size
-    Sl, Sh = _precondition(C, Jl, Jh)
-    kl = np.empty(h)
-    kh = np.empty(h)
+    """``K(X) = y − C f(y) + (I − C J(X))(X − y)`` in midpoint-radius form (Rump, "Fast
+    and parallel interval arithmetic", BIT 39, 1999): a point matrix times an interval
+    matrix is ``C·[J_c ± J_r] = C J_c ± |C| J_r`` exactly, so the products are float
+    dot products, each bounded by the a-priori error ``γ_n = n u/(1 − n u)`` of an
+    n-term dot product (Higham, *Accuracy and Stability*, Eq. 3.5), instead of n³
+    outward-rounded interval operations.  ``X − y`` is enclosed in ``[−x_r, x_r]``, so
+    ``M (X − y) ⊆ ±(|M_c| + M_r) x_r`` (exact for a symmetric vector).  A non-finite
+    input leaves ``K(X)`` unbounded (no information)."""
+    h, n = C.shape[0], y.size
+    kl, kh = np.full(h, -np.inf), np.full(h, np.inf)
+    g = (n + 2) * _U / (1.0 - (n + 2) * _U)  # γ_{n+2}: dot products of up to n+1 terms
+    grow = 1.0 + 2.0 * g + 16.0 * _U  # x_exact ≤ x_float/(1 − γ) ≤ x_float(1 + 2γ), plus the bound's own roundings
+    Jc, Jr = np.empty((h, n)), np.empty((h, n))
     for i in range(h):
-        # y_i − (C f(y))_i
-        sl, sh = 0.0, 0.0
+        for j in range(n):
+            Jc[i, j], Jr[i, j] = _mid_rad(Jl[i, j], Jh[i, j])
+            if not (np.isfinite(Jc[i, j]) and np.isfinite(Jr[i, j])):
+                return kl, kh
+    xr = np.empty(n)
+    for j in range(n):
+        xr[j] = K.up(max(y[j] - lo[j], hi[j] - y[j]))
+        if not np.isfinite(xr[j]):
+            return kl, kh
+    for i in range(h):
+        # (C f(y))_i: centre and radius of a point row times the interval vector f(y)
+        cf, ca, cr = 0.0, 0.0, 0.0
         for k in range(h):
-            pl, ph = K.mul(C[i, k], C[i, k], fl[k], fh[k])
-            sl, sh = K.add(sl, sh, pl, ph)
-        al, ah = K.sub(y[i], y[i], sl, sh)
-        for j in range(h):
-            ml, mh = K.neg(Sl[i, j], Sh[i, j])
-            if i == j:
-                ml, mh = K.add(1.0, 1.0, ml, mh)
-            dl, dh = K.sub(lo[j], hi[j], y[j], y[j])
-            pl, ph = K.mul(ml, mh, dl, dh)
-            al, ah = K.add(al, ah, pl, ph)
-        kl[i], kh[i] = al, ah
+            fc, fr = _mid_rad(fl[k], fh[k])
+            cf += C[i, k] * fc
+            ca += abs(C[i, k] * fc)
+            cr += abs(C[i, k]) * fr
+        # row i of M = I − C J(X) in midpoint-radius form, then |M| x_r
+        v = 0.0
+        for j in range(n):
+            pc, pa, pr = 0.0, 0.0, 0.0
+            for k in range(h):
+                c = C[i, k]
+                pc += c * Jc[k, j]
+                pa += abs(c * Jc[k, j])
+                pr += abs(c) * Jr[k, j]
+            mc = (1.0 if i == j else 0.0) - pc
+            mr = (pr + g * pa) * grow + 2.0 * _U * abs(mc)
+            v += (abs(mc) + mr) * xr[j]
+        kc = y[i] - cf
+        kr = K.up((cr + g * ca + v) * grow + 2.0 * _U * abs(kc)) + _TINY
+        if not (np.isfinite(kc) and np.isfinite(kr)):
+            return np.full(h, -np.inf), np.full(h, np.inf)
+        kl[i], kh[i] = K.down(kc - kr), K.up(kc + kr)
     return kl, kh
 
 
@@ -172,14 +213,17 @@ def _krawczyk_box(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, js
         return 1, kl, kh
     return 0, nl, nh
 
+
 @njit(cache=True, fastmath=False)
-def _certified_step(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, x0,
-                    margin, floor, tol, max_iter, inflations):
+def certified_step(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, x0,
+                   margin, floor, tol, max_iter, inflations):
     """Newton from ``x0``, then Krawczyk on the box around the limit ``x`` whose
     half-width covers the step: ``margin·|x − x₀| + floor·max(1, ‖x‖∞) + ‖x − x₀‖∞²`` per
     component, widened ``inflations`` times to the Krawczyk hull (ε-inflation, Rump 1983).
     Returns ``(status, x, lo, hi)``: status 1 — ``[lo, hi]`` holds ``x₀`` and exactly one
-    solution, ``x``; 2 — the box holds none; 0 — undecided; −1 — Newton failed."""
+    solution, ``x``; 2 — the box holds none; 0 — undecided; −1 — Newton failed.  The
+    tracking update of :mod:`taut.dgp.tracking` (called from its compiled code, hence the
+    flat tape arguments)."""
     n = x0.size
     x = x0.copy()
     f = np.empty(h)
@@ -217,18 +261,6 @@ def _certified_step(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, 
             break
         r = np.maximum(r, 1.1 * np.maximum(rh - x, x - rl))
     return status, x, rl, rh
-
-
-def certified_step(system: System, x0, *, margin: float = 1.25, floor: float = 1e-8, tol: float = 1e-13,
-                   max_iter: int = 30, inflations: int = 10) -> tuple[str, np.ndarray, np.ndarray, np.ndarray]:
-    """One compiled Newton + Krawczyk step from ``x0`` (see :func:`_certified_step`):
-    ``(status, x, lo, hi)`` with status ``"unique"``, ``"empty"``, ``"unknown"`` or
-    ``"newton-failed"``.  The tracking update of :mod:`taut.dgp.tracking`."""
-    t, jt = system.tape, system.jacobian
-    code, x, lo, hi = _certified_step(*t.arrays[:7], system.n_equations, *jt.arrays[:7], system.rows, system.cols,
-                                      np.asarray(x0, float), float(margin), float(floor), float(tol), int(max_iter),
-                                      int(inflations))
-    return {1: "unique", 2: "empty", 0: "unknown", -1: "newton-failed"}[int(code)], x, lo, hi
 
 
 def inflate(system: System, x, delta: float = 1e-9, max_doublings: int = 60) -> float:
