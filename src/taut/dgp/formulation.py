@@ -10,7 +10,10 @@ anchors, so that the length constraints of the taut reference anchors are plain 
 
     s = q_1 + β_2 (q_2 − q_1) + β_3 (q_3 − q_1) + β_4 (q_2 − q_1) × (q_3 − q_1),
 
-with constants ``β`` from the body-frame geometry (Eq. 2.22).  Equations (all of degree
+with constants ``β`` from the body-frame geometry (Eq. 2.22), entered in the affine form
+``(1 − β_2 − β_3) q_1 + β_2 q_2 + β_3 q_3 + β_4 (…)×(…)`` of Eqs. 2.23–2.24, where each
+unknown occurs once in the linear part (the cross product is dropped when ``β_4 = 0``
+exactly, i.e. for points on the reference plane).  Equations (all of degree
 ≤ 3 and polynomial, no trigonometry):
 
 * 3 rigidity relations ``‖q_i − q_j‖² = d_ij²`` (Eq. 2.19/2.28);
@@ -215,10 +218,20 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
     n12 = _cross(e1, e2)
 
     def point(label, body) -> list[Expr]:
+        """A secondary point (Eqs. 2.23–2.24) as ``c₁ q₁ + c₂ q₂ + c₃ q₃`` with affine weights
+        ``c₁ = 1 − β₂ − β₃``, ``c₂ = β₂``, ``c₃ = β₃`` — each unknown occurs once, so its
+        interval evaluation is exact — plus ``β₄ (q₂ − q₁)×(q₃ − q₁)`` off the reference plane."""
         if label in labels:
             return q[labels.index(label)]
-        beta = [_enclose(x) for x in _coordinates(refs, body)]
-        return [q[0][k] + beta[0] * e1[k] + beta[1] * e2[k] + beta[2] * n12[k] for k in range(3)]
+        beta = _coordinates(refs, body)
+        weights = (1 - beta[0] - beta[1], beta[0], beta[1])
+        out = []
+        for k in range(3):
+            terms = [qj[k] if c == 1 else _enclose(c) * qj[k] for c, qj in zip(weights, q) if c != 0]
+            if beta[2] != 0:
+                terms.append(_enclose(beta[2]) * n12[k])
+            out.append(sum(terms[1:], terms[0]) if terms else const(0.0))
+        return out
 
     b = {i: point(i, r[i]) for i in range(n)}
     g = point("G", gp)
