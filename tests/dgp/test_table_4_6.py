@@ -1,12 +1,13 @@
 """Table 4.6 of 001_eb92e2f6589fc229.txt (teaching prototype, 6 cables, coplanar platform
-anchors): the sub-problem with all 6 cables taut has exactly Conf. 1 and 2, both stable;
-the six with 5 taut cables, exactly Conf. 3–13 (3–5 stable); the fifteen with 4, Conf.
-14–25 and two more; the twenty with 3, Conf. 26–29 and 32–34.  The printed data have 3 digits and the robot is nearly a 3-3 one
-(exit points and anchors in pairs 2–4 mm apart), so the printed angles are met to
-0.05 rad and the tensions to 0.015, and two printed 3-taut equilibria, Conf. 30–31
-(cables 2, 4, 6), do not solve the equations with these data: next to them, the sub-problems (2,3,4,6) and (2,4,5,6) each
-hold an equilibrium whose fourth tension is nearly 0 (0.003 and 0.001) — the same
-configurations, moved across the boundary between the subsets by the rounding."""
+anchors): the sub-problem with all 6 cables taut has exactly Conf. 1 and 2, both stable; the
+six with 5 taut cables, exactly Conf. 3–13 (3–5 stable); the fifteen with 4, Conf. 14–25 and
+two more; the twenty with 3, Conf. 26–29 and 32–34. The printed data have 3 digits and the
+robot is nearly a 3-3 one (exit points and anchors in pairs 2–4 mm apart), so the printed
+angles are met to 0.05 rad and the tensions to 0.015, and two printed 3-taut equilibria,
+Conf. 30–31 (cables 2, 4, 6), do not solve the equations with these data: next to them, the
+sub-problems (2,3,4,6) and (2,4,5,6) each hold an equilibrium whose fourth tension is nearly
+0 (0.003 and 0.001) — the same configurations, moved across the boundary between the subsets
+by the rounding."""
 
 import numpy as np
 import pytest

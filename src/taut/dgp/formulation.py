@@ -4,9 +4,9 @@
 Parameterisation (§2.3.5–2.3.6, "reference points"): the unknowns are the fixed-frame
 positions ``q_1, q_2, q_3`` of three non-collinear platform points and the scaled tensions
 ``t_i = τ_i/ρ_i`` of the ``m`` taut cables — ``9 + m`` unknowns.  The reference points are
-taut anchors (completed by the load point ``G`` or slack anchors when fewer than three
-cables are taut), so that their length constraints are plain spheres (Eq. 2.26), and among
-those the three with the smallest secondary-point weights (§3.1.1, "Cable numbering").
+the three platform points with the smallest secondary-point weights, taut anchors preferred
+(their length constraints are plain spheres, Eq. 2.26): :func:`_reference_choice`
+(§3.1.1, "Cable numbering").
 Every other platform point is a *secondary point* (Eqs. 2.21–2.23)
 
     s = q_1 + β_2 (q_2 − q_1) + β_3 (q_3 − q_1) + β_4 (q_2 − q_1) × (q_3 − q_1),
@@ -137,26 +137,25 @@ def _frame(q: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return q[0] - R @ b[0], R
 
 
+#: Cost of a reference point that is not a taut anchor, in units of mean secondary-point
+#: weight: its domain is not cut to a sphere (Eq. 2.26), so it must buy a clearly better
+#: conditioning (the weights of §3.1.1's index Φ, Eq. 3.5, are empirical too).
+NON_TAUT_REFERENCE = 0.5
+
+
 def _reference_choice(robot: Robot, taut, gp) -> tuple[list, np.ndarray]:
-    """Reference points (§3.1.1, "Cable numbering"): three non-collinear platform points —
-    taut anchors first, so that their length constraints are plain spheres (Eq. 2.26), then
-    G and the slack anchors when fewer than three taut anchors are available — chosen to
-    minimise the mean ``|weight|`` of the secondary points written on them (the affine
-    weights and ``β₄`` of Eqs. 2.23–2.24, the term ``I_α`` that Eq. 3.5 weighs most).
-    Two reference points a few millimetres apart (paired anchors, as on MARIONET-VR and the
-    teaching prototype) would multiply every secondary point's interval by hundreds.
-    Returns their labels (cable index or "G") and body coordinates."""
+    """Reference points (§3.1.1, "Cable numbering"): the three non-collinear platform points
+    — anchors or the load point G — whose secondary points have the smallest mean
+    ``|weight|`` (the affine weights and ``β₄`` of Eqs. 2.23–2.24: the term ``I_α`` that
+    Eq. 3.5 weighs most), plus :data:`NON_TAUT_REFERENCE` per reference point that is not a
+    taut anchor.  Two reference points a few millimetres apart (paired anchors, as on
+    MARIONET-VR and the teaching prototype) would multiply every secondary point's interval
+    by hundreds.  Returns their labels (cable index or "G") and body coordinates."""
     r = robot.anchors
-    taut_points = [(i, r[i]) for i in taut]
-    others = [("G", gp)] + [(k, r[k]) for k in range(robot.n_cables) if k not in taut]
-    points = taut_points + others
+    points = [(i, r[i]) for i in taut] + [("G", gp)] + [(k, r[k]) for k in range(robot.n_cables) if k not in taut]
     scale = max(1e-12, max(np.linalg.norm(c[1] - points[0][1]) for c in points))
-    if len(taut_points) >= 3:
-        triples = list(combinations(taut_points, 3))
-    else:
-        triples = [tuple(taut_points) + extra for extra in combinations(others, 3 - len(taut_points))]
     best, best_cost = None, np.inf
-    for triple in triples:
+    for triple in combinations(points, 3):
         ref = np.array([c[1] for c in triple])
         area = np.linalg.norm(np.cross(ref[1] - ref[0], ref[2] - ref[0]))
         if area <= COLLINEAR * scale**2:
@@ -165,7 +164,7 @@ def _reference_choice(robot: Robot, taut, gp) -> tuple[list, np.ndarray]:
         labels = [c[0] for c in triple]
         beta = np.linalg.solve(E, np.array([pt - ref[0] for lab, pt in points if lab not in labels]).T).T
         weights = np.column_stack([1.0 - beta[:, 0] - beta[:, 1], beta])
-        cost = float(np.mean(np.abs(weights))) if weights.size else 0.0
+        cost = float(np.mean(np.abs(weights))) + NON_TAUT_REFERENCE * sum(lab not in taut for lab in labels)
         if cost < best_cost - 1e-12:
             best, best_cost = triple, cost
     if best is None:
