@@ -1,5 +1,8 @@
-"""Time of the complete DGP of Table 4.3 (suspended 3-cable robot, 001_eb92e2f6589fc229.txt
-§4.2.1) against the 25 s the source reports for its ALIAS C++ implementation.
+"""Time of a complete DGP of 001_eb92e2f6589fc229.txt §4.2 against the single-core time the
+source reports for its ALIAS C++ implementation: Table 4.3 (suspended 3-cable robot, 25 s) by
+default, or with ``--robot`` Table 4.6 (teaching-prototype, 187 s), 4.5 (marionet-vr, 702 s)
+or 4.4 (cogiro, 1343 s); the count of solutions per number of taut cables is printed next to
+the table's.
 
 With ``--peer``, also the sub-problem with all three cables taut against the peer ``bertini2``
 (``pip install bertini2``): its zero-dimensional solve (the start system it infers, total degree
@@ -8,7 +11,7 @@ With ``--peer``, also the sub-problem with all three cables taut against the pee
 sub-problem alone.  bertini2 needs minutes here; its count is of the real endpoints with
 non-negative tensions.
 
-    python benchmarks/bench_dgp.py [--max-taut K] [--repeat R] [--workers N]
+    python benchmarks/bench_dgp.py [--robot NAME] [--max-taut K] [--repeat R] [--workers N]
                                    [--peer] [--peer-mptype double|adaptive]
 """
 
@@ -16,6 +19,7 @@ from _common import best_of  # first: it pins the thread pools to one core
 
 import argparse
 import time
+from collections import Counter
 from fractions import Fraction
 
 import numpy as np
@@ -27,7 +31,13 @@ from taut.geometry.rotation import rotation_matrix
 from taut.model import load_robot
 from taut.parallel import get_executor
 
-SOURCE_SECONDS = 25.0  # Table 4.3, §4.2.1
+#: robot → (table, the source's single-core seconds, printed solutions per number of taut cables), §4.2
+SOURCES = {
+    "suspended-3cable": ("Table 4.3", 25.0, {3: 6}),
+    "teaching-prototype": ("Table 4.6", 187.0, {6: 2, 5: 11, 4: 12, 3: 9}),
+    "marionet-vr": ("Table 4.5", 702.0, {6: 3, 5: 1, 4: 7, 3: 4, 2: 2}),
+    "cogiro": ("Table 4.4", 1343.0, {6: 6, 5: 16, 4: 15, 3: 4, 2: 5}),
+}
 ALL_TAUT = (0, 1, 2)
 EPS = 1e-7  # solve_dgp's default box width
 REAL_TOL = 1e-8  # |imaginary part| per unknown, relative to max(1, |value|)
@@ -136,6 +146,7 @@ def peer(robot, repeat, mptype):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--robot", choices=sorted(SOURCES), default="suspended-3cable")
     ap.add_argument("--max-taut", type=int, default=None)
     ap.add_argument("--repeat", type=int, default=1)
     ap.add_argument("--workers", type=int, default=1)
@@ -143,20 +154,28 @@ def main():
     ap.add_argument("--peer-mptype", choices=("double", "adaptive"), default="double",
                     help="bertini2's precision model (adaptive: a few times slower)")
     ns = ap.parse_args()
-    robot = load_robot("suspended-3cable")
-    solve_dgp(robot, max_taut=2)  # compile (or load) the Numba kernels outside the timing
+    robot = load_robot(ns.robot)
+    table, source_seconds, printed = SOURCES[ns.robot]
+    solve_dgp(load_robot("suspended-3cable"), max_taut=2)  # compile (or load) the Numba kernels outside the timing
     with get_executor(workers=ns.workers) as ex:
         t, res = best_of(lambda: solve_dgp(robot, max_taut=ns.max_taut, executor=ex), ns.repeat)
     stable = sum(s.stable for s in res.solutions)
-    print(f"Table 4.3: {len(res.solutions)} solutions ({stable} stable), {res.subproblems} sub-problems, "
+    per_m = dict(sorted(Counter(len(s.taut) for s in res.solutions).items(), reverse=True))
+    print(f"{table}: {len(res.solutions)} solutions ({stable} stable), {res.subproblems} sub-problems, "
           f"{res.boxes} boxes, {res.undecided} undecided")
-    if ns.max_taut is not None and ns.max_taut < robot.n_cables:
-        # the source's 25 s cover every sub-problem: a partial run has no comparable ratio
+    print(f"solutions per number of taut cables: {per_m}   printed: {printed}")
+    top = min(robot.n_cables, 6)
+    if ns.max_taut is not None and ns.max_taut < top:
+        # the source's time covers every sub-problem: a partial run has no comparable ratio
         print(f"time: {t:.2f} s for sub-problems of at most {ns.max_taut} taut cables (partial run, no ratio to the source)")
     else:
-        print(f"time: {t:.2f} s   source (ALIAS, 2015): {SOURCE_SECONDS:.0f} s   ratio source/taut: {SOURCE_SECONDS / t:.2f}x")
+        print(f"time: {t:.2f} s on {ns.workers} worker(s)   source (ALIAS, 2015, one core): {source_seconds:.0f} s   "
+              f"ratio source/taut: {source_seconds / t:.2f}x")
     if ns.peer:
-        peer(robot, ns.repeat, ns.peer_mptype)
+        if ns.robot != "suspended-3cable":
+            print("bertini2: the peer runs on Table 4.3 only (--robot suspended-3cable)")
+        else:
+            peer(robot, ns.repeat, ns.peer_mptype)
 
 
 if __name__ == "__main__":
