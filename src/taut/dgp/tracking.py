@@ -27,9 +27,9 @@ constants ``ρ_i²`` of the length equations, which are patched per update), and
 together with everything a solution reports — the frame, the tensions, the slack cables'
 spans and the stability test of §3.2.2 — run in one compiled call (:func:`_update`): at a
 few tens of microseconds per update, Python-side array code would cost more than the
-arithmetic.  A single taut
-cable leaves the spin about the vertical free (a continuum, §2.3): its Jacobian is
-singular and tracking it raises :class:`~taut.errors.TrackingLostError`.
+arithmetic.  A single taut cable leaves the spin about the vertical free (a continuum,
+§2.3): its Jacobian is singular and tracking it raises
+:class:`~taut.errors.TrackingLostError`.
 """
 
 from __future__ import annotations
@@ -135,8 +135,8 @@ def _update(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, 
     """Steps 1–2 of the module docstring and the solution's data, in one compiled call.
 
     The unknowns of the pose ``(p0, R0)`` and tensions ``tau0`` (the three ``refs``
-    reference points, then ``τ/ρ`` unless six cables are taut) start :func:`~taut.interval.krawczyk.certified_step`;
-    from its limit come the frame (:func:`~taut.dgp.formulation._frame`), the tensions
+    reference points, then ``τ/ρ`` unless six cables are taut) start
+    :func:`~taut.interval.krawczyk.certified_step`; from its limit come the frame (:func:`~taut.dgp.formulation._frame`), the tensions
     (for six taut cables the square statics of the ``s*`` tape, §3.1.3), every cable's
     span ``‖b_i − a_i‖`` and the smallest eigenvalue of the reduced Hessian (§3.2.2).
     Returns ``(status, p, R, angles, tensions, spans, eigenvalue, box width)``; status as
