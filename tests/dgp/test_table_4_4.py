@@ -84,31 +84,8 @@ def test_table_4_4_three_taut_cables(solve_subsets):
         assert np.allclose(s.tensions[list(np.array(s.taut) - 1)], tensions, atol=3e-3) and not s.stable
 
 
-def _match_rows(sols, printed, taut_of, pos_tol=3e-3, ang_tol=1e-2, tau_tol=3e-3):
-    """Each printed row (None: lost by the OCR) matched by exactly one solution; the rest."""
-    found = list(sols)
-    for row, stable in printed:
-        taut = taut_of(row)
-        match = [s for s in found if (taut is None or s.taut == taut)
-                 and all(p is None or abs(v - p) <= (pos_tol if k < 3 else ang_tol)
-                         for k, (v, p) in enumerate(zip(np.r_[s.position, s.orientation], row[:6])))]
-        assert len(match) == 1, row
-        s = match[0]
-        assert all(p is None or abs(v - p) <= tau_tol for v, p in zip(s.tensions, row[6:])), row
-        assert s.stable == stable, row
-        found = [f for f in found if f is not match[0]]
-    return found
-
-
-def _taut(row):
-    """The taut set of a printed row, or None when the OCR lost one of its tensions."""
-    if any(t is None for t in row[6:]):
-        return None
-    return tuple(i + 1 for i, t in enumerate(row[6:]) if t > 0)
-
-
 @pytest.mark.slow
-def test_table_4_4_five_taut_cables(solve_subsets):
+def test_table_4_4_five_taut_cables(solve_subsets, match_rows):
     res = solve_subsets(ROBOT, 5)
     assert sum(und for _, und in res.values()) == 0
     N = None
@@ -130,11 +107,11 @@ def test_table_4_4_five_taut_cables(solve_subsets):
         ([0.976, 0.674, 2.135, -1.322, 0.548, 2.532, 0.798, 0.233, 0.497, 0, 0, 1.176, 0.385, 0], False),
         ([0.378, -0.289, 1.218, -0.981, 0.610, 0.341, 0.435, 0.696, 0.082, 0, 1.138, 0, 0.110, 0], False),
     ]
-    assert _match_rows([s for found, _ in res.values() for s in found], printed, _taut) == []
+    assert match_rows([s for found, _ in res.values() for s in found], printed) == []
 
 
 @pytest.mark.slow
-def test_table_4_4_four_taut_cables(solve_subsets):
+def test_table_4_4_four_taut_cables(solve_subsets, match_rows):
     res = solve_subsets(ROBOT, 4)
     assert sum(und for _, und in res.values()) == 0
     printed = [  # Conf. 23-37, all unstable
@@ -156,4 +133,4 @@ def test_table_4_4_four_taut_cables(solve_subsets):
     ]
     # Conf. 26 and 35 are the worst conditioned: 4 mm in x, 0.012 rad in φx and φz
     sols = [s for found, _ in res.values() for s in found]
-    assert _match_rows(sols, [(r, False) for r in printed], _taut, pos_tol=5e-3, ang_tol=1.5e-2) == []
+    assert match_rows(sols, [(r, False) for r in printed], pos_tol=5e-3, ang_tol=1.5e-2) == []

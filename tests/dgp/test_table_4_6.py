@@ -44,20 +44,12 @@ def test_table_4_6_no_equilibrium_with_one_or_two_taut_cables():
     assert res.subproblems == 21 and res.undecided == 0 and res.solutions == []
 
 
-def _rows_match(sols, printed, pos_tol=3e-3, ang_tol=5e-2, tau_tol=1.5e-2):
-    found = list(sols)
-    for row, stable in printed:
-        taut = tuple(i + 1 for i, t in enumerate(row[6:]) if t > 0)
-        match = [s for s in found if s.taut == taut and np.allclose(s.position, row[:3], atol=pos_tol)
-                 and np.allclose(s.orientation, row[3:6], atol=ang_tol)]
-        assert len(match) == 1, row
-        assert np.allclose(match[0].tensions, row[6:], atol=tau_tol) and match[0].stable == stable, row
-        found = [s for s in found if s is not match[0]]
-    return found
+#: the tolerances of the module docstring
+TOLERANCES = {"pos_tol": 3e-3, "ang_tol": 5e-2, "tau_tol": 1.5e-2}
 
 
 @pytest.mark.slow
-def test_table_4_6_five_taut_cables(solve_subsets):
+def test_table_4_6_five_taut_cables(solve_subsets, match_rows):
     res = solve_subsets(ROBOT, 5)
     assert sum(und for _, und in res.values()) == 0
     printed = [  # Conf. 3-13: x, y, z, phi_x, phi_y, phi_z, tau_1..tau_6; stable
@@ -73,11 +65,11 @@ def test_table_4_6_five_taut_cables(solve_subsets):
         ([0.356, 0.470, 0.131, -2.731, -0.202, -2.250, 0, 0.388, 0.037, 0.327, 0.058, 0.360], False),
         ([0.277, 0.404, 0.116, 1.217, -0.877, 2.383, 0, 0.223, 0.067, 0.252, 0.165, 0.469], False),
     ]
-    assert _rows_match([s for found, _ in res.values() for s in found], printed) == []
+    assert match_rows([s for found, _ in res.values() for s in found], printed, **TOLERANCES) == []
 
 
 @pytest.mark.slow
-def test_table_4_6_four_taut_cables(solve_subsets):
+def test_table_4_6_four_taut_cables(solve_subsets, match_rows):
     res = solve_subsets(ROBOT, 4)
     assert sum(und for _, und in res.values()) == 0
     printed = [  # Conf. 14-25, all unstable
@@ -94,7 +86,7 @@ def test_table_4_6_four_taut_cables(solve_subsets):
         ([0.339, 0.448, 0.137, 2.837, -1.247, -0.602, 0, 0, 0.396, 0.141, 0.228, 0.417], False),
         ([0.330, 0.445, 0.117, 2.891, -1.187, 2.648, 0, 0, 0.336, 0.223, 0.210, 0.376], False),
     ]
-    extra = _rows_match([s for found, _ in res.values() for s in found], printed)
+    extra = match_rows([s for found, _ in res.values() for s in found], printed, **TOLERANCES)
     # Conf. 31 and 30 (cables 2, 4, 6), each with a nearly-zero fourth tension
     assert sorted(s.taut for s in extra) == [(2, 3, 4, 6), (2, 4, 5, 6)]
     near = {(2, 3, 4, 6): ([0.295, 0.444, 0.108], 2), (2, 4, 5, 6): ([0.378, 0.429, 0.106], 4)}
@@ -104,7 +96,7 @@ def test_table_4_6_four_taut_cables(solve_subsets):
 
 
 @pytest.mark.slow
-def test_table_4_6_three_taut_cables(solve_subsets):
+def test_table_4_6_three_taut_cables(solve_subsets, match_rows):
     res = solve_subsets(ROBOT, 3)
     assert sum(und for _, und in res.values()) == 0
     printed = [  # Conf. 26-29 and 32-34, all unstable (Conf. 30-31: see the module docstring)
@@ -115,8 +107,8 @@ def test_table_4_6_three_taut_cables(solve_subsets):
         ([0.319, 0.459, 0.142, -2.344, -1.141, -1.026, 0, 0, 0.378, 0.412, 0, 0.394], False),
         ([0.334, 0.459, 0.139, 2.297, -1.121, -0.474, 0, 0, 0.381, 0, 0.395, 0.406], False),
     ]
-    rest = _rows_match([s for found, _ in res.values() for s in found], printed)
+    rest = match_rows([s for found, _ in res.values() for s in found], printed, **TOLERANCES)
     # Conf. 29 (cables 1, 3, 5) is the most ill-conditioned row: 1e-2 in position, 0.12 in φy
     conf_29 = [0.311, 0.462, 0.096, 0.472, -0.036, 1.353, 0.392, 0, 0.358, 0, 0.445, 0]
     assert [s.taut for s in rest] == [(1, 3, 5)]
-    assert _rows_match(rest, [(conf_29, False)], pos_tol=1e-2, ang_tol=0.12) == []
+    assert match_rows(rest, [(conf_29, False)], **{**TOLERANCES, "pos_tol": 1e-2, "ang_tol": 0.12}) == []
