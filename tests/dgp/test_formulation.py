@@ -8,7 +8,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from taut.dgp.formulation import _coordinates, _enclose, _exact_cross, build_subproblem
+from taut.geometry.rotation import rotation_matrix
 from taut.interval.expression import CONST
+from taut.interval.hc4 import evaluate_point
 from taut.model import load_robot
 
 coord = st.floats(-10.0, 10.0, allow_nan=False, allow_infinity=False)
@@ -56,3 +58,29 @@ def test_every_constant_node_encloses_a_float_or_two_neighbours():
     assert np.all(lo <= hi)
     assert np.all((lo == hi) | (np.nextafter(np.nextafter(lo, np.inf), np.inf) == hi))
     assert np.any(lo < hi)  # derived constants that are not floats are intervals
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.tuples(*[st.floats(-1.0, 1.0)] * 3), st.tuples(*[st.floats(-np.pi, np.pi)] * 3),
+       st.lists(st.floats(0.0, 0.5), min_size=8, max_size=8), st.sets(st.integers(0, 7), min_size=2, max_size=6))
+def test_every_pose_the_lengths_allow_meets_the_geometric_filter_constraints(p, angles, slack, taut):
+    """The inequalities of the filter — slack cables no longer than their length (Eq. 3.7)
+    and the sphere bounds of Eq. 3.6 on the reference points — hold at every pose whose
+    taut cables have exactly their length and whose slack cables are shorter."""
+    robot = load_robot("cogiro")
+    taut = tuple(sorted(taut))
+    R = rotation_matrix(np.array(angles), robot.orientation)
+    pos = np.array([0.0, 0.0, 2.0]) + np.array(p)
+    b = pos + robot.anchors @ R.T
+    span = np.linalg.norm(b - robot.exits, axis=1)
+    lengths = np.array([span[i] if i in taut else span[i] + slack[i] for i in range(8)])
+    sp = build_subproblem(robot, lengths, taut)
+    x = np.concatenate([(pos + R @ q) for q in sp.body_refs] + [np.ones(sp.system.n - 9)])
+    tape, h = sp.system.tape, sp.system.n_equations
+    v = evaluate_point(tape, x)
+    inequality = tape.blo < tape.bhi
+    inequality[:h] = False
+    assert inequality.sum() >= 3 * 7  # Eq. 3.6 for each reference point and every other cable
+    tol = 1e-9 * (1.0 + np.abs(v))
+    assert np.all(v[inequality] >= tape.blo[inequality] - tol[inequality])
+    assert np.all(v[inequality] <= tape.bhi[inequality] + tol[inequality])

@@ -7,7 +7,7 @@ import pytest
 
 from taut.dgp import solve_dgp
 from taut.dgp.formulation import build_subproblem
-from taut.dgp.solve import _pieces
+from taut.dgp.solve import _PREPARED_SIZE, _pieces, _prepared
 from taut.errors import TautError
 from taut.geometry.rotation import rotation_matrix
 from taut.interval.branch_prune import same_solution
@@ -44,6 +44,17 @@ def test_pieces_hold_every_solution_and_do_not_overlap():
 def test_lengths_no_pose_fits_give_no_piece():
     sp = build_subproblem(ROBOT, np.array([1.0, 1.0, 1.0]), (0, 1, 2))  # exits 10 m apart
     assert _pieces(sp, 3) == []
+
+
+def test_a_process_builds_each_sub_problem_once_for_all_its_pieces():
+    sp, pieces = _prepared(ROBOT, LENGTHS, (0, 1, 2), 3)
+    assert _prepared(ROBOT, LENGTHS, (0, 1, 2), 3)[0] is sp
+    assert len(pieces) == 8
+    other = _prepared(ROBOT, LENGTHS * 1.01, (0, 1, 2), 3)[0]  # other lengths: another system
+    assert other is not sp and not np.array_equal(other.system.tape.bhi, sp.system.tape.bhi)
+    for k in range(_PREPARED_SIZE):  # the cache stays bounded: the oldest entries go
+        _prepared(ROBOT, LENGTHS * (1.0 + 1e-3 * k), (0, 1), 0)
+    assert _prepared(ROBOT, LENGTHS, (0, 1, 2), 3)[0] is not sp
 
 
 def test_same_solution_by_certified_box_or_uniqueness_radius():

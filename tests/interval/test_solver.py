@@ -11,6 +11,8 @@ from taut.interval import (
     branch_and_prune, certify, compile_system, const, contract, inflate, krawczyk, preconditioned_solve, variables,
 )
 from taut.interval.expression import compile_tape
+from taut.interval.branch_prune import _bisect_index, _smear
+from taut.interval.krawczyk import jacobian
 from taut.interval.linear import LinearFilter, float_inverse
 
 X, Y = variables(2)
@@ -141,6 +143,41 @@ def test_compiled_and_python_loops_agree(passes):
     assert key(fast) == key(ref) and not fast.undecided
     assert fast.boxes > 0 and sum(fast.stats.values()) > 0
     assert all(c.radius > 0 and c.width < 1e-6 for c in fast.solutions)
+
+
+@pytest.mark.parametrize("method", ["python", "numba"])
+def test_smear_bisection_finds_the_same_solutions_with_fewer_boxes_on_a_badly_scaled_system(method):
+    """Circles of Example 1 with ``y`` scaled by 100: the widest variable is ``y`` long after
+    the equations stopped depending on it much; the smear rule follows ``x``."""
+    x, y = variables(2)
+    sys = compile_system(2, [x**2 + (y / 100) ** 2 - 1, (x - 1) ** 2 + (y / 100) ** 2 - 1])
+    res = {b: branch_and_prune(sys, [-3.0, -300.0], [3.0, 300.0], bisection=b, method=method)
+           for b in ("width", "smear")}
+    key = lambda r: sorted(tuple(np.round(c.x, 9)) for c in r.solutions)  # noqa: E731
+    s = round(50 * np.sqrt(3), 9)
+    assert key(res["smear"]) == key(res["width"]) == [(0.5, -s), (0.5, s)]
+    assert not res["smear"].undecided
+    assert res["smear"].boxes < res["width"].boxes
+    with pytest.raises(ValueError, match="bisection"):
+        branch_and_prune(sys, [-3.0, -300.0], [3.0, 300.0], bisection="largest")
+
+
+@settings(max_examples=100, deadline=None)
+@given(systems_with_a_zero(), st.floats(0.01, 1.0))
+def test_relative_smears_share_out_each_equation(case, shrink):
+    """Each equation's relative smears sum to 1 over the variables it depends on; a
+    variable outside ``primary`` has none."""
+    system, s, lo, hi = case
+    lo, hi = s - shrink * (s - lo) - 0.01, s + shrink * (hi - s) + 0.01
+    n = lo.size
+    primary = np.arange(n) != n - 1
+    score = _smear(*system.jacobian.arrays[:7], system.rows, system.cols, system.n_equations, lo, hi, primary)
+    assert score[-1] == 0.0 and np.all(score >= 0.0)
+    Jl, Jh = jacobian(system, lo, hi)
+    rows = np.sum(np.any(np.maximum(np.abs(Jl), np.abs(Jh)) * (hi - lo) * primary > 0, axis=1))
+    assert np.isclose(score.sum(), rows)
+    j = _bisect_index(hi - lo, primary, 1e-7, score)
+    assert primary[j] and score[j] == score.max()
 
 
 def test_compiled_loop_with_a_linear_filter_matches_the_python_filter():

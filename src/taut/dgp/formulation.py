@@ -25,7 +25,10 @@ exactly, i.e. for points on the reference plane).  Equations (all of degree
   ``(b − a_p) × (a_i − b) = (b − a_p) × (a_i − a_p)``, which keeps one occurrence of ``b``).
 
 Redundant constraints for the filter (§3.1.3): the moment equations about every other taut
-exit point, and the slack-cable inequalities ``‖b_k − a_k‖² ≤ ρ_k²`` (Eq. 3.7).  The
+exit point, the slack-cable inequalities ``‖b_k − a_k‖² ≤ ρ_k²`` (Eq. 3.7), and the
+sphere bounds ``(ρ_j − d_qj)² ≤ ‖q − a_j‖² ≤ (ρ_j + d_qj)²`` of Eq. 3.6 on each reference
+point ``q`` (the lower one for taut cables ``j``; on secondary points they cost more
+than they prune).  The
 initial box (§3.1.1, Eqs. 3.1–3.2) bounds each reference point by the spheres around the
 taut exit points, ``‖q − a_j‖ ≤ ρ_j + d_jq``; tensions start in ``[0, ∞)`` (§3.1.1: no
 upper bound is needed, HC4 and the bisection rule of §3.1.4 bound them).
@@ -293,6 +296,19 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
     for k in range(n):
         if k not in taut:
             extra.append((dist2(b[k], a[k]) - const(float(lengths[k])) ** 2, (-np.inf, 0.0)))
+    widen = 1.0 + 4.0 * np.finfo(float).eps  # covers the rounding of ρ ± d below
+    for s, (lab, body) in enumerate(zip(labels, refs)):
+        for j in range(n):
+            if j == lab:
+                continue
+            # Eq. 3.6: ‖q − a_j‖ ≤ ρ_j + d_qj for every cable (‖b_j − a_j‖ ≤ ρ_j, taut or
+            # slack), and ≥ ρ_j − d_qj when cable j is taut; on the reference points the
+            # sphere refinements of §3.1.1 then hold in every box, not only the first
+            d = float(np.linalg.norm(body - r[j]))
+            upper = float(np.nextafter(((lengths[j] + d) * widen) ** 2, np.inf))
+            near = (lengths[j] - d) / widen
+            lower = float(np.nextafter(near**2, -np.inf)) if j in taut and near > 0.0 else -np.inf
+            extra.append((dist2(q[s], a[j]), (lower, upper)))
     system = compile_system(unknowns, eqs, extra)
     pole = a[taut[0]]
     J = [[float(a[i][k]) - b[i][k] for i in taut] for k in range(3)] + [[moment_arm(i, pole, k) for i in taut] for k in range(3)]

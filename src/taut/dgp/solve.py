@@ -87,12 +87,31 @@ def _pieces(sp, split: int) -> list[tuple[np.ndarray, np.ndarray]]:
             break
         widths = [np.max(np.where(sp.primary, hi - lo, -1.0)) for lo, hi in live]
         lo, hi = live.pop(int(np.argmax(widths)))
-        for part in _split(lo, hi, _bisect_index(hi - lo, sp.primary, 0.0)):
+        for part in _split(lo, hi, _bisect_index(hi - lo, sp.primary, 0.0, np.zeros(lo.size))):
             if contract(sp.system.tape, *part) and sp.statics(*part):
                 live.append(part)
         if not live:
             break
     return live
+
+
+#: Per process, the sub-problems last built and their pieces, keyed by the job's data:
+#: a worker running several pieces of one sub-problem builds it once (a build takes
+#: ~20 ms, as long as solving many pieces).
+_PREPARED: dict = {}
+_PREPARED_SIZE = 8
+
+
+def _prepared(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: int):
+    key = (robot.model_dump_json(), lengths.tobytes(), taut, split)
+    hit = _PREPARED.get(key)
+    if hit is None:
+        sp = build_subproblem(robot, lengths, taut)
+        hit = (sp, _pieces(sp, split))
+        while len(_PREPARED) >= _PREPARED_SIZE:
+            _PREPARED.pop(next(iter(_PREPARED)))
+        _PREPARED[key] = hit
+    return hit
 
 
 def _solve_piece(job):
@@ -108,13 +127,12 @@ def _solve_piece(job):
             out.append(DGPSolution((taut[0] + 1,), s["p"], angles_from_matrix(s["R"], robot.orientation), s["tensions"],
                                    s["stable"], 0.0, 0.0, s["continuum"]))
         return out, [None] * len(out), 0, 0
-    sp = build_subproblem(robot, lengths, taut)
-    pieces = _pieces(sp, split)
+    sp, pieces = _prepared(robot, lengths, taut, split)
     if k >= len(pieces):  # fewer pieces hold solutions than were asked for
         return out, [], 0, 0
     lo, hi = pieces[k]
     res = branch_and_prune(sp.system, lo, hi, primary=sp.primary, eps=eps, filters=(sp.statics,),
-                           certify_width=1.0, passes=4, domain=(sp.lo, sp.hi))
+                           certify_width=1.0, passes=4, domain=(sp.lo, sp.hi), bisection="smear")
     idx = list(taut)
     undecided = len(res.undecided)
     certs = []

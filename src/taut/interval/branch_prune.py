@@ -30,7 +30,7 @@ import numpy as np
 from numba import njit
 
 from taut.interval.expression import System
-from taut.interval.hc4 import contract, contract_kernel, evaluate
+from taut.interval.hc4 import contract, contract_kernel, evaluate, evaluate_kernel
 from taut.interval.krawczyk import Certificate, _krawczyk_box, certify, krawczyk
 from taut.interval.linear import LinearFilter, linear_filter_kernel
 
@@ -43,12 +43,46 @@ class BranchAndPruneResult:
     stats: dict = field(default_factory=dict)  #: boxes discarded by each operator (compiled loop only)
 
 
-def _bisect_index(width: np.ndarray, primary: np.ndarray, eps: float) -> int:
-    wp = np.where(primary, width, -1.0)
-    j = int(np.argmax(wp))
-    if wp[j] >= eps:
-        return j
-    return int(np.argmax(width))
+@njit(cache=True, fastmath=False)
+def _smear(jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, h, lo, hi, primary):
+    """Relative smear of each primary variable over the box: ``Σ_i s_ij / Σ_k s_ik`` with
+    ``s_ij = mag(J_ij(X)) w(X_j)`` (Kearfott & Novoa 1990; "smearsumrel" of Ibex), the
+    share of each equation's width that the variable is responsible for.  Zeros (no
+    preference) when a smear is unbounded."""
+    n, nj = lo.size, jstart.size
+    vl, vh = np.empty(nj), np.empty(nj)
+    evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, vl, vh)
+    sm = np.zeros(nj)
+    total = np.zeros(h)
+    score = np.zeros(n)
+    for k in range(nj):
+        if primary[cols[k]]:
+            sm[k] = max(abs(vl[k]), abs(vh[k])) * (hi[cols[k]] - lo[cols[k]])
+            if not np.isfinite(sm[k]):
+                return score
+            total[rows[k]] += sm[k]
+    for k in range(nj):
+        if total[rows[k]] > 0.0:
+            score[cols[k]] += sm[k] / total[rows[k]]
+    return score
+
+
+@njit(cache=True, fastmath=False)
+def _bisect_index(width, primary, eps, score):
+    """The variable to bisect (§3.1.4): a primary one while the widest of them is at least
+    ``eps`` — the one of largest ``score`` (:func:`_smear`) when any is positive, else the
+    widest — then the widest variable of all."""
+    j, best = -1, -1.0
+    for i in range(width.size):
+        if primary[i] and width[i] > best:
+            best, j = width[i], i
+    if best < eps:
+        return int(np.argmax(width))
+    top = 0.0
+    for i in range(width.size):
+        if primary[i] and width[i] >= eps and score[i] > top:
+            top, j = score[i], i
+    return j
 
 
 def _split(lo, hi, j):
@@ -78,6 +112,7 @@ def branch_and_prune(
     gain: float = 0.2,
     ratio: float = 0.05,
     domain=None,
+    bisection: str = "width",
 ) -> BranchAndPruneResult:
     """All solutions of ``system`` in the box ``[lo, hi]`` (see module docstring).
 
@@ -91,7 +126,10 @@ def branch_and_prune(
     and Newton is started when Krawczyk proves uniqueness or the box is narrower than
     ``newton_width``;
     ``filters`` are extra contractors ``f(lo, hi) -> bool`` (in place, False = empty)
-    applied after HC4.
+    applied after HC4.  ``bisection``: ``"width"`` bisects the widest primary variable
+    (§3.1.4), ``"smear"`` the primary variable of largest relative smear
+    (:func:`_smear`), which follows the variables the equations are most sensitive to
+    when they are scaled unevenly.
 
     ``method="numba"`` runs the box loop in a compiled kernel (:func:`_drive`) and returns
     to Python only to certify a solution; it needs every filter to be a
@@ -110,11 +148,15 @@ def branch_and_prune(
         raise ValueError(f"method must be 'auto', 'numba' or 'python', got {method!r}")
     if method == "numba" and not kernel_ok:
         raise ValueError("method='numba' takes at most one filter, a LinearFilter")
+    if bisection not in ("width", "smear"):
+        raise ValueError(f"bisection must be 'width' or 'smear', got {bisection!r}")
+    smear = bisection == "smear"
     if method != "python" and kernel_ok:
         return _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters,
-                                       passes, gain, ratio, domain)
+                                       passes, gain, ratio, domain, smear)
     lo0, hi0 = _domain(lo, hi, domain)
     primary = np.ones(lo0.size, bool) if primary is None else np.asarray(primary, bool)
+    jac = (*system.jacobian.arrays[:7], system.rows, system.cols, system.n_equations)
     out = BranchAndPruneResult()
     stack = [(np.array(lo, float), np.array(hi, float))]
     while stack:
@@ -155,7 +197,8 @@ def branch_and_prune(
         if np.max(width) < eps:
             out.undecided.append((lo, hi))
             continue
-        a, b = _split(lo, hi, _bisect_index(width, primary, eps))
+        score = _smear(*jac, lo, hi, primary) if smear else np.zeros(lo.size)
+        a, b = _split(lo, hi, _bisect_index(width, primary, eps, score))
         stack.append(b)
         stack.append(a)
     return out
@@ -170,7 +213,7 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
            jop, ja, jb, jclo, jchi, jstart, jend, rows, cols,
            fop, fa, fb, fclo, fchi, fstart, fend, fm, fsign,
            stk_lo, stk_hi, sp, sol_x, sol_r, nsol, lo0, hi0, primary,
-           eps, certify_width, newton_width, max_boxes, boxes, out, passes, gain, ratio, stats):
+           eps, certify_width, newton_width, max_boxes, boxes, out, passes, gain, ratio, stats, smear):
     """The loop of :func:`branch_and_prune` on the stack ``stk_lo[:sp], stk_hi[:sp]``
     until a box needs Python (a certification, an undecided box, the box budget, a full
     stack).  Returns ``(code, sp, boxes, unique)``; ``out`` rows hold the box, the
@@ -262,14 +305,12 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
         if sp + 2 > cap:
             stk_lo[sp], stk_hi[sp] = lo, hi
             return _STACK_FULL, sp + 1, boxes - 1, False
-        # bisection rule of §3.1.4 (as _bisect_index / _split)
-        j = -1
-        best = -1.0
-        for i in range(n):
-            if primary[i] and width[i] > best:
-                best, j = width[i], i
-        if best < eps:
-            j = int(np.argmax(width))
+        # bisection rule of §3.1.4 (as _split)
+        if smear:
+            score = _smear(jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, h, lo, hi, primary)
+        else:
+            score = np.zeros(n)
+        j = _bisect_index(width, primary, eps, score)
         m = 0.5 * lo[j] + 0.5 * hi[j]
         if not np.isfinite(m):
             if np.isfinite(lo[j]):
@@ -302,12 +343,13 @@ def same_solution(a: Certificate, b: Certificate) -> bool:
 
 
 def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters, passes, gain, ratio,
-                            domain):
+                            domain, smear):
     lo0, hi0 = _domain(lo, hi, domain)
     n = lo0.size
     primary = np.ones(n, bool) if primary is None else np.asarray(primary, bool)
     out = BranchAndPruneResult()
     t, jt = system.tape, system.jacobian
+    t_jac = (*jt.arrays[:7], system.rows, system.cols, system.n_equations)
     if filters:
         f = filters[0]
         ftape, fm, fsign = f.tape.arrays[:7], f.m, f.sign_only
@@ -334,6 +376,7 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
             *t.arrays, system.n_equations, *jt.arrays[:7], system.rows, system.cols, *ftape, fm, fsign,
             stk_lo, stk_hi, sp, sol_x, sol_r, len(out.solutions), lo0, hi0, primary,
             float(eps), float(certify_width), float(newton_width), int(max_boxes), boxes, buf, int(passes), float(gain), float(ratio), stats,
+            smear,
         )
         if code == _DONE:
             break
@@ -369,7 +412,8 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
         if np.max(width) < eps:
             out.undecided.append((blo, bhi))
             continue
-        (alo, ahi), (b2lo, b2hi) = _split(blo, bhi, _bisect_index(width, primary, eps))
+        score = _smear(*t_jac, blo, bhi, primary) if smear else np.zeros(n)
+        (alo, ahi), (b2lo, b2hi) = _split(blo, bhi, _bisect_index(width, primary, eps, score))
         push(b2lo, b2hi)
         push(alo, ahi)
     out.boxes = boxes
