@@ -31,7 +31,7 @@ from numba import njit
 
 from taut.interval.expression import System
 from taut.interval.hc4 import contract, contract_kernel, evaluate, evaluate_kernel
-from taut.interval.krawczyk import Certificate, _krawczyk_box, certify, krawczyk
+from taut.interval.krawczyk import Certificate, _krawczyk_jacobian, certify, krawczyk
 from taut.interval.linear import LinearFilter, linear_filter_kernel
 
 
@@ -49,9 +49,16 @@ def _smear(jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, h, lo, hi, primary
     ``s_ij = mag(J_ij(X)) w(X_j)`` (Kearfott & Novoa 1990; "smearsumrel" of Ibex), the
     share of each equation's width that the variable is responsible for.  Zeros (no
     preference) when a smear is unbounded."""
-    n, nj = lo.size, jstart.size
+    nj = jstart.size
     vl, vh = np.empty(nj), np.empty(nj)
     evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, vl, vh)
+    return _smear_of(rows, cols, h, vl, vh, lo, hi, primary)
+
+
+@njit(cache=True, fastmath=False)
+def _smear_of(rows, cols, h, vl, vh, lo, hi, primary):
+    """:func:`_smear` from the Jacobian's nonzero entries ``[vl, vh]`` (at ``rows, cols``)."""
+    n, nj = lo.size, rows.size
     sm = np.zeros(nj)
     total = np.zeros(h)
     score = np.zeros(n)
@@ -220,6 +227,7 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
     Krawczyk box and the Krawczyk result (code ``_CERTIFY``)."""
     n = lo0.size
     cap = stk_lo.shape[0]
+    jl, jh = np.empty(jstart.size), np.empty(jstart.size)
     while sp > 0:
         sp -= 1
         lo = stk_lo[sp].copy()
@@ -230,6 +238,7 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
         dead = False
         cert = False
         unique = False
+        have_j = False
         klo, khi, rl, rh = lo, hi, lo, hi
         for it in range(passes):
             if not contract_kernel(op, a, b, clo, chi, start, end, blo, bhi, lo, hi, ratio, 50):
@@ -273,8 +282,9 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
                 pad = max(1e-3 * width[i], 1e-10 * (1.0 + abs(lo[i]) + abs(hi[i])))
                 klo[i] = max(lo[i] - pad, lo0[i])
                 khi[i] = min(hi[i] + pad, hi0[i])
-            status, rl, rh = _krawczyk_box(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend,
-                                           rows, cols, klo, khi)
+            evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, klo, khi, jl, jh)
+            have_j = True
+            status, rl, rh = _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, jl, jh, klo, khi)
             stats[6] += 1
             if status == 2:
                 stats[4] += 1
@@ -305,8 +315,11 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
         if sp + 2 > cap:
             stk_lo[sp], stk_hi[sp] = lo, hi
             return _STACK_FULL, sp + 1, boxes - 1, False
-        # bisection rule of §3.1.4 (as _split)
-        if smear:
+        # bisection rule of §3.1.4 (as _split); the smear reuses the Jacobian of the last
+        # Krawczyk step, taken over a box a little wider than this one
+        if smear and have_j:
+            score = _smear_of(rows, cols, h, jl, jh, lo, hi, primary)
+        elif smear:
             score = _smear(jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, h, lo, hi, primary)
         else:
             score = np.zeros(n)

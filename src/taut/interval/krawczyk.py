@@ -181,10 +181,18 @@ def krawczyk(system: System, lo, hi) -> KrawczykResult:
 def _krawczyk_box(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, lo, hi):
     """Numba twin of :func:`krawczyk`: ``(status, lo, hi)`` with
     status 0 unknown, 1 unique, 2 empty."""
-    n = lo.size
     nj = jstart.size
     vl, vh = np.empty(nj), np.empty(nj)
     evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, vl, vh)
+    return _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, vl, vh, lo, hi)
+
+
+@njit(cache=True, fastmath=False)
+def _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, vl, vh, lo, hi):
+    """:func:`_krawczyk_box` given the Jacobian's nonzero entries ``[vl, vh]`` over the box
+    (at ``rows, cols``), which the caller may use again."""
+    n = lo.size
+    nj = rows.size
     Jl, Jh, Jm = np.zeros((h, n)), np.zeros((h, n)), np.zeros((h, n))
     for k in range(nj):
         Jl[rows[k], cols[k]], Jh[rows[k], cols[k]] = vl[k], vh[k]
