@@ -156,8 +156,9 @@ def main():
     ns = ap.parse_args()
     robot = load_robot(ns.robot)
     table, source_seconds, printed = SOURCES[ns.robot]
-    solve_dgp(load_robot("suspended-3cable"), max_taut=2)  # compile (or load) the Numba kernels outside the timing
     with get_executor(workers=ns.workers) as ex:
+        # start the workers and load the Numba kernels in each of them outside the timing
+        solve_dgp(robot, max_taut=2, executor=ex)
         t, res = best_of(lambda: solve_dgp(robot, max_taut=ns.max_taut, executor=ex), ns.repeat)
     stable = sum(s.stable for s in res.solutions)
     per_m = dict(sorted(Counter(len(s.taut) for s in res.solutions).items(), reverse=True))
