@@ -10,8 +10,11 @@ Each box popped from the list is
 2. *evaluated* (operator ``E``): once the box is small, the Krawczyk operator is applied
    to it and Newton is started from its midpoint; a solution proven unique by Krawczyk
    is stored with the radius of its inflated uniqueness box (:mod:`taut.interval.krawczyk`);
-3. *bisected*: the widest of the ``primary`` variables (the pose variables ``X``) while
-   their largest width is at least ``eps``, then the widest variable of all (§3.1.4).
+3. *bisected*: one of the ``primary`` variables (the pose variables ``X``) while their
+   largest width is at least ``eps``, then the widest variable of all (§3.1.4); the
+   primary variable is the widest one, or with ``bisection="smear"`` the one of largest
+   relative smear (:func:`_smear`: the equations' sensitivity times the width), which the
+   DGP uses because its reference points and tensions are scaled unevenly.
 
 Boxes narrower than ``eps`` in every variable that could not be certified are returned as
 ``undecided`` (singular or nearly-coincident solutions): nothing is silently dropped.
