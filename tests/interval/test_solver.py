@@ -11,6 +11,7 @@ from taut.interval import (
     branch_and_prune, certify, compile_system, const, contract, inflate, krawczyk, preconditioned_solve, variables,
 )
 from taut.interval.expression import compile_tape
+from taut.interval.hc4 import evaluate, evaluate_point
 from taut.interval.branch_prune import _bisect_index, _smear
 from taut.interval.krawczyk import jacobian
 from taut.interval.linear import LinearFilter, float_inverse
@@ -178,6 +179,41 @@ def test_relative_smears_share_out_each_equation(case, shrink):
     assert np.isclose(score.sum(), rows)
     j = _bisect_index(hi - lo, primary, 1e-7, score)
     assert primary[j] and score[j] == score.max()
+
+
+X3, Y3 = variables(2)
+_COMMON = (X3 - Y3) ** 2 * (X3 + 1)
+#: a shared product, a constraint equal to an earlier one's subexpression, and a structural
+#: copy of it built from new objects (merged by hash-consing)
+SHARED_EXPRS = [_COMMON + Y3, _COMMON * 2, _COMMON, X3 * Y3 - 3, (X3 - Y3) ** 2 * (X3 + 1)]
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.floats(-5, 5), min_size=2, max_size=2), st.lists(st.floats(0, 3), min_size=2, max_size=2))
+def test_a_shared_tape_evaluates_every_constraint_as_it_alone(centre, radius):
+    bounds = [(-np.inf, np.inf)] * len(SHARED_EXPRS)
+    shared = compile_tape(SHARED_EXPRS, bounds)
+    alone = [compile_tape([e], bounds[:1]) for e in SHARED_EXPRS]
+    assert shared.op.size < sum(t.op.size for t in alone)
+    lo, hi = np.array(centre) - radius, np.array(centre) + radius
+    vl, vh = evaluate(shared, lo, hi)
+    for c, t in enumerate(alone):
+        al, ah = evaluate(t, lo, hi)
+        assert vl[c] == al[0] and vh[c] == ah[0]
+        assert evaluate_point(shared, lo)[c] == evaluate_point(t, lo)[0]
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.floats(-5, 5), min_size=2, max_size=2), st.lists(st.floats(0, 3), min_size=4, max_size=4))
+def test_dag_contraction_keeps_every_point_that_satisfies_the_constraints(point, pads):
+    """HC4 over the shared DAG (one sweep each way for all constraints) is sound: a point
+    whose constraint values lie in the bounds is never cut from a box that holds it."""
+    x = np.array(point)
+    xl, xh = evaluate(compile_tape(SHARED_EXPRS, [(-np.inf, np.inf)] * len(SHARED_EXPRS)), x, x)
+    tape = compile_tape(SHARED_EXPRS, list(zip(xl, xh)))
+    lo, hi = x - np.array(pads[:2]), x + np.array(pads[2:])
+    assert contract(tape, lo, hi)
+    assert np.all(lo <= x) and np.all(x <= hi)
 
 
 def test_compiled_loop_with_a_linear_filter_matches_the_python_filter():

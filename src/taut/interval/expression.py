@@ -4,8 +4,9 @@ Constraints are written with :class:`Expr` objects (``x[0]**2 + x[1]*x[2] - 3``)
 compiled by :func:`compile_system` into flat arrays — one node per operation, children
 before parents, each constraint a contiguous run of nodes ending at its root — that the
 Numba kernels of :mod:`taut.interval.hc4` evaluate forwards (natural interval extension)
-and backwards (HC4 projections).  Within one constraint equal subexpressions (the same
-Python object) become one node, so a DAG is evaluated once and projected once.
+and backwards (HC4 projections).  Equal subexpressions, within a constraint and across
+constraints, become one node (the same Python object, or the same operation on the same
+operands), so the tape is one DAG, evaluated once and projected once per sweep.
 
 :func:`derivative` differentiates symbolically (the constraints are polynomials, so the
 partial derivatives are again expressions); :func:`compile_system` compiles the Jacobian
@@ -193,18 +194,30 @@ class Tape:
 
 
 def compile_tape(exprs, bounds) -> Tape:
-    """Compile expressions ``exprs[c]`` with value bounds ``bounds[c] = (lo, hi)``."""
+    """Compile expressions ``exprs[c]`` with value bounds ``bounds[c] = (lo, hi)``.
+
+    Nodes are shared across constraints and merged when structurally equal (hash-consing:
+    same operation on the same operands), so constraint ``c``'s segment holds only the
+    nodes that earlier constraints lack: the tape is evaluated in order, from its first
+    node (a Jacobian's entries and the secondary points of the DGP repeat the same
+    products many times over)."""
     op, a, b, clo, chi, start, end = [], [], [], [], [], [], []
+    index: dict = {}
+    keep: list[Expr] = []  # an id is a key only while its object lives
     for e in exprs:
         e = _coerce(e)
         start.append(len(op))
-        index: dict[int, int] = {}
 
         def emit(node: Expr) -> int:
             k = id(node)
             if k in index:
                 return index[k]
             kids = [emit(c) for c in node.args]
+            keep.append(node)
+            form = (node.op, tuple(kids), node.index, node.lo, node.hi)
+            if form in index:
+                index[k] = index[form]
+                return index[k]
             op.append(node.op)
             if node.op == VAR:
                 a.append(node.index)
@@ -217,10 +230,17 @@ def compile_tape(exprs, bounds) -> Tape:
                 b.append(kids[1] if len(kids) > 1 else 0)
             clo.append(node.lo)
             chi.append(node.hi)
-            index[k] = len(op) - 1
+            index[k] = index[form] = len(op) - 1
             return index[k]
 
-        emit(e)
+        root = emit(e)
+        if root < start[-1]:  # emitted whole by an earlier constraint: end on −(−root), exact
+            first = len(op)
+            op.extend([NEG, NEG])
+            a.extend([root, first])
+            b.extend([0, 0])
+            clo.extend([0.0, 0.0])
+            chi.extend([0.0, 0.0])
         end.append(len(op))
     bl = np.array([lo for lo, _ in bounds], dtype=np.float64)
     bh = np.array([hi for _, hi in bounds], dtype=np.float64)

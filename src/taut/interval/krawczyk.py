@@ -206,8 +206,8 @@ def _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, vl, vh, lo
     nodes = np.empty(op.size)
     nodeh = np.empty(op.size)
     fl, fh = np.empty(h), np.empty(h)
+    _forward(op, a, b, clo, chi, 0, end[h - 1], y, y, nodes, nodeh)  # the equations lead the tape
     for c in range(h):
-        _forward(op, a, b, clo, chi, start[c], end[c], y, y, nodes, nodeh)
         fl[c], fh[c] = nodes[end[c] - 1], nodeh[end[c] - 1]
     kl, kh = _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)
     nl, nh = np.maximum(kl, lo), np.minimum(kh, hi)
