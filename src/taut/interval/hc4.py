@@ -60,8 +60,13 @@ def _meet(nl, nh, i, lo, hi):
 
 
 @njit(cache=True, fastmath=False)
-def _backward(op, a, b, s, e, lo, hi, nl, nh):
+def _backward(op, a, b, s, e, lo, hi, nl, nh, fl, fh):
+    """Project nodes ``e − 1`` down to ``s`` onto their children.  A node whose domain is
+    still its forward value ``[fl, fh]`` (no parent or bound narrowed it) is skipped: as
+    ``z ⊇ x ∘ y``, ``x ∈ z ∘⁻¹ y`` cannot narrow ``x``."""
     for k in range(e - 1, s - 1, -1):
+        if nl[k] == fl[k] and nh[k] == fh[k]:
+            continue
         o = op[k]
         zl, zh = nl[k], nh[k]
         if o == VAR:
@@ -150,6 +155,8 @@ def contract_kernel(op, a, b, clo, chi, start, end, blo, bhi, lo, hi, ratio, max
     holds what every constraint sharing it has said (HC4 on the DAG)."""
     nl = np.empty(op.size)
     nh = np.empty(op.size)
+    fl = np.empty(op.size)
+    fh = np.empty(op.size)
     n = lo.size
     N = op.size
     before = np.empty(n)
@@ -157,10 +164,12 @@ def contract_kernel(op, a, b, clo, chi, start, end, blo, bhi, lo, hi, ratio, max
         for j in range(n):
             before[j] = hi[j] - lo[j]
         _forward(op, a, b, clo, chi, 0, N, lo, hi, nl, nh)
+        fl[:] = nl
+        fh[:] = nh
         for c in range(start.size):
             if not _meet(nl, nh, end[c] - 1, blo[c], bhi[c]):
                 return False
-        if not _backward(op, a, b, 0, N, lo, hi, nl, nh):
+        if not _backward(op, a, b, 0, N, lo, hi, nl, nh, fl, fh):
             return False
         gain = False
         for j in range(n):
