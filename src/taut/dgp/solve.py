@@ -95,6 +95,11 @@ def _pieces(sp, split: int) -> list[tuple[np.ndarray, np.ndarray]]:
     return live
 
 
+#: HC4 sweeps stop when no domain shrank by this fraction: on the four thesis robots fewer
+#: sweeps per box cost less than the 5–10 % more boxes they leave (0.05: 13.4 s, 0.1:
+#: 12.5 s, 0.2: 12.1 s on five sample sub-problems, with 5 %, 15 % more boxes).
+HC4_RATIO = 0.1
+
 #: Per process, the sub-problems last built and their pieces, keyed by the job's data:
 #: a worker running several pieces of one sub-problem builds it once (a build takes
 #: ~20 ms, as long as solving many pieces).
@@ -132,7 +137,7 @@ def _solve_piece(job):
         return out, [], 0, 0
     lo, hi = pieces[k]
     res = branch_and_prune(sp.system, lo, hi, primary=sp.primary, eps=eps, filters=(sp.statics,),
-                           certify_width=1.0, passes=4, domain=(sp.lo, sp.hi), bisection="smear")
+                           certify_width=1.0, passes=4, ratio=HC4_RATIO, domain=(sp.lo, sp.hi), bisection="smear")
     idx = list(taut)
     undecided = len(res.undecided)
     certs = []
