@@ -110,3 +110,55 @@ def test_overflow_of_finite_operands_keeps_a_finite_inner_bound():
     assert float(q.lo) <= 1e300 and np.isfinite(float(q.lo)) and float(q.hi) == np.inf
     p = Interval(1e200, 1e201) * Interval(-1e200, -1e199)
     assert float(p.lo) == -np.inf and float(p.hi) == -np.finfo(float).max
+
+
+def _ulps_below(x: float, k: int) -> float:
+    for _ in range(k):
+        x = float(np.nextafter(x, -np.inf))
+    return x
+
+
+def _ulps_above(x: float, k: int) -> float:
+    for _ in range(k):
+        x = float(np.nextafter(x, np.inf))
+    return x
+
+
+@settings(max_examples=400, deadline=None)
+@given(intervals_and_points(), intervals_and_points())
+def test_products_and_quotients_are_the_corner_hull_within_two_ulps(a, b):
+    """Products and quotients pick their endpoints by sign (two operations, not four): the
+    result is the hull of the four exact corner values, rounded out by at most two ulps —
+    an endpoint taken from the wrong corner would be wider (or lose the enclosure)."""
+    al, ah, _ = a
+    bl, bh, _ = b
+    pairs = [("*", Interval(al, ah) * Interval(bl, bh), [F(x) * F(y) for x in (al, ah) for y in (bl, bh)])]
+    if not bl <= 0.0 <= bh:
+        pairs.append(("/", Interval(al, ah) / Interval(bl, bh), [F(x) / F(y) for x in (al, ah) for y in (bl, bh)]))
+    for _, iv, corners in pairs:
+        lo, hi = float(iv.lo), float(iv.hi)
+        exact_lo, exact_hi = min(corners), max(corners)
+        assert _inside(exact_lo, iv) and _inside(exact_hi, iv)
+        assert lo >= _ulps_below(_rounded(exact_lo), 2) and hi <= _ulps_above(_rounded(exact_hi), 2)
+
+
+def _rounded(x: F) -> float:
+    """The nearest float, ±∞ past the largest one."""
+    try:
+        return float(x)
+    except OverflowError:
+        return np.inf if x > 0 else -np.inf
+
+
+def test_products_and_quotients_with_infinite_endpoints():
+    def pair(iv):
+        return float(iv.lo), float(iv.hi)
+
+    assert pair(Interval(0.0, np.inf) * Interval(1.0, 2.0)) == (0.0, np.inf)
+    assert pair(Interval(-np.inf, -1.0) * Interval(-np.inf, -2.0))[1] == np.inf
+    assert pair(Interval(-np.inf, -1.0) * Interval(-np.inf, -2.0))[0] >= 2.0 - 1e-15
+    assert pair(Interval(-1.0, 2.0) * Interval(0.0, np.inf)) == (-np.inf, np.inf)
+    lo, hi = pair(Interval(1.0, np.inf) / Interval(1.0, np.inf))
+    assert lo <= 0.0 and hi == np.inf
+    lo, hi = pair(Interval(-3.0, 6.0) / Interval(-np.inf, -2.0))
+    assert -3.0 - 1e-15 <= lo <= -3.0 and 1.5 <= hi <= 1.5 + 1e-15

@@ -77,6 +77,24 @@ def _prod_up(a, b):
 
 @njit(cache=True, fastmath=False)
 def mul(al, ah, bl, bh):
+    """``[a] × [b]`` by the signs of the endpoints (Moore's nine cases): two rounded
+    products, four only when both factors straddle 0."""
+    if al >= 0.0:
+        if bl >= 0.0:
+            return _prod_down(al, bl), _prod_up(ah, bh)
+        if bh <= 0.0:
+            return _prod_down(ah, bl), _prod_up(al, bh)
+        return _prod_down(ah, bl), _prod_up(ah, bh)
+    if ah <= 0.0:
+        if bl >= 0.0:
+            return _prod_down(al, bh), _prod_up(ah, bl)
+        if bh <= 0.0:
+            return _prod_down(ah, bh), _prod_up(al, bl)
+        return _prod_down(al, bh), _prod_up(al, bl)
+    if bl >= 0.0:
+        return _prod_down(al, bh), _prod_up(ah, bh)
+    if bh <= 0.0:
+        return _prod_down(ah, bl), _prod_up(al, bl)
     lo = min(min(_prod_down(al, bl), _prod_down(al, bh)), min(_prod_down(ah, bl), _prod_down(ah, bh)))
     hi = max(max(_prod_up(al, bl), _prod_up(al, bh)), max(_prod_up(ah, bl), _prod_up(ah, bh)))
     return lo, hi
@@ -114,9 +132,20 @@ def div(al, ah, bl, bh):
     """``[a] / [b]`` for ``0 ∉ [b]`` (``[-∞, ∞]`` when ``0 ∈ [b]``)."""
     if bl <= 0.0 <= bh:
         return -INF, INF
-    q1, q2, q3, q4 = al / bl, al / bh, ah / bl, ah / bh
-    lo = min(min(q1, q2), min(q3, q4))
-    hi = max(max(q1, q2), max(q3, q4))
+    # by the signs of the endpoints: two quotients
+    if bl > 0.0:
+        if al >= 0.0:
+            lo, hi = al / bh, ah / bl
+        elif ah <= 0.0:
+            lo, hi = al / bl, ah / bh
+        else:
+            lo, hi = al / bl, ah / bl
+    elif al >= 0.0:
+        lo, hi = ah / bh, al / bl
+    elif ah <= 0.0:
+        lo, hi = ah / bl, al / bh
+    else:
+        lo, hi = ah / bh, al / bh
     return down(lo), up(hi)
 
 
