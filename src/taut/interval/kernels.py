@@ -132,20 +132,18 @@ def div(al, ah, bl, bh):
     """``[a] / [b]`` for ``0 ∉ [b]`` (``[-∞, ∞]`` when ``0 ∈ [b]``)."""
     if bl <= 0.0 <= bh:
         return -INF, INF
-    # by the signs of the endpoints: two quotients
-    if bl > 0.0:
-        if al >= 0.0:
-            lo, hi = al / bh, ah / bl
-        elif ah <= 0.0:
-            lo, hi = al / bl, ah / bh
-        else:
-            lo, hi = al / bl, ah / bl
-    elif al >= 0.0:
-        lo, hi = ah / bh, al / bl
+    flip = bh < 0.0  # [a] / [b] = −([a] / −[b]), outward rounding being symmetric
+    if flip:
+        bl, bh = -bh, -bl
+    # 0 < bl: by the sign of [a], two quotients
+    if al >= 0.0:
+        lo, hi = al / bh, ah / bl
     elif ah <= 0.0:
-        lo, hi = ah / bl, al / bh
+        lo, hi = al / bl, ah / bh
     else:
-        lo, hi = ah / bh, al / bh
+        lo, hi = al / bl, ah / bl
+    if flip:
+        return down(-hi), up(-lo)
     return down(lo), up(hi)
 
 
