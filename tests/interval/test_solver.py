@@ -195,12 +195,15 @@ def test_a_shared_tape_evaluates_every_constraint_as_it_alone(centre, radius):
     shared = compile_tape(SHARED_EXPRS, bounds)
     alone = [compile_tape([e], bounds[:1]) for e in SHARED_EXPRS]
     assert shared.op.size < sum(t.op.size for t in alone)
+    # x is one node, used by x − y, x + 1 and x·y; the root of the last constraint by none
+    assert shared.parents(0) == 3 and shared.parents(shared.end[-1] - 1) == 0
     lo, hi = np.array(centre) - radius, np.array(centre) + radius
     vl, vh = evaluate(shared, lo, hi)
+    point = evaluate_point(shared, lo)
     for c, t in enumerate(alone):
         al, ah = evaluate(t, lo, hi)
         assert vl[c] == al[0] and vh[c] == ah[0]
-        assert evaluate_point(shared, lo)[c] == evaluate_point(t, lo)[0]
+        assert point[c] == evaluate_point(t, lo)[0]
 
 
 @settings(max_examples=200, deadline=None)

@@ -192,6 +192,12 @@ class Tape:
     def size(self) -> int:
         return self.start.size
 
+    def parents(self, k: int) -> int:
+        """How many nodes have node ``k`` as a child (shared nodes have several)."""
+        first = (self.op != VAR) & (self.op != CONST)  # ``a`` is a child, not a variable index
+        second = np.isin(self.op, (ADD, SUB, MUL, DIV))  # ``b`` is a child, not an exponent
+        return int(np.count_nonzero(first & (self.a == k)) + np.count_nonzero(second & (self.b == k)))
+
 
 def compile_tape(exprs, bounds) -> Tape:
     """Compile expressions ``exprs[c]`` with value bounds ``bounds[c] = (lo, hi)``.

@@ -95,9 +95,8 @@ def mul(al, ah, bl, bh):
         return _prod_down(al, bh), _prod_up(ah, bh)
     if bh <= 0.0:
         return _prod_down(ah, bl), _prod_up(al, bl)
-    lo = min(min(_prod_down(al, bl), _prod_down(al, bh)), min(_prod_down(ah, bl), _prod_down(ah, bh)))
-    hi = max(max(_prod_up(al, bl), _prod_up(al, bh)), max(_prod_up(ah, bl), _prod_up(ah, bh)))
-    return lo, hi
+    # both straddle 0: the lower end is a product of opposite signs, the upper of equal ones
+    return min(_prod_down(al, bh), _prod_down(ah, bl)), max(_prod_up(al, bl), _prod_up(ah, bh))
 
 
 @njit(cache=True, fastmath=False)
