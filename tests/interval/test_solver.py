@@ -70,18 +70,20 @@ def test_krawczyk_never_loses_a_zero_of_the_box(case):
     assert np.all(res.lo <= s) and np.all(s <= res.hi)
 
 
-def _exact_krawczyk(C, y, fl, fh, Jl, Jh, lo, hi):
-    """``y − C f(y) + (I − C J)(X − y)`` over the interval data, in exact rationals."""
+def _exact_krawczyk(C, y, fl, fh, Jl, Jh, lo, hi, sel=None):
+    """``y_S − C f(y) + (I_S − C J)(X − y)`` over the interval data, in exact rationals
+    (``S = sel``, all variables by default)."""
     F = Fraction
-    n = y.size
+    h, n = C.shape[0], y.size
+    sel = range(n) if sel is None else sel
     out = []
-    for i in range(n):
-        cf = [sorted((F(C[i, k]) * F(fl[k]), F(C[i, k]) * F(fh[k]))) for k in range(n)]
-        acc_lo = F(y[i]) - sum(c[1] for c in cf)
-        acc_hi = F(y[i]) - sum(c[0] for c in cf)
+    for i, v in zip(range(h), sel):
+        cf = [sorted((F(C[i, k]) * F(fl[k]), F(C[i, k]) * F(fh[k]))) for k in range(h)]
+        acc_lo = F(y[v]) - sum(c[1] for c in cf)
+        acc_hi = F(y[v]) - sum(c[0] for c in cf)
         for j in range(n):
-            terms = [sorted((F(C[i, k]) * F(Jl[k, j]), F(C[i, k]) * F(Jh[k, j]))) for k in range(n)]
-            d = F(1 if i == j else 0)
+            terms = [sorted((F(C[i, k]) * F(Jl[k, j]), F(C[i, k]) * F(Jh[k, j]))) for k in range(h)]
+            d = F(1 if v == j else 0)
             m_lo, m_hi = d - sum(t[1] for t in terms), d - sum(t[0] for t in terms)
             x_lo, x_hi = F(lo[j]) - F(y[j]), F(hi[j]) - F(y[j])
             prods = [m_lo * x_lo, m_lo * x_hi, m_hi * x_lo, m_hi * x_hi]
@@ -107,6 +109,88 @@ def test_midpoint_radius_krawczyk_encloses_the_exact_operator(case):
     kl, kh = _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)
     for i, (elo, ehi) in enumerate(_exact_krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)):
         assert Fraction(kl[i]) <= elo and ehi <= Fraction(kh[i])
+
+
+@settings(max_examples=100, deadline=None)
+@given(systems_with_a_zero(), st.data())
+def test_parametric_krawczyk_encloses_the_exact_operator(case, data):
+    """The first ``h < n`` equations solved for ``h`` of the variables, the others
+    parameters: the float operator holds the exact one of the same data."""
+    from taut.interval.krawczyk import _krawczyk_rows, jacobian
+
+    system, _, lo, hi = case
+    n = lo.size
+    h = data.draw(st.integers(1, n - 1))
+    sel = np.array(data.draw(st.permutations(range(n)))[:h])
+    Jl, Jh = (J[:h] for J in jacobian(system, lo, hi))
+    Ms = (0.5 * Jl + 0.5 * Jh)[:, sel]
+    assume(np.linalg.cond(Ms) < 1e12)
+    C = np.linalg.inv(Ms)
+    y = 0.5 * lo + 0.5 * hi
+    fl, fh = (f[:h] for f in evaluate(system.tape, y, y))
+    kl, kh = _krawczyk_rows(C, sel, y, fl, fh, Jl, Jh, lo, hi)
+    for i, (elo, ehi) in enumerate(_exact_krawczyk(C, y, fl, fh, Jl, Jh, lo, hi, sel)):
+        assert Fraction(kl[i]) <= elo and ehi <= Fraction(kh[i])
+
+
+def _tube(system, h, lo, hi):
+    from taut.interval.branch_prune import _tube_vars
+    from taut.interval.krawczyk import tube_kernel
+
+    vl, vh = evaluate(system.jacobian, lo, hi)
+    return tube_kernel(*system.tape.arrays[:5], system.tape.end, h, _tube_vars(system, h), system.rows,
+                       system.cols, vl, vh, lo, hi)
+
+
+@settings(max_examples=300, deadline=None)
+@given(systems_with_a_zero(), st.data())
+def test_tube_contraction_never_loses_a_point_of_the_manifold(case, data):
+    """A common zero of the first ``h`` equations stays in the contracted box."""
+    system, s, lo, hi = case
+    h = data.draw(st.integers(1, lo.size - 1))
+    assume(np.unique(system.cols[system.rows < h]).size > h)
+    assert _tube(system, h, lo, hi) != 2
+    assert np.all(lo <= s) and np.all(s <= hi)
+
+
+#: a circle: the unit sphere cut by the tilted plane x + 2y + 3z = 1, then a third equation
+#: that picks two of its points (the tube is the first two)
+X3D, Y3D, Z3D = variables(3)
+CIRCLE = compile_system(3, [X3D**2 + Y3D**2 + Z3D**2 - 1, X3D + 2 * Y3D + 3 * Z3D - 1, X3D - Y3D])
+
+
+def test_tube_contraction_shrinks_a_box_to_the_hull_of_its_piece_of_curve():
+    """Around a point of the circle, the parametric Krawczyk step keeps every point of the
+    circle in the box, shrinks the two variables it solves for to within 25 % of the hull
+    of the circle's piece in the box, and proves a box off the circle empty."""
+    n = np.array([1.0, 2.0, 3.0]) / np.sqrt(14)
+    u = np.cross(n, [1.0, 0.0, 0.0])
+    u /= np.linalg.norm(u)
+    v = np.cross(n, u)
+    theta = np.linspace(0.0, 2 * np.pi, 2_000_001)
+    pts = n / np.sqrt(14) + np.sqrt(1 - 1 / 14) * (np.cos(theta)[:, None] * u + np.sin(theta)[:, None] * v)
+    near = pts[np.abs(theta - 0.7) <= 0.01]
+    lo, hi = near.min(axis=0) - 0.02, near.max(axis=0) + 0.02
+    piece = pts[np.all((pts >= lo) & (pts <= hi), axis=1)]
+    tl, th = lo.copy(), hi.copy()
+    assert _tube(CIRCLE, 2, tl, th) == 1
+    assert np.all((piece >= tl) & (piece <= th))
+    hull = piece.max(axis=0) - piece.min(axis=0)
+    assert np.sum(th - tl <= 1.25 * hull) >= 2
+    assert _tube(CIRCLE, 2, lo + 0.3, hi + 0.3) == 2
+
+
+@pytest.mark.parametrize("method", ["python", "numba"])
+def test_branch_and_prune_with_a_tube_finds_the_same_solutions(method):
+    res = {t: branch_and_prune(CIRCLE, [-2.0] * 3, [2.0] * 3, tube=t, method=method) for t in (0, 2)}
+    key = lambda r: sorted(tuple(np.round(c.x, 12)) for c in r.solutions)  # noqa: E731
+    assert key(res[2]) == key(res[0]) and len(res[0].solutions) == 2
+    assert not res[2].undecided
+    x, y = variables(2)
+    with pytest.raises(ValueError, match="under-determined"):  # the first equation has one variable
+        branch_and_prune(compile_system(2, [x - 1, x + y]), [-3.0, -3.0], [3.0, 3.0], tube=1)
+    with pytest.raises(ValueError, match="tube must be"):
+        branch_and_prune(CIRCLES, [-3.0, -3.0], [3.0, 3.0], tube=2)
 
 
 def test_branch_and_prune_finds_all_solutions():

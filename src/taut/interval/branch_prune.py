@@ -34,7 +34,7 @@ from numba import njit
 
 from taut.interval.expression import System
 from taut.interval.hc4 import contract, contract_kernel, evaluate, evaluate_kernel
-from taut.interval.krawczyk import Certificate, _krawczyk_jacobian, certify, krawczyk
+from taut.interval.krawczyk import Certificate, _krawczyk_jacobian, certify, krawczyk, tube_kernel
 from taut.interval.linear import LinearFilter, linear_filter_kernel
 
 
@@ -123,6 +123,7 @@ def branch_and_prune(
     ratio: float = 0.05,
     domain=None,
     bisection: str = "width",
+    tube: int = 0,
 ) -> BranchAndPruneResult:
     """All solutions of ``system`` in the box ``[lo, hi]`` (see module docstring).
 
@@ -139,7 +140,11 @@ def branch_and_prune(
     applied after HC4.  ``bisection``: ``"width"`` bisects the widest primary variable
     (§3.1.4), ``"smear"`` the primary variable of largest relative smear
     (:func:`_smear`), which follows the variables the equations are most sensitive to
-    when they are scaled unevenly.
+    when they are scaled unevenly.  ``tube``: how many leading equations form an
+    under-determined subsystem (fewer equations than the variables they involve: the
+    DGP's rigidity and cable lengths); every box is then contracted onto its solution
+    manifold by the parametric Krawczyk operator (:func:`taut.interval.krawczyk.tube_kernel`)
+    after HC4 and the filters.
 
     ``method="numba"`` runs the box loop in a compiled kernel (:func:`_drive`) and returns
     to Python only to certify a solution; it needs every filter to be a
@@ -163,10 +168,11 @@ def branch_and_prune(
     smear = bisection == "smear"
     if method != "python" and kernel_ok:
         return _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters,
-                                       passes, gain, ratio, domain, smear)
+                                       passes, gain, ratio, domain, smear, tube)
     lo0, hi0 = _domain(lo, hi, domain)
     primary = np.ones(lo0.size, bool) if primary is None else np.asarray(primary, bool)
     jac = (*system.jacobian.arrays[:7], system.rows, system.cols, system.n_equations)
+    tube_vars = _tube_vars(system, tube)
     out = BranchAndPruneResult()
     stack = [(np.array(lo, float), np.array(hi, float))]
     while stack:
@@ -180,6 +186,11 @@ def branch_and_prune(
             continue
         if any(np.all(lo >= c.x - c.radius) and np.all(hi <= c.x + c.radius) for c in out.solutions):
             continue
+        if tube:
+            vl, vh = evaluate(system.jacobian, lo, hi)
+            if tube_kernel(*system.tape.arrays[:5], system.tape.end, tube, tube_vars, system.rows, system.cols,
+                           vl, vh, lo, hi) == 2:
+                continue
         width = hi - lo
         if np.max(np.where(primary, width, 0.0)) < certify_width and np.all(np.isfinite(width)):
             # Krawczyk cannot prove K(X) ⊂ int X on a box HC4 shrank to a few ulps: widen it
@@ -223,7 +234,8 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
            jop, ja, jb, jclo, jchi, jstart, jend, rows, cols,
            fop, fa, fb, fclo, fchi, fstart, fend, fm, fsign,
            stk_lo, stk_hi, sp, sol_x, sol_r, nsol, lo0, hi0, primary,
-           eps, certify_width, newton_width, max_boxes, boxes, out, passes, gain, ratio, stats, smear):
+           eps, certify_width, newton_width, max_boxes, boxes, out, passes, gain, ratio, stats, smear,
+           tube_g, tube_vars):
     """The loop of :func:`branch_and_prune` on the stack ``stk_lo[:sp], stk_hi[:sp]``
     until a box needs Python (a certification, an undecided box, the box budget, a full
     stack).  Returns ``(code, sp, boxes, unique)``; ``out`` rows hold the box, the
@@ -274,7 +286,27 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
                     finite = False
                 if primary[i] and width[i] > wp:
                     wp = width[i]
+            narrowed = False
+            if tube_g > 0:
+                evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, jl, jh)
+                have_j = True
+                stats[6] += 1
+                status = tube_kernel(op, a, b, clo, chi, end, tube_g, tube_vars, rows, cols, jl, jh, lo, hi)
+                if status == 2:
+                    stats[7] += 1
+                    dead = True
+                    break
+                if status == 1:
+                    wp2 = 0.0
+                    for i in range(n):
+                        width[i] = hi[i] - lo[i]
+                        if primary[i]:
+                            wp2 = max(wp2, width[i])
+                    narrowed = wp2 < (1.0 - gain) * wp
+                    wp = wp2
             if not (wp < certify_width and finite):
+                if narrowed:
+                    continue
                 break
             klo, khi = np.empty(n), np.empty(n)
             for i in range(n):
@@ -301,7 +333,7 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
                 if primary[i]:
                     wp2 = max(wp2, hi[i] - lo[i])
             width = hi - lo
-            if dead or wp2 > (1.0 - gain) * wp:  # Krawczyk narrowed little: bisect
+            if dead or (wp2 > (1.0 - gain) * wp and not narrowed):  # narrowed little: bisect
                 break
         if dead:
             continue
@@ -340,6 +372,16 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
     return _DONE, sp, boxes, False
 
 
+def _tube_vars(system: System, tube: int) -> np.ndarray:
+    """The variables of the first ``tube`` equations (see :func:`branch_and_prune`)."""
+    if not 0 <= tube < system.n_equations:
+        raise ValueError(f"tube must be between 0 and {system.n_equations - 1}, got {tube}")
+    used = np.unique(system.cols[system.rows < tube])
+    if tube and used.size <= tube:
+        raise ValueError(f"the first {tube} equations involve {used.size} variables: not under-determined")
+    return used.astype(np.int64)
+
+
 def _domain(lo, hi, domain) -> tuple[np.ndarray, np.ndarray]:
     if domain is None:
         return np.array(lo, float), np.array(hi, float)
@@ -355,7 +397,7 @@ def same_solution(a: Certificate, b: Certificate) -> bool:
 
 
 def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters, passes, gain, ratio,
-                            domain, smear):
+                            domain, smear, tube):
     lo0, hi0 = _domain(lo, hi, domain)
     n = lo0.size
     primary = np.ones(n, bool) if primary is None else np.asarray(primary, bool)
@@ -373,7 +415,8 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
     sp, boxes = 1, 0
     sol_x, sol_r = np.zeros((0, n)), np.zeros(0)
     buf = np.empty((6, n))
-    stats = np.zeros(6, np.int64)
+    stats = np.zeros(8, np.int64)
+    tube_vars = _tube_vars(system, tube)
 
     def push(blo, bhi):
         nonlocal sp, stk_lo, stk_hi
@@ -388,7 +431,7 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
             *t.arrays, system.n_equations, *jt.arrays[:7], system.rows, system.cols, *ftape, fm, fsign,
             stk_lo, stk_hi, sp, sol_x, sol_r, len(out.solutions), lo0, hi0, primary,
             float(eps), float(certify_width), float(newton_width), int(max_boxes), boxes, buf, int(passes), float(gain), float(ratio), stats,
-            smear,
+            smear, int(tube), tube_vars,
         )
         if code == _DONE:
             break
@@ -429,7 +472,8 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
         push(b2lo, b2hi)
         push(alo, ahi)
     out.boxes = boxes
-    out.stats = dict(zip(('hc4', 'statics', 'covered', 'krawczyk_empty', 'bisections', 'krawczyk'), stats.tolist()))
+    out.stats = dict(zip(('hc4', 'statics', 'covered', 'krawczyk_empty', 'bisections', 'krawczyk', 'tube',
+                          'tube_empty'), stats.tolist()))
     return out
 
 

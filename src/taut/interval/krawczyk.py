@@ -79,8 +79,21 @@ def _mid_rad(lo, hi):
 
 @njit(cache=True, fastmath=False)
 def _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi):
-    """``K(X) = y − C f(y) + (I − C J(X))(X − y)`` in midpoint-radius form (Rump, "Fast
-    and parallel interval arithmetic", BIT 39, 1999): a point matrix times an interval
+    """``K(X) = y − C f(y) + (I − C J(X))(X − y)`` for a square system: :func:`_krawczyk_rows`
+    with every variable solved for."""
+    return _krawczyk_rows(C, np.arange(C.shape[0]), y, fl, fh, Jl, Jh, lo, hi)
+
+
+@njit(cache=True, fastmath=False)
+def _krawczyk_rows(C, sel, y, fl, fh, Jl, Jh, lo, hi):
+    """``K(X) = y_S − C f(y) + (I_S − C J(X))(X − y)`` for ``h`` equations in ``n ≥ h``
+    variables, of which the ``h`` variables ``S = sel`` are solved for and the others are
+    parameters (``I_S``: rows of the identity at ``S``; ``C ≈ J_S⁻¹``).  By the mean-value
+    theorem every solution in ``X`` has its ``S`` coordinates in ``K(X)`` — the parametric
+    Krawczyk operator (Neumaier 1990 §5.1; for ``n = h`` the square one).
+
+    Midpoint-radius form (Rump, "Fast and parallel interval arithmetic", BIT 39, 1999):
+    a point matrix times an interval
     matrix is ``C·[J_c ± J_r] = C J_c ± |C| J_r`` exactly, so the products are float
     dot products, each bounded by the a-priori error ``γ_n = n u/(1 − n u)`` of an
     n-term dot product (Higham, *Accuracy and Stability*, Eq. 3.5), instead of n³
@@ -119,10 +132,10 @@ def _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi):
                 pc += c * Jc[k, j]
                 pa += abs(c * Jc[k, j])
                 pr += abs(c) * Jr[k, j]
-            mc = (1.0 if i == j else 0.0) - pc
+            mc = (1.0 if sel[i] == j else 0.0) - pc
             mr = (pr + g * pa) * grow + 2.0 * _U * abs(mc)
             v += (abs(mc) + mr) * xr[j]
-        kc = y[i] - cf
+        kc = y[sel[i]] - cf
         kr = K.up((cr + g * ca + v) * grow + 2.0 * _U * abs(kc)) + _TINY
         if not (np.isfinite(kc) and np.isfinite(kr)):
             return np.full(h, -np.inf), np.full(h, np.inf)
@@ -220,6 +233,88 @@ def _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, vl, vh, lo
     if inner:
         return 1, kl, kh
     return 0, nl, nh
+
+
+@njit(cache=True, fastmath=False)
+def tube_kernel(op, a, b, clo, chi, end, g, gvars, rows, cols, vl, vh, lo, hi):
+    """Contract the box ``[lo, hi]`` (in place) onto the manifold of the tape's first ``g``
+    equations, which involve only the ``k > g`` variables ``gvars``: the parametric
+    Krawczyk operator (:func:`_krawczyk_rows`) solves for the ``g`` of them that column-
+    pivoted Gram–Schmidt on the midpoint Jacobian finds best conditioned, the other
+    ``k − g`` are its parameters.  Where HC4 leaves a box as wide as the piece of the
+    manifold it holds in every direction, this one shrinks it to that piece's hull
+    once the equations are nearly linear over the box.  ``[vl, vh]``: the Jacobian's
+    nonzero entries (at ``rows, cols``) over the box.  Returns 2 when the box holds no
+    point of the manifold, 1 when it shrank, 0 otherwise."""
+    n, ng = lo.size, gvars.size
+    pos = np.full(n, -1)
+    for k in range(ng):
+        pos[gvars[k]] = k
+    Jl, Jh, M = np.zeros((g, ng)), np.zeros((g, ng)), np.zeros((g, ng))
+    for k in range(rows.size):
+        if rows[k] < g:
+            Jl[rows[k], pos[cols[k]]], Jh[rows[k], pos[cols[k]]] = vl[k], vh[k]
+            M[rows[k], pos[cols[k]]] = 0.5 * vl[k] + 0.5 * vh[k]
+    glo, ghi, y = np.empty(ng), np.empty(ng), np.empty(ng)
+    x = lo.copy()
+    for k in range(ng):
+        glo[k], ghi[k] = lo[gvars[k]], hi[gvars[k]]
+        y[k] = 0.5 * glo[k] + 0.5 * ghi[k]
+        x[gvars[k]] = y[k]
+        if not np.isfinite(y[k]):
+            return 0
+    Q = M.copy()
+    chosen = np.zeros(ng, np.bool_)
+    sel = np.empty(g, np.int64)
+    first = 0.0
+    for s in range(g):
+        best, bn = -1, 0.0
+        for j in range(ng):
+            if not chosen[j]:
+                nrm = 0.0
+                for i in range(g):
+                    nrm += Q[i, j] * Q[i, j]
+                if nrm > bn:
+                    best, bn = j, nrm
+        if s == 0:
+            first = bn
+        if best < 0 or not (bn > 1e-20 * first) or not np.isfinite(bn):
+            return 0
+        chosen[best] = True
+        sel[s] = best
+        r = np.sqrt(bn)
+        for j in range(ng):
+            if not chosen[j]:
+                d = 0.0
+                for i in range(g):
+                    d += Q[i, best] * Q[i, j]
+                for i in range(g):
+                    Q[i, j] -= d / bn * Q[i, best]
+        for i in range(g):
+            Q[i, best] /= r
+    Ms = np.empty((g, g))
+    for i in range(g):
+        for s in range(g):
+            Ms[i, s] = M[i, sel[s]]
+    ok, C = float_inverse(Ms)
+    if not ok:
+        return 0
+    nodes, nodeh = np.empty(end[g - 1]), np.empty(end[g - 1])
+    _forward(op, a, b, clo, chi, 0, end[g - 1], x, x, nodes, nodeh)  # the equations lead the tape
+    fl, fh = np.empty(g), np.empty(g)
+    for c in range(g):
+        fl[c], fh[c] = nodes[end[c] - 1], nodeh[end[c] - 1]
+    kl, kh = _krawczyk_rows(C, sel, y, fl, fh, Jl, Jh, glo, ghi)
+    status = 0
+    for i in range(g):
+        v = gvars[sel[i]]
+        if kl[i] > lo[v]:
+            lo[v], status = kl[i], 1
+        if kh[i] < hi[v]:
+            hi[v], status = kh[i], 1
+        if lo[v] > hi[v]:
+            return 2
+    return status
 
 
 @njit(cache=True, fastmath=False)
