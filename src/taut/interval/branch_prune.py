@@ -193,9 +193,7 @@ def branch_and_prune(
                 continue
         width = hi - lo
         if np.max(np.where(primary, width, 0.0)) < certify_width and np.all(np.isfinite(width)):
-            # Krawczyk cannot prove K(X) ⊂ int X on a box HC4 shrank to a few ulps: widen it
-            pad = np.maximum(1e-3 * width, 1e-10 * (1.0 + np.abs(lo) + np.abs(hi)))
-            klo, khi = np.maximum(lo - pad, lo0), np.minimum(hi + pad, hi0)
+            klo, khi = _pad(lo, hi, lo0, hi0)
             res = krawczyk(system, klo, khi)
             if res.status == "empty":
                 continue
@@ -223,6 +221,18 @@ def branch_and_prune(
         stack.append(b)
         stack.append(a)
     return out
+
+
+@njit(cache=True, fastmath=False)
+def _pad(lo, hi, lo0, hi0):
+    """The box widened by 0.1 % of its widths (at least ~1e-10 relative), within the
+    domain: Krawczyk cannot prove ``K(X) ⊂ int X`` on a box HC4 shrank to a few ulps."""
+    klo, khi = np.empty(lo.size), np.empty(lo.size)
+    for i in range(lo.size):
+        pad = max(1e-3 * (hi[i] - lo[i]), 1e-10 * (1.0 + abs(lo[i]) + abs(hi[i])))
+        klo[i] = max(lo[i] - pad, lo0[i])
+        khi[i] = min(hi[i] + pad, hi0[i])
+    return klo, khi
 
 
 # Return codes of :func:`_drive`.
@@ -255,6 +265,7 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
         unique = False
         have_j = False
         klo, khi, rl, rh = lo, hi, lo, hi
+        jlo, jhi = lo, hi
         for it in range(passes):
             if not contract_kernel(op, a, b, clo, chi, start, end, blo, bhi, lo, hi, ratio, 50):
                 stats[0] += 1
@@ -287,8 +298,16 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
                 if primary[i] and width[i] > wp:
                     wp = width[i]
             narrowed = False
+            padded = False  # jl, jh hold the Jacobian over the box padded for Krawczyk
             if tube_g > 0:
-                evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, jl, jh)
+                if wp < certify_width and finite:
+                    # over the padded box, the Jacobian also serves Krawczyk on the padded
+                    # contracted box (clipped to this one): one evaluation for both
+                    jlo, jhi = _pad(lo, hi, lo0, hi0)
+                    evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, jlo, jhi, jl, jh)
+                    padded = True
+                else:
+                    evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, jl, jh)
                 have_j = True
                 stats[6] += 1
                 status = tube_kernel(op, a, b, clo, chi, end, tube_g, tube_vars, rows, cols, jl, jh, lo, hi)
@@ -308,12 +327,11 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
                 if narrowed:
                     continue
                 break
-            klo, khi = np.empty(n), np.empty(n)
-            for i in range(n):
-                pad = max(1e-3 * width[i], 1e-10 * (1.0 + abs(lo[i]) + abs(hi[i])))
-                klo[i] = max(lo[i] - pad, lo0[i])
-                khi[i] = min(hi[i] + pad, hi0[i])
-            evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, klo, khi, jl, jh)
+            klo, khi = _pad(lo, hi, lo0, hi0)
+            if padded:
+                klo, khi = np.maximum(klo, jlo), np.minimum(khi, jhi)
+            else:
+                evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, klo, khi, jl, jh)
             have_j = True
             status, rl, rh = _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, jl, jh, klo, khi)
             stats[5] += 1
