@@ -6,7 +6,9 @@ Each box popped from the list is
 
 1. *filtered* (operator ``F``): HC4 contraction (:mod:`taut.interval.hc4`) of the
    equations and of the redundant constraints; boxes inside the uniqueness box of an
-   already certified solution are dropped;
+   already certified solution are dropped; when the leading equations are
+   under-determined (``tube``), the box is contracted onto their solution manifold by
+   the parametric Krawczyk operator;
 2. *evaluated* (operator ``E``): once the box is small, the Krawczyk operator is applied
    to it and Newton is started from its midpoint; a solution proven unique by Krawczyk
    is stored with the radius of its inflated uniqueness box (:mod:`taut.interval.krawczyk`);

@@ -6,6 +6,9 @@
   ``K(X) ⊂ int X`` proves that ``X`` holds exactly one solution, ``K(X) ∩ X = ∅`` that it
   holds none (Krawczyk 1969; Neumaier 1990 §5.1).  It plays the role of the Kantorovich
   test of §3.2.1 (same conclusion, no second-derivative bound ``p₀`` to derive).
+* :func:`tube_kernel` — the parametric Krawczyk operator on an under-determined system
+  (more unknowns than equations): contracts a box onto the hull of the solution
+  manifold's piece in it (the DGP's rigidity and length equations).
 * :func:`inflate` — the inflation procedure of §3.2.1 (Eqs. 3.25–3.29): around a solution
   ``y*``, ``S = J(y*)⁻¹ J(B_k)`` over boxes ``B_k`` of half-width ``2^k δ`` is checked for
   strict diagonal dominance (``m_S > M_S``, an H-matrix, hence every matrix in ``J(B_k)`` is
@@ -93,8 +96,8 @@ def _krawczyk_rows(C, sel, y, fl, fh, Jl, Jh, lo, hi):
     Krawczyk operator (Neumaier 1990 §5.1; for ``n = h`` the square one).
 
     Midpoint-radius form (Rump, "Fast and parallel interval arithmetic", BIT 39, 1999):
-    a point matrix times an interval
-    matrix is ``C·[J_c ± J_r] = C J_c ± |C| J_r`` exactly, so the products are float
+    a point matrix times an interval matrix is ``C·[J_c ± J_r] = C J_c ± |C| J_r``
+    exactly, so the products are float
     dot products, each bounded by the a-priori error ``γ_n = n u/(1 − n u)`` of an
     n-term dot product (Higham, *Accuracy and Stability*, Eq. 3.5), instead of n³
     outward-rounded interval operations.  ``X − y`` is enclosed in ``[−x_r, x_r]``, so
@@ -256,7 +259,7 @@ def tube_kernel(op, a, b, clo, chi, end, g, gvars, rows, cols, vl, vh, lo, hi):
             Jl[rows[k], pos[cols[k]]], Jh[rows[k], pos[cols[k]]] = vl[k], vh[k]
             M[rows[k], pos[cols[k]]] = 0.5 * vl[k] + 0.5 * vh[k]
     glo, ghi, y = np.empty(ng), np.empty(ng), np.empty(ng)
-    x = lo.copy()
+    x = lo.copy()  # the other variables do not occur in the first g equations
     for k in range(ng):
         glo[k], ghi[k] = lo[gvars[k]], hi[gvars[k]]
         y[k] = 0.5 * glo[k] + 0.5 * ghi[k]
@@ -282,16 +285,13 @@ def tube_kernel(op, a, b, clo, chi, end, g, gvars, rows, cols, vl, vh, lo, hi):
             return 0
         chosen[best] = True
         sel[s] = best
-        r = np.sqrt(bn)
-        for j in range(ng):
+        for j in range(ng):  # the other columns' components along the chosen one go
             if not chosen[j]:
                 d = 0.0
                 for i in range(g):
                     d += Q[i, best] * Q[i, j]
                 for i in range(g):
                     Q[i, j] -= d / bn * Q[i, best]
-        for i in range(g):
-            Q[i, best] /= r
     Ms = np.empty((g, g))
     for i in range(g):
         for s in range(g):
