@@ -7,7 +7,7 @@ import pytest
 
 from taut.dgp import solve_dgp
 from taut.dgp.formulation import build_subproblem
-from taut.dgp.solve import _PREPARED_SIZE, _pieces, _prepared
+from taut.dgp.solve import _PREPARED_SIZE, _pieces, _prepared, _solve_piece
 from taut.errors import TautError
 from taut.geometry.rotation import rotation_matrix
 from taut.interval.branch_prune import same_solution
@@ -69,3 +69,12 @@ def test_split_out_of_range_is_refused():
     for bad in (-1, 11):
         with pytest.raises(TautError, match="split"):
             solve_dgp(ROBOT, max_taut=2, split=bad)
+
+
+def test_a_box_that_reached_eps_beside_a_solution_certified_later_is_not_undecided():
+    """Teaching prototype, cables 2, 5, 6, piece 14 of 16: depth first, a box hugging the
+    solution (1.5e-8 from it, not holding it) reaches eps before the solution is certified;
+    it lies in the solution's uniqueness box, so it holds no other solution."""
+    robot = load_robot("teaching-prototype")
+    sols, certs, undecided, boxes = _solve_piece((robot, np.array(robot.reference.lengths), (1, 4, 5), 1e-7, 4, 14))
+    assert undecided == 0 and len(certs) <= 1 and boxes > 0

@@ -222,7 +222,7 @@ def branch_and_prune(
         a, b = _split(lo, hi, _bisect_index(width, primary, eps, score))
         stack.append(b)
         stack.append(a)
-    return out
+    return _drop_covered(out)
 
 
 @njit(cache=True, fastmath=False)
@@ -494,6 +494,15 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
     out.boxes = boxes
     out.stats = dict(zip(('hc4', 'statics', 'covered', 'krawczyk_empty', 'bisections', 'krawczyk', 'tube',
                           'tube_empty'), stats.tolist()))
+    return _drop_covered(out)
+
+
+def _drop_covered(out: BranchAndPruneResult) -> BranchAndPruneResult:
+    """Undecided boxes inside the uniqueness box ``x ± radius`` of a solution hold no other
+    one: a box that reached ``eps`` beside a solution before that solution was certified
+    (depth first, its neighbour may come later) is decided after all."""
+    out.undecided = [(lo, hi) for lo, hi in out.undecided
+                     if not any(np.all(lo >= c.x - c.radius) and np.all(hi <= c.x + c.radius) for c in out.solutions)]
     return out
 
 
