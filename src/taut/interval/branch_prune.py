@@ -186,7 +186,7 @@ def branch_and_prune(
             break
         if not contract(system.tape, lo, hi) or not all(f(lo, hi) for f in filters):
             continue
-        if any(np.all(lo >= c.x - c.radius) and np.all(hi <= c.x + c.radius) for c in out.solutions):
+        if any(c.covers(lo, hi) for c in out.solutions):
             continue
         if tube:
             vl, vh = evaluate(system.jacobian, lo, hi)
@@ -209,7 +209,7 @@ def branch_and_prune(
                         out.solutions.append(cert)
                     if unique:
                         continue
-                    if np.all(lo >= cert.x - cert.radius) and np.all(hi <= cert.x + cert.radius):
+                    if cert.covers(lo, hi):
                         continue
             lo, hi = np.maximum(lo, res.lo), np.minimum(hi, res.hi)
             if np.any(lo > hi):
@@ -478,7 +478,7 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
                 sol_r = np.array([c.radius for c in out.solutions])
             if unique:
                 continue
-            if np.all(blo >= cert.x - cert.radius) and np.all(bhi <= cert.x + cert.radius):
+            if cert.covers(blo, bhi):
                 continue
         blo, bhi = np.maximum(blo, rl), np.minimum(bhi, rh)
         if np.any(blo > bhi):
@@ -501,8 +501,7 @@ def _drop_covered(out: BranchAndPruneResult) -> BranchAndPruneResult:
     """Undecided boxes inside the uniqueness box ``x ± radius`` of a solution hold no other
     one: a box that reached ``eps`` beside a solution before that solution was certified
     (depth first, its neighbour may come later) is decided after all."""
-    out.undecided = [(lo, hi) for lo, hi in out.undecided
-                     if not any(np.all(lo >= c.x - c.radius) and np.all(hi <= c.x + c.radius) for c in out.solutions)]
+    out.undecided = [(lo, hi) for lo, hi in out.undecided if not any(c.covers(lo, hi) for c in out.solutions)]
     return out
 
 

@@ -397,6 +397,10 @@ class Certificate:
     def width(self) -> float:
         return float(np.max(self.hi - self.lo))
 
+    def covers(self, lo, hi) -> bool:
+        """The box ``[lo, hi]`` lies in ``x ± radius``: it holds no solution but ``x``."""
+        return bool(np.all(lo >= self.x - self.radius) and np.all(hi <= self.x + self.radius))
+
 
 def certify(system: System, x0, scale: float = 1e-8) -> Certificate | None:
     """Newton from ``x0``, then Krawczyk on a small box around the limit, then inflation."""
