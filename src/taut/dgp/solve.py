@@ -5,10 +5,10 @@ geometrico-static problem (``001_eb92e2f6589fc229.txt`` Ch. 2–3).
 (Eq. 2.1), solves each one — ``m = 1`` in closed form (:mod:`taut.dgp.single_cable`),
 ``m ≥ 2`` by certified branch-and-prune on the reference-point system of
 :mod:`taut.dgp.formulation` (for ``3 ≤ m ≤ 5`` every box is also contracted onto the pose
-manifold of the rigidity and length equations, its ``geometry``) — through a :mod:`taut.parallel` executor, and classifies every
-solution by the reduced Hessian (:mod:`taut.dgp.stability`).  A solution with a zero
-tension is not reported by the larger subset (its tension enclosure straddles 0), it
-belongs to the smaller one.
+manifold of the rigidity and length equations, its ``geometry``) — through a
+:mod:`taut.parallel` executor, and classifies every solution by the reduced Hessian
+(:mod:`taut.dgp.stability`).  A solution with a zero tension is not reported by the larger
+subset (its tension enclosure straddles 0), it belongs to the smaller one.
 """
 
 from __future__ import annotations
