@@ -70,6 +70,17 @@ def test_krawczyk_never_loses_a_zero_of_the_box(case):
     assert np.all(res.lo <= s) and np.all(s <= res.hi)
 
 
+@settings(max_examples=200, deadline=None)
+@given(systems_with_a_zero())
+def test_krawczyk_with_slopes_keeps_every_zero_and_proves_uniqueness_only_with_the_jacobian(case):
+    system, s, lo, hi = case
+    res = krawczyk(system, lo, hi, points=1)
+    assert res.status != "empty"
+    assert np.all(res.lo <= s) and np.all(s <= res.hi)
+    if res.status == "unique":
+        assert krawczyk(system, lo, hi).status == "unique"
+
+
 def _exact_krawczyk(C, y, fl, fh, Jl, Jh, lo, hi, sel=None):
     """``y_S − C f(y) + (I_S − C J)(X − y)`` over the interval data, in exact rationals
     (``S = sel``, all variables by default)."""
@@ -135,11 +146,12 @@ def test_parametric_krawczyk_encloses_the_exact_operator(case, data):
         assert Fraction(kl[i]) <= elo and ehi <= Fraction(kh[i])
 
 
-def _tube(system, h, lo, hi):
-    from taut.interval.branch_prune import _tube_vars
+def _tube(system, h, lo, hi, points=0):
+    """The tube step with the Jacobian over the box (``points=0``) or the slopes."""
+    from taut.interval.branch_prune import _tube_slopes, _tube_vars
     from taut.interval.krawczyk import tube_kernel
 
-    vl, vh = evaluate(system.jacobian, lo, hi)
+    vl, vh = _tube_slopes(system, lo, hi, points)
     return tube_kernel(*system.tape.arrays[:5], system.tape.end, h, _tube_vars(system, h), system.rows,
                        system.cols, vl, vh, lo, hi)
 
@@ -147,11 +159,12 @@ def _tube(system, h, lo, hi):
 @settings(max_examples=300, deadline=None)
 @given(systems_with_a_zero(), st.data())
 def test_tube_contraction_never_loses_a_point_of_the_manifold(case, data):
-    """A common zero of the first ``h`` equations stays in the contracted box."""
+    """A common zero of the first ``h`` equations stays in the contracted box, with the
+    Jacobian over the box or the slopes (the equations are quadratic: one node)."""
     system, s, lo, hi = case
     h = data.draw(st.integers(1, lo.size - 1))
     assume(np.unique(system.cols[system.rows < h]).size > h)
-    assert _tube(system, h, lo, hi) != 2
+    assert _tube(system, h, lo, hi, data.draw(st.sampled_from([0, 1]))) != 2
     assert np.all(lo <= s) and np.all(s <= hi)
 
 
@@ -161,7 +174,8 @@ X3D, Y3D, Z3D = variables(3)
 CIRCLE = compile_system(3, [X3D**2 + Y3D**2 + Z3D**2 - 1, X3D + 2 * Y3D + 3 * Z3D - 1, X3D - Y3D])
 
 
-def test_tube_contraction_shrinks_a_box_to_the_hull_of_its_piece_of_curve():
+@pytest.mark.parametrize("points", [0, 1])
+def test_tube_contraction_shrinks_a_box_to_the_hull_of_its_piece_of_curve(points):
     """Around a point of the circle, the parametric Krawczyk step keeps every point of the
     circle in the box, shrinks the two variables it solves for to within 25 % of the hull
     of the circle's piece in the box, and proves a box off the circle empty."""
@@ -175,11 +189,11 @@ def test_tube_contraction_shrinks_a_box_to_the_hull_of_its_piece_of_curve():
     lo, hi = near.min(axis=0) - 0.02, near.max(axis=0) + 0.02
     piece = pts[np.all((pts >= lo) & (pts <= hi), axis=1)]
     tl, th = lo.copy(), hi.copy()
-    assert _tube(CIRCLE, 2, tl, th) == 1
+    assert _tube(CIRCLE, 2, tl, th, points) == 1
     assert np.all((piece >= tl) & (piece <= th))
     hull = piece.max(axis=0) - piece.min(axis=0)
     assert np.sum(th - tl <= 1.25 * hull) >= 2
-    assert _tube(CIRCLE, 2, lo + 0.3, hi + 0.3) == 2
+    assert _tube(CIRCLE, 2, lo + 0.3, hi + 0.3, points) == 2
 
 
 @pytest.mark.parametrize("method", ["python", "numba"])

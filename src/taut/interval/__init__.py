@@ -1,6 +1,6 @@
 """Interval analysis (``001_eb92e2f6589fc229.txt`` §1.3 and Ch. 3): outward-rounded
-interval arithmetic, polynomial constraint tapes, HC4 contraction, Krawczyk certificates
-with inflation, and a branch-and-prune solver."""
+interval arithmetic, polynomial constraint tapes, HC4 contraction, slope enclosures,
+Krawczyk certificates with inflation, and a branch-and-prune solver."""
 
 from taut.interval.arithmetic import Interval, centred_form
 from taut.interval.branch_prune import BranchAndPruneResult, branch_and_prune

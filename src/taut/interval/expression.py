@@ -170,6 +170,41 @@ def _depends(e: Expr, memo: dict) -> frozenset:
     return memo[key]
 
 
+#: The degree :func:`degree` gives an expression that is not a polynomial.
+NOT_POLYNOMIAL = 1 << 30
+
+
+def degree(e: Expr, memo: dict | None = None) -> int:
+    """Total degree of ``e`` as a polynomial in the unknowns (an upper bound: terms that
+    cancel are not noticed), :data:`NOT_POLYNOMIAL` when it has a square root or a
+    division by a non-constant."""
+    memo = {} if memo is None else memo
+    key = id(e)
+    if key not in memo:
+        if e.op == VAR:
+            d = 1
+        elif e.op == CONST:
+            d = 0
+        else:
+            k = [degree(x, memo) for x in e.args]
+            if e.op in (ADD, SUB):
+                d = max(k)
+            elif e.op == NEG:
+                d = k[0]
+            elif e.op == MUL:
+                d = k[0] + k[1]
+            elif e.op == SQR:
+                d = 2 * k[0]
+            elif e.op == POW:
+                d = e.index * k[0]
+            elif e.op == DIV and k[1] == 0:
+                d = k[0]
+            else:
+                d = NOT_POLYNOMIAL
+        memo[key] = min(d, NOT_POLYNOMIAL)
+    return memo[key]
+
+
 @dataclass(frozen=True)
 class Tape:
     """Compiled constraints ``blo[c] ≤ root_c(x) ≤ bhi[c]``: nodes ``start[c] … end[c]-1``."""
@@ -263,7 +298,8 @@ class System:
     constraints (equalities or inequalities) that only the contractor uses.
 
     ``tape`` holds the equations first (bounds ``[0, 0]``) then the redundant constraints;
-    ``jacobian`` holds the non-zero entries ``∂f_i/∂x_j`` at ``rows``, ``cols``."""
+    ``jacobian`` holds the non-zero entries ``∂f_i/∂x_j`` at ``rows``, ``cols``;
+    ``degrees`` the polynomial degree of each equation (:func:`degree`)."""
 
     n: int
     n_equations: int
@@ -271,6 +307,7 @@ class System:
     jacobian: Tape
     rows: np.ndarray
     cols: np.ndarray
+    degrees: np.ndarray
 
 
 def compile_system(n: int, equations, constraints=()) -> System:
@@ -294,4 +331,6 @@ def compile_system(n: int, equations, constraints=()) -> System:
                 rows.append(i)
                 cols.append(j)
     jtape = compile_tape(jac, [(-np.inf, np.inf)] * len(jac))
-    return System(n, n, tape, jtape, np.array(rows, np.int64), np.array(cols, np.int64))
+    memo: dict = {}
+    degrees = np.array([degree(e, memo) for e in equations], np.int64)
+    return System(n, n, tape, jtape, np.array(rows, np.int64), np.array(cols, np.int64), degrees)

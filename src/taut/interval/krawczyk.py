@@ -5,10 +5,13 @@
   ``K(X) = y − C f(y) + (I − C J(X))(X − y)``, ``C = mid(J(X))⁻¹``, ``y = mid X``:
   ``K(X) ⊂ int X`` proves that ``X`` holds exactly one solution, ``K(X) ∩ X = ∅`` that it
   holds none (Krawczyk 1969; Neumaier 1990 §5.1).  It plays the role of the Kantorovich
-  test of §3.2.1 (same conclusion, no second-derivative bound ``p₀`` to derive).
+  test of §3.2.1 (same conclusion, no second-derivative bound ``p₀`` to derive).  With
+  the slopes of :mod:`taut.interval.slope` in place of ``J(X)`` it excludes and
+  contracts wider boxes; uniqueness needs ``J(X)``.
 * :func:`tube_kernel` — the parametric Krawczyk operator on an under-determined system
   (more unknowns than equations): contracts a box onto the hull of the solution
-  manifold's piece in it (the DGP's rigidity and length equations).
+  manifold's piece in it (the DGP's rigidity and length equations), with the Jacobian
+  over the box or the slopes.
 * :func:`inflate` — the inflation procedure of §3.2.1 (Eqs. 3.25–3.29): around a solution
   ``y*``, ``S = J(y*)⁻¹ J(B_k)`` over boxes ``B_k`` of half-width ``2^k δ`` is checked for
   strict diagonal dominance (``m_S > M_S``, an H-matrix, hence every matrix in ``J(B_k)`` is
@@ -29,16 +32,12 @@ from taut.interval import kernels as K
 from taut.interval.expression import System
 from taut.interval.hc4 import _forward, evaluate, evaluate_kernel, evaluate_point, point_kernel
 from taut.interval.linear import _precondition, float_inverse
+from taut.interval.slope import slope_kernel
 
 
 def jacobian(system: System, lo, hi) -> tuple[np.ndarray, np.ndarray]:
     """Interval enclosure ``(Jlo, Jhi)`` of the Jacobian of the equations over a box."""
-    vl, vh = evaluate(system.jacobian, lo, hi)
-    Jl = np.zeros((system.n_equations, system.n))
-    Jh = np.zeros((system.n_equations, system.n))
-    Jl[system.rows, system.cols] = vl
-    Jh[system.rows, system.cols] = vh
-    return Jl, Jh
+    return _dense(system, *evaluate(system.jacobian, lo, hi))
 
 
 def jacobian_at(system: System, x) -> np.ndarray:
@@ -171,11 +170,33 @@ class KrawczykResult:
     hi: np.ndarray
 
 
-def krawczyk(system: System, lo, hi) -> KrawczykResult:
-    """One Krawczyk step on the box ``[lo, hi]`` (see module docstring)."""
+def krawczyk(system: System, lo, hi, points: int = 0) -> KrawczykResult:
+    """One Krawczyk step on the box ``[lo, hi]`` (see module docstring).  With
+    ``points > 0`` the slope enclosure of :mod:`taut.interval.slope` (that many nodes)
+    replaces ``J(X)``: it proves more boxes empty and contracts more, but ``K(X) ⊂ int X``
+    from slopes proves only that a solution exists, so such a box is tried again with
+    ``J(X)``, which alone proves it unique."""
     lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    if points:
+        vl, vh = np.empty(system.rows.size), np.empty(system.rows.size)
+        slope_kernel(*system.jacobian.arrays[:7], lo, hi, points, vl, vh)
+        res = _krawczyk_step(system, lo, hi, *_dense(system, vl, vh))
+        if res.status != "unique":
+            return res
+    return _krawczyk_step(system, lo, hi, *jacobian(system, lo, hi))
+
+
+def _dense(system: System, vl, vh) -> tuple[np.ndarray, np.ndarray]:
+    Jl = np.zeros((system.n_equations, system.n))
+    Jh = np.zeros((system.n_equations, system.n))
+    Jl[system.rows, system.cols] = vl
+    Jh[system.rows, system.cols] = vh
+    return Jl, Jh
+
+
+def _krawczyk_step(system: System, lo, hi, Jl, Jh) -> KrawczykResult:
+    """:func:`krawczyk` with the matrix ``[Jl, Jh]`` (the Jacobian over the box or slopes)."""
     y = 0.5 * lo + 0.5 * hi
-    Jl, Jh = jacobian(system, lo, hi)
     try:
         C = np.linalg.inv(0.5 * Jl + 0.5 * Jh)
     except np.linalg.LinAlgError:
