@@ -25,11 +25,11 @@ exactly, i.e. for points on the reference plane).  Equations (all of degree
   ``(b − a_p) × (a_i − b) = (b − a_p) × (a_i − a_p)``, which keeps one occurrence of ``b``).
 
 Redundant constraints for the filter (§3.1.3): the moment equations about every other taut
-exit point, the slack-cable inequalities ``‖b_k − a_k‖² ≤ ρ_k²`` (Eq. 3.7), and the
-sphere bounds ``(ρ_j − d_qj)² ≤ ‖q − a_j‖² ≤ (ρ_j + d_qj)²`` of Eq. 3.6 on each reference
-point ``q`` (the lower one for taut cables ``j``; on secondary points they cost more
-than they prune).  The
-initial box (§3.1.1, Eqs. 3.1–3.2) bounds each reference point by the spheres around the
+exit point (up to :data:`OTHER_POLES_UP_TO` taut cables), the slack-cable inequalities
+``‖b_k − a_k‖² ≤ ρ_k²`` (Eq. 3.7), and the sphere bounds
+``(ρ_j − d_qj)² ≤ ‖q − a_j‖² ≤ (ρ_j + d_qj)²`` of Eq. 3.6 on each reference point ``q``
+(the lower one for taut cables ``j``; on secondary points they cost more than they
+prune).  The initial box (§3.1.1, Eqs. 3.1–3.2) bounds each reference point by the spheres around the
 taut exit points, ``‖q − a_j‖ ≤ ρ_j + d_jq``; tensions start in ``[0, ∞)`` (§3.1.1: no
 upper bound is needed, HC4 and the bisection rule of §3.1.4 bound them).
 
@@ -55,6 +55,12 @@ from taut.model.robot import Robot
 
 #: Three body points whose triangle has a smaller area ratio than this are collinear.
 COLLINEAR = 1e-9
+
+#: The moments about the other taut exit points are redundant constraints up to this many
+#: taut cables.  With five, their 12 constraints of 5 terms each prune 1–3 % of the boxes and
+#: cost 25 % of the time (five CoGiRo and MARIONET-VR sub-problems: 14.0 → 10.6 s); with
+#: three or four they halve the boxes (seven sub-problems of Tables 4.3–4.6: 4.7 → 3.2 s).
+OTHER_POLES_UP_TO = 4
 
 
 def load(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -302,7 +308,8 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
     extra = []
     if m < 6:
         eqs += moments(a[taut[0]])
-        extra += [(e, (0.0, 0.0)) for j in taut[1:] for e in moments(a[j])]
+        if m <= OTHER_POLES_UP_TO:
+            extra += [(e, (0.0, 0.0)) for j in taut[1:] for e in moments(a[j])]
     for k in range(n):
         if k not in taut:
             extra.append((dist2(b[k], a[k]) - const(float(lengths[k])) ** 2, (-np.inf, 0.0)))
