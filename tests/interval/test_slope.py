@@ -10,13 +10,7 @@ from hypothesis import strategies as st
 from taut.interval import compile_system, const, krawczyk, sqrt, variables
 from taut.interval.expression import NOT_POLYNOMIAL, degree
 from taut.interval.hc4 import evaluate
-from taut.interval.slope import points_for, slope_kernel
-
-
-def _slopes(system, lo, hi, points):
-    vl, vh = np.empty(system.rows.size), np.empty(system.rows.size)
-    slope_kernel(*system.jacobian.arrays[:7], np.asarray(lo, float), np.asarray(hi, float), points, vl, vh)
-    return vl, vh
+from taut.interval.slope import points_for, slopes
 
 
 @st.composite
@@ -63,7 +57,7 @@ def test_the_slope_enclosure_holds_the_exact_difference_quotient(case):
     system = compile_system(n, [f] + [variables(n)[i] for i in range(1, n)])
     points = points_for(int(system.degrees[0]))
     assert points in (1, 2)
-    sl, sh = _slopes(system, lo, hi, points)
+    sl, sh = slopes(system, lo, hi, points)
     c = [Fraction(0.5 * lo[i] + 0.5 * hi[i]) for i in range(n)]
     xf = [Fraction(float(v)) for v in x]
     lower = upper = Fraction(0)
@@ -83,8 +77,8 @@ def test_a_quartic_needs_two_nodes():
     (x,) = variables(1)
     system = compile_system(1, [x**4])
     assert system.degrees[0] == 4 and points_for(4) == 2
-    one = _slopes(system, [0.0], [2.0], 1)
-    two = _slopes(system, [0.0], [2.0], 2)
+    one = slopes(system, [0.0], [2.0], 1)
+    two = slopes(system, [0.0], [2.0], 2)
     assert one[1][0] < 15.0
     assert 15.0 <= two[1][0] <= 15.0 + 1e-9
 
@@ -94,7 +88,7 @@ def test_on_a_quadratic_the_slopes_are_half_as_wide_as_the_jacobian():
     system = compile_system(2, [x**2 + x * y - 1, y**2 - x])
     lo, hi = np.array([0.5, 1.0]), np.array([1.5, 1.4])
     jl, jh = evaluate(system.jacobian, lo, hi)
-    sl, sh = _slopes(system, lo, hi, 1)
+    sl, sh = slopes(system, lo, hi, 1)
     assert np.all(sl >= jl) and np.all(sh <= jh)
     assert np.allclose(sh - sl, 0.5 * (jh - jl), rtol=1e-12, atol=1e-12)
 

@@ -148,10 +148,11 @@ def test_parametric_krawczyk_encloses_the_exact_operator(case, data):
 
 def _tube(system, h, lo, hi, points=0):
     """The tube step with the Jacobian over the box (``points=0``) or the slopes."""
-    from taut.interval.branch_prune import _tube_slopes, _tube_vars
+    from taut.interval.branch_prune import _tube_vars
+    from taut.interval.slope import slopes
     from taut.interval.krawczyk import tube_kernel
 
-    vl, vh = _tube_slopes(system, lo, hi, points)
+    vl, vh = slopes(system, lo, hi, points)
     return tube_kernel(*system.tape.arrays[:5], system.tape.end, h, _tube_vars(system, h), system.rows,
                        system.cols, vl, vh, lo, hi)
 

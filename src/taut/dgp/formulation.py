@@ -29,9 +29,10 @@ exit point (up to :data:`OTHER_POLES_UP_TO` taut cables), the slack-cable inequa
 ``‖b_k − a_k‖² ≤ ρ_k²`` (Eq. 3.7), and the sphere bounds
 ``(ρ_j − d_qj)² ≤ ‖q − a_j‖² ≤ (ρ_j + d_qj)²`` of Eq. 3.6 on each reference point ``q``
 (the lower one for taut cables ``j``; on secondary points they cost more than they
-prune).  The initial box (§3.1.1, Eqs. 3.1–3.2) bounds each reference point by the spheres around the
-taut exit points, ``‖q − a_j‖ ≤ ρ_j + d_jq``; tensions start in ``[0, ∞)`` (§3.1.1: no
-upper bound is needed, HC4 and the bisection rule of §3.1.4 bound them).
+prune).  The initial box (§3.1.1, Eqs. 3.1–3.2) bounds each reference point by the
+spheres around the taut exit points, ``‖q − a_j‖ ≤ ρ_j + d_jq``; tensions start in
+``[0, ∞)`` (§3.1.1: no upper bound is needed, HC4 and the bisection rule of §3.1.4 bound
+them).
 
 Six taut cables (§3.1.3, last paragraph): the tensions are not unknowns — the 9 equations
 (rigidity, lengths) fix the pose, the statics is square, and its interval solution only

@@ -42,7 +42,7 @@ from taut.interval.expression import System
 from taut.interval.hc4 import contract, contract_kernel, evaluate, evaluate_kernel
 from taut.interval.krawczyk import Certificate, _krawczyk_jacobian, certify, krawczyk, tube_kernel
 from taut.interval.linear import LinearFilter, linear_filter_kernel
-from taut.interval.slope import points_for, slope_kernel
+from taut.interval.slope import points_for, slope_kernel, slopes
 
 
 @dataclass
@@ -180,8 +180,7 @@ def branch_and_prune(
     primary = np.ones(lo0.size, bool) if primary is None else np.asarray(primary, bool)
     jac = (*system.jacobian.arrays[:7], system.rows, system.cols, system.n_equations)
     tube_vars = _tube_vars(system, tube)
-    tube_points = _tube_points(system, tube)
-    krawczyk_points = points_for(int(np.max(system.degrees)))
+    tube_points, krawczyk_points = _slope_points(system, tube), _slope_points(system, system.n_equations)
     out = BranchAndPruneResult()
     stack = [(np.array(lo, float), np.array(hi, float))]
     while stack:
@@ -196,7 +195,7 @@ def branch_and_prune(
         if any(c.covers(lo, hi) for c in out.solutions):
             continue
         if tube:
-            vl, vh = _tube_slopes(system, lo, hi, tube_points)
+            vl, vh = slopes(system, lo, hi, tube_points)
             if tube_kernel(*system.tape.arrays[:5], system.tape.end, tube, tube_vars, system.rows, system.cols,
                            vl, vh, lo, hi) == 2:
                 continue
@@ -342,15 +341,13 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
             klo, khi = _pad(lo, hi, lo0, hi0)
             if padded:
                 klo, khi = np.maximum(klo, jlo), np.minimum(khi, jhi)
-                status, rl, rh = _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, jl, jh, klo, khi)
             elif krawczyk_points > 0:
-                # slopes exclude and contract; only the Jacobian proves a solution unique
                 slope_kernel(jop, ja, jb, jclo, jchi, jstart, jend, klo, khi, krawczyk_points, jl, jh)
-                status, rl, rh = _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, jl, jh, klo, khi)
-                if status == 1:
-                    evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, klo, khi, jl, jh)
-                    status, rl, rh = _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, jl, jh, klo, khi)
             else:
+                evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, klo, khi, jl, jh)
+            status, rl, rh = _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, jl, jh, klo, khi)
+            if status == 1 and krawczyk_points > 0:  # (never padded: that needs degree > 4)
+                # slopes exclude and contract; only the Jacobian proves a solution unique
                 evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, klo, khi, jl, jh)
                 status, rl, rh = _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, jl, jh, klo, khi)
             have_j = True
@@ -420,19 +417,11 @@ def _tube_vars(system: System, tube: int) -> np.ndarray:
     return used.astype(np.int64)
 
 
-def _tube_points(system: System, tube: int) -> int:
-    """Gauss–Legendre nodes of the slope enclosure the tube step uses (0: the Jacobian
-    over the box), by the degree of its equations (:func:`taut.interval.slope.points_for`)."""
-    return points_for(int(np.max(system.degrees[:tube]))) if tube else 0
-
-
-def _tube_slopes(system: System, lo, hi, points: int) -> tuple[np.ndarray, np.ndarray]:
-    """The Jacobian entries' slope enclosure over the box (its Jacobian when ``points`` is 0)."""
-    if not points:
-        return evaluate(system.jacobian, lo, hi)
-    vl, vh = np.empty(system.rows.size), np.empty(system.rows.size)
-    slope_kernel(*system.jacobian.arrays[:7], np.asarray(lo, float), np.asarray(hi, float), points, vl, vh)
-    return vl, vh
+def _slope_points(system: System, k: int) -> int:
+    """Gauss–Legendre nodes of the slope enclosure of the first ``k`` equations, by their
+    degree (:func:`taut.interval.slope.points_for`; 0, the Jacobian over the box, when
+    ``k`` is 0): the tube step's, and with ``k = h`` the Krawczyk step's."""
+    return points_for(int(np.max(system.degrees[:k]))) if k else 0
 
 
 def _domain(lo, hi, domain) -> tuple[np.ndarray, np.ndarray]:
@@ -470,8 +459,7 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
     buf = np.empty((6, n))
     stats = np.zeros(8, np.int64)
     tube_vars = _tube_vars(system, tube)
-    tube_points = _tube_points(system, tube)
-    krawczyk_points = points_for(int(np.max(system.degrees)))
+    tube_points, krawczyk_points = _slope_points(system, tube), _slope_points(system, system.n_equations)
 
     def push(blo, bhi):
         nonlocal sp, stk_lo, stk_hi

@@ -32,7 +32,7 @@ from taut.interval import kernels as K
 from taut.interval.expression import System
 from taut.interval.hc4 import _forward, evaluate, evaluate_kernel, evaluate_point, point_kernel
 from taut.interval.linear import _precondition, float_inverse
-from taut.interval.slope import slope_kernel
+from taut.interval.slope import slopes
 
 
 def jacobian(system: System, lo, hi) -> tuple[np.ndarray, np.ndarray]:
@@ -178,9 +178,7 @@ def krawczyk(system: System, lo, hi, points: int = 0) -> KrawczykResult:
     ``J(X)``, which alone proves it unique."""
     lo, hi = np.asarray(lo, float), np.asarray(hi, float)
     if points:
-        vl, vh = np.empty(system.rows.size), np.empty(system.rows.size)
-        slope_kernel(*system.jacobian.arrays[:7], lo, hi, points, vl, vh)
-        res = _krawczyk_step(system, lo, hi, *_dense(system, vl, vh))
+        res = _krawczyk_step(system, lo, hi, *_dense(system, *slopes(system, lo, hi, points)))
         if res.status != "unique":
             return res
     return _krawczyk_step(system, lo, hi, *jacobian(system, lo, hi))
@@ -268,7 +266,8 @@ def tube_kernel(op, a, b, clo, chi, end, g, gvars, rows, cols, vl, vh, lo, hi):
     ``k − g`` are its parameters.  Where HC4 leaves a box as wide as the piece of the
     manifold it holds in every direction, this one shrinks it to that piece's hull
     once the equations are nearly linear over the box.  ``[vl, vh]``: the Jacobian's
-    nonzero entries (at ``rows, cols``) over the box.  Returns 2 when the box holds no
+    nonzero entries (at ``rows, cols``) over the box, or their slopes about its midpoint
+    (:mod:`taut.interval.slope`).  Returns 2 when the box holds no
     point of the manifold, 1 when it shrank, 0 otherwise."""
     n, ng = lo.size, gvars.size
     pos = np.full(n, -1)

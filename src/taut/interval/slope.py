@@ -28,12 +28,22 @@ import numpy as np
 from numba import njit
 
 from taut.interval import kernels as K
-from taut.interval.hc4 import evaluate_kernel
+from taut.interval.hc4 import evaluate, evaluate_kernel
 
 #: Upper bounds of the two Gauss–Legendre nodes ``½ ∓ √3/6`` on [0, 1]: the rounded values
 #: plus 1e-15, far above their few ulps of rounding error (checked exactly in the tests);
 #: only upper bounds matter, ``c + θ (X − c)`` grows with ``θ``.
 _NODES_2 = 0.5 + np.array([-1.0, 1.0]) * np.sqrt(3.0) / 6.0 + 1e-15
+
+
+def slopes(system, lo, hi, points: int) -> tuple[np.ndarray, np.ndarray]:
+    """The slope enclosure of a :class:`~taut.interval.expression.System`'s Jacobian
+    entries over the box (``points`` nodes; the Jacobian over the box when 0)."""
+    if not points:
+        return evaluate(system.jacobian, lo, hi)
+    vl, vh = np.empty(system.rows.size), np.empty(system.rows.size)
+    slope_kernel(*system.jacobian.arrays[:7], np.asarray(lo, float), np.asarray(hi, float), points, vl, vh)
+    return vl, vh
 
 
 def points_for(degree: int) -> int:
