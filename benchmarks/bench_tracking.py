@@ -34,8 +34,7 @@ def main():
     L = np.array(robot.reference.lengths)
     sp = build_subproblem(robot, L, (0, 1, 2))
     pose, ten = [2.7505, 3.9798, 5.5061, 3.0064, 0.3417, 0.1089], [0.526, 0.512, 0.581]
-    b = np.array(pose[:3]) + sp.body_refs @ rotation_matrix(np.array(pose[3:]), "xyz-fixed").T
-    cert = certify(sp.system, np.concatenate([b.ravel(), np.array(ten) / L]))
+    cert = certify(sp.system, sp.unknowns(pose[:3], rotation_matrix(np.array(pose[3:]), "xyz-fixed"), np.array(ten) / L))
     p, ang, _ = sp.pose(cert.x, "xyz-fixed")
     start = DGPSolution((1, 2, 3), p, ang, sp.tensions(cert.x, L, 3), True, cert.width, cert.radius)
     half = [L + k * 0.002 * np.array([1.0, -1.0, 0.5]) for k in range(1, STEPS // 2 + 1)]

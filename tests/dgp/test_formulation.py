@@ -75,7 +75,7 @@ def test_every_pose_the_lengths_allow_meets_the_geometric_filter_constraints(p, 
     span = np.linalg.norm(b - robot.exits, axis=1)
     lengths = np.array([span[i] if i in taut else span[i] + slack[i] for i in range(8)])
     sp = build_subproblem(robot, lengths, taut)
-    x = np.concatenate([(pos + R @ q) for q in sp.body_refs] + [np.ones(sp.system.n - 9)])
+    x = sp.unknowns(pos, R, np.ones(sp.system.n - sp.pose_unknowns))
     tape, h = sp.system.tape, sp.system.n_equations
     v = evaluate_point(tape, x)
     inequality = tape.blo < tape.bhi

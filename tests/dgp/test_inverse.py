@@ -49,8 +49,7 @@ def dgp_certified(robot, taut0, lengths, pose, tensions):
     lengths = np.asarray(lengths, float)
     sp = build_subproblem(robot, lengths, taut0)
     R = rotation_matrix(np.asarray(pose[3:], float), robot.orientation)
-    q = np.asarray(pose[:3]) + sp.body_refs @ R.T
-    cert = certify(sp.system, np.concatenate([q.ravel(), np.asarray(tensions)[list(taut0)] / lengths[list(taut0)]]))
+    cert = certify(sp.system, sp.unknowns(pose[:3], R, np.asarray(tensions)[list(taut0)] / lengths[list(taut0)]))
     assert cert is not None
     p, ang, _ = sp.pose(cert.x, robot.orientation)
     return np.concatenate([p, ang]), sp.tensions(cert.x, lengths, robot.n_cables)

@@ -36,8 +36,7 @@ def test_pieces_hold_every_solution_and_do_not_overlap():
             assert np.any(np.minimum(ahi, bhi)[sp.primary] <= np.maximum(alo, blo)[sp.primary])
     for pose, tensions in TABLE_4_3:
         R = rotation_matrix(np.array(pose[3:]), "xyz-fixed")
-        q = np.array(pose[:3]) + sp.body_refs @ R.T
-        x = certify(sp.system, np.concatenate([q.ravel(), np.array(tensions) / LENGTHS])).x
+        x = certify(sp.system, sp.unknowns(pose[:3], R, np.array(tensions) / LENGTHS)).x
         assert sum(bool(np.all(x >= lo) and np.all(x <= hi)) for lo, hi in pieces) >= 1
 
 

@@ -22,8 +22,7 @@ DIRECTION = np.array([1.0, -1.0, 0.5])
 def start():
     sp = build_subproblem(ROBOT, LENGTHS, (0, 1, 2))
     R = rotation_matrix(np.array(POSE[3:]), "xyz-fixed")
-    b = np.array(POSE[:3]) + sp.body_refs @ R.T
-    cert = certify(sp.system, np.concatenate([b.ravel(), np.array(TENSIONS) / LENGTHS]))
+    cert = certify(sp.system, sp.unknowns(POSE[:3], R, np.array(TENSIONS) / LENGTHS))
     p, ang, _ = sp.pose(cert.x, "xyz-fixed")
     return DGPSolution((1, 2, 3), p, ang, sp.tensions(cert.x, LENGTHS, 3), True, cert.width, cert.radius)
 
@@ -103,8 +102,7 @@ def test_six_taut_cables_track_without_tension_unknowns():
     sp = build_subproblem(robot, L, tuple(range(6)))
     assert not sp.tension_unknowns
     pose = np.array([-0.278, -1.470, 0.549, -0.670, 0.014, -0.043])
-    q = pose[:3] + sp.body_refs @ rotation_matrix(pose[3:], "xyz-fixed").T
-    cert = certify(sp.system, q.ravel())
+    cert = certify(sp.system, sp.unknowns(pose[:3], rotation_matrix(pose[3:], "xyz-fixed")))
     p, ang, _ = sp.pose(cert.x, "xyz-fixed")
     start = DGPSolution(tuple(range(1, 7)), p, ang, sp.tensions(cert.x, L, 6), True, cert.width, cert.radius)
     assert np.all(start.tensions > 0)

@@ -146,14 +146,17 @@ def test_parametric_krawczyk_encloses_the_exact_operator(case, data):
         assert Fraction(kl[i]) <= elo and ehi <= Fraction(kh[i])
 
 
-def _tube(system, h, lo, hi, points=0):
-    """The tube step with the Jacobian over the box (``points=0``) or the slopes."""
+def _tube(system, h, lo, hi, points=0, primary=None):
+    """The tube step with the Jacobian over the box (``points=0``) or the slopes; the
+    variables not ``primary`` are solved for first."""
     from taut.interval.branch_prune import _tube_vars
     from taut.interval.slope import slopes
     from taut.interval.krawczyk import tube_kernel
 
     vl, vh = slopes(system, lo, hi, points)
-    return tube_kernel(*system.tape.arrays[:5], system.tape.end, h, _tube_vars(system, h), system.rows,
+    primary = np.ones(lo.size, bool) if primary is None else primary
+    gvars, dependent = _tube_vars(system, h, primary)
+    return tube_kernel(*system.tape.arrays[:5], system.tape.end, h, gvars, dependent, system.rows,
                        system.cols, vl, vh, lo, hi)
 
 
@@ -161,11 +164,15 @@ def _tube(system, h, lo, hi, points=0):
 @given(systems_with_a_zero(), st.data())
 def test_tube_contraction_never_loses_a_point_of_the_manifold(case, data):
     """A common zero of the first ``h`` equations stays in the contracted box, with the
-    Jacobian over the box or the slopes (the equations are quadratic: one node)."""
+    Jacobian over the box or the slopes (the equations are quadratic: one node), whichever
+    variables are forced to be solved for."""
     system, s, lo, hi = case
     h = data.draw(st.integers(1, lo.size - 1))
-    assume(np.unique(system.cols[system.rows < h]).size > h)
-    assert _tube(system, h, lo, hi, data.draw(st.sampled_from([0, 1]))) != 2
+    used = np.unique(system.cols[system.rows < h])
+    assume(used.size > h)
+    primary = np.ones(lo.size, bool)
+    primary[data.draw(st.lists(st.sampled_from(used.tolist()), max_size=h, unique=True))] = False
+    assert _tube(system, h, lo, hi, data.draw(st.sampled_from([0, 1])), primary) != 2
     assert np.all(lo <= s) and np.all(s <= hi)
 
 
@@ -195,6 +202,22 @@ def test_tube_contraction_shrinks_a_box_to_the_hull_of_its_piece_of_curve(points
     hull = piece.max(axis=0) - piece.min(axis=0)
     assert np.sum(th - tl <= 1.25 * hull) >= 2
     assert _tube(CIRCLE, 2, lo + 0.3, hi + 0.3, points) == 2
+
+
+def test_tube_solves_for_the_variables_that_are_not_primary():
+    """On the circle near the point where x barely varies along it, pivoting solves for y
+    and z (both shrink); with x not bisected, x must be solved for, and z becomes the
+    parameter: it keeps its width.  Forcing three variables for two equations fails."""
+    n = np.array([1.0, 2.0, 3.0]) / np.sqrt(14)
+    u = np.cross(n, [1.0, 0.0, 0.0])
+    u /= np.linalg.norm(u)
+    p = n / np.sqrt(14) + np.sqrt(1 - 1 / 14) * (np.cos(0.7) * u + np.sin(0.7) * np.cross(n, u))
+    for primary, shrinks in (([True, True, True], [False, True, True]), ([False, True, True], [False, True, False])):
+        lo, hi = p - 0.01, p + 0.01
+        assert _tube(CIRCLE, 2, lo, hi, 1, np.array(primary)) == 1
+        assert list(hi - lo < 0.02 * (1 - 1e-3)) == shrinks
+    with pytest.raises(ValueError, match="cannot all be solved for"):
+        _tube(CIRCLE, 1, lo, hi, 1, np.array([False, False, True]))
 
 
 @pytest.mark.parametrize("method", ["python", "numba"])

@@ -2,40 +2,48 @@
 §2.3.1–2.3.6, initial domain §3.1.1, filters §3.1.3).
 
 Parameterisation (§2.3.5–2.3.6, "reference points"): the unknowns are the fixed-frame
-positions ``q_1, q_2, q_3`` of three non-collinear platform points and the scaled tensions
-``t_i = τ_i/ρ_i`` of the ``m`` taut cables — ``9 + m`` unknowns.  The reference points are
+positions ``q_1, q_2, q_3`` of three non-collinear platform points, the normal
+``n = (q_2 − q_1) × (q_3 − q_1)`` of their plane (when a platform point lies off it), and
+the scaled tensions ``t_i = τ_i/ρ_i`` of the ``m`` taut cables — ``12 + m`` unknowns
+(``9 + m`` without the normal).  The reference points are
 the three platform points with the smallest secondary-point weights, taut anchors preferred
 (their length constraints are plain spheres, Eq. 2.26): :func:`_reference_choice`
 (§3.1.1, "Cable numbering").
 Every other platform point is a *secondary point* (Eqs. 2.21–2.23)
 
-    s = q_1 + β_2 (q_2 − q_1) + β_3 (q_3 − q_1) + β_4 (q_2 − q_1) × (q_3 − q_1),
+    s = q_1 + β_2 (q_2 − q_1) + β_3 (q_3 − q_1) + β_4 n,
 
 with constants ``β`` from the body-frame geometry (Eq. 2.22), entered in the affine form
-``(1 − β_2 − β_3) q_1 + β_2 q_2 + β_3 q_3 + β_4 (…)×(…)`` of Eqs. 2.23–2.24, where each
-unknown occurs once in the linear part (the cross product is dropped when ``β_4 = 0``
-exactly, i.e. for points on the reference plane).  Equations (all of degree
-≤ 3 and polynomial, no trigonometry):
+``(1 − β_2 − β_3) q_1 + β_2 q_2 + β_3 q_3 + β_4 n`` of Eqs. 2.23–2.24, where each
+unknown occurs once (the last term is dropped when ``β_4 = 0`` exactly, i.e. for points
+on the reference plane).  The thesis writes the cross product into every secondary point,
+which makes their lengths quartic; with ``n`` an unknown every equation is quadratic, so
+the slope enclosures of :mod:`taut.interval.slope` need one node instead of two, and HC4
+contracts ``n`` itself (CoGiRo, Table 4.4: 4.72 M boxes → 3.4 M).  Equations (all
+quadratic, no trigonometry):
 
 * 3 rigidity relations ``‖q_i − q_j‖² = d_ij²`` (Eq. 2.19/2.28);
 * ``m`` cable lengths ``‖b_i − a_i‖² = ρ_i²`` (Eqs. 2.20, 2.26, 2.27);
+* 3 normal relations ``n = (q_2 − q_1) × (q_3 − q_1)``;
 * 6 equilibrium equations (Eq. 2.3): forces ``Σ t_i (a_i − b_i) + f = 0`` and moments about
   the exit point ``a_p`` of the first taut cable,
   ``Σ t_i (b_i − a_p) × (a_i − a_p) + (g − a_p) × f + m_ext = 0`` (using
   ``(b − a_p) × (a_i − b) = (b − a_p) × (a_i − a_p)``, which keeps one occurrence of ``b``).
 
-Redundant constraints for the filter (§3.1.3): the moment equations about every other taut
+Redundant constraints for the filter (§3.1.3): ``‖n‖² = ‖q_2 − q_1‖²‖q_3 − q_1‖² −
+((q_2 − q_1)·(q_3 − q_1))²``, a constant, and ``n ⊥ q_2 − q_1, q_3 − q_1``; the moment equations about every other taut
 exit point (up to :data:`OTHER_POLES_UP_TO` taut cables), the slack-cable inequalities
 ``‖b_k − a_k‖² ≤ ρ_k²`` (Eq. 3.7), and the sphere bounds
 ``(ρ_j − d_qj)² ≤ ‖q − a_j‖² ≤ (ρ_j + d_qj)²`` of Eq. 3.6 on each reference point ``q``
 (the lower one for taut cables ``j``; on secondary points they cost more than they
 prune).  The initial box (§3.1.1, Eqs. 3.1–3.2) bounds each reference point by the
-spheres around the taut exit points, ``‖q − a_j‖ ≤ ρ_j + d_jq``; tensions start in
+spheres around the taut exit points, ``‖q − a_j‖ ≤ ρ_j + d_jq``, and each component of
+``n`` by ``‖n‖``; tensions start in
 ``[0, ∞)`` (§3.1.1: no upper bound is needed, HC4 and the bisection rule of §3.1.4 bound
 them).
 
-Six taut cables (§3.1.3, last paragraph): the tensions are not unknowns — the 9 equations
-(rigidity, lengths) fix the pose, the statics is square, and its interval solution only
+Six taut cables (§3.1.3, last paragraph): the tensions are not unknowns — the 9 (12)
+equations (rigidity, lengths, normal) fix the pose, the statics is square, and its interval solution only
 discards boxes where a tension must be negative; a solution's tensions are then solved for.
 """
 
@@ -101,11 +109,19 @@ class Subproblem:
     primary: np.ndarray  #: pose variables (bisected first, §3.1.4)
     body_refs: np.ndarray  #: (3, 3) body-frame reference points
     statics: StaticsFilter
+    pose_unknowns: int = 9  #: the reference points, then the normal when it is an unknown
 
     def pose(self, x: np.ndarray, convention: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``(position p, angles, R)`` of the platform frame from the unknowns ``x``."""
         p, R = self.frame(x)
         return p, angles_from_matrix(R, convention), R
+
+    def unknowns(self, p: np.ndarray, R: np.ndarray, t=()) -> np.ndarray:
+        """The unknowns ``x`` of the platform frame ``(p, R)`` and the scaled tensions
+        ``t = τ/ρ`` of the taut cables (none for six taut cables): :meth:`frame` inverted."""
+        q = np.asarray(p, float) + self.body_refs @ np.asarray(R, float).T
+        normal = [np.cross(q[1] - q[0], q[2] - q[0])] if self.pose_unknowns == 12 else []
+        return np.concatenate([q.ravel(), *normal, np.asarray(t, float)])
 
     def frame(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``(position p, rotation R)`` of the platform frame from the unknowns ``x``."""
@@ -115,24 +131,25 @@ class Subproblem:
     def tension_unknowns(self) -> bool:
         """False for six taut cables: the unknowns are the reference points alone and the
         tensions follow from the (square) statics (§3.1.3)."""
-        return self.system.n > 9
+        return self.system.n > self.pose_unknowns
 
     @property
     def geometry(self) -> int:
-        """How many leading equations involve the pose alone — the 3 rigidity relations and
-        the ``m`` lengths, a ``(6 − m)``-dimensional manifold of poses that branch-and-prune
-        contracts boxes onto (its ``tube``) for ``3 ≤ m ≤ 5``.  0 otherwise: six taut
+        """How many leading equations involve the pose alone — the 3 rigidity relations, the
+        ``m`` lengths and the 3 normal relations, a ``(6 − m)``-dimensional manifold of poses
+        that branch-and-prune contracts boxes onto (its ``tube``; the normal, not bisected,
+        is solved for) for ``3 ≤ m ≤ 5``.  0 otherwise: six taut
         cables make the geometry square, and on the manifolds of dimension ≥ 4 of one or
         two cables the contraction reshapes boxes without emptying them (CoGiRo's cables
         3 and 7: 929 boxes without, 142 155 with it)."""
-        return 3 + len(self.taut) if 3 <= len(self.taut) <= 5 else 0
+        return 3 + len(self.taut) + (self.pose_unknowns - 9) if 3 <= len(self.taut) <= 5 else 0
 
     def tensions(self, x: np.ndarray, lengths: np.ndarray, n: int) -> np.ndarray:
         """Tensions of all ``n`` cables (0 for slack ones) at the unknowns ``x``."""
         idx = list(self.taut)
         tau = np.zeros(n)
         if self.tension_unknowns:
-            tau[idx] = x[9:] * lengths[idx]
+            tau[idx] = x[self.pose_unknowns:] * lengths[idx]
         else:
             v = evaluate_point(self.statics.tape, np.asarray(x, float))
             m = len(idx)
@@ -233,8 +250,10 @@ def _coordinates(refs: np.ndarray, body: np.ndarray) -> list[Fraction]:
     return [det(cols[:j] + [rhs] + cols[j + 1:]) / d for j in range(3)]
 
 
-def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -> Subproblem:
-    """The square system of §2.3 for the taut cables ``taut`` (0-based), ``1 ≤ m ≤ 6``.
+def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], normal: bool = True) -> Subproblem:
+    """The square system of §2.3 for the taut cables ``taut`` (0-based), ``1 ≤ m ≤ 6``;
+    ``normal``: the plane normal of the reference points is an unknown when some platform
+    point lies off their plane (tracking leaves it out: Newton steps on a smaller system).
 
     Every constant derived from the robot's data (the ``β`` of secondary points, squared
     distances between reference points, exit-point differences, the load) is computed in
@@ -245,14 +264,17 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
     _, _, gp = load(robot)
     f, mext = _exact_load(robot)
     labels, refs = _reference_choice(robot, taut, gp)
+    normal = normal and any(_coordinates(refs, body)[2] != 0 for lab, body in
+                            [(k, r[k]) for k in range(n)] + [("G", gp)] if lab not in labels)
+    pose = 12 if normal else 9
     # six taut cables: the statics is square and only checks the sign of its solution
-    unknowns = 9 if m == 6 else 9 + m
+    unknowns = pose if m == 6 else pose + m
     v = variables(unknowns)
     q = [v[0:3], v[3:6], v[6:9]]
-    t = dict(zip(taut, v[9:]))
+    t = dict(zip(taut, v[pose:]))
     e1 = [q[1][k] - q[0][k] for k in range(3)]
     e2 = [q[2][k] - q[0][k] for k in range(3)]
-    n12 = _cross(e1, e2)
+    n12 = v[9:12] if normal else _cross(e1, e2)
 
     def point(label, body) -> list[Expr]:
         """A secondary point (Eqs. 2.23–2.24) as ``c₁ q₁ + c₂ q₂ + c₃ q₃`` with affine weights
@@ -282,6 +304,8 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
         eqs.append(sum(((q[i][k] - q[j][k]) ** 2 for k in range(3)), const(0.0)) - _enclose(d2))
     for i in taut:
         eqs.append(dist2(b[i], a[i]) - const(float(lengths[i])) ** 2)
+    if normal:
+        eqs += [nk - ck for nk, ck in zip(n12, _cross(e1, e2))]
     if m < 6:
         for k in range(3):
             eqs.append(sum((t[i] * (float(a[i][k]) - b[i][k]) for i in taut), const(0.0)) + _enclose(f[k]))
@@ -307,6 +331,14 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
         return out
 
     extra = []
+    if normal:
+        # redundant: n has the (constant) length of e₁ × e₂ and is orthogonal to e₁, e₂
+        d01, d02, d12 = (sum((x - y) ** 2 for x, y in zip(_exact(refs[i]), _exact(refs[j])))
+                         for i, j in ((0, 1), (0, 2), (1, 2)))
+        dot = (d01 + d02 - d12) / 2
+        area2 = d01 * d02 - dot * dot  # ‖e₁ × e₂‖² = ‖e₁‖²‖e₂‖² − (e₁·e₂)²
+        extra.append((sum((nk * nk for nk in n12), const(0.0)) - _enclose(area2), (0.0, 0.0)))
+        extra += [(sum((nk * ek for nk, ek in zip(n12, e)), const(0.0)), (0.0, 0.0)) for e in (e1, e2)]
     if m < 6:
         eqs += moments(a[taut[0]])
         if m <= OTHER_POLES_UP_TO:
@@ -341,6 +373,10 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...]) -
             rad = (lengths[j] + float(np.linalg.norm(body - r[j]))) * (1.0 + 4.0 * np.finfo(float).eps)
             lo[3 * s : 3 * s + 3] = np.maximum(lo[3 * s : 3 * s + 3], np.nextafter(a[j] - rad, -np.inf))
             hi[3 * s : 3 * s + 3] = np.minimum(hi[3 * s : 3 * s + 3], np.nextafter(a[j] + rad, np.inf))
-    lo[9:], hi[9:] = 0.0, np.inf
+    if normal:
+        rad = float(np.nextafter(np.sqrt(float(area2)) * (1.0 + 4.0 * np.finfo(float).eps), np.inf))
+        lo[9:12], hi[9:12] = -rad, rad
+    lo[pose:], hi[pose:] = 0.0, np.inf
     primary = np.arange(unknowns) < 9
-    return Subproblem(tuple(taut), system, lo, hi, primary, refs, StaticsFilter(statics_tape, m, sign_only=m == 6))
+    return Subproblem(tuple(taut), system, lo, hi, primary, refs, StaticsFilter(statics_tape, m, sign_only=m == 6),
+                      pose)

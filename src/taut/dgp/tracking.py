@@ -104,7 +104,7 @@ def _compiled(robot: Robot, taut: tuple[int, ...]) -> _Compiled:
         # placeholder lengths, patched per update: distinct, so that the tape's hash-consing
         # cannot merge two cables' ρ (or a ρ with another constant) into one node
         marks = 1.0 + np.sqrt(2.0) / 7.0 + np.arange(robot.n_cables)
-        sub = build_subproblem(robot, marks, taut)
+        sub = build_subproblem(robot, marks, taut, normal=False)
         tape = sub.system.tape
         nodes = []
         for j, i in enumerate(taut):  # length equations follow the 3 rigidity relations

@@ -131,6 +131,7 @@ def branch_and_prune(
     domain=None,
     bisection: str = "width",
     tube: int = 0,
+    filter_width: float = np.inf,
 ) -> BranchAndPruneResult:
     """All solutions of ``system`` in the box ``[lo, hi]`` (see module docstring).
 
@@ -144,7 +145,8 @@ def branch_and_prune(
     and Newton is started when Krawczyk proves uniqueness or the box is narrower than
     ``newton_width``;
     ``filters`` are extra contractors ``f(lo, hi) -> bool`` (in place, False = empty)
-    applied after HC4.  ``bisection``: ``"width"`` bisects the widest primary variable
+    applied after HC4 to boxes whose primary variables are narrower than ``filter_width``
+    (an interval linear solve fails on wide boxes, where its cost buys nothing).  ``bisection``: ``"width"`` bisects the widest primary variable
     (§3.1.4), ``"smear"`` the primary variable of largest relative smear
     (:func:`_smear`), which follows the variables the equations are most sensitive to
     when they are scaled unevenly.  ``tube``: how many leading equations form an
@@ -175,11 +177,11 @@ def branch_and_prune(
     smear = bisection == "smear"
     if method != "python" and kernel_ok:
         return _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters,
-                                       passes, gain, ratio, domain, smear, tube)
+                                       passes, gain, ratio, domain, smear, tube, filter_width)
     lo0, hi0 = _domain(lo, hi, domain)
     primary = np.ones(lo0.size, bool) if primary is None else np.asarray(primary, bool)
     jac = (*system.jacobian.arrays[:7], system.rows, system.cols, system.n_equations)
-    tube_vars = _tube_vars(system, tube)
+    tube_vars, dependent = _tube_vars(system, tube, primary)
     tube_points, krawczyk_points = _slope_points(system, tube), _slope_points(system, system.n_equations)
     out = BranchAndPruneResult()
     stack = [(np.array(lo, float), np.array(hi, float))]
@@ -190,13 +192,15 @@ def branch_and_prune(
             out.undecided.append((lo, hi))
             out.undecided.extend(stack)
             break
-        if not contract(system.tape, lo, hi) or not all(f(lo, hi) for f in filters):
+        if not contract(system.tape, lo, hi):
+            continue
+        if _primary_width(lo, hi, primary) < filter_width and not all(f(lo, hi) for f in filters):
             continue
         if any(c.covers(lo, hi) for c in out.solutions):
             continue
         if tube:
             vl, vh = slopes(system, lo, hi, tube_points)
-            if tube_kernel(*system.tape.arrays[:5], system.tape.end, tube, tube_vars, system.rows, system.cols,
+            if tube_kernel(*system.tape.arrays[:5], system.tape.end, tube, tube_vars, dependent, system.rows, system.cols,
                            vl, vh, lo, hi) == 2:
                 continue
         width = hi - lo
@@ -232,6 +236,15 @@ def branch_and_prune(
 
 
 @njit(cache=True, fastmath=False)
+def _primary_width(lo, hi, primary):
+    w = 0.0
+    for i in range(lo.size):
+        if primary[i] and hi[i] - lo[i] > w:
+            w = hi[i] - lo[i]
+    return w
+
+
+@njit(cache=True, fastmath=False)
 def _pad(lo, hi, lo0, hi0):
     """The box widened by 0.1 % of its widths (at least ~1e-10 relative), within the
     domain: Krawczyk cannot prove ``K(X) ⊂ int X`` on a box HC4 shrank to a few ulps."""
@@ -253,7 +266,7 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
            fop, fa, fb, fclo, fchi, fstart, fend, fm, fsign,
            stk_lo, stk_hi, sp, sol_x, sol_r, nsol, lo0, hi0, primary,
            eps, certify_width, newton_width, max_boxes, boxes, out, passes, gain, ratio, stats, smear,
-           tube_g, tube_vars, tube_points, krawczyk_points):
+           tube_g, tube_vars, dependent, tube_points, krawczyk_points, filter_width):
     """The loop of :func:`branch_and_prune` on the stack ``stk_lo[:sp], stk_hi[:sp]``
     until a box needs Python (a certification, an undecided box, the box budget, a full
     stack).  Returns ``(code, sp, boxes, unique)``; ``out`` rows hold the box, the
@@ -281,7 +294,8 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
                 break
             # the tensions it bounds reach the equilibrium equations at the next pass's HC4 (a
             # second HC4 right after it cost more than it pruned: 0.3 % of boxes)
-            if fm > 0 and not linear_filter_kernel(fop, fa, fb, fclo, fchi, fstart, fend, fm, fsign, lo, hi):
+            if fm > 0 and _primary_width(lo, hi, primary) < filter_width and not linear_filter_kernel(
+                    fop, fa, fb, fclo, fchi, fstart, fend, fm, fsign, lo, hi):
                 stats[1] += 1
                 dead = True
                 break
@@ -321,7 +335,8 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
                     evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, jl, jh)
                 have_j = True
                 stats[6] += 1
-                status = tube_kernel(op, a, b, clo, chi, end, tube_g, tube_vars, rows, cols, jl, jh, lo, hi)
+                status = tube_kernel(op, a, b, clo, chi, end, tube_g, tube_vars, dependent, rows, cols, jl, jh, lo,
+                                     hi)
                 if status == 2:
                     stats[7] += 1
                     dead = True
@@ -407,14 +422,20 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
     return _DONE, sp, boxes, False
 
 
-def _tube_vars(system: System, tube: int) -> np.ndarray:
-    """The variables of the first ``tube`` equations (see :func:`branch_and_prune`)."""
+def _tube_vars(system: System, tube: int, primary: np.ndarray) -> tuple[np.ndarray, int]:
+    """The variables of the first ``tube`` equations (see :func:`branch_and_prune`), the
+    non-primary ones first, and how many of them lead (the tube step solves for them: a
+    variable that is not bisected is a function of the primary ones)."""
     if not 0 <= tube < system.n_equations:
         raise ValueError(f"tube must be between 0 and {system.n_equations - 1}, got {tube}")
     used = np.unique(system.cols[system.rows < tube])
     if tube and used.size <= tube:
         raise ValueError(f"the first {tube} equations involve {used.size} variables: not under-determined")
-    return used.astype(np.int64)
+    dependent = used[~primary[used]]
+    if dependent.size > tube:
+        raise ValueError(f"the first {tube} equations involve {dependent.size} non-primary variables: they cannot "
+                         "all be solved for")
+    return np.concatenate([dependent, used[primary[used]]]).astype(np.int64), int(dependent.size)
 
 
 def _slope_points(system: System, k: int) -> int:
@@ -439,7 +460,7 @@ def same_solution(a: Certificate, b: Certificate) -> bool:
 
 
 def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters, passes, gain, ratio,
-                            domain, smear, tube):
+                            domain, smear, tube, filter_width):
     lo0, hi0 = _domain(lo, hi, domain)
     n = lo0.size
     primary = np.ones(n, bool) if primary is None else np.asarray(primary, bool)
@@ -458,7 +479,7 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
     sol_x, sol_r = np.zeros((0, n)), np.zeros(0)
     buf = np.empty((6, n))
     stats = np.zeros(8, np.int64)
-    tube_vars = _tube_vars(system, tube)
+    tube_vars, dependent = _tube_vars(system, tube, primary)
     tube_points, krawczyk_points = _slope_points(system, tube), _slope_points(system, system.n_equations)
 
     def push(blo, bhi):
@@ -474,7 +495,7 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
             *t.arrays, system.n_equations, *jt.arrays[:7], system.rows, system.cols, *ftape, fm, fsign,
             stk_lo, stk_hi, sp, sol_x, sol_r, len(out.solutions), lo0, hi0, primary,
             float(eps), float(certify_width), float(newton_width), int(max_boxes), boxes, buf, int(passes), float(gain), float(ratio), stats,
-            smear, int(tube), tube_vars, tube_points, krawczyk_points,
+            smear, int(tube), tube_vars, dependent, tube_points, krawczyk_points, float(filter_width),
         )
         if code == _DONE:
             break

@@ -117,6 +117,7 @@ def _krawczyk_rows(C, sel, y, fl, fh, Jl, Jh, lo, hi):
         xr[j] = K.up(max(y[j] - lo[j], hi[j] - y[j]))
         if not np.isfinite(xr[j]):
             return kl, kh
+    pc, pa, pr = np.empty(n), np.empty(n), np.empty(n)
     for i in range(h):
         # (C f(y))_i: centre and radius of a point row times the interval vector f(y)
         cf, ca, cr = 0.0, 0.0, 0.0
@@ -125,17 +126,21 @@ def _krawczyk_rows(C, sel, y, fl, fh, Jl, Jh, lo, hi):
             cf += C[i, k] * fc
             ca += abs(C[i, k] * fc)
             cr += abs(C[i, k]) * fr
-        # row i of M = I − C J(X) in midpoint-radius form, then |M| x_r
+        # row i of M = I − C J(X) in midpoint-radius form, then |M| x_r; the sums over k
+        # run in the same order for every j, the j loop innermost (contiguous, vectorised)
+        pc[:], pa[:], pr[:] = 0.0, 0.0, 0.0
+        for k in range(h):
+            c = C[i, k]
+            ac = abs(c)
+            for j in range(n):
+                p = c * Jc[k, j]
+                pc[j] += p
+                pa[j] += abs(p)
+                pr[j] += ac * Jr[k, j]
         v = 0.0
         for j in range(n):
-            pc, pa, pr = 0.0, 0.0, 0.0
-            for k in range(h):
-                c = C[i, k]
-                pc += c * Jc[k, j]
-                pa += abs(c * Jc[k, j])
-                pr += abs(c) * Jr[k, j]
-            mc = (1.0 if sel[i] == j else 0.0) - pc
-            mr = (pr + g * pa) * grow + 2.0 * _U * abs(mc)
+            mc = (1.0 if sel[i] == j else 0.0) - pc[j]
+            mr = (pr[j] + g * pa[j]) * grow + 2.0 * _U * abs(mc)
             v += (abs(mc) + mr) * xr[j]
         kc = y[sel[i]] - cf
         kr = K.up((cr + g * ca + v) * grow + 2.0 * _U * abs(kc)) + _TINY
@@ -258,12 +263,15 @@ def _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, vl, vh, lo
 
 
 @njit(cache=True, fastmath=False)
-def tube_kernel(op, a, b, clo, chi, end, g, gvars, rows, cols, vl, vh, lo, hi):
+def tube_kernel(op, a, b, clo, chi, end, g, gvars, dependent, rows, cols, vl, vh, lo, hi):
     """Contract the box ``[lo, hi]`` (in place) onto the manifold of the tape's first ``g``
     equations, which involve only the ``k > g`` variables ``gvars``: the parametric
     Krawczyk operator (:func:`_krawczyk_rows`) solves for the ``g`` of them that column-
     pivoted Gram–Schmidt on the midpoint Jacobian finds best conditioned, the other
-    ``k − g`` are its parameters.  Where HC4 leaves a box as wide as the piece of the
+    ``k − g`` are its parameters.  The first ``dependent ≤ g`` of ``gvars`` are always
+    solved for (an auxiliary unknown that is a function of the others, such as the DGP's
+    platform normal, makes a poor parameter: CoGiRo's cables 2, 3, 6, 7 need 107 069 boxes
+    so, 169 675 when the pivoting may pick it).  Where HC4 leaves a box as wide as the piece of the
     manifold it holds in every direction, this one shrinks it to that piece's hull
     once the equations are nearly linear over the box.  ``[vl, vh]``: the Jacobian's
     nonzero entries (at ``rows, cols``) over the box, or their slopes about its midpoint
@@ -292,7 +300,7 @@ def tube_kernel(op, a, b, clo, chi, end, g, gvars, rows, cols, vl, vh, lo, hi):
     first = 0.0
     for s in range(g):
         best, bn = -1, 0.0
-        for j in range(ng):
+        for j in range(ng if s >= dependent else dependent):
             if not chosen[j]:
                 nrm = 0.0
                 for i in range(g):

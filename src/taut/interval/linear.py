@@ -125,15 +125,18 @@ def float_inverse(A):
             for j in range(n):
                 M[k, j], M[p, j] = M[p, j], M[k, j]
                 inv[k, j], inv[p, j] = inv[p, j], inv[k, j]
+        # columns j < k of M are already unit vectors: row k is zero there
         d = M[k, k]
-        for j in range(n):
+        for j in range(k, n):
             M[k, j] /= d
+        for j in range(n):
             inv[k, j] /= d
         for i in range(n):
             if i != k and M[i, k] != 0.0:
                 f = M[i, k]
-                for j in range(n):
+                for j in range(k, n):
                     M[i, j] -= f * M[k, j]
+                for j in range(n):
                     inv[i, j] -= f * inv[k, j]
     for i in range(n):
         for j in range(n):
