@@ -31,8 +31,9 @@ quadratic, no trigonometry):
   ``(b − a_p) × (a_i − b) = (b − a_p) × (a_i − a_p)``, which keeps one occurrence of ``b``).
 
 Redundant constraints for the filter (§3.1.3): ``‖n‖² = ‖q_2 − q_1‖²‖q_3 − q_1‖² −
-((q_2 − q_1)·(q_3 − q_1))²``, a constant, and ``n ⊥ q_2 − q_1, q_3 − q_1``; the moment equations about every other taut
-exit point (up to :data:`OTHER_POLES_UP_TO` taut cables), the slack-cable inequalities
+((q_2 − q_1)·(q_3 − q_1))²``, a constant, and ``n ⊥ q_2 − q_1, q_3 − q_1``; the moment
+equations about every other taut exit point (up to :data:`OTHER_POLES_UP_TO` taut
+cables), the slack-cable inequalities
 ``‖b_k − a_k‖² ≤ ρ_k²`` (Eq. 3.7), and the sphere bounds
 ``(ρ_j − d_qj)² ≤ ‖q − a_j‖² ≤ (ρ_j + d_qj)²`` of Eq. 3.6 on each reference point ``q``
 (the lower one for taut cables ``j``; on secondary points they cost more than they
