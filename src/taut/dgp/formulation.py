@@ -3,7 +3,7 @@
 
 Parameterisation (§2.3.5–2.3.6, "reference points"): the unknowns are the fixed-frame
 positions ``q_1, q_2, q_3`` of three non-collinear platform points, the normal
-``n = (q_2 − q_1) × (q_3 − q_1)`` of their plane (when a platform point lies off it), and
+``n = (q_2 − q_1) × (q_3 − q_1)`` of their plane (when a cable anchor lies off it), and
 the scaled tensions ``t_i = τ_i/ρ_i`` of the ``m`` taut cables — ``12 + m`` unknowns
 (``9 + m`` without the normal).  The reference points are
 the three platform points with the smallest secondary-point weights, taut anchors preferred
@@ -253,8 +253,8 @@ def _coordinates(refs: np.ndarray, body: np.ndarray) -> list[Fraction]:
 
 def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], normal: bool = True) -> Subproblem:
     """The square system of §2.3 for the taut cables ``taut`` (0-based), ``1 ≤ m ≤ 6``;
-    ``normal``: the plane normal of the reference points is an unknown when some platform
-    point lies off their plane (tracking leaves it out: Newton steps on a smaller system).
+    ``normal``: the plane normal of the reference points is an unknown when some cable
+    anchor lies off their plane (tracking leaves it out: Newton steps on a smaller system).
 
     Every constant derived from the robot's data (the ``β`` of secondary points, squared
     distances between reference points, exit-point differences, the load) is computed in
@@ -265,8 +265,8 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
     _, _, gp = load(robot)
     f, mext = _exact_load(robot)
     labels, refs = _reference_choice(robot, taut, gp)
-    normal = normal and any(_coordinates(refs, body)[2] != 0 for lab, body in
-                            [(k, r[k]) for k in range(n)] + [("G", gp)] if lab not in labels)
+    # off the plane, an anchor's length would be quartic (the load point enters linearly)
+    normal = normal and any(_coordinates(refs, r[k])[2] != 0 for k in range(n) if k not in labels)
     pose = 12 if normal else 9
     # six taut cables: the statics is square and only checks the sign of its solution
     unknowns = pose if m == 6 else pose + m
