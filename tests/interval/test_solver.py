@@ -81,6 +81,13 @@ def test_krawczyk_with_slopes_keeps_every_zero_and_proves_uniqueness_only_with_t
         assert krawczyk(system, lo, hi).status == "unique"
 
 
+def _below(a, b) -> bool:
+    """``a ≤ b`` for floats (infinite ones allowed: an unbounded operator says nothing) and
+    rationals."""
+    a, b = (Fraction(v) if np.isfinite(float(v)) else float(v) for v in (a, b))
+    return a <= b
+
+
 def _exact_krawczyk(C, y, fl, fh, Jl, Jh, lo, hi, sel=None):
     """``y_S − C f(y) + (I_S − C J)(X − y)`` over the interval data, in exact rationals
     (``S = sel``, all variables by default)."""
@@ -120,7 +127,7 @@ def test_midpoint_radius_krawczyk_encloses_the_exact_operator(case):
     fl, fh = evaluate(system.tape, y, y)
     kl, kh = _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)
     for i, (elo, ehi) in enumerate(_exact_krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)):
-        assert Fraction(kl[i]) <= elo and ehi <= Fraction(kh[i])
+        assert _below(kl[i], elo) and _below(ehi, kh[i])
 
 
 @settings(max_examples=100, deadline=None)
@@ -143,7 +150,7 @@ def test_parametric_krawczyk_encloses_the_exact_operator(case, data):
     fl, fh = (f[:h] for f in evaluate(system.tape, y, y))
     kl, kh = _krawczyk_rows(C, sel, y, fl, fh, Jl, Jh, lo, hi)
     for i, (elo, ehi) in enumerate(_exact_krawczyk(C, y, fl, fh, Jl, Jh, lo, hi, sel)):
-        assert Fraction(kl[i]) <= elo and ehi <= Fraction(kh[i])
+        assert _below(kl[i], elo) and _below(ehi, kh[i])
 
 
 def _tube(system, h, lo, hi, points=0, primary=None):
@@ -361,6 +368,28 @@ def test_compiled_loop_with_a_linear_filter_matches_the_python_filter():
     assert filt(b_lo, b_hi) and 2 / (1 + 0.75**2) * (1 - 1e-12) <= b_lo[2] and b_hi[2] <= 2 / 1.25 * (1 + 1e-12)
     with pytest.raises(ValueError):
         branch_and_prune(sys, lo, hi, filters=(lambda lo, hi: True,), method="numba")
+
+
+def test_filters_run_only_on_boxes_narrower_than_filter_width():
+    """The filter is skipped on boxes whose primary variables are wider than
+    ``filter_width``; the solutions stay the same in both loops."""
+    x, y, t = variables(3)
+    sys = compile_system(3, [x**2 + y**2 - 1, x - y, (1 + x**2) * t - 2])
+    filt = LinearFilter(compile_tape([1 + x**2, const(2.0)], [(-np.inf, np.inf)] * 2), 1)
+    lo, hi = np.array([-2.0, -2.0, 0.0]), np.array([2.0, 2.0, np.inf])
+    primary = np.array([True, True, False])
+    widths = []
+
+    def spy(blo, bhi):
+        widths.append(np.max((bhi - blo)[primary]))
+        return filt(blo, bhi)
+
+    key = lambda r: sorted(tuple(np.round(c.x, 10)) for c in r.solutions)  # noqa: E731
+    every = branch_and_prune(sys, lo, hi, primary=primary, filters=(filt,), method="python", certify_width=1.0)
+    narrow = {m: branch_and_prune(sys, lo, hi, primary=primary, filters=(spy if m == "python" else filt,), method=m,
+                                  certify_width=1.0, filter_width=0.5) for m in ("python", "numba")}
+    assert widths and max(widths) < 0.5
+    assert all(key(r) == key(every) and len(r.solutions) == 2 and not r.undecided for r in narrow.values())
 
 
 def test_float_inverse_flags_singular_matrices():

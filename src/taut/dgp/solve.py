@@ -147,9 +147,12 @@ def _solve_piece(job):
     if k >= len(pieces):  # fewer pieces hold solutions than were asked for
         return out, [], 0, 0
     lo, hi = pieces[k]
+    width = certify_width(len(taut))
+    # the statics filter on the boxes Krawczyk is tried on: on wider ones its interval Gauss
+    # elimination fails (95 % of CoGiRo's 2, 3, 6, 7 boxes) and it prunes nothing
     res = branch_and_prune(sp.system, lo, hi, primary=sp.primary, eps=eps, filters=(sp.statics,),
-                           certify_width=certify_width(len(taut)), passes=4, ratio=HC4_RATIO, domain=(sp.lo, sp.hi),
-                           bisection="smear", tube=sp.geometry)
+                           certify_width=width, passes=4, ratio=HC4_RATIO, domain=(sp.lo, sp.hi),
+                           bisection="smear", tube=sp.geometry, filter_width=width)
     idx = list(taut)
     undecided = len(res.undecided)
     certs = []

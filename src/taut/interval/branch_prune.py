@@ -131,6 +131,7 @@ def branch_and_prune(
     domain=None,
     bisection: str = "width",
     tube: int = 0,
+    filter_width: float = np.inf,
 ) -> BranchAndPruneResult:
     """All solutions of ``system`` in the box ``[lo, hi]`` (see module docstring).
 
@@ -144,7 +145,9 @@ def branch_and_prune(
     and Newton is started when Krawczyk proves uniqueness or the box is narrower than
     ``newton_width``;
     ``filters`` are extra contractors ``f(lo, hi) -> bool`` (in place, False = empty)
-    applied after HC4.  ``bisection``: ``"width"`` bisects the widest primary variable
+    applied after HC4 to the boxes whose primary variables are narrower than
+    ``filter_width`` (an interval linear solve fails on wide boxes: its cost buys nothing
+    there).  ``bisection``: ``"width"`` bisects the widest primary variable
     (§3.1.4), ``"smear"`` the primary variable of largest relative smear
     (:func:`_smear`), which follows the variables the equations are most sensitive to
     when they are scaled unevenly.  ``tube``: how many leading equations form an
@@ -175,7 +178,7 @@ def branch_and_prune(
     smear = bisection == "smear"
     if method != "python" and kernel_ok:
         return _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters,
-                                       passes, gain, ratio, domain, smear, tube)
+                                       passes, gain, ratio, domain, smear, tube, filter_width)
     lo0, hi0 = _domain(lo, hi, domain)
     primary = np.ones(lo0.size, bool) if primary is None else np.asarray(primary, bool)
     jac = (*system.jacobian.arrays[:7], system.rows, system.cols, system.n_equations)
@@ -190,7 +193,9 @@ def branch_and_prune(
             out.undecided.append((lo, hi))
             out.undecided.extend(stack)
             break
-        if not contract(system.tape, lo, hi) or not all(f(lo, hi) for f in filters):
+        if not contract(system.tape, lo, hi):
+            continue
+        if _primary_width(lo, hi, primary) < filter_width and not all(f(lo, hi) for f in filters):
             continue
         if any(c.covers(lo, hi) for c in out.solutions):
             continue
@@ -232,6 +237,15 @@ def branch_and_prune(
 
 
 @njit(cache=True, fastmath=False)
+def _primary_width(lo, hi, primary):
+    w = 0.0
+    for i in range(lo.size):
+        if primary[i] and hi[i] - lo[i] > w:
+            w = hi[i] - lo[i]
+    return w
+
+
+@njit(cache=True, fastmath=False)
 def _pad(lo, hi, lo0, hi0):
     """The box widened by 0.1 % of its widths (at least ~1e-10 relative), within the
     domain: Krawczyk cannot prove ``K(X) ⊂ int X`` on a box HC4 shrank to a few ulps."""
@@ -253,7 +267,7 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
            fop, fa, fb, fclo, fchi, fstart, fend, fm, fsign,
            stk_lo, stk_hi, sp, sol_x, sol_r, nsol, lo0, hi0, primary,
            eps, certify_width, newton_width, max_boxes, boxes, out, passes, gain, ratio, stats, smear,
-           tube_g, tube_vars, dependent, tube_points, krawczyk_points):
+           tube_g, tube_vars, dependent, tube_points, krawczyk_points, filter_width):
     """The loop of :func:`branch_and_prune` on the stack ``stk_lo[:sp], stk_hi[:sp]``
     until a box needs Python (a certification, an undecided box, the box budget, a full
     stack).  Returns ``(code, sp, boxes, unique)``; ``out`` rows hold the box, the
@@ -281,7 +295,8 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
                 break
             # the tensions it bounds reach the equilibrium equations at the next pass's HC4 (a
             # second HC4 right after it cost more than it pruned: 0.3 % of boxes)
-            if fm > 0 and not linear_filter_kernel(fop, fa, fb, fclo, fchi, fstart, fend, fm, fsign, lo, hi):
+            if fm > 0 and _primary_width(lo, hi, primary) < filter_width and not linear_filter_kernel(
+                    fop, fa, fb, fclo, fchi, fstart, fend, fm, fsign, lo, hi):
                 stats[1] += 1
                 dead = True
                 break
@@ -446,7 +461,7 @@ def same_solution(a: Certificate, b: Certificate) -> bool:
 
 
 def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters, passes, gain, ratio,
-                            domain, smear, tube):
+                            domain, smear, tube, filter_width):
     lo0, hi0 = _domain(lo, hi, domain)
     n = lo0.size
     primary = np.ones(n, bool) if primary is None else np.asarray(primary, bool)
@@ -481,7 +496,7 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
             *t.arrays, system.n_equations, *jt.arrays[:7], system.rows, system.cols, *ftape, fm, fsign,
             stk_lo, stk_hi, sp, sol_x, sol_r, len(out.solutions), lo0, hi0, primary,
             float(eps), float(certify_width), float(newton_width), int(max_boxes), boxes, buf, int(passes), float(gain), float(ratio), stats,
-            smear, int(tube), tube_vars, dependent, tube_points, krawczyk_points,
+            smear, int(tube), tube_vars, dependent, tube_points, krawczyk_points, float(filter_width),
         )
         if code == _DONE:
             break

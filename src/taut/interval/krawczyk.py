@@ -294,19 +294,19 @@ def tube_kernel(op, a, b, clo, chi, end, g, gvars, dependent, rows, cols, vl, vh
         x[gvars[k]] = y[k]
         if not np.isfinite(y[k]):
             return 0
-    Q = M.copy()
+    Q = M.T.copy()  # the columns as contiguous rows, with their squared norms
+    nrm = np.zeros(ng)
+    for j in range(ng):
+        for i in range(g):
+            nrm[j] += Q[j, i] * Q[j, i]
     chosen = np.zeros(ng, np.bool_)
     sel = np.empty(g, np.int64)
     first = 0.0
     for s in range(g):
         best, bn = -1, 0.0
         for j in range(ng if s >= dependent else dependent):
-            if not chosen[j]:
-                nrm = 0.0
-                for i in range(g):
-                    nrm += Q[i, j] * Q[i, j]
-                if nrm > bn:
-                    best, bn = j, nrm
+            if not chosen[j] and nrm[j] > bn:
+                best, bn = j, nrm[j]
         if s == 0:
             first = bn
         if best < 0 or not (bn > 1e-20 * first) or not np.isfinite(bn):
@@ -317,9 +317,12 @@ def tube_kernel(op, a, b, clo, chi, end, g, gvars, dependent, rows, cols, vl, vh
             if not chosen[j]:
                 d = 0.0
                 for i in range(g):
-                    d += Q[i, best] * Q[i, j]
+                    d += Q[best, i] * Q[j, i]
+                r = 0.0
                 for i in range(g):
-                    Q[i, j] -= d / bn * Q[i, best]
+                    Q[j, i] -= d / bn * Q[best, i]
+                    r += Q[j, i] * Q[j, i]
+                nrm[j] = r
     Ms = np.empty((g, g))
     for i in range(g):
         for s in range(g):
