@@ -19,7 +19,7 @@ unknown occurs once (the last term is dropped when ``β_4 = 0`` exactly, i.e. fo
 on the reference plane).  The thesis writes the cross product into every secondary point,
 which makes their lengths quartic; with ``n`` an unknown every equation is quadratic, so
 the slope enclosures of :mod:`taut.interval.slope` need one node instead of two, and HC4
-contracts ``n`` itself (CoGiRo, Table 4.4: 4.72 M boxes → 3.4 M).  Equations (all
+contracts ``n`` itself (CoGiRo, Table 4.4: 4.72 M boxes → 3.52 M).  Equations (all
 quadratic, no trigonometry):
 
 * 3 rigidity relations ``‖q_i − q_j‖² = d_ij²`` (Eq. 2.19/2.28);

@@ -17,9 +17,10 @@ when ``d ≤ 2p``:
   ``θ₁,₂ = ½ ∓ √3/6``, ∈ ``½ [J(Z₁) + J(Z₂)]``.
 
 The boxes ``Z`` have half the radius of ``X`` on average, so the slope enclosure is about
-half as wide as ``J(X)`` — the DGP's equations (degree ≤ 4) are curved on the scale of
-the platform, and the Jacobian's width is what keeps the parametric Krawczyk operator
-from proving boxes beside the pose manifold empty.
+half as wide as ``J(X)`` — the DGP's equations (quadratic with the plane normal as an
+unknown, of degree ≤ 4 without it) are curved on the scale of the platform, and the
+Jacobian's width is what keeps the parametric Krawczyk operator from proving boxes
+beside the pose manifold empty.
 """
 
 from __future__ import annotations
