@@ -43,9 +43,10 @@ spheres around the taut exit points, ``‖q − a_j‖ ≤ ρ_j + d_jq``, and ea
 ``[0, ∞)`` (§3.1.1: no upper bound is needed, HC4 and the bisection rule of §3.1.4 bound
 them).
 
-Six taut cables (§3.1.3, last paragraph): the tensions are not unknowns — the 9 (12)
-equations (rigidity, lengths, normal) fix the pose, the statics is square, and its interval solution only
-discards boxes where a tension must be negative; a solution's tensions are then solved for.
+Six taut cables (§3.1.3, last paragraph): the tensions are not unknowns — the 12 (or 9)
+equations of rigidity, lengths and normal fix the pose, the statics is square, and its
+interval solution only discards boxes where a tension must be negative; a solution's
+tensions are then solved for.
 """
 
 from __future__ import annotations
@@ -107,7 +108,7 @@ class Subproblem:
     system: System
     lo: np.ndarray
     hi: np.ndarray
-    primary: np.ndarray  #: pose variables (bisected first, §3.1.4)
+    primary: np.ndarray  #: the reference points (bisected first, §3.1.4; the normal is not)
     body_refs: np.ndarray  #: (3, 3) body-frame reference points
     statics: StaticsFilter
     pose_unknowns: int = 9  #: the reference points, then the normal when it is an unknown
@@ -130,8 +131,8 @@ class Subproblem:
 
     @property
     def tension_unknowns(self) -> bool:
-        """False for six taut cables: the unknowns are the reference points alone and the
-        tensions follow from the (square) statics (§3.1.3)."""
+        """False for six taut cables: the unknowns are the pose's alone and the tensions
+        follow from the (square) statics (§3.1.3)."""
         return self.system.n > self.pose_unknowns
 
     @property
@@ -139,10 +140,10 @@ class Subproblem:
         """How many leading equations involve the pose alone — the 3 rigidity relations, the
         ``m`` lengths and the 3 normal relations, a ``(6 − m)``-dimensional manifold of poses
         that branch-and-prune contracts boxes onto (its ``tube``; the normal, not bisected,
-        is solved for) for ``3 ≤ m ≤ 5``.  0 otherwise: six taut
-        cables make the geometry square, and on the manifolds of dimension ≥ 4 of one or
-        two cables the contraction reshapes boxes without emptying them (CoGiRo's cables
-        3 and 7: 929 boxes without, 142 155 with it)."""
+        is solved for) for ``3 ≤ m ≤ 5``.  0 otherwise: six taut cables make the geometry
+        square, and on the manifolds of dimension ≥ 4 of one or two cables the
+        contraction reshapes boxes without emptying them (CoGiRo's cables 3 and 7: 929
+        boxes without, 142 155 with it)."""
         return 3 + len(self.taut) + (self.pose_unknowns - 9) if 3 <= len(self.taut) <= 5 else 0
 
     def tensions(self, x: np.ndarray, lengths: np.ndarray, n: int) -> np.ndarray:

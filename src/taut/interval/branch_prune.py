@@ -154,7 +154,8 @@ def branch_and_prune(
     under-determined subsystem (fewer equations than the variables they involve: the
     DGP's rigidity and cable lengths); every box is then contracted onto its solution
     manifold by the parametric Krawczyk operator (:func:`taut.interval.krawczyk.tube_kernel`)
-    after HC4 and the filters.
+    after HC4 and the filters; it solves for the non-primary variables of those equations
+    (at most ``tube`` of them) and for the best conditioned primary ones.
 
     ``method="numba"`` runs the box loop in a compiled kernel (:func:`_drive`) and returns
     to Python only to certify a solution; it needs every filter to be a

@@ -269,10 +269,11 @@ def tube_kernel(op, a, b, clo, chi, end, g, gvars, dependent, rows, cols, vl, vh
     Krawczyk operator (:func:`_krawczyk_rows`) solves for the ``g`` of them that column-
     pivoted Gram–Schmidt on the midpoint Jacobian finds best conditioned, the other
     ``k − g`` are its parameters.  The first ``dependent ≤ g`` of ``gvars`` are always
-    solved for (an auxiliary unknown that is a function of the others, such as the DGP's
-    platform normal, makes a poor parameter: CoGiRo's cables 2, 3, 6, 7 need 107 069 boxes
-    so, 169 675 when the pivoting may pick it).  Where HC4 leaves a box as wide as the piece of the
-    manifold it holds in every direction, this one shrinks it to that piece's hull
+    solved for: an auxiliary unknown that is a function of the others, such as the DGP's
+    plane normal, makes a poor parameter (CoGiRo's cables 2, 3, 6, 7 take 107 069 boxes
+    this way, 169 675 when the pivoting may make it one).  Where HC4 leaves a box as wide
+    as the piece of the manifold it holds in every direction, this one shrinks it to that
+    piece's hull
     once the equations are nearly linear over the box.  ``[vl, vh]``: the Jacobian's
     nonzero entries (at ``rows, cols``) over the box, or their slopes about its midpoint
     (:mod:`taut.interval.slope`).  Returns 2 when the box holds no
