@@ -266,8 +266,9 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
     _, _, gp = load(robot)
     f, mext = _exact_load(robot)
     labels, refs = _reference_choice(robot, taut, gp)
+    betas = {lab: _coordinates(refs, body) for lab, body in [*enumerate(r), ("G", gp)] if lab not in labels}
     # off the plane, an anchor's length would be quartic (the load point enters linearly)
-    normal = normal and any(_coordinates(refs, r[k])[2] != 0 for k in range(n) if k not in labels)
+    normal = normal and any(betas[k][2] != 0 for k in range(n) if k in betas)
     pose = 12 if normal else 9
     # six taut cables: the statics is square and only checks the sign of its solution
     unknowns = pose if m == 6 else pose + m
@@ -278,13 +279,14 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
     e2 = [q[2][k] - q[0][k] for k in range(3)]
     n12 = v[9:12] if normal else _cross(e1, e2)
 
-    def point(label, body) -> list[Expr]:
+    def point(label) -> list[Expr]:
         """A secondary point (Eqs. 2.23–2.24) as ``c₁ q₁ + c₂ q₂ + c₃ q₃`` with affine weights
         ``c₁ = 1 − β₂ − β₃``, ``c₂ = β₂``, ``c₃ = β₃`` — each unknown occurs once, so its
-        interval evaluation is exact — plus ``β₄ (q₂ − q₁)×(q₃ − q₁)`` off the reference plane."""
+        interval evaluation is exact — plus ``β₄ n`` off the reference plane (``n`` the normal
+        unknown, or the cross product ``(q₂ − q₁)×(q₃ − q₁)``)."""
         if label in labels:
             return q[labels.index(label)]
-        beta = _coordinates(refs, body)
+        beta = betas[label]
         weights = (1 - beta[0] - beta[1], beta[0], beta[1])
         out = []
         for k in range(3):
@@ -294,8 +296,8 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
             out.append(sum(terms[1:], terms[0]) if terms else const(0.0))
         return out
 
-    b = {i: point(i, r[i]) for i in range(n)}
-    g = point("G", gp)
+    b = {i: point(i) for i in range(n)}
+    g = point("G")
 
     def dist2(p, c) -> Expr:
         return sum(((p[k] - float(c[k])) ** 2 for k in range(3)), const(0.0))

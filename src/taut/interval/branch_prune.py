@@ -206,7 +206,7 @@ def branch_and_prune(
                            system.cols, vl, vh, lo, hi) == 2:
                 continue
         width = hi - lo
-        if np.max(np.where(primary, width, 0.0)) < certify_width and np.all(np.isfinite(width)):
+        if _primary_width(lo, hi, primary) < certify_width and np.all(np.isfinite(width)):
             klo, khi = _pad(lo, hi, lo0, hi0)
             res = krawczyk(system, klo, khi, krawczyk_points)
             if res.status == "empty":

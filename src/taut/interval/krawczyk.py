@@ -273,11 +273,10 @@ def tube_kernel(op, a, b, clo, chi, end, g, gvars, dependent, rows, cols, vl, vh
     plane normal, makes a poor parameter (CoGiRo's cables 2, 3, 6, 7 take 107 069 boxes
     this way, 169 675 when the pivoting may make it one).  Where HC4 leaves a box as wide
     as the piece of the manifold it holds in every direction, this one shrinks it to that
-    piece's hull
-    once the equations are nearly linear over the box.  ``[vl, vh]``: the Jacobian's
-    nonzero entries (at ``rows, cols``) over the box, or their slopes about its midpoint
-    (:mod:`taut.interval.slope`).  Returns 2 when the box holds no
-    point of the manifold, 1 when it shrank, 0 otherwise."""
+    piece's hull once the equations are nearly linear over the box.  ``[vl, vh]``: the
+    Jacobian's nonzero entries (at ``rows, cols``) over the box, or their slopes about its
+    midpoint (:mod:`taut.interval.slope`).  Returns 2 when the box holds no point of the
+    manifold, 1 when it shrank, 0 otherwise."""
     n, ng = lo.size, gvars.size
     pos = np.full(n, -1)
     for k in range(ng):
