@@ -5,12 +5,11 @@ from-scratch IK per point (the shortest taut admissible state of every cable,
 the point's chart is the shortest routing.  Targets (issue 5): atlas <= 2 s, IK >= 100 000
 queries/s."""
 
-from _common import best_of  # first: it pins the thread pools to one core
-
 import argparse
 
 import numpy as np
 import shapely
+from _common import best_of  # first: it pins the thread pools to one core
 
 from taut.atlas import build_atlas, direct_ik
 from taut.model import example
@@ -26,8 +25,10 @@ def main():
     start = robot.reference.poses["initial"]
     build_atlas(robot, start)  # compile / warm caches
     sec_build, atlas = best_of(lambda: build_atlas(robot, start), repeat=args.repeat)
-    print(f"T-shaped atlas: {len(atlas.charts)} charts, {atlas.n_edges} adjacent pairs, "
-          f"reachable area {atlas.reachable_area().area:.6f} m² built in {sec_build:.3f} s (target <= 2 s)")
+    print(
+        f"T-shaped atlas: {len(atlas.charts)} charts, {atlas.n_edges} adjacent pairs, "
+        f"reachable area {atlas.reachable_area().area:.6f} m² built in {sec_build:.3f} s (target <= 2 s)"
+    )
     reach = atlas.reachable_area()
     rng = np.random.default_rng(0)
     Q = rng.uniform(*np.array(atlas.space.bounds).reshape(2, 2), size=(4 * args.queries, 2))
@@ -47,8 +48,10 @@ def main():
     agree = np.isclose(ref, res.lengths[: len(sub)], atol=1e-9).all(axis=1).mean()
     naive_rate = len(sub) / sec_naive
     print(f"direct IK: {rate:,.0f} queries per second (target >= 100,000), all found: {bool(res.found.all())}")
-    print(f"naive from-scratch IK: {naive_rate:,.0f} per second; ratio {rate / naive_rate:,.0f}x "
-          f"(same lengths at {100 * agree:.0f} % of the points: elsewhere the first chart is another routing)")
+    print(
+        f"naive from-scratch IK: {naive_rate:,.0f} per second; ratio {rate / naive_rate:,.0f}x "
+        f"(same lengths at {100 * agree:.0f} % of the points: elsewhere the first chart is another routing)"
+    )
 
 
 if __name__ == "__main__":

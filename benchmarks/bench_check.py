@@ -9,12 +9,11 @@ Target: >= 20 000 poses/s on one core (first JIT compile excluded).
     python benchmarks/bench_check.py [--poses 200000] [--loop 300]
 """
 
-from _common import best_of  # first: it pins the thread pools to one core
-
 import argparse
 import time
 
 import numpy as np
+from _common import best_of  # first: it pins the thread pools to one core
 from scipy.optimize import linprog
 
 import taut
@@ -51,8 +50,15 @@ def naive_check(robot, model, pose):
     W = -J[:8, :6].T
     Wn = W / np.linalg.norm(W, axis=0)
     n = Wn.shape[1]
-    res = linprog(np.r_[np.zeros(n), -1.0], A_ub=np.c_[-np.eye(n), np.ones(n)], b_ub=np.zeros(n),
-                  A_eq=np.c_[Wn, np.zeros(6)], b_eq=np.zeros(6), bounds=[(0, 1)] * n + [(None, None)], method="highs")
+    res = linprog(
+        np.r_[np.zeros(n), -1.0],
+        A_ub=np.c_[-np.eye(n), np.ones(n)],
+        b_ub=np.zeros(n),
+        A_eq=np.c_[Wn, np.zeros(6)],
+        b_eq=np.zeros(6),
+        bounds=[(0, 1)] * n + [(None, None)],
+        method="highs",
+    )
     closure = res.status == 0 and -res.fun > 1e-9 and np.linalg.matrix_rank(W) == 6
     return clear <= 0, s[-1] <= 1e-8 * s[0], not closure, clear.min()
 
@@ -67,11 +73,14 @@ def main():
     model = capsule_model(robot)
     rng = np.random.default_rng(0)
     N = args.poses
-    poses = np.column_stack([rng.uniform(3, 7, (N, 2)), rng.uniform(1.5, 6, N), rng.uniform(-0.4, 0.4, (N, 3)),
-                             rng.uniform(0.5, 4.4, N)])
+    poses = np.column_stack(
+        [rng.uniform(3, 7, (N, 2)), rng.uniform(1.5, 6, N), rng.uniform(-0.4, 0.4, (N, 3)), rng.uniform(0.5, 4.4, N)]
+    )
     t = time.perf_counter()
     check_poses(robot, poses[:10])
-    print(f"robot: {robot.name}; {len(model.pairs)} capsule pairs; first call (compile or cache load): {time.perf_counter() - t:.2f} s")
+    print(
+        f"robot: {robot.name}; {len(model.pairs)} capsule pairs; first call (compile or cache load): {time.perf_counter() - t:.2f} s"
+    )
 
     dt, res = best_of(lambda: check_poses(robot, poses, model=model))
     t = time.perf_counter()
@@ -80,7 +89,9 @@ def main():
 
     k = args.loop
     diff = sum(
-        (not np.array_equal(c, res.proximity.colliding[i])) or j != res.jacobian_singular[i] or f != res.force_closure_singular[i]
+        (not np.array_equal(c, res.proximity.colliding[i]))
+        or j != res.jacobian_singular[i]
+        or f != res.force_closure_singular[i]
         for i, (c, j, f, _) in enumerate(loop)
     )
     err = max(abs(m - res.proximity.min_clearance[i]) for i, (*_, m) in enumerate(loop))
@@ -88,8 +99,10 @@ def main():
     print(f"  check_poses   : {N / dt:>10,.0f} poses/s  (target >= 20,000)")
     print(f"  per-pose loop : {1 / dt_l:>10,.0f} poses/s  ({k} poses, extrapolated)")
     print(f"  ratio         : {dt_l * N / dt:,.0f}x")
-    print(f"  colliding {int(res.collides.sum())}, force-closure singular {int(res.force_closure_singular.sum())}, "
-          f"Jacobian singular {int(res.jacobian_singular.sum())} of {N}")
+    print(
+        f"  colliding {int(res.collides.sum())}, force-closure singular {int(res.force_closure_singular.sum())}, "
+        f"Jacobian singular {int(res.jacobian_singular.sum())} of {N}"
+    )
     print(f"  poses where the verdicts differ: {diff}; max |clearance difference| = {err:.1e}")
     if diff or err > 1e-9:
         raise SystemExit(1)

@@ -15,14 +15,13 @@ non-negative tensions.
                                    [--peer] [--peer-mptype double|adaptive]
 """
 
-from _common import best_of  # first: it pins the thread pools to one core
-
 import argparse
 import time
 from collections import Counter
 from fractions import Fraction
 
 import numpy as np
+from _common import best_of  # first: it pins the thread pools to one core
 
 from taut.dgp import solve_dgp
 from taut.dgp.formulation import _reference_choice, load
@@ -124,8 +123,15 @@ def matching(robot, lengths, taut_solutions, endpoints):
     _, _, gp = load(robot)
     _, refs = _reference_choice(robot, ALL_TAUT, gp)
     idx = list(ALL_TAUT)
-    xs = [np.concatenate([(s.position + refs @ rotation_matrix(s.orientation, robot.orientation).T).ravel(),
-                          s.tensions[idx] / lengths[idx]]) for s in taut_solutions]
+    xs = [
+        np.concatenate(
+            [
+                (s.position + refs @ rotation_matrix(s.orientation, robot.orientation).T).ravel(),
+                s.tensions[idx] / lengths[idx],
+            ]
+        )
+        for s in taut_solutions
+    ]
     return sum(any(np.abs(e - x).max() <= MATCH_TOL for e in endpoints) for x in xs)
 
 
@@ -133,15 +139,21 @@ def peer(robot, repeat, mptype):
     try:
         import bertini
     except ImportError as e:
-        print("bertini2: not installed (pip install bertini2)" if e.name == "bertini" else f"bertini2: not available ({e})")
+        print(
+            "bertini2: not installed (pip install bertini2)"
+            if e.name == "bertini"
+            else f"bertini2: not available ({e})"
+        )
         return
     lengths = np.asarray(robot.reference.lengths, float)
     t_taut, (sols, _, _) = best_of(lambda: _solve_subset((robot, lengths, ALL_TAUT, EPS)), repeat)
     t_peer, endpoints, n_finite, n_paths = run_bertini(bertini, robot, lengths, mptype)
-    print(f"bertini2: {len(endpoints)} real solutions with non-negative tensions (of {n_finite} finite endpoints; "
-          f"{matching(robot, lengths, sols, endpoints)} of taut's {len(sols)} among them) in {t_peer:.1f} s "
-          f"(bertini2 {bertini.__version__}, {n_paths} paths, {mptype} precision, 1 thread)   "
-          f"taut 3-taut sub-problem: {len(sols)} in {t_taut:.2f} s   ratio bertini2/taut: {t_peer / t_taut:.1f}x")
+    print(
+        f"bertini2: {len(endpoints)} real solutions with non-negative tensions (of {n_finite} finite endpoints; "
+        f"{matching(robot, lengths, sols, endpoints)} of taut's {len(sols)} among them) in {t_peer:.1f} s "
+        f"(bertini2 {bertini.__version__}, {n_paths} paths, {mptype} precision, 1 thread)   "
+        f"taut 3-taut sub-problem: {len(sols)} in {t_taut:.2f} s   ratio bertini2/taut: {t_peer / t_taut:.1f}x"
+    )
 
 
 def main():
@@ -151,8 +163,12 @@ def main():
     ap.add_argument("--repeat", type=int, default=1)
     ap.add_argument("--workers", type=int, default=1)
     ap.add_argument("--peer", action="store_true", help="also time bertini2 on the 3-taut sub-problem (minutes)")
-    ap.add_argument("--peer-mptype", choices=("double", "adaptive"), default="double",
-                    help="bertini2's precision model (adaptive: a few times slower)")
+    ap.add_argument(
+        "--peer-mptype",
+        choices=("double", "adaptive"),
+        default="double",
+        help="bertini2's precision model (adaptive: a few times slower)",
+    )
     ns = ap.parse_args()
     robot = load_robot(ns.robot)
     table, source_seconds, printed = SOURCES[ns.robot]
@@ -162,16 +178,22 @@ def main():
         t, res = best_of(lambda: solve_dgp(robot, max_taut=ns.max_taut, executor=ex), ns.repeat)
     stable = sum(s.stable for s in res.solutions)
     per_m = dict(sorted(Counter(len(s.taut) for s in res.solutions).items(), reverse=True))
-    print(f"{table}: {len(res.solutions)} solutions ({stable} stable), {res.subproblems} sub-problems, "
-          f"{res.boxes} boxes, {res.undecided} undecided")
+    print(
+        f"{table}: {len(res.solutions)} solutions ({stable} stable), {res.subproblems} sub-problems, "
+        f"{res.boxes} boxes, {res.undecided} undecided"
+    )
     print(f"solutions per number of taut cables: {per_m}   printed: {printed}")
     top = min(robot.n_cables, 6)
     if ns.max_taut is not None and ns.max_taut < top:
         # the source's time covers every sub-problem: a partial run has no comparable ratio
-        print(f"time: {t:.2f} s for sub-problems of at most {ns.max_taut} taut cables (partial run, no ratio to the source)")
+        print(
+            f"time: {t:.2f} s for sub-problems of at most {ns.max_taut} taut cables (partial run, no ratio to the source)"
+        )
     else:
-        print(f"time: {t:.2f} s on {ns.workers} worker(s)   source (ALIAS, 2015, one core): {source_seconds:.0f} s   "
-              f"ratio source/taut: {source_seconds / t:.2f}x")
+        print(
+            f"time: {t:.2f} s on {ns.workers} worker(s)   source (ALIAS, 2015, one core): {source_seconds:.0f} s   "
+            f"ratio source/taut: {source_seconds / t:.2f}x"
+        )
     if ns.peer:
         if ns.robot != "suspended-3cable":
             print("bertini2: the peer runs on Table 4.3 only (--robot suspended-3cable)")

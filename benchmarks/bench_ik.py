@@ -8,12 +8,11 @@ Target: >= 1 000 000 poses/s on one core (first JIT compile excluded).
     python benchmarks/bench_ik.py [--poses 1000000] [--loop 5000]
 """
 
-from _common import best_of  # first: it pins the thread pools to one core
-
 import argparse
 import time
 
 import numpy as np
+from _common import best_of  # first: it pins the thread pools to one core
 
 import taut
 from taut.kinematics import inverse_kinematics
@@ -32,7 +31,6 @@ def naive_structure_matrix(robot, pose):
         u = v / np.linalg.norm(v)
         cols.append(np.concatenate([u, np.cross(arm, u)]))
     return np.array(cols).T
-
 
 
 def main():
@@ -62,7 +60,9 @@ def main():
     print(f"  inverse_kinematics : {n / dt_n:>12,.0f} poses/s  (lengths, directions, anchors, W)")
     print(f"  per-pose loop      : {1 / dt_l:>12,.0f} poses/s  ({args.loop} poses, extrapolated)")
     print(f"  ratio batch / loop : {dt_l * n / dt_b:,.0f}x;  batch / inverse_kinematics: {dt_n / dt_b:.1f}x")
-    print(f"  max |W_batch - W_inverse_kinematics| = {err:.1e}, vs loop {err_loop:.1e}; all poses valid: {bool(ok.all())}")
+    print(
+        f"  max |W_batch - W_inverse_kinematics| = {err:.1e}, vs loop {err_loop:.1e}; all poses valid: {bool(ok.all())}"
+    )
     if err > 1e-12 or err_loop > 1e-12:
         raise SystemExit(1)
 

@@ -19,13 +19,12 @@ each path then checked by ``verify_path`` every ``--resolution`` rad.
                                     [--no-peers] [--resolution 0.01] [--ompl-time 30]
 """
 
-from _common import best_of  # first: it pins the thread pools to one core
-
 import argparse
 import gc
 import time
 
 import numpy as np
+from _common import best_of  # first: it pins the thread pools to one core
 
 import taut
 from taut.planning import Atlas, plan_path
@@ -101,8 +100,7 @@ def ompl_rrtconnect(robot, start, goal, step, budget, trials, seed=1):
         solved = bool(ss.solve(budget))
         dt = time.perf_counter() - t
         exact = ss.haveExactSolutionPath()
-        poses = (np.array([pose(s[0], s[1]) for s in ss.getSolutionPath().getStates()])
-                 if solved else None)
+        poses = np.array([pose(s[0], s[1]) for s in ss.getSolutionPath().getStates()]) if solved else None
         check = verify_path(robot, densify(poses, step), subdivide=1) if exact else None
         runs.append((solved, exact, dt, counter[0], poses, check))
         del ss, si, a, b
@@ -115,10 +113,15 @@ def main():
     ap.add_argument("--radius", type=float, default=0.2)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--max-charts", type=int, default=20000)
-    ap.add_argument("--peers", action=argparse.BooleanOptionalAction, default=True,
-                    help="also run the straight-line check and OMPL RRTConnect (if installed)")
-    ap.add_argument("--resolution", type=float, default=0.01,
-                    help="rad between checked poses on straight lines and OMPL motions")
+    ap.add_argument(
+        "--peers",
+        action=argparse.BooleanOptionalAction,
+        default=True,
+        help="also run the straight-line check and OMPL RRTConnect (if installed)",
+    )
+    ap.add_argument(
+        "--resolution", type=float, default=0.01, help="rad between checked poses on straight lines and OMPL motions"
+    )
     ap.add_argument("--ompl-time", type=float, default=30.0, help="OMPL time budget per trial, s")
     ns = ap.parse_args()
     robot = taut.load_robot("robocrane")
@@ -127,11 +130,13 @@ def main():
     mf = M.implicit()
     for (a, b), paper_s in PAPER_S.items():
         y1, y2 = M.lift(P[a]), M.lift(P[b])
-        t_astar, res = best_of(lambda: plan_path(mf, y1, y2, ns.radius, metric=M.pose_metric,
-                                                 max_charts=ns.max_charts), ns.repeat)
+        t_astar, res = best_of(
+            lambda: plan_path(mf, y1, y2, ns.radius, metric=M.pose_metric, max_charts=ns.max_charts),  # noqa: B023
+            ns.repeat,
+        )
         check = verify_path(robot, M.pose(res.path), subdivide=10) if res.found else None
 
-        def breadth_first():
+        def breadth_first(y1=y1, y2=y2):
             atlas = Atlas(mf, y1, ns.radius, metric=M.pose_metric)
             i = 0
             while i < len(atlas.charts) and len(atlas.charts) < ns.max_charts:
@@ -143,32 +148,43 @@ def main():
 
         t_full, (atlas, done) = best_of(breadth_first, 1)
         print(f"robocrane {a} -> {b}, chart radius {ns.radius}")
-        print(f"  A*: found {res.found}, {res.charts} charts ({res.expanded} closed), path length "
-              f"{res.length:.3f} rad, {t_astar:.3f} s")
+        print(
+            f"  A*: found {res.found}, {res.charts} charts ({res.expanded} closed), path length "
+            f"{res.length:.3f} rad, {t_astar:.3f} s"
+        )
         if check is not None:
-            print(f"  independent check at {check.poses.shape[0]} interpolated poses: all feasible "
-                  f"{check.all_feasible}")
-        print(f"  breadth-first atlas: reached {b} {done}, {len(atlas.charts)} charts, {t_full:.3f} s "
-              f"(A* speed-up {t_full / t_astar:.1f}x)")
+            print(
+                f"  independent check at {check.poses.shape[0]} interpolated poses: all feasible {check.all_feasible}"
+            )
+        print(
+            f"  breadth-first atlas: reached {b} {done}, {len(atlas.charts)} charts, {t_full:.3f} s "
+            f"(A* speed-up {t_full / t_astar:.1f}x)"
+        )
         print(f"  paper (C): {paper_s:.0f} s; ratio paper / taut A*: {paper_s / t_astar:.1f}x")
         if not ns.peers:
             continue
         t_line, line = straight_line(robot, P[a], P[b], ns.resolution)
         bad = int((~line.feasible).sum())
-        print(f"  straight line: feasible {line.all_feasible} ({bad} of {line.poses.shape[0]} points "
-              f"infeasible), {t_line:.3f} s")
+        print(
+            f"  straight line: feasible {line.all_feasible} ({bad} of {line.poses.shape[0]} points "
+            f"infeasible), {t_line:.3f} s"
+        )
         runs = ompl_rrtconnect(robot, P[a], P[b], ns.resolution, ns.ompl_time, ns.repeat)
         if runs is None:
             print("  OMPL not installed (optional peer: pip install ompl)")
             continue
-        for trial, (solved, exact, dt, calls, poses, ck) in enumerate(runs, 1):
-            line = (f"  OMPL RRTConnect (trial {trial}, budget {ns.ompl_time:.0f} s): solved {exact}, "
-                    f"{dt:.3f} s, {calls} validity checks")
+        for trial, (_solved, exact, dt, calls, poses, ck) in enumerate(runs, 1):
+            line = (
+                f"  OMPL RRTConnect (trial {trial}, budget {ns.ompl_time:.0f} s): solved {exact}, "
+                f"{dt:.3f} s, {calls} validity checks"
+            )
             if ck is not None:
                 length = np.linalg.norm(np.diff(poses[:, FREE], axis=0), axis=1).sum()
-                line += (f", {poses.shape[0]} waypoints, length {length:.3f} rad; check at "
-                         f"{ck.poses.shape[0]} poses: {int(ck.feasible.sum())} feasible "
-                         f"(path valid {ck.all_feasible}); time taut A* / OMPL: {t_astar / dt:.1f}x")
+                line += (
+                    f", {poses.shape[0]} waypoints, length {length:.3f} rad; check at "
+                    f"{ck.poses.shape[0]} poses: {int(ck.feasible.sum())} feasible "
+                    f"(path valid {ck.all_feasible}); time taut A* / OMPL: {t_astar / dt:.1f}x"
+                )
             print(line)
 
 

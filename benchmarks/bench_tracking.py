@@ -7,12 +7,11 @@ calls, one per control cycle as a real-time loop would make them.
     python benchmarks/bench_tracking.py [--repeat R]
 """
 
-from _common import best_of  # first: it pins the thread pools to one core
-
 import argparse
 import time
 
 import numpy as np
+from _common import best_of  # first: it pins the thread pools to one core
 
 from taut.dgp.formulation import build_subproblem
 from taut.dgp.solve import DGPSolution
@@ -34,7 +33,9 @@ def main():
     L = np.array(robot.reference.lengths)
     sp = build_subproblem(robot, L, (0, 1, 2))
     pose, ten = [2.7505, 3.9798, 5.5061, 3.0064, 0.3417, 0.1089], [0.526, 0.512, 0.581]
-    cert = certify(sp.system, sp.unknowns(pose[:3], rotation_matrix(np.array(pose[3:]), "xyz-fixed"), np.array(ten) / L))
+    cert = certify(
+        sp.system, sp.unknowns(pose[:3], rotation_matrix(np.array(pose[3:]), "xyz-fixed"), np.array(ten) / L)
+    )
     p, ang, _ = sp.pose(cert.x, "xyz-fixed")
     start = DGPSolution((1, 2, 3), p, ang, sp.tensions(cert.x, L, 3), True, cert.width, cert.radius)
     half = [L + k * 0.002 * np.array([1.0, -1.0, 0.5]) for k in range(1, STEPS // 2 + 1)]
@@ -43,16 +44,20 @@ def main():
     t, sols = best_of(lambda: track_path(robot, start, path), ns.repeat)
     ms = 1e3 * t / len(path)
     print(f"tracking: {len(path)} updates, back to start within {np.max(np.abs(sols[-1].position - p)):.1e} m")
-    print(f"time per update: {ms:.3f} ms   source (real-time DGP, 2015): {SOURCE_MS:.0f} ms   "
-          f"ratio source/taut: {SOURCE_MS / ms:.1f}x")
+    print(
+        f"time per update: {ms:.3f} ms   source (real-time DGP, 2015): {SOURCE_MS:.0f} ms   "
+        f"ratio source/taut: {SOURCE_MS / ms:.1f}x"
+    )
     calls, sol = [], start
     for lengths in path:
         t0 = time.perf_counter()
         sol = track(robot, sol, lengths)
         calls.append(time.perf_counter() - t0)
     med, worst = 1e3 * np.median(calls), 1e3 * max(calls)
-    print(f"single track() calls: median {med:.3f} ms, slowest {worst:.3f} ms   source worst: {SOURCE_WORST_MS:.0f} ms   "
-          f"ratio source/taut (worst): {SOURCE_WORST_MS / worst:.1f}x")
+    print(
+        f"single track() calls: median {med:.3f} ms, slowest {worst:.3f} ms   source worst: {SOURCE_WORST_MS:.0f} ms   "
+        f"ratio source/taut (worst): {SOURCE_WORST_MS / worst:.1f}x"
+    )
 
 
 if __name__ == "__main__":

@@ -10,12 +10,11 @@ with the number of those poses where the verdicts differ (must be 0).
     python benchmarks/bench_workspace.py [--resolution 60] [--check-resolution 12]
 """
 
-from _common import best_of  # first: it pins the thread pools to one core
-
 import argparse
 import time
 
 import numpy as np
+from _common import best_of  # first: it pins the thread pools to one core
 from scipy.optimize import linprog
 
 import taut
@@ -63,7 +62,9 @@ def main():
     dt_k, _ = best_of(lambda: wrench_feasible(W, tmin, tmax, box, w))
     dt_ik, _ = best_of(lambda: batch_structure_matrices(robot, poses))
     dt_w, _ = best_of(lambda: external_wrench(robot, poses))
-    print(f"  parts: facet test {N / dt_k:,.0f} poses/s, batch IK {N / dt_ik:,.0f} poses/s, external wrench {N / dt_w:,.0f} poses/s")
+    print(
+        f"  parts: facet test {N / dt_k:,.0f} poses/s, batch IK {N / dt_ik:,.0f} poses/s, external wrench {N / dt_w:,.0f} poses/s"
+    )
 
     check = evaluate_workspace(robot, "wrench-feasible", resolution=args.check_resolution)
     Ws = structure_matrix(robot, check.poses)
@@ -75,8 +76,10 @@ def main():
     per_pose_lp = dt_lp / len(Ws)
     differ = int(np.count_nonzero(lp != check.inside))
     print(f"\nbaseline: linprog(method='highs') over the {len(vertices)} box vertices (stop at the first infeasible)")
-    print(f"  every pose of the {args.check_resolution}^3 grid: {len(Ws)} poses ({int(lp.sum())} feasible) "
-          f"in {dt_lp:.2f} s = {1 / per_pose_lp:,.1f} poses/s")
+    print(
+        f"  every pose of the {args.check_resolution}^3 grid: {len(Ws)} poses ({int(lp.sum())} feasible) "
+        f"in {dt_lp:.2f} s = {1 / per_pose_lp:,.1f} poses/s"
+    )
     print(f"  extrapolated to the {args.resolution}^3 grid: {per_pose_lp * N:,.0f} s vs {dt:.3f} s")
     print(f"  speed-up of evaluate_workspace over the LP loop: {per_pose_lp * rate:,.0f}x")
     print(f"  poses where the verdicts differ: {differ} of {len(Ws)} (must be 0)")

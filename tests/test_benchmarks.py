@@ -22,8 +22,12 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
         ("bench_atlas.py", ["--queries", "2000", "--naive", "10", "--repeat", "1"], "same lengths at 100 %"),
         ("bench_tracking.py", ["--repeat", "1"], "back to start within"),
         pytest.param("bench_dgp.py", [], "6 solutions (1 stable)", marks=pytest.mark.slow),
-        pytest.param("bench_dgp.py", ["--robot", "teaching-prototype", "--workers", "2"], "34 solutions (5 stable)",
-                     marks=pytest.mark.slow),
+        pytest.param(
+            "bench_dgp.py",
+            ["--robot", "teaching-prototype", "--workers", "2"],
+            "34 solutions (5 stable)",
+            marks=pytest.mark.slow,
+        ),
     ],
 )
 def test_benchmark_runs(script, args, expect):

@@ -9,11 +9,17 @@ SRC = Path(__file__).parents[1] / "src" / "taut"
 
 #: Layer of each top-level module of taut; a module may import its own layer and below.
 LAYERS = {
-    "errors": 0, "geometry": 0, "interval": 0,
-    "model": 1, "parallel": 1,
+    "errors": 0,
+    "geometry": 0,
+    "interval": 0,
+    "model": 1,
+    "parallel": 1,
     "kinematics": 2,
     "statics": 3,
-    "collision": 4, "wrapping": 4, "dgp": 4, "planning": 4,
+    "collision": 4,
+    "wrapping": 4,
+    "dgp": 4,
+    "planning": 4,
     "workspace": 5,
     "atlas": 6,
     "viz": 7,

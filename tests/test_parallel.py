@@ -99,8 +99,14 @@ def test_dask_local_cluster_gives_identical_results():
             assert isinstance(ex, DaskExecutor)
             calls = []
             got = {
-                "planar": evaluate_workspace(PLANAR, "wrench-feasible", resolution=40, executor=ex, chunk=300,
-                                             progress=lambda d, t: calls.append((d, t))),
+                "planar": evaluate_workspace(
+                    PLANAR,
+                    "wrench-feasible",
+                    resolution=40,
+                    executor=ex,
+                    chunk=300,
+                    progress=lambda d, t: calls.append((d, t)),
+                ),
                 "spatial": evaluate_workspace(SPATIAL, "static", resolution=9, executor=ex, chunk=100),
             }
             _assert_same(got, ref)

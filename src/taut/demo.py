@@ -24,15 +24,19 @@ def robots_section(report: Report) -> None:
     rows = []
     for name in example_names():
         r = example(name)
-        rows.append({
-            "name": name,
-            "dimension": f"{r.dimension}-D",
-            "platform": r.platform.kind + (f" + {r.n_joints} joint(s)" if r.n_joints else ""),
-            "cables": r.n_cables,
-            "obstacles": len(r.obstacles),
-            "source": r.source or "taut",
-        })
-    report.add_section("Built-in robots", text="Every example is addressable by name wherever a robot is expected.", table=rows)
+        rows.append(
+            {
+                "name": name,
+                "dimension": f"{r.dimension}-D",
+                "platform": r.platform.kind + (f" + {r.n_joints} joint(s)" if r.n_joints else ""),
+                "cables": r.n_cables,
+                "obstacles": len(r.obstacles),
+                "source": r.source or "taut",
+            }
+        )
+    report.add_section(
+        "Built-in robots", text="Every example is addressable by name wherever a robot is expected.", table=rows
+    )
 
 
 def _line_of_poses(robot, start, shift, n=60):

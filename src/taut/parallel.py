@@ -21,8 +21,8 @@ from __future__ import annotations
 import multiprocessing
 import operator
 import weakref
-from collections.abc import Callable, Iterable
 from abc import ABC, abstractmethod
+from collections.abc import Callable, Iterable
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from typing import Any
 
@@ -40,10 +40,12 @@ class Executor(ABC):
     name = "executor"
 
     @abstractmethod
-    def map(self, fn: Callable[[Any], Any], items: Iterable[Any], *, callback: Callable[[int], None] | None = None) -> list:
+    def map(
+        self, fn: Callable[[Any], Any], items: Iterable[Any], *, callback: Callable[[int], None] | None = None
+    ) -> list:
         """``[fn(item) for item in items]`` in order; ``callback(i)`` as item ``i`` completes."""
 
-    def close(self) -> None:
+    def close(self) -> None:  # noqa: B027 — optional hook, not abstract
         """Release workers (a no-op where there are none)."""
 
     def __enter__(self):
@@ -165,12 +167,16 @@ def _dask_client(scheduler, timeout: float):
     address = getattr(scheduler, "scheduler_address", None)  # a LocalCluster or similar
     if address is None:
         if not isinstance(scheduler, str) or not scheduler.strip():
-            raise TautError(f"scheduler must be an address such as tcp://host:8786 or a distributed.Client, got {scheduler!r}")
+            raise TautError(
+                f"scheduler must be an address such as tcp://host:8786 or a distributed.Client, got {scheduler!r}"
+            )
         address = scheduler.strip()
     try:
         client = Client(address, timeout=timeout, set_as_default=False)
     except (OSError, TimeoutError, ValueError) as exc:
-        raise TautError(f"cannot reach the dask scheduler at {address} within {timeout:g} s ({type(exc).__name__}: {exc})") from None
+        raise TautError(
+            f"cannot reach the dask scheduler at {address} within {timeout:g} s ({type(exc).__name__}: {exc})"
+        ) from None
     return client, True
 
 

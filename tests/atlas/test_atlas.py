@@ -25,8 +25,10 @@ def test_t_shaped_atlas_covers_installation_space(t_atlas):
     the winch pulleys that overlap the T."""
     atlas, seconds = t_atlas
     robot = atlas.robot
-    unreachable = shapely.union_all([shapely.Point(o.center).buffer(o.radius, 64) for o in robot.obstacles]
-                                    + [shapely.Point(c.exit).buffer(c.pulley.radius, 64) for c in robot.cables])
+    unreachable = shapely.union_all(
+        [shapely.Point(o.center).buffer(o.radius, 64) for o in robot.obstacles]
+        + [shapely.Point(c.exit).buffer(c.pulley.radius, 64) for c in robot.cables]
+    )
     expected = atlas.space.difference(unreachable)
     got = atlas.reachable_area()
     assert got.symmetric_difference(expected).area < 1e-5 * expected.area

@@ -12,8 +12,12 @@ from taut.atlas import cable_reachable_area
 from taut.model import example
 from taut.wrapping import CableStateTree, wrapped_inverse_kinematics
 
-CASES = [("vscr-t-shaped", [0.8128, -0.2032]), ("vscr-single-cable", [0.0, 2.0]),
-         ("vscr-four-cable", [0.75, -0.5]), ("vscr-rehabilitation", [0.0, 0.254])]
+CASES = [
+    ("vscr-t-shaped", [0.8128, -0.2032]),
+    ("vscr-single-cable", [0.0, 2.0]),
+    ("vscr-four-cable", [0.75, -0.5]),
+    ("vscr-rehabilitation", [0.0, 0.254]),
+]
 #: Points this close to the CRA boundary are not judged (chords of the arcs).
 BOUNDARY = 1e-4
 
@@ -76,8 +80,11 @@ def test_cra_wrapped_state_is_bounded_by_unwrap_ray():
 
 
 @settings(max_examples=12, deadline=None)
-@given(st.lists(st.tuples(st.floats(-0.8, 0.8), st.floats(0.2, 1.6), st.floats(0.03, 0.2)), min_size=1, max_size=3),
-       st.floats(0.0, 0.05), st.sampled_from([1, -1]))
+@given(
+    st.lists(st.tuples(st.floats(-0.8, 0.8), st.floats(0.2, 1.6), st.floats(0.03, 0.2)), min_size=1, max_size=3),
+    st.floats(0.0, 0.05),
+    st.sampled_from([1, -1]),
+)
 def test_cra_random_circles(objects, pulley, direction):
     """Random disjoint circles above a winch at the origin: every state of depth ≤ 2 has
     the CRA that sampling with the CST's test gives."""

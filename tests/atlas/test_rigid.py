@@ -6,8 +6,14 @@ import pytest
 import shapely
 import shapely.affinity
 
-from taut.atlas import atlas_workspace, build_atlas, direct_ik, iterative_ik
-from taut.atlas import cable_reachable_area, platform_reachable_area
+from taut.atlas import (
+    atlas_workspace,
+    build_atlas,
+    cable_reachable_area,
+    direct_ik,
+    iterative_ik,
+    platform_reachable_area,
+)
 from taut.atlas.platform import interior_cone, minkowski_sum, platform_outline
 from taut.errors import PoseError, TautError
 from taut.model import example
@@ -40,7 +46,9 @@ def test_anchors_at_origin_give_the_point_mass_atlas():
         assert [c.nodes for c in rg.charts] == [c.nodes for c in pm.charts]
         for a, b in zip(rg.charts, pm.charts):
             assert a.domain.symmetric_difference(b.domain).area < 1e-12
-        assert sorted((e.charts, e.cable, e.kind) for e in rg.edges) == sorted((e.charts, e.cable, e.kind) for e in pm.edges)
+        assert sorted((e.charts, e.cable, e.kind) for e in rg.edges) == sorted(
+            (e.charts, e.cable, e.kind) for e in pm.edges
+        )
         P = np.array([[0.3, -0.2], [0.8, -0.7], [1.4, -0.1]])
         assert np.allclose(direct_ik(rg, P).lengths, direct_ik(pm, P).lengths, atol=1e-12)
 
@@ -50,9 +58,11 @@ def test_charts_exclude_platform_collisions(page):
     installation space, off the idlers, the winch pulleys and the disallowed regions."""
     robot = page.robot
     M = platform_outline(robot, page.theta)
-    objects = shapely.union_all([shapely.Point(o.center).buffer(o.radius, 256) for o in robot.obstacles]
-                                + [shapely.Point(c.exit).buffer(c.pulley.radius, 256) for c in robot.cables]
-                                + [shapely.Polygon(p) for p in robot.disallowed])
+    objects = shapely.union_all(
+        [shapely.Point(o.center).buffer(o.radius, 256) for o in robot.obstacles]
+        + [shapely.Point(c.exit).buffer(c.pulley.radius, 256) for c in robot.cables]
+        + [shapely.Polygon(p) for p in robot.disallowed]
+    )
     space = shapely.Polygon(robot.installation_space)
     checked = 0
     for c in page.charts:
@@ -93,10 +103,11 @@ def test_charts_exclude_cables_through_the_platform(page):
 def test_domains_follow_eq_5_15(page):
     """Q = the component of (∩_i (CRA_i − R r_i)) ∩ PRA containing the seed."""
     for c in page.charts[:6]:
-        cras = [shapely.affinity.translate(cable_reachable_area(t, n, page.space), *(-page.offsets[i]))
-                for i, (t, n) in enumerate(zip(page.trees, c.nodes))]
-        pra = platform_reachable_area(page.robot, page.theta, page.space, page.trees, c.nodes, page.offsets,
-                                      0.01, 20.0)
+        cras = [
+            shapely.affinity.translate(cable_reachable_area(t, n, page.space), *(-page.offsets[i]))
+            for i, (t, n) in enumerate(zip(page.trees, c.nodes))
+        ]
+        pra = platform_reachable_area(page.robot, page.theta, page.space, page.trees, c.nodes, page.offsets, 0.01, 20.0)
         sra = shapely.intersection_all(cras + [pra])
         assert c.domain.difference(sra.buffer(1e-7)).area < 1e-9
         part = [g for g in getattr(sra, "geoms", [sra]) if g.distance(shapely.Point(c.seed)) < 1e-7]
@@ -164,7 +175,10 @@ def test_bad_input():
     with pytest.raises(PoseError):
         build_atlas(example("vscr-t-shaped"), START, theta=0.3)
     with pytest.raises(TautError):  # anchors inside the outline
-        build_atlas(_variant(kind="rigid", shape={"polygon": [[-0.04, -0.02], [0.04, -0.02], [0.04, 0.02], [-0.04, 0.02]]}), START)
+        build_atlas(
+            _variant(kind="rigid", shape={"polygon": [[-0.04, -0.02], [0.04, -0.02], [0.04, 0.02], [-0.04, 0.02]]}),
+            START,
+        )
     with pytest.raises(PoseError):  # the platform overlaps idler 1
         build_atlas(example("vscr-rigid-t-shaped"), [0.6096, -0.36])
     with pytest.raises(TautError):

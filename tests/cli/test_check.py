@@ -2,7 +2,6 @@
 
 import json
 
-import numpy as np
 import pytest
 
 import taut
@@ -65,14 +64,17 @@ def test_trajectory_files(capsys, tmp_path, fmt):
     assert json.loads(out)["summary"]["first_collision"] == 71
 
 
-@pytest.mark.parametrize("content, suffix, message", [
-    ("5,5,5,0,0,0\n", ".csv", "7 coordinates"),
-    ("[[5, 5, 5, 0, 0, 0]]", ".json", "7 coordinates"),
-    ("[[5, 5, 5, 0, 0, 0, 9.0]]", ".json", "outside its limits"),
-    ("5,5,5,0,0,0,abc\n5,5,5,0,0,0,2\n", ".csv", "expected numbers"),
-    ("waypoints: [[5, 5, 5, 0, 0, 0, 2], [5, 5, 4, 0, 0, 0, 2]]\nsteps: [0]\n", ".yaml", "positive integers"),
-    ("{not yaml", ".yaml", "not valid"),
-])
+@pytest.mark.parametrize(
+    "content, suffix, message",
+    [
+        ("5,5,5,0,0,0\n", ".csv", "7 coordinates"),
+        ("[[5, 5, 5, 0, 0, 0]]", ".json", "7 coordinates"),
+        ("[[5, 5, 5, 0, 0, 0, 9.0]]", ".json", "outside its limits"),
+        ("5,5,5,0,0,0,abc\n5,5,5,0,0,0,2\n", ".csv", "expected numbers"),
+        ("waypoints: [[5, 5, 5, 0, 0, 0, 2], [5, 5, 4, 0, 0, 0, 2]]\nsteps: [0]\n", ".yaml", "positive integers"),
+        ("{not yaml", ".yaml", "not valid"),
+    ],
+)
 def test_bad_trajectory_files_exit_2(capsys, tmp_path, content, suffix, message):
     f = tmp_path / f"bad{suffix}"
     f.write_text(content)

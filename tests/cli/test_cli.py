@@ -27,8 +27,19 @@ def test_examples_lists_every_builtin(capsys):
     data = run_json(capsys, "examples")
     names = [e["name"] for e in data["examples"]]
     assert names == list(EXAMPLES)
-    required = {"suspended-3cable", "cogiro", "marionet-vr", "teaching-prototype", "robocrane", "vscr-single-cable",
-                "vscr-four-cable", "vscr-agriculture", "vscr-rehabilitation", "vscr-t-shaped", "adjustable-8cable"}
+    required = {
+        "suspended-3cable",
+        "cogiro",
+        "marionet-vr",
+        "teaching-prototype",
+        "robocrane",
+        "vscr-single-cable",
+        "vscr-four-cable",
+        "vscr-agriculture",
+        "vscr-rehabilitation",
+        "vscr-t-shaped",
+        "adjustable-8cable",
+    }
     assert required <= set(names)
     assert all(e["description"] for e in data["examples"])
 
@@ -61,27 +72,53 @@ def test_ik_and_tensions_on_every_example(name, capsys):
 def test_workspace_on_every_example(name, condition, capsys):
     robot = taut.example(name)
     res = run_json(capsys, "workspace", name, "--condition", condition, "--grid", "5")
-    assert res["poses"] == 5 ** robot.dimension
+    assert res["poses"] == 5**robot.dimension
     assert 0 <= res["inside"] <= res["poses"] and res["fraction"] == pytest.approx(res["inside"] / res["poses"])
     assert res["elapsed_s"] >= 0
 
 
 def test_workspace_outputs(tmp_path, capsys):
     out, plot = tmp_path / "ws.npz", tmp_path / "ws.png"
-    res = run_json(capsys, "workspace", "planar-4cable", "--condition", "wrench-feasible", "--grid=-1:1:21;-1:1:11",
-                   "--orientation", "0", "--box", "1,1,0.1", "--out", str(out), "--plot", str(plot))
+    res = run_json(
+        capsys,
+        "workspace",
+        "planar-4cable",
+        "--condition",
+        "wrench-feasible",
+        "--grid=-1:1:21;-1:1:11",
+        "--orientation",
+        "0",
+        "--box",
+        "1,1,0.1",
+        "--out",
+        str(out),
+        "--plot",
+        str(plot),
+    )
     assert res["poses"] == 231 and 0 < res["inside"] < 231
     saved = np.load(out)
     assert saved["inside"].sum() == res["inside"]
     assert plot.stat().st_size > 10_000
     # a larger wrench box can only shrink the wrench-feasible workspace
-    bigger = run_json(capsys, "workspace", "planar-4cable", "--condition", "wrench-feasible", "--grid=-1:1:21;-1:1:11",
-                      "--orientation", "0", "--box", "20,20,2")
+    bigger = run_json(
+        capsys,
+        "workspace",
+        "planar-4cable",
+        "--condition",
+        "wrench-feasible",
+        "--grid=-1:1:21;-1:1:11",
+        "--orientation",
+        "0",
+        "--box",
+        "20,20,2",
+    )
     assert bigger["inside"] < res["inside"]
 
 
 def test_human_output_and_plot(tmp_path, capsys):
-    code, out, _ = run(capsys, "ik", "spatial-8cable", "--pose", "0.1,0,0.2,0,0,5deg", "--plot", str(tmp_path / "r.png"))
+    code, out, _ = run(
+        capsys, "ik", "spatial-8cable", "--pose", "0.1,0,0.2,0,0,5deg", "--plot", str(tmp_path / "r.png")
+    )
     assert code == 0 and "structure matrix" in out and (tmp_path / "r.png").exists()
     code, out, _ = run(capsys, "tensions", "planar-4cable", "--pose", "0,0,0", "--method", "qp")
     assert code == 0 and "tensions (qp)" in out
@@ -109,7 +146,10 @@ def test_every_tension_method(method, capsys):
         (["workspace", "planar-4cable", "--condition", "static", "--grid", "1:2"], "--grid"),
         (["workspace", "planar-4cable", "--condition", "wrench-feasible", "--box", "1,2"], "half-widths"),
         (["workspace", "planar-4cable", "--condition", "static", "--workers", "0"], "worker"),
-        (["workspace", "planar-4cable", "--condition", "static", "--grid", "4", "--scheduler", "tcp://127.0.0.1:1"], "scheduler"),
+        (
+            ["workspace", "planar-4cable", "--condition", "static", "--grid", "4", "--scheduler", "tcp://127.0.0.1:1"],
+            "scheduler",
+        ),
     ],
 )
 def test_bad_input_exits_2(argv, words, capsys):

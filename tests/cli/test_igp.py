@@ -26,8 +26,17 @@ def test_igp_json_table_4_3(capsys):
 
 
 def test_igp_angles_in_degrees_and_slack_cables(capsys):
-    code = main(["igp", "teaching-prototype", "--taut", "1,2,3,4,6",
-                 "--fix", "x=0.363,y=0.454,z=0.122,phix=-2.42,phiy=23.262deg", "--json"])
+    code = main(
+        [
+            "igp",
+            "teaching-prototype",
+            "--taut",
+            "1,2,3,4,6",
+            "--fix",
+            "x=0.363,y=0.454,z=0.122,phix=-2.42,phiy=23.262deg",
+            "--json",
+        ]
+    )
     out, err = capsys.readouterr()
     assert code == 0, err
     d = json.loads(out)
@@ -49,7 +58,9 @@ def test_igp_human_output(capsys):
 
 
 def test_igp_reports_an_exhausted_budget(capsys):
-    code = main(["igp", "robocrane", "--taut", "1,3,5", "--fix", "x=0,y=0,phi=2.8797932657906435", "--max-boxes", "500"])
+    code = main(
+        ["igp", "robocrane", "--taut", "1,3,5", "--fix", "x=0,y=0,phi=2.8797932657906435", "--max-boxes", "500"]
+    )
     out, err = capsys.readouterr()
     assert code == 0, err
     assert "0 equilibria" in out and "ran out" in out

@@ -12,8 +12,23 @@ SLICE = "x=0,y=0,z=2,sigma=35deg"
 
 def test_plan_q1_q2_json_csv_plot(capsys, tmp_path):
     csv, png = tmp_path / "p.csv", tmp_path / "p.png"
-    code = main(["plan", "robocrane", "--start", "q1", "--goal", "q2", "--fix", SLICE,
-                 "--out", str(csv), "--plot", str(png), "--json"])
+    code = main(
+        [
+            "plan",
+            "robocrane",
+            "--start",
+            "q1",
+            "--goal",
+            "q2",
+            "--fix",
+            SLICE,
+            "--out",
+            str(csv),
+            "--plot",
+            str(png),
+            "--json",
+        ]
+    )
     out, err = capsys.readouterr()
     assert code == 0, err
     d = json.loads(out)
@@ -32,14 +47,17 @@ def test_plan_human_output(capsys):
     assert "independent check: feasible" in capsys.readouterr().out
 
 
-@pytest.mark.parametrize("argv", [
-    ["--start", "q1", "--goal", "q2", "--fix", "w=1"],
-    ["--start", "q1", "--goal", "1,2,3", "--fix", SLICE],
-    ["--start", "q1", "--goal", "0,0,2,0.8,-2.4,35deg", "--fix", SLICE],  # not wrench-feasible
-    ["--start", "q1", "--goal", "0,0,1,2,0.9,35deg", "--fix", SLICE],  # off the slice
-    ["--start", "q1", "--goal", "q2", "--wrench-ellipsoid", "1,2"],
-    ["--start", "q1", "--goal", "q2", "--wrench-ellipsoid", "-1"],
-])
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["--start", "q1", "--goal", "q2", "--fix", "w=1"],
+        ["--start", "q1", "--goal", "1,2,3", "--fix", SLICE],
+        ["--start", "q1", "--goal", "0,0,2,0.8,-2.4,35deg", "--fix", SLICE],  # not wrench-feasible
+        ["--start", "q1", "--goal", "0,0,1,2,0.9,35deg", "--fix", SLICE],  # off the slice
+        ["--start", "q1", "--goal", "q2", "--wrench-ellipsoid", "1,2"],
+        ["--start", "q1", "--goal", "q2", "--wrench-ellipsoid", "-1"],
+    ],
+)
 def test_plan_bad_input_exit_2(capsys, argv):
     assert main(["plan", "robocrane", *argv]) == 2
     assert "taut: error:" in capsys.readouterr().err
@@ -50,13 +68,30 @@ def test_plan_needs_a_hexapod(capsys):
 
 
 def test_plan_q3_q4_and_a_proof_of_no_path(capsys):
-    assert main(["plan", "robocrane", "--start", "q3", "--goal", "q4", "--fix", SLICE,
-                 "--radius", "0.3", "--json"]) == 0
+    assert (
+        main(["plan", "robocrane", "--start", "q3", "--goal", "q4", "--fix", SLICE, "--radius", "0.3", "--json"]) == 0
+    )
     d = json.loads(capsys.readouterr().out)
     assert d["found"] and d["verified"] and d["length"] > 4
     # two islands of the slice (tests/planning/test_robocrane.py): the atlas of the start's
     # component completes inside the angle window φ ∈ [−π, π], θ ∈ [0, π]
-    assert main(["plan", "robocrane", "--start", "0,0,2,-1.3,2.2,35deg", "--goal", "0,0,2,0.6,2.4,35deg",
-                 "--fix", SLICE, "--radius", "0.3", "--json"]) == 0
+    assert (
+        main(
+            [
+                "plan",
+                "robocrane",
+                "--start",
+                "0,0,2,-1.3,2.2,35deg",
+                "--goal",
+                "0,0,2,0.6,2.4,35deg",
+                "--fix",
+                SLICE,
+                "--radius",
+                "0.3",
+                "--json",
+            ]
+        )
+        == 0
+    )
     d = json.loads(capsys.readouterr().out)
     assert not d["found"] and d["exhausted"] and d["path"] == [] and d["charts"] == d["expanded"]

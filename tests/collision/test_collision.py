@@ -5,8 +5,14 @@ import numpy as np
 import pytest
 
 import taut
-from taut.collision import (capsule_model, check_poses, force_closure_singular, jacobian_singular, proximity,
-                            trajectory_poses)
+from taut.collision import (
+    capsule_model,
+    check_poses,
+    force_closure_singular,
+    jacobian_singular,
+    proximity,
+    trajectory_poses,
+)
 from taut.collision.capsules import capsule_segments
 from taut.errors import PoseError
 from taut.geometry.segments import segment_distance
@@ -25,7 +31,9 @@ def sims():
 def test_trajectory_sampling_gives_the_steps_of_section_4_2():
     a = trajectory_poses(ROBOT, "sim-a")
     assert a.shape == (201, 7)
-    assert np.allclose(a[0], ROBOT.reference.poses["sim-a-step1"]) and np.allclose(a[200], ROBOT.reference.poses["sim-a-step201"])
+    assert np.allclose(a[0], ROBOT.reference.poses["sim-a-step1"]) and np.allclose(
+        a[200], ROBOT.reference.poses["sim-a-step201"]
+    )
     assert np.allclose(a[100], [5, 5, 2.5, 0, 0, 0, 2])
     for step in ("sim-b-step126", "sim-c-step71", "sim-d-step28"):
         name, k = step.rsplit("-step", 1)
@@ -87,18 +95,37 @@ def test_point_mass_cables_share_their_end_without_interfering():
     robot = taut.example("suspended-3cable")
     m = capsule_model(robot)
     assert m.shared.any() or not robot.is_point_mass
-    pose = np.asarray(next(iter(robot.reference.poses.values())), float) if robot.reference and robot.reference.poses else None
+    pose = (
+        np.asarray(next(iter(robot.reference.poses.values())), float)
+        if robot.reference and robot.reference.poses
+        else None
+    )
     res = proximity(robot, pose) if pose is not None else None
     if robot.is_point_mass:
         assert res.interference_free.all()
     # cables of radius 0 meeting at a point mass interfere only when they overlap (same
     # direction); with a radius, when their angle is below about one degree
-    pm = robot_from_dict({"name": "three", "dimension": 2, "platform": {"kind": "point-mass"},
-                          "cables": [{"exit": [0, 0]}, {"exit": [2, 0]}, {"exit": [1, 3]}]})
+    pm = robot_from_dict(
+        {
+            "name": "three",
+            "dimension": 2,
+            "platform": {"kind": "point-mass"},
+            "cables": [{"exit": [0, 0]}, {"exit": [2, 0]}, {"exit": [1, 3]}],
+        }
+    )
     assert proximity(pm, [[1.0, 1.0], [0.5, 0.0], [3.0, 0.0]]).interference_free.tolist() == [True, True, False]
-    thick = robot_from_dict({"name": "thick", "dimension": 2, "platform": {"kind": "point-mass"},
-                             "cables": [{"exit": [0, 0], "radius": 0.01}, {"exit": [10, 0.1], "radius": 0.01},
-                                        {"exit": [10, -20], "radius": 0.01}]})
+    thick = robot_from_dict(
+        {
+            "name": "thick",
+            "dimension": 2,
+            "platform": {"kind": "point-mass"},
+            "cables": [
+                {"exit": [0, 0], "radius": 0.01},
+                {"exit": [10, 0.1], "radius": 0.01},
+                {"exit": [10, -20], "radius": 0.01},
+            ],
+        }
+    )
     # at (20, 0.2) cable 2 runs along cable 1 (interference); at (5, 5) they are far apart
     free = proximity(thick, [[20.0, 0.2], [5.0, 5.0]])
     assert free.collisions(0) == [(0, 1)] and free.interference_free[1]

@@ -43,9 +43,15 @@ def match_rows():
         found = list(sols)
         for row, stable in printed:
             taut = _printed_taut(row)
-            hits = [s for s in found if (taut is None or s.taut == taut)
-                    and all(p is None or abs(v - p) <= (pos_tol if k < 3 else ang_tol)
-                            for k, (v, p) in enumerate(zip(np.r_[s.position, s.orientation], row[:6])))]
+            hits = [
+                s
+                for s in found
+                if (taut is None or s.taut == taut)
+                and all(
+                    p is None or abs(v - p) <= (pos_tol if k < 3 else ang_tol)
+                    for k, (v, p) in enumerate(zip(np.r_[s.position, s.orientation], row[:6]))
+                )
+            ]
             assert len(hits) == 1, row
             s = hits[0]
             assert all(p is None or abs(v - p) <= tau_tol for v, p in zip(s.tensions, row[6:])), row

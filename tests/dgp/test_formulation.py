@@ -61,8 +61,12 @@ def test_every_constant_node_encloses_a_float_or_two_neighbours():
 
 
 @settings(max_examples=60, deadline=None)
-@given(st.tuples(*[st.floats(-1.0, 1.0)] * 3), st.tuples(*[st.floats(-np.pi, np.pi)] * 3),
-       st.lists(st.floats(0.0, 0.5), min_size=8, max_size=8), st.sets(st.integers(0, 7), min_size=2, max_size=6))
+@given(
+    st.tuples(*[st.floats(-1.0, 1.0)] * 3),
+    st.tuples(*[st.floats(-np.pi, np.pi)] * 3),
+    st.lists(st.floats(0.0, 0.5), min_size=8, max_size=8),
+    st.sets(st.integers(0, 7), min_size=2, max_size=6),
+)
 def test_every_pose_the_lengths_allow_meets_the_geometric_filter_constraints(p, angles, slack, taut):
     """The inequalities of the filter — slack cables no longer than their length (Eq. 3.7)
     and the sphere bounds of Eq. 3.6 on the reference points — hold at every pose whose

@@ -79,7 +79,9 @@ def test_every_igp_solution_is_an_equilibrium_of_the_direct_problem(suspended_m3
     """Cross-formulation check: at the IGP lengths, the DGP's reference-point system
     certifies the IGP pose and tensions."""
     for s in suspended_m3.solutions:
-        pose, tau = dgp_certified(SUSPENDED, (0, 1, 2), s.lengths, np.concatenate([s.position, s.orientation]), s.tensions)
+        pose, tau = dgp_certified(
+            SUSPENDED, (0, 1, 2), s.lengths, np.concatenate([s.position, s.orientation]), s.tensions
+        )
         assert np.allclose(pose, np.concatenate([s.position, s.orientation]), atol=1e-9)
         assert np.allclose(tau, s.tensions, atol=1e-9)
 
@@ -172,7 +174,9 @@ def test_the_rotations_found_do_not_depend_on_the_convention(convention, suspend
     res = solve_igp(robot, (1, 2, 3), dict(zip("xyz", T43_POSE[:3])))
     assert res.undecided == 0 and len(res.solutions) == 4
     ours = sorted(rotation_matrix(s.orientation, convention).ravel().round(9).tolist() for s in res.solutions)
-    fixed = sorted(rotation_matrix(s.orientation, "xyz-fixed").ravel().round(9).tolist() for s in suspended_m3.solutions)
+    fixed = sorted(
+        rotation_matrix(s.orientation, "xyz-fixed").ravel().round(9).tolist() for s in suspended_m3.solutions
+    )
     assert np.allclose(ours, fixed, atol=1e-8)
     for s in res.solutions:
         check_solution(robot, s, (1, 2, 3))
@@ -195,10 +199,17 @@ def test_tension_bounds_bound_the_domain(robocrane_m3):
         assert np.all(s.tensions <= 1.0) and 0 <= s.orientation[1] <= np.pi
 
 
-@pytest.mark.parametrize("fixture, names", [
-    ("suspended_m3", ("x", "y", "a")), ("suspended_m3", ("x", "b", "c")), ("suspended_m3", ("a", "b", "c")),
-    ("robocrane_m3", ("z", "theta", "sigma")), ("robocrane_m3", ("x", "phi", "theta")), ("robocrane_m3", ("y", "z", "phi")),
-])
+@pytest.mark.parametrize(
+    "fixture, names",
+    [
+        ("suspended_m3", ("x", "y", "a")),
+        ("suspended_m3", ("x", "b", "c")),
+        ("suspended_m3", ("a", "b", "c")),
+        ("robocrane_m3", ("z", "theta", "sigma")),
+        ("robocrane_m3", ("x", "phi", "theta")),
+        ("robocrane_m3", ("y", "z", "phi")),
+    ],
+)
 def test_any_three_coordinates_of_a_solution_give_it_back(fixture, names, request):
     """Assigning other coordinates of a solution (free positions, free σ through ψ = σ − φ,
     assigned σ through the difference formulas) finds that solution again."""
@@ -208,7 +219,9 @@ def test_any_three_coordinates_of_a_solution_give_it_back(fixture, names, reques
         pose = np.concatenate([s.position, s.orientation])
         again = solve_igp(robot, taut, {n: pose[robot.pose_names.index(n)] for n in names})
         assert again.complete
-        assert sum(np.allclose(np.concatenate([q.position, q.orientation]), pose, atol=1e-9) for q in again.solutions) == 1
+        assert (
+            sum(np.allclose(np.concatenate([q.position, q.orientation]), pose, atol=1e-9) for q in again.solutions) == 1
+        )
         for q in again.solutions:
             check_solution(robot, q, taut)
 
@@ -244,10 +257,14 @@ def test_five_taut_cables_every_solution_is_an_admissible_equilibrium(x, y, z):
         check_solution(PROTOTYPE, s, taut)
 
 
-POINT_MASS = Robot.model_validate({
-    "name": "spatial point mass", "dimension": 3, "platform": {"kind": "point-mass", "mass": 1.0},
-    "cables": [{"exit": [0, 0, 1]}, {"exit": [1, 0, 1]}, {"exit": [0, 1, 1]}],
-})
+POINT_MASS = Robot.model_validate(
+    {
+        "name": "spatial point mass",
+        "dimension": 3,
+        "platform": {"kind": "point-mass", "mass": 1.0},
+        "cables": [{"exit": [0, 0, 1]}, {"exit": [1, 0, 1]}, {"exit": [0, 1, 1]}],
+    }
+)
 
 
 @pytest.mark.parametrize(

@@ -32,7 +32,7 @@ def test_pieces_hold_every_solution_and_do_not_overlap():
     assert len(pieces) == 8
     for i, (alo, ahi) in enumerate(pieces):
         assert np.all(alo >= sp.lo) and np.all(ahi <= sp.hi)
-        for blo, bhi in pieces[i + 1:]:  # interiors are disjoint
+        for blo, bhi in pieces[i + 1 :]:  # interiors are disjoint
             assert np.any(np.minimum(ahi, bhi)[sp.primary] <= np.maximum(alo, blo)[sp.primary])
     for pose, tensions in TABLE_4_3:
         R = rotation_matrix(np.array(pose[3:]), "xyz-fixed")

@@ -36,8 +36,9 @@ def _refs(pose):
 @pytest.mark.parametrize("pose, tensions, stable", TABLE)
 def test_each_row_is_certified_from_the_printed_values_with_its_stability(pose, tensions, stable):
     sp = build_subproblem(ROBOT, LENGTHS, (0, 1, 2))
-    cert = certify(sp.system, sp.unknowns(pose[:3], rotation_matrix(np.array(pose[3:]), "xyz-fixed"),
-                                          np.array(tensions) / LENGTHS))
+    cert = certify(
+        sp.system, sp.unknowns(pose[:3], rotation_matrix(np.array(pose[3:]), "xyz-fixed"), np.array(tensions) / LENGTHS)
+    )
     assert cert is not None and cert.width < 1e-9 and cert.radius > 0
     p, ang, R = sp.pose(cert.x, "xyz-fixed")
     assert np.allclose(p, pose[:3], atol=6e-3) and np.allclose(ang, pose[3:], atol=7e-3)

@@ -34,8 +34,11 @@ def test_table_4_4_six_taut_cables(solve_subsets):
     assert sum(und for _, und in res.values()) == 0
     assert len(sols) == 6
     for pose, tensions in TABLE:
-        match = [s for s in sols if np.allclose(s.position, pose[:3], atol=2e-3)
-                 and np.allclose(s.orientation, pose[3:], atol=1e-2)]
+        match = [
+            s
+            for s in sols
+            if np.allclose(s.position, pose[:3], atol=2e-3) and np.allclose(s.orientation, pose[3:], atol=1e-2)
+        ]
         assert len(match) == 1, pose
         s = match[0]
         assert s.taut == tuple(i + 1 for i, t in enumerate(tensions) if t > 0)
@@ -58,8 +61,12 @@ def test_table_4_4_two_taut_cables():
     ]
     found = list(res.solutions)
     for taut, pose, tensions in printed:
-        match = [s for s in found if s.taut == taut
-                 and all(p is None or abs(v - p) <= 1e-2 for v, p in zip(np.r_[s.position, s.orientation], pose))]
+        match = [
+            s
+            for s in found
+            if s.taut == taut
+            and all(p is None or abs(v - p) <= 1e-2 for v, p in zip(np.r_[s.position, s.orientation], pose))
+        ]
         assert len(match) == 1, (taut, pose)
         s = match[0]
         assert np.allclose(s.tensions[list(np.array(taut) - 1)], tensions, atol=1e-2) and not s.stable

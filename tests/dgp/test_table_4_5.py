@@ -48,8 +48,10 @@ def test_table_4_5_six_taut_cables():
 def test_table_4_5_two_taut_cables(match_rows):
     res = solve_dgp(ROBOT, max_taut=2)  # Conf. 16-17, and no single-cable equilibrium
     assert res.undecided == 0
-    printed = [[-0.218, -1.192, 1.499, 1.220, 0.379, 1.539, 0, 1.569, 1.612, 0, 0, 0],
-               [0.342, -0.676, 1.244, 1.194, -0.403, -1.458, 0, 0, 0, 1.691, 1.681, 0]]
+    printed = [
+        [-0.218, -1.192, 1.499, 1.220, 0.379, 1.539, 0, 1.569, 1.612, 0, 0, 0],
+        [0.342, -0.676, 1.244, 1.194, -0.403, -1.458, 0, 0, 0, 1.691, 1.681, 0],
+    ]
     assert match_rows(res.solutions, [(r, False) for r in printed], 2e-3, 2e-3, 2e-3) == []
 
 

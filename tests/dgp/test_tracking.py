@@ -64,8 +64,8 @@ def test_a_cable_going_slack_switches_sub_problem_and_back(start):
     sols = track_path(ROBOT, start, path)
     sets = [s.taut for s in sols]
     first, last = sets.index((1, 3)), len(sets) - 1 - sets[::-1].index((1, 3))
-    assert set(sets[:first]) == {(1, 2, 3)} and set(sets[first:last + 1]) == {(1, 3)}
-    assert set(sets[last + 1:]) == {(1, 2, 3)}
+    assert set(sets[:first]) == {(1, 2, 3)} and set(sets[first : last + 1]) == {(1, 3)}
+    assert set(sets[last + 1 :]) == {(1, 2, 3)}
     assert 0.0 < sols[first - 1].tensions[1] < 0.02  # dropped where its tension reached zero
     assert sols[first].tensions[1] == 0.0
     for sol, lengths in zip(sols, path):

@@ -38,6 +38,8 @@ def test_polygon_and_circles():
     assert segment_enters_polygon([0.2, 0.2], [0.8, 0.8], sq)  # wholly inside: no edge crossed
     assert not segment_enters_polygon([-1, 0.5], [0, 0.5], sq)  # ending on an edge
     assert not segment_enters_polygon([1, 1], [2, 3], sq)  # from a vertex outwards
-    assert not segment_enters_polygon([0, 0], [1, 0], sq) and not segment_enters_polygon([0.2, 1], [0.8, 1], sq)  # along an edge
+    assert not segment_enters_polygon([0, 0], [1, 0], sq) and not segment_enters_polygon(
+        [0.2, 1], [0.8, 1], sq
+    )  # along an edge
     assert circles_overlap([0, 0], 1, [1.5, 0], 1) and not circles_overlap([0, 0], 1, [2, 0], 1)
     assert circles_overlap([0, 0], 0, [0, 0], 0)

@@ -54,7 +54,9 @@ def test_random_batch_matches_references():
     rng = np.random.default_rng(0)
     P = rng.normal(size=(400, 4, 3))
     # make a quarter (nearly) parallel, some degenerate
-    P[:100, 3] = P[:100, 2] + (P[:100, 1] - P[:100, 0]) * rng.uniform(-2, 2, (100, 1)) + rng.normal(scale=1e-9, size=(100, 3))
+    P[:100, 3] = (
+        P[:100, 2] + (P[:100, 1] - P[:100, 0]) * rng.uniform(-2, 2, (100, 1)) + rng.normal(scale=1e-9, size=(100, 3))
+    )
     P[100:130, 1] = P[100:130, 0]
     d = segment_distance(P[:, 0], P[:, 1], P[:, 2], P[:, 3])
     assert d.shape == (400,)

@@ -42,7 +42,9 @@ def test_point_circle_tangents_match_appendix_a3():
     b, dirs = point_circle_tangents(a, c, r)
     alpha = np.arctan2(*(c - a)[::-1])
     beta = np.arcsin(r / np.linalg.norm(c - a)) + np.pi / 2
-    expected = {tuple(np.round(c + r * np.array([np.cos(alpha + s * beta), np.sin(alpha + s * beta)]), 12)) for s in (1, -1)}
+    expected = {
+        tuple(np.round(c + r * np.array([np.cos(alpha + s * beta), np.sin(alpha + s * beta)]), 12)) for s in (1, -1)
+    }
     assert {tuple(np.round(p, 12)) for p in b} == expected
     for p, d in zip(b, dirs):  # A.3: dir = sign((b - c) x (b - a))
         assert np.sign(_cross(p - c, p - a)) == d

@@ -113,7 +113,6 @@ def test_slopes_let_krawczyk_prove_a_box_empty_that_the_jacobian_cannot():
     assert krawczyk(system, [0.2], [2.2], points=1).status == "empty"
 
 
-
 def test_the_two_nodes_are_upper_bounds_of_the_exact_ones():
     """``θ₁,₂ = (3 ∓ √3)/6``: ``θ⁺ ≥ θ₁ ⟺ 3 − 6θ⁺ ≤ √3`` and ``θ⁺ ≥ θ₂ ⟺ 6θ⁺ − 3 ≥ √3``, in
     exact rationals; and within 1e-14 of them."""

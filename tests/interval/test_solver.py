@@ -8,11 +8,19 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from taut.interval import (
-    branch_and_prune, certify, compile_system, const, contract, inflate, krawczyk, preconditioned_solve, variables,
+    branch_and_prune,
+    certify,
+    compile_system,
+    const,
+    contract,
+    inflate,
+    krawczyk,
+    preconditioned_solve,
+    variables,
 )
+from taut.interval.branch_prune import _bisect_index, _smear
 from taut.interval.expression import compile_tape
 from taut.interval.hc4 import evaluate, evaluate_point
-from taut.interval.branch_prune import _bisect_index, _smear
 from taut.interval.krawczyk import jacobian
 from taut.interval.linear import LinearFilter, float_inverse
 
@@ -53,8 +61,11 @@ def systems_with_a_zero(draw):
     b = draw(st.lists(num, min_size=n, max_size=n))
     a = np.array(draw(st.lists(num, min_size=n * n, max_size=n * n))).reshape(n, n)
     x = variables(n)
-    eqs = [(x[i] - float(s[i])) * (x[i] + float(b[i]))
-           + sum(((x[j] - float(s[j])) * float(a[i, j]) for j in range(n)), const(0.0)) for i in range(n)]
+    eqs = [
+        (x[i] - float(s[i])) * (x[i] + float(b[i]))
+        + sum(((x[j] - float(s[j])) * float(a[i, j]) for j in range(n)), const(0.0))
+        for i in range(n)
+    ]
     below = np.array(draw(st.lists(st.floats(0.0, 0.5), min_size=n, max_size=n)))
     above = np.array(draw(st.lists(st.floats(0.0, 0.5), min_size=n, max_size=n)))
     return compile_system(n, eqs), s, s - below, s + above
@@ -157,14 +168,15 @@ def _tube(system, h, lo, hi, points=0, primary=None):
     """The tube step with the Jacobian over the box (``points=0``) or the slopes; the
     variables not ``primary`` are solved for first."""
     from taut.interval.branch_prune import _tube_vars
-    from taut.interval.slope import slopes
     from taut.interval.krawczyk import tube_kernel
+    from taut.interval.slope import slopes
 
     vl, vh = slopes(system, lo, hi, points)
     primary = np.ones(lo.size, bool) if primary is None else primary
     gvars, dependent = _tube_vars(system, h, primary)
-    return tube_kernel(*system.tape.arrays[:5], system.tape.end, h, gvars, dependent, system.rows,
-                       system.cols, vl, vh, lo, hi)
+    return tube_kernel(
+        *system.tape.arrays[:5], system.tape.end, h, gvars, dependent, system.rows, system.cols, vl, vh, lo, hi
+    )
 
 
 @settings(max_examples=300, deadline=None)
@@ -283,8 +295,9 @@ def test_smear_bisection_finds_the_same_solutions_with_fewer_boxes_on_a_badly_sc
     the equations stopped depending on it much; the smear rule follows ``x``."""
     x, y = variables(2)
     sys = compile_system(2, [x**2 + (y / 100) ** 2 - 1, (x - 1) ** 2 + (y / 100) ** 2 - 1])
-    res = {b: branch_and_prune(sys, [-3.0, -300.0], [3.0, 300.0], bisection=b, method=method)
-           for b in ("width", "smear")}
+    res = {
+        b: branch_and_prune(sys, [-3.0, -300.0], [3.0, 300.0], bisection=b, method=method) for b in ("width", "smear")
+    }
     key = lambda r: sorted(tuple(np.round(c.x, 9)) for c in r.solutions)  # noqa: E731
     s = round(50 * np.sqrt(3), 9)
     assert key(res["smear"]) == key(res["width"]) == [(0.5, -s), (0.5, s)]
@@ -357,12 +370,17 @@ def test_compiled_loop_with_a_linear_filter_matches_the_python_filter():
     filt = LinearFilter(compile_tape([1 + x**2, const(2.0)], [(-np.inf, np.inf)] * 2), 1)
     lo, hi = np.array([-2.0, -2.0, 0.0]), np.array([2.0, 2.0, np.inf])
     primary = np.array([True, True, False])
-    res = {m: branch_and_prune(sys, lo, hi, primary=primary, filters=(filt,), method=m, certify_width=1.0)
-           for m in ("python", "numba")}
+    res = {
+        m: branch_and_prune(sys, lo, hi, primary=primary, filters=(filt,), method=m, certify_width=1.0)
+        for m in ("python", "numba")
+    }
     for r in res.values():
         xs = sorted(tuple(np.round(c.x, 10)) for c in r.solutions)
         s = np.sqrt(0.5)
-        assert xs == [(-round(s, 10), -round(s, 10), round(2 / 1.5, 10)), (round(s, 10), round(s, 10), round(2 / 1.5, 10))]
+        assert xs == [
+            (-round(s, 10), -round(s, 10), round(2 / 1.5, 10)),
+            (round(s, 10), round(s, 10), round(2 / 1.5, 10)),
+        ]
         assert not r.undecided
     b_lo, b_hi = np.array([0.5, 0.5, 0.0]), np.array([0.75, 0.75, np.inf])
     assert filt(b_lo, b_hi) and 2 / (1 + 0.75**2) * (1 - 1e-12) <= b_lo[2] and b_hi[2] <= 2 / 1.25 * (1 + 1e-12)
@@ -386,8 +404,19 @@ def test_filters_run_only_on_boxes_narrower_than_filter_width():
 
     key = lambda r: sorted(tuple(np.round(c.x, 10)) for c in r.solutions)  # noqa: E731
     every = branch_and_prune(sys, lo, hi, primary=primary, filters=(filt,), method="python", certify_width=1.0)
-    narrow = {m: branch_and_prune(sys, lo, hi, primary=primary, filters=(spy if m == "python" else filt,), method=m,
-                                  certify_width=1.0, filter_width=0.5) for m in ("python", "numba")}
+    narrow = {
+        m: branch_and_prune(
+            sys,
+            lo,
+            hi,
+            primary=primary,
+            filters=(spy if m == "python" else filt,),
+            method=m,
+            certify_width=1.0,
+            filter_width=0.5,
+        )
+        for m in ("python", "numba")
+    }
     assert widths and max(widths) < 0.5
     assert all(key(r) == key(every) and len(r.solutions) == 2 and not r.undecided for r in narrow.values())
 

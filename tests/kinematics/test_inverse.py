@@ -89,18 +89,31 @@ def test_bad_poses_are_typed_errors():
 
 
 def test_point_mass_and_prismatic_body():
-    pm = robot_from_dict({
-        "name": "pm", "dimension": 3, "platform": {"kind": "point-mass"},
-        "cables": [{"exit": [0, 0, 1]}, {"exit": [1, 0, 1]}, {"exit": [0, 1, 1]}],
-    })
+    pm = robot_from_dict(
+        {
+            "name": "pm",
+            "dimension": 3,
+            "platform": {"kind": "point-mass"},
+            "cables": [{"exit": [0, 0, 1]}, {"exit": [1, 0, 1]}, {"exit": [0, 1, 1]}],
+        }
+    )
     ik = inverse_kinematics(pm, [0.0, 0.0, 0.0])
     np.testing.assert_allclose(ik.lengths, [1, np.sqrt(2), np.sqrt(2)])
     assert ik.structure_matrix.shape == (3, 3)
-    jointed = robot_from_dict({
-        "name": "slider", "dimension": 3, "orientation": "xyz-moving",
-        "platform": {"bodies": [{"name": "lower", "joint": {"kind": "prismatic", "axis": [0, 0, 2], "limits": [0, 1]}}]},
-        "cables": [{"exit": [0, 0, 5], "anchor": [0, 0, 0]}, {"exit": [0, 0, -5], "anchor": [0, 0, 0], "body": "lower"}],
-    })
+    jointed = robot_from_dict(
+        {
+            "name": "slider",
+            "dimension": 3,
+            "orientation": "xyz-moving",
+            "platform": {
+                "bodies": [{"name": "lower", "joint": {"kind": "prismatic", "axis": [0, 0, 2], "limits": [0, 1]}}]
+            },
+            "cables": [
+                {"exit": [0, 0, 5], "anchor": [0, 0, 0]},
+                {"exit": [0, 0, -5], "anchor": [0, 0, 0], "body": "lower"},
+            ],
+        }
+    )
     b = anchor_points(jointed, [0, 0, 0, np.pi / 2, 0, 0, 0.5])
     # the joint axis is the body z axis, which the rotation about x by 90 degrees maps to -y
     np.testing.assert_allclose(b[1], [0, -0.5, 0], atol=1e-15)

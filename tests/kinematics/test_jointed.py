@@ -33,14 +33,25 @@ def _fd_jacobian(robot, pose, h=1e-6):
     cols = []
     for k in range(robot.pose_size):
         e = np.eye(robot.pose_size)[k]
-        cols.append((actuator_positions(robot, _moved(robot, pose, e, h)) - actuator_positions(robot, _moved(robot, pose, e, -h))) / (2 * h))
+        cols.append(
+            (
+                actuator_positions(robot, _moved(robot, pose, e, h))
+                - actuator_positions(robot, _moved(robot, pose, e, -h))
+            )
+            / (2 * h)
+        )
     return np.array(cols).T
 
 
 def _revolute_variant():
     data = robot_to_dict(ROBOT)
-    data["platform"]["bodies"][0]["joint"] = {"kind": "revolute", "name": "phi", "axis": [0.3, 0.2, 1.0],
-                                              "origin": [0.1, 0, 2.0], "limits": [-1.0, 1.0]}
+    data["platform"]["bodies"][0]["joint"] = {
+        "kind": "revolute",
+        "name": "phi",
+        "axis": [0.3, 0.2, 1.0],
+        "origin": [0.1, 0, 2.0],
+        "limits": [-1.0, 1.0],
+    }
     return robot_from_dict(data)
 
 
@@ -81,8 +92,15 @@ def test_standard_robots_have_minus_W_transpose():
 
 def test_structure_matrix_and_joint_force():
     rng = np.random.default_rng(4)
-    poses = np.column_stack([np.full(20, 5.0), np.full(20, 5.0), rng.uniform(3.5, 5, 20), rng.uniform(-0.2, 0.2, (20, 3)),
-                             rng.uniform(2, 3, 20)])
+    poses = np.column_stack(
+        [
+            np.full(20, 5.0),
+            np.full(20, 5.0),
+            rng.uniform(3.5, 5, 20),
+            rng.uniform(-0.2, 0.2, (20, 3)),
+            rng.uniform(2, 3, 20),
+        ]
+    )
     A = jointed_structure_matrix(ROBOT, poses)
     assert A.shape == (20, 7, 9)
     assert np.allclose(A[:, :6, :8], inverse_kinematics(ROBOT, poses).structure_matrix)  # Eq. 3.3.10 (A = −W there)

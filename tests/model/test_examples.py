@@ -118,7 +118,9 @@ def test_table_4_3_conf_1_exact_pose():
     robot = taut.example("suspended-3cable")
     lengths = cable_lengths(robot, EXACT_4_3_NO1)
     # the exact pose is printed to 4 decimals here: it matches rho far better than the table row
-    np.testing.assert_allclose(lengths, robot.reference.lengths, atol=rounding_tolerance(robot, EXACT_4_3_NO1, 5e-5).max())
+    np.testing.assert_allclose(
+        lengths, robot.reference.lengths, atol=rounding_tolerance(robot, EXACT_4_3_NO1, 5e-5).max()
+    )
     printed = cable_lengths(robot, robot.reference.poses["table-4.3-no1"])
     assert np.abs(printed - robot.reference.lengths).max() > rounding_tolerance(robot, EXACT_4_3_NO1).max()
 

@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 import taut
 from taut.cli.main import main
-from taut.model import parse_robot, robot_to_dict
+from taut.model import robot_to_dict
 
 GOOD = """
 format: taut/1
@@ -41,7 +41,11 @@ def test_good_file_loads(tmp_path):
         (lambda d: d["cables"][1].update(exit=[1, 0, 0]), "cables[2].exit", "expected 2 numbers"),
         (lambda d: d["cables"][0].update(exit=["a", 0]), "cables[1].exit[1]", "valid number"),
         (lambda d: d["cables"][2].update(exit=[0, 0]), "cables[3]", "duplicated cable"),
-        (lambda d: d.update(obstacles=[{"kind": "circle", "center": [1, 1], "radius": -1}]), "obstacles[1].radius", "greater than or equal to 0"),
+        (
+            lambda d: d.update(obstacles=[{"kind": "circle", "center": [1, 1], "radius": -1}]),
+            "obstacles[1].radius",
+            "greater than or equal to 0",
+        ),
         (lambda d: d["cables"][0].update(tension=[10, 1]), "cables[1].tension", "inverted"),
         (lambda d: d["cables"][0].update(length=[3, 2]), "cables[1].length", "inverted"),
         (lambda d: d["cables"][0].update(tension=[-1, 1]), "cables[1].tension", ">= 0"),
@@ -110,8 +114,13 @@ def test_shipped_schema_is_current():
 # --- hypothesis: random damage to a valid file never escapes as anything but RobotFileError ---
 
 _values = st.one_of(
-    st.none(), st.booleans(), st.integers(-5, 5), st.floats(allow_nan=True, allow_infinity=True),
-    st.text(max_size=5), st.lists(st.floats(-3, 3), max_size=4), st.dictionaries(st.text(max_size=3), st.integers(), max_size=2),
+    st.none(),
+    st.booleans(),
+    st.integers(-5, 5),
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.text(max_size=5),
+    st.lists(st.floats(-3, 3), max_size=4),
+    st.dictionaries(st.text(max_size=3), st.integers(), max_size=2),
 )
 
 

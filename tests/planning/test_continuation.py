@@ -13,7 +13,7 @@ R0, R1 = 1.0, 0.4
 
 def _torus_f(x):
     q = np.hypot(x[0], x[1])
-    return np.array([(q - R0) ** 2 + x[2] ** 2 - R1 ** 2])
+    return np.array([(q - R0) ** 2 + x[2] ** 2 - R1**2])
 
 
 def _torus_j(x):
@@ -58,11 +58,14 @@ def test_circle_atlas_spacing():
     assert gaps.max() < 0.2  # consecutive chart centres never farther than 2 r
 
 
-@pytest.mark.parametrize("manifold,x0,points,area,factor", [
-    (SPHERE, [0, 0, 1.0], _sphere_points(400), 4 * np.pi, 3),
-    # the tube radius 0.4 is only twice the chart radius: steps shrink with the curvature
-    (TORUS, [R0 + R1, 0, 0], _torus_points(400), 4 * np.pi ** 2 * R0 * R1, 4),
-])
+@pytest.mark.parametrize(
+    "manifold,x0,points,area,factor",
+    [
+        (SPHERE, [0, 0, 1.0], _sphere_points(400), 4 * np.pi, 3),
+        # the tube radius 0.4 is only twice the chart radius: steps shrink with the curvature
+        (TORUS, [R0 + R1, 0, 0], _torus_points(400), 4 * np.pi**2 * R0 * R1, 4),
+    ],
+)
 def test_complete_atlas_covers_the_surface(manifold, x0, points, area, factor):
     r = 0.2
     a = Atlas(manifold, x0, r)
@@ -71,7 +74,7 @@ def test_complete_atlas_covers_the_surface(manifold, x0, points, area, factor):
     assert not any(c.frontier for c in a.charts)
     # hexagons of circumradius r: area / (3√3/2 r²) charts at least; centres a step r
     # apart on a hexagonal lattice would need three times as many
-    ideal = area / (1.5 * np.sqrt(3) * r ** 2)
+    ideal = area / (1.5 * np.sqrt(3) * r**2)
     assert ideal <= len(a.charts) <= factor * ideal
     assert all(a.covering_chart(p) is not None for p in points)
     assert max(np.linalg.norm(a.centres - p, axis=1).min() for p in points) < r
@@ -99,8 +102,9 @@ def test_torus_path_around_the_hole_and_over_the_tube():
 def test_boxed_component_gives_no_path_with_exhaustion():
     # a sphere cut by the box z ≥ 0.5 (frontier charts stop the atlas): the south pole is
     # unreachable and the search ends having closed every chart
-    box = ImplicitManifold(SPHERE.function, SPHERE.jacobian, 2,
-                           lower=np.array([-2, -2, 0.5]), upper=np.array([2, 2, 2]))
+    box = ImplicitManifold(
+        SPHERE.function, SPHERE.jacobian, 2, lower=np.array([-2, -2, 0.5]), upper=np.array([2, 2, 2])
+    )
     res = plan_path(box, [0, 0, 1.0], [0, 0, -1.0], 0.2)
     assert not res.found and res.exhausted and res.charts > 5
     assert res.atlas.centres[:, 2].min() > 0.5 - 0.2

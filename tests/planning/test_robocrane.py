@@ -18,8 +18,13 @@ ROBOT = load_robot("robocrane")
 POSES = {k: np.array(v) for k, v in ROBOT.reference.poses.items()}
 SIGMA = 7 * np.pi / 36
 SLICE = dict(x=0.0, y=0.0, z=2.0, sigma=SIGMA)
-PUBLISHED = {"q1": (0, 0, 2, -0.5, 0.9), "q2": (0, 0, 2, 2.0, 0.9), "q3": (0, 0, 2, 0.8, -2.4),
-             "q4": (0, 0, 2, -2.4, 2.4), "q5": (0, 0, 1.2, 0.8, -2.6)}  # q6 = q4
+PUBLISHED = {
+    "q1": (0, 0, 2, -0.5, 0.9),
+    "q2": (0, 0, 2, 2.0, 0.9),
+    "q3": (0, 0, 2, 0.8, -2.4),
+    "q4": (0, 0, 2, -2.4, 2.4),
+    "q5": (0, 0, 1.2, 0.8, -2.6),
+}  # q6 = q4
 
 
 def _feasible(M, pose) -> bool:
@@ -44,13 +49,22 @@ def test_no_octahedral_reading_of_section_5_makes_the_published_poses_feasible()
     A = np.array([[-b, -b * r3 / 3, 0], [b, -b * r3 / 3, 0], [0, 2 * b * r3 / 3, 0]])
     B0 = np.array([[0, -2 * a * r3 / 3, 0], [a, a * r3 / 3, 0], [-a, a * r3 / 3, 0]])
     counts = {}
-    for perm, k, zs, pm in itertools.product(itertools.permutations(range(3)), range(6), (1, -1),
-                                             ((a / 5, a / 5, 0), (0, 0, 0))):
+    for perm, k, zs, pm in itertools.product(
+        itertools.permutations(range(3)), range(6), (1, -1), ((a / 5, a / 5, 0), (0, 0, 0))
+    ):
         pairs = [(i, j) for i in range(3) for j in range(3) if j != perm[i]]
         Bk = B0 @ _rz(k * np.pi / 3).T
-        M = WrenchFeasibleManifold(a=A[[i for i, _ in pairs]], b=Bk[[j for _, j in pairs]],
-                                   w0=[0, 0, zs, 0, 0, 0], E=1e4 * np.eye(6), f_min=0.0, f_max=1.0,
-                                   rho_min=1e-6, rho_max=5.0, wrench_point=pm)
+        M = WrenchFeasibleManifold(
+            a=A[[i for i, _ in pairs]],
+            b=Bk[[j for _, j in pairs]],
+            w0=[0, 0, zs, 0, 0, 0],
+            E=1e4 * np.eye(6),
+            f_min=0.0,
+            f_max=1.0,
+            rho_min=1e-6,
+            rho_max=5.0,
+            wrench_point=pm,
+        )
         ok = tuple(_feasible(M, np.r_[q, SIGMA]) for q in PUBLISHED.values())
         counts[(perm, k, zs, pm)] = ok
     assert max(sum(ok) for ok in counts.values()) == 4  # never all five
@@ -108,8 +122,9 @@ def test_atlas_of_a_slice_completes_and_proves_that_no_path_exists():
     assert comp(*start) and comp(*goal) and comp(*start) != comp(*goal)
     assert comp(-0.5, 0.9) == comp(2.0, 0.9) != comp(*start)  # q1, q2: one component
     M = WrenchFeasibleManifold.from_robot(ROBOT, fixed=SLICE)
-    res = plan_path(M.implicit(), M.lift([0, 0, 2, *start, SIGMA]), M.lift([0, 0, 2, *goal, SIGMA]),
-                    0.3, metric=M.pose_metric)
+    res = plan_path(
+        M.implicit(), M.lift([0, 0, 2, *start, SIGMA]), M.lift([0, 0, 2, *goal, SIGMA]), 0.3, metric=M.pose_metric
+    )
     assert not res.found and res.exhausted and res.expanded == res.charts
     poses = M.pose(res.atlas.centres)
     # the atlas stayed on the start's island

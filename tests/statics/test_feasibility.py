@@ -210,7 +210,9 @@ def test_polytope_equals_box_with_the_same_vertices():
     lo, hi = np.ones(5), np.full(5, 5.0)
     w = -np.einsum("kij,kj->ki", W, rng.uniform(0, 6, (300, 5)))
     box = BoxWrenchSet([-0.2, -0.1, 0.0], [0.3, 0.1, 0.4])
-    assert np.array_equal(wrench_feasible(W, lo, hi, box, w), wrench_feasible(W, lo, hi, PolytopeWrenchSet(box.vertices()), w))
+    assert np.array_equal(
+        wrench_feasible(W, lo, hi, box, w), wrench_feasible(W, lo, hi, PolytopeWrenchSet(box.vertices()), w)
+    )
 
 
 def test_rank_deficient_structure_matrices():
@@ -253,7 +255,9 @@ def test_facet_normals_are_unit_and_orthogonal_to_their_columns():
             if valid[k, c]:
                 np.testing.assert_allclose(normals[k, c] @ W[k][:, list(cols)], 0.0, atol=1e-12)
                 dots = normals[k, c] @ W[k]
-                np.testing.assert_allclose(hz[k, c], [np.maximum(dots, 0).sum(), np.maximum(-dots, 0).sum()], atol=1e-12)
+                np.testing.assert_allclose(
+                    hz[k, c], [np.maximum(dots, 0).sum(), np.maximum(-dots, 0).sum()], atol=1e-12
+                )
 
 
 def test_bad_inputs():

@@ -72,11 +72,15 @@ def cube_robot():
     """8 cables from the corners of a 2 m cube to the corners of a 0.2 m cubic platform,
     uncrossed: at the centre every cable passes through the platform centre."""
     corners = [[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1], [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]]
-    return robot_from_dict({
-        "format": "taut/1", "name": "cube", "dimension": 3,
-        "platform": {"kind": "rigid", "mass": 5.0, "wrench_point": [0, 0, 0]},
-        "cables": [{"exit": c, "anchor": [0.1 * x for x in c], "tension": [5, 500]} for c in corners],
-    })
+    return robot_from_dict(
+        {
+            "format": "taut/1",
+            "name": "cube",
+            "dimension": 3,
+            "platform": {"kind": "rigid", "mass": 5.0, "wrench_point": [0, 0, 0]},
+            "cables": [{"exit": c, "anchor": [0.1 * x for x in c], "tension": [5, 500]} for c in corners],
+        }
+    )
 
 
 def test_rank_deficient_pose_is_solved():

@@ -13,7 +13,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from matplotlib.image import AxesImage  # noqa: E402
-from matplotlib.patches import Circle, Polygon  # noqa: E402
+from matplotlib.patches import Circle  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
 import taut  # noqa: E402
@@ -61,7 +61,9 @@ def _close_figures():
 
 
 def cable_lines(ax):
-    lines = sorted((ln for ln in ax.get_lines() if (ln.get_gid() or "").startswith("cable-")), key=lambda ln: int(ln.get_gid()[6:]))
+    lines = sorted(
+        (ln for ln in ax.get_lines() if (ln.get_gid() or "").startswith("cable-")), key=lambda ln: int(ln.get_gid()[6:])
+    )
     return lines
 
 
@@ -188,8 +190,9 @@ class StandInWorkspace:
 def grid_result(robot, axes, inside_fn, orientation=()):
     mesh = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, len(axes))
     poses = np.column_stack([mesh, np.tile(np.asarray(orientation, float), (len(mesh), 1))])
-    return StandInWorkspace(robot.name, "wrench-feasible", poses, inside_fn(mesh), tuple(axes),
-                            tuple(len(a) for a in axes))
+    return StandInWorkspace(
+        robot.name, "wrench-feasible", poses, inside_fn(mesh), tuple(axes), tuple(len(a) for a in axes)
+    )
 
 
 def test_planar_workspace_image_matches_grid():

@@ -38,12 +38,14 @@ def lp_closure(W) -> bool:
 
 
 def triangle_robot(**platform):
-    return robot_from_dict({
-        "name": "planar point-mass triangle",
-        "dimension": 2,
-        "platform": {"kind": "point-mass", **platform},
-        "cables": [{"exit": [0, 0]}, {"exit": [2, 0]}, {"exit": [1, 2]}],
-    })
+    return robot_from_dict(
+        {
+            "name": "planar point-mass triangle",
+            "dimension": 2,
+            "platform": {"kind": "point-mass", **platform},
+            "cables": [{"exit": [0, 0]}, {"exit": [2, 0]}, {"exit": [1, 2]}],
+        }
+    )
 
 
 def test_registry_and_condition_factory():
@@ -147,12 +149,14 @@ def test_under_constrained_robot_static():
     """3 cables, 6 DOF: equilibrium hanging below the centroid of the exits (LP fallback)."""
     exits = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.5, 0.866, 0.0]])
     c = exits.mean(axis=0)
-    robot = robot_from_dict({
-        "name": "3-cable suspended",
-        "dimension": 3,
-        "platform": {"kind": "rigid", "mass": 2.0, "gravity": [0, 0, -9.81]},
-        "cables": [{"exit": e.tolist(), "anchor": (0.1 * (e - c)).tolist()} for e in exits],
-    })
+    robot = robot_from_dict(
+        {
+            "name": "3-cable suspended",
+            "dimension": 3,
+            "platform": {"kind": "rigid", "mass": 2.0, "gravity": [0, 0, -9.81]},
+            "cables": [{"exit": e.tolist(), "anchor": (0.1 * (e - c)).tolist()} for e in exits],
+        }
+    )
     home = np.array([c[0], c[1], -1.0, 0, 0, 0])
     poses = np.array([home, home + [0.05, 0, 0, 0, 0, 0], home + [0, 0, 0, 0, 0, 0.1], home * [1, 1, -1, 1, 1, 1]])
     res = evaluate_workspace(robot, "static", poses=poses)
@@ -186,7 +190,9 @@ def test_grid_defaults_and_bounds():
 
 def test_result_summary_save_load_and_progress(tmp_path):
     calls = []
-    res = evaluate_workspace(PLANAR, "wrench-feasible", resolution=30, chunk=100, progress=lambda d, t: calls.append((d, t)))
+    res = evaluate_workspace(
+        PLANAR, "wrench-feasible", resolution=30, chunk=100, progress=lambda d, t: calls.append((d, t))
+    )
     assert calls[0] == (0, 900) and calls[-1] == (900, 900)
     assert [d for d, _ in calls] == sorted(d for d, _ in calls) and len(calls) == 10
     again = evaluate_workspace(PLANAR, "wrench-feasible", resolution=30)  # one chunk
@@ -217,7 +223,7 @@ def test_batch_structure_matrices_match_inverse_kinematics():
     rng = np.random.default_rng(2)
     for robot, size in ((PLANAR, 3), (SPATIAL, 6), (triangle_robot(), 2)):
         poses = rng.uniform(-0.4, 0.4, (50, size))
-        for conv in (("xyz-fixed", "xyz-moving", "tilt-torsion") if robot.dimension == 3 else (robot.orientation,)):
+        for conv in ("xyz-fixed", "xyz-moving", "tilt-torsion") if robot.dimension == 3 else (robot.orientation,):
             r = robot.model_copy(update={"orientation": conv})
             _, W, ok = batch_structure_matrices(r, poses)
             assert ok.all()

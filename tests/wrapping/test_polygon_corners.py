@@ -58,7 +58,7 @@ def _check_physical(tree, P, tr, n0):
     for s, b in enumerate(P):
         n = int(tr.nodes[s])
         assert tree.is_taut(n, b)
-        for (k, d) in tree.contacts(n):
+        for _, d in tree.contacts(n):
             assert d == 1  # the winch is to the left: every corner is wrapped ccw below the square
         x, u, _, _ = tree.active_segment(n, b)
         assert not segment_enters_polygon(x, b, SQUARE, 1e-9)

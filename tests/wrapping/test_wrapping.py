@@ -9,9 +9,9 @@ from taut.errors import TautError
 from taut.geometry.intersections import segment_enters_polygon, segment_meets_circle
 from taut.model import example
 from taut.wrapping.state import CableState, rebuild_path
+from taut.wrapping.trajectory import builtin_trajectory, run_trajectory
 from taut.wrapping.tree import CableStateTree
 from taut.wrapping.update import track, update_state
-from taut.wrapping.trajectory import builtin_trajectory, run_trajectory
 
 VSCR = ["vscr-single-cable", "vscr-four-cable", "vscr-agriculture", "vscr-rehabilitation", "vscr-t-shaped"]
 
@@ -152,7 +152,9 @@ def test_random_walks_stay_continuous_and_reversible(points):
     # free ends above the objects, so that the cable never has to cross itself (not modelled)
     tree = _single_tree()
     P = np.array([[0.0, 2.0]] + [list(p) for p in points])
-    through = segment_meets_circle(P[:-1, None], P[1:, None], tree.circles[None, :3, :2], tree.circles[None, :3, 2] + 0.01, 0.0)
+    through = segment_meets_circle(
+        P[:-1, None], P[1:, None], tree.circles[None, :3, :2], tree.circles[None, :3, 2] + 0.01, 0.0
+    )
     if through.any():  # the platform end may not pass through an object
         return
     tr = track(tree, P, 0)

@@ -10,6 +10,21 @@ from taut.atlas.platform import platform_outline, platform_reachable_area
 from taut.atlas.reachable import cable_reachable_area
 from taut.atlas.workspace import AtlasWorkspace, atlas_workspace
 
-__all__ = ["AtlasIK", "AtlasWorkspace", "Chart", "Edge", "StructureAtlas", "atlas_workspace", "build_atlas",
-           "cable_reachable_area", "chart_lengths", "direct_ik", "iterative_ik", "iterative_step", "locate",
-           "platform_outline", "platform_reachable_area", "structure_reachable_area"]
+__all__ = [
+    "AtlasIK",
+    "AtlasWorkspace",
+    "Chart",
+    "Edge",
+    "StructureAtlas",
+    "atlas_workspace",
+    "build_atlas",
+    "cable_reachable_area",
+    "chart_lengths",
+    "direct_ik",
+    "iterative_ik",
+    "iterative_step",
+    "locate",
+    "platform_outline",
+    "platform_reachable_area",
+    "structure_reachable_area",
+]

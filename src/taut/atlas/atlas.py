@@ -128,8 +128,9 @@ class _Builder:
             if self.outline is not None:  # Eq. (5.14)
                 H = structure_collision_region(self.outline, self.trees, nodes, self.offsets, self.arc_step, self.reach)
                 pra = self.space.difference(shapely.union_all([self.fixed, H]))
-            self.sra[nodes] = structure_reachable_area([self.cable_area(i, n) for i, n in enumerate(nodes)],
-                                                       self.offsets, pra)
+            self.sra[nodes] = structure_reachable_area(
+                [self.cable_area(i, n) for i, n in enumerate(nodes)], self.offsets, pra
+            )
         return self.sra[nodes]
 
     def transitions(self, nodes: tuple[int, ...]):
@@ -160,8 +161,14 @@ def _edge_pieces(domain: Polygon, e: np.ndarray, u: np.ndarray, reach: float):
             yield np.array([xy[0], xy[-1]])
 
 
-def build_atlas(robot: Robot, start, initial: dict | None = None, arc_step: float = ARC_STEP,
-                max_charts: int = MAX_CHARTS, theta: float = 0.0) -> StructureAtlas:
+def build_atlas(
+    robot: Robot,
+    start,
+    initial: dict | None = None,
+    arc_step: float = ARC_STEP,
+    max_charts: int = MAX_CHARTS,
+    theta: float = 0.0,
+) -> StructureAtlas:
     """The structure atlas of a planar VSCR from the start point ``start`` (Alg. 5.1) —
     for a rigid platform the page of orientation ``theta`` (§5.2.2), ``start`` being the
     platform reference point.  ``initial`` maps a 0-based cable index to its starting
@@ -176,8 +183,11 @@ def build_atlas(robot: Robot, start, initial: dict | None = None, arc_step: floa
     p0 = np.asarray(start, float).reshape(-1)
     if p0.shape != (2,) or not np.isfinite(p0).all():
         raise PoseError(f"{robot.name}: the start point must be 2 finite coordinates, got {list(np.ravel(start))}")
-    offsets = (np.zeros((robot.n_cables, 2)) if robot.is_point_mass
-               else np.asarray(robot.anchors, float)[:, :2] @ rotation(theta).T)
+    offsets = (
+        np.zeros((robot.n_cables, 2))
+        if robot.is_point_mass
+        else np.asarray(robot.anchors, float)[:, :2] @ rotation(theta).T
+    )
     space = Polygon(np.asarray(robot.installation_space, float)) if robot.installation_space else None
     if space is not None and not space.covers(shapely.Point(p0)):
         raise PoseError(f"{robot.name}: the start point {p0.tolist()} is outside the installation space")
@@ -192,8 +202,10 @@ def build_atlas(robot: Robot, start, initial: dict | None = None, arc_step: floa
     nodes0 = tuple(int(x) for x in ik.nodes[0])
     q0 = component_containing(b.area(nodes0), p0, tol=1e-7)
     if q0 is None:
-        raise PoseError(f"{robot.name}: the start point {p0.tolist()} is not in the reachable area of its structure "
-                        "(on an object, a cable is blocked there, or the platform hits something)")
+        raise PoseError(
+            f"{robot.name}: the start point {p0.tolist()} is not in the reachable area of its structure "
+            "(on an object, a cable is blocked there, or the platform hits something)"
+        )
     charts = [Chart(0, nodes0, q0, p0, _states(ik.trees, nodes0))]
     edges: list[Edge] = []
     stack = [0]
@@ -205,7 +217,7 @@ def build_atlas(robot: Robot, start, initial: dict | None = None, arc_step: floa
             e = tree.F[ray_node, [EX, EY]] - b.offsets[i]
             u = tree.F[ray_node, [UX, UY]]
             nrm = side * np.array([-u[1], u[0]])
-            nodes = C.nodes[:i] + (new,) + C.nodes[i + 1:]
+            nodes = C.nodes[:i] + (new,) + C.nodes[i + 1 :]
             for seg in _edge_pieces(C.domain, e, u, b.reach):
                 target = None
                 for f in (0.5, 0.25, 0.75):

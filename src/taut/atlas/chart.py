@@ -46,7 +46,9 @@ class Chart:
         return float(self.domain.area)
 
 
-def chart_lengths(trees: list[CableStateTree], nodes, points, offsets=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def chart_lengths(
+    trees: list[CableStateTree], nodes, points, offsets=None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``(l (N, n), l_0 + ν (N, n), A (N, n, 2))`` of structure ``nodes`` at reference
     points ``points`` ``(N, 2)``: Eq. (4.9) with the chart elements of Eqs. (5.3)–(5.5),
     vectorised.  Cable ``i`` is attached at ``points + offsets[i]`` (the anchor offsets
@@ -81,8 +83,10 @@ def structure_reachable_area(cras: list, offsets=None, pra=None):
     platform at orientation ``θ``, ``SRA^{S,θ} = (∩_i (CRA^{s_i} − R(θ) r_i)) ∩ PRA^{S,θ}``
     (Eq. 5.15) with ``offsets[i] = R(θ) r_i`` and ``pra`` the platform-reachable area."""
     if offsets is not None:
-        cras = [shapely.affinity.translate(a, -float(o[0]), -float(o[1])) if (o[0] or o[1]) else a
-                for a, o in zip(cras, np.asarray(offsets, float))]
+        cras = [
+            shapely.affinity.translate(a, -float(o[0]), -float(o[1])) if (o[0] or o[1]) else a
+            for a, o in zip(cras, np.asarray(offsets, float))
+        ]
     sra = shapely.intersection_all(cras)
     if pra is not None:
         sra = sra.intersection(pra)

@@ -46,7 +46,7 @@ def locate(atlas: StructureAtlas, points, charts=None) -> np.ndarray:
     P = np.atleast_2d(np.asarray(points, float))
     out = np.full(len(P), -1, dtype=np.int64)
     todo = np.arange(len(P))
-    for c in (range(len(atlas.charts)) if charts is None else charts):
+    for c in range(len(atlas.charts)) if charts is None else charts:
         if not len(todo):
             break
         dom = atlas.charts[c].domain
@@ -110,7 +110,9 @@ def iterative_step(atlas: StructureAtlas, chart: int, p1, p2) -> int:
         if target == chart:
             rest = shapely.LineString([p1 + t0 * d, p2]) if t0 < 1 else shapely.Point(p2)
             if not shapely.covers(atlas.charts[chart].domain.buffer(1e-9), rest):
-                raise PoseError(f"the move {p1.tolist()} → {p2.tolist()} leaves chart {chart} through an edge that is not traversable")
+                raise PoseError(
+                    f"the move {p1.tolist()} → {p2.tolist()} leaves chart {chart} through an edge that is not traversable"
+                )
             return chart
         prev, chart, t0 = chart, target, max(t0, best)
     raise PoseError(f"the move {p1.tolist()} → {p2.tolist()} does not settle in a chart")

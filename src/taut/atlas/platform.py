@@ -82,8 +82,11 @@ def swept_region(M: Polygon, shapes) -> object:
     for kind, g in shapes:
         if kind == "circle":
             cx, cy, rho = g
-            out.append(shapely.buffer(shapely.affinity.translate(negM, cx, cy), rho) if rho > 0
-                       else shapely.affinity.translate(negM, cx, cy))
+            out.append(
+                shapely.buffer(shapely.affinity.translate(negM, cx, cy), rho)
+                if rho > 0
+                else shapely.affinity.translate(negM, cx, cy)
+            )
             continue
         pieces = [np.asarray(g, float)] if kind == "segment" else _convex_pieces(Polygon(g))
         out.extend(minkowski_sum(p, n) for p in pieces for n in neg)
@@ -111,8 +114,9 @@ def interior_cone(M: Polygon, anchor) -> tuple[float, float]:
     return a0, (a1 - a0) % (2 * math.pi)
 
 
-def active_collision_region(tree: CableStateTree, node: int, cone: tuple[float, float], reach: float,
-                            arc_step: float) -> Polygon:
+def active_collision_region(
+    tree: CableStateTree, node: int, cone: tuple[float, float], reach: float, arc_step: float
+) -> Polygon:
     """Anchor positions (not yet shifted) where the active segment of ``tree`` in state
     ``node`` leaves the anchor in a direction of ``cone``: the tangents to the last object
     whose scan direction (object → anchor) is opposite to the cone."""
@@ -130,18 +134,23 @@ def active_collision_region(tree: CableStateTree, node: int, cone: tuple[float, 
     return shapely.make_valid(Polygon(ring))
 
 
-def platform_reachable_area(robot, theta: float, space: Polygon, trees, nodes, offsets: np.ndarray,
-                            arc_step: float, reach: float):
+def platform_reachable_area(
+    robot, theta: float, space: Polygon, trees, nodes, offsets: np.ndarray, arc_step: float, reach: float
+):
     """``PRA^{S,θ}`` (Eq. 5.14) of structure ``nodes`` (one CST node per cable), or
     ``None`` when the platform has no outline (only its anchors, which the cable-reachable
     areas already keep in the installation space)."""
     M = platform_outline(robot, theta)
     if M is None:
         return None
-    return space.difference(shapely.union_all([
-        fixed_collision_region(robot, M, space, trees),
-        structure_collision_region(M, trees, nodes, offsets, arc_step, reach),
-    ]))
+    return space.difference(
+        shapely.union_all(
+            [
+                fixed_collision_region(robot, M, space, trees),
+                structure_collision_region(M, trees, nodes, offsets, arc_step, reach),
+            ]
+        )
+    )
 
 
 def fixed_collision_region(robot, M: Polygon, space: Polygon, trees):
@@ -152,7 +161,7 @@ def fixed_collision_region(robot, M: Polygon, space: Polygon, trees):
     shapes += [("circle", t.circles[-1]) for t in trees]  # the winch pulleys
     shapes += [("polygon", p) for p in trees[0].disallowed]  # polygon obstacles and disallowed regions
     ring = np.asarray(space.exterior.coords)
-    shapes += [("segment", ring[j:j + 2]) for j in range(len(ring) - 1)]
+    shapes += [("segment", ring[j : j + 2]) for j in range(len(ring) - 1)]
     return swept_region(M, shapes)
 
 

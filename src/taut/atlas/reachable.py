@@ -187,7 +187,11 @@ def cable_reachable_area(tree: CableStateTree, node: int, installation_space=Non
     polygon; without one the region is bounded by a box around the objects)."""
     space = None
     if installation_space is not None:
-        space = installation_space if isinstance(installation_space, Polygon) else Polygon(np.asarray(installation_space, float))
+        space = (
+            installation_space
+            if isinstance(installation_space, Polygon)
+            else Polygon(np.asarray(installation_space, float))
+        )
     bbox = _bbox(tree, space)
     scene = _Scene(tree, node, bbox)
     c, r, d, a0, span = _sweep_frame(tree, node)

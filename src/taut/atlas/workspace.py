@@ -70,7 +70,9 @@ def atlas_workspace(atlas: StructureAtlas, condition="wrench-feasible", step: fl
     :class:`~taut.workspace.conditions.WrenchCondition`) and the pruned chart list."""
     cond = make_condition(condition)
     if not isinstance(cond, WrenchCondition):
-        raise TautError(f"the atlas workspace needs a condition on the structure matrix (wrench-closure, wrench-feasible, static), got {cond.name!r}")
+        raise TautError(
+            f"the atlas workspace needs a condition on the structure matrix (wrench-closure, wrench-feasible, static), got {cond.name!r}"
+        )
     x0, y0, x1, y1 = atlas.reachable_area().bounds
     if step is None:
         step = max(x1 - x0, y1 - y0) / DEFAULT_RESOLUTION

@@ -11,7 +11,6 @@ from taut.errors import PoseError, TautError
 from taut.kinematics.pose import as_poses
 from taut.model.robot import Robot
 
-
 _PI = re.compile(r"^([+-]?)(\d*\.?\d*)\*?pi(?:/(\d*\.?\d+))?$")
 
 

@@ -82,8 +82,16 @@ def cmd_atlas(ns) -> int:
     if ns.out:
         full = data | {
             "chart_list": [_chart_json(atlas, c) for c in range(len(atlas.charts))],
-            "edge_list": [{"charts": [e.charts[0] + 1, e.charts[1] + 1], "cable": e.cable + 1, "kind": e.kind,
-                           "object": e.obj + 1, "segment": e.segment.tolist()} for e in atlas.edges],
+            "edge_list": [
+                {
+                    "charts": [e.charts[0] + 1, e.charts[1] + 1],
+                    "cable": e.cable + 1,
+                    "kind": e.kind,
+                    "object": e.obj + 1,
+                    "segment": e.segment.tolist(),
+                }
+                for e in atlas.edges
+            ],
         }
         with open(ns.out, "w") as fh:
             json.dump(full, fh, indent=1)
@@ -96,9 +104,11 @@ def cmd_atlas(ns) -> int:
     def human(d):
         con = console()
         page = "" if robot.is_point_mass else f" (page θ = {d['theta']:.6g} rad)"
-        con.print(f"[bold]{robot.name}[/]{page}: {d['charts']} charts, {d['edges']} adjacent pairs, "
-                  f"reachable area {d['reachable_area']:.6g} m², {d['condition']} workspace {d['workspace_area']:.6g} m² "
-                  f"({len(d['pruned'])} charts pruned) in {d['time']:.2f} s")
+        con.print(
+            f"[bold]{robot.name}[/]{page}: {d['charts']} charts, {d['edges']} adjacent pairs, "
+            f"reachable area {d['reachable_area']:.6g} m², {d['condition']} workspace {d['workspace_area']:.6g} m² "
+            f"({len(d['pruned'])} charts pruned) in {d['time']:.2f} s"
+        )
         for c in atlas.charts:
             states = "; ".join(contacts_text(st) or "-" for st in c.states)
             con.print(f"  chart {c.index + 1:3d}  area {c.area:10.6f}  wraps [{states}]")
@@ -112,8 +122,14 @@ def register(command) -> None:
     c.description = HELP
     c.formatter_class = argparse.RawDescriptionHelpFormatter
     c.add_argument("--start", metavar="x,y", help="start point (default: the first reference pose)")
-    c.add_argument("--theta", metavar="T", help="orientation [rad] of a rigid platform's atlas page (0 for a point mass)")
-    c.add_argument("--condition", default="wrench-feasible", choices=("wrench-feasible", "wrench-closure", "static"),
-                   help="workspace condition (Alg. 5.2)")
+    c.add_argument(
+        "--theta", metavar="T", help="orientation [rad] of a rigid platform's atlas page (0 for a point mass)"
+    )
+    c.add_argument(
+        "--condition",
+        default="wrench-feasible",
+        choices=("wrench-feasible", "wrench-closure", "static"),
+        help="workspace condition (Alg. 5.2)",
+    )
     c.add_argument("--out", metavar="FILE.json", help="write the charts and edges")
     c.add_argument("--plot", metavar="FILE.png", help="atlas and workspace figure (Figs. 5.4, 5.9)")

@@ -47,7 +47,9 @@ def cmd_check(ns) -> int:
         poses = load_trajectory(robot, spec)
     else:
         known = ", ".join(robot.trajectories) or "none"
-        raise TautError(f"--trajectory: {spec!r} is neither a file nor a built-in trajectory of {robot.name} (built-in: {known})")
+        raise TautError(
+            f"--trajectory: {spec!r} is neither a file nor a built-in trajectory of {robot.name} (built-in: {known})"
+        )
     res = check_poses(robot, poses, method=ns.method)
     first = res.first(res.problems)
     summary = {
@@ -61,8 +63,13 @@ def cmd_check(ns) -> int:
         "force_closure_singular_steps": _runs(res.force_closure_singular),
         "min_clearance": float(np.min(res.proximity.min_clearance)) if len(poses) else None,
     }
-    data = {"robot": robot.name, "trajectory": spec, "capsules": list(res.model.names), "summary": summary,
-            "steps": res.steps()}
+    data = {
+        "robot": robot.name,
+        "trajectory": spec,
+        "capsules": list(res.model.names),
+        "summary": summary,
+        "steps": res.steps(),
+    }
     if ns.plot:
         from taut.viz.check import plot_check
 
@@ -71,10 +78,15 @@ def cmd_check(ns) -> int:
     def human(d):
         con = console()
         s = d["summary"]
-        con.print(f"[bold]{robot.name}[/], trajectory {spec}: {s['poses']} steps, smallest clearance {s['min_clearance']:.4g} m")
+        con.print(
+            f"[bold]{robot.name}[/], trajectory {spec}: {s['poses']} steps, smallest clearance {s['min_clearance']:.4g} m"
+        )
         names = res.model.names
-        for label, key in (("self-collision", "collision_steps"), ("Jacobian singular", "jacobian_singular_steps"),
-                           ("force-closure singular", "force_closure_singular_steps")):
+        for label, key in (
+            ("self-collision", "collision_steps"),
+            ("Jacobian singular", "jacobian_singular_steps"),
+            ("force-closure singular", "force_closure_singular_steps"),
+        ):
             runs = s[key]
             text = ", ".join(f"{a}" if a == b else f"{a}-{b}" for a, b in runs) if runs else "none"
             con.print(f"  {label:<23} steps {text}")
@@ -91,8 +103,18 @@ def register(command) -> None:
     c = command("check", "self-collision and singularity check along a trajectory", cmd_check)
     c.description = HELP
     c.formatter_class = argparse.RawDescriptionHelpFormatter
-    c.add_argument("--trajectory", required=True, metavar="FILE|NAME",
-                   help="trajectory file (CSV, YAML, JSON) or built-in trajectory name (e.g. sim-c)")
-    c.add_argument("--method", default="fast", choices=("fast", "lp"),
-                   help="force-closure test: fast (vectorised) or lp (one LP per step, the reference)")
-    c.add_argument("--plot", metavar="FILE.png", help="clearance and singularity flags over the steps, robot at the first problem")
+    c.add_argument(
+        "--trajectory",
+        required=True,
+        metavar="FILE|NAME",
+        help="trajectory file (CSV, YAML, JSON) or built-in trajectory name (e.g. sim-c)",
+    )
+    c.add_argument(
+        "--method",
+        default="fast",
+        choices=("fast", "lp"),
+        help="force-closure test: fast (vectorised) or lp (one LP per step, the reference)",
+    )
+    c.add_argument(
+        "--plot", metavar="FILE.png", help="clearance and singularity flags over the steps, robot at the first problem"
+    )

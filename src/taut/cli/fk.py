@@ -38,12 +38,19 @@ def cmd_fk(ns) -> int:
         con = console()
         # a row is 7 pose values and n tensions of 7 characters: never squeeze it into "…"
         con.width = max(con.width, 20 + 10 * (7 + robot.n_cables))
-        t = Table(title=f"{robot.name}: {len(res.solutions)} equilibria ({res.subproblems} sub-problems, {res.elapsed_s:.2f} s)")
+        t = Table(
+            title=f"{robot.name}: {len(res.solutions)} equilibria ({res.subproblems} sub-problems, {res.elapsed_s:.2f} s)"
+        )
         for h in ("taut", "x", "y", "z", "a", "b", "c", *(f"τ{i + 1}" for i in range(robot.n_cables)), "stable"):
             t.add_column(h, justify="right")
         for s in res.solutions:
-            t.add_row(",".join(map(str, s.taut)), *(f"{v:.4f}" for v in s.position), *(f"{v:.4f}" for v in s.orientation),
-                      *(f"{v:.4f}" for v in s.tensions), "yes" if s.stable else "no")
+            t.add_row(
+                ",".join(map(str, s.taut)),
+                *(f"{v:.4f}" for v in s.position),
+                *(f"{v:.4f}" for v in s.orientation),
+                *(f"{v:.4f}" for v in s.tensions),
+                "yes" if s.stable else "no",
+            )
         con.print(t)
         if res.undecided:
             con.print(f"[yellow]{res.undecided} boxes could not be certified (near-singular solutions)[/]")
@@ -55,7 +62,9 @@ def cmd_fk(ns) -> int:
 def register(command) -> None:
     c = command("fk", "all equilibria for given cable lengths (direct geometrico-static problem)", cmd_fk)
     c.add_argument("--lengths", help="cable lengths L1,...,Ln (default: the robot's reference lengths)")
-    c.add_argument("--max-taut", type=int, default=None, metavar="K", help="largest number of taut cables (default min(n, 6))")
+    c.add_argument(
+        "--max-taut", type=int, default=None, metavar="K", help="largest number of taut cables (default min(n, 6))"
+    )
     c.add_argument("--workers", type=int, default=1, help="local worker processes")
     c.add_argument("--scheduler", default=None, metavar="ADDRESS", help="dask.distributed scheduler tcp://HOST:PORT")
     c.add_argument("--plot", metavar="FILE.png", help="the robot in every equilibrium found")

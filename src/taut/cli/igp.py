@@ -74,31 +74,43 @@ def cmd_igp(ns) -> int:
             t.add_column(h, justify="right")
         for k, s in enumerate(res.solutions, 1):
             pose = [*s.position, *s.orientation]
-            t.add_row(str(k), *(f"{pose[j]:.4f}" for j in free), *(f"{s.tensions[i - 1]:.4f}" for i in d["taut"]),
-                      "yes" if s.stable else "no")
+            t.add_row(
+                str(k),
+                *(f"{pose[j]:.4f}" for j in free),
+                *(f"{s.tensions[i - 1]:.4f}" for i in d["taut"]),
+                "yes" if s.stable else "no",
+            )
         con.print(t)
         # one column per solution: n cables would not fit across a terminal
         t = Table(title="cable lengths to command (≥ span: slack cable)")
         for h in ("cable", *(f"#{k}" for k in range(1, len(res.solutions) + 1))):
             t.add_column(h, justify="right")
         for i in range(robot.n_cables):
-            t.add_row(str(i + 1), *(f"≥{s.lengths[i]:.4f}" if i + 1 in s.slack else f"{s.lengths[i]:.4f}"
-                                    for s in res.solutions))
+            t.add_row(
+                str(i + 1),
+                *(f"≥{s.lengths[i]:.4f}" if i + 1 in s.slack else f"{s.lengths[i]:.4f}" for s in res.solutions),
+            )
         con.print(t)
         for k, s in enumerate(res.solutions, 1):
             if s.length_violations:
-                con.print(f"[yellow]solution {k}: cables {list(s.length_violations)} are outside their length bounds[/]")
+                con.print(
+                    f"[yellow]solution {k}: cables {list(s.length_violations)} are outside their length bounds[/]"
+                )
 
     def human(d):
         con = console()
         fixed = ", ".join(f"{k}={v:.6g}" for k, v in res.assigned.items())
-        con.print(f"[bold]{robot.name}[/]: {len(res.solutions)} equilibria with cables {d['taut']} taut at {fixed} "
-                  f"({res.boxes} boxes, {res.elapsed_s:.2f} s)")
+        con.print(
+            f"[bold]{robot.name}[/]: {len(res.solutions)} equilibria with cables {d['taut']} taut at {fixed} "
+            f"({res.boxes} boxes, {res.elapsed_s:.2f} s)"
+        )
         if res.solutions:
             tables(con, d)
         if res.exhausted:
-            con.print(f"[yellow]the budget of {ns.max_boxes} boxes ran out ({res.undecided} undecided): the list may be "
-                      "incomplete — a continuum of solutions? (--max-boxes)[/]")
+            con.print(
+                f"[yellow]the budget of {ns.max_boxes} boxes ran out ({res.undecided} undecided): the list may be "
+                "incomplete — a continuum of solutions? (--max-boxes)[/]"
+            )
         elif res.undecided:
             con.print(f"[yellow]{res.undecided} boxes could not be certified (zero-tension or singular solutions)[/]")
 
@@ -113,7 +125,12 @@ def register(command) -> None:
     c.description = HELP
     c.formatter_class = argparse.RawDescriptionHelpFormatter
     c.add_argument("--taut", required=True, help="taut cables, e.g. 1,2,3 (2 to 6 of them)")
-    c.add_argument("--fix", required=True, help="as many pose coordinates as taut cables, e.g. x=0.3,y=0.4,z=0.1,a=5deg")
+    c.add_argument(
+        "--fix", required=True, help="as many pose coordinates as taut cables, e.g. x=0.3,y=0.4,z=0.1,a=5deg"
+    )
     c.add_argument("--max-boxes", type=int, default=100_000, help="branch-and-prune box budget (default 100000)")
-    c.add_argument("--box", help="search box of the free position coordinates xmin,ymin,zmin,xmax,ymax,zmax "
-                                 "(default: the taut cables' reach around their exit points)")
+    c.add_argument(
+        "--box",
+        help="search box of the free position coordinates xmin,ymin,zmin,xmax,ymax,zmax "
+        "(default: the taut cables' reach around their exit points)",
+    )

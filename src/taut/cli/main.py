@@ -10,12 +10,12 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
 
 from taut.cli import args as A
+from taut.cli.progress import progress_bar, wanted
 from taut.errors import TautError
 
 
@@ -110,9 +110,14 @@ def cmd_ik(ns) -> int:
 
     def human(d):
         con = console()
-        con.print(f"[bold]{robot.name}[/] at pose {', '.join(f'{n}={_fmt(v)}' for n, v in zip(robot.pose_names, pose))}")
+        con.print(
+            f"[bold]{robot.name}[/] at pose {', '.join(f'{n}={_fmt(v)}' for n, v in zip(robot.pose_names, pose))}"
+        )
         dims = "xyz"[: robot.dimension]
-        rows = [[str(i + 1), _fmt(length), *(_fmt(c) for c in u)] for i, (length, u) in enumerate(zip(ik.lengths, ik.directions))]
+        rows = [
+            [str(i + 1), _fmt(length), *(_fmt(c) for c in u)]
+            for i, (length, u) in enumerate(zip(ik.lengths, ik.directions))
+        ]
         con.print(_matrix_table("cables", rows, ["cable", "length [m]", *(f"u_{c}" for c in dims)]))
         W = ik.structure_matrix
         rows = [[f"{x:.4g}" for x in row] for row in W]
@@ -135,7 +140,9 @@ def cmd_tensions(ns) -> int:
     if ns.wrench:
         wrench = A.vector(ns.wrench, "--wrench")
         if wrench.size != robot.wrench_dim:
-            raise TautError(f"--wrench: {robot.name} takes a wrench of {robot.wrench_dim} components, got {wrench.size}")
+            raise TautError(
+                f"--wrench: {robot.name} takes a wrench of {robot.wrench_dim} components, got {wrench.size}"
+            )
     res = distribute_tensions(robot, pose, wrench=wrench, method=ns.method)
     feasible = bool(res.feasible)
     data = {
@@ -150,7 +157,11 @@ def cmd_tensions(ns) -> int:
     def human(d):
         con = console()
         if not feasible:
-            why = "no tension distribution exists" if d["status"] == "infeasible" else f"method {ns.method} found no solution"
+            why = (
+                "no tension distribution exists"
+                if d["status"] == "infeasible"
+                else f"method {ns.method} found no solution"
+            )
             con.print(f"[bold red]infeasible[/]: {why} at this pose within the tension bounds")
             return
         rows = [[str(i + 1), _fmt(t)] for i, t in enumerate(res.tensions)]
@@ -158,17 +169,6 @@ def cmd_tensions(ns) -> int:
 
     emit(data, ns.json, human)
     return 0
-
-
-def _progress(enabled: bool):
-    if not enabled:
-        return None, None
-    from rich.progress import Progress
-
-    bar = Progress(transient=True)
-    bar.start()
-    task = bar.add_task("workspace", total=None)
-    return bar, lambda done, total: bar.update(task, completed=done, total=total)
 
 
 def _grid(text: str | None):
@@ -202,15 +202,20 @@ def cmd_workspace(ns) -> int:
         if half.size != robot.wrench_dim:
             raise TautError(f"--box: {robot.name} takes {robot.wrench_dim} half-widths, got {half.size}")
         wrench_set = BoxWrenchSet.around(np.zeros(robot.wrench_dim), half)
-    show = sys.stdout.isatty() and not ns.json
-    with get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor:
-        bar, progress = _progress(show)
-        try:
-            res = evaluate_workspace(robot, ns.condition, grid=grid, resolution=resolution, orientation=orientation,
-                                     wrench_set=wrench_set, executor=executor, progress=progress)
-        finally:
-            if bar is not None:
-                bar.stop()
+    with (
+        get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor,
+        progress_bar("workspace", wanted(ns.json)) as progress,
+    ):
+        res = evaluate_workspace(
+            robot,
+            ns.condition,
+            grid=grid,
+            resolution=resolution,
+            orientation=orientation,
+            wrench_set=wrench_set,
+            executor=executor,
+            progress=progress,
+        )
     data = {"robot": robot.name, "condition": ns.condition} | res.summary()
     if ns.out:
         res.save(ns.out)
@@ -271,8 +276,15 @@ def build_parser() -> argparse.ArgumentParser:
 
     c = command("workspace", "workspace over a grid of poses", cmd_workspace)
     c.add_argument("--condition", required=True, help="wrench-closure | wrench-feasible | static | interference-free")
-    c.add_argument("--grid", help="points per axis (e.g. 50), or per-axis ranges 'x0:x1:n;y0:y1:n[;z0:z1:n]' (one per pose coordinate for a full pose grid)")
-    c.add_argument("--box", metavar="HALF_WIDTHS", help="wrench-feasible: box of wrenches around the external wrench, one half-width per component (default: 10 %% of the weight)")
+    c.add_argument(
+        "--grid",
+        help="points per axis (e.g. 50), or per-axis ranges 'x0:x1:n;y0:y1:n[;z0:z1:n]' (one per pose coordinate for a full pose grid)",
+    )
+    c.add_argument(
+        "--box",
+        metavar="HALF_WIDTHS",
+        help="wrench-feasible: box of wrenches around the external wrench, one half-width per component (default: 10 %% of the weight)",
+    )
     c.add_argument("--orientation", help="fixed platform orientation (theta, or a,b,c) and joint coordinates")
     c.add_argument("--out", metavar="FILE.npz", help="save poses and verdicts")
     c.add_argument("--plot", metavar="FILE.png", help="plot the workspace")

@@ -74,34 +74,52 @@ def cmd_plan(ns) -> int:
     M = WrenchFeasibleManifold.from_robot(robot, E=_ellipsoid(ns.wrench_ellipsoid), fixed=fixed)
     y0, y1 = M.lift(start), M.lift(goal)
     res = plan_path(M.implicit(), y0, y1, ns.radius, metric=M.pose_metric, max_charts=ns.max_charts)
-    data = {"robot": robot.name, "found": res.found, "path": [], "charts": res.charts,
-            "elapsed_s": res.elapsed_s, "min_tension_margin": None, "expanded": res.expanded,
-            "exhausted": res.exhausted, "length": None, "verified": None, "fixed": fixed}
+    data = {
+        "robot": robot.name,
+        "found": res.found,
+        "path": [],
+        "charts": res.charts,
+        "elapsed_s": res.elapsed_s,
+        "min_tension_margin": None,
+        "expanded": res.expanded,
+        "exhausted": res.exhausted,
+        "length": None,
+        "verified": None,
+        "fixed": fixed,
+    }
     poses = lo = hi = None
     if res.found:
         poses = M.pose(res.path)
         lo, hi = M.tension_range(res.path)
         margin = np.minimum(lo - M.f_min, M.f_max - hi).min()
         check = verify_path(robot, poses, E=M.E, subdivide=ns.subdivide)
-        data.update(path=poses.tolist(), min_tension_margin=float(margin), length=res.length,
-                    verified=check.all_feasible)
+        data.update(
+            path=poses.tolist(), min_tension_margin=float(margin), length=res.length, verified=check.all_feasible
+        )
 
     def human(d):
         con = console()
         if d["found"]:
-            con.print(f"[bold]{robot.name}[/]: path of {len(d['path'])} poses, length {d['length']:.4g} "
-                      f"(pose coordinates), {d['charts']} charts, {d['elapsed_s']:.3g} s")
-            con.print(f"min tension margin {d['min_tension_margin']:.4g}; independent check: "
-                      f"{'feasible' if d['verified'] else 'NOT feasible'} at every interpolated pose")
+            con.print(
+                f"[bold]{robot.name}[/]: path of {len(d['path'])} poses, length {d['length']:.4g} "
+                f"(pose coordinates), {d['charts']} charts, {d['elapsed_s']:.3g} s"
+            )
+            con.print(
+                f"min tension margin {d['min_tension_margin']:.4g}; independent check: "
+                f"{'feasible' if d['verified'] else 'NOT feasible'} at every interpolated pose"
+            )
         else:
             why = "the start's component is exhausted" if d["exhausted"] else "the chart limit was reached"
-            con.print(f"[bold]{robot.name}[/]: no path ({why}; {d['charts']} charts explored, "
-                      f"{d['elapsed_s']:.3g} s)")
+            con.print(f"[bold]{robot.name}[/]: no path ({why}; {d['charts']} charts explored, {d['elapsed_s']:.3g} s)")
 
     emit(data, ns.json, human)
     if ns.out and poses is not None:
-        head = "x,y,z,phi,theta,sigma," + ",".join(f"f_min_{i + 1}" for i in range(6)) + "," + \
-            ",".join(f"f_max_{i + 1}" for i in range(6))
+        head = (
+            "x,y,z,phi,theta,sigma,"
+            + ",".join(f"f_min_{i + 1}" for i in range(6))
+            + ","
+            + ",".join(f"f_max_{i + 1}" for i in range(6))
+        )
         np.savetxt(ns.out, np.hstack([poses, lo, hi]), delimiter=",", header=head, comments="")
     if ns.plot:
         from taut.planning.manifold import POSE_NAMES
@@ -122,10 +140,20 @@ def register(command) -> None:
     c.formatter_class = argparse.RawDescriptionHelpFormatter
     c.add_argument("--start", required=True, help="start pose x,y,z,phi,theta,sigma or reference pose name")
     c.add_argument("--goal", required=True, help="goal pose, same syntax")
-    c.add_argument("--fix", help="slice: fixed pose coordinates, e.g. x=0,y=0,sigma=35deg (a name alone takes the start's value)")
-    c.add_argument("--wrench-ellipsoid", help="E of (w-w0)^T E (w-w0) <= 1: e (E = e*I), 6 diagonal or 36 entries (default 1e4)")
-    c.add_argument("--radius", type=float, default=0.2, help="chart radius, the resolution of a 'no path' answer (default 0.2)")
-    c.add_argument("--max-charts", type=int, default=20000, help="stop the search after this many charts (default 20000)")
-    c.add_argument("--subdivide", type=int, default=10, help="interpolated poses per path step for the independent check")
+    c.add_argument(
+        "--fix", help="slice: fixed pose coordinates, e.g. x=0,y=0,sigma=35deg (a name alone takes the start's value)"
+    )
+    c.add_argument(
+        "--wrench-ellipsoid", help="E of (w-w0)^T E (w-w0) <= 1: e (E = e*I), 6 diagonal or 36 entries (default 1e4)"
+    )
+    c.add_argument(
+        "--radius", type=float, default=0.2, help="chart radius, the resolution of a 'no path' answer (default 0.2)"
+    )
+    c.add_argument(
+        "--max-charts", type=int, default=20000, help="stop the search after this many charts (default 20000)"
+    )
+    c.add_argument(
+        "--subdivide", type=int, default=10, help="interpolated poses per path step for the independent check"
+    )
     c.add_argument("--out", metavar="FILE.csv", help="path poses and extreme tensions")
     c.add_argument("--plot", metavar="FILE.png", help="extreme tensions along the path (Fig. 6)")

@@ -28,7 +28,11 @@ def _read_waypoints(spec: str, robot):
             data = data.get("waypoints", data) if isinstance(data, dict) else data
             W = np.asarray(data, dtype=float)
         else:
-            rows = [ln.replace(",", " ").split() for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
+            rows = [
+                ln.replace(",", " ").split()
+                for ln in text.splitlines()
+                if ln.strip() and not ln.lstrip().startswith("#")
+            ]
             W = np.asarray(rows, dtype=float)
     except (ValueError, TypeError, AttributeError) as exc:
         raise TautError(f"--waypoints {spec}: expected rows of numbers ({exc})") from None
@@ -57,8 +61,14 @@ def cmd_trajectory(ns) -> int:
     data["length_controlled"] = res.controlled.tolist()
     if ns.out:
         n = robot.n_cables
-        head = ["time", *robot.pose_names, *(f"l{i + 1}" for i in range(n)), *(f"tau{i + 1}" for i in range(n)),
-                "feasible", *(f"state{i + 1}" for i in range(n))]
+        head = [
+            "time",
+            *robot.pose_names,
+            *(f"l{i + 1}" for i in range(n)),
+            *(f"tau{i + 1}" for i in range(n)),
+            "feasible",
+            *(f"state{i + 1}" for i in range(n)),
+        ]
         with open(ns.out, "w") as fh:
             fh.write(",".join(head) + "\n")
             for s in range(len(t)):
@@ -73,8 +83,10 @@ def cmd_trajectory(ns) -> int:
 
     def human(d):
         con = console()
-        con.print(f"[bold]{robot.name}[/]: {d['samples']} samples over {d['duration']:.3g} s, "
-                  f"{len(d['transitions'])} CST transitions")
+        con.print(
+            f"[bold]{robot.name}[/]: {d['samples']} samples over {d['duration']:.3g} s, "
+            f"{len(d['transitions'])} CST transitions"
+        )
         for e in d["transitions"]:
             con.print(f"  t = {e['time']:8.3f} s  cable {e['cable']}  {e['kind']:6s} object {e['object']}")
         if d["tension_feasible"]:
@@ -91,10 +103,24 @@ def cmd_trajectory(ns) -> int:
 
 def register(command) -> None:
     c = command("trajectory", "VSCR trajectory: wrapping cable states, lengths, transitions, tensions", cmd_trajectory)
-    c.add_argument("--waypoints", default="builtin", metavar="FILE|builtin",
-                   help="waypoints file (x,y per line, or JSON/YAML list), or builtin[:NAME] (default: the robot's first trajectory)")
+    c.add_argument(
+        "--waypoints",
+        default="builtin",
+        metavar="FILE|builtin",
+        help="waypoints file (x,y per line, or JSON/YAML list), or builtin[:NAME] (default: the robot's first trajectory)",
+    )
     c.add_argument("--dt", type=float, default=0.01, help="sampling step [s] (default 0.01)")
-    c.add_argument("--speed", type=float, default=None, help="speed along waypoint moves [m/s] (default: the trajectory's, else 0.1)")
-    c.add_argument("--dwell", type=float, default=None, help="dwell at each waypoint [s] (default: the trajectory's, 1 s for files)")
+    c.add_argument(
+        "--speed",
+        type=float,
+        default=None,
+        help="speed along waypoint moves [m/s] (default: the trajectory's, else 0.1)",
+    )
+    c.add_argument(
+        "--dwell",
+        type=float,
+        default=None,
+        help="dwell at each waypoint [s] (default: the trajectory's, 1 s for files)",
+    )
     c.add_argument("--out", metavar="FILE.csv", help="per-sample times, poses, lengths, tensions, cable states")
     c.add_argument("--plot", metavar="FILE.png", help="lengths over time with transitions, and robot snapshots")

@@ -9,7 +9,17 @@ from taut.collision.singularity import force_closure_singular, jacobian_singular
 from taut.collision.trajectory import CheckResult, check_poses, load_trajectory, sample_waypoints, trajectory_poses
 
 __all__ = [
-    "CapsuleModel", "CheckResult", "ProximityResult", "capsule_model", "capsule_segments", "check_poses",
-    "force_closure_singular", "jacobian_singular", "load_trajectory", "positive_span_lp", "proximity",
-    "sample_waypoints", "trajectory_poses",
+    "CapsuleModel",
+    "CheckResult",
+    "ProximityResult",
+    "capsule_model",
+    "capsule_segments",
+    "check_poses",
+    "force_closure_singular",
+    "jacobian_singular",
+    "load_trajectory",
+    "positive_span_lp",
+    "proximity",
+    "sample_waypoints",
+    "trajectory_poses",
 ]

@@ -92,7 +92,9 @@ def capsule_model(robot: Robot) -> CapsuleModel:
     for i in range(n):
         for j in range(i + 1, n):
             same_exit = np.linalg.norm(exits[i] - exits[j]) <= ON_TOL
-            same_anchor = robot.cable_bodies[i] == robot.cable_bodies[j] and np.linalg.norm(anchors[i] - anchors[j]) <= ON_TOL
+            same_anchor = (
+                robot.cable_bodies[i] == robot.cable_bodies[j] and np.linalg.norm(anchors[i] - anchors[j]) <= ON_TOL
+            )
             pairs.append((i, j))
             shared.append((same_exit, same_anchor))
             cut.append((radii[i] + radii[j]) / math.sin(SHARED_END_ANGLE))
@@ -103,11 +105,21 @@ def capsule_model(robot: Robot) -> CapsuleModel:
             pairs.append((i, n + c))
             shared.append((False, False))
             cut.append(0.0)
-    return CapsuleModel(tuple(names), radii, body, local, n, np.array(pairs, int).reshape(-1, 2),
-                        np.array(shared, bool).reshape(-1, 2), np.array(cut, float))
+    return CapsuleModel(
+        tuple(names),
+        radii,
+        body,
+        local,
+        n,
+        np.array(pairs, int).reshape(-1, 2),
+        np.array(shared, bool).reshape(-1, 2),
+        np.array(cut, float),
+    )
 
 
-def capsule_segments(robot: Robot, poses: np.ndarray, model: CapsuleModel | None = None) -> tuple[np.ndarray, np.ndarray]:
+def capsule_segments(
+    robot: Robot, poses: np.ndarray, model: CapsuleModel | None = None
+) -> tuple[np.ndarray, np.ndarray]:
     """End points ``A, B`` of every capsule at each pose, ``(N, C, 3)`` each (planar robots
     get ``z = 0``).  Cable capsules run from the exit point (``A``) to the anchor (``B``).
     ``poses`` must already be validated (:func:`taut.kinematics.as_poses`)."""

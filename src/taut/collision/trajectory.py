@@ -33,8 +33,8 @@ from taut.collision.capsules import CapsuleModel, capsule_model
 from taut.collision.proximity import ProximityResult, proximity
 from taut.collision.singularity import JACOBIAN_TOL, force_closure_singular, jacobian_singular
 from taut.errors import PoseError, TautError
-from taut.kinematics.jointed import actuator_jacobian
 from taut.kinematics.inverse import MIN_LENGTH, _anchors
+from taut.kinematics.jointed import actuator_jacobian
 from taut.kinematics.pose import as_poses
 from taut.model.robot import Robot
 
@@ -48,8 +48,10 @@ def _fill(robot: Robot, waypoints: np.ndarray, what: str) -> np.ndarray:
     d, size = robot.dimension, robot.pose_size
     if waypoints.ndim != 2 or waypoints.shape[1] not in (d, size):
         width = waypoints.shape[1] if waypoints.ndim == 2 else waypoints.shape
-        raise PoseError(f"{what}: {robot.name} takes poses of {size} coordinates ({', '.join(robot.pose_names)}) "
-                        f"or positions of {d}, got {width}")
+        raise PoseError(
+            f"{what}: {robot.name} takes poses of {size} coordinates ({', '.join(robot.pose_names)}) "
+            f"or positions of {d}, got {width}"
+        )
     if waypoints.shape[1] == size:
         return waypoints
     if robot.reference is not None and robot.reference.poses:
@@ -102,8 +104,10 @@ def _csv(text: str, robot: Robot, source: str) -> np.ndarray:
             if not header:
                 raise PoseError(f"{source}, line {lineno}: expected numbers, got {line!r}") from None
             if [c.lower() for c in cells] != [n.lower() for n in robot.pose_names]:
-                raise PoseError(f"{source}, line {lineno}: expected numbers or the header "
-                                f"{','.join(robot.pose_names)}, got {line!r}") from None
+                raise PoseError(
+                    f"{source}, line {lineno}: expected numbers or the header "
+                    f"{','.join(robot.pose_names)}, got {line!r}"
+                ) from None
     if not rows:
         raise PoseError(f"{source}: no poses")
     widths = {len(r) for r in rows}
@@ -124,8 +128,10 @@ def load_trajectory(robot: Robot, path) -> np.ndarray:
     if path.suffix.lower() == ".csv":
         poses = _csv(text, robot, source)
         if poses.shape[1] != robot.pose_size:
-            raise PoseError(f"{source}: {robot.name} takes poses of {robot.pose_size} coordinates "
-                            f"({', '.join(robot.pose_names)}), got {poses.shape[1]}")
+            raise PoseError(
+                f"{source}: {robot.name} takes poses of {robot.pose_size} coordinates "
+                f"({', '.join(robot.pose_names)}), got {poses.shape[1]}"
+            )
         return as_poses(robot, poses)[0]
     try:
         if path.suffix.lower() == ".json":
@@ -147,8 +153,10 @@ def load_trajectory(robot: Robot, path) -> np.ndarray:
     except (TypeError, ValueError):
         raise PoseError(f"{source}: every pose must be a list of {robot.pose_size} numbers") from None
     if poses.ndim != 2 or poses.shape[1] != robot.pose_size:
-        raise PoseError(f"{source}: {robot.name} takes poses of {robot.pose_size} coordinates "
-                        f"({', '.join(robot.pose_names)}), got shape {poses.shape}")
+        raise PoseError(
+            f"{source}: {robot.name} takes poses of {robot.pose_size} coordinates "
+            f"({', '.join(robot.pose_names)}), got shape {poses.shape}"
+        )
     try:
         return as_poses(robot, poses)[0]
     except PoseError as exc:
@@ -198,8 +206,9 @@ class CheckResult:
         ]
 
 
-def check_poses(robot: Robot, poses, *, jacobian_tol: float = JACOBIAN_TOL, method: str = "fast",
-                model: CapsuleModel | None = None) -> CheckResult:
+def check_poses(
+    robot: Robot, poses, *, jacobian_tol: float = JACOBIAN_TOL, method: str = "fast", model: CapsuleModel | None = None
+) -> CheckResult:
     """Self-collision and singularity check at each of the poses ``(N, pose_size)``."""
     arr, _ = as_poses(robot, poses)
     model = capsule_model(robot) if model is None else model

@@ -8,5 +8,15 @@ from taut.dgp.solve import DGPResult, DGPSolution, solve_dgp
 from taut.dgp.stability import is_stable, reduced_hessian
 from taut.dgp.tracking import track, track_path
 
-__all__ = ["DGPResult", "DGPSolution", "IGPResult", "IGPSolution", "is_stable", "reduced_hessian", "solve_dgp", "solve_igp", "track",
-           "track_path"]
+__all__ = [
+    "DGPResult",
+    "DGPSolution",
+    "IGPResult",
+    "IGPSolution",
+    "is_stable",
+    "reduced_hessian",
+    "solve_dgp",
+    "solve_igp",
+    "track",
+    "track_path",
+]

@@ -151,7 +151,7 @@ class Subproblem:
         idx = list(self.taut)
         tau = np.zeros(n)
         if self.tension_unknowns:
-            tau[idx] = x[self.pose_unknowns:] * lengths[idx]
+            tau[idx] = x[self.pose_unknowns :] * lengths[idx]
         else:
             v = evaluate_point(self.statics.tape, np.asarray(x, float))
             m = len(idx)
@@ -249,7 +249,7 @@ def _coordinates(refs: np.ndarray, body: np.ndarray) -> list[Fraction]:
         return sum(c[0][k] * _exact_cross(c[1], c[2])[k] for k in range(3))
 
     d = det(cols)
-    return [det(cols[:j] + [rhs] + cols[j + 1:]) / d for j in range(3)]
+    return [det(cols[:j] + [rhs] + cols[j + 1 :]) / d for j in range(3)]
 
 
 def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], normal: bool = True) -> Subproblem:
@@ -322,8 +322,9 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
 
     def load_moment(pole, k) -> Expr:
         k1, k2 = (k + 1) % 3, (k + 2) % 3
-        return ((g[k1] - float(pole[k1])) * _enclose(f[k2]) - (g[k2] - float(pole[k2])) * _enclose(f[k1])) \
-            + _enclose(mext[k])
+        return ((g[k1] - float(pole[k1])) * _enclose(f[k2]) - (g[k2] - float(pole[k2])) * _enclose(f[k1])) + _enclose(
+            mext[k]
+        )
 
     def moments(pole) -> list[Expr]:
         out = []
@@ -337,8 +338,9 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
     extra = []
     if normal:
         # redundant: n has the (constant) length of e₁ × e₂ and is orthogonal to e₁, e₂
-        d01, d02, d12 = (sum((x - y) ** 2 for x, y in zip(_exact(refs[i]), _exact(refs[j])))
-                         for i, j in ((0, 1), (0, 2), (1, 2)))
+        d01, d02, d12 = (
+            sum((x - y) ** 2 for x, y in zip(_exact(refs[i]), _exact(refs[j]))) for i, j in ((0, 1), (0, 2), (1, 2))
+        )
         dot = (d01 + d02 - d12) / 2
         area2 = d01 * d02 - dot * dot  # ‖e₁ × e₂‖² = ‖e₁‖²‖e₂‖² − (e₁·e₂)²
         extra.append((sum((nk * nk for nk in n12), const(0.0)) - _enclose(area2), (0.0, 0.0)))
@@ -365,13 +367,15 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
             extra.append((dist2(q[s], a[j]), (lower, upper)))
     system = compile_system(unknowns, eqs, extra)
     pole = a[taut[0]]
-    J = [[float(a[i][k]) - b[i][k] for i in taut] for k in range(3)] + [[moment_arm(i, pole, k) for i in taut] for k in range(3)]
+    J = [[float(a[i][k]) - b[i][k] for i in taut] for k in range(3)] + [
+        [moment_arm(i, pole, k) for i in taut] for k in range(3)
+    ]
     rhs = [-_enclose(f[k]) for k in range(3)] + [-load_moment(pole, k) for k in range(3)]
     statics_tape = compile_tape([e for row in J for e in row] + rhs, [(-np.inf, np.inf)] * (6 * m + 6))
 
     lo = np.full(unknowns, -np.inf)
     hi = np.full(unknowns, np.inf)
-    for s, (lab, body) in enumerate(zip(labels, refs)):
+    for s, body in enumerate(refs):
         for j in taut:
             # radius rounded up by a few ulps, the box edges outwards: the sphere is inside
             rad = (lengths[j] + float(np.linalg.norm(body - r[j]))) * (1.0 + 4.0 * np.finfo(float).eps)
@@ -382,5 +386,6 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
         lo[9:12], hi[9:12] = -rad, rad
     lo[pose:], hi[pose:] = 0.0, np.inf
     primary = np.arange(unknowns) < 9
-    return Subproblem(tuple(taut), system, lo, hi, primary, refs, StaticsFilter(statics_tape, m, sign_only=m == 6),
-                      pose)
+    return Subproblem(
+        tuple(taut), system, lo, hi, primary, refs, StaticsFilter(statics_tape, m, sign_only=m == 6), pose
+    )

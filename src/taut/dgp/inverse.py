@@ -167,8 +167,9 @@ def _check_assigned(robot: Robot, assigned: dict, m: int) -> dict[int, float]:
             raise PoseError(f"pose coordinate {names[k]!r} must be finite, got {value!r}")
         out[k] = v
     if len(out) != m:
-        raise PoseError(f"with {m} taut cables assign exactly {m} of the pose coordinates "
-                        f"({', '.join(names)}), got {len(out)}")
+        raise PoseError(
+            f"with {m} taut cables assign exactly {m} of the pose coordinates ({', '.join(names)}), got {len(out)}"
+        )
     return out
 
 
@@ -328,10 +329,10 @@ def _build(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo,
     load0 = anchor_load(j0)
     forces = [sum((t[i] * span[i][k] for i in taut), const(fl[k])) for k in range(3)]
     moments = [sum((t[i] * arms[i][k] for i in taut), load0[k]) for k in range(3)]
-    circles = [c ** 2 + s ** 2 - 1.0 for k, (c, s) in enumerate(cs) if k in free_ang]
+    circles = [c**2 + s**2 - 1.0 for k, (c, s) in enumerate(cs) if k in free_ang]
     # redundant: the moments about the axes through two anchors or two exit points, each
     # free of two tensions — what lets HC4 narrow the orientation before the tensions
-    pairs = [(i, j) for n1, i in enumerate(taut) for j in taut[n1 + 1:]]
+    pairs = [(i, j) for n1, i in enumerate(taut) for j in taut[n1 + 1 :]]
     axes = [anchor_axis(i, j) for i, j in pairs if np.any(r[j] != r[i])]
     axes += [exit_axis(i, j) for i, j in pairs if np.any(a[j] != a[i])]
     extra = [(e, (0.0, 0.0)) for e in axes]
@@ -349,17 +350,18 @@ def _build(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo,
     lo, hi = np.empty(nv), np.empty(nv)
     np_ = len(free_pos)
     lo[:np_], hi[:np_] = pos_lo[free_pos], pos_hi[free_pos]
-    lo[np_:nv - m], hi[np_:nv - m] = -1.0, 1.0
+    lo[np_ : nv - m], hi[np_ : nv - m] = -1.0, 1.0
     half = _half_turn_restricted(robot.orientation, free_ang)
     if half is not None:
         lo[np_ + 2 * free_ang.index(half[0]) + half[1]] = 0.0
-    lo[nv - m:], hi[nv - m:] = 0.0, np.inf
+    lo[nv - m :], hi[nv - m :] = 0.0, np.inf
     primary = np.arange(nv) < nv - m
     return _Problem(system, statics, lo, hi, primary, free_pos, free_ang)
 
 
-def solve_igp(robot: Robot, taut, assigned: dict, *, box=None, eps: float = 1e-7,
-              max_boxes: int = 100_000) -> IGPResult:
+def solve_igp(
+    robot: Robot, taut, assigned: dict, *, box=None, eps: float = 1e-7, max_boxes: int = 100_000
+) -> IGPResult:
     """All certified solutions of the inverse geometrico-static problem (module docstring).
 
     ``taut``: the 1-based numbers of the ``m`` taut cables (``2 ≤ m ≤ 6``); ``assigned``:
@@ -388,20 +390,34 @@ def solve_igp(robot: Robot, taut, assigned: dict, *, box=None, eps: float = 1e-7
     exhausted = False
     if np.all(pos_lo < pos_hi):  # the taut cables' reach boxes can miss each other
         pb = _build(robot, idx, fixed, pos_lo, pos_hi)
-        res = branch_and_prune(pb.system, pb.lo, pb.hi, primary=pb.primary, eps=eps, filters=(pb.statics,),
-                               certify_width=0.5, max_boxes=max_boxes)
+        res = branch_and_prune(
+            pb.system,
+            pb.lo,
+            pb.hi,
+            primary=pb.primary,
+            eps=eps,
+            filters=(pb.statics,),
+            certify_width=0.5,
+            max_boxes=max_boxes,
+        )
         solutions = [_solution(robot, idx, fixed, pb, c) for c in res.solutions]
         solutions.sort(key=lambda s: (not s.stable, *s.position, *s.orientation))
         undecided, boxes, exhausted = len(res.undecided), min(res.boxes, max_boxes), res.boxes > max_boxes
-    return IGPResult(solutions, {names[k]: v for k, v in sorted(fixed.items())}, undecided, boxes, exhausted,
-                     time.perf_counter() - t0)
+    return IGPResult(
+        solutions,
+        {names[k]: v for k, v in sorted(fixed.items())},
+        undecided,
+        boxes,
+        exhausted,
+        time.perf_counter() - t0,
+    )
 
 
 def _solution(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pb: _Problem, cert) -> IGPSolution:
     x = cert.x
     pose = np.array([fixed.get(k, 0.0) for k in range(6)])
     pose[pb.free_pos] = x[: len(pb.free_pos)]
-    cs = x[len(pb.free_pos): len(pb.free_pos) + 2 * len(pb.free_ang)].reshape(-1, 2)
+    cs = x[len(pb.free_pos) : len(pb.free_pos) + 2 * len(pb.free_ang)].reshape(-1, 2)
     pose[[3 + k for k in pb.free_ang]] = np.arctan2(cs[:, 1], cs[:, 0])
     if robot.orientation == "tilt-torsion" and 2 in pb.free_ang:  # the unknown was ψ = σ − φ
         pose[5] = math.remainder(pose[3] + pose[5], 2 * math.pi)
@@ -412,12 +428,21 @@ def _solution(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pb: 
     lengths = np.linalg.norm(a - b, axis=1)
     idx = list(taut)
     tensions = np.zeros(robot.n_cables)
-    tensions[idx] = x[-len(taut):] * lengths[idx]
+    tensions[idx] = x[-len(taut) :] * lengths[idx]
     lmin, lmax = robot.length_bounds
     slack = [k for k in range(robot.n_cables) if k not in taut]
     # a slack cable can be paid out beyond its span, so only its upper bound can fail
-    out_of_bounds = [k for k in range(robot.n_cables)
-                     if lengths[k] > lmax[k] or (k in taut and lengths[k] < lmin[k])]
+    out_of_bounds = [k for k in range(robot.n_cables) if lengths[k] > lmax[k] or (k in taut and lengths[k] < lmin[k])]
     stable = is_stable(a[idx], b[idx], p + R @ gp, tensions[idx], lengths[idx])
-    return IGPSolution(tuple(i + 1 for i in taut), p, pose[3:], tensions, lengths, tuple(k + 1 for k in slack),
-                       tuple(k + 1 for k in out_of_bounds), stable, cert.width, cert.radius)
+    return IGPSolution(
+        tuple(i + 1 for i in taut),
+        p,
+        pose[3:],
+        tensions,
+        lengths,
+        tuple(k + 1 for k in slack),
+        tuple(k + 1 for k in out_of_bounds),
+        stable,
+        cert.width,
+        cert.radius,
+    )

@@ -94,7 +94,9 @@ def single_cable_equilibria(robot: Robot, lengths: np.ndarray, i: int) -> list[d
             wpar = np.dot(w0, fh) * fh
             wperp = w0 - wpar
             base = c + wpar
-            conds.append((base @ base + wperp @ wperp - lengths[k] ** 2, 2.0 * base @ wperp, 2.0 * base @ np.cross(fh, wperp)))
+            conds.append(
+                (base @ base + wperp @ wperp - lengths[k] ** 2, 2.0 * base @ wperp, 2.0 * base @ np.cross(fh, wperp))
+            )
         for lo, hi in _arcs(conds):
             R = _axis_rotation(fh, 0.5 * (lo + hi)) @ R0
             tau = np.zeros(robot.n_cables)

@@ -140,8 +140,18 @@ def _solve_piece(job):
     out: list[DGPSolution] = []
     if len(taut) == 1:
         for s in single_cable_equilibria(robot, lengths, taut[0]):
-            out.append(DGPSolution((taut[0] + 1,), s["p"], angles_from_matrix(s["R"], robot.orientation), s["tensions"],
-                                   s["stable"], 0.0, 0.0, s["continuum"]))
+            out.append(
+                DGPSolution(
+                    (taut[0] + 1,),
+                    s["p"],
+                    angles_from_matrix(s["R"], robot.orientation),
+                    s["tensions"],
+                    s["stable"],
+                    0.0,
+                    0.0,
+                    s["continuum"],
+                )
+            )
         return out, [None] * len(out), 0, 0
     sp, pieces = _prepared(robot, lengths, taut, split)
     if k >= len(pieces):  # fewer pieces hold solutions than were asked for
@@ -150,9 +160,21 @@ def _solve_piece(job):
     width = certify_width(len(taut))
     # the statics filter on the boxes Krawczyk is tried on: on wider ones its interval Gauss
     # elimination fails (95 % of CoGiRo's 2, 3, 6, 7 boxes) and it prunes nothing
-    res = branch_and_prune(sp.system, lo, hi, primary=sp.primary, eps=eps, filters=(sp.statics,),
-                           certify_width=width, passes=4, ratio=HC4_RATIO, domain=(sp.lo, sp.hi),
-                           bisection="smear", tube=sp.geometry, filter_width=width)
+    res = branch_and_prune(
+        sp.system,
+        lo,
+        hi,
+        primary=sp.primary,
+        eps=eps,
+        filters=(sp.statics,),
+        certify_width=width,
+        passes=4,
+        ratio=HC4_RATIO,
+        domain=(sp.lo, sp.hi),
+        bisection="smear",
+        tube=sp.geometry,
+        filter_width=width,
+    )
     idx = list(taut)
     undecided = len(res.undecided)
     certs = []
@@ -183,8 +205,15 @@ def _solve_subset(job) -> tuple[list[DGPSolution], int, int]:
     return sols, undecided, boxes
 
 
-def solve_dgp(robot: Robot, lengths=None, *, max_taut: int | None = None, executor=None, eps: float = 1e-7,
-              split: int | None = None) -> DGPResult:
+def solve_dgp(
+    robot: Robot,
+    lengths=None,
+    *,
+    max_taut: int | None = None,
+    executor=None,
+    eps: float = 1e-7,
+    split: int | None = None,
+) -> DGPResult:
     """All admissible equilibria (``τ ≥ 0``) for the cable lengths (default: the robot's
     ``reference.lengths``), each with its stability flag and certificate.
 
@@ -211,8 +240,11 @@ def solve_dgp(robot: Robot, lengths=None, *, max_taut: int | None = None, execut
     if split is None:
         split = 0 if isinstance(ex, SerialExecutor) else 4
     subsets = [taut for m in range(top, 0, -1) for taut in combinations(range(n), m)]
-    jobs = [(robot, lengths, taut, eps, split if len(taut) >= 3 else 0, k)
-            for taut in subsets for k in range(2 ** split if len(taut) >= 3 else 1)]
+    jobs = [
+        (robot, lengths, taut, eps, split if len(taut) >= 3 else 0, k)
+        for taut in subsets
+        for k in range(2**split if len(taut) >= 3 else 1)
+    ]
     try:
         parts = ex.map(_solve_piece, jobs)
     finally:

@@ -38,7 +38,6 @@ import weakref
 from dataclasses import dataclass, field
 
 import numpy as np
-
 from numba import njit
 
 from taut.dgp.formulation import Subproblem, _frame, build_subproblem, load
@@ -67,7 +66,7 @@ class _Compiled:
     nodes: np.ndarray  #: tape index of the CONST node ``ρ_i`` of each taut cable's length equation
     args: tuple  #: the leading arguments of :func:`_update` (tapes, geometry, taut indices)
 
-    def update(self, lengths: np.ndarray, s: "_State"):
+    def update(self, lengths: np.ndarray, s: _State):
         """:func:`_update` from ``s`` to ``lengths``: the length constants of the tape are
         patched in place first (one update at a time per process, as tracking runs)."""
         tape = self.sub.system.tape
@@ -115,9 +114,20 @@ def _compiled(robot: Robot, taut: tuple[int, ...]) -> _Compiled:
             assert tape.parents(k) == 1, "a length constant is shared: it cannot be patched per update"
             nodes.append(k)
         system, statics = sub.system, sub.statics.tape
-        args = (*system.tape.arrays[:7], system.n_equations, *system.jacobian.arrays[:7], system.rows, system.cols,
-                *statics.arrays[:7], sub.body_refs, robot.anchors, robot.exits, rc.load_point,
-                np.array(taut, np.int64), rc.convention)
+        args = (
+            *system.tape.arrays[:7],
+            system.n_equations,
+            *system.jacobian.arrays[:7],
+            system.rows,
+            system.cols,
+            *statics.arrays[:7],
+            sub.body_refs,
+            robot.anchors,
+            robot.exits,
+            rc.load_point,
+            np.array(taut, np.int64),
+            rc.convention,
+        )
         c = per_robot[taut] = _Compiled(sub, np.array(nodes, np.int64), args)
     return c
 
@@ -134,8 +144,42 @@ class _State:
 
 
 @njit(cache=True)
-def _update(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend, rows, cols,
-            sop, sa, sb, sclo, schi, sstart, send, refs, anchors, exits, gp, idx, convention, lengths, p0, R0, tau0):
+def _update(
+    op,
+    a,
+    b,
+    clo,
+    chi,
+    start,
+    end,
+    h,
+    jop,
+    ja,
+    jb,
+    jclo,
+    jchi,
+    jstart,
+    jend,
+    rows,
+    cols,
+    sop,
+    sa,
+    sb,
+    sclo,
+    schi,
+    sstart,
+    send,
+    refs,
+    anchors,
+    exits,
+    gp,
+    idx,
+    convention,
+    lengths,
+    p0,
+    R0,
+    tau0,
+):
     """Steps 1–2 of the module docstring and the solution's data, in one compiled call.
 
     The unknowns of the pose ``(p0, R0)`` and tensions ``tau0`` (the three ``refs``
@@ -151,8 +195,31 @@ def _update(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, 
         x0[3 * s : 3 * s + 3] = p0 + R0 @ refs[s]
     for j in range(h - pose):
         x0[pose + j] = tau0[idx[j]] / lengths[idx[j]]
-    status, x, lo, hi = certified_step(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend,
-                                        rows, cols, x0, BOX_MARGIN, BOX_FLOOR, 1e-13, 30, 10)
+    status, x, lo, hi = certified_step(
+        op,
+        a,
+        b,
+        clo,
+        chi,
+        start,
+        end,
+        h,
+        jop,
+        ja,
+        jb,
+        jclo,
+        jchi,
+        jstart,
+        jend,
+        rows,
+        cols,
+        x0,
+        BOX_MARGIN,
+        BOX_FLOOR,
+        1e-13,
+        30,
+        10,
+    )
     width = np.max(hi - lo)
     tau, spans = np.zeros(n), np.zeros(n)
     if status != 1:
@@ -208,8 +275,9 @@ def _advance(robot: Robot, s: _State, lengths: np.ndarray) -> tuple[_State, floa
         tried.append(taut)
         out = _attempt(robot, s, taut, lengths)
         if isinstance(out, str):
-            raise TrackingLostError(f"tracking lost with taut cables {[i + 1 for i in taut]} "
-                                    f"at lengths {lengths.tolist()}: {out}")
+            raise TrackingLostError(
+                f"tracking lost with taut cables {[i + 1 for i in taut]} at lengths {lengths.tolist()}: {out}"
+            )
         new, width, dist = out
         negative = [i for i in taut if new.tensions[i] < 0.0]
         stretched = [k for k in range(robot.n_cables) if k not in taut and dist[k] > lengths[k]]
@@ -222,8 +290,10 @@ def _advance(robot: Robot, s: _State, lengths: np.ndarray) -> tuple[_State, floa
             add = max(stretched, key=lambda k: dist[k] - lengths[k])
             nxt = tuple(sorted(taut + (add,)))
         if nxt in tried:
-            raise TrackingLostError(f"tracking lost at lengths {lengths.tolist()}: the taut set cycles through "
-                                    f"{[[i + 1 for i in t] for t in tried]}")
+            raise TrackingLostError(
+                f"tracking lost at lengths {lengths.tolist()}: the taut set cycles through "
+                f"{[[i + 1 for i in t] for t in tried]}"
+            )
         taut = nxt
 
 
@@ -268,8 +338,10 @@ def track_path(robot: Robot, start_solution, lengths_sequence) -> list[DGPSoluti
     if rows.size == 0:
         return []
     if rows.ndim != 2 or rows.shape[1] != robot.n_cables:
-        raise TautError(f"{robot.name} has {robot.n_cables} cables: give one row of {robot.n_cables} lengths "
-                        f"per update, got an array of shape {rows.shape}")
+        raise TautError(
+            f"{robot.name} has {robot.n_cables} cables: give one row of {robot.n_cables} lengths "
+            f"per update, got an array of shape {rows.shape}"
+        )
     for row in rows[~np.all(np.isfinite(rows) & (rows > 0), axis=1)][:1]:
         check_lengths(robot, row)  # raises, naming what is wrong
     out, s = [], None

@@ -72,7 +72,9 @@ def circle_circle_tangents(c1, r1, c2, r2):
     dir2 = np.array([1.0, -1.0, -1.0, 1.0])
     c1 = np.asarray(c1, float)[..., None, :]
     c2 = np.asarray(c2, float)[..., None, :]
-    a, b, _, _, _ = directed_tangent(c1, np.asarray(r1, float)[..., None], dir1, c2, np.asarray(r2, float)[..., None], dir2)
+    a, b, _, _, _ = directed_tangent(
+        c1, np.asarray(r1, float)[..., None], dir1, c2, np.asarray(r2, float)[..., None], dir2
+    )
     return a, b, dir1, dir2
 
 

@@ -10,7 +10,25 @@ from taut.interval.krawczyk import Certificate, certify, inflate, krawczyk, newt
 from taut.interval.linear import LinearFilter, interval_gauss, preconditioned_solve
 
 __all__ = [
-    "BranchAndPruneResult", "Certificate", "Interval", "LinearFilter", "System", "branch_and_prune", "centred_form",
-    "certify", "compile_system", "const", "contract", "derivative", "evaluate", "evaluate_point",
-    "inflate", "interval_gauss", "krawczyk", "newton", "preconditioned_solve", "sqrt", "variables",
+    "BranchAndPruneResult",
+    "Certificate",
+    "Interval",
+    "LinearFilter",
+    "System",
+    "branch_and_prune",
+    "centred_form",
+    "certify",
+    "compile_system",
+    "const",
+    "contract",
+    "derivative",
+    "evaluate",
+    "evaluate_point",
+    "inflate",
+    "interval_gauss",
+    "krawczyk",
+    "newton",
+    "preconditioned_solve",
+    "sqrt",
+    "variables",
 ]

@@ -35,7 +35,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-
 from numba import njit
 
 from taut.interval.expression import System
@@ -178,8 +177,24 @@ def branch_and_prune(
         raise ValueError(f"bisection must be 'width' or 'smear', got {bisection!r}")
     smear = bisection == "smear"
     if method != "python" and kernel_ok:
-        return _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters,
-                                       passes, gain, ratio, domain, smear, tube, filter_width)
+        return _branch_and_prune_numba(
+            system,
+            lo,
+            hi,
+            primary,
+            eps,
+            certify_width,
+            newton_width,
+            max_boxes,
+            filters,
+            passes,
+            gain,
+            ratio,
+            domain,
+            smear,
+            tube,
+            filter_width,
+        )
     lo0, hi0 = _domain(lo, hi, domain)
     primary = np.ones(lo0.size, bool) if primary is None else np.asarray(primary, bool)
     jac = (*system.jacobian.arrays[:7], system.rows, system.cols, system.n_equations)
@@ -202,8 +217,22 @@ def branch_and_prune(
             continue
         if tube:
             vl, vh = slopes(system, lo, hi, tube_points)
-            if tube_kernel(*system.tape.arrays[:5], system.tape.end, tube, tube_vars, dependent, system.rows,
-                           system.cols, vl, vh, lo, hi) == 2:
+            if (
+                tube_kernel(
+                    *system.tape.arrays[:5],
+                    system.tape.end,
+                    tube,
+                    tube_vars,
+                    dependent,
+                    system.rows,
+                    system.cols,
+                    vl,
+                    vh,
+                    lo,
+                    hi,
+                )
+                == 2
+            ):
                 continue
         width = hi - lo
         if _primary_width(lo, hi, primary) < certify_width and np.all(np.isfinite(width)):
@@ -263,12 +292,62 @@ _DONE, _CERTIFY, _UNDECIDED, _MAX_BOXES, _STACK_FULL = range(5)
 
 
 @njit(cache=True, fastmath=False)
-def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
-           jop, ja, jb, jclo, jchi, jstart, jend, rows, cols,
-           fop, fa, fb, fclo, fchi, fstart, fend, fm, fsign,
-           stk_lo, stk_hi, sp, sol_x, sol_r, nsol, lo0, hi0, primary,
-           eps, certify_width, newton_width, max_boxes, boxes, out, passes, gain, ratio, stats, smear,
-           tube_g, tube_vars, dependent, tube_points, krawczyk_points, filter_width):
+def _drive(
+    op,
+    a,
+    b,
+    clo,
+    chi,
+    start,
+    end,
+    blo,
+    bhi,
+    h,
+    jop,
+    ja,
+    jb,
+    jclo,
+    jchi,
+    jstart,
+    jend,
+    rows,
+    cols,
+    fop,
+    fa,
+    fb,
+    fclo,
+    fchi,
+    fstart,
+    fend,
+    fm,
+    fsign,
+    stk_lo,
+    stk_hi,
+    sp,
+    sol_x,
+    sol_r,
+    nsol,
+    lo0,
+    hi0,
+    primary,
+    eps,
+    certify_width,
+    newton_width,
+    max_boxes,
+    boxes,
+    out,
+    passes,
+    gain,
+    ratio,
+    stats,
+    smear,
+    tube_g,
+    tube_vars,
+    dependent,
+    tube_points,
+    krawczyk_points,
+    filter_width,
+):
     """The loop of :func:`branch_and_prune` on the stack ``stk_lo[:sp], stk_hi[:sp]``
     until a box needs Python (a certification, an undecided box, the box budget, a full
     stack).  Returns ``(code, sp, boxes, unique)``; ``out`` rows hold the box, the
@@ -289,15 +368,18 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
         have_j = False
         klo, khi, rl, rh = lo, hi, lo, hi
         jlo, jhi = lo, hi
-        for it in range(passes):
+        for _ in range(passes):
             if not contract_kernel(op, a, b, clo, chi, start, end, blo, bhi, lo, hi, ratio, 50):
                 stats[0] += 1
                 dead = True
                 break
             # the tensions it bounds reach the equilibrium equations at the next pass's HC4 (a
             # second HC4 right after it cost more than it pruned: 0.3 % of boxes)
-            if fm > 0 and _primary_width(lo, hi, primary) < filter_width and not linear_filter_kernel(
-                    fop, fa, fb, fclo, fchi, fstart, fend, fm, fsign, lo, hi):
+            if (
+                fm > 0
+                and _primary_width(lo, hi, primary) < filter_width
+                and not linear_filter_kernel(fop, fa, fb, fclo, fchi, fstart, fend, fm, fsign, lo, hi)
+            ):
                 stats[1] += 1
                 dead = True
                 break
@@ -337,8 +419,7 @@ def _drive(op, a, b, clo, chi, start, end, blo, bhi, h,
                     evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, jl, jh)
                 have_j = True
                 stats[6] += 1
-                status = tube_kernel(op, a, b, clo, chi, end, tube_g, tube_vars, dependent, rows, cols, jl, jh, lo,
-                                     hi)
+                status = tube_kernel(op, a, b, clo, chi, end, tube_g, tube_vars, dependent, rows, cols, jl, jh, lo, hi)
                 if status == 2:
                     stats[7] += 1
                     dead = True
@@ -435,8 +516,9 @@ def _tube_vars(system: System, tube: int, primary: np.ndarray) -> tuple[np.ndarr
         raise ValueError(f"the first {tube} equations involve {used.size} variables: not under-determined")
     dependent = used[~primary[used]]
     if dependent.size > tube:
-        raise ValueError(f"the first {tube} equations involve {dependent.size} non-primary variables: they cannot "
-                         "all be solved for")
+        raise ValueError(
+            f"the first {tube} equations involve {dependent.size} non-primary variables: they cannot all be solved for"
+        )
     return np.concatenate([dependent, used[primary[used]]]).astype(np.int64), int(dependent.size)
 
 
@@ -461,8 +543,24 @@ def same_solution(a: Certificate, b: Certificate) -> bool:
     return bool(np.all(b.x >= a.lo) and np.all(b.x <= a.hi)) or bool(np.all(np.abs(a.x - b.x) <= a.radius))
 
 
-def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_width, max_boxes, filters, passes, gain, ratio,
-                            domain, smear, tube, filter_width):
+def _branch_and_prune_numba(
+    system,
+    lo,
+    hi,
+    primary,
+    eps,
+    certify_width,
+    newton_width,
+    max_boxes,
+    filters,
+    passes,
+    gain,
+    ratio,
+    domain,
+    smear,
+    tube,
+    filter_width,
+):
     lo0, hi0 = _domain(lo, hi, domain)
     n = lo0.size
     primary = np.ones(n, bool) if primary is None else np.asarray(primary, bool)
@@ -494,10 +592,40 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
 
     while True:
         code, sp, boxes, unique = _drive(
-            *t.arrays, system.n_equations, *jt.arrays[:7], system.rows, system.cols, *ftape, fm, fsign,
-            stk_lo, stk_hi, sp, sol_x, sol_r, len(out.solutions), lo0, hi0, primary,
-            float(eps), float(certify_width), float(newton_width), int(max_boxes), boxes, buf, int(passes), float(gain), float(ratio), stats,
-            smear, int(tube), tube_vars, dependent, tube_points, krawczyk_points, float(filter_width),
+            *t.arrays,
+            system.n_equations,
+            *jt.arrays[:7],
+            system.rows,
+            system.cols,
+            *ftape,
+            fm,
+            fsign,
+            stk_lo,
+            stk_hi,
+            sp,
+            sol_x,
+            sol_r,
+            len(out.solutions),
+            lo0,
+            hi0,
+            primary,
+            float(eps),
+            float(certify_width),
+            float(newton_width),
+            int(max_boxes),
+            boxes,
+            buf,
+            int(passes),
+            float(gain),
+            float(ratio),
+            stats,
+            smear,
+            int(tube),
+            tube_vars,
+            dependent,
+            tube_points,
+            krawczyk_points,
+            float(filter_width),
         )
         if code == _DONE:
             break
@@ -538,8 +666,12 @@ def _branch_and_prune_numba(system, lo, hi, primary, eps, certify_width, newton_
         push(b2lo, b2hi)
         push(alo, ahi)
     out.boxes = boxes
-    out.stats = dict(zip(('hc4', 'statics', 'covered', 'krawczyk_empty', 'bisections', 'krawczyk', 'tube',
-                          'tube_empty'), stats.tolist()))
+    out.stats = dict(
+        zip(
+            ("hc4", "statics", "covered", "krawczyk_empty", "bisections", "krawczyk", "tube", "tube_empty"),
+            stats.tolist(),
+        )
+    )
     return _drop_covered(out)
 
 

@@ -286,9 +286,15 @@ def compile_tape(exprs, bounds) -> Tape:
     bl = np.array([lo for lo, _ in bounds], dtype=np.float64)
     bh = np.array([hi for _, hi in bounds], dtype=np.float64)
     return Tape(
-        np.array(op, np.int64), np.array(a, np.int64), np.array(b, np.int64),
-        np.array(clo, np.float64), np.array(chi, np.float64),
-        np.array(start, np.int64), np.array(end, np.int64), bl, bh,
+        np.array(op, np.int64),
+        np.array(a, np.int64),
+        np.array(b, np.int64),
+        np.array(clo, np.float64),
+        np.array(chi, np.float64),
+        np.array(start, np.int64),
+        np.array(end, np.int64),
+        bl,
+        bh,
     )
 
 

@@ -20,7 +20,7 @@ import numpy as np
 from numba import njit
 
 from taut.interval import kernels as K
-from taut.interval.expression import ADD, CONST, DIV, MUL, NEG, POW, SQR, SQRT, SUB, VAR, Tape
+from taut.interval.expression import ADD, CONST, MUL, NEG, POW, SQR, SQRT, SUB, VAR, Tape
 
 
 @njit(cache=True, fastmath=False)

@@ -349,8 +349,31 @@ def tube_kernel(op, a, b, clo, chi, end, g, gvars, dependent, rows, cols, vl, vh
 
 
 @njit(cache=True, fastmath=False)
-def certified_step(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, x0,
-                   margin, floor, tol, max_iter, inflations):
+def certified_step(
+    op,
+    a,
+    b,
+    clo,
+    chi,
+    start,
+    end,
+    h,
+    jop,
+    ja,
+    jb,
+    jclo,
+    jchi,
+    jstart,
+    jend,
+    rows,
+    cols,
+    x0,
+    margin,
+    floor,
+    tol,
+    max_iter,
+    inflations,
+):
     """Newton from ``x0``, then Krawczyk on the box around the limit ``x`` whose
     half-width covers the step: ``margin·|x − x₀| + floor·max(1, ‖x‖∞) + ‖x − x₀‖∞²`` per
     component, widened ``inflations`` times to the Krawczyk hull (ε-inflation, Rump 1983).
@@ -389,8 +412,9 @@ def certified_step(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, j
     r = margin * step + floor * max(1.0, np.max(np.abs(x))) + np.max(step) ** 2
     status, rl, rh = 0, x, x
     for _ in range(inflations):
-        status, rl, rh = _krawczyk_box(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend,
-                                       rows, cols, x - r, x + r)
+        status, rl, rh = _krawczyk_box(
+            op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, x - r, x + r
+        )
         if status != 0:
             break
         r = np.maximum(r, 1.1 * np.maximum(rh - x, x - rl))

@@ -247,6 +247,7 @@ class LinearFilter:
     def enclosure(self, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
         """``(t_lo, t_hi)`` enclosing the solutions of the system over the box, or None."""
         op, a, b, clo, chi, start, end, _, _ = self.tape.arrays
-        ok, tl, th = enclosure_kernel(op, a, b, clo, chi, start, end, self.m, np.asarray(lo, float),
-                                      np.asarray(hi, float))
+        ok, tl, th = enclosure_kernel(
+            op, a, b, clo, chi, start, end, self.m, np.asarray(lo, float), np.asarray(hi, float)
+        )
         return (tl, th) if ok else None

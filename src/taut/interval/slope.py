@@ -85,4 +85,3 @@ def slope_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, points, out_lo, 
         # ½ (a + b): the halving is exact unless the sum is subnormal, hence the rounding
         l, h = K.add(out_lo[k], out_hi[k], sl[k], sh[k])
         out_lo[k], out_hi[k] = K.down(0.5 * l), K.up(0.5 * h)
-

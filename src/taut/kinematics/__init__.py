@@ -7,7 +7,17 @@ from taut.kinematics.inverse import IKResult, anchor_points, cable_lengths, inve
 from taut.kinematics.pose import as_poses, body_frames, platform_frame
 
 __all__ = [
-    "FKResult", "IKResult", "anchor_points", "as_poses", "body_frames", "cable_lengths",
-    "forward_kinematics", "inverse_kinematics", "platform_frame", "robot_stiffness",
-    "structure_matrix", "tension_from_stretch", "unstretched_length",
+    "FKResult",
+    "IKResult",
+    "anchor_points",
+    "as_poses",
+    "body_frames",
+    "cable_lengths",
+    "forward_kinematics",
+    "inverse_kinematics",
+    "platform_frame",
+    "robot_stiffness",
+    "structure_matrix",
+    "tension_from_stretch",
+    "unstretched_length",
 ]

@@ -158,6 +158,16 @@ def batch_structure_matrices(robot: Robot, poses) -> tuple[np.ndarray, np.ndarra
     lengths = np.empty((N, n))
     W = np.zeros((N, m, n))
     ok = np.empty(N, np.bool_)
-    _ik_kernel(np.ascontiguousarray(arr), robot.exits, robot.anchors, d, robot.is_point_mass,
-               CONVENTIONS.index(robot.orientation), MIN_LENGTH, lengths, W, ok)
+    _ik_kernel(
+        np.ascontiguousarray(arr),
+        robot.exits,
+        robot.anchors,
+        d,
+        robot.is_point_mass,
+        CONVENTIONS.index(robot.orientation),
+        MIN_LENGTH,
+        lengths,
+        W,
+        ok,
+    )
     return lengths, W, ok

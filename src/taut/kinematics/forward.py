@@ -61,8 +61,16 @@ def forward_kinematics(robot: Robot, lengths, guess=None, *, tol: float = 1e-9) 
         return np.linalg.norm(robot.exits - b, axis=1) - L
 
     method = "trf" if robot.n_joints else "lm"
-    sol = least_squares(residual, x0, method=method, bounds=(lo, hi) if robot.n_joints else (-np.inf, np.inf),
-                        xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=2000)
+    sol = least_squares(
+        residual,
+        x0,
+        method=method,
+        bounds=(lo, hi) if robot.n_joints else (-np.inf, np.inf),
+        xtol=1e-15,
+        ftol=1e-15,
+        gtol=1e-15,
+        max_nfev=2000,
+    )
     err = float(np.max(np.abs(sol.fun)))
     if not np.all(np.isfinite(sol.x)) or err > tol:
         raise UnreachableLengthsError(

@@ -40,7 +40,7 @@ def actuator_positions(robot: Robot, poses) -> np.ndarray:
     """``q`` of Eqs. 3.2.3–3.2.4: cable lengths then joint coordinates, ``(N, n + n_joints)``."""
     arr, single = as_poses(robot, poses)
     b = _anchors(robot, arr)
-    q = np.concatenate([np.linalg.norm(robot.exits[None] - b, axis=-1), arr[:, robot.wrench_dim:]], axis=1)
+    q = np.concatenate([np.linalg.norm(robot.exits[None] - b, axis=-1), arr[:, robot.wrench_dim :]], axis=1)
     return q[0] if single else q
 
 
@@ -115,7 +115,9 @@ def joint_forces(robot: Robot, poses, tensions) -> np.ndarray:
     A = jointed_structure_matrix(robot, arr)
     tau = np.asarray(tensions, dtype=float)
     if tau.shape not in ((robot.n_cables,), (arr.shape[0], robot.n_cables)):
-        raise TautError(f"{robot.name}: tensions must have shape ({robot.n_cables},) or ({arr.shape[0]}, {robot.n_cables}), got {tau.shape}")
+        raise TautError(
+            f"{robot.name}: tensions must have shape ({robot.n_cables},) or ({arr.shape[0]}, {robot.n_cables}), got {tau.shape}"
+        )
     tau = np.broadcast_to(tau, (arr.shape[0], robot.n_cables))
     m, n = robot.wrench_dim, robot.n_cables
     zeta = -np.einsum("kjc,kc->kj", A[:, m:, :n], tau)

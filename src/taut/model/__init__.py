@@ -19,7 +19,25 @@ from taut.model.robot import (
 from taut.model.schema import robot_schema
 
 __all__ = [
-    "Body", "Cable", "Capsule", "Circle", "Joint", "Platform", "Polygon", "Pulley", "Reference",
-    "Robot", "Shape", "Trajectory", "example", "example_descriptions", "example_names",
-    "load_robot", "parse_robot", "robot_from_dict", "robot_schema", "robot_to_dict", "save_robot",
+    "Body",
+    "Cable",
+    "Capsule",
+    "Circle",
+    "Joint",
+    "Platform",
+    "Polygon",
+    "Pulley",
+    "Reference",
+    "Robot",
+    "Shape",
+    "Trajectory",
+    "example",
+    "example_descriptions",
+    "example_names",
+    "load_robot",
+    "parse_robot",
+    "robot_from_dict",
+    "robot_schema",
+    "robot_to_dict",
+    "save_robot",
 ]

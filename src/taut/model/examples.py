@@ -3,7 +3,7 @@ by name wherever a ROBOT is expected."""
 
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 from importlib import resources
 
 from taut.errors import RobotFileError
@@ -14,7 +14,7 @@ def _files():
     return resources.files("taut") / "examples"
 
 
-@lru_cache(maxsize=None)
+@cache
 def example_names() -> tuple[str, ...]:
     """Names of the built-in examples, sorted."""
     return tuple(sorted(f.name[:-5] for f in _files().iterdir() if f.name.endswith(".yaml")))

@@ -53,7 +53,11 @@ def validation_message(source: str, exc: ValidationError) -> str:
         loc = tuple(err["loc"])
         msg = _message(err)
         field = _field(loc)
-        if field == "(top level)" and ": " in msg and msg.split(": ", 1)[0].replace(".", "").replace("[", "").replace("]", "").replace("_", "").isalnum():
+        if (
+            field == "(top level)"
+            and ": " in msg
+            and msg.split(": ", 1)[0].replace(".", "").replace("[", "").replace("]", "").replace("_", "").isalnum()
+        ):
             field, msg = msg.split(": ", 1)
         lines.append(f"{source}: {field}: {msg}")
     return "\n".join(lines)
@@ -62,7 +66,9 @@ def validation_message(source: str, exc: ValidationError) -> str:
 def robot_from_dict(data, source: str = "<robot>") -> Robot:
     """Validate a parsed robot description."""
     if not isinstance(data, dict):
-        raise RobotFileError(f"{source}: expected a mapping of robot fields at the top level, got {type(data).__name__}")
+        raise RobotFileError(
+            f"{source}: expected a mapping of robot fields at the top level, got {type(data).__name__}"
+        )
     try:
         return Robot.model_validate(data)
     except ValidationError as exc:
@@ -78,7 +84,9 @@ def parse_robot(text: str, source: str = "<robot>", *, json_text: bool = False) 
         try:
             data = json.loads(text)
         except json.JSONDecodeError as exc:
-            raise RobotFileError(f"{source}: not valid JSON at line {exc.lineno}, column {exc.colno}: {exc.msg}") from None
+            raise RobotFileError(
+                f"{source}: not valid JSON at line {exc.lineno}, column {exc.colno}: {exc.msg}"
+            ) from None
         return robot_from_dict(data, source)
     try:
         data = yaml.safe_load(text)
@@ -97,9 +105,7 @@ def load_robot(spec: str | Path) -> Robot:
     if not path.exists():
         if str(spec) in example_names():
             return example(str(spec))
-        raise RobotFileError(
-            f"{spec}: no such file and not a built-in example (see `taut examples`)"
-        )
+        raise RobotFileError(f"{spec}: no such file and not a built-in example (see `taut examples`)")
     try:
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 from functools import cached_property
-from typing import Annotated, Literal, Union
+from typing import Annotated, Literal
 
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
@@ -163,7 +163,7 @@ class Polygon(_Strict):
         return v
 
 
-Obstacle = Annotated[Union[Circle, Polygon], Field(discriminator="kind")]
+Obstacle = Annotated[Circle | Polygon, Field(discriminator="kind")]
 
 
 class Reference(_Strict):
@@ -227,16 +227,16 @@ class Robot(_Strict):
             need(c.exit, d, f"cables[{i}].exit")
             need(c.anchor, d, f"cables[{i}].anchor")
             if pm and c.anchor is not None and any(x != 0 for x in c.anchor):
-                raise ValueError(f"cables[{i}].anchor: a point-mass platform has all anchors at its origin, got {c.anchor}")
+                raise ValueError(
+                    f"cables[{i}].anchor: a point-mass platform has all anchors at its origin, got {c.anchor}"
+                )
             if c.body is not None and c.body not in bodies:
                 raise ValueError(f"cables[{i}].body: unknown body {c.body!r}; expected one of {sorted(bodies)}")
         keys = {}
         for i, c in enumerate(self.cables, 1):
             key = (tuple(c.exit), tuple(c.anchor or [0.0] * d), c.body or "platform")
             if key in keys:
-                raise ValueError(
-                    f"cables[{i}]: same exit point and anchor as cables[{keys[key]}] (a duplicated cable)"
-                )
+                raise ValueError(f"cables[{i}]: same exit point and anchor as cables[{keys[key]}] (a duplicated cable)")
             keys[key] = i
         p = self.platform
         need(p.wrench, self.wrench_dim, "platform.wrench")
@@ -268,12 +268,14 @@ class Robot(_Strict):
             for w in t.waypoints:
                 need(w, width, f"trajectories.{name}.waypoints")
             if t.steps is not None and len(t.steps) != len(t.waypoints) - 1:
-                raise ValueError(f"trajectories.{name}.steps: expected one count per move ({len(t.waypoints) - 1}), got {len(t.steps)}")
+                raise ValueError(
+                    f"trajectories.{name}.steps: expected one count per move ({len(t.waypoints) - 1}), got {len(t.steps)}"
+                )
         if self.reference is not None and self.reference.lengths is not None:
             need(self.reference.lengths, self.n_cables, "reference.lengths")
             if any(x <= 0 for x in self.reference.lengths):
                 raise ValueError("reference.lengths: cable lengths must be positive")
-        for name, pose in (self.reference.poses.items() if self.reference else []):
+        for name, pose in self.reference.poses.items() if self.reference else []:
             need(pose, self.pose_size, f"reference.poses.{name}")
         return self
 

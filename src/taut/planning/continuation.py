@@ -28,8 +28,8 @@ they share ``k − 1`` of them, which is all the cutting step needs.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import numpy as np
 
@@ -57,11 +57,17 @@ class ImplicitManifold:
 def tangent_basis(jac: np.ndarray, k: int) -> np.ndarray:
     """Orthonormal basis ``(n, k)`` of the null space of ``jac`` (complete QR of ``jacᵀ``)."""
     q, _ = np.linalg.qr(jac.T, mode="complete")
-    return q[:, q.shape[1] - k:]
+    return q[:, q.shape[1] - k :]
 
 
-def project(manifold: ImplicitManifold, guess: np.ndarray, basis: np.ndarray,
-            tol: float = 1e-10, max_iter: int = 25, max_step: float = np.inf) -> np.ndarray | None:
+def project(
+    manifold: ImplicitManifold,
+    guess: np.ndarray,
+    basis: np.ndarray,
+    tol: float = 1e-10,
+    max_iter: int = 25,
+    max_step: float = np.inf,
+) -> np.ndarray | None:
     """Newton on ``[F(x); Ψᵀ (x − guess)] = 0`` from ``guess``; ``None`` if it fails.
 
     ``max_step`` rejects solutions farther than that from ``guess`` (a jump to another
@@ -168,8 +174,15 @@ class Atlas:
     edge costs are measured (all of them by default).
     """
 
-    def __init__(self, manifold: ImplicitManifold, x0, radius: float, epsilon: float = 0.1,
-                 min_step: float = 0.05, metric: np.ndarray | None = None):
+    def __init__(
+        self,
+        manifold: ImplicitManifold,
+        x0,
+        radius: float,
+        epsilon: float = 0.1,
+        min_step: float = 0.05,
+        metric: np.ndarray | None = None,
+    ):
         x0 = np.asarray(x0, dtype=float)
         if radius <= 0 or not 0 < epsilon < 1:
             raise TautError(f"atlas needs radius > 0 and 0 < epsilon < 1, got {radius}, {epsilon}")
@@ -197,8 +210,7 @@ class Atlas:
         basis = self._basis(x) if basis is None else basis
         k = self.manifold.dim
         # the cube strictly encloses the ball, also for k = 1
-        chart = Chart(x, basis, self.radius, Polytope(k, 1.05 * self.radius),
-                      frontier=not self.manifold.in_box(x))
+        chart = Chart(x, basis, self.radius, Polytope(k, 1.05 * self.radius), frontier=not self.manifold.in_box(x))
         j = len(self.charts)
         if j:
             d = np.linalg.norm(self._centres - x, axis=1)
@@ -216,7 +228,7 @@ class Atlas:
         cut = False
         for a, b, ident in ((old, new, k2 + j), (new, old, k2 + i)):
             u = a.coordinates(b.centre)
-            cut |= a.polytope.cut(2 * u, u @ u + a.radius ** 2 - b.radius ** 2, ident)
+            cut |= a.polytope.cut(2 * u, u @ u + a.radius**2 - b.radius**2, ident)
         if cut:
             c = self.cost(old.centre, new.centre)
             old.neighbours[j] = c
@@ -280,8 +292,9 @@ class Atlas:
     def chart_map(self, i: int, u: np.ndarray) -> np.ndarray | None:
         """The manifold point of tangent coordinates ``u`` in chart ``i``."""
         c = self.charts[i]
-        return project(self.manifold, c.centre + c.basis @ u, c.basis,
-                       max_step=max(self.epsilon, 2 * np.linalg.norm(u)))
+        return project(
+            self.manifold, c.centre + c.basis @ u, c.basis, max_step=max(self.epsilon, 2 * np.linalg.norm(u))
+        )
 
     def reaches(self, i: int, x: np.ndarray, tol: float = 1e-6) -> bool:
         """Whether the map of chart ``i`` reaches the manifold point ``x`` within its ball."""

@@ -45,19 +45,32 @@ POSE_NAMES = ("x", "y", "z", "phi", "theta", "sigma")
 
 # variable blocks of x
 _P, _TAU, _R, _U, _RHO, _G, _F0, _V, _S, _T = (
-    slice(0, 3), slice(3, 6), slice(6, 15), slice(15, 33), slice(33, 39), slice(39, 45),
-    slice(45, 51), slice(51, 87), slice(87, 93), slice(93, 99))
+    slice(0, 3),
+    slice(3, 6),
+    slice(6, 15),
+    slice(15, 33),
+    slice(33, 39),
+    slice(39, 45),
+    slice(45, 51),
+    slice(51, 87),
+    slice(87, 93),
+    slice(93, 99),
+)
 N_VARS = 99
 
 
 def _rz(a):
     c, s = np.cos(a), np.sin(a)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]), np.array([[-s, -c, 0.0], [c, -s, 0.0], [0.0, 0.0, 0.0]])
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]), np.array(
+        [[-s, -c, 0.0], [c, -s, 0.0], [0.0, 0.0, 0.0]]
+    )
 
 
 def _ry(a):
     c, s = np.cos(a), np.sin(a)
-    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]]), np.array([[-s, 0.0, c], [0.0, 0.0, 0.0], [-c, 0.0, -s]])
+    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]]), np.array(
+        [[-s, 0.0, c], [0.0, 0.0, 0.0], [-c, 0.0, -s]]
+    )
 
 
 def rotation_derivatives(tau) -> tuple[np.ndarray, np.ndarray]:
@@ -113,8 +126,12 @@ class WrenchFeasibleManifold:
         bad = set(self.fixed) - set(POSE_NAMES)
         if bad:
             raise PoseError(f"cannot fix {sorted(bad)}: pose coordinates are {', '.join(POSE_NAMES)}")
-        if not (np.all(self.rho_min > 0) and np.all(self.rho_max > self.rho_min)
-                and np.all(np.isfinite(self.f_max)) and np.all(self.f_max > self.f_min)):
+        if not (
+            np.all(self.rho_min > 0)
+            and np.all(self.rho_max > self.rho_min)
+            and np.all(np.isfinite(self.f_max))
+            and np.all(self.f_max > self.f_min)
+        ):
             raise TautError("the manifold needs 0 < ρ_min < ρ_max and finite f_min < f_max for every cable")
         self._pose_index = [POSE_NAMES.index(n) for n in POSE_NAMES]
         fixed_idx = [POSE_NAMES.index(n) for n in self.fixed]
@@ -133,7 +150,7 @@ class WrenchFeasibleManifold:
             raise TautError(f"phi_window must span 2π, got {self.phi_window}")
 
     @classmethod
-    def from_robot(cls, robot, E=None, fixed=None, **kw) -> "WrenchFeasibleManifold":
+    def from_robot(cls, robot, E=None, fixed=None, **kw) -> WrenchFeasibleManifold:
         """The manifold of a 6-cable spatial robot file: exits ``a``, anchors ``b``, the
         platform's constant ``wrench`` about ``wrench_point`` as ``ŵ_0``, the cables'
         tension and length bounds (a zero lower length bound becomes 1e-6: Eq. (8) needs
@@ -156,7 +173,9 @@ class WrenchFeasibleManifold:
             rho_min=np.maximum([lo for lo, _ in lengths], 1e-6),
             rho_max=np.array([hi for _, hi in lengths], float),
             wrench_point=np.zeros(3) if plat.wrench_point is None else np.asarray(plat.wrench_point, float),
-            fixed=dict(fixed or {}), **kw)
+            fixed=dict(fixed or {}),
+            **kw,
+        )
 
     # -- Eqs. (1)–(8) on the full variable vector -------------------------------------
 
@@ -179,16 +198,18 @@ class WrenchFeasibleManifold:
         e5 = BV.copy()
         vii = np.diag(V)
         e5[np.arange(6), np.arange(6)] = np.einsum("ij,ij->i", BV, V) - 1.0
-        return np.concatenate([
-            (R - Rt).ravel(),
-            (p + self.b @ R.T - u - self.a).ravel(),
-            np.einsum("ij,ij->i", u, u) - rho ** 2,
-            (rho - self.rho_min) * (self.rho_max - rho) * g - 1.0,
-            J @ f0 - self.w0,
-            e5.ravel(),
-            (f0 - vii - self.f_min) * s - 1.0,
-            (self.f_max - f0 - vii) * t - 1.0,
-        ])
+        return np.concatenate(
+            [
+                (R - Rt).ravel(),
+                (p + self.b @ R.T - u - self.a).ravel(),
+                np.einsum("ij,ij->i", u, u) - rho**2,
+                (rho - self.rho_min) * (self.rho_max - rho) * g - 1.0,
+                J @ f0 - self.w0,
+                e5.ravel(),
+                (f0 - vii - self.f_min) * s - 1.0,
+                (self.f_max - f0 - vii) * t - 1.0,
+            ]
+        )
 
     def full_jacobian(self, x: np.ndarray) -> np.ndarray:
         tau = x[_TAU]
@@ -209,10 +230,10 @@ class WrenchFeasibleManifold:
             r = slice(9 + 3 * i, 12 + 3 * i)
             Fx[r, _P] = np.eye(3)
             Fx[r, _R] = np.kron(np.eye(3), self.b[i])
-            Fx[r, 15 + 3 * i:18 + 3 * i] = -np.eye(3)
+            Fx[r, 15 + 3 * i : 18 + 3 * i] = -np.eye(3)
         # (3) rows 27..32
         for i in range(6):
-            Fx[27 + i, 15 + 3 * i:18 + 3 * i] = 2 * u[i]
+            Fx[27 + i, 15 + 3 * i : 18 + 3 * i] = 2 * u[i]
         Fx[27 + i6, 33 + i6] = -2 * rho
         # (8) rows 33..38
         Fx[33 + i6, 33 + i6] = (self.rho_max + self.rho_min - 2 * rho) * g
@@ -250,7 +271,7 @@ class WrenchFeasibleManifold:
             Fx[rows, zcols] = blk
             vb = B.copy()
             vb[i] = 2 * B @ vi
-            Fx[rows, 51 + 6 * i:57 + 6 * i] = vb
+            Fx[rows, 51 + 6 * i : 57 + 6 * i] = vb
         # (6), (7) rows 81..92
         Fx[81 + i6, 45 + i6] = s
         Fx[81 + i6, 51 + 7 * i6] = -s
@@ -280,9 +301,13 @@ class WrenchFeasibleManifold:
         hi[_G] = hi[_S] = hi[_T] = self.slack_max
         lo[3], hi[3] = self.phi_window  # φ
         lo[4], hi[4] = 0.0, np.pi  # θ
-        return ImplicitManifold(lambda y: self.full_function(self.full(y)),
-                                lambda y: self.full_jacobian(self.full(y))[:, self.free] / self._w,
-                                self.dim, lower=lo[self.free] * self._w, upper=hi[self.free] * self._w)
+        return ImplicitManifold(
+            lambda y: self.full_function(self.full(y)),
+            lambda y: self.full_jacobian(self.full(y))[:, self.free] / self._w,
+            self.dim,
+            lower=lo[self.free] * self._w,
+            upper=hi[self.free] * self._w,
+        )
 
     def canonical(self, pose) -> np.ndarray:
         """The same pose(s) ``(..., 6)`` with ``θ ∈ [0, π]`` and ``φ`` in :attr:`phi_window`:
@@ -329,14 +354,29 @@ class WrenchFeasibleManifold:
         R, u, rho, f0, V = ext
         lo, hi = f0 - np.diag(V), f0 + np.diag(V)
         if not (np.all(rho > self.rho_min) and np.all(rho < self.rho_max)):
-            raise InfeasiblePoseError(f"pose {q.tolist()}: cable lengths {np.round(rho, 4).tolist()} "
-                                      f"outside ({self.rho_min.min()}, {self.rho_max.max()})")
+            raise InfeasiblePoseError(
+                f"pose {q.tolist()}: cable lengths {np.round(rho, 4).tolist()} "
+                f"outside ({self.rho_min.min()}, {self.rho_max.max()})"
+            )
         if not (np.all(lo > self.f_min) and np.all(hi < self.f_max)):
-            raise InfeasiblePoseError(f"pose {q.tolist()} is not wrench-feasible: extreme tensions "
-                                      f"{np.round(lo, 4).tolist()} .. {np.round(hi, 4).tolist()}")
-        x = np.concatenate([q[:3], q[3:], R.ravel(), u.ravel(), rho,
-                            1.0 / ((rho - self.rho_min) * (self.rho_max - rho)), f0, V.ravel(),
-                            1.0 / (lo - self.f_min), 1.0 / (self.f_max - hi)])
+            raise InfeasiblePoseError(
+                f"pose {q.tolist()} is not wrench-feasible: extreme tensions "
+                f"{np.round(lo, 4).tolist()} .. {np.round(hi, 4).tolist()}"
+            )
+        x = np.concatenate(
+            [
+                q[:3],
+                q[3:],
+                R.ravel(),
+                u.ravel(),
+                rho,
+                1.0 / ((rho - self.rho_min) * (self.rho_max - rho)),
+                f0,
+                V.ravel(),
+                1.0 / (lo - self.f_min),
+                1.0 / (self.f_max - hi),
+            ]
+        )
         return x[self.free] * self._w
 
     def extreme_tensions(self, pose):

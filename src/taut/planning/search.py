@@ -66,8 +66,16 @@ def refine_path(atlas: Atlas, charts: list[int], goal: np.ndarray, spacing: floa
     return np.array(pts)
 
 
-def plan_path(manifold: ImplicitManifold, start, goal, radius: float, epsilon: float = 0.1,
-              metric=None, max_charts: int = 20_000, spacing: float | None = None) -> PathResult:
+def plan_path(
+    manifold: ImplicitManifold,
+    start,
+    goal,
+    radius: float,
+    epsilon: float = 0.1,
+    metric=None,
+    max_charts: int = 20_000,
+    spacing: float | None = None,
+) -> PathResult:
     """A path on ``manifold`` from ``start`` to ``goal`` (both on it), or proof that the
     connected component of ``start`` does not reach ``goal`` at resolution ``radius``."""
     t0 = time.perf_counter()
@@ -103,14 +111,20 @@ def plan_path(manifold: ImplicitManifold, start, goal, radius: float, epsilon: f
                 heapq.heappush(heap, (gj + h(j), j))
     exhausted = found_at is None and not heap
     if found_at is None:
-        return PathResult(False, np.empty((0, start.size)), len(atlas.charts), expanded, exhausted,
-                          float("nan"), time.perf_counter() - t0, atlas)
+        return PathResult(
+            False,
+            np.empty((0, start.size)),
+            len(atlas.charts),
+            expanded,
+            exhausted,
+            float("nan"),
+            time.perf_counter() - t0,
+            atlas,
+        )
     seq = [found_at]
     while parent[seq[-1]] >= 0:
         seq.append(parent[seq[-1]])
     seq.reverse()
     path = refine_path(atlas, seq, goal, spacing or radius / 4)
     length = float(np.sum(np.linalg.norm(np.diff(path[:, atlas.metric], axis=0), axis=1)))
-    return PathResult(True, path, len(atlas.charts), expanded, False, length,
-                      time.perf_counter() - t0, atlas)
-
+    return PathResult(True, path, len(atlas.charts), expanded, False, length, time.perf_counter() - t0, atlas)

@@ -13,7 +13,17 @@ from taut.statics.wrench import (
 )
 
 __all__ = [
-    "BoxWrenchSet", "EllipsoidWrenchSet", "PolytopeWrenchSet", "SingleWrench", "WrenchSet",
-    "external_wrench", "static_equilibrium", "wrench_closure", "wrench_feasible",
-    "METHODS", "TensionResult", "distribute_tensions", "solve_tensions",
+    "BoxWrenchSet",
+    "EllipsoidWrenchSet",
+    "PolytopeWrenchSet",
+    "SingleWrench",
+    "WrenchSet",
+    "external_wrench",
+    "static_equilibrium",
+    "wrench_closure",
+    "wrench_feasible",
+    "METHODS",
+    "TensionResult",
+    "distribute_tensions",
+    "solve_tensions",
 ]

@@ -106,8 +106,7 @@ def _binom(a, b):
 
 
 @njit(cache=True, nogil=True)
-def _facet_kernel(W, tmin, tmax, mode, offset, center, half, shape, has_shape, verts,
-                  status, normals, hz, valid):
+def _facet_kernel(W, tmin, tmax, mode, offset, center, half, shape, has_shape, verts, status, normals, hz, valid):
     """Hyperplane shifting over a batch ``W (N, m, n)``.
 
     ``mode`` 0: wrench closure; 1: feasibility of ``offset[k] + center + box(half) +
@@ -167,7 +166,7 @@ def _facet_kernel(W, tmin, tmax, mode, offset, center, half, shape, has_shape, v
                 if a > amax:
                     amax = a
                     q = i
-            if amax <= RANK_TOL * colnorm[c] * (2.0 ** depth):
+            if amax <= RANK_TOL * colnorm[c] * (2.0**depth):
                 if mode == MODE_NORMALS:  # skip the subtree: its combinations have rank < m − 1
                     cnt = _binom(n - 1 - c, p - 1 - depth)
                     for s in range(leaf, leaf + cnt):
@@ -431,9 +430,22 @@ def _run(W, tmin, tmax, mode, off, arrays, status, normals=None, hz=None, valid=
     center, half, shape, has_shape, verts = arrays
     if normals is None:
         normals, hz, valid = np.zeros((0, 0, 0)), np.zeros((0, 0, 2)), np.zeros((0, 0), np.bool_)
-    _facet_kernel(W, tmin, tmax, mode, np.ascontiguousarray(off, dtype=float), np.ascontiguousarray(center, dtype=float),
-                  np.ascontiguousarray(half, dtype=float), np.ascontiguousarray(shape, dtype=float), bool(has_shape),
-                  np.ascontiguousarray(verts, dtype=float).reshape(-1, m), status, normals, hz, valid)
+    _facet_kernel(
+        W,
+        tmin,
+        tmax,
+        mode,
+        np.ascontiguousarray(off, dtype=float),
+        np.ascontiguousarray(center, dtype=float),
+        np.ascontiguousarray(half, dtype=float),
+        np.ascontiguousarray(shape, dtype=float),
+        bool(has_shape),
+        np.ascontiguousarray(verts, dtype=float).reshape(-1, m),
+        status,
+        normals,
+        hz,
+        valid,
+    )
 
 
 def _no_set(m: int):

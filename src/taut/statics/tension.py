@@ -42,8 +42,8 @@ and its entry in :data:`METHODS`.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import highspy
 import numpy as np
@@ -436,8 +436,15 @@ def _polytope_centre(h, tp, Z, lo, hi, depth: int = 0):
     b = np.r_[(hi - tp)[nz], (tp - lo)[nz]] / np.r_[norms[nz], norms[nz]]
     # Chebyshev centre: max ρ s.t. A λ + ρ ≤ b (ρ free: its sign tells emptiness)
     ones = np.ones((A.shape[0], 1))
-    _pass_lp(h, np.r_[np.zeros(r), -1.0], np.full(r + 1, -np.inf), np.full(r + 1, np.inf),
-             np.hstack([A, ones]), np.full(A.shape[0], -np.inf), b / scale)
+    _pass_lp(
+        h,
+        np.r_[np.zeros(r), -1.0],
+        np.full(r + 1, -np.inf),
+        np.full(r + 1, np.inf),
+        np.hstack([A, ones]),
+        np.full(A.shape[0], -np.inf),
+        b / scale,
+    )
     status, x = _solve(h)
     if status != "optimal":
         return None, False
@@ -460,9 +467,15 @@ def _flat_centre(h, tp, Z, lo, hi, A, b, lam0, scale, depth):
     Falls back to the Chebyshev centre when no implicit equality is found."""
     k, r = A.shape
     if depth < 4:
-        _pass_lp(h, np.r_[np.zeros(r), -np.ones(k)], np.r_[np.full(r, -np.inf), np.zeros(k)],
-                 np.r_[np.full(r, np.inf), np.ones(k)], np.hstack([A, np.eye(k)]),
-                 np.full(k, -np.inf), b / scale)
+        _pass_lp(
+            h,
+            np.r_[np.zeros(r), -np.ones(k)],
+            np.r_[np.full(r, -np.inf), np.zeros(k)],
+            np.r_[np.full(r, np.inf), np.ones(k)],
+            np.hstack([A, np.eye(k)]),
+            np.full(k, -np.inf),
+            b / scale,
+        )
         status, x = _solve(h)
         if status == "optimal":
             x = x * scale
@@ -532,7 +545,7 @@ def _barycentric(W, w, tmin, tmax):
     if sel.size:
         h = _new_highs()
         for i in sel:
-            t, empty = _polytope_centre(h, tp[i], Vt[i, rank[i]:].T, tmin[i], tmax[i])
+            t, empty = _polytope_centre(h, tp[i], Vt[i, rank[i] :].T, tmin[i], tmax[i])
             if t is not None:
                 tau[i] = t
             infeasible[i] = empty

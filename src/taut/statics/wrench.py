@@ -56,7 +56,6 @@ class WrenchSet(ABC):
         """``h(n) = max_{w ∈ set} n·w`` for normals ``(..., dim)``."""
 
 
-
 def _vector(x, what: str) -> np.ndarray:
     arr = np.asarray(x, dtype=float)
     if arr.ndim != 1 or arr.size == 0 or not np.all(np.isfinite(arr)):
@@ -81,7 +80,6 @@ class SingleWrench(WrenchSet):
         return np.asarray(normals) @ self.wrench
 
 
-
 @dataclass(frozen=True)
 class BoxWrenchSet(WrenchSet):
     """The box ``lower ≤ w ≤ upper`` (componentwise)."""
@@ -99,7 +97,7 @@ class BoxWrenchSet(WrenchSet):
         object.__setattr__(self, "upper", hi)
 
     @classmethod
-    def around(cls, center, half_widths) -> "BoxWrenchSet":
+    def around(cls, center, half_widths) -> BoxWrenchSet:
         c, r = _vector(center, "box center"), np.abs(_vector(half_widths, "box half-widths"))
         return cls(c - r, c + r)
 
@@ -111,7 +109,6 @@ class BoxWrenchSet(WrenchSet):
         n = np.asarray(normals)
         c, r = (self.lower + self.upper) / 2, (self.upper - self.lower) / 2
         return n @ c + np.abs(n) @ r
-
 
     def vertices(self) -> np.ndarray:
         """The ``2^dim`` corners."""
@@ -137,7 +134,6 @@ class PolytopeWrenchSet(WrenchSet):
 
     def support(self, normals):
         return (np.asarray(normals) @ self.vertices.T).max(axis=-1)
-
 
 
 @dataclass(frozen=True)
@@ -166,4 +162,3 @@ class EllipsoidWrenchSet(WrenchSet):
         n = np.asarray(normals)
         q = np.einsum("...i,ij,...j->...", n, self.shape, n)
         return n @ self.center_wrench + np.sqrt(np.maximum(q, 0.0))
-

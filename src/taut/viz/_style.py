@@ -6,8 +6,16 @@ import numpy as np
 
 #: Colours cycled over cables (matplotlib's ``tab10``): cable *i* (1-based) has ``CABLE_COLORS[(i-1) % 10]``.
 CABLE_COLORS = (
-    "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
-    "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf",
+    "#1f77b4",
+    "#ff7f0e",
+    "#2ca02c",
+    "#d62728",
+    "#9467bd",
+    "#8c564b",
+    "#e377c2",
+    "#7f7f7f",
+    "#bcbd22",
+    "#17becf",
 )
 FRAME = "#9a9a9a"
 OBSTACLE = "#b0b0b0"

@@ -36,20 +36,36 @@ def _fill(ax, geom, **kw) -> None:
 def _draw_charts(ax, atlas, charts, title: str) -> None:
     draw_scene_2d(ax, atlas.robot, labels=False)
     for k, c in enumerate(charts):
-        _fill(ax, atlas.charts[c].domain, fc="0.35", ec="none", alpha=0.18, zorder=0.2,
-              label="chart (darker: overlap)" if k == 0 else None, gid="chart")
+        _fill(
+            ax,
+            atlas.charts[c].domain,
+            fc="0.35",
+            ec="none",
+            alpha=0.18,
+            zorder=0.2,
+            label="chart (darker: overlap)" if k == 0 else None,
+            gid="chart",
+        )
     keep = set(charts)
     first = True
     for e in atlas.edges:
         if e.charts[0] in keep and e.charts[1] in keep:
-            ax.plot(*e.segment.T, color="0.15", lw=1.2, zorder=2, label="traversable edge" if first else None,
-                    gid="edge")
+            ax.plot(
+                *e.segment.T, color="0.15", lw=1.2, zorder=2, label="traversable edge" if first else None, gid="edge"
+            )
             first = False
     ax.plot(*atlas.start, marker="o", color="black", ms=5, zorder=5, label="start", gid="start")
     M = platform_outline(atlas.robot, atlas.theta)
     if M is not None:  # the platform at the start, at the page's orientation
-        ax.fill(*(np.asarray(M.exterior.coords) + atlas.start).T, fc="none", ec="black", lw=1.0, zorder=5,
-                label=f"platform (θ = {atlas.theta:.3g} rad)", gid="platform")
+        ax.fill(
+            *(np.asarray(M.exterior.coords) + atlas.start).T,
+            fc="none",
+            ec="black",
+            lw=1.0,
+            zorder=5,
+            label=f"platform (θ = {atlas.theta:.3g} rad)",
+            gid="platform",
+        )
     ax.set_aspect("equal")
     ax.autoscale_view()
     ax.set_title(title, fontsize=10)
@@ -63,17 +79,35 @@ def plot_atlas(atlas, workspace=None):
     panels = 2 if workspace is not None else 1
     fig, axes = plt.subplots(1, panels, figsize=(6.5 * panels, 5.5), squeeze=False)
     ax = axes[0, 0]
-    _draw_charts(ax, atlas, range(len(atlas.charts)),
-                 f"{atlas.robot.name}: {len(atlas.charts)} charts, {atlas.n_edges} adjacent pairs")
+    _draw_charts(
+        ax,
+        atlas,
+        range(len(atlas.charts)),
+        f"{atlas.robot.name}: {len(atlas.charts)} charts, {atlas.n_edges} adjacent pairs",
+    )
     ax.legend(loc="best", fontsize=7)
     if workspace is not None:
         ax = axes[0, 1]
-        _draw_charts(ax, atlas, workspace.charts,
-                     f"{workspace.condition} workspace: {workspace.area:.4g} m², {len(workspace.pruned)} charts pruned")
+        _draw_charts(
+            ax,
+            atlas,
+            workspace.charts,
+            f"{workspace.condition} workspace: {workspace.area:.4g} m², {len(workspace.pruned)} charts pruned",
+        )
         P = workspace.points
         if len(P):
-            ax.scatter(P[:, 0], P[:, 1], s=(72 * 0.6 * workspace.step / max(np.ptp(P[:, 0]), 1e-9) * 6) ** 2,
-                       marker="s", color=WORKSPACE, alpha=0.5, lw=0, zorder=1.5, label="workspace", gid="workspace")
+            ax.scatter(
+                P[:, 0],
+                P[:, 1],
+                s=(72 * 0.6 * workspace.step / max(np.ptp(P[:, 0]), 1e-9) * 6) ** 2,
+                marker="s",
+                color=WORKSPACE,
+                alpha=0.5,
+                lw=0,
+                zorder=1.5,
+                label="workspace",
+                gid="workspace",
+            )
         ax.legend(loc="best", fontsize=7)
     fig.tight_layout()
     return fig
@@ -102,7 +136,9 @@ def atlas_section(report) -> None:
         f"{len(ws.pruned)} charts pruned. Atlas-based direct IK (Alg. 5.3): {rate:,.0f} queries/s."
     )
     fig = plot_atlas(atlas, ws)
-    report.add_section("vscr-t-shaped: structure atlas and workspace", text=text,
-                       figures=[(fig, "vscr-t-shaped-atlas.png", "charts and traversable edges; wrench-feasible workspace")],
-                       json={"charts": len(atlas.charts), "edges": atlas.n_edges, "reachable_area": reach,
-                             "workspace_area": ws.area})
+    report.add_section(
+        "vscr-t-shaped: structure atlas and workspace",
+        text=text,
+        figures=[(fig, "vscr-t-shaped-atlas.png", "charts and traversable edges; wrench-feasible workspace")],
+        json={"charts": len(atlas.charts), "edges": atlas.n_edges, "reachable_area": reach, "workspace_area": ws.area},
+    )

@@ -56,7 +56,9 @@ def plot_check(robot: Robot, result):
         pts = np.stack([A[0, c], B[0, c]])[:, : robot.dimension]
         rax.plot(*pts.T, color=DISALLOWED, lw=4, gid=f"colliding-{c + 1}")
     what = "no problem" if first is None else "first problem"
-    rax.set_title(f"{what}: step {k + 1}" + (f", colliding {', '.join(str(c + 1) for c in hit)}" if hit else ""), fontsize=10)
+    rax.set_title(
+        f"{what}: step {k + 1}" + (f", colliding {', '.join(str(c + 1) for c in hit)}" if hit else ""), fontsize=10
+    )
     ax.set_title(f"{robot.name}: {N} steps", fontsize=10)
     fig.tight_layout()
     return fig
@@ -77,6 +79,9 @@ def check_section(report) -> None:
         f"{int(res.jacobian_singular.sum())}."
     )
     fig = plot_check(robot, res)
-    report.add_section("adjustable-8cable: self-collision and singularities (simulation c)", text=text,
-                       figures=[(fig, "adjustable-8cable-check.png", "clearance over the steps; robot at the first collision")],
-                       json={"first_collision": first, "collisions": res.proximity.collisions(first - 1) if first else []})
+    report.add_section(
+        "adjustable-8cable: self-collision and singularities (simulation c)",
+        text=text,
+        figures=[(fig, "adjustable-8cable-check.png", "clearance over the steps; robot at the first collision")],
+        json={"first_collision": first, "collisions": res.proximity.collisions(first - 1) if first else []},
+    )

@@ -56,8 +56,9 @@ def plot_tracking(path):
         if path[j].taut != path[j - 1].taut:
             for ax in (ax_p, ax_t):
                 ax.axvline(k[j], color="0.4", ls=":", lw=1)
-            ax_t.annotate(f"taut {','.join(map(str, path[j].taut))}", (k[j], ax_t.get_ylim()[1]), fontsize=8,
-                          va="top", ha="left")
+            ax_t.annotate(
+                f"taut {','.join(map(str, path[j].taut))}", (k[j], ax_t.get_ylim()[1]), fontsize=8, va="top", ha="left"
+            )
     ax_p.set(xlabel="update", ylabel="platform position [m]")
     ax_t.set(xlabel="update", ylabel="tension")
     ax_p.legend(fontsize=8)
@@ -77,14 +78,24 @@ def dgp_section(report) -> None:
     rows = []
     for k, s in enumerate(res.solutions):
         row = {"#": k + 1, "taut": ",".join(map(str, s.taut))}
-        row.update({n: round(float(v), 4) for n, v in zip(robot.pose_names, np.concatenate([s.position, s.orientation]))})
+        row.update(
+            {n: round(float(v), 4) for n, v in zip(robot.pose_names, np.concatenate([s.position, s.orientation]))}
+        )
         row.update({f"τ{i + 1}": round(float(t), 4) for i, t in enumerate(s.tensions)})
         row["stable"] = bool(s.stable)
         rows.append(row)
     stable = [s for s in res.solutions if s.stable]
-    figures = [(plot_equilibria(robot, res.solutions), "dgp-equilibria.png", "every equilibrium for the lengths of Table 4.3")]
-    summary = {"robot": robot.name, "solutions": len(res.solutions), "stable": len(stable),
-               "subproblems": res.subproblems, "undecided_boxes": res.undecided, "elapsed_s": round(res.elapsed_s, 2)}
+    figures = [
+        (plot_equilibria(robot, res.solutions), "dgp-equilibria.png", "every equilibrium for the lengths of Table 4.3")
+    ]
+    summary = {
+        "robot": robot.name,
+        "solutions": len(res.solutions),
+        "stable": len(stable),
+        "subproblems": res.subproblems,
+        "undecided_boxes": res.undecided,
+        "elapsed_s": round(res.elapsed_s, 2),
+    }
     if stable:
         lengths = np.array(robot.reference.lengths)
         sequence = lengths + np.linspace(0.0, 3.0, 301)[1:, None] * np.array([-1.0, 1.0, 0.0])
@@ -93,11 +104,13 @@ def dgp_section(report) -> None:
         summary["tracking"] = {"updates": len(path), "taut_sets": sorted({",".join(map(str, s.taut)) for s in path})}
     report.add_section(
         "Under-constrained robots: every equilibrium, then tracking",
-        text=("All equilibria of the suspended 3-cable robot for the cable lengths of Table 4.3 "
-              "(001_eb92e2f6589fc229.txt §4.2.1): certified branch-and-prune over every set of taut cables, "
-              "stability by the reduced Hessian (§3.2.2).  Then tracking forward kinematics (§4.1.2) from "
-              "the stable equilibrium: one Newton step certified by the Krawczyk operator per update; "
-              "when cable 2's tension reaches zero the robot hangs from cables 1 and 3."),
+        text=(
+            "All equilibria of the suspended 3-cable robot for the cable lengths of Table 4.3 "
+            "(001_eb92e2f6589fc229.txt §4.2.1): certified branch-and-prune over every set of taut cables, "
+            "stability by the reduced Hessian (§3.2.2).  Then tracking forward kinematics (§4.1.2) from "
+            "the stable equilibrium: one Newton step certified by the Krawczyk operator per update; "
+            "when cable 2's tension reaches zero the robot hangs from cables 1 and 3."
+        ),
         figures=figures,
         table=rows,
         json=summary,

@@ -23,8 +23,7 @@ FEASIBLE, FORCE_OUT, LENGTH_OUT = 0, 1, 2  #: classes of :func:`slice_map`
 _FORCE_COLOR = "#5b8fd9"
 
 
-def slice_map(manifold: WrenchFeasibleManifold, pose, axes=("phi", "theta"), limits=None,
-              resolution=(90, 46)):
+def slice_map(manifold: WrenchFeasibleManifold, pose, axes=("phi", "theta"), limits=None, resolution=(90, 46)):
     """Classify a grid over two pose coordinates ``axes`` (the others from ``pose``):
     ``(u, v, classes)`` with ``classes[i, j]`` for ``(u[i], v[j])`` one of
     :data:`FEASIBLE`, :data:`FORCE_OUT` (some ``f_0,i ∓ v_ii`` outside the tension bounds, or
@@ -71,10 +70,24 @@ def plot_plan(manifold: WrenchFeasibleManifold, result, axes=("phi", "theta"), g
     ax.pcolormesh(u, v, cls.T, cmap=cmap, vmin=-0.5, vmax=2.5, shading="nearest", alpha=0.45, gid="slice-map")
     centres = manifold.pose(result.atlas.centres)
     closed = np.array([c.expanded for c in result.atlas.charts])
-    ax.plot(centres[closed, idx[0]], centres[closed, idx[1]], ".", color="#333333", ms=3,
-            label=f"closed charts ({closed.sum()})", gid="charts-closed")
-    ax.plot(centres[~closed, idx[0]], centres[~closed, idx[1]], ".", color="#999999", ms=3,
-            label=f"open charts ({(~closed).sum()})", gid="charts-open")
+    ax.plot(
+        centres[closed, idx[0]],
+        centres[closed, idx[1]],
+        ".",
+        color="#333333",
+        ms=3,
+        label=f"closed charts ({closed.sum()})",
+        gid="charts-closed",
+    )
+    ax.plot(
+        centres[~closed, idx[0]],
+        centres[~closed, idx[1]],
+        ".",
+        color="#999999",
+        ms=3,
+        label=f"open charts ({(~closed).sum()})",
+        gid="charts-open",
+    )
     if result.found:
         path = manifold.pose(result.path)
         ax.plot(path[:, idx[0]], path[:, idx[1]], color="red", lw=2, label="path", gid="path")
@@ -99,8 +112,14 @@ def plot_plan(manifold: WrenchFeasibleManifold, result, axes=("phi", "theta"), g
         tx.set_ylabel("extreme tensions f₀ ± v_ii [N] (solid max, dash-dot min)")
         tx.legend(loc="best", fontsize=8, ncol=2)
     else:
-        tx.text(0.5, 0.5, "no path: " + ("component exhausted" if result.exhausted else "search stopped"),
-                ha="center", va="center", transform=tx.transAxes)
+        tx.text(
+            0.5,
+            0.5,
+            "no path: " + ("component exhausted" if result.exhausted else "search stopped"),
+            ha="center",
+            va="center",
+            transform=tx.transAxes,
+        )
     fig.tight_layout()
     return fig
 
@@ -118,19 +137,33 @@ def plan_section(report, radius: float = 0.2):
     elapsed = time.perf_counter() - t0
     check = verify_path(robot, M.pose(res.path), subdivide=5) if res.found else None
     fig = plot_plan(M, res)
-    row = {"query": "q1 → q2", "found": res.found, "charts": res.charts, "closed": res.expanded,
-           "path length [rad]": round(res.length, 3) if res.found else None,
-           "time [s]": round(elapsed, 2), "paper [s]": 20.0,
-           "independent check": None if check is None else check.all_feasible}
+    row = {
+        "query": "q1 → q2",
+        "found": res.found,
+        "charts": res.charts,
+        "closed": res.expanded,
+        "path length [rad]": round(res.length, 3) if res.found else None,
+        "time [s]": round(elapsed, 2),
+        "paper [s]": 20.0,
+        "independent check": None if check is None else check.all_feasible,
+    }
     report.add_section(
         "Wrench-feasible path planning (Robocrane)",
-        text=("A path from q1 to q2 on the slice p = (0, 0, 2), σ = 35° of the Robocrane's "
-              "wrench-feasible C-space (002_19d5d688a3999fb0.txt §5, Figs. 5–6): Henderson's "
-              "atlas of Eqs. (1)–(8) expanded in A* order, every interpolated pose of the path "
-              "then checked by the general wrench-feasibility test.\n\n"
-              "The cable pairing is our reading of §5 (robocrane.yaml, reference.notes)."),
-        figures=[(fig, "plan-robocrane-q1-q2",
-                  "Left: the slice (green feasible, blue tension, red length out of range), the "
-                  "chart centres and the path. Right: extreme tensions f₀ ± v_ii along the path.")],
-        table=[row])
+        text=(
+            "A path from q1 to q2 on the slice p = (0, 0, 2), σ = 35° of the Robocrane's "
+            "wrench-feasible C-space (002_19d5d688a3999fb0.txt §5, Figs. 5–6): Henderson's "
+            "atlas of Eqs. (1)–(8) expanded in A* order, every interpolated pose of the path "
+            "then checked by the general wrench-feasibility test.\n\n"
+            "The cable pairing is our reading of §5 (robocrane.yaml, reference.notes)."
+        ),
+        figures=[
+            (
+                fig,
+                "plan-robocrane-q1-q2",
+                "Left: the slice (green feasible, blue tension, red length out of range), the "
+                "chart centres and the path. Right: extreme tensions f₀ ± v_ii along the path.",
+            )
+        ],
+        table=[row],
+    )
     return res

@@ -160,7 +160,9 @@ class Report:
             cols: list[str] = []
             for r in s.table:
                 cols += [str(k) for k in r if str(k) not in cols]
-            out.append("<table><thead><tr>" + "".join(f"<th>{html.escape(c)}</th>" for c in cols) + "</tr></thead><tbody>")
+            out.append(
+                "<table><thead><tr>" + "".join(f"<th>{html.escape(c)}</th>" for c in cols) + "</tr></thead><tbody>"
+            )
             for r in s.table:
                 cells = {str(k): v for k, v in r.items()}
                 tds = []
@@ -185,10 +187,10 @@ class Report:
         body = "\n".join(self._section_html(s, g) for s, g in zip(self.sections, slugs))
         title = html.escape(self.title)
         return (
-            "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-            "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+            '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'
+            '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
             f"<title>{title}</title>\n<style>{_CSS}</style>\n</head>\n<body>\n"
-            f"<header><h1>{title}</h1><p class=\"meta\">written by taut {html.escape(__version__)}</p></header>\n"
+            f'<header><h1>{title}</h1><p class="meta">written by taut {html.escape(__version__)}</p></header>\n'
             + (f"<nav><ol>{nav}</ol></nav>\n" if len(self.sections) > 1 else "")
             + body
             + "\n</body>\n</html>\n"

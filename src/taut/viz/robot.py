@@ -167,31 +167,68 @@ def draw_scene_2d(ax, robot: Robot, *, labels: bool = True) -> None:
     if robot.installation_space:
         pts = np.asarray(robot.installation_space, float)[:, :2]
         ax.add_patch(
-            PolygonPatch(pts, closed=True, fill=False, ec="black", lw=1.4, zorder=0.6,
-                         label="installation space", gid="installation-space")
+            PolygonPatch(
+                pts,
+                closed=True,
+                fill=False,
+                ec="black",
+                lw=1.4,
+                zorder=0.6,
+                label="installation space",
+                gid="installation-space",
+            )
         )
     for k, region in enumerate(robot.disallowed):
         pts = np.asarray(region, float)[:, :2]
         ax.add_patch(
-            PolygonPatch(pts, closed=True, fc=DISALLOWED, ec=DISALLOWED, alpha=0.25, hatch="//", lw=0.8,
-                         zorder=0.7, label="disallowed" if k == 0 else None, gid="disallowed")
+            PolygonPatch(
+                pts,
+                closed=True,
+                fc=DISALLOWED,
+                ec=DISALLOWED,
+                alpha=0.25,
+                hatch="//",
+                lw=0.8,
+                zorder=0.7,
+                label="disallowed" if k == 0 else None,
+                gid="disallowed",
+            )
         )
     for k, o in enumerate(robot.obstacles):
         lab = "obstacle" if k == 0 else None
         if isinstance(o, Circle):
-            patch = CirclePatch(o.center[:2], o.radius, fc=OBSTACLE, ec="#555555", lw=1.0, zorder=1,
-                                label=lab, gid="obstacle")
+            patch = CirclePatch(
+                o.center[:2], o.radius, fc=OBSTACLE, ec="#555555", lw=1.0, zorder=1, label=lab, gid="obstacle"
+            )
         else:
-            patch = PolygonPatch(np.asarray(o.vertices, float)[:, :2], closed=True, fc=OBSTACLE, ec="#555555",
-                                 lw=1.0, zorder=1, label=lab, gid="obstacle")
+            patch = PolygonPatch(
+                np.asarray(o.vertices, float)[:, :2],
+                closed=True,
+                fc=OBSTACLE,
+                ec="#555555",
+                lw=1.0,
+                zorder=1,
+                label=lab,
+                gid="obstacle",
+            )
         ax.add_patch(patch)
     ex = robot.exits
     ax.plot(ex[:, 0], ex[:, 1], ls="none", marker="s", ms=6, mfc="white", mec="black", zorder=4, gid="exits")
     if labels:
         offs = _label_offsets(ex)
         for point, text, i in _exit_labels(ex):
-            ax.annotate(text, point, xytext=tuple(11 * offs[i]), textcoords="offset points", ha="center",
-                        va="center", fontsize=9, color=cable_color(i), fontweight="bold", gid="cable-label")
+            ax.annotate(
+                text,
+                point,
+                xytext=tuple(11 * offs[i]),
+                textcoords="offset points",
+                ha="center",
+                va="center",
+                fontsize=9,
+                color=cable_color(i),
+                fontweight="bold",
+                gid="cable-label",
+            )
 
 
 def draw_scene_3d(ax, robot: Robot, *, labels: bool = True) -> np.ndarray:
@@ -217,7 +254,9 @@ def draw_scene_3d(ax, robot: Robot, *, labels: bool = True) -> np.ndarray:
         drawn.append(pts)
     for region in robot.disallowed:
         pts = lift(region)
-        ax.add_collection3d(Poly3DCollection([pts], facecolor=DISALLOWED, alpha=0.25, edgecolor=DISALLOWED, gid="disallowed"))
+        ax.add_collection3d(
+            Poly3DCollection([pts], facecolor=DISALLOWED, alpha=0.25, edgecolor=DISALLOWED, gid="disallowed")
+        )
         drawn.append(pts)
     for o in robot.obstacles:
         if isinstance(o, Circle):
@@ -230,7 +269,9 @@ def draw_scene_3d(ax, robot: Robot, *, labels: bool = True) -> np.ndarray:
             drawn.append(np.column_stack([x.ravel(), y.ravel(), z.ravel()]))
         else:
             pts = np.asarray(o.vertices, float)
-            ax.add_collection3d(Poly3DCollection([pts], facecolor=OBSTACLE, alpha=0.5, edgecolor="#555555", gid="obstacle"))
+            ax.add_collection3d(
+                Poly3DCollection([pts], facecolor=OBSTACLE, alpha=0.5, edgecolor="#555555", gid="obstacle")
+            )
             drawn.append(pts)
     ex = robot.exits
     ax.plot(ex[:, 0], ex[:, 1], ex[:, 2], ls="none", marker="s", ms=5, mfc="white", mec="black", gid="exits")
@@ -238,8 +279,18 @@ def draw_scene_3d(ax, robot: Robot, *, labels: bool = True) -> np.ndarray:
         offs = _label_offsets(ex) * 0.04 * _scene_scale(robot)
         for point, text, i in _exit_labels(ex):
             q = point + offs[i]
-            ax.text(q[0], q[1], q[2], text, color=cable_color(i), fontsize=9, fontweight="bold",
-                    ha="center", va="center", gid="cable-label")
+            ax.text(
+                q[0],
+                q[1],
+                q[2],
+                text,
+                color=cable_color(i),
+                fontsize=9,
+                fontweight="bold",
+                ha="center",
+                va="center",
+                gid="cable-label",
+            )
     return np.concatenate(drawn)
 
 
@@ -284,8 +335,15 @@ def _draw_2d(ax, robot: Robot, arr: np.ndarray) -> None:
     pos, rot = body_frames(robot, arr)
     pos, rot = pos[0], rot[0]
     for i, (a, bi) in enumerate(zip(robot.exits, b)):
-        ax.plot([a[0], bi[0]], [a[1], bi[1]], color=cable_color(i), lw=1.6, zorder=2,
-                label=f"cable {i + 1}", gid=f"cable-{i + 1}")
+        ax.plot(
+            [a[0], bi[0]],
+            [a[1], bi[1]],
+            color=cable_color(i),
+            lw=1.6,
+            zorder=2,
+            label=f"cable {i + 1}",
+            gid=f"cable-{i + 1}",
+        )
     p = arr[0, :2]
     if robot.is_point_mass:
         ax.plot([p[0]], [p[1]], ls="none", marker="o", ms=9, color=PLATFORM, zorder=5, label="platform", gid="platform")
@@ -299,19 +357,50 @@ def _draw_2d(ax, robot: Robot, arr: np.ndarray) -> None:
                 on_body = robot.cable_bodies == k
                 outline = _hull_2d(b[on_body]) if on_body.any() else np.empty((0, 2))
             if len(outline) >= 3:
-                ax.add_patch(PolygonPatch(outline, closed=True, fc=PLATFORM, ec="black", alpha=0.45, lw=1.2,
-                                          zorder=3, label="platform" if k == 0 else None, gid="platform"))
+                ax.add_patch(
+                    PolygonPatch(
+                        outline,
+                        closed=True,
+                        fc=PLATFORM,
+                        ec="black",
+                        alpha=0.45,
+                        lw=1.2,
+                        zorder=3,
+                        label="platform" if k == 0 else None,
+                        gid="platform",
+                    )
+                )
             elif len(outline) == 2:
-                ax.plot(outline[:, 0], outline[:, 1], color=PLATFORM, lw=4, solid_capstyle="round", zorder=3, gid="platform")
+                ax.plot(
+                    outline[:, 0], outline[:, 1], color=PLATFORM, lw=4, solid_capstyle="round", zorder=3, gid="platform"
+                )
             if k > 0:  # the joint: parent frame origin to body frame origin
                 par = parents[robot.platform.bodies[k - 1].parent]
-                ax.plot([pos[par][0], pos[k][0]], [pos[par][1], pos[k][1]], color="black", lw=1, ls="--", zorder=3, gid="joint")
+                ax.plot(
+                    [pos[par][0], pos[k][0]],
+                    [pos[par][1], pos[k][1]],
+                    color="black",
+                    lw=1,
+                    ls="--",
+                    zorder=3,
+                    gid="joint",
+                )
         for k, cap in robot.body_capsules:
             ends = _transform([cap.a, cap.b], pos[k], rot[k])
             geom = (LineString(ends) if np.ptp(ends, axis=0).max() > 0 else Point(ends[0])).buffer(cap.radius, 24)
             if not geom.is_empty:
-                ax.add_patch(PolygonPatch(np.asarray(geom.exterior.coords), closed=True, fill=False, ec=PLATFORM,
-                                          lw=1.0, ls="--", zorder=3, gid="capsule"))
+                ax.add_patch(
+                    PolygonPatch(
+                        np.asarray(geom.exterior.coords),
+                        closed=True,
+                        fill=False,
+                        ec=PLATFORM,
+                        lw=1.0,
+                        ls="--",
+                        zorder=3,
+                        gid="capsule",
+                    )
+                )
         ax.plot([p[0]], [p[1]], ls="none", marker="+", ms=9, color="black", zorder=5, gid="reference-point")
     ax.plot(b[:, 0], b[:, 1], ls="none", marker="o", ms=3.5, color="black", zorder=4, gid="anchors")
     ax.set_aspect("equal")
@@ -334,8 +423,15 @@ def _draw_3d(ax, robot: Robot, arr: np.ndarray) -> None:
     pos, rot = pos[0], rot[0]
     drawn.append(b)
     for i, (a, bi) in enumerate(zip(robot.exits, b)):
-        ax.plot([a[0], bi[0]], [a[1], bi[1]], [a[2], bi[2]], color=cable_color(i), lw=1.4,
-                label=f"cable {i + 1}", gid=f"cable-{i + 1}")
+        ax.plot(
+            [a[0], bi[0]],
+            [a[1], bi[1]],
+            [a[2], bi[2]],
+            color=cable_color(i),
+            lw=1.4,
+            label=f"cable {i + 1}",
+            gid=f"cable-{i + 1}",
+        )
     p = arr[0, :3]
     if robot.is_point_mass:
         ax.plot([p[0]], [p[1]], [p[2]], ls="none", marker="o", ms=8, color=PLATFORM, gid="platform")
@@ -349,15 +445,26 @@ def _draw_3d(ax, robot: Robot, arr: np.ndarray) -> None:
                 faces = _hull_faces_3d(b[on_body]) if on_body.any() else []
             polys = [f for f in faces if len(f) >= 3]
             if polys:
-                ax.add_collection3d(Poly3DCollection(polys, facecolor=PLATFORM, alpha=0.3, edgecolor="black",
-                                                     linewidths=0.8, gid="platform"))
+                ax.add_collection3d(
+                    Poly3DCollection(
+                        polys, facecolor=PLATFORM, alpha=0.3, edgecolor="black", linewidths=0.8, gid="platform"
+                    )
+                )
             for f in faces:
                 if len(f) == 2:
                     ax.plot(f[:, 0], f[:, 1], f[:, 2], color=PLATFORM, lw=4, gid="platform")
         for k, cap in robot.body_capsules:
             ends = _transform([cap.a, cap.b], pos[k], rot[k])
-            ax.plot(ends[:, 0], ends[:, 1], ends[:, 2], color=PLATFORM, lw=7, alpha=0.35, solid_capstyle="round",
-                    gid="capsule")
+            ax.plot(
+                ends[:, 0],
+                ends[:, 1],
+                ends[:, 2],
+                color=PLATFORM,
+                lw=7,
+                alpha=0.35,
+                solid_capstyle="round",
+                gid="capsule",
+            )
             drawn.append(ends)
         ax.plot([p[0]], [p[1]], [p[2]], ls="none", marker="+", ms=8, color="black", gid="reference-point")
     ax.plot(b[:, 0], b[:, 1], b[:, 2], ls="none", marker="o", ms=3, color="black", gid="anchors")

@@ -58,8 +58,15 @@ def plot_tensions(times_or_index, tensions, tmin, tmax, feasible=None, ax=None, 
         raise ValueError("tensions are drawn on 2-D axes")
 
     for i in range(n):
-        ax.plot(x, T[:, i], color=cable_color(i), lw=1.5, marker="." if N <= 40 else None,
-                label=f"cable {i + 1}", gid=f"tension-{i + 1}")
+        ax.plot(
+            x,
+            T[:, i],
+            color=cable_color(i),
+            lw=1.5,
+            marker="." if N <= 40 else None,
+            label=f"cable {i + 1}",
+            gid=f"tension-{i + 1}",
+        )
     for bounds, name in ((lo, "τ_min"), (hi, "τ_max")):
         finite = np.isfinite(bounds)
         if not finite.any():
@@ -68,8 +75,15 @@ def plot_tensions(times_or_index, tensions, tmin, tmax, feasible=None, ax=None, 
             ax.axhline(bounds[finite][0], color="black", ls="--", lw=1.0, label=name, gid="bound")
         else:
             for i in np.flatnonzero(finite):
-                ax.axhline(bounds[i], color=cable_color(i), ls="--", lw=0.9, alpha=0.8,
-                           label=name if i == np.flatnonzero(finite)[0] else None, gid="bound")
+                ax.axhline(
+                    bounds[i],
+                    color=cable_color(i),
+                    ls="--",
+                    lw=0.9,
+                    alpha=0.8,
+                    label=name if i == np.flatnonzero(finite)[0] else None,
+                    gid="bound",
+                )
     bad = ~ok
     if bad.any():
         order = np.argsort(x, kind="stable")
@@ -78,10 +92,26 @@ def plot_tensions(times_or_index, tensions, tmin, tmax, feasible=None, ax=None, 
         left = np.concatenate([[half[0]], half])
         right = np.concatenate([half, [half[-1]]])
         for k, (a, b) in enumerate(_runs(bs)):
-            ax.axvspan(xs[a] - left[a], xs[b - 1] + right[b - 1], color=DISALLOWED, alpha=0.15, lw=0,
-                       label="infeasible" if k == 0 else None, gid="infeasible-span")
-        ax.plot(x[bad], np.zeros(int(bad.sum())), ls="none", marker="x", color=DISALLOWED, ms=6, clip_on=False,
-                transform=ax.get_xaxis_transform(), gid="infeasible")
+            ax.axvspan(
+                xs[a] - left[a],
+                xs[b - 1] + right[b - 1],
+                color=DISALLOWED,
+                alpha=0.15,
+                lw=0,
+                label="infeasible" if k == 0 else None,
+                gid="infeasible-span",
+            )
+        ax.plot(
+            x[bad],
+            np.zeros(int(bad.sum())),
+            ls="none",
+            marker="x",
+            color=DISALLOWED,
+            ms=6,
+            clip_on=False,
+            transform=ax.get_xaxis_transform(),
+            gid="infeasible",
+        )
     ax.set_xlabel(xlabel)
     ax.set_ylabel("tension [N]")
     ax.grid(True, lw=0.3, alpha=0.5)

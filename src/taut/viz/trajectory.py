@@ -20,8 +20,14 @@ def draw_wrapped_cables(ax, result, sample: int) -> None:
         path = result.ik.path(sample, i)
         col = cable_color(i)
         for j, (a, b) in enumerate(path.segments):
-            ax.plot([a[0], b[0]], [a[1], b[1]], color=col, lw=1.6, ls="--" if j == len(path.segments) - 1 else "-",
-                    gid=f"wrapped-cable-{i + 1}")
+            ax.plot(
+                [a[0], b[0]],
+                [a[1], b[1]],
+                color=col,
+                lw=1.6,
+                ls="--" if j == len(path.segments) - 1 else "-",
+                gid=f"wrapped-cable-{i + 1}",
+            )
         for k in range(len(path.arcs)):
             if path.arcs[k, 2] > 0 and abs(path.arcs[k, 4]) > 0:
                 pts = path.arc_points(k)
@@ -76,21 +82,25 @@ def trajectory_section(report) -> None:
         traj = next(iter(robot.trajectories))
         t, P = builtin_trajectory(robot, traj, dt=0.02)
         res = run_trajectory(robot, t, P)
-        rows.append({
-            "robot": name,
-            "trajectory": traj,
-            "samples": len(t),
-            "duration [s]": round(float(t[-1]), 2),
-            "wraps": sum(e["kind"] == "wrap" for e in res.transitions),
-            "unwraps": sum(e["kind"] == "unwrap" for e in res.transitions),
-            "tension feasible": bool(res.feasible.all()),
-        })
+        rows.append(
+            {
+                "robot": name,
+                "trajectory": traj,
+                "samples": len(t),
+                "duration [s]": round(float(t[-1]), 2),
+                "wraps": sum(e["kind"] == "wrap" for e in res.transitions),
+                "unwraps": sum(e["kind"] == "unwrap" for e in res.transitions),
+                "tension feasible": bool(res.feasible.all()),
+            }
+        )
         figures.append((plot_trajectory(robot, res), f"{name}-trajectory.png", f"{name}: {traj}"))
     report.add_section(
         "Variable-structure robots: wrapping cables along trajectories",
-        text=("Cable states tracked with the cable-state tree and the exact-event form of Alg. 4.4 "
-              "(000_3d5147f1d4639546.txt §4.2–4.3); waypoint moves with 1 s dwells (§6.2), "
-              "Eqs. (4.12)/(4.13) as parametric paths; minimum-sum LP tensions per sample (§6.1.2)."),
+        text=(
+            "Cable states tracked with the cable-state tree and the exact-event form of Alg. 4.4 "
+            "(000_3d5147f1d4639546.txt §4.2–4.3); waypoint moves with 1 s dwells (§6.2), "
+            "Eqs. (4.12)/(4.13) as parametric paths; minimum-sum LP tensions per sample (§6.1.2)."
+        ),
         figures=figures,
         table=rows,
     )

@@ -34,9 +34,11 @@ def _fixed_coordinates(result, robot, used: list[int]) -> str:
     poses = np.asarray(result.poses, float)
     if poses.ndim != 2 or not len(poses):
         return ""
-    names = list(robot.pose_names) if robot is not None and len(robot.pose_names) == poses.shape[1] else [
-        (_AXIS_NAMES[j] if j < len(result.axes) else f"q{j + 1}") for j in range(poses.shape[1])
-    ]
+    names = (
+        list(robot.pose_names)
+        if robot is not None and len(robot.pose_names) == poses.shape[1]
+        else [(_AXIS_NAMES[j] if j < len(result.axes) else f"q{j + 1}") for j in range(poses.shape[1])]
+    )
     out = []
     for j in range(poses.shape[1]):
         if j in used:
@@ -103,8 +105,18 @@ def _image(result, robot, ax, mask, coords, keep):
         img = np.take(img, 0, axis=drop)
     i, j = keep
     xe, ye = _edges(coords[i]), _edges(coords[j])
-    ax.imshow(img.T.astype(float), origin="lower", extent=(*xe, *ye), cmap=ListedColormap([OUTSIDE, INSIDE]),
-              vmin=0, vmax=1, interpolation="nearest", aspect="equal", zorder=0, gid="workspace")
+    ax.imshow(
+        img.T.astype(float),
+        origin="lower",
+        extent=(*xe, *ye),
+        cmap=ListedColormap([OUTSIDE, INSIDE]),
+        vmin=0,
+        vmax=1,
+        interpolation="nearest",
+        aspect="equal",
+        zorder=0,
+        gid="workspace",
+    )
     if robot is not None and robot.dimension == 2 and keep == [0, 1]:
         draw_scene_2d(ax, robot)
         ax.margins(0.05)
@@ -112,8 +124,13 @@ def _image(result, robot, ax, mask, coords, keep):
     ax.set_aspect("equal")
     ax.set_xlabel(f"{_AXIS_NAMES[i]} [m]")
     ax.set_ylabel(f"{_AXIS_NAMES[j]} [m]")
-    ax.legend(handles=[Patch(fc=INSIDE, label="inside"), Patch(fc=OUTSIDE, ec="#bbbbbb", label="outside")],
-              fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+    ax.legend(
+        handles=[Patch(fc=INSIDE, label="inside"), Patch(fc=OUTSIDE, ec="#bbbbbb", label="outside")],
+        fontsize=8,
+        loc="upper left",
+        bbox_to_anchor=(1.02, 1.0),
+        borderaxespad=0.0,
+    )
     return ax
 
 
@@ -131,8 +148,9 @@ def _scatter(result, robot, ax, mask, coords, max_points):
     if len(pts) > max_points:
         pick = np.sort(np.random.default_rng(0).choice(len(pts), max_points, replace=False))
         pts = pts[pick]
-    ax.scatter(pts[:, 0], pts[:, 1], pts[:, 2], c=pts[:, 2], cmap="viridis", s=5, alpha=0.45, depthshade=False,
-               gid="workspace")
+    ax.scatter(
+        pts[:, 0], pts[:, 1], pts[:, 2], c=pts[:, 2], cmap="viridis", s=5, alpha=0.45, depthshade=False, gid="workspace"
+    )
     bounds = np.array([[c.min(), c.max()] for c in coords]).T
     drawn = [bounds]
     if robot is not None and robot.dimension == 3:

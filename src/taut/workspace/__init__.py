@@ -16,7 +16,19 @@ from taut.workspace.evaluate import WorkspaceResult, evaluate_workspace
 from taut.workspace.grid import PoseGrid, default_bounds, make_grid, pose_grid, position_grid
 
 __all__ = [
-    "CONDITIONS", "PoseGrid", "StaticEquilibrium", "WorkspaceCondition", "WorkspaceResult", "WrenchClosure",
-    "WrenchCondition", "WrenchFeasible", "default_bounds", "default_wrench_set", "evaluate_workspace",
-    "make_condition", "make_grid", "pose_grid", "position_grid",
+    "CONDITIONS",
+    "PoseGrid",
+    "StaticEquilibrium",
+    "WorkspaceCondition",
+    "WorkspaceResult",
+    "WrenchClosure",
+    "WrenchCondition",
+    "WrenchFeasible",
+    "default_bounds",
+    "default_wrench_set",
+    "evaluate_workspace",
+    "make_condition",
+    "make_grid",
+    "pose_grid",
+    "position_grid",
 ]

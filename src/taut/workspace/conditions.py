@@ -22,7 +22,6 @@ inverse kinematics does not exist (a zero-length cable) are outside.
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-
 from typing import ClassVar
 
 import numpy as np
@@ -133,14 +132,18 @@ class WrenchFeasible(WrenchCondition):
 
     def __init__(self, wrench_set: WrenchSet | None = None, around_external: bool = True):
         if wrench_set is not None and not isinstance(wrench_set, WrenchSet):
-            raise TautError(f"wrench_set must be a WrenchSet (box, polytope, ellipsoid, single wrench), got {type(wrench_set).__name__}")
+            raise TautError(
+                f"wrench_set must be a WrenchSet (box, polytope, ellipsoid, single wrench), got {type(wrench_set).__name__}"
+            )
         self.wrench_set = wrench_set
         self.around_external = bool(around_external)
 
     def required_set(self, robot: Robot) -> WrenchSet:
         ws = self.wrench_set if self.wrench_set is not None else default_wrench_set(robot)
         if ws.dim != robot.wrench_dim:
-            raise TautError(f"{robot.name}: the wrench set has {ws.dim} components, the robot's wrenches {robot.wrench_dim}")
+            raise TautError(
+                f"{robot.name}: the wrench set has {ws.dim} components, the robot's wrenches {robot.wrench_dim}"
+            )
         return ws
 
     def test(self, robot, poses, W):
@@ -190,7 +193,9 @@ def make_condition(condition, **options) -> WorkspaceCondition:
     elif isinstance(condition, type) and issubclass(condition, WorkspaceCondition):
         cls = condition
     else:
-        raise TautError(f"a workspace condition is a name ({', '.join(CONDITIONS)}) or a WorkspaceCondition, got {condition!r}")
+        raise TautError(
+            f"a workspace condition is a name ({', '.join(CONDITIONS)}) or a WorkspaceCondition, got {condition!r}"
+        )
     try:
         return cls(**options)
     except TypeError:

@@ -87,14 +87,22 @@ class WorkspaceResult:
         np.savez_compressed(path, poses=self.poses, inside=self.inside, metadata=np.array(json.dumps(meta)), **arrays)
 
     @classmethod
-    def load(cls, path) -> "WorkspaceResult":
+    def load(cls, path) -> WorkspaceResult:
         """Read a file written by :meth:`save`."""
         try:
             with np.load(path, allow_pickle=False) as f:
                 meta = json.loads(str(f["metadata"]))
                 axes = tuple(f[f"axis_{i}"] for i in range(len(meta["grid_shape"])) if f"axis_{i}" in f.files)
-                return cls(meta["robot"], meta["condition"], f["poses"], f["inside"].astype(bool), axes,
-                           tuple(meta["grid_shape"]), meta["elapsed_s"], tuple(meta.get("axis_names", ())))
+                return cls(
+                    meta["robot"],
+                    meta["condition"],
+                    f["poses"],
+                    f["inside"].astype(bool),
+                    axes,
+                    tuple(meta["grid_shape"]),
+                    meta["elapsed_s"],
+                    tuple(meta.get("axis_names", ())),
+                )
         except (OSError, KeyError, ValueError) as exc:
             raise TautError(f"{path}: not a taut workspace file ({exc})") from None
 
@@ -159,4 +167,6 @@ def evaluate_workspace(
     results = runner.map(_evaluate_chunk, items, callback=callback if progress else None)
     inside = np.concatenate(results) if results else np.zeros(0, bool)
     elapsed = time.perf_counter() - t0
-    return WorkspaceResult(robot.name, cond.name, arr, inside, tuple(np.asarray(a) for a in axes), tuple(shape), elapsed, tuple(names))
+    return WorkspaceResult(
+        robot.name, cond.name, arr, inside, tuple(np.asarray(a) for a in axes), tuple(shape), elapsed, tuple(names)
+    )

@@ -137,7 +137,9 @@ def position_grid(robot: Robot, resolution: int | None = None, bounds=None, orie
 def pose_grid(robot: Robot, axes: Sequence) -> PoseGrid:
     """Full pose grid: one axis (``(lo, hi, n)`` tuple or coordinates) per pose coordinate."""
     if len(axes) != robot.pose_size:
-        raise TautError(f"{robot.name}: a full pose grid needs {robot.pose_size} axes ({', '.join(robot.pose_names)}), got {len(axes)}")
+        raise TautError(
+            f"{robot.name}: a full pose grid needs {robot.pose_size} axes ({', '.join(robot.pose_names)}), got {len(axes)}"
+        )
     arr = tuple(_axis(a, f"axis {robot.pose_names[i]}") for i, a in enumerate(axes))
     return PoseGrid(arr, tuple(range(robot.pose_size)), np.zeros(robot.pose_size), tuple(robot.pose_names))
 

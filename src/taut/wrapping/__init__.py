@@ -7,5 +7,16 @@ from taut.wrapping.trajectory import TrajectoryResult, builtin_trajectory, run_t
 from taut.wrapping.tree import CableStateTree
 from taut.wrapping.update import track, update_state
 
-__all__ = ["CablePath", "CableState", "CableStateTree", "TrajectoryResult", "WrappedIK", "builtin_trajectory",
-           "rebuild_path", "run_trajectory", "track", "update_state", "wrapped_inverse_kinematics"]
+__all__ = [
+    "CablePath",
+    "CableState",
+    "CableStateTree",
+    "TrajectoryResult",
+    "WrappedIK",
+    "builtin_trajectory",
+    "rebuild_path",
+    "run_trajectory",
+    "track",
+    "update_state",
+    "wrapped_inverse_kinematics",
+]

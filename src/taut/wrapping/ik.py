@@ -66,12 +66,16 @@ def _check_inside(robot: Robot, circles: np.ndarray, polys: list, anchors: np.nd
         bad = d < circles[None, :, 2]
         if bad.any():
             s, k = np.argwhere(bad)[0]
-            raise PoseError(f"{what}: the platform anchor {[round(float(x), 6) for x in b[s]]} is inside object {k + 1}")
+            raise PoseError(
+                f"{what}: the platform anchor {[round(float(x), 6) for x in b[s]]} is inside object {k + 1}"
+            )
     n_obst = sum(1 for o in robot.obstacles if not isinstance(o, Circle))
-    for poly in polys[len(polys) - n_obst:] if n_obst else []:
+    for poly in polys[len(polys) - n_obst :] if n_obst else []:
         inside = point_in_polygon(b, poly)
         if inside.any():
-            raise PoseError(f"{what}: the platform anchor {[round(float(x), 6) for x in b[np.argmax(inside)]]} is inside a polygon obstacle")
+            raise PoseError(
+                f"{what}: the platform anchor {[round(float(x), 6) for x in b[np.argmax(inside)]]} is inside a polygon obstacle"
+            )
 
 
 @dataclass
@@ -95,8 +99,9 @@ class WrappedIK:
     def path(self, sample: int, cable: int) -> CablePath:
         """The full path (segments and arcs) of ``cable`` at ``sample``."""
         tree = self.trees[cable]
-        return rebuild_path(tree.circles, tree.winch_direction, tree.state(int(self.nodes[sample, cable])),
-                            self.anchors[sample, cable])
+        return rebuild_path(
+            tree.circles, tree.winch_direction, tree.state(int(self.nodes[sample, cable])), self.anchors[sample, cable]
+        )
 
     def transitions(self, times=None) -> list[dict]:
         """Wraps and unwraps in time order: ``{"time", "sample", "cable", "kind", "object"}``
@@ -106,13 +111,15 @@ class WrappedIK:
         for i, ev in enumerate(self.events):
             for j, tau, kind, node in ev:
                 j, node = int(j), int(node)
-                out.append({
-                    "time": float(t[j - 1] + tau * (t[j] - t[j - 1])),
-                    "sample": j,
-                    "cable": i + 1,
-                    "kind": "wrap" if kind == 1 else "unwrap",
-                    "object": int(self.trees[i].I[node, OBJ]) + 1,
-                })
+                out.append(
+                    {
+                        "time": float(t[j - 1] + tau * (t[j] - t[j - 1])),
+                        "sample": j,
+                        "cable": i + 1,
+                        "kind": "wrap" if kind == 1 else "unwrap",
+                        "object": int(self.trees[i].I[node, OBJ]) + 1,
+                    }
+                )
         return sorted(out, key=lambda e: (e["time"], e["cable"]))
 
 
@@ -172,6 +179,8 @@ def _start_node(tree: CableStateTree, b, contacts, i: int) -> int:
         return tree.shortest_taut_state(b)
     node = tree.find([(int(k), int(d)) for k, d in contacts])
     if not tree.is_taut(node, b):
-        raise TautError(f"cable {i + 1}: the start state {list(contacts)} is not taut at {[round(float(x), 6) for x in b]} "
-                        "(its last segment wraps backwards, meets an object or enters a disallowed region)")
+        raise TautError(
+            f"cable {i + 1}: the start state {list(contacts)} is not taut at {[round(float(x), 6) for x in b]} "
+            "(its last segment wraps backwards, meets an object or enters a disallowed region)"
+        )
     return node

@@ -104,7 +104,9 @@ def rebuild_path(circles, winch_direction: int, state: CableState, b) -> CablePa
             c2, r2 = circles[nk, :2], circles[nk, 2]
         x1, x2, u, L, ok = directed_tangent(c1, r1, d, c2, r2, nd)
         if not ok:
-            raise TautError(f"no tangent from object {k + 1} to {'the platform anchor' if nk is None else f'object {nk + 1}'}")
+            raise TautError(
+                f"no tangent from object {k + 1} to {'the platform anchor' if nk is None else f'object {nk + 1}'}"
+            )
         theta_out = float(contact_angle(u, d))
         phi = float(wrap_angle(theta_in, theta_out, d, WINCH_LOW if j == 0 else WRAP_LOW))
         arcs.append((c1[0], c1[1], r1, theta_in, phi, d))

@@ -37,7 +37,11 @@ DEFAULT_SPEED = 0.1
 #: Parametric paths of the source: name → (p(t) for an array t, t0, t1).
 PARAMETRIC = {
     "eq-4.12": (lambda t: np.column_stack([t, 1 + np.cos(2 * np.pi * t / 3)]), 0.0, 4.0),
-    "eq-4.13": (lambda t: np.column_stack([0.75 * np.cos(np.pi * t / 5), -0.5 + 0.75 * np.sin(np.pi * t / 5)]), 0.0, 5.0),
+    "eq-4.13": (
+        lambda t: np.column_stack([0.75 * np.cos(np.pi * t / 5), -0.5 + 0.75 * np.sin(np.pi * t / 5)]),
+        0.0,
+        5.0,
+    ),
 }
 
 
@@ -82,8 +86,9 @@ def sample_path(path, t0: float, t1: float, dt: float) -> tuple[np.ndarray, np.n
     return t, np.asarray(path(t), float)
 
 
-def builtin_trajectory(robot: Robot, name: str | None = None, dt: float = 0.01, speed: float | None = None,
-                       dwell: float | None = None) -> tuple[np.ndarray, np.ndarray]:
+def builtin_trajectory(
+    robot: Robot, name: str | None = None, dt: float = 0.01, speed: float | None = None, dwell: float | None = None
+) -> tuple[np.ndarray, np.ndarray]:
     """``(times, poses)`` of a named trajectory of ``robot`` (its first one by default):
     the parametric path of :data:`PARAMETRIC` if the name is one, else its waypoints."""
     if not robot.trajectories:
@@ -105,7 +110,9 @@ def full_poses(robot: Robot, poses) -> np.ndarray:
         return P
     if P.shape[1] == robot.dimension:
         return np.hstack([P, np.zeros((len(P), robot.pose_size - robot.dimension))])
-    raise TautError(f"{robot.name}: a waypoint has {robot.dimension} (position) or {robot.pose_size} (pose) coordinates, got {P.shape[1]}")
+    raise TautError(
+        f"{robot.name}: a waypoint has {robot.dimension} (position) or {robot.pose_size} (pose) coordinates, got {P.shape[1]}"
+    )
 
 
 def length_controlled(ik: WrappedIK, m: int) -> np.ndarray:
@@ -153,15 +160,20 @@ class TrajectoryResult:
         }
 
 
-def run_trajectory(robot: Robot, times, poses, initial: dict | None = None, wrench=None,
-                   tension_bounds=None) -> TrajectoryResult:
+def run_trajectory(
+    robot: Robot, times, poses, initial: dict | None = None, wrench=None, tension_bounds=None
+) -> TrajectoryResult:
     """IK, length-control assignment and LP tensions at every sample of ``(times, poses)``."""
     times = np.asarray(times, float)
     P = full_poses(robot, poses)
     if len(times) != len(P):
         raise TautError(f"{len(times)} times for {len(P)} poses")
     ik = wrapped_inverse_kinematics(robot, P, initial)
-    w = external_wrench(robot, P) if wrench is None else np.broadcast_to(np.asarray(wrench, float), (len(P), robot.wrench_dim))
+    w = (
+        external_wrench(robot, P)
+        if wrench is None
+        else np.broadcast_to(np.asarray(wrench, float), (len(P), robot.wrench_dim))
+    )
     tmin, tmax = robot.tension_bounds if tension_bounds is None else tension_bounds
     res = solve_tensions(ik.structure_matrix, w, tmin, tmax, method="lp")
     controlled = length_controlled(ik, robot.wrench_dim)

@@ -141,11 +141,15 @@ class CableStateTree:
                 phi = wrap_angle(self.F[node, THETA_IN], contact_angle(u, d), d, WRAP_LOW)
                 keep &= phi >= -TAUT_TOL
             x1s, x2s = np.where(keep[:, None], x1, 0.0), np.where(keep[:, None], x2, 0.0)
-            meets = segment_meets_circle(x1s[:, None], x2s[:, None], self.circles[None, :, :2], self.circles[None, :, 2], MEET_TOL)
+            meets = segment_meets_circle(
+                x1s[:, None], x2s[:, None], self.circles[None, :, :2], self.circles[None, :, 2], MEET_TOL
+            )
             keep &= ~meets.any(axis=1)
             earlier = self.static_segments(node)[:-1] if node != 0 else np.zeros((0, 2, 2))
             if len(earlier):
-                cross = segments_intersect(x1s[:, None], x2s[:, None], earlier[None, :, 0], earlier[None, :, 1], tol=MEET_TOL)
+                cross = segments_intersect(
+                    x1s[:, None], x2s[:, None], earlier[None, :, 0], earlier[None, :, 1], tol=MEET_TOL
+                )
                 keep &= ~cross.any(axis=1)
             for poly in self.disallowed:
                 keep &= ~segment_enters_polygon(x1s, x2s, poly, MEET_TOL)
@@ -198,7 +202,9 @@ class CableStateTree:
         """Cable length (Eq. 4.9) in state ``node`` with the platform end at ``b``."""
         x, u, L, ok = self.active_segment(node, b)
         if not ok:
-            raise TautError(f"the platform anchor {[round(float(x), 6) for x in b]} is inside object {int(self.I[node, OBJ]) + 1}")
+            raise TautError(
+                f"the platform anchor {[round(float(x), 6) for x in b]} is inside object {int(self.I[node, OBJ]) + 1}"
+            )
         d = self.F[node, DIR]
         low = WINCH_LOW if node == 0 else WRAP_LOW
         phi = wrap_angle(self.F[node, THETA_IN], contact_angle(u, d), d, low)
@@ -245,5 +251,7 @@ class CableStateTree:
                 if bound < best:
                     heapq.heappush(heap, (float(bound), int(c)))
         if best_node < 0:
-            raise TautError(f"no taut cable path reaches {[round(float(x), 6) for x in b]} (every routing is blocked or enters a disallowed region)")
+            raise TautError(
+                f"no taut cable path reaches {[round(float(x), 6) for x in b]} (every routing is blocked or enters a disallowed region)"
+            )
         return best_node

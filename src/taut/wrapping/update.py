@@ -155,23 +155,35 @@ def track(tree: CableStateTree, points, node: int = 0) -> Tracking:
     lengths = np.zeros(T)
     dirs = np.zeros((T, 2))
     cap = 64
-    ev_j, ev_t, ev_kind, ev_node = np.zeros(cap, np.int64), np.zeros(cap), np.zeros(cap, np.int64), np.zeros(cap, np.int64)
+    ev_j, ev_t, ev_kind, ev_node = (
+        np.zeros(cap, np.int64),
+        np.zeros(cap),
+        np.zeros(cap, np.int64),
+        np.zeros(cap, np.int64),
+    )
     j, t, n_ev = 0, 0.0, 0
     tree.expand(node)
     while True:
-        status, j, t, node, n_ev = _track(tree.F, tree.I, tree.circles, P, node, j, t, nodes, lengths, dirs,
-                                          ev_j, ev_t, ev_kind, ev_node, n_ev)
+        status, j, t, node, n_ev = _track(
+            tree.F, tree.I, tree.circles, P, node, j, t, nodes, lengths, dirs, ev_j, ev_t, ev_kind, ev_node, n_ev
+        )
         if status == _DONE:
             break
         if status == _EXPAND:
             tree.expand(node)
         elif status == _FULL:
             cap *= 2
-            ev_j, ev_t, ev_kind, ev_node = (np.concatenate([a, np.zeros_like(a)]) for a in (ev_j, ev_t, ev_kind, ev_node))
+            ev_j, ev_t, ev_kind, ev_node = (
+                np.concatenate([a, np.zeros_like(a)]) for a in (ev_j, ev_t, ev_kind, ev_node)
+            )
         elif status == _INSIDE:
-            raise TautError(f"the platform anchor {[round(float(x), 6) for x in P[j]]} is inside object {int(tree.I[node, 1]) + 1}")
+            raise TautError(
+                f"the platform anchor {[round(float(x), 6) for x in P[j]]} is inside object {int(tree.I[node, 1]) + 1}"
+            )
         else:
-            raise TautError(f"the cable state does not settle at sample {j} (more than {MAX_EVENTS_PER_STEP} transitions in one step)")
+            raise TautError(
+                f"the cable state does not settle at sample {j} (more than {MAX_EVENTS_PER_STEP} transitions in one step)"
+            )
     events = np.column_stack([ev_j[:n_ev], ev_t[:n_ev], ev_kind[:n_ev], ev_node[:n_ev]])
     return Tracking(nodes, lengths, dirs, events)
 
