@@ -31,7 +31,7 @@ lint: $(STAMP)
 	$(VENV)/bin/ruff format --check src tests benchmarks
 
 types: $(STAMP)
-	$(VENV)/bin/mypy src/taut
+	$(VENV)/bin/mypy
 
 check: lint types test-all
 
