@@ -152,9 +152,9 @@ def test_spatial_robot():
 
 def test_axes_of_the_wrong_kind_are_refused():
     fig = plt.figure()
-    with pytest.raises(ValueError, match="3-D axes"):
+    with pytest.raises(TypeError, match="3-D axes"):
         draw_robot(SPATIAL, None, ax=fig.add_subplot())
-    with pytest.raises(ValueError, match="2-D axes"):
+    with pytest.raises(TypeError, match="2-D axes"):
         draw_robot(PLANAR, None, ax=fig.add_subplot(projection="3d"))
 
 

@@ -6,9 +6,23 @@ and workspace results; it never imports ``cli``).
 - :func:`plot_tensions` — cable tensions along a sequence of poses;
 - :class:`Report` — a self-contained ``index.html`` with PNG figures, tables and JSON.
 
-Every function takes ``ax=None`` (a new figure) or an existing ``Axes`` and returns the
-``Axes``; cable *i* has the same colour in every figure and is labelled with its 1-based
-number.
+A function that draws on one set of axes takes ``ax: matplotlib.axes.Axes | None = None``
+and returns the ``Axes`` it drew on: the given one, or with ``ax=None`` the axes of a new
+figure (made through pyplot).  These are :func:`draw_robot`, :func:`plot_workspace`,
+:func:`plot_tensions`, :func:`taut.viz.robot.draw_scene_2d`,
+:func:`taut.viz.robot.draw_scene_3d` and :func:`taut.viz.trajectory.draw_wrapped_cables`.
+A 3-D plot (a spatial robot or scene, a full spatial workspace) needs an
+``mpl_toolkits.mplot3d.axes3d.Axes3D`` (``projection="3d"``), a 2-D plot a plain ``Axes``;
+axes of the other kind raise ``TypeError``.
+
+A function that draws several panels takes ``fig: matplotlib.figure.Figure | None = None``
+instead and returns that ``Figure``: the given one, which must be empty (a figure that
+already has axes raises ``ValueError``), or a new one.  These are
+:func:`taut.viz.atlas.plot_atlas`, :func:`taut.viz.check.plot_check`,
+:func:`taut.viz.dgp.plot_equilibria`, :func:`taut.viz.dgp.plot_tracking`,
+:func:`taut.viz.plan.plot_plan` and :func:`taut.viz.trajectory.plot_trajectory`.
+
+Cable *i* has the same colour in every figure and is labelled with its 1-based number.
 """
 
 from taut.viz.report import Report

@@ -1,8 +1,17 @@
-"""Shared look of taut's figures: one colour per cable, the same in every figure."""
+"""Shared look of taut's figures (one colour per cable, the same in every figure) and the
+checks of the axes and figures that the plotting functions are given."""
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
+import numpy.typing as npt
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+    from mpl_toolkits.mplot3d.axes3d import Axes3D
 
 #: Colours cycled over cables (matplotlib's ``tab10``): cable *i* (1-based) has ``CABLE_COLORS[(i-1) % 10]``.
 CABLE_COLORS = (
@@ -30,20 +39,46 @@ def cable_color(i: int) -> str:
     return CABLE_COLORS[i % len(CABLE_COLORS)]
 
 
-def new_axes(three_d: bool, figsize=None):
-    """A fresh figure (through pyplot, so that it shows in notebooks) and its axes."""
+def axes_2d(ax: Axes | None, what: str, figsize: tuple[float, float] = (6.0, 6.0)) -> Axes:
+    """``ax`` if it is 2-D, else a ``TypeError`` naming ``what`` is drawn; with ``ax=None``
+    the axes of a new figure (through pyplot, so that it shows in notebooks)."""
     import matplotlib.pyplot as plt
+    from mpl_toolkits.mplot3d.axes3d import Axes3D
 
-    fig = plt.figure(figsize=figsize or ((7.0, 6.0) if three_d else (6.0, 6.0)))
-    ax = fig.add_subplot(projection="3d") if three_d else fig.add_subplot()
+    if ax is None:
+        return plt.figure(figsize=figsize).add_subplot()
+    if isinstance(ax, Axes3D):
+        raise TypeError(f"{what} is drawn on 2-D axes, got 3-D axes (projection='3d')")
     return ax
 
 
-def is_3d(ax) -> bool:
-    return getattr(ax, "name", "") == "3d"
+def axes_3d(ax: Axes | None, what: str, figsize: tuple[float, float] = (7.0, 6.0)) -> Axes3D:
+    """``ax`` if it is a 3-D ``Axes3D`` (``projection="3d"``), else a ``TypeError`` naming
+    ``what`` is drawn; with ``ax=None`` the 3-D axes of a new figure."""
+    import matplotlib.pyplot as plt
+    from mpl_toolkits.mplot3d.axes3d import Axes3D
+
+    if ax is None:
+        ax = plt.figure(figsize=figsize).add_subplot(projection="3d")
+    if not isinstance(ax, Axes3D):
+        raise TypeError(f"{what} is drawn on 3-D axes (projection='3d'), got 2-D axes")
+    return ax
 
 
-def set_equal_3d(ax, points: np.ndarray, margin: float = 0.05) -> None:
+def empty_figure(fig: Figure | None, what: str, figsize: tuple[float, float]) -> Figure:
+    """``fig`` if it holds no axes yet, else a ``ValueError`` naming ``what`` is drawn (its
+    panels are laid out over the whole figure); with ``fig=None`` a new figure of
+    ``figsize`` through pyplot."""
+    import matplotlib.pyplot as plt
+
+    if fig is None:
+        return plt.figure(figsize=figsize)
+    if fig.axes:
+        raise ValueError(f"{what} lays out its panels on an empty figure, the given one has {len(fig.axes)} axes")
+    return fig
+
+
+def set_equal_3d(ax: Axes3D, points: npt.ArrayLike, margin: float = 0.05) -> None:
     """Limits enclosing ``points`` (k, 3) with a box aspect that makes metres equal on all axes."""
     pts = np.asarray(points, float).reshape(-1, 3)
     pts = pts[np.all(np.isfinite(pts), axis=1)]

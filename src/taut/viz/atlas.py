@@ -6,46 +6,51 @@ the charts kept; :func:`atlas_section`, the demo's atlas of the T-shaped VSCR.""
 from __future__ import annotations
 
 import time
+from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from taut.atlas import atlas_workspace, build_atlas, direct_ik
+from taut.atlas import AtlasWorkspace, StructureAtlas, atlas_workspace, build_atlas, direct_ik
 from taut.atlas.platform import platform_outline
+from taut.errors import TautError
 from taut.model import example
+from taut.viz._style import empty_figure
 from taut.viz.robot import draw_scene_2d
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+    from shapely.geometry.base import BaseGeometry
+
+    from taut.viz.report import Report
 
 __all__ = ["atlas_section", "plot_atlas"]
 
 WORKSPACE = "#7b2cbf"
 
 
-def _fill(ax, geom, **kw) -> None:
+def _fill_chart(ax: Axes, domain: BaseGeometry, label: str | None) -> None:
+    """A chart's domain (a polygon or several, with holes) in translucent grey."""
     from matplotlib.patches import PathPatch
     from matplotlib.path import Path
 
-    for g in getattr(geom, "geoms", [geom]):
+    for g in getattr(domain, "geoms", [domain]):
         if g.is_empty:
             continue
         rings = [np.asarray(g.exterior.coords)] + [np.asarray(r.coords) for r in g.interiors]
         verts = np.concatenate(rings)
         codes = np.concatenate([[Path.MOVETO] + [Path.LINETO] * (len(r) - 2) + [Path.CLOSEPOLY] for r in rings])
-        ax.add_patch(PathPatch(Path(verts, codes), **kw))
-        kw.pop("label", None)
-
-
-def _draw_charts(ax, atlas, charts, title: str) -> None:
-    draw_scene_2d(ax, atlas.robot, labels=False)
-    for k, c in enumerate(charts):
-        _fill(
-            ax,
-            atlas.charts[c].domain,
-            fc="0.35",
-            ec="none",
-            alpha=0.18,
-            zorder=0.2,
-            label="chart (darker: overlap)" if k == 0 else None,
-            gid="chart",
+        ax.add_patch(
+            PathPatch(Path(verts, codes), fc="0.35", ec="none", alpha=0.18, zorder=0.2, label=label, gid="chart")
         )
+        label = None
+
+
+def _draw_charts(ax: Axes, atlas: StructureAtlas, charts: Iterable[int], title: str) -> None:
+    draw_scene_2d(atlas.robot, ax, labels=False)
+    for k, c in enumerate(charts):
+        _fill_chart(ax, atlas.charts[c].domain, "chart (darker: overlap)" if k == 0 else None)
     keep = set(charts)
     first = True
     for e in atlas.edges:
@@ -71,13 +76,14 @@ def _draw_charts(ax, atlas, charts, title: str) -> None:
     ax.set_title(title, fontsize=10)
 
 
-def plot_atlas(atlas, workspace=None):
+def plot_atlas(atlas: StructureAtlas, workspace: AtlasWorkspace | None = None, fig: Figure | None = None) -> Figure:
     """Figure: the atlas (Fig. 5.4 / 5.9b) and, with ``workspace``, the workspace over the
-    charts kept by Alg. 5.2 (Fig. 5.9c)."""
-    import matplotlib.pyplot as plt
-
+    charts kept by Alg. 5.2 (Fig. 5.9c) in a second panel; laid out on the empty figure
+    ``fig`` (``None``: a new one; a figure that already has axes raises ``ValueError``),
+    which is returned."""
     panels = 2 if workspace is not None else 1
-    fig, axes = plt.subplots(1, panels, figsize=(6.5 * panels, 5.5), squeeze=False)
+    fig = empty_figure(fig, "a structure atlas", (6.5 * panels, 5.5))
+    axes = fig.subplots(1, panels, squeeze=False)
     ax = axes[0, 0]
     _draw_charts(
         ax,
@@ -113,16 +119,19 @@ def plot_atlas(atlas, workspace=None):
     return fig
 
 
-def atlas_section(report) -> None:
+def atlas_section(report: Report) -> None:
     """Demo section: the structure atlas of the T-shaped VSCR and its wrench-feasible
     workspace (Figs. 5.4, 5.9), with atlas-based direct IK timed."""
     robot = example("vscr-t-shaped")
+    if robot.reference is None or "initial" not in robot.reference.poses:
+        raise TautError(f"{robot.name} has no reference pose 'initial' to start the atlas from")
     start = robot.reference.poses["initial"]
     t0 = time.perf_counter()
     atlas = build_atlas(robot, start)
     t_build = time.perf_counter() - t0
     ws = atlas_workspace(atlas, "wrench-feasible")
-    Q = np.random.default_rng(0).uniform(*np.array(atlas.space.bounds).reshape(2, 2), size=(100_000, 2))
+    low, high = np.array(atlas.space.bounds).reshape(2, 2)
+    Q = np.random.default_rng(0).uniform(low, high, size=(100_000, 2))
     t0 = time.perf_counter()
     direct_ik(atlas, Q)
     rate = len(Q) / (time.perf_counter() - t0)

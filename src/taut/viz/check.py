@@ -5,36 +5,46 @@ and the robot at the first step with a problem, its colliding capsules in red; a
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
-from taut.collision import capsule_segments, check_poses, trajectory_poses
+from taut.collision import CheckResult, capsule_segments, check_poses, trajectory_poses
 from taut.model import example
 from taut.model.robot import Robot
-from taut.viz._style import DISALLOWED
+from taut.viz._style import DISALLOWED, empty_figure
 from taut.viz.robot import draw_robot
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+    from taut.viz.report import Report
 
 __all__ = ["check_section", "plot_check"]
 
 
-def _bands(ax, steps: np.ndarray, flags: np.ndarray, y0: float, y1: float, color: str, label: str) -> None:
-    """Shade the steps where ``flags`` holds between the axes fractions ``y0`` and ``y1``."""
+def _bands(ax: Axes, steps: np.ndarray, flags: np.ndarray, y0: float, y1: float, color: str, label: str) -> None:
+    """Shade the steps where ``flags`` holds between the axes fractions ``y0`` and ``y1``;
+    only the first band carries ``label`` (one legend entry)."""
     idx = np.flatnonzero(flags)
     if not idx.size:
         return
     breaks = np.flatnonzero(np.diff(idx) > 1)
-    for s, e in zip(np.r_[idx[0], idx[breaks + 1]], np.r_[idx[breaks], idx[-1]]):
-        ax.axvspan(steps[s] - 0.5, steps[e] + 0.5, ymin=y0, ymax=y1, color=color, alpha=0.35, lw=0, label=label)
-        label = None
+    for k, (s, e) in enumerate(zip(np.r_[idx[0], idx[breaks + 1]], np.r_[idx[breaks], idx[-1]])):
+        ax.axvspan(
+            steps[s] - 0.5, steps[e] + 0.5, ymin=y0, ymax=y1, color=color, alpha=0.35, lw=0, label=None if k else label
+        )
 
 
-def plot_check(robot: Robot, result):
+def plot_check(robot: Robot, result: CheckResult, fig: Figure | None = None) -> Figure:
     """Figure: clearance and flags over the steps (left), robot at the first problem (right;
-    the first step when there is none)."""
-    import matplotlib.pyplot as plt
-
+    the first step when there is none; 3-D for a spatial robot), laid out on the empty
+    figure ``fig`` (``None``: a new one; a figure that already has axes raises
+    ``ValueError``), which is returned."""
     N = len(result.poses)
     steps = np.arange(1, N + 1)
-    fig = plt.figure(figsize=(13.0, 5.5))
+    fig = empty_figure(fig, "a trajectory check", (13.0, 5.5))
     ax = fig.add_subplot(1, 2, 1)
     ax.plot(steps, result.proximity.min_clearance, color="black", lw=1.4, label="smallest clearance ε")
     ax.axhline(0.0, color="grey", lw=0.8, ls=":")
@@ -64,7 +74,7 @@ def plot_check(robot: Robot, result):
     return fig
 
 
-def check_section(report) -> None:
+def check_section(report: Report) -> None:
     """Demo section: simulation c of ``adjustable-8cable`` (rotation about x at s23 = 2)."""
     robot = example("adjustable-8cable")
     res = check_poses(robot, trajectory_poses(robot, "sim-c"))

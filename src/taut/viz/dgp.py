@@ -10,26 +10,42 @@ drawings of Fig. 4.7); :func:`plot_tracking` shows a run of tracking forward kin
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from taut.viz._style import cable_color
+from taut.model.robot import Robot
+from taut.viz._style import cable_color, empty_figure
 from taut.viz.robot import draw_robot
 
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
-def plot_equilibria(robot, solutions, columns: int = 3):
-    """One 3-D panel per solution (a :class:`taut.dgp.DGPSolution`), titled with its taut
-    cables and stability; a single note when there is none."""
-    import matplotlib.pyplot as plt
+    from taut.dgp import DGPSolution
+    from taut.viz.report import Report
 
+__all__ = ["dgp_section", "plot_equilibria", "plot_tracking"]
+
+
+def plot_equilibria(
+    robot: Robot, solutions: Sequence[DGPSolution], columns: int = 3, fig: Figure | None = None
+) -> Figure:
+    """One 3-D panel per solution of the spatial ``robot``, ``columns`` panels a row, titled
+    with its taut cables and stability; a single note when there is none.  Laid out on the
+    empty figure ``fig`` (``None``: a new one; a figure that already has axes raises
+    ``ValueError``), which is returned."""
+    if columns < 1:
+        raise ValueError(f"columns must be at least 1, got {columns}")
     if not solutions:
-        fig, ax = plt.subplots(figsize=(4, 2))
+        fig = empty_figure(fig, "a set of equilibria", (4.0, 2.0))
+        ax = fig.add_subplot()
         ax.text(0.5, 0.5, f"{robot.name}: no equilibrium for these lengths", ha="center", va="center")
         ax.axis("off")
         return fig
     cols = min(columns, len(solutions))
     rows = math.ceil(len(solutions) / cols)
-    fig = plt.figure(figsize=(4.2 * cols, 4.0 * rows))
+    fig = empty_figure(fig, "a set of equilibria", (4.2 * cols, 4.0 * rows))
     for k, s in enumerate(solutions):
         ax = fig.add_subplot(rows, cols, k + 1, projection="3d")
         draw_robot(robot, np.concatenate([s.position, s.orientation]), ax=ax)
@@ -39,15 +55,18 @@ def plot_equilibria(robot, solutions, columns: int = 3):
     return fig
 
 
-def plot_tracking(path):
-    """Position and tensions along a :func:`taut.dgp.track_path` result; a dotted line
-    where the set of taut cables changes."""
-    import matplotlib.pyplot as plt
-
+def plot_tracking(path: Sequence[DGPSolution], fig: Figure | None = None) -> Figure:
+    """Position (left) and tensions (right) along a :func:`taut.dgp.track_path` result; a
+    dotted line where the set of taut cables changes.  Laid out on the empty figure ``fig``
+    (``None``: a new one; a figure that already has axes raises ``ValueError``), which is
+    returned."""
+    if not path:
+        raise ValueError("plot_tracking needs at least one tracked solution, got none")
     k = np.arange(1, len(path) + 1)
     P = np.array([s.position for s in path])
     T = np.array([s.tensions for s in path])
-    fig, (ax_p, ax_t) = plt.subplots(1, 2, figsize=(10, 3.6))
+    fig = empty_figure(fig, "a tracking run", (10.0, 3.6))
+    ax_p, ax_t = fig.subplots(1, 2)
     for c, name in enumerate("xyz"):
         ax_p.plot(k, P[:, c], label=name)
     for i in range(T.shape[1]):
@@ -67,15 +86,19 @@ def plot_tracking(path):
     return fig
 
 
-def dgp_section(report) -> None:
+def dgp_section(report: Report) -> None:
     """All equilibria of the suspended 3-cable robot (Table 4.3), then tracking from the
     stable one while cable 1 is reeled in and cable 2 paid out until cable 2 goes slack."""
     from taut.dgp import solve_dgp, track_path
+    from taut.errors import TautError
     from taut.model import example
 
     robot = example("suspended-3cable")
+    if robot.reference is None or robot.reference.lengths is None:
+        raise TautError(f"{robot.name} has no reference cable lengths to solve for")
+    lengths = np.array(robot.reference.lengths)
     res = solve_dgp(robot)
-    rows = []
+    rows: list[dict[str, object]] = []
     for k, s in enumerate(res.solutions):
         row = {"#": k + 1, "taut": ",".join(map(str, s.taut))}
         row.update(
@@ -97,7 +120,6 @@ def dgp_section(report) -> None:
         "elapsed_s": round(res.elapsed_s, 2),
     }
     if stable:
-        lengths = np.array(robot.reference.lengths)
         sequence = lengths + np.linspace(0.0, 3.0, 301)[1:, None] * np.array([-1.0, 1.0, 0.0])
         path = track_path(robot, stable[0], sequence)
         figures.append((plot_tracking(path), "dgp-tracking.png", "tracking: cable 1 in, cable 2 out by 3 m"))

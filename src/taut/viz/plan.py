@@ -8,14 +8,23 @@ tension envelope ``f_0 ± v_ii`` of every cable along the path (Fig. 6, bottom);
 from __future__ import annotations
 
 import time
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
+from taut.errors import TautError
 from taut.model import example
-from taut.planning import plan_path
+from taut.planning import PathResult, plan_path
 from taut.planning.manifold import POSE_NAMES, WrenchFeasibleManifold
 from taut.planning.verify import verify_path
-from taut.viz._style import DISALLOWED, INSIDE, cable_color
+from taut.viz._style import DISALLOWED, INSIDE, cable_color, empty_figure
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+    from taut.viz.report import Report
 
 __all__ = ["FEASIBLE", "FORCE_OUT", "LENGTH_OUT", "plan_section", "plot_plan", "slice_map"]
 
@@ -23,17 +32,43 @@ FEASIBLE, FORCE_OUT, LENGTH_OUT = 0, 1, 2  #: classes of :func:`slice_map`
 _FORCE_COLOR = "#5b8fd9"
 
 
-def slice_map(manifold: WrenchFeasibleManifold, pose, axes=("phi", "theta"), limits=None, resolution=(90, 46)):
+def _angle_limits(manifold: WrenchFeasibleManifold) -> dict[str, tuple[float, float]]:
+    """The natural range of the angular coordinates of a slice: the window of ``φ``, ``θ ∈ [0, π]``."""
+    lo, hi = (float(a) for a in manifold.phi_window)
+    return {"phi": (lo, hi), "theta": (0.0, float(np.pi))}
+
+
+def _check_axes(axes: Sequence[str]) -> list[int]:
+    """Indices in :data:`POSE_NAMES` of two distinct pose coordinates."""
+    if len(axes) != 2 or axes[0] == axes[1] or any(a not in POSE_NAMES for a in axes):
+        raise ValueError(f"a slice map is over two distinct pose coordinates of {', '.join(POSE_NAMES)}, got {axes}")
+    return [POSE_NAMES.index(a) for a in axes]
+
+
+def slice_map(
+    manifold: WrenchFeasibleManifold,
+    pose: npt.ArrayLike,
+    axes: Sequence[str] = ("phi", "theta"),
+    limits: Sequence[tuple[float, float]] | None = None,
+    resolution: tuple[int, int] = (90, 46),
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Classify a grid over two pose coordinates ``axes`` (the others from ``pose``):
     ``(u, v, classes)`` with ``classes[i, j]`` for ``(u[i], v[j])`` one of
     :data:`FEASIBLE`, :data:`FORCE_OUT` (some ``f_0,i ∓ v_ii`` outside the tension bounds, or
     ``J`` singular), :data:`LENGTH_OUT`.  Default limits: ``φ`` over the manifold's window,
-    ``θ ∈ [0, π]``."""
-    idx = [POSE_NAMES.index(a) for a in axes]
-    default = {"phi": manifold.phi_window, "theta": (0.0, np.pi)}
-    limits = limits or [default[a] for a in axes]
-    u = np.linspace(*limits[0], resolution[0])
-    v = np.linspace(*limits[1], resolution[1])
+    ``θ ∈ [0, π]``; a position coordinate has none (``ValueError`` without ``limits``)."""
+    idx = _check_axes(axes)
+    if limits is None:
+        default = _angle_limits(manifold)
+        missing = [a for a in axes if a not in default]
+        if missing:
+            raise ValueError(f"slice_map needs limits for {', '.join(missing)}: only phi and theta have default limits")
+        limits = [default[a] for a in axes]
+    if len(limits) != 2:
+        raise ValueError(f"slice_map needs (low, high) limits for each of its two axes, got {len(limits)}")
+    (u0, u1), (v0, v1) = limits
+    u = np.linspace(float(u0), float(u1), resolution[0])
+    v = np.linspace(float(v0), float(v1), resolution[1])
     q = np.array(pose, float)
     cls = np.empty((u.size, v.size), int)
     for i, a in enumerate(u):
@@ -54,21 +89,49 @@ def slice_map(manifold: WrenchFeasibleManifold, pose, axes=("phi", "theta"), lim
     return u, v, cls
 
 
-def plot_plan(manifold: WrenchFeasibleManifold, result, axes=("phi", "theta"), grid=None):
-    """Figure: the slice map ``grid`` (from :func:`slice_map`, computed if ``None``) with the
-    atlas' chart centres (closed charts dark, open ones light) and the path in red (left),
-    and the extreme tensions ``f_0 − v_ii`` (lower) and ``f_0 + v_ii`` (upper) of each cable
-    along the path against its length, with the tension bounds dashed (right)."""
-    import matplotlib.pyplot as plt
+def _plan_limits(
+    manifold: WrenchFeasibleManifold, centres: np.ndarray, axes: Sequence[str]
+) -> list[tuple[float, float]]:
+    """Limits of the map of :func:`plot_plan`: the natural range of an angle, the span of the
+    chart centres (padded by a tenth, at least 0.1) for a position coordinate."""
+    angles = _angle_limits(manifold)
+    out = []
+    for a in axes:
+        if a in angles:
+            out.append(angles[a])
+        else:
+            c = centres[:, POSE_NAMES.index(a)]
+            lo, hi = float(c.min()), float(c.max())
+            pad = max(0.1 * (hi - lo), 0.1)
+            out.append((lo - pad, hi + pad))
+    return out
+
+
+def plot_plan(
+    manifold: WrenchFeasibleManifold,
+    result: PathResult,
+    axes: Sequence[str] = ("phi", "theta"),
+    grid: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
+    fig: Figure | None = None,
+) -> Figure:
+    """Figure: the slice map ``grid`` (from :func:`slice_map`, computed if ``None``: an angle
+    over its natural range, a position coordinate over the span of the chart centres) with
+    the atlas' chart centres (closed charts dark, open ones light) and the path in red
+    (left), and the extreme tensions ``f_0 − v_ii`` (lower) and ``f_0 + v_ii`` (upper) of
+    each cable along the path against its length, with the tension bounds dashed (right).
+    Laid out on the empty figure ``fig`` (``None``: a new one; a figure that already has
+    axes raises ``ValueError``), which is returned."""
     from matplotlib.colors import ListedColormap
 
-    idx = [POSE_NAMES.index(a) for a in axes]
-    fig, (ax, tx) = plt.subplots(1, 2, figsize=(13.0, 5.5))
-    start = manifold.pose(result.atlas.centres[0])
-    u, v, cls = grid if grid is not None else slice_map(manifold, start, axes)
+    idx = _check_axes(axes)
+    centres = manifold.pose(result.atlas.centres)
+    if grid is None:
+        grid = slice_map(manifold, centres[0], axes, _plan_limits(manifold, centres, axes))
+    u, v, cls = grid
+    fig = empty_figure(fig, "a planned path", (13.0, 5.5))
+    ax, tx = fig.subplots(1, 2)
     cmap = ListedColormap([INSIDE, _FORCE_COLOR, DISALLOWED])
     ax.pcolormesh(u, v, cls.T, cmap=cmap, vmin=-0.5, vmax=2.5, shading="nearest", alpha=0.45, gid="slice-map")
-    centres = manifold.pose(result.atlas.centres)
     closed = np.array([c.expanded for c in result.atlas.charts])
     ax.plot(
         centres[closed, idx[0]],
@@ -124,11 +187,13 @@ def plot_plan(manifold: WrenchFeasibleManifold, result, axes=("phi", "theta"), g
     return fig
 
 
-def plan_section(report, radius: float = 0.2):
+def plan_section(report: Report, radius: float = 0.2) -> PathResult:
     """The Robocrane query q1 → q2 of experiment 1 (slice p = (0, 0, 2), σ = 35°): A* over
     the atlas, checked by the independent feasibility test, as Figs. 5–6.  Returns the
     :class:`~taut.planning.PathResult`."""
     robot = example("robocrane")
+    if robot.reference is None:
+        raise TautError(f"{robot.name} has no reference poses q1, q2 to plan between")
     q = {k: np.asarray(v, float) for k, v in robot.reference.poses.items()}
     fixed = dict(x=0.0, y=0.0, z=2.0, sigma=float(q["q1"][5]))
     M = WrenchFeasibleManifold.from_robot(robot, fixed=fixed)

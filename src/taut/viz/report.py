@@ -14,12 +14,19 @@ import html
 import io
 import json
 import math
+import os
 import re
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 from urllib.parse import quote
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
 
 __all__ = ["Report"]
 
@@ -55,11 +62,12 @@ class _Section:
     title: str
     text: str | None = None
     figures: list[_Figure] = field(default_factory=list)
-    table: list[dict] | None = None
+    table: list[dict[str, object]] | None = None
     json: object = None
 
 
-def _jsonable(obj):
+def _jsonable(obj: object) -> object:
+    """JSON form of the values ``json.dumps`` does not take (NumPy, paths, sets); ``repr`` else."""
     if isinstance(obj, np.ndarray):
         return obj.tolist()
     if isinstance(obj, np.generic):
@@ -71,7 +79,7 @@ def _jsonable(obj):
     return repr(obj)
 
 
-def _cell(v) -> tuple[str, bool]:
+def _cell(v: object) -> tuple[str, bool]:
     """(escaped text, is_number) of a table cell."""
     if isinstance(v, np.generic):
         v = v.item()
@@ -86,10 +94,14 @@ def _cell(v) -> tuple[str, bool]:
     return html.escape(str(v)), False
 
 
-def _png(fig) -> bytes:
+def _png(drawing: Figure | Axes) -> bytes:
+    """PNG of a figure (of an ``Axes``: of the figure it is in), which is then closed."""
     import matplotlib.pyplot as plt
+    from matplotlib.axes import Axes
+    from matplotlib.figure import SubFigure
 
-    fig = getattr(fig, "figure", fig)  # an Axes is accepted for its figure
+    placed = drawing.figure if isinstance(drawing, Axes) else drawing
+    fig = placed.figure if isinstance(placed, SubFigure) else placed  # a sub-figure's figure is the root one
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=DPI, bbox_inches="tight")
     plt.close(fig)
@@ -108,16 +120,24 @@ def _slug(text: str, used: set[str]) -> str:
 class Report:
     """An HTML report under construction: ``add_section`` then ``write``."""
 
-    def __init__(self, title: str):
+    def __init__(self, title: str) -> None:
         self.title = str(title)
         self.sections: list[_Section] = []
         self._files: set[str] = set()
 
-    def add_section(self, title: str, text: str | None = None, figures=None, table=None, json=None) -> None:
+    def add_section(
+        self,
+        title: str,
+        text: str | None = None,
+        figures: Iterable[tuple[Figure | Axes, str] | tuple[Figure | Axes, str, str | None]] | None = None,
+        table: Iterable[Mapping[str, object]] | None = None,
+        json: object = None,
+    ) -> None:
         """Append a section.
 
         ``text``: paragraphs separated by blank lines (plain text, escaped).  ``figures``:
-        ``(Figure, filename, caption)`` tuples (caption optional); each figure is rendered to
+        ``(Figure, filename, caption)`` tuples (caption optional; an ``Axes`` stands for its
+        figure); each figure is rendered to
         PNG and closed now; ``filename`` is a plain file name (``.png`` added if missing),
         unique in the report.  ``table``: a list of dict rows (columns in order of first
         appearance).  ``json``: any JSON-serialisable value (NumPy values accepted)."""
@@ -196,7 +216,7 @@ class Report:
             + "\n</body>\n</html>\n"
         )
 
-    def write(self, out_dir) -> Path:
+    def write(self, out_dir: str | os.PathLike[str]) -> Path:
         """Write ``index.html`` and the PNGs into ``out_dir`` (created if needed); return
         the path of ``index.html``."""
         out = Path(out_dir)

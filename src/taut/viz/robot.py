@@ -22,7 +22,10 @@ drawn here.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
+import numpy.typing as npt
 
 from taut.kinematics.inverse import anchor_points
 from taut.kinematics.pose import as_poses, body_frames
@@ -32,19 +35,24 @@ from taut.viz._style import (
     FRAME,
     OBSTACLE,
     PLATFORM,
+    axes_2d,
+    axes_3d,
     cable_color,
-    is_3d,
-    new_axes,
     set_equal_3d,
 )
 
-__all__ = ["draw_robot"]
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.patches import Patch
+    from mpl_toolkits.mplot3d.axes3d import Axes3D
+
+__all__ = ["draw_robot", "draw_scene_2d", "draw_scene_3d", "scene_points_3d"]
 
 
 # ---------------------------------------------------------------------------------------
 # geometry helpers (drawing only)
 # ---------------------------------------------------------------------------------------
-def _hull_2d(points: np.ndarray) -> np.ndarray:
+def _hull_2d(points: npt.ArrayLike) -> np.ndarray:
     """Vertices of the convex hull of planar points, counter-clockwise (k, 2); k < 3 when
     the points are collinear (the two extremes) or coincide (one point)."""
     pts = np.unique(np.asarray(points, float).reshape(-1, 2), axis=0)
@@ -60,7 +68,7 @@ def _hull_2d(points: np.ndarray) -> np.ndarray:
     return pts[ConvexHull(pts).vertices]
 
 
-def _hull_faces_3d(points: np.ndarray) -> list[np.ndarray]:
+def _hull_faces_3d(points: npt.ArrayLike) -> list[np.ndarray]:
     """Faces of the convex hull of spatial points, each an ordered polygon (k, 3).
 
     Coplanar triangles of the hull are merged (a box has six quadrilateral faces); flat
@@ -84,7 +92,7 @@ def _hull_faces_3d(points: np.ndarray) -> list[np.ndarray]:
     from scipy.spatial import ConvexHull
 
     hull = ConvexHull(pts)
-    groups: dict[tuple, set[int]] = {}
+    groups: dict[tuple[float, ...], set[int]] = {}
     for simplex, eq in zip(hull.simplices, hull.equations):
         key = tuple(np.round(eq, 9))
         groups.setdefault(key, set()).update(int(k) for k in simplex)
@@ -101,7 +109,7 @@ def _hull_faces_3d(points: np.ndarray) -> list[np.ndarray]:
     return faces
 
 
-def _transform(points, p, R) -> np.ndarray:
+def _transform(points: npt.ArrayLike, p: np.ndarray, R: np.ndarray) -> np.ndarray:
     """Body-frame points (k, d') to the fixed frame; 2-D points on a spatial body lie in
     its x–y plane, extra coordinates on a planar body are dropped."""
     pts = np.asarray(points, float)
@@ -130,7 +138,7 @@ def _label_offsets(exits: np.ndarray) -> np.ndarray:
 
 def _exit_labels(exits: np.ndarray) -> list[tuple[np.ndarray, str, int]]:
     """(exit point, label, first cable index) with the numbers of cables sharing an exit joined."""
-    groups: dict[tuple, list[int]] = {}
+    groups: dict[tuple[float, ...], list[int]] = {}
     for i, e in enumerate(exits):
         groups.setdefault(tuple(np.round(e, 12)), []).append(i)
     return [(exits[ix[0]], ",".join(str(i + 1) for i in ix), ix[0]) for ix in groups.values()]
@@ -156,11 +164,16 @@ def _default_pose(robot: Robot) -> np.ndarray:
 # ---------------------------------------------------------------------------------------
 # the fixed scene: frame, installation space, disallowed regions, obstacles, exits
 # ---------------------------------------------------------------------------------------
-def draw_scene_2d(ax, robot: Robot, *, labels: bool = True) -> None:
-    """Everything of a planar robot that does not move: installation space, disallowed
-    regions, obstacles, the frame outline and the exit points with cable numbers."""
+def draw_scene_2d(robot: Robot, ax: Axes | None = None, *, labels: bool = True) -> Axes:
+    """Draw everything of a planar robot that does not move — installation space, disallowed
+    regions, obstacles, the frame outline and the exit points (with cable numbers when
+    ``labels``) — on 2-D axes ``ax`` (``None``: a new figure) and return them.
+
+    Raises ``TypeError`` for 3-D axes."""
     from matplotlib.patches import Circle as CirclePatch
     from matplotlib.patches import Polygon as PolygonPatch
+
+    ax = axes_2d(ax, f"the scene of {robot.name}")
 
     for outline in _frame_outline(robot):
         ax.add_patch(PolygonPatch(outline, closed=True, fill=False, ec=FRAME, lw=0.8, ls=":", zorder=0.5, gid="frame"))
@@ -196,9 +209,17 @@ def draw_scene_2d(ax, robot: Robot, *, labels: bool = True) -> None:
         )
     for k, o in enumerate(robot.obstacles):
         lab = "obstacle" if k == 0 else None
+        patch: Patch
         if isinstance(o, Circle):
             patch = CirclePatch(
-                o.center[:2], o.radius, fc=OBSTACLE, ec="#555555", lw=1.0, zorder=1, label=lab, gid="obstacle"
+                (o.center[0], o.center[1]),
+                o.radius,
+                fc=OBSTACLE,
+                ec="#555555",
+                lw=1.0,
+                zorder=1,
+                label=lab,
+                gid="obstacle",
             )
         else:
             patch = PolygonPatch(
@@ -219,7 +240,7 @@ def draw_scene_2d(ax, robot: Robot, *, labels: bool = True) -> None:
         for point, text, i in _exit_labels(ex):
             ax.annotate(
                 text,
-                point,
+                (float(point[0]), float(point[1])),
                 xytext=tuple(11 * offs[i]),
                 textcoords="offset points",
                 ha="center",
@@ -229,57 +250,75 @@ def draw_scene_2d(ax, robot: Robot, *, labels: bool = True) -> None:
                 fontweight="bold",
                 gid="cable-label",
             )
+    return ax
 
 
-def draw_scene_3d(ax, robot: Robot, *, labels: bool = True) -> np.ndarray:
-    """The fixed parts of a spatial robot; returns the points drawn (for the limits)."""
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+def _floor(robot: Robot, region: list[list[float]]) -> np.ndarray:
+    """A region's points in 3-D: a 2-D footprint is drawn on the floor of the frame."""
+    pts = np.asarray(region, float)
+    if pts.shape[1] == 2:
+        pts = np.column_stack([pts, np.full(len(pts), float(robot.exits[:, 2].min()))])
+    return pts[:, :3]
 
-    drawn = [robot.exits]
-    for face in _frame_outline(robot):
-        loop = np.vstack([face, face[:1]])
-        ax.plot(loop[:, 0], loop[:, 1], loop[:, 2], color=FRAME, lw=0.6, ls=":", gid="frame")
-    z0 = float(robot.exits[:, 2].min())
 
-    def lift(region):
-        pts = np.asarray(region, float)
-        if pts.shape[1] == 2:  # a footprint: drawn on the floor of the frame
-            pts = np.column_stack([pts, np.full(len(pts), z0)])
-        return pts[:, :3]
+def _sphere(center: list[float], radius: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Wireframe grid (x, y, z), each (9, 17), of a spherical obstacle."""
+    c = np.asarray(center, float)
+    u, v = np.meshgrid(np.linspace(0, 2 * np.pi, 17), np.linspace(0, np.pi, 9))
+    return c[0] + radius * np.cos(u) * np.sin(v), c[1] + radius * np.sin(u) * np.sin(v), c[2] + radius * np.cos(v)
 
+
+def scene_points_3d(robot: Robot) -> np.ndarray:
+    """``(k, 3)`` points of everything :func:`draw_scene_3d` draws (for the axes limits)."""
+    pts = [robot.exits]
     if robot.installation_space:
-        pts = lift(robot.installation_space)
-        loop = np.vstack([pts, pts[:1]])
-        ax.plot(loop[:, 0], loop[:, 1], loop[:, 2], color="black", lw=1.2, gid="installation-space")
-        drawn.append(pts)
-    for region in robot.disallowed:
-        pts = lift(region)
-        ax.add_collection3d(
-            Poly3DCollection([pts], facecolor=DISALLOWED, alpha=0.25, edgecolor=DISALLOWED, gid="disallowed")
-        )
-        drawn.append(pts)
+        pts.append(_floor(robot, robot.installation_space))
+    pts += [_floor(robot, region) for region in robot.disallowed]
     for o in robot.obstacles:
         if isinstance(o, Circle):
-            c = np.asarray(o.center, float)
-            u, v = np.meshgrid(np.linspace(0, 2 * np.pi, 17), np.linspace(0, np.pi, 9))
-            x = c[0] + o.radius * np.cos(u) * np.sin(v)
-            y = c[1] + o.radius * np.sin(u) * np.sin(v)
-            z = c[2] + o.radius * np.cos(v)
-            ax.plot_wireframe(x, y, z, color="#666666", lw=0.5, gid="obstacle")
-            drawn.append(np.column_stack([x.ravel(), y.ravel(), z.ravel()]))
+            pts.append(np.column_stack([c.ravel() for c in _sphere(o.center, o.radius)]))
         else:
-            pts = np.asarray(o.vertices, float)
-            ax.add_collection3d(
-                Poly3DCollection([pts], facecolor=OBSTACLE, alpha=0.5, edgecolor="#555555", gid="obstacle")
+            pts.append(np.asarray(o.vertices, float))
+    return np.concatenate(pts)
+
+
+def draw_scene_3d(robot: Robot, ax: Axes | None = None, *, labels: bool = True) -> Axes3D:
+    """Draw the fixed parts of a spatial robot on 3-D axes ``ax`` (``None``: a new figure)
+    and return them; :func:`scene_points_3d` gives the points drawn, to set the limits.
+
+    Raises ``TypeError`` for 2-D axes."""
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    ax3 = axes_3d(ax, f"the scene of {robot.name}")
+    for face in _frame_outline(robot):
+        loop = np.vstack([face, face[:1]])
+        ax3.plot(loop[:, 0], loop[:, 1], loop[:, 2], color=FRAME, lw=0.6, ls=":", gid="frame")
+    if robot.installation_space:
+        pts = _floor(robot, robot.installation_space)
+        loop = np.vstack([pts, pts[:1]])
+        ax3.plot(loop[:, 0], loop[:, 1], loop[:, 2], color="black", lw=1.2, gid="installation-space")
+    for region in robot.disallowed:
+        ax3.add_collection3d(
+            Poly3DCollection(
+                [_floor(robot, region)], facecolor=DISALLOWED, alpha=0.25, edgecolor=DISALLOWED, gid="disallowed"
             )
-            drawn.append(pts)
+        )
+    for o in robot.obstacles:
+        if isinstance(o, Circle):
+            ax3.plot_wireframe(*_sphere(o.center, o.radius), color="#666666", lw=0.5, gid="obstacle")
+        else:
+            ax3.add_collection3d(
+                Poly3DCollection(
+                    [np.asarray(o.vertices, float)], facecolor=OBSTACLE, alpha=0.5, edgecolor="#555555", gid="obstacle"
+                )
+            )
     ex = robot.exits
-    ax.plot(ex[:, 0], ex[:, 1], ex[:, 2], ls="none", marker="s", ms=5, mfc="white", mec="black", gid="exits")
+    ax3.plot(ex[:, 0], ex[:, 1], ex[:, 2], ls="none", marker="s", ms=5, mfc="white", mec="black", gid="exits")
     if labels:
         offs = _label_offsets(ex) * 0.04 * _scene_scale(robot)
         for point, text, i in _exit_labels(ex):
             q = point + offs[i]
-            ax.text(
+            ax3.text(
                 q[0],
                 q[1],
                 q[2],
@@ -291,7 +330,7 @@ def draw_scene_3d(ax, robot: Robot, *, labels: bool = True) -> np.ndarray:
                 va="center",
                 gid="cable-label",
             )
-    return np.concatenate(drawn)
+    return ax3
 
 
 # ---------------------------------------------------------------------------------------
@@ -301,36 +340,29 @@ def _pose_title(robot: Robot, pose: np.ndarray) -> str:
     return ", ".join(f"{n}={v:.3g}" for n, v in zip(robot.pose_names, pose))
 
 
-def draw_robot(robot: Robot, pose=None, ax=None):
+def draw_robot(robot: Robot, pose: npt.ArrayLike | None = None, ax: Axes | None = None) -> Axes:
     """Draw ``robot`` at ``pose`` (default: its ``home`` reference pose, else the centroid of
-    its exit points) and return the matplotlib ``Axes``.
+    its exit points) on ``ax`` and return that ``Axes``.
 
-    A planar robot needs 2-D axes, a spatial one 3-D axes (``projection="3d"``); with
-    ``ax=None`` a new figure of the right kind is made.  Each cable is one line with
+    A planar robot is drawn on 2-D axes, a spatial one on 3-D axes (an ``Axes3D``, made by
+    ``projection="3d"``); with ``ax=None`` a new figure with axes of the right kind is made,
+    axes of the other kind raise ``TypeError``.  Each cable is one line with
     ``gid="cable-<i>"`` and label ``"cable <i>"`` (1-based ``i``)."""
     pose = _default_pose(robot) if pose is None else pose
     arr, _ = as_poses(robot, pose)
     if arr.shape[0] != 1:
         raise ValueError(f"draw_robot draws one pose, got {arr.shape[0]}")
-    spatial = robot.dimension == 3
-    if ax is None:
-        ax = new_axes(spatial)
-    elif is_3d(ax) != spatial:
-        want = "3-D axes (projection='3d')" if spatial else "2-D axes"
-        raise ValueError(f"{robot.name} is {'spatial' if spatial else 'planar'}: draw it on {want}")
-    if spatial:
-        _draw_3d(ax, robot, arr)
-    else:
-        _draw_2d(ax, robot, arr)
-    ax.set_title(f"{robot.name}\n{_pose_title(robot, arr[0])}", fontsize=10)
-    return ax
+    what = f"{robot.name} ({'spatial' if robot.dimension == 3 else 'planar'})"
+    drawn = _draw_3d(axes_3d(ax, what), robot, arr) if robot.dimension == 3 else _draw_2d(axes_2d(ax, what), robot, arr)
+    drawn.set_title(f"{robot.name}\n{_pose_title(robot, arr[0])}", fontsize=10)
+    return drawn
 
 
-def _draw_2d(ax, robot: Robot, arr: np.ndarray) -> None:
+def _draw_2d(ax: Axes, robot: Robot, arr: np.ndarray) -> Axes:
     from matplotlib.patches import Polygon as PolygonPatch
     from shapely import LineString, Point
 
-    draw_scene_2d(ax, robot)
+    draw_scene_2d(robot, ax)
     b = anchor_points(robot, arr)[0]
     pos, rot = body_frames(robot, arr)
     pos, rot = pos[0], rot[0]
@@ -412,12 +444,14 @@ def _draw_2d(ax, robot: Robot, arr: np.ndarray) -> None:
     handles = [h for h in ax.patches if h.get_label() in ("installation space", "disallowed", "obstacle")]
     if handles:
         ax.legend(handles=handles, fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+    return ax
 
 
-def _draw_3d(ax, robot: Robot, arr: np.ndarray) -> None:
+def _draw_3d(ax: Axes3D, robot: Robot, arr: np.ndarray) -> Axes3D:
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-    drawn = [draw_scene_3d(ax, robot)]
+    draw_scene_3d(robot, ax)
+    drawn = [scene_points_3d(robot)]
     b = anchor_points(robot, arr)[0]
     pos, rot = body_frames(robot, arr)
     pos, rot = pos[0], rot[0]
@@ -472,3 +506,4 @@ def _draw_3d(ax, robot: Robot, arr: np.ndarray) -> None:
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
     ax.set_zlabel("z [m]")
+    return ax

@@ -10,9 +10,15 @@ lengths.
 
 from __future__ import annotations
 
-import numpy as np
+from typing import TYPE_CHECKING
 
-from taut.viz._style import DISALLOWED, cable_color, is_3d, new_axes
+import numpy as np
+import numpy.typing as npt
+
+from taut.viz._style import DISALLOWED, axes_2d, cable_color
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = ["plot_tensions"]
 
@@ -23,9 +29,19 @@ def _runs(flags: np.ndarray) -> list[tuple[int, int]]:
     return list(zip(np.flatnonzero(d == 1).tolist(), np.flatnonzero(d == -1).tolist()))
 
 
-def plot_tensions(times_or_index, tensions, tmin, tmax, feasible=None, ax=None, *, mask_infeasible: bool = True):
+def plot_tensions(
+    times_or_index: npt.ArrayLike | None,
+    tensions: npt.ArrayLike,
+    tmin: npt.ArrayLike,
+    tmax: npt.ArrayLike,
+    feasible: npt.ArrayLike | None = None,
+    ax: Axes | None = None,
+    *,
+    mask_infeasible: bool = True,
+) -> Axes:
     """Plot tensions ``(N, n)`` against ``times_or_index`` (``N`` times; ``None`` for the
-    sample index) and return the ``Axes``.
+    sample index) on 2-D axes ``ax`` (``None``: a new figure; 3-D axes raise ``TypeError``)
+    and return that ``Axes``.
 
     ``tmin``/``tmax`` are scalars or one bound per cable (infinite bounds are not drawn);
     ``feasible (N,)`` marks the samples without a feasible distribution; their tensions
@@ -52,10 +68,7 @@ def plot_tensions(times_or_index, tensions, tmin, tmax, feasible=None, ax=None, 
         T = np.where(ok[:, None], T, np.nan)
     lo = np.broadcast_to(np.asarray(tmin, float), (n,))
     hi = np.broadcast_to(np.asarray(tmax, float), (n,))
-    if ax is None:
-        ax = new_axes(False, figsize=(7.0, 4.0))
-    elif is_3d(ax):
-        raise ValueError("tensions are drawn on 2-D axes")
+    ax = axes_2d(ax, "a plot of tensions", figsize=(7.0, 4.0))
 
     for i in range(n):
         ax.plot(
@@ -74,14 +87,15 @@ def plot_tensions(times_or_index, tensions, tmin, tmax, feasible=None, ax=None, 
         if np.all(bounds[finite] == bounds[finite][0]):
             ax.axhline(bounds[finite][0], color="black", ls="--", lw=1.0, label=name, gid="bound")
         else:
-            for i in np.flatnonzero(finite):
+            drawn = np.flatnonzero(finite).tolist()
+            for i in drawn:
                 ax.axhline(
                     bounds[i],
                     color=cable_color(i),
                     ls="--",
                     lw=0.9,
                     alpha=0.8,
-                    label=name if i == np.flatnonzero(finite)[0] else None,
+                    label=name if i == drawn[0] else None,
                     gid="bound",
                 )
     bad = ~ok

@@ -8,14 +8,28 @@ adds one trajectory of each VSCR example to the ``taut demo`` report.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
-from taut.viz._style import cable_color
+from taut.model.robot import Robot
+from taut.viz._style import axes_2d, cable_color, empty_figure
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+    from taut.viz.report import Report
+    from taut.wrapping.trajectory import TrajectoryResult
+
+__all__ = ["draw_wrapped_cables", "plot_trajectory", "trajectory_section"]
 
 
-def draw_wrapped_cables(ax, result, sample: int) -> None:
-    """Draw every cable of ``result`` (a :class:`taut.wrapping.trajectory.TrajectoryResult`)
-    at ``sample`` as its path: static segments solid, the active segment dashed."""
+def draw_wrapped_cables(result: TrajectoryResult, sample: int, ax: Axes | None = None) -> Axes:
+    """Draw every cable of ``result`` at ``sample`` as its path — static segments solid,
+    the active segment dashed, arcs around the objects — on 2-D axes ``ax`` (``None``: a
+    new figure; 3-D axes raise ``TypeError``) and return that ``Axes``."""
+    ax = axes_2d(ax, "a wrapped cable path")
     for i in range(result.ik.lengths.shape[1]):
         path = result.ik.path(sample, i)
         col = cable_color(i)
@@ -32,16 +46,16 @@ def draw_wrapped_cables(ax, result, sample: int) -> None:
             if path.arcs[k, 2] > 0 and abs(path.arcs[k, 4]) > 0:
                 pts = path.arc_points(k)
                 ax.plot(pts[:, 0], pts[:, 1], color=col, lw=2.2)
+    return ax
 
 
-def plot_trajectory(robot, result, snapshots: int = 3):
-    """Lengths over time with transitions (top) and ``snapshots`` robot drawings (bottom);
-    returns the figure."""
-    import matplotlib.pyplot as plt
+def plot_trajectory(robot: Robot, result: TrajectoryResult, snapshots: int = 3, fig: Figure | None = None) -> Figure:
+    """Lengths over time with transitions (top) and ``snapshots`` robot drawings (bottom)
+    laid out on the empty figure ``fig`` (``None``: a new one; a figure that already has
+    axes raises ``ValueError``); returns that figure."""
+    from taut.viz.robot import draw_robot
 
-    from taut.viz import draw_robot
-
-    fig = plt.figure(figsize=(4.0 * snapshots, 7.5))
+    fig = empty_figure(fig, "a trajectory", (4.0 * snapshots, 7.5))
     gs = fig.add_gridspec(2, snapshots, height_ratios=[1.0, 1.2])
     ax = fig.add_subplot(gs[0, :])
     t, L = result.times, result.ik.lengths
@@ -62,7 +76,7 @@ def plot_trajectory(robot, result, snapshots: int = 3):
         for line in list(sub.lines):
             if (line.get_gid() or "").startswith("cable-"):
                 line.remove()
-        draw_wrapped_cables(sub, result, int(s))
+        draw_wrapped_cables(result, int(s), sub)
         sub.set_title(f"t = {t[s]:.2f} s", fontsize="small")
         leg = sub.get_legend()
         if leg is not None:
@@ -71,7 +85,7 @@ def plot_trajectory(robot, result, snapshots: int = 3):
     return fig
 
 
-def trajectory_section(report) -> None:
+def trajectory_section(report: Report) -> None:
     """One trajectory of each VSCR example: lengths, transitions, snapshots, tensions."""
     from taut.model import example
     from taut.wrapping.trajectory import builtin_trajectory, run_trajectory

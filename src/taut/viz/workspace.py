@@ -10,25 +10,54 @@ is such a slice too.  Full spatial grids are a 3-D scatter of the inside poses (
 subsampled, with a fixed seed, beyond ``max_points``), coloured by height, over the exit
 points.  The title names the condition and the inside fraction.
 
-The result is duck-typed: anything with ``condition``, ``poses (N, pose_size)``,
-``inside (N,)``, ``axes`` (1-D coordinates per position axis) and ``grid_shape``
-(``inside.reshape(grid_shape)`` in C order, axes x, y[, z]) is drawn; ``fraction`` is
-used when present.
+The result is duck-typed (:class:`GridWorkspace`): anything with ``condition``,
+``poses (N, pose_size)``, ``inside (N,)``, ``axes`` (1-D coordinates per position axis) and
+``grid_shape`` (``inside.reshape(grid_shape)`` in C order, axes x, y[, z]) is drawn;
+``fraction`` is used when present.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Protocol
+
 import numpy as np
 
-from taut.viz._style import INSIDE, OUTSIDE, is_3d, new_axes, set_equal_3d
-from taut.viz.robot import draw_scene_2d, draw_scene_3d
+from taut.model.robot import Robot
+from taut.viz._style import INSIDE, OUTSIDE, axes_2d, axes_3d, set_equal_3d
+from taut.viz.robot import draw_scene_2d, draw_scene_3d, scene_points_3d
 
-__all__ = ["plot_workspace"]
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from mpl_toolkits.mplot3d.axes3d import Axes3D
+
+__all__ = ["GridWorkspace", "plot_workspace"]
+
+
+class GridWorkspace(Protocol):
+    """What :func:`plot_workspace` reads of a grid workspace result (such as
+    :class:`taut.workspace.WorkspaceResult`)."""
+
+    @property
+    def condition(self) -> str: ...
+
+    @property
+    def poses(self) -> np.ndarray: ...
+
+    @property
+    def inside(self) -> np.ndarray: ...
+
+    @property
+    def axes(self) -> Sequence[np.ndarray]: ...
+
+    @property
+    def grid_shape(self) -> Sequence[int]: ...
+
 
 _AXIS_NAMES = ("x", "y", "z")
 
 
-def _fixed_coordinates(result, robot, used: list[int]) -> str:
+def _fixed_coordinates(result: GridWorkspace, robot: Robot | None, used: list[int]) -> str:
     """'theta=0' for pose coordinates that are the same at every grid pose (orientation
     of a constant-orientation workspace, the held coordinate of a slice)."""
     poses = np.asarray(result.poses, float)
@@ -57,11 +86,15 @@ def _edges(c: np.ndarray) -> tuple[float, float]:
     return c[0] - h, c[-1] + h
 
 
-def plot_workspace(result, robot=None, ax=None, *, max_points: int = 4000):
-    """Draw a grid workspace result (see the module docstring); return the ``Axes``.
+def plot_workspace(
+    result: GridWorkspace, robot: Robot | None = None, ax: Axes | None = None, *, max_points: int = 4000
+) -> Axes:
+    """Draw a grid workspace result (see the module docstring) on ``ax``; return that ``Axes``.
 
-    ``robot`` (optional) overlays its fixed parts.  A planar result draws on 2-D axes; a
-    full spatial one on 3-D axes (``ax=None`` makes the right kind)."""
+    ``robot`` (optional) overlays its fixed parts.  A planar result (or a slice) is drawn on
+    2-D axes, a full spatial one on 3-D axes (an ``Axes3D``, ``projection="3d"``);
+    ``ax=None`` makes a new figure with axes of the right kind, axes of the other kind raise
+    ``TypeError``."""
     shape = tuple(int(s) for s in result.grid_shape)
     inside = np.asarray(result.inside, bool).ravel()
     coords = [np.asarray(a, float) for a in result.axes]
@@ -73,32 +106,29 @@ def plot_workspace(result, robot=None, ax=None, *, max_points: int = 4000):
     fraction = float(getattr(result, "fraction", n_in / total if total else 0.0))
     mask = inside.reshape(shape)
     keep = [j for j, s in enumerate(shape) if s > 1] if len(shape) == 3 else [0, 1]
+    drawn: Axes
     if len(shape) == 3 and len(keep) == 3:
-        ax = _scatter(result, robot, ax, mask, coords, max_points)
+        drawn = _scatter(result, robot, axes_3d(ax, "a spatial workspace"), mask, coords, max_points)
         shown = min(n_in, max_points)
         extra = f", {shown} shown" if shown < n_in else ""
     else:
         if len(keep) < 2:  # a line or a point of a spatial grid: show its first two axes
             keep = [j for j in range(3) if j not in keep][: 2 - len(keep)] + keep
             keep.sort()
-        ax = _image(result, robot, ax, mask, coords, keep)
+        drawn = _image(robot, axes_2d(ax, "a planar workspace (or a slice)"), mask, coords, keep)
         extra = ""
     held = _fixed_coordinates(result, robot, keep)
     title = f"{result.condition} workspace: {n_in} of {total} grid poses ({100 * fraction:.1f} %{extra})"
     if held:
         title += f"\nat {held}"
-    ax.set_title(title, fontsize=10)
-    return ax
+    drawn.set_title(title, fontsize=10)
+    return drawn
 
 
-def _image(result, robot, ax, mask, coords, keep):
+def _image(robot: Robot | None, ax: Axes, mask: np.ndarray, coords: list[np.ndarray], keep: list[int]) -> Axes:
     from matplotlib.colors import ListedColormap
     from matplotlib.patches import Patch
 
-    if ax is None:
-        ax = new_axes(False)
-    elif is_3d(ax):
-        raise ValueError("a planar workspace (or a slice) is drawn on 2-D axes")
     img = mask
     if img.ndim == 3:
         drop = next(j for j in range(3) if j not in keep)
@@ -118,7 +148,7 @@ def _image(result, robot, ax, mask, coords, keep):
         gid="workspace",
     )
     if robot is not None and robot.dimension == 2 and keep == [0, 1]:
-        draw_scene_2d(ax, robot)
+        draw_scene_2d(robot, ax)
         ax.margins(0.05)
         ax.autoscale_view()
     ax.set_aspect("equal")
@@ -134,11 +164,14 @@ def _image(result, robot, ax, mask, coords, keep):
     return ax
 
 
-def _scatter(result, robot, ax, mask, coords, max_points):
-    if ax is None:
-        ax = new_axes(True)
-    elif not is_3d(ax):
-        raise ValueError("a spatial workspace is drawn on 3-D axes (projection='3d')")
+def _scatter(
+    result: GridWorkspace,
+    robot: Robot | None,
+    ax: Axes3D,
+    mask: np.ndarray,
+    coords: list[np.ndarray],
+    max_points: int,
+) -> Axes3D:
     poses = np.asarray(result.poses, float)
     if poses.ndim == 2 and poses.shape[0] == mask.size and poses.shape[1] >= 3:
         pts = poses[mask.ravel(), :3]
@@ -154,7 +187,8 @@ def _scatter(result, robot, ax, mask, coords, max_points):
     bounds = np.array([[c.min(), c.max()] for c in coords]).T
     drawn = [bounds]
     if robot is not None and robot.dimension == 3:
-        drawn.append(draw_scene_3d(ax, robot))
+        draw_scene_3d(robot, ax)
+        drawn.append(scene_points_3d(robot))
     set_equal_3d(ax, np.concatenate(drawn))
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
