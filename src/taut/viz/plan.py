@@ -171,7 +171,8 @@ def plot_plan(
             tx.plot(s, lo[:, i], color=c, lw=1.0, ls="-.", gid=f"tension-min-{i + 1}")
         for b in (manifold.f_min.min(), manifold.f_max.max()):
             tx.axhline(b, color="grey", lw=0.8, ls="--")
-        tx.set_xlabel(f"path length in ({axes[0]}, {axes[1]}) [rad]")
+        units = sorted({"rad" if a in ("phi", "theta", "sigma") else "m" for a in axes})
+        tx.set_xlabel(f"path length in ({axes[0]}, {axes[1]}) [{', '.join(units)}]")
         tx.set_ylabel("extreme tensions f₀ ± v_ii [N] (solid max, dash-dot min)")
         tx.legend(loc="best", fontsize=8, ncol=2)
     else:

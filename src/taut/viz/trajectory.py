@@ -55,6 +55,8 @@ def plot_trajectory(robot: Robot, result: TrajectoryResult, snapshots: int = 3, 
     axes raises ``ValueError``); returns that figure."""
     from taut.viz.robot import draw_robot
 
+    if snapshots < 1:
+        raise ValueError(f"plot_trajectory draws at least one snapshot, got snapshots={snapshots}")
     fig = empty_figure(fig, "a trajectory", (4.0 * snapshots, 7.5))
     gs = fig.add_gridspec(2, snapshots, height_ratios=[1.0, 1.2])
     ax = fig.add_subplot(gs[0, :])
