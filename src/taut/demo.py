@@ -6,6 +6,7 @@ taking a :class:`taut.viz.Report`; an analysis joins the demo by adding its func
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -84,7 +85,7 @@ def standard_model_section(report: Report, name: str, shift, resolution: int) ->
     )
 
 
-SECTIONS = [
+SECTIONS: list[Callable[[Report], object]] = [
     robots_section,
     lambda r: standard_model_section(r, "planar-4cable", shift=[0.8, 0.6], resolution=80),
     lambda r: standard_model_section(r, "spatial-8cable", shift=[1.2, 0.0, 0.8], resolution=30),

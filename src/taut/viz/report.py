@@ -26,7 +26,7 @@ import numpy as np
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
-    from matplotlib.figure import Figure
+    from matplotlib.figure import Figure, SubFigure
 
 __all__ = ["Report"]
 
@@ -94,8 +94,9 @@ def _cell(v: object) -> tuple[str, bool]:
     return html.escape(str(v)), False
 
 
-def _png(drawing: Figure | Axes) -> bytes:
-    """PNG of a figure (of an ``Axes``: of the figure it is in), which is then closed."""
+def _png(drawing: Figure | SubFigure | Axes) -> bytes:
+    """PNG of a figure (of a sub-figure or an ``Axes``: of the whole figure it is in), which
+    is then closed."""
     import matplotlib.pyplot as plt
     from matplotlib.axes import Axes
     from matplotlib.figure import SubFigure
@@ -129,15 +130,16 @@ class Report:
         self,
         title: str,
         text: str | None = None,
-        figures: Iterable[tuple[Figure | Axes, str] | tuple[Figure | Axes, str, str | None]] | None = None,
+        figures: Iterable[tuple[Figure | SubFigure | Axes, str] | tuple[Figure | SubFigure | Axes, str, str | None]]
+        | None = None,
         table: Iterable[Mapping[str, object]] | None = None,
         json: object = None,
     ) -> None:
         """Append a section.
 
         ``text``: paragraphs separated by blank lines (plain text, escaped).  ``figures``:
-        ``(Figure, filename, caption)`` tuples (caption optional; an ``Axes`` stands for its
-        figure); each figure is rendered to
+        ``(Figure, filename, caption)`` tuples (caption optional; a sub-figure or an ``Axes``
+        stands for its whole figure); each figure is rendered to
         PNG and closed now; ``filename`` is a plain file name (``.png`` added if missing),
         unique in the report.  ``table``: a list of dict rows (columns in order of first
         appearance).  ``json``: any JSON-serialisable value (NumPy values accepted)."""
