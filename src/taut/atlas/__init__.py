@@ -1,4 +1,4 @@
-"""Structure atlas of planar variable-structure CDPRs (Ch. 5 of ``000_3d5147f1d4639546.txt``):
+"""Structure atlas of planar variable-structure CDPRs (Ch. 5 of Rushton 2022):
 cable-reachable areas (§5.1.2), charts (§5.1.1), the atlas (§5.1.3, Alg. 5.1), its workspace
 (§5.3.1, Alg. 5.2) and inverse kinematics (§5.3.2, Algs. 5.3–5.4); for rigid platforms the
 platform-reachable area (§5.2.1) and one atlas page per orientation (§5.2.2)."""

@@ -1,4 +1,4 @@
-"""Structure atlas of a point-mass planar VSCR (§5.1.3, Alg. 5.1 of ``000_3d5147f1d4639546.txt``).
+"""Structure atlas of a point-mass planar VSCR (§5.1.3, Alg. 5.1 of Rushton 2022).
 
 From an initial point ``p_0`` (and the cables' initial states — by default the shortest
 taut routing, as in :func:`taut.wrapping.ik.wrapped_inverse_kinematics`) Alg. 5.1 builds

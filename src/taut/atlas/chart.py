@@ -1,4 +1,4 @@
-"""Charts of a point-mass VSCR: structure, domain and length map (§5.1.1, Eqs. 5.1–5.6 of ``000_3d5147f1d4639546.txt``).
+"""Charts of a point-mass VSCR: structure, domain and length map (§5.1.1, Eqs. 5.1–5.6 of Rushton 2022).
 
 A *structure* ``S = {s_1, …, s_n}`` (Eq. 5.1) is one cable state per cable, here the
 nodes of the cables' state trees (:class:`taut.wrapping.tree.CableStateTree`).  Its

@@ -1,4 +1,4 @@
-"""Structure-atlas inverse kinematics of a planar VSCR (§5.3.2, Algs. 5.3 and 5.4 of ``000_3d5147f1d4639546.txt``).
+"""Structure-atlas inverse kinematics of a planar VSCR (§5.3.2, Algs. 5.3 and 5.4 of Rushton 2022).
 
 *Direct* (Alg. 5.3): the active chart of a point is the first chart whose domain ``Q``
 contains it (a point-in-polygon test, here shapely's prepared ``contains_xy`` over all

@@ -1,4 +1,4 @@
-"""Platform-reachable area of a rigid planar VSCR at a fixed orientation (§5.2.1, Eqs. 5.8–5.14 of ``000_3d5147f1d4639546.txt``).
+"""Platform-reachable area of a rigid planar VSCR at a fixed orientation (§5.2.1, Eqs. 5.8–5.14 of Rushton 2022).
 
 ``M^θ`` is the platform outline (``platform.shape.polygon``, body frame) rotated by
 ``θ`` about the reference point placed at the origin.  The platform at reference point

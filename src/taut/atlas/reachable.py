@@ -1,4 +1,4 @@
-"""Cable-reachable area (CRA) of one collidable cable in a given state (§5.1.2 of ``000_3d5147f1d4639546.txt``).
+"""Cable-reachable area (CRA) of one collidable cable in a given state (§5.1.2 of Rushton 2022).
 
 The CRA of a cable in state ``s`` is the set of platform-end positions ``b`` reachable by
 its active (last, straight) segment without changing the state or making a forbidden

@@ -1,4 +1,4 @@
-"""Workspace of a planar VSCR from its structure atlas, and pruning (§5.3.1, Alg. 5.2 of ``000_3d5147f1d4639546.txt``).
+"""Workspace of a planar VSCR from its structure atlas, and pruning (§5.3.1, Alg. 5.2 of Rushton 2022).
 
 Within a chart the VSCR is a standard CDPR whose exit points are ``A(p)`` (Eq. 5.5), so
 any workspace condition of :mod:`taut.workspace.conditions` that tests structure

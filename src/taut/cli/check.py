@@ -1,5 +1,5 @@
 """``taut check ROBOT --trajectory FILE|NAME``: self-collision and singularities along a
-trajectory (``004_f30792d78b61e7c2.txt`` §2.3, §3.4, §4.2; :mod:`taut.collision`)."""
+trajectory (Lieskovský 2020, §2.3, §3.4, §4.2; :mod:`taut.collision`)."""
 
 from __future__ import annotations
 

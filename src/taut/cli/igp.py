@@ -10,7 +10,7 @@ HELP = """With the cables of --taut taut (m of them, 2 <= m <= 6) only m pose co
 can be assigned: give them with --fix (names x, y, z and the robot's angle names, e.g.
 a, b, c or phix, phiy, phiz for xyz conventions, phi, theta, sigma for tilt-torsion;
 angles in rad, or 30deg, pi/8).  Every equilibrium with tensions >= 0 is found and
-certified (001_eb92e2f6589fc229.txt §4.1.2; interval branch-and-prune): the free
+certified (Berti 2015, §4.1.2; interval branch-and-prune): the free
 coordinates, the tensions and the cable lengths to command.  A slack cable's length is
 its span (pay out at least that much); cables outside their length bounds are listed.
 JSON: {"robot", "taut", "assigned", "solutions": [{"taut", "position", "orientation",

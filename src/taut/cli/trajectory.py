@@ -1,5 +1,5 @@
 """``taut trajectory ROBOT``: VSCR inverse kinematics along a trajectory (§4.3, §6.2 of
-``000_3d5147f1d4639546.txt``): cable lengths, CST transitions, tensions per sample."""
+Rushton 2022): cable lengths, CST transitions, tensions per sample."""
 
 from __future__ import annotations
 

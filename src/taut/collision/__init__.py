@@ -1,4 +1,4 @@
-"""Self-collision and singularity analysis for every robot of taut (``004_f30792d78b61e7c2.txt``
+"""Self-collision and singularity analysis for every robot of taut (Lieskovský (2020)
 §2.3): capsule models (:mod:`.capsules`), proximity matrices and colliding pairs
 (:mod:`.proximity`), Jacobian and force-closure singularities (:mod:`.singularity`), and the
 check of a trajectory (:mod:`.trajectory`)."""

@@ -1,5 +1,5 @@
 """Capsule collision model of a robot (§2.3.2, §3.1.2 and §3.4 of
-``004_f30792d78b61e7c2.txt``).
+Lieskovský 2020).
 
 Every collidable element is a *capsule*: a segment swept by a sphere of radius ``ρ``
 (Fig. 2.1).  The model of a robot is

@@ -1,5 +1,5 @@
 """Self-collision by capsule proximity: the matrices ``D`` and ``E`` of §3.4 of
-``004_f30792d78b61e7c2.txt`` and the colliding pairs at each pose.
+Lieskovský (2020) and the colliding pairs at each pose.
 
 For each pair of capsules ``(i, j)`` of :func:`taut.collision.capsules.capsule_model` the
 proximity ``δ_ij`` is the segment–segment distance of §3.5

@@ -1,4 +1,4 @@
-"""Singular configurations (§2.3.1 of ``004_f30792d78b61e7c2.txt``, after Diao & Ma).
+"""Singular configurations (§2.3.1 of Lieskovský (2020), after Diao & Ma).
 
 * **Jacobian singularity**: the inverse-kinematics Jacobian ``J`` (Eq. 2.3.1; Eq. 3.2.12 for
   the adjustable platform, :func:`taut.kinematics.jointed.actuator_jacobian`) loses rank.

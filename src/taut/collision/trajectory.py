@@ -1,5 +1,5 @@
 """Checking a trajectory for self-collision and singularities (§4.2 of
-``004_f30792d78b61e7c2.txt``: simulations a–d of the adjustable platform).
+Lieskovský (2020): simulations a–d of the adjustable platform).
 
 A trajectory is a sequence of poses ``X_1 … X_N`` (1-based steps, as in §4.2).  A named
 trajectory of a robot (``trajectories:`` in its file) is sampled by joining its waypoints

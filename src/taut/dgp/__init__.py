@@ -1,4 +1,4 @@
-"""The geometrico-static problems of under-constrained robots (``001_eb92e2f6589fc229.txt``):
+"""The geometrico-static problems of under-constrained robots (Berti 2015):
 the direct one (Ch. 2–3, all equilibria for given cable lengths) and the inverse one
 (§4.1.2, the unassigned pose coordinates, tensions and lengths for chosen taut cables), and
 tracking forward kinematics (§4.1.2, the equilibrium that follows a known one)."""

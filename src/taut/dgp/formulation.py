@@ -1,4 +1,4 @@
-"""The geometrico-static equations of one taut-cable subset (``001_eb92e2f6589fc229.txt``
+"""The geometrico-static equations of one taut-cable subset (Berti (2015)
 §2.3.1–2.3.6, initial domain §3.1.1, filters §3.1.3).
 
 Parameterisation (§2.3.5–2.3.6, "reference points"): the unknowns are the fixed-frame

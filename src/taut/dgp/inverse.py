@@ -1,5 +1,5 @@
 """The inverse geometrico-static problem (IGP) of an under-constrained robot
-(``001_eb92e2f6589fc229.txt`` §4.1.2, "Inverse kinematics"): with ``m`` chosen taut cables
+(Berti 2015, §4.1.2, "Inverse kinematics"): with ``m`` chosen taut cables
 (``2 ≤ m ≤ 6``) only ``m`` of the six pose coordinates can be controlled; assign them, and
 find the other ``6 − m`` coordinates and the ``m`` tensions that put the platform in
 static equilibrium (Eq. 2.3) with non-negative tensions.  The cable lengths to command are

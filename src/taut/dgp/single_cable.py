@@ -1,4 +1,4 @@
-"""The DGP with one taut cable (``001_eb92e2f6589fc229.txt`` §2.3.3, Algorithm 2).
+"""The DGP with one taut cable (Berti 2015, §2.3.3, Algorithm 2).
 
 With cable ``i`` alone in tension the cable is parallel to the load: ``b_i = a_i + ρ_i f̂``,
 ``τ_i = ‖f‖``, and ``G`` lies on the same vertical, below ``B_i`` (``G_a``, stable) or above

@@ -1,5 +1,5 @@
 """All equilibria of an under-constrained robot for given cable lengths — the direct
-geometrico-static problem (``001_eb92e2f6589fc229.txt`` Ch. 2–3).
+geometrico-static problem (Berti 2015, Ch. 2–3).
 
 :func:`solve_dgp` enumerates the taut subsets of ``m = 1 … min(n, 6, max_taut)`` cables
 (Eq. 2.1), solves each one — ``m = 1`` in closed form (:mod:`taut.dgp.single_cable`),

@@ -1,4 +1,4 @@
-"""Stability of an equilibrium by the reduced Hessian (``001_eb92e2f6589fc229.txt``
+"""Stability of an equilibrium by the reduced Hessian (Berti (2015)
 §3.2.2, Eqs. 3.41–3.43, after Carricato & Merlet 2013).
 
 ``H = Σ τ_i/ρ_i [[I, −(b̃_i − g̃)], [(b̃_i − g̃), ½((b̃_i − g̃)(g̃ − ã_i) + (g̃ − ã_i)(b̃_i − g̃))]]``

@@ -1,5 +1,5 @@
 """Tracking forward kinematics: the equilibrium that follows a known one when the cable
-lengths change a little (``001_eb92e2f6589fc229.txt`` §4.1.2, "Forward kinematics" of the
+lengths change a little (Berti 2015, §4.1.2, "Forward kinematics" of the
 real-time control routine and its "Remarks on the real-time procedure").
 
 One update from the equilibrium ``x₀`` (reference points and scaled tensions of its taut

@@ -1,7 +1,7 @@
 """Planar intersection tests: segment–segment, segment–circle, segment–polygon, circle–circle.
 
 Appendix A.1 (line segment–line segment intercept) and A.2 (line segment–circle
-intercept) of ``000_3d5147f1d4639546.txt``, vectorised over leading axes.  The tests are
+intercept) of Rushton (2022), vectorised over leading axes.  The tests are
 *strict* where the cable model needs it: a cable that only touches a circle tangentially
 (the contact points of every taut path, and the tie of Fig. 4.5) does not meet it; a
 tolerance ``tol`` [m] absorbs round-off.

@@ -1,9 +1,9 @@
-"""Rotation matrices for the orientation conventions of ``DESIGN.md`` §2.
+"""Rotation matrices for the orientation conventions of ``docs/architecture.md`` §2.3.
 
 * ``xyz-fixed``: ``R = Rz(c) Ry(b) Rx(a)`` — rotations about the fixed x, y, z axes
-  (the convention of Tables 4.3–4.6 of ``001_eb92e2f6589fc229.txt``).
-* ``xyz-moving``: ``R = Rx(a) Ry(b) Rz(c)`` — Eq. (3.1.1) of ``004_f30792d78b61e7c2.txt``.
-* ``tilt-torsion``: ``R = Rz(φ) Ry(θ) Rz(σ − φ)`` — Eq. (1) of ``002_19d5d688a3999fb0.txt``;
+  (the convention of Tables 4.3–4.6 of Berti 2015).
+* ``xyz-moving``: ``R = Rx(a) Ry(b) Rz(c)`` — Eq. (3.1.1) of Lieskovský (2020).
+* ``tilt-torsion``: ``R = Rz(φ) Ry(θ) Rz(σ − φ)`` — Eq. (1) of Bohigas et al. (2013);
   the angles are given in the order ``(φ, θ, σ)``.
 
 All functions work over arrays: angles of shape ``(..., 3)`` give matrices ``(..., 3, 3)``.

@@ -1,5 +1,5 @@
 """Segment–segment distance (the *proximity* ``δ_ij`` of two line segments), §3.5 of
-``004_f30792d78b61e7c2.txt`` (Eq. 3.5.1: ``ξ_i v_i + d_ij = a_ij + ξ_j v_j``).
+Lieskovský (2020) (Eq. 3.5.1: ``ξ_i v_i + d_ij = a_ij + ξ_j v_j``).
 
 Given ``s_i = A_i B_i`` and ``s_j = A_j B_j``, find ``ξ_i, ξ_j ∈ [0, 1]`` minimising
 ``‖A_i + ξ_i v_i − A_j − ξ_j v_j‖``.  The source splits parallel (Tables 3.1–3.2) and skew

@@ -1,6 +1,6 @@
 """Common tangents of points and circles with cable wrap directions.
 
-Appendix A.3 (point–circle) and A.4 (circle–circle) of ``000_3d5147f1d4639546.txt``.
+Appendix A.3 (point–circle) and A.4 (circle–circle) of Rushton (2022).
 A point is a circle of radius 0, so one formula serves all cases: a cable leaving circle
 ``(c1, r1)`` with wrap direction ``d1`` and arriving on circle ``(c2, r2)`` with wrap
 direction ``d2`` (``+1`` counter-clockwise: the centre lies on the left of the direction

@@ -1,4 +1,4 @@
-"""Interval analysis (``001_eb92e2f6589fc229.txt`` §1.3 and Ch. 3): outward-rounded
+"""Interval analysis (Berti 2015, §1.3 and Ch. 3): outward-rounded
 interval arithmetic, polynomial constraint tapes, HC4 contraction, slope enclosures,
 Krawczyk certificates with inflation, and a branch-and-prune solver."""
 

@@ -1,5 +1,5 @@
 """Interval arrays: ``lo`` and ``hi`` endpoint arrays with outward-rounded arithmetic
-(``001_eb92e2f6589fc229.txt`` §1.3.1–1.3.2).
+(Berti 2015, §1.3.1–1.3.2).
 
 :class:`Interval` wraps two broadcastable float arrays and overloads ``+ − × / **``,
 :meth:`Interval.sqr` and :meth:`Interval.sqrt`, each lifted elementwise from the scalar

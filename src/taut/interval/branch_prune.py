@@ -1,4 +1,4 @@
-"""Branch-and-prune solver for square polynomial systems (``001_eb92e2f6589fc229.txt``
+"""Branch-and-prune solver for square polynomial systems (Berti (2015)
 §1.3.3 Algorithm 1, with the bisection rule of §3.1.4 and the evaluation operator of
 §3.2.1–3.2.2).
 

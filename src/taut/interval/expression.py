@@ -1,4 +1,4 @@
-"""Polynomial expressions and their compiled *tape* (``001_eb92e2f6589fc229.txt`` §1.3.2, §3.1.3).
+"""Polynomial expressions and their compiled *tape* (Berti 2015, §1.3.2, §3.1.3).
 
 Constraints are written with :class:`Expr` objects (``x[0]**2 + x[1]*x[2] - 3``) and
 compiled by :func:`compile_system` into flat arrays — one node per operation, children

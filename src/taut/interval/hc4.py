@@ -1,5 +1,5 @@
 """HC4 (forward–backward, "2B") contraction of polynomial constraints
-(``001_eb92e2f6589fc229.txt`` §3.1.3, the 2B approach; Benhamou et al.'s HC4-revise).
+(Berti 2015, §3.1.3, the 2B approach; Benhamou et al.'s HC4-revise).
 
 The constraints of a :class:`~taut.interval.expression.Tape` share their common
 subexpressions (one DAG).  The forward pass evaluates every node over the box (natural

@@ -1,4 +1,4 @@
-"""Scalar interval kernels with outward rounding (``001_eb92e2f6589fc229.txt`` §1.3.1).
+"""Scalar interval kernels with outward rounding (Berti 2015, §1.3.1).
 
 An interval is a pair ``(lo, hi)`` of floats.  Every operation computes its endpoints in
 round-to-nearest and moves each one outwards by at least one ulp: IEEE 754 ``+ − × ÷ √``

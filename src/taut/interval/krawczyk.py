@@ -1,4 +1,4 @@
-"""Certified solutions of square polynomial systems (``001_eb92e2f6589fc229.txt`` §3.2.1).
+"""Certified solutions of square polynomial systems (Berti 2015, §3.2.1).
 
 * :func:`newton` — plain Newton iterations in floating point (the refinement step).
 * :func:`krawczyk` — the Krawczyk operator

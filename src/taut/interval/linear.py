@@ -1,4 +1,4 @@
-"""Interval linear systems ``[A] x = [b]`` (``001_eb92e2f6589fc229.txt`` §3.1.3,
+"""Interval linear systems ``[A] x = [b]`` (Berti 2015, §3.1.3,
 Eqs. 3.9–3.12).
 
 :func:`interval_gauss` is interval Gaussian elimination (no pivoting, every operation

@@ -1,5 +1,5 @@
 """Slope enclosures of polynomial equations by Gauss–Legendre quadrature of the mean-value
-integral (for the Krawczyk-type operators of ``001_eb92e2f6589fc229.txt`` §3.2.1).
+integral (for the Krawczyk-type operators of Berti (2015), §3.2.1).
 
 For ``x`` and the centre ``c`` of a box ``X``,
 

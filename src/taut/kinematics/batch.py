@@ -1,5 +1,5 @@
 """Batched inverse kinematics in a Numba kernel: cable lengths and structure matrices of
-many poses at once, for workspace grids (``000_3d5147f1d4639546.txt`` §2.1.1, Eqs. 2.1,
+many poses at once, for workspace grids (Rushton 2022, §2.1.1, Eqs. 2.1,
 2.8 and 2.10; the conventions of :mod:`taut.kinematics.inverse`).
 
 Same quantities as :func:`taut.kinematics.inverse.inverse_kinematics` for robots without

@@ -1,4 +1,4 @@
-"""Elastic cables: the linear spring model of Eq. (2.15) of ``000_3d5147f1d4639546.txt``,
+"""Elastic cables: the linear spring model of Eq. (2.15) of Rushton (2022),
 ``τ = EA (l − l0) / l0``, solved for the unstretched length ``l0 = EA l / (EA + τ)``."""
 
 from __future__ import annotations

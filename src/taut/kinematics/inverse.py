@@ -1,10 +1,10 @@
-"""Inverse kinematics of the standard CDPR model (``000_3d5147f1d4639546.txt`` §2.1.1).
+"""Inverse kinematics of the standard CDPR model (Rushton 2022, §2.1.1).
 
 Cable *i* runs from its exit point ``a_i`` to ``b_i = p + R r_i`` (Eq. 2.1); its length is
 ``l_i = ‖a_i − b_i‖`` and its unit vector ``u_i = (a_i − b_i)/l_i`` points from the
 platform to the exit point.  The structure matrix is ``W = [u_i ; (b_i − p) × u_i]``
 (Eq. 2.8; Eq. 2.10 for a point mass), so that equilibrium reads ``W τ + w_ext = 0``
-(Eq. 2.11).  For jointed platforms (``004_…``) ``b_i`` is the anchor on the cable's own
+(Eq. 2.11).  For jointed platforms (Lieskovský 2020) ``b_i`` is the anchor on the cable's own
 body and moments are still taken about the platform reference point ``p``.
 """
 

@@ -1,5 +1,5 @@
 """Actuator positions, inverse-kinematics Jacobian and structure matrix of robots whose
-platform carries jointed bodies — §3.2–3.3 of ``004_f30792d78b61e7c2.txt`` — written for
+platform carries jointed bodies — §3.2–3.3 of Lieskovský (2020) — written for
 any robot of taut (without bodies they reduce to the standard model).
 
 * **Actuator positions** (Eqs. 3.2.3–3.2.4): ``q = [l_1 … l_n, q_{n+1} …]``, the cable
@@ -11,8 +11,8 @@ any robot of taut (without bodies they reduce to the standard model).
   ``j`` between the platform and body ``k``, the joint axis ``e_j`` in the fixed frame
   (prismatic, Eq. 3.2.7: ``ṡ_23 u_23``) or ``e_j × (b_i − o_j)`` about the joint origin
   ``o_j`` (revolute; planar: ``(b_i − o_j)`` turned by 90°); each joint row is a unit row
-  (Eq. 3.2.8).  With ``u_i`` pointing from the platform to the exit point (``DESIGN.md``
-  §2) ``l̇_i = −u_i · ḃ_i``: Eq. 3.2.12 prints the same rows with the opposite sign.  For the
+  (Eq. 3.2.8).  With ``u_i`` pointing from the platform to the exit point (``docs/architecture.md``
+  §2.4) ``l̇_i = −u_i · ḃ_i``: Eq. 3.2.12 prints the same rows with the opposite sign.  For the
   adjustable platform ``J`` is 9×7.
 * **Structure matrix with joint forces** (Eqs. 3.3.7–3.3.12): by virtual work a cable
   tension ``τ_i`` acts on the generalised coordinates as ``−τ_i ∂l_i/∂X`` and a joint force

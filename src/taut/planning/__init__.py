@@ -1,4 +1,4 @@
-"""Wrench-feasible path planning (``002_19d5d688a3999fb0.txt``): higher-dimensional
+"""Wrench-feasible path planning (Bohigas et al. 2013): higher-dimensional
 continuation (:mod:`.continuation`) and A* over its charts (:mod:`.search`)."""
 
 from taut.planning.continuation import Atlas, Chart, ImplicitManifold, Polytope, project, tangent_basis

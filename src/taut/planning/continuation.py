@@ -1,7 +1,7 @@
 """Higher-dimensional continuation: an atlas of a k-manifold ``F(x) = 0`` in ``R^n``.
 
 Henderson's multiple-chart method (Henderson 2002, ref. [14] of
-``002_19d5d688a3999fb0.txt``; §4 of that paper):
+Bohigas et al. (2013); §4 of that paper):
 
 * a **chart** ``C_i`` is a centre ``x_i`` on the manifold, an orthonormal basis ``Ψ_i`` of
   the tangent space ``T_{x_i}M`` (the null space of the Jacobian ``F_x``), a radius ``r``

@@ -1,6 +1,6 @@
 """The wrench-feasible C-space of a cable-driven hexapod as a smooth manifold.
 
-Eqs. (1)–(8) of ``002_19d5d688a3999fb0.txt`` §2–3, ``F(x) = 0`` in the 99 variables
+Eqs. (1)–(8) of Bohigas et al. (2013), §2–3, ``F(x) = 0`` in the 99 variables
 
     x = (p [3], τ = (φ, θ, σ) [3], R [9, row-major], u_i [18], ρ_i [6], g_i [6],
          f_0 [6], v_1..v_6 [36], s_i [6], t_i [6]),

@@ -1,6 +1,6 @@
 """A* over the charts of a growing atlas, and the path refined on the manifold.
 
-§4 of ``002_19d5d688a3999fb0.txt``: the atlas of :mod:`taut.planning.continuation` is
+§4 of Bohigas et al. (2013): the atlas of :mod:`taut.planning.continuation` is
 expanded in A* order (Russell & Norvig, ref. [25]) from the chart at the start point:
 the open chart of least ``g + h`` is closed next, where ``g`` is the length of the
 chart-centre path found so far and ``h`` the straight-line distance to the goal in the

@@ -1,4 +1,4 @@
-"""Independent check of a planned path (``002_19d5d688a3999fb0.txt`` §5, Fig. 6).
+"""Independent check of a planned path (Bohigas et al. 2013, §5, Fig. 6).
 
 The poses of a path are interpolated linearly (``subdivide`` points per segment) and each
 is tested with the general wrench-feasibility test of :mod:`taut.statics.feasibility`

@@ -1,7 +1,7 @@
 """Wrench closure, wrench feasibility and static equilibrium over arrays of poses.
 
 The tests decide, for each structure matrix ``W`` of a batch ``(N, m, n)`` and tension
-bounds ``τ_min ≤ τ ≤ τ_max``, the workspace conditions of ``000_3d5147f1d4639546.txt``
+bounds ``τ_min ≤ τ ≤ τ_max``, the workspace conditions of Rushton (2022)
 §2.1.4:
 
 * **wrench closure** (WCW): the columns of ``W`` positively span ``R^m``, so that the
@@ -476,7 +476,7 @@ def facet_normals(W, tmin=0.0, tmax=1.0) -> tuple[np.ndarray, np.ndarray, np.nda
 
 def wrench_closure(W) -> np.ndarray:
     """Wrench closure: the columns of each ``W`` ``(N, m, n)`` positively span ``R^m``
-    (``000_…`` §2.1.4, the wrench-closure workspace).  Returns ``(N,)`` bool.
+    (Rushton 2022, §2.1.4, the wrench-closure workspace).  Returns ``(N,)`` bool.
 
     Hyperplane shifting with zero lower and unit upper bounds: ``0`` is interior to
     ``W·[0, 1]^n`` iff ``rank W = m`` and every facet normal has a column strictly on
@@ -493,7 +493,7 @@ def wrench_closure(W) -> np.ndarray:
 
 def wrench_feasible(W, tmin, tmax, wrench_set: WrenchSet, offset=None) -> np.ndarray:
     """Wrench feasibility: for every ``w`` in ``offset[k] + wrench_set`` there are tensions
-    ``tmin ≤ τ ≤ tmax`` with ``W[k] τ + w = 0`` (``000_…`` §2.1.4, the wrench-feasible
+    ``tmin ≤ τ ≤ tmax`` with ``W[k] τ + w = 0`` (Rushton 2022, §2.1.4, the wrench-feasible
     workspace; hyperplane shifting of Gouttefarde & Gosselin 2006 / Bouchard et al. 2010).
 
     ``W`` is ``(N, m, n)``; ``tmin``, ``tmax`` ``(n,)`` (``tmax`` may be ``+inf``);
@@ -558,7 +558,7 @@ def _generic_status(W, tmin, tmax, off, ws: WrenchSet, status, block_elems: int 
 def static_equilibrium(W, tmin, tmax, w) -> np.ndarray:
     """Static equilibrium ``W[k] τ + w[k] = 0`` with ``tmin ≤ τ ≤ tmax`` for one wrench per
     pose (``w`` ``(N, m)`` or ``(m,)``): the single-wrench case of the wrench-feasible
-    workspace (``000_…`` §2.1.4), by the same hyperplane-shifting test, with an exact LP
+    workspace (Rushton 2022, §2.1.4), by the same hyperplane-shifting test, with an exact LP
     where ``rank W < m`` (e.g. every pose of a robot with fewer cables than DOF)."""
     W = _as_W(W)
     m = W.shape[1]

@@ -5,7 +5,7 @@ tensions ``τ`` with
 
     ``W τ + w = 0``,  ``τ_min ≤ τ ≤ τ_max``
 
-(``000_3d5147f1d4639546.txt`` §2.1.2, Eqs. 2.11 and 2.13; for ``n = m`` the source's
+(Rushton 2022, §2.1.2, Eqs. 2.11 and 2.13; for ``n = m`` the source's
 Eq. 2.12 must read ``τ = −W⁻¹ w_ext``: it drops the sign).  With ``n > m`` cables the
 solutions form a polytope and a method picks one of them:
 
@@ -254,7 +254,7 @@ def _program(W, w, tmin, tmax, objective: str):
 
 def _lp(W, w, tmin, tmax):
     """Minimum sum of tensions ``min Σ τᵢ`` — a linear program solved by HiGHS (dual
-    simplex, warm-started from the previous pose); ``000_…`` §2.1.2 and §6 (the LP
+    simplex, warm-started from the previous pose); Rushton (2022), §2.1.2 and §6 (the LP
     tension distribution used for the experiments)."""
     return _program(W, w, tmin, tmax, "lp")
 
@@ -310,7 +310,7 @@ def _min_norm_active_set(W, w, lo, hi, tau) -> np.ndarray:
 
 
 def _qp(W, w, tmin, tmax):
-    """Minimum 2-norm ``min ½‖τ‖²`` (Hassan and Khajepour 2008, ref. [23] of ``000_…``),
+    """Minimum 2-norm ``min ½‖τ‖²`` (Hassan and Khajepour 2008, ref. [23] of Rushton 2022),
     a strictly convex QP: the ``lp`` program decides feasibility and gives a feasible
     vertex, from which :func:`_min_norm_active_set` descends to the exact minimiser.
     (HiGHS's own QP solver was tried and rejected: on some problems with tiny bounds it
@@ -323,7 +323,7 @@ def _qp(W, w, tmin, tmax):
 
 def _inf(W, w, tmin, tmax):
     """Minimum ∞-norm ``min t`` s.t. ``τᵢ ≤ t`` — a linear program solved by HiGHS
-    (Hussein, Cavalcanti Santos, Izard, Gouttefarde 2021, ref. [24] of ``000_…``).  Only
+    (Hussein, Cavalcanti Santos, Izard, Gouttefarde 2021, ref. [24] of Rushton 2022).  Only
     the largest tension is minimised: the others are those of one optimal vertex."""
     return _program(W, w, tmin, tmax, "inf")
 
@@ -371,7 +371,7 @@ def _pott(W, w, tmin, tmax, iterations: int):
 
 def _closed_form(W, w, tmin, tmax):
     """Closed-form force distribution of Pott, Bruckmann and Mikelsons (2009, ref. [27] of
-    ``000_…``): ``τ = τm − W⁺(w + W τm)`` with ``τm = (τ_min + τ_max)/2``, the tensions
+    Rushton 2022): ``τ = τm − W⁺(w + W τm)`` with ``τm = (τ_min + τ_max)/2``, the tensions
     nearest to the middle of the bounds in the 2-norm, ignoring the bounds; accepted only
     if they satisfy them, else ``"not-found"``.  A cable without upper bound (``τ_max =
     ∞``) uses ``τm = τ_min``.  Batched pseudo-inverse over all poses."""
@@ -379,7 +379,7 @@ def _closed_form(W, w, tmin, tmax):
 
 
 def _improved_closed_form(W, w, tmin, tmax):
-    """Improved closed-form force distribution of Pott (2014, ref. [28] of ``000_…``): the
+    """Improved closed-form force distribution of Pott (2014, ref. [28] of Rushton 2022): the
     closed form of :func:`_closed_form`; while a tension violates its bounds and ``W`` of
     the remaining cables keeps redundancy (more cables than its rank), fix the cable with
     the largest violation at that bound, move its wrench to the right-hand side, drop its

@@ -1,4 +1,4 @@
-"""Figures of a wrench-feasible path (``002_19d5d688a3999fb0.txt`` §5, Figs. 5–6):
+"""Figures of a wrench-feasible path (Bohigas et al. 2013, §5, Figs. 5–6):
 :func:`slice_map` — the discretised wrench-feasible C-space of a 2-D slice (Fig. 5: green
 feasible, blue some tension out of range, red some length out of range);
 :func:`plot_plan` — that map with the explored atlas and the path (Fig. 6, top), and the
@@ -151,7 +151,7 @@ def plan_section(report, radius: float = 0.2):
         "Wrench-feasible path planning (Robocrane)",
         text=(
             "A path from q1 to q2 on the slice p = (0, 0, 2), σ = 35° of the Robocrane's "
-            "wrench-feasible C-space (002_19d5d688a3999fb0.txt §5, Figs. 5–6): Henderson's "
+            "wrench-feasible C-space (Bohigas et al. 2013, §5, Figs. 5–6): Henderson's "
             "atlas of Eqs. (1)–(8) expanded in A* order, every interpolated pose of the path "
             "then checked by the general wrench-feasibility test.\n\n"
             "The cable pairing is our reading of §5 (robocrane.yaml, reference.notes)."

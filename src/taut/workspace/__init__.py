@@ -1,4 +1,4 @@
-"""Workspaces (``000_3d5147f1d4639546.txt`` §2.1.4): conditions (wrench closure, wrench
+"""Workspaces (Rushton 2022, §2.1.4): conditions (wrench closure, wrench
 feasibility, static equilibrium) in a registry, pose grids, and grid evaluation over an
 executor of :mod:`taut.parallel`."""
 

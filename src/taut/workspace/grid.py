@@ -1,4 +1,4 @@
-"""Pose grids for workspace evaluation by discretisation (``000_3d5147f1d4639546.txt``
+"""Pose grids for workspace evaluation by discretisation (Rushton (2022)
 §2.1.4: "discretizing the installation space into a grid of end effector poses and
 testing each one").
 

@@ -1,4 +1,4 @@
-"""Collidable cables of planar variable-structure CDPRs (Chs. 3–4, 6 of ``000_3d5147f1d4639546.txt``):
+"""Collidable cables of planar variable-structure CDPRs (Chs. 3–4, 6 of Rushton 2022):
 cable state (§4.1), cable-state tree (§4.2.1), state update (§4.2.2), VSCR IK (§4.3), trajectories (§6.2)."""
 
 from taut.wrapping.ik import WrappedIK, wrapped_inverse_kinematics

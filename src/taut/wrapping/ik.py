@@ -1,4 +1,4 @@
-"""Inverse kinematics of planar variable-structure CDPRs (VSCRs) along a path (§4.3 of ``000_3d5147f1d4639546.txt``).
+"""Inverse kinematics of planar variable-structure CDPRs (VSCRs) along a path (§4.3 of Rushton 2022).
 
 Two stages per sample (§4.3): update every cable's state for the new platform pose with
 Alg. 4.4 (:func:`taut.wrapping.update.track`), then turn states into lengths with

@@ -1,4 +1,4 @@
-"""Cable state of a collidable cable and the path it stands for (§4.1 of ``000_3d5147f1d4639546.txt``).
+"""Cable state of a collidable cable and the path it stands for (§4.1 of Rushton 2022).
 
 A cable runs from its winch (the exit pulley, a circle ``(a, r_0)`` turned in direction
 ``d_0``, or a point) over a sequence of circular objects to the platform anchor ``b``.

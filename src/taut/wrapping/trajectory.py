@@ -1,4 +1,4 @@
-"""VSCR trajectories: waypoints or a parametric path, IK, tensions (§4.4, §6.1.2, §6.2 of ``000_3d5147f1d4639546.txt``).
+"""VSCR trajectories: waypoints or a parametric path, IK, tensions (§4.4, §6.1.2, §6.2 of Rushton 2022).
 
 *Waypoint sequences* (§6.2): the end effector moves on a straight line between
 consecutive waypoints at constant ``speed`` and rests ``dwell`` seconds at each one (1 s

@@ -1,4 +1,4 @@
-"""Cable-state tree (CST) of a collidable cable (§4.2.1, Algs. 4.2–4.3 of ``000_3d5147f1d4639546.txt``).
+"""Cable-state tree (CST) of a collidable cable (§4.2.1, Algs. 4.2–4.3 of Rushton 2022).
 
 Each node is one possible *static* segment of the cable: the common tangent leaving the
 object of its parent (the root is the winch pulley) and arriving on object ``obj`` with

@@ -1,4 +1,4 @@
-"""Cable-state update along a motion of the platform end (§4.2.2, Alg. 4.4 of ``000_3d5147f1d4639546.txt``).
+"""Cable-state update along a motion of the platform end (§4.2.2, Alg. 4.4 of Rushton 2022).
 
 Between two samples the platform anchor moves on a straight line ``b(τ) = b₀ + τ (b₁ − b₀)``,
 ``τ ∈ [0, 1]``.  Alg. 4.4 compares the angle swept by the active segment with the angles of
