@@ -1,6 +1,13 @@
 """``taut igp ROBOT --taut 1,2,3 --fix x=0.3,y=0.4,z=0.1 [--box ...] [--json]``: the inverse
 geometrico-static problem (:func:`taut.dgp.solve_igp`).  No solution is an empty list, not
-an error."""
+an error.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
+"""
 
 from __future__ import annotations
 

@@ -7,6 +7,14 @@ joints, the external wrench), collidable obstacles and the installation space of
 variable-structure robots, reference data from the sources and named trajectories.
 Validation errors are raised by pydantic and turned into :class:`taut.RobotFileError`
 by :mod:`taut.model.io`.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §4.1, §6.2. (docs/references.bib: rushton2022)
+.. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.2, §4.2.
+   (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations
@@ -106,7 +114,7 @@ class Joint(_Strict):
 
 
 class Capsule(_Strict):
-    """A segment swept by a sphere: the collision model of Lieskovský (2020), §2.3.2."""
+    """A segment swept by a sphere: the collision model of Lieskovský 2020, §2.3.2."""
 
     a: list[Coordinate]
     b: list[Coordinate]
@@ -178,7 +186,7 @@ class Reference(_Strict):
 class Trajectory(_Strict):
     """A named trajectory: waypoints (positions or full poses) joined by straight moves.
 
-    ``steps`` gives the number of samples of each move (pose sequences, Lieskovský (2020), §4.2);
+    ``steps`` gives the number of samples of each move (pose sequences, Lieskovský 2020, §4.2);
     ``speed`` [m/s] and ``dwell`` [s] time a waypoint sequence (Rushton 2022, §6.2).
     """
 

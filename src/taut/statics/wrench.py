@@ -9,6 +9,14 @@ A wrench set is described by its support function ``h(n) = max_{w ∈ set} n·w`
 convex set below (a single wrench, a box, a polytope given by its vertices, and the
 ellipsoid ``{c + L v : ‖v‖ ≤ 1}`` of Bohigas et al. (2013), §2) provides it, which is
 all the wrench-feasibility tests of :mod:`taut.statics.feasibility` need.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Eq. 2.11. (docs/references.bib: rushton2022)
+.. [2] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §2. (docs/references.bib: bohigas2013)
 """
 
 from __future__ import annotations

@@ -1,7 +1,13 @@
 """Figures of a structure atlas (Figs. 5.4 and 5.9 of Rushton 2022):
 :func:`plot_atlas` — the charts in grey (darker where they overlap) with their traversable
 edges, the start point (and a rigid platform's outline there, at the page's orientation), and, given a workspace (Alg. 5.2), the workspace in purple over
-the charts kept; :func:`atlas_section`, the demo's atlas of the T-shaped VSCR."""
+the charts kept; :func:`atlas_section`, the demo's atlas of the T-shaped VSCR.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Figs. 5.4 and 5.9, Alg. 5.2. (docs/references.bib: rushton2022)
+"""
 
 from __future__ import annotations
 

@@ -1,7 +1,14 @@
 """Figures of a trajectory check (:func:`taut.collision.check_poses`, Lieskovský (2020), §4.2):
 :func:`plot_check` — the smallest clearance ``ε`` and the singularity flags over the steps,
 and the robot at the first step with a problem, its colliding capsules in red; and
-:func:`check_section`, the demo's check of simulation c of ``adjustable-8cable``."""
+:func:`check_section`, the demo's check of simulation c of ``adjustable-8cable``.
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §4.2.
+   (docs/references.bib: lieskovsky2020)
+"""
 
 from __future__ import annotations
 

@@ -5,6 +5,12 @@
 drawings of Fig. 4.7); :func:`plot_tracking` shows a run of tracking forward kinematics
 (§4.1.2) — platform position and cable tensions per update, taut-set changes marked;
 :func:`dgp_section` adds both, on the robot of Table 4.3, to the ``taut demo`` report.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, Chs. 2–4, Table 4.3, Fig. 4.7, §4.1.2. (docs/references.bib: berti2015)
 """
 
 from __future__ import annotations

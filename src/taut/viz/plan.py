@@ -3,7 +3,14 @@
 feasible, blue some tension out of range, red some length out of range);
 :func:`plot_plan` — that map with the explored atlas and the path (Fig. 6, top), and the
 tension envelope ``f_0 ± v_ii`` of every cable along the path (Fig. 6, bottom); and
-:func:`plan_section`, the demo's Robocrane query q1 → q2."""
+:func:`plan_section`, the demo's Robocrane query q1 → q2.
+
+References
+----------
+.. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §5, Figs. 5–6. (docs/references.bib: bohigas2013)
+"""
 
 from __future__ import annotations
 

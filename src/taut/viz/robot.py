@@ -18,6 +18,14 @@ the exit points (the frame).
 
 Cables are straight segments ``a_i → b_i`` (``docs/architecture.md`` §2.4); wrapped cables are not
 drawn here.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Figs. 3.5, 6.5, 6.12, 6.19. (docs/references.bib: rushton2022)
+.. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, Figs. 4.3–4.4.
+   (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations

@@ -6,6 +6,11 @@ feasible tension distribution exists shaded in red with a mark on the x axis.  T
 follows the per-cable time plots of Rushton (2022) (Figs. 4.7, 4.10, 6.10:
 one curve per cable over the trajectory, markers at events), with tensions in place of
 lengths.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Figs. 4.7, 4.10, 6.10. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations

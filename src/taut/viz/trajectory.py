@@ -4,6 +4,11 @@
 black circle (wrap: filled, unwrap: open), above snapshots of the robot in which each
 cable is drawn as its wrapped path — straight segments and arcs.  :func:`trajectory_section`
 adds one trajectory of each VSCR example to the ``taut demo`` report.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Figs. 4.7–4.10, 6.10. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations

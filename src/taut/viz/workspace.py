@@ -14,6 +14,14 @@ The result is duck-typed: anything with ``condition``, ``poses (N, pose_size)``,
 ``inside (N,)``, ``axes`` (1-D coordinates per position axis) and ``grid_shape``
 (``inside.reshape(grid_shape)`` in C order, axes x, y[, z]) is drawn; ``fraction`` is
 used when present.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Figs. 5.9c, 6.5, 6.12. (docs/references.bib: rushton2022)
+.. [2] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, Fig. 4.4. (docs/references.bib: berti2015)
 """
 
 from __future__ import annotations

@@ -17,6 +17,14 @@ registry, so that adding a condition is adding one class and one entry of
 
 A condition maps an array of poses ``(N, pose_size)`` to ``(N,)`` bool.  Poses where the
 inverse kinematics does not exist (a zero-length cable) are outside.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+.. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §3.4.
+   (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations

@@ -3,6 +3,11 @@ poses of a :class:`~taut.workspace.grid.PoseGrid` are split into chunks, each ch
 tested in one vectorised call of the condition, and the chunks are mapped over an
 executor of :mod:`taut.parallel` (serial, local processes or dask.distributed — the
 verdicts are identical whatever the executor).
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations

@@ -36,6 +36,11 @@ yet; :func:`track` expands it and resumes.
 
 A rigid platform's anchor moves on a curve when the platform turns: callers sample it
 finely enough (``taut.wrapping.ik``) that the chord is the motion.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §4.2.2, Alg. 4.4. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -148,7 +153,13 @@ class Tracking:
 
 def track(tree: CableStateTree, points, node: int = 0) -> Tracking:
     """Update the state of a cable whose platform end visits ``points`` (``(T, 2)``, a
-    polyline of straight moves) from state ``node`` at ``points[0]`` (Alg. 4.4 per step)."""
+    polyline of straight moves) from state ``node`` at ``points[0]`` (Alg. 4.4 per step).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.2.2, Alg. 4.4. (docs/references.bib: rushton2022)
+    """
     P = np.ascontiguousarray(points, dtype=float)
     T = len(P)
     nodes = np.zeros(T, dtype=np.int64)
@@ -189,5 +200,11 @@ def track(tree: CableStateTree, points, node: int = 0) -> Tracking:
 
 
 def update_state(tree: CableStateTree, node: int, b0, b1) -> int:
-    """One state update (Alg. 4.4): the tracked node after the platform end moves ``b0 → b1``."""
+    """One state update (Alg. 4.4): the tracked node after the platform end moves ``b0 → b1``.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.2.2, Alg. 4.4. (docs/references.bib: rushton2022)
+    """
     return int(track(tree, np.array([b0, b1], float), node).nodes[-1])
