@@ -1,4 +1,4 @@
-"""Singular configurations (§2.3.1 of Lieskovský (2020), after Diao & Ma).
+"""Singular configurations (Lieskovský 2020, §2.3.1, after Diao & Ma 2007, 2008).
 
 * **Jacobian singularity**: the inverse-kinematics Jacobian ``J`` (Eq. 2.3.1; Eq. 3.2.12 for
   the adjustable platform, :func:`taut.kinematics.jointed.actuator_jacobian`) loses rank.
