@@ -1,4 +1,4 @@
-"""Time of a complete DGP of 001_eb92e2f6589fc229.txt §4.2 against the single-core time the
+"""Time of a complete DGP of Berti (2015), §4.2 against the single-core time the
 source reports for its ALIAS C++ implementation: Table 4.3 (suspended 3-cable robot, 25 s) by
 default, or with ``--robot`` Table 4.6 (teaching-prototype, 187 s), 4.5 (marionet-vr, 702 s)
 or 4.4 (cogiro, 1343 s); the count of solutions per number of taut cables is printed next to

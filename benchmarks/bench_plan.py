@@ -1,4 +1,4 @@
-"""Wrench-feasible path planning on the NIST Robocrane (``002_19d5d688a3999fb0.txt`` §5):
+"""Wrench-feasible path planning on the NIST Robocrane (Bohigas et al. 2013, §5):
 the queries q1 → q2 and q3 → q4 on the slice p = (0, 0, 2), σ = 35°, by A* over a growing
 atlas (:func:`taut.planning.plan_path`), against the paper's 20 s and 280 s (C, 2.66 GHz
 Core i7) and, measured in the same run, the uninformed baseline: the atlas grown

@@ -1,4 +1,4 @@
-"""Time per update of tracking forward kinematics (001_eb92e2f6589fc229.txt §4.1.2) on the
+"""Time per update of tracking forward kinematics (Berti 2015, §4.1.2) on the
 suspended 3-cable robot, from the stable Table 4.3 equilibrium along 200 steps of 2 mm,
 against the 4 ms the source reports as typical for its real-time DGP update (7 ms worst):
 the mean over a ``track_path`` run, then the median and the slowest of single ``track``

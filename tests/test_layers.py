@@ -1,4 +1,4 @@
-"""DESIGN.md §1: data flows one way; a lower layer never imports a higher one."""
+"""docs/architecture.md §1: data flows one way; a lower layer never imports a higher one."""
 
 import ast
 from pathlib import Path

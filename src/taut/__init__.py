@@ -1,6 +1,6 @@
 """taut: a toolkit for cable-driven parallel robots.
 
-Layers (``DESIGN.md`` §1): ``model`` → ``kinematics`` → ``statics`` → ``workspace``
+Layers (``docs/architecture.md`` §1): ``model`` → ``kinematics`` → ``statics`` → ``workspace``
 → ``viz`` / ``cli``.  The names most users need are re-exported here.
 """
 

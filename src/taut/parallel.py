@@ -1,4 +1,4 @@
-"""One executor interface for coarse-grained parallelism (``DESIGN.md`` §5).
+"""One executor interface for coarse-grained parallelism (``docs/architecture.md`` §5).
 
 :func:`get_executor` returns an object with ``map(fn, items, *, callback=None) -> list``:
 

@@ -1,4 +1,4 @@
-"""``taut plan``: the Robocrane query q1 → q2 (002_19d5d688a3999fb0.txt §5) and bad input."""
+"""``taut plan``: the Robocrane query q1 → q2 (Bohigas et al. 2013, §5) and bad input."""
 
 import json
 

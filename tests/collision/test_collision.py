@@ -1,4 +1,4 @@
-"""Self-collision (004_… §3.4) and singularities (§2.3.1) of the adjustable platform —
+"""Self-collision (Lieskovský 2020, §3.4) and singularities (§2.3.1) of the adjustable platform —
 simulations a–d of §4.2 — and of every built-in robot."""
 
 import numpy as np

@@ -1,4 +1,4 @@
-"""Shared by the table reproductions of 001_eb92e2f6589fc229.txt."""
+"""Shared by the table reproductions of Berti (2015)."""
 
 from itertools import combinations
 

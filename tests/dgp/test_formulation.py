@@ -1,4 +1,4 @@
-"""Constants of the DGP equations (001_eb92e2f6589fc229.txt §2.3) are the exact ones of the
+"""Constants of the DGP equations (Berti 2015, §2.3) are the exact ones of the
 robot's data, enclosed outwards: the interval system holds the true system."""
 
 from fractions import Fraction

@@ -1,4 +1,4 @@
-"""The inverse geometrico-static problem (001_eb92e2f6589fc229.txt §4.1.2): round trips with
+"""The inverse geometrico-static problem (Berti 2015, §4.1.2): round trips with
 the direct problem on Tables 4.3, 4.4 and 4.6, equilibrium checked by independent code
 (structure matrix and external wrench of taut.kinematics / taut.statics), invariance under
 the orientation convention, and bad input."""

@@ -1,6 +1,6 @@
 """Cutting a sub-problem's domain into pieces for parallel jobs (taut.dgp.solve): the
 pieces lie in the domain, do not overlap, and every equilibrium of Table 4.3 of
-001_eb92e2f6589fc229.txt lies in one of them."""
+Berti (2015) lies in one of them."""
 
 import numpy as np
 import pytest

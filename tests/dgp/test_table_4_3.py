@@ -1,4 +1,4 @@
-"""Table 4.3 of 001_eb92e2f6589fc229.txt: the suspended 3-cable robot has 6 equilibria, all
+"""Table 4.3 of Berti (2015): the suspended 3-cable robot has 6 equilibria, all
 with 3 taut cables, only Conf. 1 stable; no 1- or 2-cable equilibria."""
 
 import json

@@ -1,4 +1,4 @@
-"""Table 4.4 of 001_eb92e2f6589fc229.txt (CoGiRo, 8 cables, platform anchors not coplanar):
+"""Table 4.4 of Berti (2015) (CoGiRo, 8 cables, platform anchors not coplanar):
 the 28 sub-problems with 6 taut cables hold exactly Conf. 1–6, all stable; the 56 with 5,
 Conf. 7–22 (7–8 stable); the 70 with 4, Conf. 23–37; the 56 with 3, Conf. 38–41; the 28
 with 2, Conf. 42–46 (all unstable).  The printed angles are ill-conditioned in the 3-digit

@@ -1,4 +1,4 @@
-"""Table 4.5 of 001_eb92e2f6589fc229.txt (MARIONET-VR, 6 cables, platform anchors not
+"""Table 4.5 of Berti (2015) (MARIONET-VR, 6 cables, platform anchors not
 coplanar): the sub-problems with 6, 4, 3 and 2 taut cables hold exactly Conf. 1–3 (stable),
 5–11, 12–15 and 16–17 (unstable); the six with 5 taut cables hold no admissible equilibrium
 — the printed Conf. 4 stretches its slack cable (last test). The OCR lost z of Conf. 1–2 and

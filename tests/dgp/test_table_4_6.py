@@ -1,4 +1,4 @@
-"""Table 4.6 of 001_eb92e2f6589fc229.txt (teaching prototype, 6 cables, coplanar platform
+"""Table 4.6 of Berti (2015) (teaching prototype, 6 cables, coplanar platform
 anchors): the sub-problem with all 6 cables taut has exactly Conf. 1 and 2, both stable; the
 six with 5 taut cables, exactly Conf. 3–13 (3–5 stable); the fifteen with 4, Conf. 14–25 and
 two more; the twenty with 3, Conf. 26–29 and 32–34. The printed data have 3 digits and the

@@ -1,4 +1,4 @@
-"""Tracking forward kinematics (001_eb92e2f6589fc229.txt §4.1.2) from the stable Table 4.3
+"""Tracking forward kinematics (Berti 2015, §4.1.2) from the stable Table 4.3
 equilibrium of the suspended 3-cable robot: small length steps along a path and back."""
 
 import numpy as np

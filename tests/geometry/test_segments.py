@@ -1,4 +1,4 @@
-"""Segment–segment distance (004_… §3.5) against exact and brute-force references, in the
+"""Segment–segment distance (Lieskovský 2020, §3.5) against exact and brute-force references, in the
 parallel, collinear, skew and degenerate (zero-length) configurations."""
 
 import numpy as np

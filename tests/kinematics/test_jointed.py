@@ -1,5 +1,5 @@
 """Actuator positions, the 9×7 Jacobian (checked against finite differences) and the
-structure matrix with joint force of the adjustable platform (004_… §3.2–3.3)."""
+structure matrix with joint force of the adjustable platform (Lieskovský 2020, §3.2–3.3)."""
 
 import numpy as np
 import pytest

@@ -1,7 +1,7 @@
 """The built-in examples: they load, survive a save/load round trip, and their reference data
 reproduce the numbers printed in the source documents.
 
-Tables 4.3-4.6 of ``001_eb92e2f6589fc229.txt`` give, for one set of cable lengths rho, every
+Tables 4.3-4.6 of Berti (2015) give, for one set of cable lengths rho, every
 equilibrium pose with its cable tensions.  At a printed pose the taut cables (tension > 0)
 must have length rho_i, the slack ones (tension 0) a straight-line distance <= rho_i, and the
 printed tensions must balance the load Q = 1.  The poses are printed to 3 decimals, so a

@@ -1,4 +1,4 @@
-"""The wrench-feasible manifold of Eqs. (1)–(8) of 002_19d5d688a3999fb0.txt and the
+"""The wrench-feasible manifold of Eqs. (1)–(8) of Bohigas et al. (2013) and the
 Robocrane query q1 → q2, verified independently by taut.statics.feasibility."""
 
 import numpy as np

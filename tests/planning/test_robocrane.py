@@ -1,4 +1,4 @@
-"""The Robocrane of 002_19d5d688a3999fb0.txt §5: the geometry reading, the bounded angle
+"""The Robocrane of Bohigas et al. (2013), §5: the geometry reading, the bounded angle
 window that lets an atlas of a slice complete (a no-path proof), and the queries q3 → q4
 (slice p = (0, 0, 2), σ = 35°) and q5 → q6 (slice x = y = 0, σ = 35°), each checked by the
 independent feasibility test of taut.statics."""

@@ -1,4 +1,4 @@
-"""The planning figures of taut.viz.plan (Figs. 5–6 of 002_19d5d688a3999fb0.txt) and the
+"""The planning figures of taut.viz.plan (Figs. 5–6 of Bohigas et al. 2013) and the
 demo section: what is drawn."""
 
 import time

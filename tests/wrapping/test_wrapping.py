@@ -1,4 +1,4 @@
-"""Cable state, CST, state update and VSCR IK (§4.1–4.3 of 000_3d5147f1d4639546.txt)."""
+"""Cable state, CST, state update and VSCR IK (§4.1–4.3 of Rushton 2022)."""
 
 import numpy as np
 import pytest

@@ -1,7 +1,13 @@
-"""Structure atlas of planar variable-structure CDPRs (Ch. 5 of ``000_3d5147f1d4639546.txt``):
+"""Structure atlas of planar variable-structure CDPRs (Ch. 5 of Rushton 2022):
 cable-reachable areas (§5.1.2), charts (§5.1.1), the atlas (§5.1.3, Alg. 5.1), its workspace
 (§5.3.1, Alg. 5.2) and inverse kinematics (§5.3.2, Algs. 5.3–5.4); for rigid platforms the
-platform-reachable area (§5.2.1) and one atlas page per orientation (§5.2.2)."""
+platform-reachable area (§5.2.1) and one atlas page per orientation (§5.2.2).
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Ch. 5 (§5.1–5.3, Algs. 5.1–5.4). (docs/references.bib: rushton2022)
+"""
 
 from taut.atlas.atlas import Edge, StructureAtlas, build_atlas
 from taut.atlas.chart import Chart, chart_lengths, structure_reachable_area

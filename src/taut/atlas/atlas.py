@@ -1,4 +1,4 @@
-"""Structure atlas of a point-mass planar VSCR (§5.1.3, Alg. 5.1 of ``000_3d5147f1d4639546.txt``).
+"""Structure atlas of a point-mass planar VSCR (§5.1.3, Alg. 5.1 of Rushton 2022).
 
 From an initial point ``p_0`` (and the cables' initial states — by default the shortest
 taut routing, as in :func:`taut.wrapping.ik.wrapped_inverse_kinematics`) Alg. 5.1 builds
@@ -28,6 +28,12 @@ and start point, grown by half its size.
 ``−R(θ) r_i``, and the structure-reachable area is cut down to the platform-reachable
 area (Eq. 5.15, :mod:`taut.atlas.platform`).  A point-mass platform is the page ``θ = 0``
 with zero offsets.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §5.1.3, Alg. 5.1; §5.1.2; §4.2.2, Alg. 4.4.
+   (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -172,7 +178,13 @@ def build_atlas(
     """The structure atlas of a planar VSCR from the start point ``start`` (Alg. 5.1) —
     for a rigid platform the page of orientation ``theta`` (§5.2.2), ``start`` being the
     platform reference point.  ``initial`` maps a 0-based cable index to its starting
-    state (see :func:`taut.wrapping.ik.wrapped_inverse_kinematics`)."""
+    state (see :func:`taut.wrapping.ik.wrapped_inverse_kinematics`).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.1.3, Alg. 5.1; §5.2.2. (docs/references.bib: rushton2022)
+    """
     theta = float(theta)
     if not np.isfinite(theta):
         raise PoseError(f"{robot.name}: the orientation must be finite, got {theta}")

@@ -1,4 +1,4 @@
-"""Charts of a point-mass VSCR: structure, domain and length map (§5.1.1, Eqs. 5.1–5.6 of ``000_3d5147f1d4639546.txt``).
+"""Charts of a point-mass VSCR: structure, domain and length map (§5.1.1, Eqs. 5.1–5.6 of Rushton 2022).
 
 A *structure* ``S = {s_1, …, s_n}`` (Eq. 5.1) is one cable state per cable, here the
 nodes of the cables' state trees (:class:`taut.wrapping.tree.CableStateTree`).  Its
@@ -14,6 +14,11 @@ nodes of the cables' state trees (:class:`taut.wrapping.tree.CableStateTree`).  
   :mod:`taut.atlas.reachable` — a shapely polygon.
 
 The cable length at ``p ∈ Q`` is Eq. (4.9): ``l_i = l_{0,i} + ν_i(p) + ‖a_i(p) − p‖``.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §5.1.1, Eqs. 5.1–5.6; Eq. 4.9. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -52,7 +57,13 @@ def chart_lengths(
     """``(l (N, n), l_0 + ν (N, n), A (N, n, 2))`` of structure ``nodes`` at reference
     points ``points`` ``(N, 2)``: Eq. (4.9) with the chart elements of Eqs. (5.3)–(5.5),
     vectorised.  Cable ``i`` is attached at ``points + offsets[i]`` (the anchor offsets
-    ``R(θ) r_i`` of a rigid platform at a fixed orientation; default 0)."""
+    ``R(θ) r_i`` of a rigid platform at a fixed orientation; default 0).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Eqs. 4.9 and 5.3–5.5. (docs/references.bib: rushton2022)
+    """
     P0 = np.atleast_2d(np.asarray(points, float))
     n = len(trees)
     off = np.zeros((n, 2)) if offsets is None else np.asarray(offsets, float).reshape(n, 2)
@@ -81,7 +92,13 @@ def chart_lengths(
 def structure_reachable_area(cras: list, offsets=None, pra=None):
     """``SRA^S = ∩_i CRA^{s_i}`` (Eq. 5.6) of the cables' reachable areas; for a rigid
     platform at orientation ``θ``, ``SRA^{S,θ} = (∩_i (CRA^{s_i} − R(θ) r_i)) ∩ PRA^{S,θ}``
-    (Eq. 5.15) with ``offsets[i] = R(θ) r_i`` and ``pra`` the platform-reachable area."""
+    (Eq. 5.15) with ``offsets[i] = R(θ) r_i`` and ``pra`` the platform-reachable area.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Eq. 5.6. (docs/references.bib: rushton2022)
+    """
     if offsets is not None:
         cras = [
             shapely.affinity.translate(a, -float(o[0]), -float(o[1])) if (o[0] or o[1]) else a

@@ -1,4 +1,4 @@
-"""Structure-atlas inverse kinematics of a planar VSCR (§5.3.2, Algs. 5.3 and 5.4 of ``000_3d5147f1d4639546.txt``).
+"""Structure-atlas inverse kinematics of a planar VSCR (§5.3.2, Algs. 5.3 and 5.4 of Rushton 2022).
 
 *Direct* (Alg. 5.3): the active chart of a point is the first chart whose domain ``Q``
 contains it (a point-in-polygon test, here shapely's prepared ``contains_xy`` over all
@@ -13,6 +13,11 @@ Several charts may contain a point (Fig. 5.1); Alg. 5.3 takes the first, and so 
 traversable edge of the active chart's domain switches to the adjacent chart; leaving
 the domain anywhere else is an invalid move; otherwise the chart stays.  Steps must be
 small against the charts (one switch per step, the earliest crossing along the move).
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §5.3.2, Algs. 5.3 and 5.4; Eq. 4.9. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -75,7 +80,13 @@ def _evaluate(atlas: StructureAtlas, P: np.ndarray, ch: np.ndarray) -> AtlasIK:
 
 
 def direct_ik(atlas: StructureAtlas, points, charts=None) -> AtlasIK:
-    """Alg. 5.3 at every point of ``points`` ``(N, 2)``."""
+    """Alg. 5.3 at every point of ``points`` ``(N, 2)``.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.3.2, Alg. 5.3. (docs/references.bib: rushton2022)
+    """
     P = np.atleast_2d(np.asarray(points, float))
     return _evaluate(atlas, P, locate(atlas, P, charts))
 
@@ -119,7 +130,13 @@ def iterative_step(atlas: StructureAtlas, chart: int, p1, p2) -> int:
 
 
 def iterative_ik(atlas: StructureAtlas, points, chart: int = 0) -> AtlasIK:
-    """Alg. 5.4 along the polyline ``points`` ``(T, 2)`` starting in chart ``chart``."""
+    """Alg. 5.4 along the polyline ``points`` ``(T, 2)`` starting in chart ``chart``.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.3.2, Alg. 5.4. (docs/references.bib: rushton2022)
+    """
     P = np.atleast_2d(np.asarray(points, float))
     ch = np.empty(len(P), dtype=np.int64)
     ch[0] = chart

@@ -1,4 +1,4 @@
-"""Platform-reachable area of a rigid planar VSCR at a fixed orientation (§5.2.1, Eqs. 5.8–5.14 of ``000_3d5147f1d4639546.txt``).
+"""Platform-reachable area of a rigid planar VSCR at a fixed orientation (§5.2.1, Eqs. 5.8–5.14 of Rushton 2022).
 
 ``M^θ`` is the platform outline (``platform.shape.polygon``, body frame) rotated by
 ``θ`` about the reference point placed at the origin.  The platform at reference point
@@ -24,6 +24,11 @@ and ``PRA^{S,θ} = I ∖ (H_obj ∪ H_border ∪ H_static ∪ H_active)`` (Eq. 5
 sums of convex pieces are the convex hulls of the pairwise vertex sums; non-convex
 polygons are split into triangles (constrained Delaunay) first, and a circle of radius
 ``ρ`` is ``−M^θ`` translated to its centre and buffered by ``ρ``.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §5.2.1, Eqs. 5.8–5.14. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -139,7 +144,13 @@ def platform_reachable_area(
 ):
     """``PRA^{S,θ}`` (Eq. 5.14) of structure ``nodes`` (one CST node per cable), or
     ``None`` when the platform has no outline (only its anchors, which the cable-reachable
-    areas already keep in the installation space)."""
+    areas already keep in the installation space).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.2.1, Eq. 5.14. (docs/references.bib: rushton2022)
+    """
     M = platform_outline(robot, theta)
     if M is None:
         return None

@@ -1,4 +1,4 @@
-"""Cable-reachable area (CRA) of one collidable cable in a given state (§5.1.2 of ``000_3d5147f1d4639546.txt``).
+"""Cable-reachable area (CRA) of one collidable cable in a given state (§5.1.2 of Rushton 2022).
 
 The CRA of a cable in state ``s`` is the set of platform-end positions ``b`` reachable by
 its active (last, straight) segment without changing the state or making a forbidden
@@ -27,6 +27,11 @@ only approximation (chord error ``≈ r·arc_step²/8``).
 The result is a shapely polygon (possibly a MultiPolygon once clipped by the
 installation space).  The installation space bounds the end point; regions the cable
 must not cross are the robot's disallowed regions, as in the CST (§4.2.1).
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §5.1.2. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -184,7 +189,13 @@ def _bbox(tree: CableStateTree, space: Polygon | None) -> np.ndarray:
 def cable_reachable_area(tree: CableStateTree, node: int, installation_space=None, arc_step: float = ARC_STEP):
     """The CRA of the cable whose state is CST node ``node`` (§5.1.2), as a shapely
     (Multi)Polygon clipped to ``installation_space`` (vertices ``(V, 2)`` or a shapely
-    polygon; without one the region is bounded by a box around the objects)."""
+    polygon; without one the region is bounded by a box around the objects).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.1.2. (docs/references.bib: rushton2022)
+    """
     space = None
     if installation_space is not None:
         space = (

@@ -1,4 +1,4 @@
-"""Workspace of a planar VSCR from its structure atlas, and pruning (§5.3.1, Alg. 5.2 of ``000_3d5147f1d4639546.txt``).
+"""Workspace of a planar VSCR from its structure atlas, and pruning (§5.3.1, Alg. 5.2 of Rushton 2022).
 
 Within a chart the VSCR is a standard CDPR whose exit points are ``A(p)`` (Eq. 5.5), so
 any workspace condition of :mod:`taut.workspace.conditions` that tests structure
@@ -10,6 +10,11 @@ that overlapping charts share points).  Alg. 5.2 visits the charts from the init
 a chart with an empty sub-workspace is pruned; otherwise its adjacent charts are visited
 when the shared edge holds a feasible point (the edge is sampled every ``step``; on it
 both structures have the same exit points).  Charts never visited are pruned too.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §5.3.1, Alg. 5.2. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -67,7 +72,13 @@ def _feasible(atlas: StructureAtlas, cond: WrenchCondition, chart: int, P: np.nd
 
 def atlas_workspace(atlas: StructureAtlas, condition="wrench-feasible", step: float | None = None) -> AtlasWorkspace:
     """Alg. 5.2: the workspace under ``condition`` (a name or a
-    :class:`~taut.workspace.conditions.WrenchCondition`) and the pruned chart list."""
+    :class:`~taut.workspace.conditions.WrenchCondition`) and the pruned chart list.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.3.1, Alg. 5.2. (docs/references.bib: rushton2022)
+    """
     cond = make_condition(condition)
     if not isinstance(cond, WrenchCondition):
         raise TautError(

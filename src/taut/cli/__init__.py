@@ -1,1 +1,1 @@
-"""The ``taut`` command line (``DESIGN.md`` §4): thin wrappers over the library."""
+"""The ``taut`` command line (``docs/architecture.md`` §4): thin wrappers over the library."""

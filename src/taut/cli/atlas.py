@@ -1,6 +1,12 @@
 """``taut atlas ROBOT``: the structure atlas of a planar VSCR and its workspace — for a rigid
 platform one page of constant orientation (Ch. 5, Algs. 5.1–5.2 and §5.2 of
-``000_3d5147f1d4639546.txt``; :mod:`taut.atlas`)."""
+Rushton (2022); :mod:`taut.atlas`).
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Ch. 5, Algs. 5.1–5.2, §5.2. (docs/references.bib: rushton2022)
+"""
 
 from __future__ import annotations
 

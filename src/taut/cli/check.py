@@ -1,5 +1,12 @@
 """``taut check ROBOT --trajectory FILE|NAME``: self-collision and singularities along a
-trajectory (``004_f30792d78b61e7c2.txt`` §2.3, §3.4, §4.2; :mod:`taut.collision`)."""
+trajectory (Lieskovský 2020, §2.3, §3.4, §4.2; :mod:`taut.collision`).
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §2.3, §3.4, §4.2.
+   (docs/references.bib: lieskovsky2020)
+"""
 
 from __future__ import annotations
 

@@ -1,6 +1,13 @@
 """``taut igp ROBOT --taut 1,2,3 --fix x=0.3,y=0.4,z=0.1 [--box ...] [--json]``: the inverse
 geometrico-static problem (:func:`taut.dgp.solve_igp`).  No solution is an empty list, not
-an error."""
+an error.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
+"""
 
 from __future__ import annotations
 
@@ -10,7 +17,7 @@ HELP = """With the cables of --taut taut (m of them, 2 <= m <= 6) only m pose co
 can be assigned: give them with --fix (names x, y, z and the robot's angle names, e.g.
 a, b, c or phix, phiy, phiz for xyz conventions, phi, theta, sigma for tilt-torsion;
 angles in rad, or 30deg, pi/8).  Every equilibrium with tensions >= 0 is found and
-certified (001_eb92e2f6589fc229.txt §4.1.2; interval branch-and-prune): the free
+certified (Berti 2015, §4.1.2; interval branch-and-prune): the free
 coordinates, the tensions and the cable lengths to command.  A slack cable's length is
 its span (pay out at least that much); cables outside their length bounds are listed.
 JSON: {"robot", "taut", "assigned", "solutions": [{"taut", "position", "orientation",

@@ -1,4 +1,4 @@
-"""``taut COMMAND ROBOT [options]`` (``DESIGN.md`` §4).
+"""``taut COMMAND ROBOT [options]`` (``docs/architecture.md`` §4).
 
 Exit status: 0 success, 2 bad input (any :class:`taut.TautError`, or bad options),
 1 internal error.  ``--json`` prints the machine-readable result on stdout; the

@@ -1,5 +1,12 @@
 """``taut plan ROBOT --start POSE --goal POSE``: a wrench-feasible path between two
-configurations of a cable-driven hexapod (``002_19d5d688a3999fb0.txt``; :mod:`taut.planning`)."""
+configurations of a cable-driven hexapod (Bohigas et al. 2013; :mod:`taut.planning`).
+
+References
+----------
+.. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §4–5. (docs/references.bib: bohigas2013)
+"""
 
 from __future__ import annotations
 
@@ -9,7 +16,7 @@ from taut.errors import TautError
 
 HELP = """Plan a path along which the cables balance every wrench of the ellipsoid
 (w - w0)^T E (w - w0) <= 1 with tensions and lengths strictly inside their bounds
-(higher-dimensional continuation + A*, 002_19d5d688a3999fb0.txt §4), or report that the
+(higher-dimensional continuation + A*, Bohigas et al. 2013, §4), or report that the
 connected component of the start does not reach the goal at the chart radius.
 POSE is x,y,z,phi,theta,sigma (tilt-and-torsion; 35deg, pi/8 accepted) or the name of a
 reference pose of the robot (e.g. q1).  The path is checked independently at --subdivide

@@ -1,5 +1,11 @@
 """``taut trajectory ROBOT``: VSCR inverse kinematics along a trajectory (§4.3, §6.2 of
-``000_3d5147f1d4639546.txt``): cable lengths, CST transitions, tensions per sample."""
+Rushton 2022): cable lengths, CST transitions, tensions per sample.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §4.3, §6.2. (docs/references.bib: rushton2022)
+"""
 
 from __future__ import annotations
 

@@ -1,7 +1,14 @@
-"""Self-collision and singularity analysis for every robot of taut (``004_f30792d78b61e7c2.txt``
+"""Self-collision and singularity analysis for every robot of taut (Lieskovský 2020,
 §2.3): capsule models (:mod:`.capsules`), proximity matrices and colliding pairs
 (:mod:`.proximity`), Jacobian and force-closure singularities (:mod:`.singularity`), and the
-check of a trajectory (:mod:`.trajectory`)."""
+check of a trajectory (:mod:`.trajectory`).
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §2.3, §3.4–3.5.
+   (docs/references.bib: lieskovsky2020)
+"""
 
 from taut.collision.capsules import CapsuleModel, capsule_model, capsule_segments
 from taut.collision.proximity import ProximityResult, proximity

@@ -1,5 +1,5 @@
 """Capsule collision model of a robot (§2.3.2, §3.1.2 and §3.4 of
-``004_f30792d78b61e7c2.txt``).
+Lieskovský 2020).
 
 Every collidable element is a *capsule*: a segment swept by a sphere of radius ``ρ``
 (Fig. 2.1).  The model of a robot is
@@ -24,6 +24,12 @@ cables leaving one exit point) always touch there; such a pair is compared with 
 end cut back by ``c = (ρ_i + ρ_j) / sin(SHARED_END_ANGLE)`` (at least ``SHARED_END_MIN`` of
 the shorter cable): the two interfere iff their capsules meet farther than ``c`` from the
 common point — at an angle of about one degree or less, or by crossing elsewhere.
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.2, §3.1.2, §3.4, Eqs.
+   3.4.1–3.4.4, Figs. 2.1 and 3.3. (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations
@@ -78,7 +84,14 @@ def _point_on_segment(p, a, b) -> bool:
 
 
 def capsule_model(robot: Robot) -> CapsuleModel:
-    """The capsule model of ``robot``: capsules, radii and the pairs to check."""
+    """The capsule model of ``robot``: capsules, radii and the pairs to check.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §3.1.2, §3.4.
+       (docs/references.bib: lieskovsky2020)
+    """
     n = robot.n_cables
     caps = robot.body_capsules
     pad = np.zeros(3 - robot.dimension)

@@ -1,5 +1,5 @@
 """Self-collision by capsule proximity: the matrices ``D`` and ``E`` of §3.4 of
-``004_f30792d78b61e7c2.txt`` and the colliding pairs at each pose.
+Lieskovský (2020) and the colliding pairs at each pose.
 
 For each pair of capsules ``(i, j)`` of :func:`taut.collision.capsules.capsule_model` the
 proximity ``δ_ij`` is the segment–segment distance of §3.5
@@ -10,6 +10,12 @@ first, then the body capsules); ``E`` holds the ``ε_ij`` in the same layout (th
 prints it transposed).  Pairs that are not checked are ``NaN`` in both (the source writes 0
 in ``D`` and 1 in ``E``).  The distances of all poses and pairs are computed in one Numba
 kernel.
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.2, §3.4 (Eq. 3.4.1), §3.5.
+   (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations
@@ -103,7 +109,14 @@ class ProximityResult:
 
 def proximity(robot: Robot, poses, model: CapsuleModel | None = None) -> ProximityResult:
     """Proximities and clearances of all checked capsule pairs at each pose (``(N, pose_size)``
-    or one pose).  Raises :class:`~taut.errors.PoseError` for invalid poses."""
+    or one pose).  Raises :class:`~taut.errors.PoseError` for invalid poses.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §3.4, Eq. 3.4.1.
+       (docs/references.bib: lieskovsky2020)
+    """
     arr, _ = as_poses(robot, poses)
     model = capsule_model(robot) if model is None else model
     A, B = capsule_segments(robot, arr, model)

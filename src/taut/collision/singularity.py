@@ -1,4 +1,4 @@
-"""Singular configurations (§2.3.1 of ``004_f30792d78b61e7c2.txt``, after Diao & Ma).
+"""Singular configurations (Lieskovský 2020, §2.3.1, after Diao & Ma 2007, 2008).
 
 * **Jacobian singularity**: the inverse-kinematics Jacobian ``J`` (Eq. 2.3.1; Eq. 3.2.12 for
   the adjustable platform, :func:`taut.kinematics.jointed.actuator_jacobian`) loses rank.
@@ -21,6 +21,17 @@
   Both count configurations on the boundary (a column exactly on a facet hyperplane, as at
   step 126 of simulation b, where four cables lie in one plane) as singular; the margins
   keep the verdicts stable under rounding.
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.1, Eqs. 2.3.1–2.3.3, Eqs.
+   3.2.12 and 3.3.10. (docs/references.bib: lieskovsky2020)
+.. [2] X. Diao, O. Ma, "A method of verifying force-closure condition for general cable
+   manipulators with seven cables", Mechanism and Machine Theory 42, 2007.
+   (docs/references.bib: diao2007)
+.. [3] X. Diao, O. Ma, Q. Lu, "Singularity analysis of planar cable-driven parallel robots",
+   2008. (docs/references.bib: diao2008)
 """
 
 from __future__ import annotations
@@ -41,7 +52,14 @@ RANK_TOL = 1e-10
 
 
 def jacobian_singular(J, tol: float = JACOBIAN_TOL) -> tuple[np.ndarray, np.ndarray]:
-    """Jacobian singularity of ``J (N, rows, cols)``: ``(singular (N,), σ_min/σ_max (N,))``."""
+    """Jacobian singularity of ``J (N, rows, cols)``: ``(singular (N,), σ_min/σ_max (N,))``.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.1, Eq. 2.3.1.
+       (docs/references.bib: lieskovsky2020)
+    """
     J = np.asarray(J, dtype=float)
     if J.ndim == 2:
         J = J[None]
@@ -107,7 +125,17 @@ def positive_span_lp(W) -> np.ndarray:
 def force_closure_singular(W, method: str = "fast") -> np.ndarray:
     """Force-closure singularity of the structure matrices ``W (N, m, n)``: ``(N,)`` bool,
     true where the columns do not positively span ``R^m``.  ``method``: ``"fast"``
-    (vectorised, for grids) or ``"lp"`` (reference)."""
+    (vectorised, for grids) or ``"lp"`` (reference).
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.1, Eqs. 2.3.2–2.3.3.
+       (docs/references.bib: lieskovsky2020)
+    .. [2] X. Diao, O. Ma, "A method of verifying force-closure condition for general cable
+       manipulators with seven cables", Mechanism and Machine Theory 42, 2007.
+       (docs/references.bib: diao2007)
+    """
     if method == "fast":
         return ~wrench_closure(W)
     if method == "lp":

@@ -1,5 +1,5 @@
 """Checking a trajectory for self-collision and singularities (§4.2 of
-``004_f30792d78b61e7c2.txt``: simulations a–d of the adjustable platform).
+Lieskovský (2020): simulations a–d of the adjustable platform).
 
 A trajectory is a sequence of poses ``X_1 … X_N`` (1-based steps, as in §4.2).  A named
 trajectory of a robot (``trajectories:`` in its file) is sampled by joining its waypoints
@@ -19,6 +19,12 @@ Trajectory files (:func:`load_trajectory`):
   of column names (e.g. ``x,y,z,a,b,c,s23``); ``#`` starts a comment;
 * YAML or JSON — a list of poses, or a mapping with ``poses: [...]``, or a mapping with
   ``waypoints: [...]`` and optional ``steps: [...]`` (sampled as above).
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §4.2 (simulations a–d, Eqs.
+   4.2.1–4.2.6), §3.4, §2.3.1. (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations
@@ -209,7 +215,14 @@ class CheckResult:
 def check_poses(
     robot: Robot, poses, *, jacobian_tol: float = JACOBIAN_TOL, method: str = "fast", model: CapsuleModel | None = None
 ) -> CheckResult:
-    """Self-collision and singularity check at each of the poses ``(N, pose_size)``."""
+    """Self-collision and singularity check at each of the poses ``(N, pose_size)``.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §4.2.
+       (docs/references.bib: lieskovsky2020)
+    """
     arr, _ = as_poses(robot, poses)
     model = capsule_model(robot) if model is None else model
     prox = proximity(robot, arr, model)

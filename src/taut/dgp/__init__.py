@@ -1,7 +1,14 @@
-"""The geometrico-static problems of under-constrained robots (``001_eb92e2f6589fc229.txt``):
+"""The geometrico-static problems of under-constrained robots (Berti 2015):
 the direct one (Ch. 2–3, all equilibria for given cable lengths) and the inverse one
 (§4.1.2, the unassigned pose coordinates, tensions and lengths for chosen taut cables), and
-tracking forward kinematics (§4.1.2, the equilibrium that follows a known one)."""
+tracking forward kinematics (§4.1.2, the equilibrium that follows a known one).
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, Chs. 2–3 and §4.1.2. (docs/references.bib: berti2015)
+"""
 
 from taut.dgp.inverse import IGPResult, IGPSolution, solve_igp
 from taut.dgp.solve import DGPResult, DGPSolution, solve_dgp

@@ -1,4 +1,4 @@
-"""The geometrico-static equations of one taut-cable subset (``001_eb92e2f6589fc229.txt``
+"""The geometrico-static equations of one taut-cable subset (Berti (2015)
 §2.3.1–2.3.6, initial domain §3.1.1, filters §3.1.3).
 
 Parameterisation (§2.3.5–2.3.6, "reference points"): the unknowns are the fixed-frame
@@ -47,6 +47,13 @@ Six taut cables (§3.1.3, last paragraph): the tensions are not unknowns — the
 equations of rigidity, lengths and normal fix the pose, the statics is square, and its
 interval solution only discards boxes where a tension must be negative; a solution's
 tensions are then solved for.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §2.3.1–2.3.6 (Eqs. 2.21–2.26), §3.1.1, §3.1.3.
+   (docs/references.bib: berti2015)
 """
 
 from __future__ import annotations

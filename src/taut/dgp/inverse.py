@@ -1,5 +1,5 @@
 """The inverse geometrico-static problem (IGP) of an under-constrained robot
-(``001_eb92e2f6589fc229.txt`` §4.1.2, "Inverse kinematics"): with ``m`` chosen taut cables
+(Berti 2015, §4.1.2, "Inverse kinematics"): with ``m`` chosen taut cables
 (``2 ≤ m ≤ 6``) only ``m`` of the six pose coordinates can be controlled; assign them, and
 find the other ``6 − m`` coordinates and the ``m`` tensions that put the platform in
 static equilibrium (Eq. 2.3) with non-negative tensions.  The cable lengths to command are
@@ -46,6 +46,13 @@ from exit point to anchor — the least length they must be paid out to — and 
 span exceeds its length bound, like a taut cable whose length is out of its bounds, is
 listed in ``length_violations``: reported, not dropped.  Stability is the reduced-Hessian
 test of :mod:`taut.dgp.stability` at the computed lengths.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §4.1.2, Eqs. 2.2–2.3, §3.1.3 (Eqs. 3.9–3.12).
+   (docs/references.bib: berti2015)
 """
 
 from __future__ import annotations
@@ -374,6 +381,12 @@ def solve_igp(
     boxes, a continuum of solutions (an assignment that does not fix the pose, e.g. ``x, y,
     φ`` of the Robocrane with cables 1, 3, 5 at ``x = y = 0``) would take them all, at about
     1 ms per box; what is left when it runs out is ``undecided`` and ``exhausted`` is set.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
     """
     _check_robot(robot)
     idx = _check_taut(robot, taut)

@@ -1,4 +1,4 @@
-"""The DGP with one taut cable (``001_eb92e2f6589fc229.txt`` §2.3.3, Algorithm 2).
+"""The DGP with one taut cable (Berti 2015, §2.3.3, Algorithm 2).
 
 With cable ``i`` alone in tension the cable is parallel to the load: ``b_i = a_i + ρ_i f̂``,
 ``τ_i = ‖f‖``, and ``G`` lies on the same vertical, below ``B_i`` (``G_a``, stable) or above
@@ -8,6 +8,12 @@ distance of every slack anchor is written exactly as
 ``D_k(ϑ) = A_k + B_k cos ϑ + C_k sin ϑ`` (Eq. 2.12) and the angles where *all* slack
 cables fit (``D_k ≤ ρ_k²``) are intersected; each admissible arc is one solution family,
 reported at its middle angle.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §2.3.3, Algorithm 2, Eq. 2.12. (docs/references.bib: berti2015)
 """
 
 from __future__ import annotations
@@ -71,7 +77,14 @@ def _arcs(conditions) -> list[tuple[float, float]]:
 
 def single_cable_equilibria(robot: Robot, lengths: np.ndarray, i: int) -> list[dict]:
     """Equilibria with cable ``i`` alone taut: dicts with ``R``, ``p``, ``tensions``,
-    ``stable`` and the admissible spin arc ``continuum = (ϑ_lo, ϑ_hi)``."""
+    ``stable`` and the admissible spin arc ``continuum = (ϑ_lo, ϑ_hi)``.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §2.3.3, Algorithm 2. (docs/references.bib: berti2015)
+    """
     f, mext, gp = load(robot)
     F = np.linalg.norm(f)
     if F == 0.0 or np.any(mext != 0.0):

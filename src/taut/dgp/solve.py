@@ -1,5 +1,5 @@
 """All equilibria of an under-constrained robot for given cable lengths — the direct
-geometrico-static problem (``001_eb92e2f6589fc229.txt`` Ch. 2–3).
+geometrico-static problem (Berti 2015, Ch. 2–3).
 
 :func:`solve_dgp` enumerates the taut subsets of ``m = 1 … min(n, 6, max_taut)`` cables
 (Eq. 2.1), solves each one — ``m = 1`` in closed form (:mod:`taut.dgp.single_cable`),
@@ -9,6 +9,12 @@ manifold of the rigidity and length equations, its ``geometry``) — through a
 :mod:`taut.parallel` executor, and classifies every solution by the reduced Hessian
 (:mod:`taut.dgp.stability`).  A solution with a zero tension is not reported by the larger
 subset (its tension enclosure straddles 0), it belongs to the smaller one.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, Chs. 2–3 (Eq. 2.1), §4.2. (docs/references.bib: berti2015)
 """
 
 from __future__ import annotations
@@ -220,7 +226,15 @@ def solve_dgp(
     ``split``: the domain of every sub-problem with at least 3 taut cables is cut into
     ``2**split`` pieces solved as separate jobs (default 0 on the serial executor, 4 on a
     parallel one, so that one hard sub-problem is shared by the workers); a solution
-    found by two neighbouring pieces is reported once (:func:`same_solution`)."""
+    found by two neighbouring pieces is reported once (:func:`same_solution`).
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, Chs. 2–3, §4.2 (Tables 4.3–4.6).
+       (docs/references.bib: berti2015)
+    """
     if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
         raise TautError("the DGP solver handles spatial rigid platforms without joints")
     if lengths is None:

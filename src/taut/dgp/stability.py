@@ -1,10 +1,18 @@
-"""Stability of an equilibrium by the reduced Hessian (``001_eb92e2f6589fc229.txt``
+"""Stability of an equilibrium by the reduced Hessian (Berti (2015)
 §3.2.2, Eqs. 3.41–3.43, after Carricato & Merlet 2013).
 
 ``H = Σ τ_i/ρ_i [[I, −(b̃_i − g̃)], [(b̃_i − g̃), ½((b̃_i − g̃)(g̃ − ã_i) + (g̃ − ã_i)(b̃_i − g̃))]]``
 (moments about ``G``), ``N`` spans the null space of ``Jᵀ`` (rows
 ``[(b_i − a_i)ᵀ, ((b_i − g) × (b_i − a_i))ᵀ]/ρ_i``: the motions that keep the taut lengths),
 and the equilibrium is stable when ``H_r = Nᵀ H N`` is positive definite.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §3.2.2, Eqs. 3.41–3.43. (docs/references.bib: berti2015)
+.. [2] M. Carricato, J.-P. Merlet, "Stability Analysis of Underconstrained Cable-Driven Parallel
+   Robots", IEEE Transactions on Robotics 29(1), 2013. (docs/references.bib: carricato2013)
 """
 
 from __future__ import annotations
@@ -16,7 +24,17 @@ from numba import njit
 @njit(cache=True)
 def reduced_hessian(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray, rho: np.ndarray) -> np.ndarray:
     """``H_r`` for the taut cables: exit points ``a``, anchors ``b`` (``(m, 3)``), load point
-    ``g``.  Compiled: the tracking update calls it once per step."""
+    ``g``.  Compiled: the tracking update calls it once per step.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §3.2.2, Eqs. 3.41–3.43. (docs/references.bib: berti2015)
+    .. [2] M. Carricato, J.-P. Merlet, "Stability Analysis of Underconstrained Cable-Driven
+       Parallel Robots", IEEE Transactions on Robotics 29(1), 2013.
+       (docs/references.bib: carricato2013)
+    """
     H = np.zeros((6, 6))
     Jt = np.zeros((tau.size, 6))
     for i in range(tau.size):
@@ -55,5 +73,12 @@ def _smallest_eigenvalue(a, b, g, tau, rho) -> float:
 
 def is_stable(a, b, g, tau, rho) -> bool:
     """Positive-definite reduced Hessian (sufficient condition of §3.2.2); a fully
-    constrained equilibrium (empty null space) is stable."""
+    constrained equilibrium (empty null space) is stable.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §3.2.2. (docs/references.bib: berti2015)
+    """
     return bool(_smallest_eigenvalue(*(np.ascontiguousarray(v, dtype=float) for v in (a, b, g, tau, rho))) > 0.0)

@@ -1,5 +1,5 @@
 """Tracking forward kinematics: the equilibrium that follows a known one when the cable
-lengths change a little (``001_eb92e2f6589fc229.txt`` §4.1.2, "Forward kinematics" of the
+lengths change a little (Berti 2015, §4.1.2, "Forward kinematics" of the
 real-time control routine and its "Remarks on the real-time procedure").
 
 One update from the equilibrium ``x₀`` (reference points and scaled tensions of its taut
@@ -30,6 +30,13 @@ few tens of microseconds per update, Python-side array code would cost more than
 arithmetic.  A single taut cable leaves the spin about the vertical free (a continuum,
 §2.3): its Jacobian is singular and tracking it raises
 :class:`~taut.errors.TrackingLostError`.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §4.1.2 (real-time forward kinematics), §3.2.
+   (docs/references.bib: berti2015)
 """
 
 from __future__ import annotations
@@ -323,7 +330,14 @@ def track(robot: Robot, previous_solution, lengths) -> DGPSolution:
     :class:`~taut.dgp.inverse.IGPSolution`) at the new cable ``lengths`` (see the module
     docstring); raises :class:`~taut.errors.TrackingLostError` when it
     cannot be certified.  ``certificate_width`` is the width of the Krawczyk enclosure;
-    ``uniqueness_radius`` is not computed (0)."""
+    ``uniqueness_radius`` is not computed (0).
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
+    """
     lengths = check_lengths(robot, lengths)
     s, width = _step(robot, _state(robot, previous_solution, lengths), lengths)
     return _solution(s, width)

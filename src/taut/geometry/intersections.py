@@ -1,10 +1,15 @@
 """Planar intersection tests: segment–segment, segment–circle, segment–polygon, circle–circle.
 
 Appendix A.1 (line segment–line segment intercept) and A.2 (line segment–circle
-intercept) of ``000_3d5147f1d4639546.txt``, vectorised over leading axes.  The tests are
+intercept) of Rushton (2022), vectorised over leading axes.  The tests are
 *strict* where the cable model needs it: a cable that only touches a circle tangentially
 (the contact points of every taut path, and the tie of Fig. 4.5) does not meet it; a
 tolerance ``tol`` [m] absorbs round-off.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Appendix A.1–A.2, Fig. 4.5. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -26,7 +31,13 @@ def segments_intersect(a1, b1, a2, b2, tol: float = 0.0, collinear: bool = True)
     (b1 − a1)) / ((b1 − a1) × (b2 − a2))`` they intercept iff ``0 ≤ s, u ≤ 1``; parallel
     segments intercept iff collinear and overlapping.  ``tol > 0`` shrinks both segments
     by ``tol`` at each end (a proper crossing, not an end point touching);
-    ``collinear=False`` does not count collinear overlaps (a segment running along another)."""
+    ``collinear=False`` does not count collinear overlaps (a segment running along another).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Appendix A.1. (docs/references.bib: rushton2022)
+    """
     a1, b1, a2, b2 = (np.asarray(v, float) for v in (a1, b1, a2, b2))
     r, q, w = b1 - a1, b2 - a2, a2 - a1
     den = _cross(r, q)
@@ -70,7 +81,13 @@ def segment_meets_circle(a, b, c, r, tol: float = TOL):
     """Whether segment ``ab`` enters the open disc ``(c, r)``: ``‖q − c‖ < r − tol``.
 
     A.2 states ``≤ r``; the strict form lets a cable touch an object tangentially (a
-    zero-radius object is therefore never met)."""
+    zero-radius object is therefore never met).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Appendix A.2. (docs/references.bib: rushton2022)
+    """
     return segment_circle_distance(a, b, c) < np.asarray(r, float) - tol
 
 

@@ -1,12 +1,24 @@
-"""Rotation matrices for the orientation conventions of ``DESIGN.md`` §2.
+"""Rotation matrices for the orientation conventions of ``docs/architecture.md`` §2.3.
 
 * ``xyz-fixed``: ``R = Rz(c) Ry(b) Rx(a)`` — rotations about the fixed x, y, z axes
-  (the convention of Tables 4.3–4.6 of ``001_eb92e2f6589fc229.txt``).
-* ``xyz-moving``: ``R = Rx(a) Ry(b) Rz(c)`` — Eq. (3.1.1) of ``004_f30792d78b61e7c2.txt``.
-* ``tilt-torsion``: ``R = Rz(φ) Ry(θ) Rz(σ − φ)`` — Eq. (1) of ``002_19d5d688a3999fb0.txt``;
+  (the convention of Tables 4.3–4.6 of Berti 2015).
+* ``xyz-moving``: ``R = Rx(a) Ry(b) Rz(c)`` — Eq. (3.1.1) of Lieskovský (2020).
+* ``tilt-torsion``: ``R = Rz(φ) Ry(θ) Rz(σ − φ)`` — Eq. (1) of Bohigas et al. (2013);
   the angles are given in the order ``(φ, θ, σ)``.
 
 All functions work over arrays: angles of shape ``(..., 3)`` give matrices ``(..., 3, 3)``.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, Tables 4.3–4.6. (docs/references.bib: berti2015)
+.. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, Eq. 3.1.1.
+   (docs/references.bib: lieskovsky2020)
+.. [3] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, Eq. 1. (docs/references.bib: bohigas2013)
 """
 
 from __future__ import annotations
@@ -54,7 +66,21 @@ def planar_rotation(theta) -> np.ndarray:
 
 
 def rotation_matrix(angles, convention: str = "xyz-fixed") -> np.ndarray:
-    """Rotation matrices ``(..., 3, 3)`` from three angles ``(..., 3)`` in ``convention``."""
+    """Rotation matrices ``(..., 3, 3)`` from three angles ``(..., 3)`` in ``convention``.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, Tables 4.3–4.6. (docs/references.bib: berti2015)
+    .. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, Eq. 3.1.1.
+       (docs/references.bib: lieskovsky2020)
+    .. [3] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, Eq. 1.
+       (docs/references.bib: bohigas2013)
+    """
     if convention not in CONVENTIONS:
         raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
     angles = np.asarray(angles, dtype=float)

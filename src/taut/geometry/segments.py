@@ -1,5 +1,5 @@
 """Segment–segment distance (the *proximity* ``δ_ij`` of two line segments), §3.5 of
-``004_f30792d78b61e7c2.txt`` (Eq. 3.5.1: ``ξ_i v_i + d_ij = a_ij + ξ_j v_j``).
+Lieskovský (2020) (Eq. 3.5.1: ``ξ_i v_i + d_ij = a_ij + ξ_j v_j``).
 
 Given ``s_i = A_i B_i`` and ``s_j = A_j B_j``, find ``ξ_i, ξ_j ∈ [0, 1]`` minimising
 ``‖A_i + ξ_i v_i − A_j − ξ_j v_j‖``.  The source splits parallel (Tables 3.1–3.2) and skew
@@ -22,6 +22,14 @@ ill-conditioned, are still measured to rounding accuracy.  A zero-length segment
 
 Points may be 2-D (planar robots) or 3-D.  The kernel is compiled with Numba and runs over
 flat batches; :func:`segment_distance` broadcasts any leading shapes.
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §3.5, Eq. 3.5.1, Tables 3.1–3.2.
+   (docs/references.bib: lieskovsky2020)
+.. [2] C. Ericson, "Real-Time Collision Detection", Morgan Kaufmann, 2005, §5.1.9.
+   (docs/references.bib: ericson2005)
 """
 
 from __future__ import annotations
@@ -119,7 +127,14 @@ def segment_distance(a1, b1, a2, b2, *, parameters: bool = False):
 
     The end points are arrays ``(..., 2)`` or ``(..., 3)`` that broadcast together; returns
     ``δ`` of the broadcast shape, and with ``parameters=True`` also ``ξ_i, ξ_j ∈ [0, 1]``
-    locating a closest pair of points ``a1 + ξ_i (b1 − a1)`` and ``a2 + ξ_j (b2 − a2)``."""
+    locating a closest pair of points ``a1 + ξ_i (b1 − a1)`` and ``a2 + ξ_j (b2 − a2)``.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §3.5, Eq. 3.5.1.
+       (docs/references.bib: lieskovsky2020)
+    """
     arrs = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (a1, b1, a2, b2)))
     shape = arrs[0].shape[:-1]
     flat = [np.ascontiguousarray(_as3(x).reshape(-1, 3)) for x in arrs]

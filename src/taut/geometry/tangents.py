@@ -1,6 +1,6 @@
 """Common tangents of points and circles with cable wrap directions.
 
-Appendix A.3 (point–circle) and A.4 (circle–circle) of ``000_3d5147f1d4639546.txt``.
+Appendix A.3 (point–circle) and A.4 (circle–circle) of Rushton (2022).
 A point is a circle of radius 0, so one formula serves all cases: a cable leaving circle
 ``(c1, r1)`` with wrap direction ``d1`` and arriving on circle ``(c2, r2)`` with wrap
 direction ``d2`` (``+1`` counter-clockwise: the centre lies on the left of the direction
@@ -15,6 +15,11 @@ tangency (``|c2 − c1| = |s|``) it degenerates to a single point (``L = 0``).  
 tangents of A.4 are ``d1 = d2``, internal ones ``d1 = −d2``; the two tangents from a point
 (A.3) are ``d2 = ±1``.  Zero radii make the wrap direction irrelevant to the line, as they
 should.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Appendix A.3–A.4. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -51,7 +56,13 @@ def point_circle_tangents(a, c, r):
 
     Returns ``(b, dirs)``: tangent points ``(..., 2, 2)`` for the wrap directions
     ``dirs = [+1, −1]`` (counter-clockwise, clockwise) of a cable running from ``a`` onto
-    the circle.  NaN where ``a`` is inside the circle."""
+    the circle.  NaN where ``a`` is inside the circle.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Appendix A.3. (docs/references.bib: rushton2022)
+    """
     dirs = np.array([1.0, -1.0])
     a = np.asarray(a, float)[..., None, :]
     c = np.asarray(c, float)[..., None, :]
@@ -67,7 +78,13 @@ def circle_circle_tangents(c1, r1, c2, r2):
     circle 2, shape ``(..., 4, 2)``, for the wrap directions ``dir1 = [+1, −1, +1, −1]``
     and ``dir2 = [+1, −1, −1, +1]`` (external: ``dir2 = dir1``; internal:
     ``dir2 = −dir1``) of a cable running from circle 1 to circle 2.  NaN where a tangent
-    does not exist (overlapping circles have no internal tangents, nested ones none)."""
+    does not exist (overlapping circles have no internal tangents, nested ones none).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Appendix A.4. (docs/references.bib: rushton2022)
+    """
     dir1 = np.array([1.0, -1.0, 1.0, -1.0])
     dir2 = np.array([1.0, -1.0, -1.0, 1.0])
     c1 = np.asarray(c1, float)[..., None, :]

@@ -1,6 +1,13 @@
-"""Interval analysis (``001_eb92e2f6589fc229.txt`` §1.3 and Ch. 3): outward-rounded
+"""Interval analysis (Berti 2015, §1.3 and Ch. 3): outward-rounded
 interval arithmetic, polynomial constraint tapes, HC4 contraction, slope enclosures,
-Krawczyk certificates with inflation, and a branch-and-prune solver."""
+Krawczyk certificates with inflation, and a branch-and-prune solver.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §1.3 and Ch. 3. (docs/references.bib: berti2015)
+"""
 
 from taut.interval.arithmetic import Interval, centred_form
 from taut.interval.branch_prune import BranchAndPruneResult, branch_and_prune

@@ -1,5 +1,5 @@
 """Interval arrays: ``lo`` and ``hi`` endpoint arrays with outward-rounded arithmetic
-(``001_eb92e2f6589fc229.txt`` §1.3.1–1.3.2).
+(Berti 2015, §1.3.1–1.3.2).
 
 :class:`Interval` wraps two broadcastable float arrays and overloads ``+ − × / **``,
 :meth:`Interval.sqr` and :meth:`Interval.sqrt`, each lifted elementwise from the scalar
@@ -7,6 +7,12 @@ kernels of :mod:`taut.interval.kernels` (one rounding per operation, no BLAS, no
 ``np.sum`` on endpoints).  Writing an expression with these objects is its *natural*
 interval evaluation; :func:`centred_form` gives the centred (mean-value) form
 ``f(c) + J([x])([x] − c)`` from an enclosure of the Jacobian.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §1.3.1–1.3.2. (docs/references.bib: berti2015)
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Branch-and-prune solver for square polynomial systems (``001_eb92e2f6589fc229.txt``
+"""Branch-and-prune solver for square polynomial systems (Berti (2015)
 §1.3.3 Algorithm 1, with the bisection rule of §3.1.4 and the evaluation operator of
 §3.2.1–3.2.2).
 
@@ -28,6 +28,16 @@ Boxes narrower than ``eps`` in every variable that could not be certified are re
 The loop runs in a Numba kernel (:func:`_drive`, a depth-first stack of boxes) when the
 filters are :class:`~taut.interval.linear.LinearFilter` s; it hands a box back to Python
 only to certify a solution (Newton, Krawczyk, inflation: a handful of calls per solution).
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §1.3.3 (Algorithm 1), §3.1.4, §3.2.1–3.2.2.
+   (docs/references.bib: berti2015)
+.. [2] R. B. Kearfott, M. Novoa, "Algorithm 681: INTBIS, a portable interval Newton/bisection
+   package", ACM Transactions on Mathematical Software 16(2), 1990.
+   (docs/references.bib: kearfott1990)
 """
 
 from __future__ import annotations

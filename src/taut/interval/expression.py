@@ -1,4 +1,4 @@
-"""Polynomial expressions and their compiled *tape* (``001_eb92e2f6589fc229.txt`` §1.3.2, §3.1.3).
+"""Polynomial expressions and their compiled *tape* (Berti 2015, §1.3.2, §3.1.3).
 
 Constraints are written with :class:`Expr` objects (``x[0]**2 + x[1]*x[2] - 3``) and
 compiled by :func:`compile_system` into flat arrays — one node per operation, children
@@ -13,6 +13,12 @@ partial derivatives are again expressions); :func:`compile_system` compiles the 
 of the *equations* into a second tape for interval Newton / Krawczyk.
 
 Constants are intervals: ``const(lo, hi)`` encloses a real that is not a float.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §1.3.2, §3.1.3. (docs/references.bib: berti2015)
 """
 
 from __future__ import annotations

@@ -1,5 +1,5 @@
 """HC4 (forward–backward, "2B") contraction of polynomial constraints
-(``001_eb92e2f6589fc229.txt`` §3.1.3, the 2B approach; Benhamou et al.'s HC4-revise).
+(Berti 2015, §3.1.3, the 2B approach; Benhamou et al.'s HC4-revise).
 
 The constraints of a :class:`~taut.interval.expression.Tape` share their common
 subexpressions (one DAG).  The forward pass evaluates every node over the box (natural
@@ -12,6 +12,17 @@ evaluated and projected once per sweep instead of once per constraint, with what
 them say about it.  :func:`contract` repeats the sweeps until no domain shrinks by more
 than a fraction ``ratio`` of its width.  Every projection uses the
 outward-rounded kernels of :mod:`taut.interval.kernels`, so no solution is ever lost.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §3.1.3. (docs/references.bib: berti2015)
+.. [2] F. Benhamou, F. Goualard, L. Granvilliers, J.-F. Puget, "Revising hull and box
+   consistency", ICLP, 1999. (docs/references.bib: benhamou1999)
+.. [3] X.-H. Vu, H. Schichl, D. Sam-Haroud, "Interval propagation and search on directed acyclic
+   graphs for numerical constraint solving", Journal of Global Optimization 45, 2009.
+   (docs/references.bib: vu2009)
 """
 
 from __future__ import annotations

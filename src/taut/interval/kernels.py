@@ -1,4 +1,4 @@
-"""Scalar interval kernels with outward rounding (``001_eb92e2f6589fc229.txt`` §1.3.1).
+"""Scalar interval kernels with outward rounding (Berti 2015, §1.3.1).
 
 An interval is a pair ``(lo, hi)`` of floats.  Every operation computes its endpoints in
 round-to-nearest and moves each one outwards by at least one ulp: IEEE 754 ``+ − × ÷ √``
@@ -14,6 +14,16 @@ The kernels are Numba functions (``cache=True``, ``fastmath=False``: fast-math w
 the compiler reorder and contract the roundings away) so that :mod:`taut.interval.hc4`
 and :mod:`taut.interval.krawczyk` can call them inside their own compiled loops;
 :mod:`taut.interval.arithmetic` lifts them to arrays.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §1.3.1. (docs/references.bib: berti2015)
+.. [2] S. M. Rump, P. Zimmermann, S. Boldo, G. Melquiond, "Computing predecessor and successor
+   in rounding to nearest", BIT Numerical Mathematics 49(2), 2009, Algorithm 2.
+   (docs/references.bib: rump2009)
+.. [3] R. E. Moore, "Interval Analysis", Prentice-Hall, 1966. (docs/references.bib: moore1966)
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Certified solutions of square polynomial systems (``001_eb92e2f6589fc229.txt`` §3.2.1).
+"""Certified solutions of square polynomial systems (Berti 2015, §3.2.1).
 
 * :func:`newton` — plain Newton iterations in floating point (the refinement step).
 * :func:`krawczyk` — the Krawczyk operator
@@ -19,6 +19,18 @@
 
 Interval matrix products are computed by the Numba kernels below, one outward-rounded
 operation at a time (no BLAS on interval endpoints); ``C`` is an ordinary float matrix.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §3.2.1, Eqs. 3.25–3.29. (docs/references.bib: berti2015)
+.. [2] R. Krawczyk, "Newton-Algorithmen zur Bestimmung von Nullstellen mit Fehlerschranken",
+   Computing 4, 1969. (docs/references.bib: krawczyk1969)
+.. [3] A. Neumaier, "Interval Methods for Systems of Equations", Cambridge University Press,
+   1990, §5.1. (docs/references.bib: neumaier1990)
+.. [4] S. M. Rump, "Solving algebraic problems with high accuracy", in A New Approach to
+   Scientific Computation, Academic Press, 1983. (docs/references.bib: rump1983)
 """
 
 from __future__ import annotations
@@ -180,7 +192,18 @@ def krawczyk(system: System, lo, hi, points: int = 0) -> KrawczykResult:
     ``points > 0`` the slope enclosure of :mod:`taut.interval.slope` (that many nodes)
     replaces ``J(X)``: it proves more boxes empty and contracts more, but ``K(X) ⊂ int X``
     from slopes proves only that a solution exists, so such a box is tried again with
-    ``J(X)``, which alone proves it unique."""
+    ``J(X)``, which alone proves it unique.
+
+    References
+    ----------
+    .. [1] R. Krawczyk, "Newton-Algorithmen zur Bestimmung von Nullstellen mit Fehlerschranken",
+       Computing 4, 1969. (docs/references.bib: krawczyk1969)
+    .. [2] A. Neumaier, "Interval Methods for Systems of Equations", Cambridge University Press,
+       1990, §5.1. (docs/references.bib: neumaier1990)
+    .. [3] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §3.2.1. (docs/references.bib: berti2015)
+    """
     lo, hi = np.asarray(lo, float), np.asarray(hi, float)
     if points:
         res = _krawczyk_step(system, lo, hi, *_dense(system, *slopes(system, lo, hi, points)))
@@ -423,7 +446,14 @@ def certified_step(
 
 def inflate(system: System, x, delta: float = 1e-9, max_doublings: int = 60) -> float:
     """Half-width of the largest box ``x ± 2^k δ`` over which ``J`` is proven regular
-    (§3.2.1, Eqs. 3.25–3.29); 0 when even ``x ± δ`` fails."""
+    (§3.2.1, Eqs. 3.25–3.29); 0 when even ``x ± δ`` fails.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §3.2.1, Eqs. 3.25–3.29. (docs/references.bib: berti2015)
+    """
     x = np.asarray(x, float)
     try:
         C = np.linalg.inv(jacobian_at(system, x))

@@ -1,4 +1,4 @@
-"""Interval linear systems ``[A] x = [b]`` (``001_eb92e2f6589fc229.txt`` §3.1.3,
+"""Interval linear systems ``[A] x = [b]`` (Berti 2015, §3.1.3,
 Eqs. 3.9–3.12).
 
 :func:`interval_gauss` is interval Gaussian elimination (no pivoting, every operation
@@ -9,6 +9,12 @@ outward-rounded): it returns a box enclosing the solutions of every ``A x = b`` 
 system (the equilibrium of ``m < 6`` taut cables, Eq. 3.9) the generalised inverse of
 Eq. 3.12, ``K = (Wᵀ mid J)⁻¹ Wᵀ`` with ``W`` the rows of ``mid J`` with force and moment
 halves swapped, which keeps units consistent.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §3.1.3, Eqs. 3.9–3.12. (docs/references.bib: berti2015)
 """
 
 from __future__ import annotations

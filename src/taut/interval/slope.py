@@ -1,5 +1,5 @@
 """Slope enclosures of polynomial equations by Gauss–Legendre quadrature of the mean-value
-integral (for the Krawczyk-type operators of ``001_eb92e2f6589fc229.txt`` §3.2.1).
+integral (for the Krawczyk-type operators of Berti (2015), §3.2.1).
 
 For ``x`` and the centre ``c`` of a box ``X``,
 
@@ -21,6 +21,14 @@ half as wide as ``J(X)`` — the DGP's equations (quadratic with the plane norma
 unknown, of degree ≤ 4 without it) are curved on the scale of the platform, and the
 Jacobian's width is what keeps the parametric Krawczyk operator from proving boxes
 beside the pose manifold empty.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, §3.2.1. (docs/references.bib: berti2015)
+.. [2] R. Krawczyk, A. Neumaier, "Interval slopes for rational functions and associated centered
+   forms", SIAM Journal on Numerical Analysis 22, 1985. (docs/references.bib: krawczyk1985)
 """
 
 from __future__ import annotations

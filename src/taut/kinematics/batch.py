@@ -1,5 +1,5 @@
 """Batched inverse kinematics in a Numba kernel: cable lengths and structure matrices of
-many poses at once, for workspace grids (``000_3d5147f1d4639546.txt`` §2.1.1, Eqs. 2.1,
+many poses at once, for workspace grids (Rushton 2022, §2.1.1, Eqs. 2.1,
 2.8 and 2.10; the conventions of :mod:`taut.kinematics.inverse`).
 
 Same quantities as :func:`taut.kinematics.inverse.inverse_kinematics` for robots without
@@ -7,6 +7,11 @@ jointed bodies (point-mass, planar and spatial rigid platforms, all orientation
 conventions), in one pass over the poses instead of a chain of NumPy temporaries.  A pose
 with a zero-length cable does not raise: it is flagged in ``ok`` and its structure
 matrix is left zero, which is what a workspace grid needs.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.1, Eqs. 2.1, 2.8 and 2.10. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations

@@ -1,5 +1,11 @@
-"""Elastic cables: the linear spring model of Eq. (2.15) of ``000_3d5147f1d4639546.txt``,
-``τ = EA (l − l0) / l0``, solved for the unstretched length ``l0 = EA l / (EA + τ)``."""
+"""Elastic cables: the linear spring model of Eq. (2.15) of Rushton (2022),
+``τ = EA (l − l0) / l0``, solved for the unstretched length ``l0 = EA l / (EA + τ)``.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.6, Eq. 2.15. (docs/references.bib: rushton2022)
+"""
 
 from __future__ import annotations
 
@@ -11,7 +17,13 @@ from taut.model.robot import Robot
 
 def unstretched_length(lengths, tensions, stiffness) -> np.ndarray:
     """Unstretched length ``l0`` that stretches to ``lengths`` under ``tensions`` with axial
-    stiffness ``stiffness = EA`` (arrays broadcast)."""
+    stiffness ``stiffness = EA`` (arrays broadcast).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Eq. 2.15. (docs/references.bib: rushton2022)
+    """
     l, t, ea = (np.asarray(x, dtype=float) for x in (lengths, tensions, stiffness))
     if np.any(ea <= 0) or not np.all(np.isfinite(ea)):
         raise TautError("axial stiffness EA must be positive and finite")
@@ -22,7 +34,13 @@ def unstretched_length(lengths, tensions, stiffness) -> np.ndarray:
 
 def tension_from_stretch(lengths, unstretched, stiffness) -> np.ndarray:
     """Eq. (2.15): tension of a cable of unstretched length ``l0`` stretched to ``l``;
-    a cable shorter than ``l0`` is slack (tension 0)."""
+    a cable shorter than ``l0`` is slack (tension 0).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Eq. 2.15. (docs/references.bib: rushton2022)
+    """
     l, l0, ea = (np.asarray(x, dtype=float) for x in (lengths, unstretched, stiffness))
     return np.maximum(ea * (l - l0) / l0, 0.0)
 

@@ -1,11 +1,19 @@
-"""Inverse kinematics of the standard CDPR model (``000_3d5147f1d4639546.txt`` §2.1.1).
+"""Inverse kinematics of the standard CDPR model (Rushton 2022, §2.1.1).
 
 Cable *i* runs from its exit point ``a_i`` to ``b_i = p + R r_i`` (Eq. 2.1); its length is
 ``l_i = ‖a_i − b_i‖`` and its unit vector ``u_i = (a_i − b_i)/l_i`` points from the
 platform to the exit point.  The structure matrix is ``W = [u_i ; (b_i − p) × u_i]``
 (Eq. 2.8; Eq. 2.10 for a point mass), so that equilibrium reads ``W τ + w_ext = 0``
-(Eq. 2.11).  For jointed platforms (``004_…``) ``b_i`` is the anchor on the cable's own
+(Eq. 2.11).  For jointed platforms (Lieskovský 2020) ``b_i`` is the anchor on the cable's own
 body and moments are still taken about the platform reference point ``p``.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.1, Eqs. 2.1, 2.8, 2.10 and 2.11. (docs/references.bib: rushton2022)
+.. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §3.2.
+   (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations
@@ -76,7 +84,13 @@ def inverse_kinematics(robot: Robot, poses) -> IKResult:
     Robots without jointed bodies go through the Numba kernel of
     :mod:`taut.kinematics.batch`; jointed platforms through NumPy over body frames.
     Raises :class:`InfeasiblePoseError` when a cable has zero length (its direction and the
-    structure matrix do not exist there)."""
+    structure matrix do not exist there).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.1, Eqs. 2.1, 2.8 and 2.10. (docs/references.bib: rushton2022)
+    """
     from taut.kinematics.batch import batch_structure_matrices, supports_batch
 
     arr, single = as_poses(robot, poses)
@@ -108,5 +122,11 @@ def cable_lengths(robot: Robot, poses) -> np.ndarray:
 
 
 def structure_matrix(robot: Robot, poses) -> np.ndarray:
-    """Structure (wrench) matrix ``W`` of shape ``(N, m, n)`` (``(m, n)`` for one pose)."""
+    """Structure (wrench) matrix ``W`` of shape ``(N, m, n)`` (``(m, n)`` for one pose).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.1, Eqs. 2.8 and 2.10. (docs/references.bib: rushton2022)
+    """
     return inverse_kinematics(robot, poses).structure_matrix

@@ -1,5 +1,5 @@
 """Actuator positions, inverse-kinematics Jacobian and structure matrix of robots whose
-platform carries jointed bodies — §3.2–3.3 of ``004_f30792d78b61e7c2.txt`` — written for
+platform carries jointed bodies — §3.2–3.3 of Lieskovský (2020) — written for
 any robot of taut (without bodies they reduce to the standard model).
 
 * **Actuator positions** (Eqs. 3.2.3–3.2.4): ``q = [l_1 … l_n, q_{n+1} …]``, the cable
@@ -11,8 +11,8 @@ any robot of taut (without bodies they reduce to the standard model).
   ``j`` between the platform and body ``k``, the joint axis ``e_j`` in the fixed frame
   (prismatic, Eq. 3.2.7: ``ṡ_23 u_23``) or ``e_j × (b_i − o_j)`` about the joint origin
   ``o_j`` (revolute; planar: ``(b_i − o_j)`` turned by 90°); each joint row is a unit row
-  (Eq. 3.2.8).  With ``u_i`` pointing from the platform to the exit point (``DESIGN.md``
-  §2) ``l̇_i = −u_i · ḃ_i``: Eq. 3.2.12 prints the same rows with the opposite sign.  For the
+  (Eq. 3.2.8).  With ``u_i`` pointing from the platform to the exit point (``docs/architecture.md``
+  §2.4) ``l̇_i = −u_i · ḃ_i``: Eq. 3.2.12 prints the same rows with the opposite sign.  For the
   adjustable platform ``J`` is 9×7.
 * **Structure matrix with joint forces** (Eqs. 3.3.7–3.3.12): by virtual work a cable
   tension ``τ_i`` acts on the generalised coordinates as ``−τ_i ∂l_i/∂X`` and a joint force
@@ -22,6 +22,12 @@ any robot of taut (without bodies they reduce to the standard model).
   Eq. 3.3.10 (``A = −W`` there: the source writes the wrench the cables exert as ``w``).
   A joint row gives the joint force (Eq. 3.3.12): ``ζ_j = −Σ τ_i u_i·∂b_i/∂q_j`` over the
   cables beyond the joint, the external wrench acting on the platform body itself.
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §3.2–3.3, Eqs. 3.2.3–3.2.12 and
+   3.3.7–3.3.12. (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations
@@ -37,7 +43,14 @@ __all__ = ["actuator_jacobian", "actuator_positions", "joint_forces", "jointed_s
 
 
 def actuator_positions(robot: Robot, poses) -> np.ndarray:
-    """``q`` of Eqs. 3.2.3–3.2.4: cable lengths then joint coordinates, ``(N, n + n_joints)``."""
+    """``q`` of Eqs. 3.2.3–3.2.4: cable lengths then joint coordinates, ``(N, n + n_joints)``.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, Eqs. 3.2.3–3.2.4.
+       (docs/references.bib: lieskovsky2020)
+    """
     arr, single = as_poses(robot, poses)
     b = _anchors(robot, arr)
     q = np.concatenate([np.linalg.norm(robot.exits[None] - b, axis=-1), arr[:, robot.wrench_dim :]], axis=1)
@@ -83,7 +96,14 @@ def actuator_jacobian(robot: Robot, poses) -> np.ndarray:
     """Inverse-kinematics Jacobian ``J`` (Eq. 3.2.12): ``q̇ = J [v, ω, q̇_joints]``, shape
     ``(N, n + n_joints, m + n_joints)`` with ``m`` the platform wrench size (9×7 for the
     adjustable platform).  Raises :class:`~taut.errors.InfeasiblePoseError` at a
-    zero-length cable."""
+    zero-length cable.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §3.2.2, Eqs. 3.2.6–3.2.12.
+       (docs/references.bib: lieskovsky2020)
+    """
     arr, single = as_poses(robot, poses)
     ik = inverse_kinematics(robot, arr)
     n, m, nj = robot.n_cables, robot.wrench_dim, robot.n_joints
@@ -99,7 +119,14 @@ def actuator_jacobian(robot: Robot, poses) -> np.ndarray:
 def jointed_structure_matrix(robot: Robot, poses) -> np.ndarray:
     """``A = [−J_cablesᵀ, J_jointsᵀ]`` of shape ``(N, m + n_joints, n + n_joints)``:
     ``A [τ; ζ] + Q_ext = 0`` (Eqs. 3.3.7–3.3.12, sign convention in the module docstring).
-    Its top-left ``m × n`` block is the platform structure matrix ``W``."""
+    Its top-left ``m × n`` block is the platform structure matrix ``W``.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §3.3, Eqs. 3.3.7–3.3.11.
+       (docs/references.bib: lieskovsky2020)
+    """
     J = actuator_jacobian(robot, poses)
     n = robot.n_cables
     A = np.swapaxes(J, -1, -2).copy()
@@ -110,7 +137,14 @@ def jointed_structure_matrix(robot: Robot, poses) -> np.ndarray:
 def joint_forces(robot: Robot, poses, tensions) -> np.ndarray:
     """Joint actuator forces ``ζ`` (Eq. 3.3.12) balancing the cable tensions ``τ`` along the
     joint coordinates, ``(N, n_joints)``: ``ζ = −A_joints,cables τ`` (positive ``ζ`` pushes the
-    child body along its joint axis; a revolute joint gets a torque about its axis)."""
+    child body along its joint axis; a revolute joint gets a torque about its axis).
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §3.3.2, Eq. 3.3.12.
+       (docs/references.bib: lieskovsky2020)
+    """
     arr, single = as_poses(robot, poses)
     A = jointed_structure_matrix(robot, arr)
     tau = np.asarray(tensions, dtype=float)

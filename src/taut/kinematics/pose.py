@@ -2,7 +2,7 @@
 
 A pose is the platform position, its orientation (θ for planar rigid platforms, three
 angles in the robot's convention for spatial ones, nothing for a point mass) and the
-joint coordinates of extra bodies (``DESIGN.md`` §2).  Functions take arrays of poses
+joint coordinates of extra bodies (``docs/architecture.md`` §2.2).  Functions take arrays of poses
 ``(N, pose_size)``; a single pose ``(pose_size,)`` is accepted everywhere.
 """
 

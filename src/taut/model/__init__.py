@@ -1,4 +1,4 @@
-"""Robot descriptions: data classes, files, validation, built-in examples (``DESIGN.md`` §3)."""
+"""Robot descriptions: data classes, files, validation, built-in examples (``docs/architecture.md`` §3)."""
 
 from taut.model.examples import example, example_descriptions, example_names
 from taut.model.io import load_robot, parse_robot, robot_from_dict, robot_to_dict, save_robot

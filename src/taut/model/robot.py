@@ -1,4 +1,4 @@
-"""The robot description: typed, validated data and nothing else (``DESIGN.md`` §3).
+"""The robot description: typed, validated data and nothing else (``docs/architecture.md`` §3).
 
 A :class:`Robot` holds what every analysis of taut needs: the cables (exit point ``a_i``,
 platform anchor ``r_i`` in the frame of the body it is attached to, tension and length
@@ -7,6 +7,14 @@ joints, the external wrench), collidable obstacles and the installation space of
 variable-structure robots, reference data from the sources and named trajectories.
 Validation errors are raised by pydantic and turned into :class:`taut.RobotFileError`
 by :mod:`taut.model.io`.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §4.1, §6.2. (docs/references.bib: rushton2022)
+.. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.2, §4.2.
+   (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations
@@ -46,7 +54,7 @@ def _check_bounds(v: tuple[float, float], what: str) -> tuple[float, float]:
 
 
 class Pulley(_Strict):
-    """Exit pulley of a winch: the cable leaves it tangentially (``000_…`` §4.1)."""
+    """Exit pulley of a winch: the cable leaves it tangentially (Rushton 2022, §4.1)."""
 
     radius: Finite = Field(ge=0)
     direction: Literal["ccw", "cw"] = "ccw"
@@ -106,7 +114,7 @@ class Joint(_Strict):
 
 
 class Capsule(_Strict):
-    """A segment swept by a sphere: the collision model of ``004_…`` §2.3.2."""
+    """A segment swept by a sphere: the collision model of Lieskovský 2020, §2.3.2."""
 
     a: list[Coordinate]
     b: list[Coordinate]
@@ -178,8 +186,8 @@ class Reference(_Strict):
 class Trajectory(_Strict):
     """A named trajectory: waypoints (positions or full poses) joined by straight moves.
 
-    ``steps`` gives the number of samples of each move (pose sequences, ``004_…`` §4.2);
-    ``speed`` [m/s] and ``dwell`` [s] time a waypoint sequence (``000_…`` §6.2).
+    ``steps`` gives the number of samples of each move (pose sequences, Lieskovský 2020, §4.2);
+    ``speed`` [m/s] and ``dwell`` [s] time a waypoint sequence (Rushton 2022, §6.2).
     """
 
     description: str | None = None
@@ -190,7 +198,7 @@ class Trajectory(_Strict):
 
 
 class Robot(_Strict):
-    """A cable-driven parallel robot (see ``DESIGN.md`` §2–3 for conventions)."""
+    """A cable-driven parallel robot (see ``docs/architecture.md`` §2–3 for conventions)."""
 
     format: Literal["taut/1"] = FORMAT
     name: str

@@ -1,5 +1,12 @@
-"""Wrench-feasible path planning (``002_19d5d688a3999fb0.txt``): higher-dimensional
-continuation (:mod:`.continuation`) and A* over its charts (:mod:`.search`)."""
+"""Wrench-feasible path planning (Bohigas et al. 2013): higher-dimensional
+continuation (:mod:`.continuation`) and A* over its charts (:mod:`.search`).
+
+References
+----------
+.. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §2–5. (docs/references.bib: bohigas2013)
+"""
 
 from taut.planning.continuation import Atlas, Chart, ImplicitManifold, Polytope, project, tangent_basis
 from taut.planning.search import PathResult, plan_path, refine_path

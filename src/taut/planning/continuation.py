@@ -1,7 +1,7 @@
 """Higher-dimensional continuation: an atlas of a k-manifold ``F(x) = 0`` in ``R^n``.
 
 Henderson's multiple-chart method (Henderson 2002, ref. [14] of
-``002_19d5d688a3999fb0.txt``; §4 of that paper):
+Bohigas et al. (2013); §4 of that paper):
 
 * a **chart** ``C_i`` is a centre ``x_i`` on the manifold, an orthonormal basis ``Ψ_i`` of
   the tangent space ``T_{x_i}M`` (the null space of the Jacobian ``F_x``), a radius ``r``
@@ -24,6 +24,15 @@ Henderson's multiple-chart method (Henderson 2002, ref. [14] of
 The polytopes are kept as vertex lists with, for each vertex, the set of its ``k``
 active constraints (cube faces and cutting planes); two vertices share an edge when
 they share ``k − 1`` of them, which is all the cutting step needs.
+
+References
+----------
+.. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
+   k-manifolds", International Journal of Bifurcation and Chaos 12(3), 2002.
+   (docs/references.bib: henderson2002)
+.. [2] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
 """
 
 from __future__ import annotations
@@ -172,6 +181,15 @@ class Atlas:
     ``min_step`` is the fraction of ``radius`` below which a direction is abandoned
     (the chart becomes a frontier chart).  ``metric`` selects the coordinates in which
     edge costs are measured (all of them by default).
+
+    References
+    ----------
+    .. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
+       k-manifolds", International Journal of Bifurcation and Chaos 12(3), 2002.
+       (docs/references.bib: henderson2002)
+    .. [2] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
     """
 
     def __init__(

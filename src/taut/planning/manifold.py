@@ -1,6 +1,6 @@
 """The wrench-feasible C-space of a cable-driven hexapod as a smooth manifold.
 
-Eqs. (1)–(8) of ``002_19d5d688a3999fb0.txt`` §2–3, ``F(x) = 0`` in the 99 variables
+Eqs. (1)–(8) of Bohigas et al. (2013), §2–3, ``F(x) = 0`` in the 99 variables
 
     x = (p [3], τ = (φ, θ, σ) [3], R [9, row-major], u_i [18], ρ_i [6], g_i [6],
          f_0 [6], v_1..v_6 [36], s_i [6], t_i [6]),
@@ -28,6 +28,13 @@ can complete — the no-path proof of §4; poses are lifted with canonical angle
 The positivity of ``v_i,i``, ``s_i``, ``t_i``, ``g_i`` is implicit on each connected component
 (Appendix A), so only upper bounds on ``s``, ``t``, ``g`` are imposed, to keep atlases finite.
 The Jacobian ``F_x`` is analytic (chain rule through ``J(R, u, ρ)``).
+
+References
+----------
+.. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §2–3, Eqs. 1–8, Appendix A, §5.
+   (docs/references.bib: bohigas2013)
 """
 
 from __future__ import annotations
@@ -92,7 +99,15 @@ class WrenchFeasibleManifold:
     """Eqs. (1)–(8) for the base points ``a`` ``(6, 3)``, platform points ``b`` ``(6, 3)``,
     nominal wrench ``w0`` about the platform point ``wrench_point``, ellipsoid matrix ``E``
     (the set ``(ŵ − ŵ_0)ᵀ E (ŵ − ŵ_0) ≤ 1``), tension and length bounds, and the pose
-    coordinates ``fixed`` (names of :data:`POSE_NAMES` → value) of a slice."""
+    coordinates ``fixed`` (names of :data:`POSE_NAMES` → value) of a slice.
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §2–3, Eqs. 1–8.
+       (docs/references.bib: bohigas2013)
+    """
 
     a: np.ndarray
     b: np.ndarray

@@ -1,6 +1,6 @@
 """A* over the charts of a growing atlas, and the path refined on the manifold.
 
-§4 of ``002_19d5d688a3999fb0.txt``: the atlas of :mod:`taut.planning.continuation` is
+§4 of Bohigas et al. (2013): the atlas of :mod:`taut.planning.continuation` is
 expanded in A* order (Russell & Norvig, ref. [25]) from the chart at the start point:
 the open chart of least ``g + h`` is closed next, where ``g`` is the length of the
 chart-centre path found so far and ``h`` the straight-line distance to the goal in the
@@ -12,6 +12,12 @@ the resolution of the chart radius*.
 The returned path is refined on the manifold: between consecutive chart centres ``x_a``
 and ``x_b`` it follows chart ``a`` up to the middle of the tangent segment and chart ``b``
 from there, each half mapped by Newton projection at a spacing of at most ``spacing``.
+
+References
+----------
+.. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
 """
 
 from __future__ import annotations
@@ -77,7 +83,14 @@ def plan_path(
     spacing: float | None = None,
 ) -> PathResult:
     """A path on ``manifold`` from ``start`` to ``goal`` (both on it), or proof that the
-    connected component of ``start`` does not reach ``goal`` at resolution ``radius``."""
+    connected component of ``start`` does not reach ``goal`` at resolution ``radius``.
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
+    """
     t0 = time.perf_counter()
     start, goal = np.asarray(start, float), np.asarray(goal, float)
     if np.linalg.norm(manifold.function(goal)) > 1e-6 * (1 + np.linalg.norm(goal)):

@@ -1,4 +1,4 @@
-"""Independent check of a planned path (``002_19d5d688a3999fb0.txt`` §5, Fig. 6).
+"""Independent check of a planned path (Bohigas et al. 2013, §5, Fig. 6).
 
 The poses of a path are interpolated linearly (``subdivide`` points per segment) and each
 is tested with the general wrench-feasibility test of :mod:`taut.statics.feasibility`
@@ -7,6 +7,12 @@ is tested with the general wrench-feasibility test of :mod:`taut.statics.feasibi
 nominal wrench, the ellipsoid ``{ŵ : (ŵ − ŵ_0)ᵀ E (ŵ − ŵ_0) ≤ 1}`` as an
 :class:`~taut.statics.wrench.EllipsoidWrenchSet` of shape ``E⁻¹``, the cables' tension
 bounds, and their length bounds.
+
+References
+----------
+.. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §5, Fig. 6. (docs/references.bib: bohigas2013)
 """
 
 from __future__ import annotations
@@ -44,7 +50,15 @@ def interpolate_poses(poses, subdivide: int) -> np.ndarray:
 
 
 def verify_path(robot: Robot, poses, E=None, subdivide: int = 10) -> PathCheck:
-    """Check every interpolated pose of ``poses`` for wrench feasibility (module doc)."""
+    """Check every interpolated pose of ``poses`` for wrench feasibility (module doc).
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §5, Fig. 6.
+       (docs/references.bib: bohigas2013)
+    """
     E = 1e4 * np.eye(6) if E is None else np.asarray(E, float)
     q = interpolate_poses(poses, subdivide)
     ik = inverse_kinematics(robot, q)

@@ -1,7 +1,7 @@
 """Wrench closure, wrench feasibility and static equilibrium over arrays of poses.
 
 The tests decide, for each structure matrix ``W`` of a batch ``(N, m, n)`` and tension
-bounds ``τ_min ≤ τ ≤ τ_max``, the workspace conditions of ``000_3d5147f1d4639546.txt``
+bounds ``τ_min ≤ τ ≤ τ_max``, the workspace conditions of Rushton (2022)
 §2.1.4:
 
 * **wrench closure** (WCW): the columns of ``W`` positively span ``R^m``, so that the
@@ -46,6 +46,17 @@ is below ``1e-12 ‖w_j‖`` (times the pivot growth bound ``2^d``) is dependent
 ``|n·w_j| ≤ 1e-12 ‖w_j‖`` (unit ``n``) counts as zero, so that ``0·∞`` never arises from
 round-off; support inequalities are tested with a slack of ``1e-9`` of the sum of the
 magnitudes of their terms; closure needs ``n·w_j`` beyond ``±1e-10 ‖w_j‖``.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.4, Eq. 2.11. (docs/references.bib: rushton2022)
+.. [2] M. Gouttefarde, C. M. Gosselin, "Analysis of the wrench-closure workspace of planar
+   parallel cable-driven mechanisms", IEEE Transactions on Robotics 22(3), 2006.
+   (docs/references.bib: gouttefarde2006)
+.. [3] S. Bouchard, C. Gosselin, B. Moore, "On the ability of a cable-driven robot to generate a
+   prescribed set of wrenches", Journal of Mechanisms and Robotics 2(1), 2010.
+   (docs/references.bib: bouchard2010)
 """
 
 from __future__ import annotations
@@ -476,11 +487,20 @@ def facet_normals(W, tmin=0.0, tmax=1.0) -> tuple[np.ndarray, np.ndarray, np.nda
 
 def wrench_closure(W) -> np.ndarray:
     """Wrench closure: the columns of each ``W`` ``(N, m, n)`` positively span ``R^m``
-    (``000_…`` §2.1.4, the wrench-closure workspace).  Returns ``(N,)`` bool.
+    (Rushton 2022, §2.1.4, the wrench-closure workspace).  Returns ``(N,)`` bool.
 
     Hyperplane shifting with zero lower and unit upper bounds: ``0`` is interior to
     ``W·[0, 1]^n`` iff ``rank W = m`` and every facet normal has a column strictly on
-    each side (relative margin ``CLOSURE_TOL``)."""
+    each side (relative margin ``CLOSURE_TOL``).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+    .. [2] M. Gouttefarde, C. M. Gosselin, "Analysis of the wrench-closure workspace of planar
+       parallel cable-driven mechanisms", IEEE Transactions on Robotics 22(3), 2006.
+       (docs/references.bib: gouttefarde2006)
+    """
     W = _as_W(W)
     N, m, n = W.shape
     if m == 1:
@@ -493,13 +513,22 @@ def wrench_closure(W) -> np.ndarray:
 
 def wrench_feasible(W, tmin, tmax, wrench_set: WrenchSet, offset=None) -> np.ndarray:
     """Wrench feasibility: for every ``w`` in ``offset[k] + wrench_set`` there are tensions
-    ``tmin ≤ τ ≤ tmax`` with ``W[k] τ + w = 0`` (``000_…`` §2.1.4, the wrench-feasible
+    ``tmin ≤ τ ≤ tmax`` with ``W[k] τ + w = 0`` (Rushton 2022, §2.1.4, the wrench-feasible
     workspace; hyperplane shifting of Gouttefarde & Gosselin 2006 / Bouchard et al. 2010).
 
     ``W`` is ``(N, m, n)``; ``tmin``, ``tmax`` ``(n,)`` (``tmax`` may be ``+inf``);
     ``offset`` ``(m,)`` or ``(N, m)`` (default 0), typically the external wrench.
     Returns ``(N,)`` bool.  Poses where ``rank W < m`` are decided by linear programs
-    (see the module docstring)."""
+    (see the module docstring).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.4, Eq. 2.11. (docs/references.bib: rushton2022)
+    .. [2] S. Bouchard, C. Gosselin, B. Moore, "On the ability of a cable-driven robot to
+       generate a prescribed set of wrenches", Journal of Mechanisms and Robotics 2(1), 2010.
+       (docs/references.bib: bouchard2010)
+    """
     W = _as_W(W)
     N, m, n = W.shape
     if not isinstance(wrench_set, WrenchSet):
@@ -558,8 +587,14 @@ def _generic_status(W, tmin, tmax, off, ws: WrenchSet, status, block_elems: int 
 def static_equilibrium(W, tmin, tmax, w) -> np.ndarray:
     """Static equilibrium ``W[k] τ + w[k] = 0`` with ``tmin ≤ τ ≤ tmax`` for one wrench per
     pose (``w`` ``(N, m)`` or ``(m,)``): the single-wrench case of the wrench-feasible
-    workspace (``000_…`` §2.1.4), by the same hyperplane-shifting test, with an exact LP
-    where ``rank W < m`` (e.g. every pose of a robot with fewer cables than DOF)."""
+    workspace (Rushton 2022, §2.1.4), by the same hyperplane-shifting test, with an exact LP
+    where ``rank W < m`` (e.g. every pose of a robot with fewer cables than DOF).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.4, Eq. 2.11. (docs/references.bib: rushton2022)
+    """
     W = _as_W(W)
     m = W.shape[1]
     return wrench_feasible(W, tmin, tmax, SingleWrench(np.zeros(m)), offset=w)

@@ -5,20 +5,20 @@ tensions ``τ`` with
 
     ``W τ + w = 0``,  ``τ_min ≤ τ ≤ τ_max``
 
-(``000_3d5147f1d4639546.txt`` §2.1.2, Eqs. 2.11 and 2.13; for ``n = m`` the source's
+(Rushton 2022 [1]_, §2.1.2, Eqs. 2.11 and 2.13; for ``n = m`` the source's
 Eq. 2.12 must read ``τ = −W⁻¹ w_ext``: it drops the sign).  With ``n > m`` cables the
 solutions form a polytope and a method picks one of them:
 
 =========================  ===========================================================
 ``lp``                     minimum sum of tensions, a linear program (HiGHS)
 ``qp``                     minimum 2-norm, a quadratic program (active set from the
-                           ``lp`` vertex; Hassan and Khajepour 2008, ref. [23])
-``inf``                    minimum ∞-norm, ``min t`` s.t. ``τ ≤ t`` (Hussein et al. 2021,
-                           ref. [24])
-``closed-form``            Pott, Bruckmann, Mikelsons 2009 (ref. [27])
-``improved-closed-form``   Pott 2014 (ref. [28])
+                           ``lp`` vertex; Hassan and Khajepour 2008 [2]_)
+``inf``                    minimum ∞-norm, ``min t`` s.t. ``τ ≤ t`` (Hussein et al. 2021
+                           [3]_)
+``closed-form``            Pott, Bruckmann, Mikelsons 2009 [4]_
+``improved-closed-form``   Pott 2014 [5]_
 ``barycentric``            centroid of the vertices of the polytope of feasible
-                           tensions (Mikelsons, Bruckmann, Hiller, Schramm, ICRA 2008)
+                           tensions (Mikelsons, Bruckmann, Hiller, Schramm 2008 [6]_)
 =========================  ===========================================================
 
 ``lp``, ``qp``, ``inf`` and ``barycentric`` are *exact*: they find a solution whenever
@@ -38,6 +38,27 @@ A method is one function ``f(W, w, tmin, tmax) -> (tensions, infeasible)`` over 
 the status is ``"optimal"`` where the candidate passes verification, else ``"infeasible"``
 where the flag is set, else ``"not-found"``.  Adding a method is adding such a function
 and its entry in :data:`METHODS`.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
+.. [2] M. Hassan, A. Khajepour, "Optimization of actuator forces in cable-based parallel
+   manipulators using convex analysis", IEEE Transactions on Robotics 24(3), 2008.
+   (docs/references.bib: hassan2008)
+.. [3] H. Hussein, J. Cavalcanti Santos, J.-B. Izard, M. Gouttefarde, "Smallest maximum cable
+   tension determination for cable-driven parallel robots", IEEE Transactions on Robotics, 2021.
+   (docs/references.bib: hussein2021)
+.. [4] A. Pott, T. Bruckmann, L. Mikelsons, "Closed-form force distribution for parallel wire
+   robots", Computational Kinematics, Springer, 2009. (docs/references.bib: pott2009)
+.. [5] A. Pott, "An improved force distribution algorithm for over-constrained cable-driven
+   parallel robots", Computational Kinematics, Springer, 2014. (docs/references.bib: pott2014)
+.. [6] L. Mikelsons, T. Bruckmann, M. Hiller, D. Schramm, "A real-time capable force calculation
+   algorithm for redundant tendon-based parallel manipulators", IEEE ICRA, 2008.
+   (docs/references.bib: mikelsons2008)
+.. [7] M. Gouttefarde, J. Lamaury, C. Reichert, T. Bruckmann, "A Versatile Tension Distribution
+   Algorithm for n-DOF Parallel Robots Driven by n+2 Cables", IEEE Transactions on Robotics
+   31(6), 2015. (docs/references.bib: gouttefarde2015)
 """
 
 from __future__ import annotations
@@ -254,7 +275,7 @@ def _program(W, w, tmin, tmax, objective: str):
 
 def _lp(W, w, tmin, tmax):
     """Minimum sum of tensions ``min Σ τᵢ`` — a linear program solved by HiGHS (dual
-    simplex, warm-started from the previous pose); ``000_…`` §2.1.2 and §6 (the LP
+    simplex, warm-started from the previous pose); Rushton (2022), §2.1.2 and §6 (the LP
     tension distribution used for the experiments)."""
     return _program(W, w, tmin, tmax, "lp")
 
@@ -310,7 +331,7 @@ def _min_norm_active_set(W, w, lo, hi, tau) -> np.ndarray:
 
 
 def _qp(W, w, tmin, tmax):
-    """Minimum 2-norm ``min ½‖τ‖²`` (Hassan and Khajepour 2008, ref. [23] of ``000_…``),
+    """Minimum 2-norm ``min ½‖τ‖²`` (Hassan and Khajepour 2008, ref. [23] of Rushton 2022),
     a strictly convex QP: the ``lp`` program decides feasibility and gives a feasible
     vertex, from which :func:`_min_norm_active_set` descends to the exact minimiser.
     (HiGHS's own QP solver was tried and rejected: on some problems with tiny bounds it
@@ -323,7 +344,7 @@ def _qp(W, w, tmin, tmax):
 
 def _inf(W, w, tmin, tmax):
     """Minimum ∞-norm ``min t`` s.t. ``τᵢ ≤ t`` — a linear program solved by HiGHS
-    (Hussein, Cavalcanti Santos, Izard, Gouttefarde 2021, ref. [24] of ``000_…``).  Only
+    (Hussein, Cavalcanti Santos, Izard, Gouttefarde 2021, ref. [24] of Rushton 2022).  Only
     the largest tension is minimised: the others are those of one optimal vertex."""
     return _program(W, w, tmin, tmax, "inf")
 
@@ -371,7 +392,7 @@ def _pott(W, w, tmin, tmax, iterations: int):
 
 def _closed_form(W, w, tmin, tmax):
     """Closed-form force distribution of Pott, Bruckmann and Mikelsons (2009, ref. [27] of
-    ``000_…``): ``τ = τm − W⁺(w + W τm)`` with ``τm = (τ_min + τ_max)/2``, the tensions
+    Rushton 2022): ``τ = τm − W⁺(w + W τm)`` with ``τm = (τ_min + τ_max)/2``, the tensions
     nearest to the middle of the bounds in the 2-norm, ignoring the bounds; accepted only
     if they satisfy them, else ``"not-found"``.  A cable without upper bound (``τ_max =
     ∞``) uses ``τm = τ_min``.  Batched pseudo-inverse over all poses."""
@@ -379,7 +400,7 @@ def _closed_form(W, w, tmin, tmax):
 
 
 def _improved_closed_form(W, w, tmin, tmax):
-    """Improved closed-form force distribution of Pott (2014, ref. [28] of ``000_…``): the
+    """Improved closed-form force distribution of Pott (2014, ref. [28] of Rushton 2022): the
     closed form of :func:`_closed_form`; while a tension violates its bounds and ``W`` of
     the remaining cables keeps redundancy (more cables than its rank), fix the cable with
     the largest violation at that bound, move its wrench to the right-hand side, drop its
@@ -507,7 +528,7 @@ def _barycentric(W, w, tmin, tmax):
       interior (e.g. ``τ_min = τ_max`` for a cable) is reduced to its affine hull first.
 
     This is the vertex centroid of Mikelsons et al., not the centre of volume (the area
-    centroid of Gouttefarde et al. 2015 for ``r = 2``): the vertex centroid may jump when a
+    centroid of Gouttefarde et al. 2015 (docs/references.bib: gouttefarde2015) for ``r = 2``): the vertex centroid may jump when a
     vertex appears, but its cost stays small as ``r`` grows (the volume centroid needs a
     triangulation whose cost explodes beyond ``r ≈ 6``).  The number of vertices still
     grows quickly with ``r``: this method is meant for small redundancy.
@@ -612,7 +633,13 @@ def solve_tensions(W, w, tmin, tmax, method: str = "lp") -> TensionResult:
     (either may be shared by all poses), the bounds ``(n,)`` (``tmax`` may be ``inf``) or
     ``(N, n)``.  ``method`` is one of :data:`METHODS`.  A pose without a solution gets zero
     tensions, ``feasible = False`` and status ``"infeasible"`` (proved) or ``"not-found"``.
-    Raises :class:`TautError` for bad input or an unknown method."""
+    Raises :class:`TautError` for bad input or an unknown method.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
+    """
     if method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
     W, w, tmin, tmax, single = _inputs(W, w, tmin, tmax)
@@ -630,7 +657,13 @@ def distribute_tensions(robot, poses, wrench=None, method: str = "lp") -> Tensio
     ``W`` from :func:`taut.kinematics.inverse_kinematics`, the external wrench ``wrench``
     (``(m,)`` shared by all poses or ``(N, m)``; default
     :func:`taut.statics.wrench.external_wrench`, the robot's own wrench and weight) and the
-    bounds ``robot.tension_bounds``.  See :func:`solve_tensions`."""
+    bounds ``robot.tension_bounds``.  See :func:`solve_tensions`.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
+    """
     if method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
     W = inverse_kinematics(robot, poses).structure_matrix

@@ -1,14 +1,22 @@
 """External wrenches and wrench sets.
 
-The external wrench on the platform (``000_3d5147f1d4639546.txt`` Eq. 2.11 writes
+The external wrench on the platform (Rushton 2022, Eq. 2.11 writes
 equilibrium as ``W τ = −w_ext``) is the robot's constant wrench plus its weight, both
 applied at ``platform.wrench_point``, with moments taken about the platform reference
 point ``p``.
 
 A wrench set is described by its support function ``h(n) = max_{w ∈ set} n·w``; every
 convex set below (a single wrench, a box, a polytope given by its vertices, and the
-ellipsoid ``{c + L v : ‖v‖ ≤ 1}`` of ``002_19d5d688a3999fb0.txt`` §2) provides it, which is
+ellipsoid ``{c + L v : ‖v‖ ≤ 1}`` of Bohigas et al. (2013), §2) provides it, which is
 all the wrench-feasibility tests of :mod:`taut.statics.feasibility` need.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Eq. 2.11. (docs/references.bib: rushton2022)
+.. [2] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §2. (docs/references.bib: bohigas2013)
 """
 
 from __future__ import annotations
@@ -139,7 +147,7 @@ class PolytopeWrenchSet(WrenchSet):
 @dataclass(frozen=True)
 class EllipsoidWrenchSet(WrenchSet):
     """The ellipsoid ``{c + L v : ‖v‖ ≤ 1}`` with ``shape = L Lᵀ`` positive semi-definite
-    (``002_…`` §2: the wrench uncertainty ``(w − w0)ᵀ E⁻¹ (w − w0) ≤ 1``, ``E = shape``)."""
+    (Bohigas et al. 2013, §2: the wrench uncertainty ``(w − w0)ᵀ E⁻¹ (w − w0) ≤ 1``, ``E = shape``)."""
 
     center_wrench: np.ndarray
     shape: np.ndarray

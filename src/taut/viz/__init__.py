@@ -1,4 +1,4 @@
-"""Figures and the HTML report (``DESIGN.md`` §1: ``viz`` reads model, kinematics, statics
+"""Figures and the HTML report (``docs/architecture.md`` §1: ``viz`` reads model, kinematics, statics
 and workspace results; it never imports ``cli``).
 
 - :func:`draw_robot` — a robot at one pose (planar: 2-D axes; spatial: 3-D axes);

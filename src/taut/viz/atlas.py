@@ -1,7 +1,13 @@
-"""Figures of a structure atlas (Figs. 5.4 and 5.9 of ``000_3d5147f1d4639546.txt``):
+"""Figures of a structure atlas (Figs. 5.4 and 5.9 of Rushton 2022):
 :func:`plot_atlas` — the charts in grey (darker where they overlap) with their traversable
 edges, the start point (and a rigid platform's outline there, at the page's orientation), and, given a workspace (Alg. 5.2), the workspace in purple over
-the charts kept; :func:`atlas_section`, the demo's atlas of the T-shaped VSCR."""
+the charts kept; :func:`atlas_section`, the demo's atlas of the T-shaped VSCR.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Figs. 5.4 and 5.9, Alg. 5.2. (docs/references.bib: rushton2022)
+"""
 
 from __future__ import annotations
 
@@ -137,7 +143,7 @@ def atlas_section(report: Report) -> None:
     rate = len(Q) / (time.perf_counter() - t0)
     reach = atlas.reachable_area().area
     text = (
-        f"Structure atlas of the T-shaped VSCR (§5.1.3, Alg. 5.1 of 000_3d5147f1d4639546.txt) from the start point "
+        f"Structure atlas of the T-shaped VSCR (§5.1.3, Alg. 5.1 of Rushton 2022) from the start point "
         f"{list(start)}: {len(atlas.charts)} charts (one per reachable structure and SRA component), "
         f"{atlas.n_edges} adjacent pairs, built in {t_build:.2f} s. The charts cover {reach:.4f} m² of the "
         f"{atlas.space.area:.4f} m² installation space: the rest is inside the idlers and the winch pulleys. "

@@ -1,7 +1,14 @@
-"""Figures of a trajectory check (:func:`taut.collision.check_poses`, ``004_…`` §4.2):
+"""Figures of a trajectory check (:func:`taut.collision.check_poses`, Lieskovský (2020), §4.2):
 :func:`plot_check` — the smallest clearance ``ε`` and the singularity flags over the steps,
 and the robot at the first step with a problem, its colliding capsules in red; and
-:func:`check_section`, the demo's check of simulation c of ``adjustable-8cable``."""
+:func:`check_section`, the demo's check of simulation c of ``adjustable-8cable``.
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §4.2.
+   (docs/references.bib: lieskovsky2020)
+"""
 
 from __future__ import annotations
 
@@ -81,7 +88,7 @@ def check_section(report: Report) -> None:
     first = res.first(res.collides)
     pairs = ", ".join(f"{i + 1} & {j + 1}" for i, j in res.proximity.collisions(first - 1)) if first else "none"
     text = (
-        "Simulation c of 004_f30792d78b61e7c2.txt §4.2.2: the adjustable platform (two bodies joined by a "
+        "Simulation c of Lieskovský 2020, §4.2.2: the adjustable platform (two bodies joined by a "
         "prismatic joint, 8 cables) rotates about x from 0 to π/8 in 100 steps with the joint retracted "
         f"(s23 = 2). Capsule model: cables of radius 0.1, the two rectangles and the joint column. First "
         f"self-collision at step {first} between cables {pairs} (the source reports step 71, cables 1 & 5 and "

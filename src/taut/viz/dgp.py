@@ -1,10 +1,16 @@
 """Figures of the geometrico-static problems of under-constrained robots
-(``001_eb92e2f6589fc229.txt`` Ch. 2–4).
+(Berti 2015, Ch. 2–4).
 
 :func:`plot_equilibria` draws every equilibrium of a DGP solve, one panel each (the
 drawings of Fig. 4.7); :func:`plot_tracking` shows a run of tracking forward kinematics
 (§4.1.2) — platform position and cable tensions per update, taut-set changes marked;
 :func:`dgp_section` adds both, on the robot of Table 4.3, to the ``taut demo`` report.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, Chs. 2–4, Table 4.3, Fig. 4.7, §4.1.2. (docs/references.bib: berti2015)
 """
 
 from __future__ import annotations
@@ -128,7 +134,7 @@ def dgp_section(report: Report) -> None:
         "Under-constrained robots: every equilibrium, then tracking",
         text=(
             "All equilibria of the suspended 3-cable robot for the cable lengths of Table 4.3 "
-            "(001_eb92e2f6589fc229.txt §4.2.1): certified branch-and-prune over every set of taut cables, "
+            "(Berti 2015, §4.2.1): certified branch-and-prune over every set of taut cables, "
             "stability by the reduced Hessian (§3.2.2).  Then tracking forward kinematics (§4.1.2) from "
             "the stable equilibrium: one Newton step certified by the Krawczyk operator per update; "
             "when cable 2's tension reaches zero the robot hangs from cables 1 and 3."

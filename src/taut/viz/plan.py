@@ -1,9 +1,16 @@
-"""Figures of a wrench-feasible path (``002_19d5d688a3999fb0.txt`` §5, Figs. 5–6):
+"""Figures of a wrench-feasible path (Bohigas et al. 2013, §5, Figs. 5–6):
 :func:`slice_map` — the discretised wrench-feasible C-space of a 2-D slice (Fig. 5: green
 feasible, blue some tension out of range, red some length out of range);
 :func:`plot_plan` — that map with the explored atlas and the path (Fig. 6, top), and the
 tension envelope ``f_0 ± v_ii`` of every cable along the path (Fig. 6, bottom); and
-:func:`plan_section`, the demo's Robocrane query q1 → q2."""
+:func:`plan_section`, the demo's Robocrane query q1 → q2.
+
+References
+----------
+.. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §5, Figs. 5–6. (docs/references.bib: bohigas2013)
+"""
 
 from __future__ import annotations
 
@@ -92,8 +99,8 @@ def slice_map(
 def _plan_limits(
     manifold: WrenchFeasibleManifold, centres: np.ndarray, axes: Sequence[str]
 ) -> list[tuple[float, float]]:
-    """Limits of the map of :func:`plot_plan`: the natural range of an angle, the span of the
-    chart centres (padded by a tenth, at least 0.1) for a position coordinate."""
+    """Limits of the map of :func:`plot_plan`: the natural range of ``φ`` and ``θ``, the span
+    of the chart centres (padded by a tenth, at least 0.1) for any other coordinate."""
     angles = _angle_limits(manifold)
     out = []
     for a in axes:
@@ -114,8 +121,8 @@ def plot_plan(
     grid: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
     fig: Figure | None = None,
 ) -> Figure:
-    """Figure: the slice map ``grid`` (from :func:`slice_map`, computed if ``None``: an angle
-    over its natural range, a position coordinate over the span of the chart centres) with
+    """Figure: the slice map ``grid`` (from :func:`slice_map`, computed if ``None``: ``φ``
+    and ``θ`` over their natural range, another coordinate over the span of the chart centres) with
     the atlas' chart centres (closed charts dark, open ones light) and the path in red
     (left), and the extreme tensions ``f_0 − v_ii`` (lower) and ``f_0 + v_ii`` (upper) of
     each cable along the path against its length, with the tension bounds dashed (right).
@@ -217,7 +224,7 @@ def plan_section(report: Report, radius: float = 0.2) -> PathResult:
         "Wrench-feasible path planning (Robocrane)",
         text=(
             "A path from q1 to q2 on the slice p = (0, 0, 2), σ = 35° of the Robocrane's "
-            "wrench-feasible C-space (002_19d5d688a3999fb0.txt §5, Figs. 5–6): Henderson's "
+            "wrench-feasible C-space (Bohigas et al. 2013, §5, Figs. 5–6): Henderson's "
             "atlas of Eqs. (1)–(8) expanded in A* order, every interpolated pose of the path "
             "then checked by the general wrench-feasibility test.\n\n"
             "The cable pairing is our reading of §5 (robocrane.yaml, reference.notes)."

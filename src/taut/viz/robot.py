@@ -1,7 +1,7 @@
 """Drawing of a robot at one pose: :func:`draw_robot`.
 
 Planar robots (2-D axes, equal aspect) are drawn like the configuration figures of the
-variable-structure robots of ``000_3d5147f1d4639546.txt`` (Figs. 6.5, 6.12, 6.19: the
+variable-structure robots of Rushton (2022) (Figs. 6.5, 6.12, 6.19: the
 installation space, grey disallowed regions, circular obstacles, the platform and its
 cables in colour; Fig. 3.5 for the installation space): frame exit points (squares,
 labelled with 1-based cable numbers), one straight line per cable from exit point to
@@ -11,13 +11,21 @@ mass as a dot, obstacles (circles, polygons), the installation-space outline and
 shaded disallowed regions.
 
 Spatial robots (3-D ``mplot3d`` axes, equal scale on all axes) are drawn like the
-configurations of simulations a)–d) of ``004_f30792d78b61e7c2.txt`` (Figs. 4.3–4.4):
+configurations of simulations a)–d) of Lieskovský (2020) (Figs. 4.3–4.4):
 exit points, cables, each body as the convex hull of its anchors (faces and edges),
 capsules as thick segments, spherical obstacles as wireframes, and the faint hull of
 the exit points (the frame).
 
-Cables are straight segments ``a_i → b_i`` (``DESIGN.md`` §2); wrapped cables are not
+Cables are straight segments ``a_i → b_i`` (``docs/architecture.md`` §2.4); wrapped cables are not
 drawn here.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Figs. 3.5, 6.5, 6.12, 6.19. (docs/references.bib: rushton2022)
+.. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, Figs. 4.3–4.4.
+   (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations

@@ -3,9 +3,14 @@
 One line per cable (labelled with its 1-based number, in the cable's colour used by every
 taut figure), the tension bounds ``τ_min``/``τ_max`` dashed, and the samples where no
 feasible tension distribution exists shaded in red with a mark on the x axis.  The layout
-follows the per-cable time plots of ``000_3d5147f1d4639546.txt`` (Figs. 4.7, 4.10, 6.10:
+follows the per-cable time plots of Rushton (2022) (Figs. 4.7, 4.10, 6.10:
 one curve per cable over the trajectory, markers at events), with tensions in place of
 lengths.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Figs. 4.7, 4.10, 6.10. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations

@@ -1,9 +1,14 @@
-"""Figures of a VSCR trajectory (Figs. 4.7, 4.10, 6.10 and 4.8, 4.9 of ``000_3d5147f1d4639546.txt``).
+"""Figures of a VSCR trajectory (Figs. 4.7, 4.10, 6.10 and 4.8, 4.9 of Rushton 2022).
 
 :func:`plot_trajectory`: the cable lengths over time with every CST transition marked by a
 black circle (wrap: filled, unwrap: open), above snapshots of the robot in which each
 cable is drawn as its wrapped path — straight segments and arcs.  :func:`trajectory_section`
 adds one trajectory of each VSCR example to the ``taut demo`` report.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Figs. 4.7–4.10, 6.10. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -114,7 +119,7 @@ def trajectory_section(report: Report) -> None:
         "Variable-structure robots: wrapping cables along trajectories",
         text=(
             "Cable states tracked with the cable-state tree and the exact-event form of Alg. 4.4 "
-            "(000_3d5147f1d4639546.txt §4.2–4.3); waypoint moves with 1 s dwells (§6.2), "
+            "(Rushton 2022, §4.2–4.3); waypoint moves with 1 s dwells (§6.2), "
             "Eqs. (4.12)/(4.13) as parametric paths; minimum-sum LP tensions per sample (§6.1.2)."
         ),
         figures=figures,

@@ -3,9 +3,9 @@
 Planar grids (two position axes) are drawn as an image of the inside mask over x–y
 (inside green, outside light grey), with the robot's fixed parts overlaid (exit points
 with cable numbers, frame outline, obstacles, installation space, disallowed regions);
-this is the look of the approximate workspaces of ``000_3d5147f1d4639546.txt``
+this is the look of the approximate workspaces of Rushton (2022)
 (Figs. 5.9 c, 6.5, 6.12) and of the constant-orientation WFW slice of
-``001_eb92e2f6589fc229.txt`` (Fig. 4.4).  A spatial grid with one axis of a single value
+Berti (2015) (Fig. 4.4).  A spatial grid with one axis of a single value
 is such a slice too.  Full spatial grids are a 3-D scatter of the inside poses (randomly
 subsampled, with a fixed seed, beyond ``max_points``), coloured by height, over the exit
 points.  The title names the condition and the inside fraction.
@@ -14,6 +14,14 @@ The result is duck-typed (:class:`GridWorkspace`): anything with ``condition``,
 ``poses (N, pose_size)``, ``inside (N,)``, ``axes`` (1-D coordinates per position axis) and
 ``grid_shape`` (``inside.reshape(grid_shape)`` in C order, axes x, y[, z]) is drawn;
 ``fraction`` is used when present.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Figs. 5.9c, 6.5, 6.12. (docs/references.bib: rushton2022)
+.. [2] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, Fig. 4.4. (docs/references.bib: berti2015)
 """
 
 from __future__ import annotations

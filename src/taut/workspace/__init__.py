@@ -1,6 +1,12 @@
-"""Workspaces (``000_3d5147f1d4639546.txt`` §2.1.4): conditions (wrench closure, wrench
+"""Workspaces (Rushton 2022, §2.1.4): conditions (wrench closure, wrench
 feasibility, static equilibrium) in a registry, pose grids, and grid evaluation over an
-executor of :mod:`taut.parallel`."""
+executor of :mod:`taut.parallel`.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+"""
 
 from taut.workspace.conditions import (
     CONDITIONS,

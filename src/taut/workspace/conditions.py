@@ -1,4 +1,4 @@
-"""Workspace conditions (``000_3d5147f1d4639546.txt`` §2.1.4): one base interface and a
+"""Workspace conditions (Rushton 2022, §2.1.4): one base interface and a
 registry, so that adding a condition is adding one class and one entry of
 :data:`CONDITIONS`.
 
@@ -11,12 +11,20 @@ registry, so that adding a condition is adding one class and one entry of
   (fewer cables than degrees of freedom), through the exact LP of
   :mod:`taut.statics.feasibility`;
 * ``interference-free`` — no two capsules of the collision model interfere (cable–cable,
-  cable–platform body; ``004_…`` §3.4, :mod:`taut.collision`).  Cables of radius 0 are
+  cable–platform body; Lieskovský (2020), §3.4, :mod:`taut.collision`).  Cables of radius 0 are
   lines; cables sharing an end point (a point-mass platform) are compared without the
   shared end (see :mod:`taut.collision.capsules`).
 
 A condition maps an array of poses ``(N, pose_size)`` to ``(N,)`` bool.  Poses where the
 inverse kinematics does not exist (a zero-length cable) are outside.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+.. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §3.4.
+   (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations
@@ -164,7 +172,7 @@ class StaticEquilibrium(WrenchCondition):
 
 class InterferenceFree(WorkspaceCondition):
     name = "interference-free"
-    description = "no cable–cable or cable–platform interference of the capsule model (004_… §3.4)"
+    description = "no cable–cable or cable–platform interference of the capsule model (Lieskovský 2020, §3.4)"
 
     def evaluate(self, robot, poses):
         return proximity(robot, np.asarray(poses, dtype=float)).interference_free

@@ -1,8 +1,13 @@
-"""Grid evaluation of a workspace condition (``000_3d5147f1d4639546.txt`` §2.1.4): the
+"""Grid evaluation of a workspace condition (Rushton 2022, §2.1.4): the
 poses of a :class:`~taut.workspace.grid.PoseGrid` are split into chunks, each chunk is
 tested in one vectorised call of the condition, and the chunks are mapped over an
 executor of :mod:`taut.parallel` (serial, local processes or dask.distributed — the
 verdicts are identical whatever the executor).
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Pose grids for workspace evaluation by discretisation (``000_3d5147f1d4639546.txt``
+"""Pose grids for workspace evaluation by discretisation (Rushton (2022)
 §2.1.4: "discretizing the installation space into a grid of end effector poses and
 testing each one").
 
@@ -7,6 +7,11 @@ other coordinates being held fixed: either a *position grid* (x, y[, z] gridded,
 orientation and joint coordinates fixed — a constant-orientation workspace) or a *full
 pose grid* (every pose coordinate gridded).  Poses are listed in C order, so that
 ``inside.reshape(grid.shape)`` indexes ``[ix, iy(, iz)]``.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations

@@ -1,5 +1,11 @@
-"""Collidable cables of planar variable-structure CDPRs (Chs. 3–4, 6 of ``000_3d5147f1d4639546.txt``):
-cable state (§4.1), cable-state tree (§4.2.1), state update (§4.2.2), VSCR IK (§4.3), trajectories (§6.2)."""
+"""Collidable cables of planar variable-structure CDPRs (Chs. 3–4, 6 of Rushton 2022):
+cable state (§4.1), cable-state tree (§4.2.1), state update (§4.2.2), VSCR IK (§4.3), trajectories (§6.2).
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Chs. 3–4 (§4.1–4.3) and Ch. 6 (§6.2). (docs/references.bib: rushton2022)
+"""
 
 from taut.wrapping.ik import WrappedIK, wrapped_inverse_kinematics
 from taut.wrapping.state import CablePath, CableState, rebuild_path

@@ -1,4 +1,4 @@
-"""Inverse kinematics of planar variable-structure CDPRs (VSCRs) along a path (§4.3 of ``000_3d5147f1d4639546.txt``).
+"""Inverse kinematics of planar variable-structure CDPRs (VSCRs) along a path (§4.3 of Rushton 2022).
 
 Two stages per sample (§4.3): update every cable's state for the new platform pose with
 Alg. 4.4 (:func:`taut.wrapping.update.track`), then turn states into lengths with
@@ -14,6 +14,11 @@ starts in the state given by ``initial`` (its wrapped objects and directions) or
 default, in the shortest taut admissible state at the first pose
 (:meth:`CableStateTree.shortest_taut_state`).  Its winch-pulley arc is counted from the
 exit angle at that first pose (the calibration pose of §6.1.2).
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §4.3, Eqs. 4.8–4.9, Alg. 4.4. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -136,7 +141,13 @@ def wrapped_inverse_kinematics(robot: Robot, poses, initial: dict | None = None)
     """Track every cable of a planar VSCR along ``poses`` (``(T, pose_size)``, consecutive
     poses joined by straight moves of the anchors) and compute lengths and structure
     matrices (§4.3).  ``initial`` maps a 0-based cable index to its starting state
-    ``[(object index, ±1), ...]``; a start state that is not taut raises :class:`TautError`."""
+    ``[(object index, ±1), ...]``; a start state that is not taut raises :class:`TautError`.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.3, Alg. 4.4, Eq. 4.9. (docs/references.bib: rushton2022)
+    """
     arr, _ = as_poses(robot, poses)
     circles, polys = collidable_objects(robot)
     b = np.asarray(anchor_points(robot, arr), float)

@@ -1,4 +1,4 @@
-"""Cable state of a collidable cable and the path it stands for (§4.1 of ``000_3d5147f1d4639546.txt``).
+"""Cable state of a collidable cable and the path it stands for (§4.1 of Rushton 2022).
 
 A cable runs from its winch (the exit pulley, a circle ``(a, r_0)`` turned in direction
 ``d_0``, or a point) over a sequence of circular objects to the platform anchor ``b``.
@@ -15,6 +15,11 @@ object.  Wrap angles about objects are taken in ``[−π/2, 3π/2)`` (a taut cab
 ``φ ≥ 0``; one that wrapped more than 3π/2 would cross itself).  On the winch pulley the
 arc is counted from a reference angle (the exit angle at which the winch was calibrated,
 §6.1.2) with ``φ_0 ∈ [−π, π)``, so that lengths are continuous over the workspace.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §4.1 (§4.1.1, Alg. 4.1), Appendix A. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -87,7 +92,13 @@ def rebuild_path(circles, winch_direction: int, state: CableState, b) -> CablePa
     """The path of a cable in ``state`` whose platform end is at ``b`` (§4.1.1).
 
     ``circles`` is ``(K + 1, 3)``: ``(x, y, r)`` of the objects, the winch pulley last.
-    Raises :class:`TautError` if a tangent does not exist (``b`` inside an object)."""
+    Raises :class:`TautError` if a tangent does not exist (``b`` inside an object).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.1.1, Alg. 4.1. (docs/references.bib: rushton2022)
+    """
     circles = np.asarray(circles, float)
     K = len(circles) - 1
     chain = [(K, winch_direction)] + [(int(k), int(d)) for k, d in state.contacts]

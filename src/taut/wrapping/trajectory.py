@@ -1,4 +1,4 @@
-"""VSCR trajectories: waypoints or a parametric path, IK, tensions (§4.4, §6.1.2, §6.2 of ``000_3d5147f1d4639546.txt``).
+"""VSCR trajectories: waypoints or a parametric path, IK, tensions (§4.4, §6.1.2, §6.2 of Rushton 2022).
 
 *Waypoint sequences* (§6.2): the end effector moves on a straight line between
 consecutive waypoints at constant ``speed`` and rests ``dwell`` seconds at each one (1 s
@@ -13,6 +13,11 @@ the same anchor, since "if multiple cables have the same anchor points, one at m
 length controlled" — and a tension distribution by linear programming (minimum total
 tension within the bounds, :func:`taut.statics.tension.solve_tensions`, ``method="lp"``);
 samples without a feasible distribution are reported.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §4.4 (Eqs. 4.12–4.13), §6.1.2, §6.2. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -163,7 +168,13 @@ class TrajectoryResult:
 def run_trajectory(
     robot: Robot, times, poses, initial: dict | None = None, wrench=None, tension_bounds=None
 ) -> TrajectoryResult:
-    """IK, length-control assignment and LP tensions at every sample of ``(times, poses)``."""
+    """IK, length-control assignment and LP tensions at every sample of ``(times, poses)``.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.4, §6.2. (docs/references.bib: rushton2022)
+    """
     times = np.asarray(times, float)
     P = full_poses(robot, poses)
     if len(times) != len(P):

@@ -1,4 +1,4 @@
-"""Cable-state tree (CST) of a collidable cable (§4.2.1, Algs. 4.2–4.3 of ``000_3d5147f1d4639546.txt``).
+"""Cable-state tree (CST) of a collidable cable (§4.2.1, Algs. 4.2–4.3 of Rushton 2022).
 
 Each node is one possible *static* segment of the cable: the common tangent leaving the
 object of its parent (the root is the winch pulley) and arriving on object ``obj`` with
@@ -22,6 +22,11 @@ start and end points, its unit direction, its length, the entry angle about ``ob
 cable length from the winch reference up to the entry point and the wrap direction;
 ``I[n]`` holds the parent, the object, the first child and the number of children (``−1``
 while unexpanded).  The children of a node are contiguous.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §4.2.1, Algs. 4.2–4.3. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -52,7 +57,13 @@ class CableStateTree:
     ``circles`` ``(K + 1, 3)``: ``(x, y, r)`` of the ``K`` collidable objects followed by
     the winch pulley (radius 0 for a point exit); ``winch_direction`` ``±1``;
     ``disallowed`` a list of polygons ``(V, 2)``; ``reference_angle`` the winch-pulley
-    angle from which the pulley arc is counted (:mod:`taut.wrapping.state`)."""
+    angle from which the pulley arc is counted (:mod:`taut.wrapping.state`).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.2.1, Algs. 4.2–4.3. (docs/references.bib: rushton2022)
+    """
 
     def __init__(self, circles, winch_direction: int = 1, disallowed=(), reference_angle: float = 0.0):
         self.circles = np.ascontiguousarray(circles, dtype=float)

@@ -1,4 +1,4 @@
-"""Cable-state update along a motion of the platform end (§4.2.2, Alg. 4.4 of ``000_3d5147f1d4639546.txt``).
+"""Cable-state update along a motion of the platform end (§4.2.2, Alg. 4.4 of Rushton 2022).
 
 Between two samples the platform anchor moves on a straight line ``b(τ) = b₀ + τ (b₁ − b₀)``,
 ``τ ∈ [0, 1]``.  Alg. 4.4 compares the angle swept by the active segment with the angles of
@@ -36,6 +36,11 @@ yet; :func:`track` expands it and resumes.
 
 A rigid platform's anchor moves on a curve when the platform turns: callers sample it
 finely enough (``taut.wrapping.ik``) that the chord is the motion.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §4.2.2, Alg. 4.4. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
@@ -148,7 +153,13 @@ class Tracking:
 
 def track(tree: CableStateTree, points, node: int = 0) -> Tracking:
     """Update the state of a cable whose platform end visits ``points`` (``(T, 2)``, a
-    polyline of straight moves) from state ``node`` at ``points[0]`` (Alg. 4.4 per step)."""
+    polyline of straight moves) from state ``node`` at ``points[0]`` (Alg. 4.4 per step).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.2.2, Alg. 4.4. (docs/references.bib: rushton2022)
+    """
     P = np.ascontiguousarray(points, dtype=float)
     T = len(P)
     nodes = np.zeros(T, dtype=np.int64)
@@ -189,5 +200,11 @@ def track(tree: CableStateTree, points, node: int = 0) -> Tracking:
 
 
 def update_state(tree: CableStateTree, node: int, b0, b1) -> int:
-    """One state update (Alg. 4.4): the tracked node after the platform end moves ``b0 → b1``."""
+    """One state update (Alg. 4.4): the tracked node after the platform end moves ``b0 → b1``.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.2.2, Alg. 4.4. (docs/references.bib: rushton2022)
+    """
     return int(track(tree, np.array([b0, b1], float), node).nodes[-1])
