@@ -46,13 +46,14 @@ DEFAULT_SHRINK = 0.02
 
 
 def format_bytes(n: int) -> str:
-    """``n`` bytes in binary units (``"3.0 GiB"``), for messages."""
+    """``n`` bytes in binary units (``"3 GiB"``), for messages."""
     size = float(n)
-    for unit in ("B", "KiB", "MiB", "GiB", "TiB", "PiB"):
-        if size < 1024 or unit == "PiB":
-            break
+    units = ("B", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB", "ZiB", "YiB")
+    for unit in units[:-1]:
+        if size < 1024:
+            return f"{size:.3g} {unit}"
         size /= 1024
-    return f"{size:.3g} {unit}" if unit != "PiB" or size < 1e6 else f"{size:.3e} {unit}"
+    return f"{size:.3g} {units[-1]}"
 
 
 def check_grid_size(counts: Sequence[int], pose_size: int) -> int:
