@@ -388,3 +388,24 @@ def test_a_large_grid_runs_in_bounded_memory():
     assert full == "refused"  # the limit would have stopped a full pose array
     assert int(growth_kib) < 24 * 1024  # verdicts (2 MB) and a few chunks' work
     assert same == "True"
+
+
+def test_a_grid_too_large_to_list_its_poses_still_plots():
+    """27 M poses (the ``--grid 300`` grid of spatial-8cable): 1.2 GiB of poses, refused as
+    one array; the figure computes only the poses it draws."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from taut.viz import plot_workspace
+
+    grid = position_grid(SPATIAL, 300, orientation=[0.0, 0.1, 0.0])
+    X, Y, Z = np.meshgrid(*grid.axes, indexing="ij", sparse=True)
+    box = ((np.abs(X) < 0.5) & (np.abs(Y) < 0.3) & (np.abs(Z) < 0.5)).ravel()  # bool only: 27 MB
+    res = WorkspaceResult(SPATIAL.name, "static", box, grid.axes, grid.shape, 0.0, ("x", "y", "z"), grid)
+    with pytest.raises(GridSizeError):
+        _ = res.poses
+    ax = plot_workspace(res, SPATIAL, max_points=500)
+    (scatter,) = [c for c in ax.collections if c.get_gid() == "workspace"]
+    pts = np.column_stack(scatter._offsets3d)
+    assert pts.shape == (500, 3) and np.all(np.abs(pts) < [0.5, 0.3, 0.5])
+    assert "b=0.1" in ax.get_title() and "a=0" in ax.get_title()
