@@ -1,5 +1,6 @@
 """Workspace conditions, grids and grid evaluation."""
 
+import json
 import subprocess
 import sys
 
@@ -409,3 +410,30 @@ def test_a_grid_too_large_to_list_its_poses_still_plots():
     pts = np.column_stack(scatter._offsets3d)
     assert pts.shape == (500, 3) and np.all(np.abs(pts) < [0.5, 0.3, 0.5])
     assert "b=0.1" in ax.get_title() and "a=0" in ax.get_title()
+
+
+def test_save_and_load_keep_the_poses_without_storing_those_of_a_grid(tmp_path):
+    res = evaluate_workspace(SPATIAL, "static", grid=[(-0.3, 0.3, 20), (-0.3, 0.3, 20), (-0.3, 0.3, 20)])
+    res.save(tmp_path / "grid.npz")
+    with np.load(tmp_path / "grid.npz") as f:
+        assert "poses" not in f.files  # the grid's definition stands for its poses
+    back = WorkspaceResult.load(tmp_path / "grid.npz")
+    assert np.array_equal(back.poses, res.poses) and np.array_equal(back.inside, res.inside)
+    explicit = evaluate_workspace(SPATIAL, "static", poses=res.poses[::7])
+    explicit.save(tmp_path / "poses.npz")
+    again = WorkspaceResult.load(tmp_path / "poses.npz")
+    assert again.grid is None and np.array_equal(again.poses, res.poses[::7])
+    assert np.array_equal(again.inside, res.inside[::7]) and again.grid_shape == (len(res.poses[::7]),)
+    # the first format stored the poses themselves
+    meta = {"robot": "r", "condition": "static", "grid_shape": [20, 20, 20], "elapsed_s": 1.0}
+    np.savez_compressed(
+        tmp_path / "v1.npz",
+        poses=res.poses,
+        inside=res.inside,
+        metadata=np.array(json.dumps(meta | {"format": "taut-workspace/1"})),
+        **{f"axis_{i}": a for i, a in enumerate(res.axes)},
+    )
+    old = WorkspaceResult.load(tmp_path / "v1.npz")
+    assert np.array_equal(old.poses, res.poses) and old.measure == res.measure
+    with pytest.raises(TautError, match="not a taut workspace file"):
+        WorkspaceResult.load(tmp_path / "nothing.npz")
