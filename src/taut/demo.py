@@ -71,7 +71,7 @@ def standard_model_section(report: Report, name: str, shift, resolution: int) ->
         f"{resolution}-point-per-axis grid at the home orientation: {summary['inside']} of "
         f"{summary['poses']} poses ({100 * summary['fraction']:.1f} %), {summary['elapsed_s']:.3f} s. "
         f"Minimum-sum tensions (LP, HiGHS) along a straight move of {np.linalg.norm(shift):.2f} m: "
-        f"feasible at {int(res.feasible.sum())} of {len(poses)} poses."
+        f"feasible at {int(np.count_nonzero(res.feasible))} of {len(poses)} poses."
     )
     report.add_section(
         f"{name}: kinematics, tensions, workspace",

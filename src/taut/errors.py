@@ -38,3 +38,8 @@ class UnreachableLengthsError(TautError):
 class TrackingLostError(TautError):
     """Tracking forward kinematics could not certify the equilibrium that follows the
     previous one (no convergence, or no unique solution proven around the step)."""
+
+
+class GridSizeError(TautError):
+    """A grid of more poses than taut evaluates in memory, or an array of its poses larger
+    than it materialises at once."""

@@ -1,11 +1,17 @@
 """Workspace conditions, grids and grid evaluation."""
 
+import json
+import subprocess
+import sys
+
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy.optimize import linprog
 
 import taut
-from taut.errors import PoseError, TautError
+from taut.errors import GridSizeError, PoseError, TautError
 from taut.kinematics import structure_matrix
 from taut.kinematics.batch import batch_structure_matrices
 from taut.model import robot_from_dict
@@ -18,8 +24,10 @@ from taut.workspace import (
     default_wrench_set,
     evaluate_workspace,
     make_condition,
+    pose_grid,
     position_grid,
 )
+from taut.workspace import evaluate as evaluate_module
 
 PLANAR = taut.example("planar-4cable")
 SPATIAL = taut.example("spatial-8cable")
@@ -219,12 +227,213 @@ def test_jointed_robot_uses_the_numpy_path():
     assert res.inside.tolist() == [lp_closure(W[k]) for k in range(64)]
 
 
-def test_batch_structure_matrices_match_inverse_kinematics():
-    rng = np.random.default_rng(2)
-    for robot, size in ((PLANAR, 3), (SPATIAL, 6), (triangle_robot(), 2)):
-        poses = rng.uniform(-0.4, 0.4, (50, size))
-        for conv in ("xyz-fixed", "xyz-moving", "tilt-torsion") if robot.dimension == 3 else (robot.orientation,):
-            r = robot.model_copy(update={"orientation": conv})
-            _, W, ok = batch_structure_matrices(r, poses)
-            assert ok.all()
-            np.testing.assert_allclose(W, structure_matrix(r, poses), atol=1e-14)
+def rot_x(t: float) -> np.ndarray:
+    c, s = np.cos(t), np.sin(t)
+    return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+
+
+def rot_y(t: float) -> np.ndarray:
+    c, s = np.cos(t), np.sin(t)
+    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
+
+
+def rot_z(t: float) -> np.ndarray:
+    c, s = np.cos(t), np.sin(t)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+#: The orientation conventions written out from elementary rotations (DESIGN §2).
+ROTATIONS = {
+    "xyz-fixed": lambda a, b, c: rot_z(c) @ rot_y(b) @ rot_x(a),
+    "xyz-moving": lambda a, b, c: rot_x(a) @ rot_y(b) @ rot_z(c),
+    "tilt-torsion": lambda phi, theta, sigma: rot_z(phi) @ rot_y(theta) @ rot_z(sigma - phi),
+}
+
+
+def reference_structure_matrix(robot, pose: np.ndarray) -> np.ndarray:
+    """W = [u_i ; (R r_i) × u_i] column by column from the cables' raw exit and anchor
+    numbers, u_i = (a_i − b_i)/|a_i − b_i|, b_i = p + R r_i."""
+    d = robot.dimension
+    p = pose[:d]
+    if robot.is_point_mass:
+        R = np.eye(d)
+    elif d == 2:
+        c, s = np.cos(pose[2]), np.sin(pose[2])
+        R = np.array([[c, -s], [s, c]])
+    else:
+        R = ROTATIONS[robot.orientation](*pose[3:6])
+    cols = []
+    for cable in robot.cables:
+        a = np.array(cable.exit, float)
+        r = np.zeros(d) if cable.anchor is None else np.array(cable.anchor, float)
+        Rr = R @ r
+        u = (a - (p + Rr)) / np.linalg.norm(a - (p + Rr))
+        if robot.is_point_mass:
+            cols.append(u)
+        elif d == 2:
+            cols.append(np.array([u[0], u[1], Rr[0] * u[1] - Rr[1] * u[0]]))
+        else:
+            cols.append(np.concatenate([u, np.cross(Rr, u)]))
+    return np.array(cols).T
+
+
+STRUCTURE_ROBOTS = [
+    PLANAR,
+    triangle_robot(),
+    *(SPATIAL.model_copy(update={"orientation": conv}) for conv in ROTATIONS),
+]
+
+
+@given(
+    which=st.integers(0, len(STRUCTURE_ROBOTS) - 1),
+    unit=st.lists(st.floats(-1.0, 1.0), min_size=6, max_size=6),
+)
+@settings(max_examples=150, deadline=None)
+def test_batch_structure_matrices_match_an_independent_computation(which, unit):
+    robot = STRUCTURE_ROBOTS[which]
+    d = robot.dimension
+    lo, hi = robot.exits.min(axis=0), robot.exits.max(axis=0)
+    u = np.array(unit)
+    position = (lo + hi) / 2 + 0.45 * (hi - lo) * u[:d]
+    pose = np.concatenate([position, np.pi * u[d : d + robot.pose_size - d]])
+    _, W, ok = batch_structure_matrices(robot, pose[None])
+    expected = reference_structure_matrix(robot, pose)
+    assert ok[0] and W.shape == (1, *expected.shape)
+    np.testing.assert_allclose(W[0], expected, atol=1e-12)
+
+
+def test_chunked_verdicts_equal_unchunked_ones():
+    """Any chunk and batch size gives the verdicts of one chunk, on a full pose grid and on
+    the same poses given as an array."""
+    grid = [(-0.8, 0.8, 9), (-0.8, 0.8, 7), (-0.4, 0.4, 5)]
+    whole = evaluate_workspace(PLANAR, "wrench-feasible", grid=grid, chunk=10_000)
+    assert 0 < whole.count < whole.size == 315
+
+    @given(chunk=st.integers(1, 400), batch=st.integers(1, 400))
+    @settings(max_examples=25, deadline=None)
+    def check(chunk: int, batch: int) -> None:
+        with pytest.MonkeyPatch.context() as mp:
+            mp.setattr(evaluate_module, "BATCH_POSES", batch)
+            calls = []
+            res = evaluate_workspace(
+                PLANAR, "wrench-feasible", grid=grid, chunk=chunk, progress=lambda d, t: calls.append(d)
+            )
+            explicit = evaluate_workspace(PLANAR, "wrench-feasible", poses=whole.poses, chunk=chunk)
+        assert np.array_equal(res.inside, whole.inside)
+        assert np.array_equal(explicit.inside, whole.inside)
+        assert calls[-1] == 315 and len(calls) == 1 + -(-315 // chunk)
+
+    check()
+
+
+def test_grid_poses_are_generated_on_demand():
+    res = evaluate_workspace(SPATIAL, "static", grid=[(-0.3, 0.3, 4), (-0.3, 0.3, 3), (-0.2, 0.2, 2)])
+    assert res.explicit_poses is None and res.grid is not None
+    X, Y, Z = np.meshgrid(*res.axes, indexing="ij")
+    expected = np.stack([X.ravel(), Y.ravel(), Z.ravel()], axis=1)
+    np.testing.assert_array_equal(res.poses[:, :3], expected)
+    np.testing.assert_array_equal(res.poses_at([23, 0, 5])[:, :3], expected[[23, 0, 5]])
+    assert not res.poses[:, 3:].any()
+    with pytest.raises(TautError, match="indices"):
+        res.poses_at([24])
+    # 2**25 poses of 6 coordinates: 1.5 GiB as one array, refused; single poses are fine
+    huge = pose_grid(SPATIAL, [(-0.1, 0.1, 32)] * 5 + [(0.1, 0.1, 1)])
+    big = WorkspaceResult("r", "static", np.zeros(huge.size, bool), huge.axes, huge.shape, 0.0, grid=huge)
+    with pytest.raises(GridSizeError, match="33,554,432 poses"):
+        _ = big.poses
+    np.testing.assert_allclose(big.poses_at([huge.size - 1]), [[0.1] * 5 + [0.1]])
+
+
+def test_absurd_grids_are_refused_before_any_allocation():
+    with pytest.raises(GridSizeError, match=r"1,000,000,000,000,000,000,000 poses .*EiB"):
+        evaluate_workspace(SPATIAL, "static", resolution=10_000_000)
+    with pytest.raises(GridSizeError, match="1,099,511,627,776 poses"):
+        evaluate_workspace(PLANAR, "static", grid=[(0, 1, 2**20), (0, 1, 2**20)])
+    with pytest.raises(GridSizeError):
+        pose_grid(SPATIAL, [(0, 1, 100)] * 6)
+    assert issubclass(GridSizeError, TautError)
+
+
+BOUNDED_MEMORY_SCRIPT = """
+import resource, sys
+import numpy as np
+import taut
+from taut.workspace import evaluate_workspace
+
+robot = taut.example("planar-4cable")
+grid = [(-0.9, 0.9, 160), (-0.9, 0.9, 125), (-0.5, 0.5, 100)]  # 2,000,000 poses
+evaluate_workspace(robot, "wrench-closure", grid=[(-0.9, 0.9, 3)] * 3, chunk=7)  # warm up
+vm = next(int(line.split()[1]) for line in open("/proc/self/status") if line.startswith("VmSize")) * 1024
+headroom = 32 << 20  # below the 48 MB of the full (2e6, 3) pose array
+resource.setrlimit(resource.RLIMIT_AS, (vm + headroom, vm + headroom))
+before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+res = evaluate_workspace(robot, "wrench-closure", grid=grid)
+growth = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - before
+pick = np.random.default_rng(0).choice(res.size, 2000, replace=False)
+sample = evaluate_workspace(robot, "wrench-closure", poses=res.poses_at(pick))
+try:
+    np.ones((res.size, 3))
+    full = "allocated"
+except MemoryError:
+    full = "refused"
+print(res.size, res.count, growth, full, bool(np.array_equal(sample.inside, res.inside[pick])))
+"""
+
+
+def test_a_large_grid_runs_in_bounded_memory():
+    """2 M poses under an address-space limit that a (2e6, 3) pose array does not fit in."""
+    out = subprocess.run([sys.executable, "-c", BOUNDED_MEMORY_SCRIPT], capture_output=True, text=True, timeout=600)
+    assert out.returncode == 0, out.stderr
+    size, count, growth_kib, full, same = out.stdout.split()
+    assert int(size) == 2_000_000 and 0 < int(count) < 2_000_000
+    assert full == "refused"  # the limit would have stopped a full pose array
+    assert int(growth_kib) < 24 * 1024  # verdicts (2 MB) and a few chunks' work
+    assert same == "True"
+
+
+def test_a_grid_too_large_to_list_its_poses_still_plots():
+    """27 M poses (the ``--grid 300`` grid of spatial-8cable): 1.2 GiB of poses, refused as
+    one array; the figure computes only the poses it draws."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from taut.viz import plot_workspace
+
+    grid = position_grid(SPATIAL, 300, orientation=[0.0, 0.1, 0.0])
+    X, Y, Z = np.meshgrid(*grid.axes, indexing="ij", sparse=True)
+    box = ((np.abs(X) < 0.5) & (np.abs(Y) < 0.3) & (np.abs(Z) < 0.5)).ravel()  # bool only: 27 MB
+    res = WorkspaceResult(SPATIAL.name, "static", box, grid.axes, grid.shape, 0.0, ("x", "y", "z"), grid)
+    with pytest.raises(GridSizeError):
+        _ = res.poses
+    ax = plot_workspace(res, SPATIAL, max_points=500)
+    (scatter,) = [c for c in ax.collections if c.get_gid() == "workspace"]
+    pts = np.column_stack(scatter._offsets3d)
+    assert pts.shape == (500, 3) and np.all(np.abs(pts) < [0.5, 0.3, 0.5])
+    assert "b=0.1" in ax.get_title() and "a=0" in ax.get_title()
+
+
+def test_save_and_load_keep_the_poses_without_storing_those_of_a_grid(tmp_path):
+    res = evaluate_workspace(SPATIAL, "static", grid=[(-0.3, 0.3, 20), (-0.3, 0.3, 20), (-0.3, 0.3, 20)])
+    res.save(tmp_path / "grid.npz")
+    with np.load(tmp_path / "grid.npz") as f:
+        assert "poses" not in f.files  # the grid's definition stands for its poses
+    back = WorkspaceResult.load(tmp_path / "grid.npz")
+    assert np.array_equal(back.poses, res.poses) and np.array_equal(back.inside, res.inside)
+    explicit = evaluate_workspace(SPATIAL, "static", poses=res.poses[::7])
+    explicit.save(tmp_path / "poses.npz")
+    again = WorkspaceResult.load(tmp_path / "poses.npz")
+    assert again.grid is None and np.array_equal(again.poses, res.poses[::7])
+    assert np.array_equal(again.inside, res.inside[::7]) and again.grid_shape == (len(res.poses[::7]),)
+    # the first format stored the poses themselves
+    meta = {"robot": "r", "condition": "static", "grid_shape": [20, 20, 20], "elapsed_s": 1.0}
+    np.savez_compressed(
+        tmp_path / "v1.npz",
+        poses=res.poses,
+        inside=res.inside,
+        metadata=np.array(json.dumps(meta | {"format": "taut-workspace/1"})),
+        **{f"axis_{i}": a for i, a in enumerate(res.axes)},
+    )
+    old = WorkspaceResult.load(tmp_path / "v1.npz")
+    assert np.array_equal(old.poses, res.poses) and old.measure == res.measure
+    with pytest.raises(TautError, match="not a taut workspace file"):
+        WorkspaceResult.load(tmp_path / "nothing.npz")

@@ -62,8 +62,10 @@ References
 from __future__ import annotations
 
 import threading
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 from taut.errors import TautError
@@ -74,6 +76,9 @@ from taut.statics.wrench import (
     SingleWrench,
     WrenchSet,
 )
+
+if TYPE_CHECKING:
+    import highspy
 
 __all__ = ["facet_normals", "static_equilibrium", "wrench_closure", "wrench_feasible"]
 
@@ -104,10 +109,12 @@ _OUT, _IN, _FLAT = 0, 1, 2
 # of A holds the n·w_j.
 
 MODE_CLOSURE, MODE_FEASIBLE, MODE_NORMALS = 0, 1, 2
+#: A built-in wrench set as the kernel takes it: ``(center, half, shape, has_shape, verts)``.
+SetArrays = tuple[np.ndarray, np.ndarray, np.ndarray, bool, np.ndarray]
 
 
 @njit(cache=True, nogil=True)
-def _binom(a, b):
+def _binom(a: int, b: int) -> int:
     if b < 0 or b > a:
         return 0
     r = 1
@@ -117,7 +124,22 @@ def _binom(a, b):
 
 
 @njit(cache=True, nogil=True)
-def _facet_kernel(W, tmin, tmax, mode, offset, center, half, shape, has_shape, verts, status, normals, hz, valid):
+def _facet_kernel(
+    W: np.ndarray,
+    tmin: np.ndarray,
+    tmax: np.ndarray,
+    mode: int,
+    offset: np.ndarray,
+    center: np.ndarray,
+    half: np.ndarray,
+    shape: np.ndarray,
+    has_shape: bool,
+    verts: np.ndarray,
+    status: np.ndarray,
+    normals: np.ndarray,
+    hz: np.ndarray,
+    valid: np.ndarray,
+) -> None:
     """Hyperplane shifting over a batch ``W (N, m, n)``.
 
     ``mode`` 0: wrench closure; 1: feasibility of ``offset[k] + center + box(half) +
@@ -312,7 +334,7 @@ def _facet_kernel(W, tmin, tmax, mode, offset, center, half, shape, has_shape, v
 # ---- helpers ----------------------------------------------------------------------
 
 
-def _as_W(W) -> np.ndarray:
+def _as_W(W: npt.ArrayLike) -> np.ndarray:
     W = np.asarray(W, dtype=float)
     if W.ndim == 2:
         W = W[None]
@@ -323,7 +345,7 @@ def _as_W(W) -> np.ndarray:
     return np.ascontiguousarray(W)
 
 
-def _bounds(tmin, tmax, n: int) -> tuple[np.ndarray, np.ndarray]:
+def _bounds(tmin: npt.ArrayLike, tmax: npt.ArrayLike, n: int) -> tuple[np.ndarray, np.ndarray]:
     lo = np.broadcast_to(np.asarray(tmin, dtype=float), (n,)).copy()
     hi = np.broadcast_to(np.asarray(tmax, dtype=float), (n,)).copy()
     if not np.all(np.isfinite(lo)):
@@ -335,7 +357,7 @@ def _bounds(tmin, tmax, n: int) -> tuple[np.ndarray, np.ndarray]:
     return lo, hi
 
 
-def _set_arrays(ws: WrenchSet, m: int):
+def _set_arrays(ws: WrenchSet, m: int) -> SetArrays | None:
     """``(center, half, shape, has_shape, verts)`` of a built-in set, or None."""
     zeros = np.zeros(m)
     none = np.zeros((0, m))
@@ -399,7 +421,7 @@ def _lp_feasible(W: np.ndarray, tmin: np.ndarray, tmax: np.ndarray, rhs: np.ndar
 _LOCAL = threading.local()
 
 
-def _highs():
+def _highs() -> highspy.Highs:
     """One reused HiGHS instance per thread (dask workers may run several threads)."""
     h = getattr(_LOCAL, "highs", None)
     if h is None:
@@ -411,21 +433,24 @@ def _highs():
     return h
 
 
-def _flat_feasible(Wk, tmin, tmax, ws: WrenchSet, off: np.ndarray, m: int) -> bool:
+def _flat_feasible(Wk: np.ndarray, tmin: np.ndarray, tmax: np.ndarray, ws: WrenchSet, off: np.ndarray, m: int) -> bool:
     """Exact decision at a pose where ``rank W < m``."""
     dim = _set_dimension(ws, m)
     if dim is None or dim >= m:
         return False
+    pts: np.ndarray | None
     if isinstance(ws, EllipsoidWrenchSet):
         if dim > 0:
             return False  # conservative: a flat, non-degenerate ellipsoid (module docstring)
         pts = ws.center_wrench[None]
     else:
         pts = _set_points(ws)
-    return all(_lp_feasible(Wk, tmin, tmax, -(off + p)) for p in pts)
+    return pts is not None and all(_lp_feasible(Wk, tmin, tmax, -(off + p)) for p in pts)
 
 
-def _fix_constant(W, tmin, tmax, offset):
+def _fix_constant(
+    W: np.ndarray, tmin: np.ndarray, tmax: np.ndarray, offset: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Move cables with ``τ_min = τ_max`` into the offset."""
     fixed = tmin == tmax
     if not fixed.any():
@@ -435,11 +460,22 @@ def _fix_constant(W, tmin, tmax, offset):
     return np.ascontiguousarray(W[:, :, keep]), tmin[keep], tmax[keep], offset
 
 
-def _run(W, tmin, tmax, mode, off, arrays, status, normals=None, hz=None, valid=None):
+def _run(
+    W: np.ndarray,
+    tmin: np.ndarray,
+    tmax: np.ndarray,
+    mode: int,
+    off: np.ndarray,
+    arrays: SetArrays,
+    status: np.ndarray,
+    normals: np.ndarray | None = None,
+    hz: np.ndarray | None = None,
+    valid: np.ndarray | None = None,
+) -> None:
     """Call the kernel with contiguous float arrays (and empty outputs unless ``mode`` 2)."""
     m = W.shape[1]
     center, half, shape, has_shape, verts = arrays
-    if normals is None:
+    if normals is None or hz is None or valid is None:
         normals, hz, valid = np.zeros((0, 0, 0)), np.zeros((0, 0, 2)), np.zeros((0, 0), np.bool_)
     _facet_kernel(
         W,
@@ -459,14 +495,16 @@ def _run(W, tmin, tmax, mode, off, arrays, status, normals=None, hz=None, valid=
     )
 
 
-def _no_set(m: int):
+def _no_set(m: int) -> SetArrays:
     return np.zeros(m), np.zeros(m), np.zeros((m, m)), False, np.zeros((0, m))
 
 
 # ---- public API -------------------------------------------------------------------
 
 
-def facet_normals(W, tmin=0.0, tmax=1.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def facet_normals(
+    W: npt.ArrayLike, tmin: npt.ArrayLike = 0.0, tmax: npt.ArrayLike = 1.0
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Unit facet normals of the zonotopes ``Z = W·[tmin, tmax]`` and their support.
 
     Returns ``normals (N, C, m)``, one per combination of ``m − 1`` columns
@@ -485,7 +523,7 @@ def facet_normals(W, tmin=0.0, tmax=1.0) -> tuple[np.ndarray, np.ndarray, np.nda
     return normals, hz, valid
 
 
-def wrench_closure(W) -> np.ndarray:
+def wrench_closure(W: npt.ArrayLike) -> np.ndarray:
     """Wrench closure: the columns of each ``W`` ``(N, m, n)`` positively span ``R^m``
     (Rushton 2022, §2.1.4, the wrench-closure workspace).  Returns ``(N,)`` bool.
 
@@ -511,7 +549,13 @@ def wrench_closure(W) -> np.ndarray:
     return status == _IN
 
 
-def wrench_feasible(W, tmin, tmax, wrench_set: WrenchSet, offset=None) -> np.ndarray:
+def wrench_feasible(
+    W: npt.ArrayLike,
+    tmin: npt.ArrayLike,
+    tmax: npt.ArrayLike,
+    wrench_set: WrenchSet,
+    offset: npt.ArrayLike | None = None,
+) -> np.ndarray:
     """Wrench feasibility: for every ``w`` in ``offset[k] + wrench_set`` there are tensions
     ``tmin ≤ τ ≤ tmax`` with ``W[k] τ + w = 0`` (Rushton 2022, §2.1.4, the wrench-feasible
     workspace; hyperplane shifting of Gouttefarde & Gosselin 2006 / Bouchard et al. 2010).
@@ -537,10 +581,11 @@ def wrench_feasible(W, tmin, tmax, wrench_set: WrenchSet, offset=None) -> np.nda
         raise TautError(f"the wrench set has dimension {wrench_set.dim}, the structure matrices {m}")
     tmin, tmax = _bounds(tmin, tmax, n)
     off = np.zeros((1, m)) if offset is None else np.asarray(offset, dtype=float)
+    given = off.shape
     if off.ndim == 1:
         off = off[None]
     if off.ndim != 2 or off.shape[-1] != m or off.shape[0] not in (1, N):
-        raise TautError(f"offset must have shape ({m},) or ({N}, {m}), got {np.shape(offset)}")
+        raise TautError(f"offset must have shape ({m},) or ({N}, {m}), got {given}")
     if not np.all(np.isfinite(off)):
         raise TautError("offset must be finite")
     W0, tmin0, tmax0, off0 = W, tmin, tmax, off
@@ -559,7 +604,15 @@ def wrench_feasible(W, tmin, tmax, wrench_set: WrenchSet, offset=None) -> np.nda
     return out
 
 
-def _generic_status(W, tmin, tmax, off, ws: WrenchSet, status, block_elems: int = 2_000_000):
+def _generic_status(
+    W: np.ndarray,
+    tmin: np.ndarray,
+    tmax: np.ndarray,
+    off: np.ndarray,
+    ws: WrenchSet,
+    status: np.ndarray,
+    block_elems: int = 2_000_000,
+) -> None:
     """Facet test for a wrench set known only by its ``support``: normals from the kernel,
     supports in NumPy, in blocks of poses bounding the memory."""
     N, m, n = W.shape
@@ -584,7 +637,7 @@ def _generic_status(W, tmin, tmax, off, ws: WrenchSet, status, block_elems: int 
         status[s:e] = np.where(bad.any(axis=1), _OUT, np.where(full, _IN, _FLAT))
 
 
-def static_equilibrium(W, tmin, tmax, w) -> np.ndarray:
+def static_equilibrium(W: npt.ArrayLike, tmin: npt.ArrayLike, tmax: npt.ArrayLike, w: npt.ArrayLike) -> np.ndarray:
     """Static equilibrium ``W[k] τ + w[k] = 0`` with ``tmin ≤ τ ≤ tmax`` for one wrench per
     pose (``w`` ``(N, m)`` or ``(m,)``): the single-wrench case of the wrench-feasible
     workspace (Rushton 2022, §2.1.4), by the same hyperplane-shifting test, with an exact LP

@@ -68,10 +68,12 @@ from dataclasses import dataclass
 
 import highspy
 import numpy as np
+import numpy.typing as npt
 from scipy.spatial import HalfspaceIntersection, QhullError, cKDTree
 
 from taut.errors import TautError
 from taut.kinematics.inverse import inverse_kinematics
+from taut.model.robot import Robot
 from taut.statics.wrench import external_wrench
 
 #: Relative equilibrium tolerance of a reported solution.
@@ -92,8 +94,8 @@ class TensionResult:
     ``bool`` and ``status`` a ``str``."""
 
     tensions: np.ndarray  #: ``(N, n)``; zeros where no solution was found (never NaN)
-    feasible: np.ndarray  #: ``(N,)`` bool: equilibrium (to 1e-9 relative) and bounds hold
-    status: np.ndarray  #: ``(N,)`` str: ``"optimal"``, ``"infeasible"`` (proved) or ``"not-found"``
+    feasible: np.ndarray | bool  #: ``(N,)`` bool: equilibrium (to 1e-9 relative) and bounds hold
+    status: np.ndarray | str  #: ``(N,)`` str: ``"optimal"``, ``"infeasible"`` (proved) or ``"not-found"``
     method: str
 
 
@@ -116,21 +118,23 @@ def _eq_scale(W: np.ndarray, w: np.ndarray, tau: np.ndarray) -> np.ndarray:
     return np.maximum(terms, np.abs(w).max(axis=-1, initial=0.0))
 
 
-def _residual(W, w, tau) -> np.ndarray:
+def _residual(W: np.ndarray, w: np.ndarray, tau: np.ndarray) -> np.ndarray:
     return np.abs(np.einsum("kij,kj->ki", W, tau) + w).max(axis=-1, initial=0.0)
 
 
-def _tension_scale(tau, tmin, tmax) -> np.ndarray:
+def _tension_scale(tau: np.ndarray, tmin: np.ndarray, tmax: np.ndarray) -> np.ndarray:
     fin = np.where(np.isfinite(tmax), tmax, 0.0)
     return np.maximum.reduce([np.abs(tau).max(-1, initial=0.0), tmin.max(-1, initial=0.0), fin.max(-1, initial=0.0)])
 
 
-def _violation(tau, tmin, tmax) -> np.ndarray:
+def _violation(tau: np.ndarray, tmin: np.ndarray, tmax: np.ndarray) -> np.ndarray:
     """Largest bound violation per pose (≤ 0 when within bounds)."""
     return np.maximum(tmin - tau, tau - tmax).max(axis=-1, initial=-np.inf)
 
 
-def _verify(W, w, tmin, tmax, tau) -> tuple[np.ndarray, np.ndarray]:
+def _verify(
+    W: np.ndarray, w: np.ndarray, tmin: np.ndarray, tmax: np.ndarray, tau: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
     """Repair round-off in candidate tensions and check them: ``(tensions, feasible)``.
 
     Candidates that are not finite, violate a bound by more than ``REPAIR_RTOL`` times the
@@ -174,7 +178,15 @@ def _new_highs() -> highspy.Highs:
     return h
 
 
-def _pass_lp(h, cost, col_lo, col_hi, A, row_lo, row_hi) -> None:
+def _pass_lp(
+    h: highspy.Highs,
+    cost: np.ndarray,
+    col_lo: np.ndarray,
+    col_hi: np.ndarray,
+    A: np.ndarray,
+    row_lo: np.ndarray,
+    row_hi: np.ndarray,
+) -> None:
     """Load ``min costᵀx`` s.t. ``row_lo ≤ A x ≤ row_hi``, ``col_lo ≤ x ≤ col_hi`` (A dense)."""
     nrow, ncol = A.shape
     lp = highspy.HighsLp()
@@ -190,17 +202,20 @@ def _pass_lp(h, cost, col_lo, col_hi, A, row_lo, row_hi) -> None:
     h.passModel(lp)
 
 
-def _solve(h) -> tuple[str, np.ndarray | None]:
+def _solve(h: highspy.Highs) -> tuple[str, np.ndarray]:
+    """Run the loaded program: ``(status, solution)``, the solution empty unless ``"optimal"``."""
     h.run()
     st = h.getModelStatus()
     if st == _S.kOptimal:
         return "optimal", np.array(h.getSolution().col_value)
     if st in (_S.kInfeasible, _S.kUnboundedOrInfeasible):
-        return "infeasible", None
-    return "not-found", None
+        return "infeasible", np.zeros(0)
+    return "not-found", np.zeros(0)
 
 
-def _load_program(h, objective: str, W, w, lo, hi) -> int:
+def _load_program(
+    h: highspy.Highs, objective: str, W: np.ndarray, w: np.ndarray, lo: np.ndarray, hi: np.ndarray
+) -> int:
     """Load the program of one pose into ``h``; returns the index of its first
     equilibrium row.  Variables ``x = [τ, t]`` (``t`` only for ``inf``); rows: ``τᵢ − t ≤ 0``
     (``inf``), then the equilibrium rows ``W τ = −w``."""
@@ -218,7 +233,7 @@ def _load_program(h, objective: str, W, w, lo, hi) -> int:
     return A0.shape[0]
 
 
-def _in_range(W, w) -> np.ndarray:
+def _in_range(W: np.ndarray, w: np.ndarray) -> np.ndarray:
     """Whether ``W τ = −w`` has a solution, ignoring bounds (least-squares residual within
     ``EQUILIBRIUM_RTOL``), per pose."""
     P, _ = _svd_pinv(W)
@@ -226,7 +241,9 @@ def _in_range(W, w) -> np.ndarray:
     return _residual(W, w, t) <= EQUILIBRIUM_RTOL * _eq_scale(W, w, t)
 
 
-def _program_scaling(W, w, tmin, tmax):
+def _program_scaling(
+    W: np.ndarray, w: np.ndarray, tmin: np.ndarray, tmax: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Scale each program to order one, because HiGHS's tolerances are absolute
     and it drops matrix entries below 1e-9: every equilibrium row is divided by its
     largest entry (forces and moments have different units) and the tensions by a per-pose
@@ -239,7 +256,9 @@ def _program_scaling(W, w, tmin, tmax):
     return W, w, np.where(s > 0, s, 1.0)
 
 
-def _program(W, w, tmin, tmax, objective: str):
+def _program(
+    W: np.ndarray, w: np.ndarray, tmin: np.ndarray, tmax: np.ndarray, objective: str
+) -> tuple[np.ndarray, np.ndarray]:
     """Solve one HiGHS program per pose, reusing one model whose equilibrium rows are
     replaced pose by pose (the previous basis warm-starts the next pose).  Each pose is
     solved scaled (:func:`_program_scaling`)."""
@@ -273,7 +292,7 @@ def _program(W, w, tmin, tmax, objective: str):
     return tau, infeasible
 
 
-def _lp(W, w, tmin, tmax):
+def _lp(W: np.ndarray, w: np.ndarray, tmin: np.ndarray, tmax: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Minimum sum of tensions ``min Σ τᵢ`` — a linear program solved by HiGHS (dual
     simplex, warm-started from the previous pose); Rushton (2022), §2.1.2 and §6 (the LP
     tension distribution used for the experiments)."""
@@ -289,7 +308,7 @@ def _null_basis(A: np.ndarray) -> np.ndarray:
     return Vt[rank:].T
 
 
-def _min_norm_active_set(W, w, lo, hi, tau) -> np.ndarray:
+def _min_norm_active_set(W: np.ndarray, w: np.ndarray, lo: np.ndarray, hi: np.ndarray, tau: np.ndarray) -> np.ndarray:
     """``argmin ‖τ‖`` s.t. ``W τ + w = 0``, ``lo ≤ τ ≤ hi`` from a feasible ``tau``: the
     primal active-set method for convex QPs (Nocedal and Wright, *Numerical Optimization*,
     2nd ed., Alg. 16.3) with the identity Hessian.  The working set starts empty and
@@ -330,7 +349,7 @@ def _min_norm_active_set(W, w, lo, hi, tau) -> np.ndarray:
     return tau
 
 
-def _qp(W, w, tmin, tmax):
+def _qp(W: np.ndarray, w: np.ndarray, tmin: np.ndarray, tmax: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Minimum 2-norm ``min ½‖τ‖²`` (Hassan and Khajepour 2008, ref. [23] of Rushton 2022),
     a strictly convex QP: the ``lp`` program decides feasibility and gives a feasible
     vertex, from which :func:`_min_norm_active_set` descends to the exact minimiser.
@@ -342,7 +361,7 @@ def _qp(W, w, tmin, tmax):
     return tau, infeasible
 
 
-def _inf(W, w, tmin, tmax):
+def _inf(W: np.ndarray, w: np.ndarray, tmin: np.ndarray, tmax: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Minimum ∞-norm ``min t`` s.t. ``τᵢ ≤ t`` — a linear program solved by HiGHS
     (Hussein, Cavalcanti Santos, Izard, Gouttefarde 2021, ref. [24] of Rushton 2022).  Only
     the largest tension is minimised: the others are those of one optimal vertex."""
@@ -352,13 +371,15 @@ def _inf(W, w, tmin, tmax):
 # ---- closed forms ------------------------------------------------------------------------
 
 
-def _reference_tensions(tmin, tmax) -> np.ndarray:
+def _reference_tensions(tmin: np.ndarray, tmax: np.ndarray) -> np.ndarray:
     """``τm = (τ_min + τ_max)/2``; ``τ_min`` for a cable without upper bound."""
     fin = np.isfinite(tmax)
     return np.where(fin, (tmin + np.where(fin, tmax, 0.0)) / 2, tmin)
 
 
-def _pott(W, w, tmin, tmax, iterations: int):
+def _pott(
+    W: np.ndarray, w: np.ndarray, tmin: np.ndarray, tmax: np.ndarray, iterations: int
+) -> tuple[np.ndarray, np.ndarray]:
     """Pott's closed form, iterated: ``τ = τm − W⁺(w + W τm)``; while a tension violates
     its bounds and redundancy is left, fix the most violating cable at the bound it
     violates, remove its column and repeat.  Vectorised over poses."""
@@ -390,7 +411,7 @@ def _pott(W, w, tmin, tmax, iterations: int):
     return tau, np.zeros(N, dtype=bool)
 
 
-def _closed_form(W, w, tmin, tmax):
+def _closed_form(W: np.ndarray, w: np.ndarray, tmin: np.ndarray, tmax: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Closed-form force distribution of Pott, Bruckmann and Mikelsons (2009, ref. [27] of
     Rushton 2022): ``τ = τm − W⁺(w + W τm)`` with ``τm = (τ_min + τ_max)/2``, the tensions
     nearest to the middle of the bounds in the 2-norm, ignoring the bounds; accepted only
@@ -399,7 +420,9 @@ def _closed_form(W, w, tmin, tmax):
     return _pott(W, w, tmin, tmax, iterations=1)
 
 
-def _improved_closed_form(W, w, tmin, tmax):
+def _improved_closed_form(
+    W: np.ndarray, w: np.ndarray, tmin: np.ndarray, tmax: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
     """Improved closed-form force distribution of Pott (2014, ref. [28] of Rushton 2022): the
     closed form of :func:`_closed_form`; while a tension violates its bounds and ``W`` of
     the remaining cables keeps redundancy (more cables than its rank), fix the cable with
@@ -412,7 +435,7 @@ def _improved_closed_form(W, w, tmin, tmax):
 # ---- barycentric -------------------------------------------------------------------------
 
 
-def _segment_centres(tp, v, lo, hi):
+def _segment_centres(tp: np.ndarray, v: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Midpoints of ``{λ : lo ≤ tp + v λ ≤ hi}`` for ``K`` one-dimensional problems
     (``tp, v, lo, hi (K, n)``): ``(tensions (K, n), empty (K,))``."""
     scale = _tension_scale(tp, lo, hi)
@@ -438,7 +461,9 @@ def _distinct(V: np.ndarray, tol: float) -> np.ndarray:
     return V[[i for i in range(len(V)) if i not in drop]]
 
 
-def _polytope_centre(h, tp, Z, lo, hi, depth: int = 0):
+def _polytope_centre(
+    h: highspy.Highs, tp: np.ndarray, Z: np.ndarray, lo: np.ndarray, hi: np.ndarray, depth: int = 0
+) -> tuple[np.ndarray | None, bool]:
     """Centroid of the vertices of ``{tp + Z λ : lo ≤ tp + Z λ ≤ hi}`` (``Z (n, r)``
     orthonormal): ``(tensions (n,) or None, empty)``."""
     n, r = Z.shape
@@ -481,7 +506,18 @@ def _polytope_centre(h, tp, Z, lo, hi, depth: int = 0):
     return tp + Z @ _distinct(vertices, FLAT_RTOL * scale).mean(axis=0), False
 
 
-def _flat_centre(h, tp, Z, lo, hi, A, b, lam0, scale, depth):
+def _flat_centre(
+    h: highspy.Highs,
+    tp: np.ndarray,
+    Z: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+    A: np.ndarray,
+    b: np.ndarray,
+    lam0: np.ndarray,
+    scale: float,
+    depth: int,
+) -> np.ndarray:
     """Centre of a polytope without interior: find its implicit equalities (the rows that
     no feasible point satisfies strictly: ``max Σ sᵢ`` s.t. ``A λ + s ≤ b``, ``0 ≤ sᵢ ≤
     scale``), restrict to their affine hull and take the centroid of the vertices there.
@@ -512,7 +548,7 @@ def _flat_centre(h, tp, Z, lo, hi, A, b, lam0, scale, depth):
     return tp + Z @ lam0
 
 
-def _barycentric(W, w, tmin, tmax):
+def _barycentric(W: np.ndarray, w: np.ndarray, tmin: np.ndarray, tmax: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Barycentric tension distribution (Mikelsons, Bruckmann, Hiller, Schramm, "A
     real-time capable force calculation algorithm for redundant tendon-based parallel
     manipulators", ICRA 2008).  The solutions are ``τ = τp + Z λ`` with ``τp = −W⁺ w`` and
@@ -586,7 +622,9 @@ METHODS: dict[str, Callable] = {
 }
 
 
-def _inputs(W, w, tmin, tmax):
+def _inputs(
+    W: npt.ArrayLike, w: npt.ArrayLike, tmin: npt.ArrayLike, tmax: npt.ArrayLike
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, bool]:
     try:
         W = np.asarray(W, dtype=float)
         w = np.asarray(w, dtype=float)
@@ -626,7 +664,9 @@ def _inputs(W, w, tmin, tmax):
     return Wb, wb, lo, hi, single
 
 
-def solve_tensions(W, w, tmin, tmax, method: str = "lp") -> TensionResult:
+def solve_tensions(
+    W: npt.ArrayLike, w: npt.ArrayLike, tmin: npt.ArrayLike, tmax: npt.ArrayLike, method: str = "lp"
+) -> TensionResult:
     """Tensions ``τ`` with ``W τ + w = 0`` and ``tmin ≤ τ ≤ tmax`` at each pose.
 
     ``W`` is ``(N, m, n)`` or ``(m, n)``, ``w`` the external wrench ``(N, m)`` or ``(m,)``
@@ -651,7 +691,9 @@ def solve_tensions(W, w, tmin, tmax, method: str = "lp") -> TensionResult:
     return TensionResult(tau, ok, status, method)
 
 
-def distribute_tensions(robot, poses, wrench=None, method: str = "lp") -> TensionResult:
+def distribute_tensions(
+    robot: Robot, poses: npt.ArrayLike, wrench: npt.ArrayLike | None = None, method: str = "lp"
+) -> TensionResult:
     """Tension distribution of ``robot`` at ``poses`` (``(N, pose_size)`` or one pose).
 
     ``W`` from :func:`taut.kinematics.inverse_kinematics`, the external wrench ``wrench``

@@ -22,9 +22,10 @@ References
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import TautError
 from taut.kinematics.inverse import _cross
@@ -32,7 +33,7 @@ from taut.kinematics.pose import as_poses, platform_frame
 from taut.model.robot import Robot
 
 
-def external_wrench(robot: Robot, poses) -> np.ndarray:
+def external_wrench(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """``w_ext`` at each pose, ``(N, m)`` (``(m,)`` for one pose)."""
     arr, single = as_poses(robot, poses)
     d, m = robot.dimension, robot.wrench_dim
@@ -57,14 +58,14 @@ def external_wrench(robot: Robot, poses) -> np.ndarray:
 class WrenchSet(ABC):
     """A convex set of wrenches, known through its support function."""
 
-    dim: int
+    dim: int  #: number of wrench components
 
     @abstractmethod
     def support(self, normals: np.ndarray) -> np.ndarray:
         """``h(n) = max_{w ∈ set} n·w`` for normals ``(..., dim)``."""
 
 
-def _vector(x, what: str) -> np.ndarray:
+def _vector(x: npt.ArrayLike, what: str) -> np.ndarray:
     arr = np.asarray(x, dtype=float)
     if arr.ndim != 1 or arr.size == 0 or not np.all(np.isfinite(arr)):
         raise TautError(f"{what} must be a finite vector, got {x!r}")
@@ -76,15 +77,13 @@ class SingleWrench(WrenchSet):
     """One wrench ``w``."""
 
     wrench: np.ndarray
+    dim: int = field(init=False, repr=False, compare=False)
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         object.__setattr__(self, "wrench", _vector(self.wrench, "wrench"))
+        object.__setattr__(self, "dim", self.wrench.size)
 
-    @property
-    def dim(self) -> int:
-        return self.wrench.size
-
-    def support(self, normals):
+    def support(self, normals: npt.ArrayLike) -> np.ndarray:
         return np.asarray(normals) @ self.wrench
 
 
@@ -94,8 +93,9 @@ class BoxWrenchSet(WrenchSet):
 
     lower: np.ndarray
     upper: np.ndarray
+    dim: int = field(init=False, repr=False, compare=False)
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         lo, hi = _vector(self.lower, "box lower corner"), _vector(self.upper, "box upper corner")
         if lo.shape != hi.shape:
             raise TautError(f"box corners have different sizes: {lo.size} and {hi.size}")
@@ -103,17 +103,14 @@ class BoxWrenchSet(WrenchSet):
             raise TautError(f"box wrench set is inverted: lower {lo.tolist()} > upper {hi.tolist()}")
         object.__setattr__(self, "lower", lo)
         object.__setattr__(self, "upper", hi)
+        object.__setattr__(self, "dim", lo.size)
 
     @classmethod
-    def around(cls, center, half_widths) -> BoxWrenchSet:
+    def around(cls, center: npt.ArrayLike, half_widths: npt.ArrayLike) -> BoxWrenchSet:
         c, r = _vector(center, "box center"), np.abs(_vector(half_widths, "box half-widths"))
         return cls(c - r, c + r)
 
-    @property
-    def dim(self) -> int:
-        return self.lower.size
-
-    def support(self, normals):
+    def support(self, normals: npt.ArrayLike) -> np.ndarray:
         n = np.asarray(normals)
         c, r = (self.lower + self.upper) / 2, (self.upper - self.lower) / 2
         return n @ c + np.abs(n) @ r
@@ -129,18 +126,16 @@ class PolytopeWrenchSet(WrenchSet):
     """The convex hull of ``vertices`` ``(k, dim)``."""
 
     vertices: np.ndarray
+    dim: int = field(init=False, repr=False, compare=False)
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         v = np.asarray(self.vertices, dtype=float)
         if v.ndim != 2 or v.shape[0] == 0 or not np.all(np.isfinite(v)):
             raise TautError("a polytope wrench set needs a (k, dim) array of finite vertices")
         object.__setattr__(self, "vertices", v)
+        object.__setattr__(self, "dim", v.shape[1])
 
-    @property
-    def dim(self) -> int:
-        return self.vertices.shape[1]
-
-    def support(self, normals):
+    def support(self, normals: npt.ArrayLike) -> np.ndarray:
         return (np.asarray(normals) @ self.vertices.T).max(axis=-1)
 
 
@@ -151,8 +146,9 @@ class EllipsoidWrenchSet(WrenchSet):
 
     center_wrench: np.ndarray
     shape: np.ndarray
+    dim: int = field(init=False, repr=False, compare=False)
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         c = _vector(self.center_wrench, "ellipsoid center")
         S = np.asarray(self.shape, dtype=float)
         if S.shape != (c.size, c.size) or not np.all(np.isfinite(S)):
@@ -161,12 +157,9 @@ class EllipsoidWrenchSet(WrenchSet):
             raise TautError("ellipsoid shape must be symmetric positive semi-definite")
         object.__setattr__(self, "center_wrench", c)
         object.__setattr__(self, "shape", S)
+        object.__setattr__(self, "dim", c.size)
 
-    @property
-    def dim(self) -> int:
-        return self.center_wrench.size
-
-    def support(self, normals):
+    def support(self, normals: npt.ArrayLike) -> np.ndarray:
         n = np.asarray(normals)
         q = np.einsum("...i,ij,...j->...", n, self.shape, n)
         return n @ self.center_wrench + np.sqrt(np.maximum(q, 0.0))

@@ -68,22 +68,20 @@ _AXIS_NAMES = ("x", "y", "z")
 def _fixed_coordinates(result: GridWorkspace, robot: Robot | None, used: list[int]) -> str:
     """'theta=0' for pose coordinates that are the same at every grid pose (orientation
     of a constant-orientation workspace, the held coordinate of a slice)."""
-    poses = np.asarray(result.poses, float)
-    if poses.ndim != 2 or not len(poses):
-        return ""
+    grid = getattr(result, "grid", None)
+    if grid is not None:  # a grid result does not hold its poses: the grid's box bounds them
+        lo, hi = grid.corners()
+    else:
+        poses = np.asarray(result.poses, float)
+        if poses.ndim != 2 or not len(poses):
+            return ""
+        lo, hi = poses.min(axis=0), poses.max(axis=0)
     names = (
         list(robot.pose_names)
-        if robot is not None and len(robot.pose_names) == poses.shape[1]
-        else [(_AXIS_NAMES[j] if j < len(result.axes) else f"q{j + 1}") for j in range(poses.shape[1])]
+        if robot is not None and len(robot.pose_names) == lo.size
+        else [(_AXIS_NAMES[j] if j < len(result.axes) else f"q{j + 1}") for j in range(lo.size)]
     )
-    out = []
-    for j in range(poses.shape[1]):
-        if j in used:
-            continue
-        col = poses[:, j]
-        if np.all(col == col[0]):
-            out.append(f"{names[j]}={col[0]:.3g}")
-    return ", ".join(out)
+    return ", ".join(f"{names[j]}={lo[j]:.3g}" for j in range(lo.size) if j not in used and lo[j] == hi[j])
 
 
 def _edges(c: np.ndarray) -> tuple[float, float]:
@@ -180,15 +178,17 @@ def _scatter(
     coords: list[np.ndarray],
     max_points: int,
 ) -> Axes3D:
-    poses = np.asarray(result.poses, float)
-    if poses.ndim == 2 and poses.shape[0] == mask.size and poses.shape[1] >= 3:
-        pts = poses[mask.ravel(), :3]
-    else:  # positions from the grid axes
-        grid = np.stack(np.meshgrid(*coords, indexing="ij"), axis=-1).reshape(-1, 3)
-        pts = grid[mask.ravel()]
-    if len(pts) > max_points:
-        pick = np.sort(np.random.default_rng(0).choice(len(pts), max_points, replace=False))
-        pts = pts[pick]
+    idx = np.flatnonzero(mask.ravel())
+    if len(idx) > max_points:
+        idx = idx[np.sort(np.random.default_rng(0).choice(len(idx), max_points, replace=False))]
+    if hasattr(result, "poses_at"):  # computes the drawn poses only (a grid result holds none)
+        pts = np.asarray(result.poses_at(idx), float)[:, :3]
+    else:
+        poses = np.asarray(result.poses, float)
+        if poses.ndim == 2 and poses.shape[0] == mask.size and poses.shape[1] >= 3:
+            pts = poses[idx, :3]
+        else:  # positions from the grid axes
+            pts = np.column_stack([c[i] for c, i in zip(coords, np.unravel_index(idx, mask.shape))])
     ax.scatter(
         pts[:, 0], pts[:, 1], pts[:, 2], c=pts[:, 2], cmap="viridis", s=5, alpha=0.45, depthshade=False, gid="workspace"
     )

@@ -80,7 +80,7 @@ class WrenchCondition(WorkspaceCondition):
     """A condition on the structure matrix: computes ``W`` for every pose (poses with a
     zero-length cable are outside) and delegates to :meth:`test`."""
 
-    def evaluate(self, robot, poses):
+    def evaluate(self, robot: Robot, poses: np.ndarray) -> np.ndarray:
         poses = np.asarray(poses, dtype=float)
         _, W, ok = batch_structure_matrices(robot, poses)
         out = np.zeros(poses.shape[0], bool)
@@ -99,7 +99,7 @@ class WrenchClosure(WrenchCondition):
     name = "wrench-closure"
     description = "the cables positively span the wrench space (any wrench, positive tensions)"
 
-    def test(self, robot, poses, W):
+    def test(self, robot: Robot, poses: np.ndarray, W: np.ndarray) -> np.ndarray:
         return wrench_closure(W)
 
 
@@ -138,7 +138,7 @@ class WrenchFeasible(WrenchCondition):
     name = "wrench-feasible"
     description = "every wrench of a set around the external wrench is balanced within the tension bounds"
 
-    def __init__(self, wrench_set: WrenchSet | None = None, around_external: bool = True):
+    def __init__(self, wrench_set: WrenchSet | None = None, around_external: bool = True) -> None:
         if wrench_set is not None and not isinstance(wrench_set, WrenchSet):
             raise TautError(
                 f"wrench_set must be a WrenchSet (box, polytope, ellipsoid, single wrench), got {type(wrench_set).__name__}"
@@ -154,7 +154,7 @@ class WrenchFeasible(WrenchCondition):
             )
         return ws
 
-    def test(self, robot, poses, W):
+    def test(self, robot: Robot, poses: np.ndarray, W: np.ndarray) -> np.ndarray:
         ws = self.required_set(robot)
         offset = external_wrench(robot, poses) if self.around_external else None
         tmin, tmax = robot.tension_bounds
@@ -165,7 +165,7 @@ class StaticEquilibrium(WrenchCondition):
     name = "static"
     description = "the external wrench (weight included) is balanced within the tension bounds"
 
-    def test(self, robot, poses, W):
+    def test(self, robot: Robot, poses: np.ndarray, W: np.ndarray) -> np.ndarray:
         tmin, tmax = robot.tension_bounds
         return static_equilibrium(W, tmin, tmax, external_wrench(robot, poses))
 
@@ -174,7 +174,7 @@ class InterferenceFree(WorkspaceCondition):
     name = "interference-free"
     description = "no cable–cable or cable–platform interference of the capsule model (Lieskovský 2020, §3.4)"
 
-    def evaluate(self, robot, poses):
+    def evaluate(self, robot: Robot, poses: np.ndarray) -> np.ndarray:
         return proximity(robot, np.asarray(poses, dtype=float)).interference_free
 
 
@@ -184,7 +184,9 @@ CONDITIONS: dict[str, type[WorkspaceCondition]] = {
 }
 
 
-def make_condition(condition, **options) -> WorkspaceCondition:
+def make_condition(
+    condition: str | WorkspaceCondition | type[WorkspaceCondition], **options: object
+) -> WorkspaceCondition:
     """A condition instance from a registry name, a class or an instance.
 
     ``options`` (e.g. ``wrench_set``) go to the class; ``None`` values are dropped.

@@ -16,32 +16,85 @@ References
 
 from __future__ import annotations
 
+import math
 import numbers
 from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
-from taut.errors import TautError
+from taut.errors import GridSizeError, TautError
 from taut.model.robot import Robot
 
-__all__ = ["PoseGrid", "default_bounds", "default_orientation", "make_grid", "pose_grid", "position_grid"]
+__all__ = [
+    "MAX_GRID_POSES",
+    "PoseGrid",
+    "check_grid_size",
+    "default_bounds",
+    "default_orientation",
+    "format_bytes",
+    "make_grid",
+    "pose_grid",
+    "position_grid",
+]
+
+#: One axis of a grid: ``(lo, hi, n)`` (``n`` evenly spaced points) or explicit coordinates.
+AxisSpec = tuple[float, float, int] | npt.ArrayLike
 
 #: Default points per axis: planar (2-D) and spatial (3-D) position grids.
 DEFAULT_RESOLUTION = {2: 101, 3: 41}
+#: Most poses a grid may have: the verdicts take one byte per pose (1 GiB at the limit).
+MAX_GRID_POSES = 2**30
 #: The default bounds are the box of the exit points shrunk by this fraction of its size per side.
 DEFAULT_SHRINK = 0.02
+
+
+def format_bytes(n: int) -> str:
+    """``n`` bytes in binary units (``"3 GiB"``), for messages."""
+    size = float(n)
+    units = ("B", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB", "ZiB", "YiB")
+    for unit in units[:-1]:
+        if size < 1024:
+            return f"{size:.3g} {unit}"
+        size /= 1024
+    return f"{size:.3g} {units[-1]}"
+
+
+def check_grid_size(counts: Sequence[int], pose_size: int) -> int:
+    """The number of poses of a grid of ``counts`` points per axis; a
+    :class:`~taut.errors.GridSizeError` above :data:`MAX_GRID_POSES`, before anything
+    is allocated (the verdicts take one byte per pose)."""
+    n = math.prod(int(c) for c in counts)
+    if n > MAX_GRID_POSES:
+        shape = " × ".join(f"{int(c):,}" for c in counts)
+        raise GridSizeError(
+            f"the grid has {n:,} poses ({shape}): their verdicts alone would need {format_bytes(n)} "
+            f"(the poses {format_bytes(n * pose_size * 8)}); at most {MAX_GRID_POSES:,} poses are evaluated, "
+            "give fewer points per axis"
+        )
+    return n
 
 
 @dataclass(frozen=True)
 class PoseGrid:
     """Axes ``axes[i]`` over the pose coordinates ``index[i]``; every other coordinate
-    takes its value in ``fixed`` (a full pose of which the gridded entries are ignored)."""
+    takes its value in ``fixed`` (a full pose of which the gridded entries are ignored).
+
+    The poses are never stored: :meth:`poses_at` computes any of them from its flat index
+    (C order), so that a grid of any size is evaluated chunk by chunk in bounded memory."""
 
     axes: tuple[np.ndarray, ...]
     index: tuple[int, ...]
     fixed: np.ndarray
     names: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        if len(self.axes) != len(self.index):
+            raise TautError(
+                f"a pose grid needs one pose coordinate per axis, got {len(self.axes)} axes, index {self.index}"
+            )
+        check_grid_size(self.shape, np.size(self.fixed))
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -49,24 +102,32 @@ class PoseGrid:
 
     @property
     def size(self) -> int:
-        return int(np.prod(self.shape, dtype=np.int64))
+        return math.prod(self.shape)
 
-    def poses(self, start: int = 0, stop: int | None = None) -> np.ndarray:
-        """Poses ``start:stop`` of the grid (all by default), ``(K, pose_size)``, C order."""
-        stop = self.size if stop is None else min(stop, self.size)
-        flat = np.arange(start, stop)
-        out = np.repeat(self.fixed[None, :], flat.size, axis=0)
+    @property
+    def pose_size(self) -> int:
+        return int(np.size(self.fixed))
+
+    def poses_at(self, flat: npt.ArrayLike) -> np.ndarray:
+        """The poses of flat (C-order) indices ``flat`` ``(K,)``, ``(K, pose_size)``."""
+        flat = np.asarray(flat, dtype=np.int64).ravel()
+        out = np.repeat(np.asarray(self.fixed, dtype=float)[None, :], flat.size, axis=0)
         for col, axis, idx in zip(self.index, self.axes, np.unravel_index(flat, self.shape)):
             out[:, col] = axis[idx]
         return out
 
-    def cell_measure(self) -> float:
-        """Product of the axis spacings (axes with one point count as 1)."""
-        out = 1.0
-        for a in self.axes:
-            if len(a) > 1:
-                out *= float(a[-1] - a[0]) / (len(a) - 1)
-        return abs(out)
+    def poses(self, start: int = 0, stop: int | None = None) -> np.ndarray:
+        """Poses ``start:stop`` of the grid (all by default), ``(K, pose_size)``, C order."""
+        stop = self.size if stop is None else min(stop, self.size)
+        return self.poses_at(np.arange(start, stop, dtype=np.int64))
+
+    def corners(self) -> np.ndarray:
+        """``(2, pose_size)``: the fixed pose with every gridded coordinate at its axis' least
+        (row 0) and greatest (row 1) value — the box every pose of the grid lies in."""
+        out = np.repeat(np.asarray(self.fixed, dtype=float)[None, :], 2, axis=0)
+        for col, axis in zip(self.index, self.axes):
+            out[:, col] = (np.min(axis), np.max(axis)) if len(axis) else (np.nan, np.nan)
+        return out
 
 
 def default_bounds(robot: Robot, shrink: float = DEFAULT_SHRINK) -> np.ndarray:
@@ -93,7 +154,7 @@ def default_orientation(robot: Robot) -> np.ndarray:
     return tail
 
 
-def _orientation(robot: Robot, orientation) -> np.ndarray:
+def _orientation(robot: Robot, orientation: npt.ArrayLike | None) -> np.ndarray:
     k = robot.pose_size - robot.dimension
     if orientation is None:
         return default_orientation(robot)
@@ -106,24 +167,45 @@ def _orientation(robot: Robot, orientation) -> np.ndarray:
     return o
 
 
-def _axis(spec, what: str) -> np.ndarray:
-    """``(lo, hi, n)`` as a tuple, or explicit coordinates (list / array)."""
+def _axis_count(spec: AxisSpec, what: str) -> int:
+    """The number of points of an axis spec, validated without building the axis."""
     if isinstance(spec, tuple) and len(spec) == 3:
         lo, hi, n = spec
-        if not isinstance(n, numbers.Real) or not np.isfinite(n) or float(n) != int(n) or int(n) < 1:
+        if isinstance(n, bool) or not isinstance(n, numbers.Real) or not np.isfinite(float(n)):
+            raise TautError(f"{what}: the number of points must be a positive integer, got {n!r}")
+        if float(n) != int(float(n)) or int(float(n)) < 1:
             raise TautError(f"{what}: the number of points must be a positive integer, got {n!r}")
         if not (np.isfinite(lo) and np.isfinite(hi)):
             raise TautError(f"{what}: the bounds must be finite, got {lo!r}, {hi!r}")
         if lo > hi:
             raise TautError(f"{what}: inverted bounds {lo} > {hi}")
-        return np.linspace(float(lo), float(hi), int(n))
+        return int(float(n))
     a = np.asarray(spec, dtype=float)
     if a.ndim != 1 or a.size == 0 or not np.all(np.isfinite(a)):
         raise TautError(f"{what}: expected (lo, hi, n) or a 1-D array of finite coordinates, got {spec!r}")
-    return a
+    return int(a.size)
 
 
-def position_grid(robot: Robot, resolution: int | None = None, bounds=None, orientation=None) -> PoseGrid:
+def _axes(robot: Robot, specs: Sequence[AxisSpec]) -> tuple[np.ndarray, ...]:
+    """The axes of ``specs`` (one per leading pose coordinate), the grid's size checked
+    before any axis is built."""
+    counts = [_axis_count(spec, f"axis {robot.pose_names[i]}") for i, spec in enumerate(specs)]
+    check_grid_size(counts, robot.pose_size)
+    out = []
+    for spec, n in zip(specs, counts):
+        if isinstance(spec, tuple) and len(spec) == 3:
+            out.append(np.linspace(float(spec[0]), float(spec[1]), n))
+        else:
+            out.append(np.asarray(spec, dtype=float))
+    return tuple(out)
+
+
+def position_grid(
+    robot: Robot,
+    resolution: int | None = None,
+    bounds: npt.ArrayLike | None = None,
+    orientation: npt.ArrayLike | None = None,
+) -> PoseGrid:
     """Grid over the position (x, y[, z]) with ``resolution`` points per axis between
     ``bounds`` ``(d, 2)`` (default :func:`default_bounds`), at a fixed ``orientation``
     (the pose coordinates after the position; default :func:`default_orientation`)."""
@@ -134,43 +216,52 @@ def position_grid(robot: Robot, resolution: int | None = None, bounds=None, orie
     b = default_bounds(robot) if bounds is None else np.asarray(bounds, dtype=float)
     if b.shape != (d, 2):
         raise TautError(f"{robot.name}: bounds must have shape ({d}, 2), got {b.shape}")
-    axes = tuple(_axis((float(lo), float(hi), int(res)), f"axis {robot.pose_names[i]}") for i, (lo, hi) in enumerate(b))
+    axes = _axes(robot, [(float(lo), float(hi), int(res)) for lo, hi in b])
     fixed = np.concatenate([np.zeros(d), _orientation(robot, orientation)])
     return PoseGrid(axes, tuple(range(d)), fixed, tuple(robot.pose_names[:d]))
 
 
-def pose_grid(robot: Robot, axes: Sequence) -> PoseGrid:
+def pose_grid(robot: Robot, axes: Sequence[AxisSpec]) -> PoseGrid:
     """Full pose grid: one axis (``(lo, hi, n)`` tuple or coordinates) per pose coordinate."""
     if len(axes) != robot.pose_size:
         raise TautError(
             f"{robot.name}: a full pose grid needs {robot.pose_size} axes ({', '.join(robot.pose_names)}), got {len(axes)}"
         )
-    arr = tuple(_axis(a, f"axis {robot.pose_names[i]}") for i, a in enumerate(axes))
-    return PoseGrid(arr, tuple(range(robot.pose_size)), np.zeros(robot.pose_size), tuple(robot.pose_names))
+    return PoseGrid(
+        _axes(robot, axes), tuple(range(robot.pose_size)), np.zeros(robot.pose_size), tuple(robot.pose_names)
+    )
 
 
-def make_grid(robot: Robot, grid=None, resolution: int | None = None, orientation=None) -> PoseGrid:
+def make_grid(
+    robot: Robot,
+    grid: PoseGrid | Sequence[AxisSpec] | np.ndarray | None = None,
+    resolution: int | None = None,
+    orientation: npt.ArrayLike | None = None,
+) -> PoseGrid:
     """Normalise the ``grid`` argument of :func:`taut.workspace.evaluate_workspace`:
 
     ``None`` — :func:`position_grid` with ``resolution`` and ``orientation``; a
     :class:`PoseGrid` — used as is; a sequence of one axis per position coordinate
     (``(lo, hi, n)`` tuples or coordinate arrays) — a position grid at ``orientation``;
-    one axis per pose coordinate — a full pose grid."""
+    one axis per pose coordinate — a full pose grid.
+
+    Raises :class:`~taut.errors.GridSizeError` for a grid of more than
+    :data:`MAX_GRID_POSES` poses, before building it."""
     if grid is None:
         return position_grid(robot, resolution, orientation=orientation)
     if isinstance(grid, PoseGrid):
         return grid
-    if isinstance(grid, (str, bytes)) or not isinstance(grid, Sequence) and not isinstance(grid, np.ndarray):
+    if isinstance(grid, (str, bytes)) or not isinstance(grid, (Sequence, np.ndarray)):
         raise TautError(f"grid must be a PoseGrid or a sequence of axes, got {type(grid).__name__}")
+    specs: list[AxisSpec] = list(grid)
     d = robot.dimension
-    if len(grid) == d:
-        axes = tuple(_axis(a, f"axis {robot.pose_names[i]}") for i, a in enumerate(grid))
+    if len(specs) == d:
         fixed = np.concatenate([np.zeros(d), _orientation(robot, orientation)])
-        return PoseGrid(axes, tuple(range(d)), fixed, tuple(robot.pose_names[:d]))
-    if len(grid) == robot.pose_size:
+        return PoseGrid(_axes(robot, specs), tuple(range(d)), fixed, tuple(robot.pose_names[:d]))
+    if len(specs) == robot.pose_size:
         if orientation is not None:
             raise TautError("a full pose grid grids the orientation too: do not give a fixed orientation")
-        return pose_grid(robot, grid)
+        return pose_grid(robot, specs)
     raise TautError(
-        f"{robot.name}: grid needs {d} position axes or {robot.pose_size} pose axes ({', '.join(robot.pose_names)}), got {len(grid)}"
+        f"{robot.name}: grid needs {d} position axes or {robot.pose_size} pose axes ({', '.join(robot.pose_names)}), got {len(specs)}"
     )
