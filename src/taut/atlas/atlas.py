@@ -38,11 +38,14 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 import shapely
-from shapely.geometry import LineString, Polygon
+from shapely.geometry import LineString, MultiPolygon, Polygon
 
 from taut.atlas.chart import Chart, chart_lengths, component_containing, structure_reachable_area
 from taut.atlas.platform import fixed_collision_region, platform_outline, rotation, structure_collision_region
@@ -51,6 +54,9 @@ from taut.errors import PoseError, TautError
 from taut.model.robot import Robot
 from taut.wrapping.ik import wrapped_inverse_kinematics
 from taut.wrapping.tree import DIR, EX, EY, OBJ, PARENT, UX, UY, CableStateTree
+
+if TYPE_CHECKING:
+    from shapely.geometry.base import BaseGeometry
 
 #: Distance [m] across a traversable edge at which the adjacent chart is seeded.
 PROBE = 1e-6
@@ -89,7 +95,7 @@ class StructureAtlas:
     theta: float = 0.0  #: platform orientation of the page (0 for a point mass)
     offsets: np.ndarray | None = field(default=None, repr=False)  #: ``(n, 2)`` anchor offsets ``R(θ) r_i``
 
-    def poses(self, points) -> np.ndarray:
+    def poses(self, points: npt.ArrayLike) -> np.ndarray:
         """Robot poses at reference points ``(N, 2)``: ``(x, y)``, or ``(x, y, θ)`` for a
         rigid platform."""
         P = np.atleast_2d(np.asarray(points, float))
@@ -102,33 +108,41 @@ class StructureAtlas:
         """Number of adjacent chart pairs."""
         return len({tuple(sorted(e.charts)) for e in self.edges})
 
-    def reachable_area(self):
+    def reachable_area(self) -> BaseGeometry:
         """Union of the chart domains (the reachable part of the C-space, projected)."""
         return shapely.union_all([c.domain for c in self.charts])
 
-    def lengths(self, chart: int, points) -> np.ndarray:
+    def lengths(self, chart: int, points: npt.ArrayLike) -> np.ndarray:
         """Cable lengths ``(N, n)`` at ``points`` in chart ``chart`` (Eq. 4.9)."""
         return chart_lengths(self.trees, self.charts[chart].nodes, points, self.offsets)[0]
 
 
 class _Builder:
-    def __init__(self, robot: Robot, trees, space, arc_step: float, theta: float, offsets: np.ndarray):
+    def __init__(
+        self,
+        robot: Robot,
+        trees: list[CableStateTree],
+        space: Polygon,
+        arc_step: float,
+        theta: float,
+        offsets: np.ndarray,
+    ) -> None:
         self.robot, self.trees, self.space, self.arc_step = robot, trees, space, arc_step
         self.offsets = offsets
-        self.cra: dict[tuple[int, int], object] = {}
-        self.sra: dict[tuple[int, ...], object] = {}
+        self.cra: dict[tuple[int, int], Polygon | MultiPolygon] = {}
+        self.sra: dict[tuple[int, ...], Polygon | MultiPolygon] = {}
         x0, y0, x1, y1 = space.bounds
         self.reach = 4.0 * float(np.hypot(x1 - x0, y1 - y0) + np.abs(offsets).max()) + 1.0
         self.outline = platform_outline(robot, theta)
         self.fixed = fixed_collision_region(robot, self.outline, space, trees) if self.outline is not None else None
 
-    def cable_area(self, i: int, node: int):
+    def cable_area(self, i: int, node: int) -> Polygon | MultiPolygon:
         key = (i, node)
         if key not in self.cra:
             self.cra[key] = cable_reachable_area(self.trees[i], node, self.space, self.arc_step)
         return self.cra[key]
 
-    def area(self, nodes: tuple[int, ...]):
+    def area(self, nodes: tuple[int, ...]) -> Polygon | MultiPolygon:
         if nodes not in self.sra:
             pra = None
             if self.outline is not None:  # Eq. (5.14)
@@ -139,7 +153,7 @@ class _Builder:
             )
         return self.sra[nodes]
 
-    def transitions(self, nodes: tuple[int, ...]):
+    def transitions(self, nodes: tuple[int, ...]) -> Iterator[tuple[int, int, int, float, str, int]]:
         """``(cable, new node, ray node, side, kind, object)`` for every neighbouring state:
         the ray is the forward extension of ``ray node``'s segment, the new state lies on
         the ``side`` (±1, along the left normal) of it."""
@@ -151,13 +165,13 @@ class _Builder:
                 yield i, c, c, tree.F[c, DIR], "wrap", int(tree.I[c, OBJ])
 
 
-def _objects_bounds(trees) -> tuple[float, float, float, float]:
+def _objects_bounds(trees: Sequence[CableStateTree]) -> tuple[float, float, float, float]:
     C = np.concatenate([t.circles for t in trees])
     lo, hi = (C[:, :2] - C[:, 2:]).min(axis=0), (C[:, :2] + C[:, 2:]).max(axis=0)
     return float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1])
 
 
-def _edge_pieces(domain: Polygon, e: np.ndarray, u: np.ndarray, reach: float):
+def _edge_pieces(domain: Polygon, e: np.ndarray, u: np.ndarray, reach: float) -> Iterator[np.ndarray]:
     """Pieces ``(2, 2)`` of the ray ``e + t u`` that run along the domain's boundary."""
     ray = LineString([e, e + reach * u])
     hit = ray.intersection(domain.buffer(2 * PROBE))
@@ -169,8 +183,8 @@ def _edge_pieces(domain: Polygon, e: np.ndarray, u: np.ndarray, reach: float):
 
 def build_atlas(
     robot: Robot,
-    start,
-    initial: dict | None = None,
+    start: npt.ArrayLike,
+    initial: Mapping[int, Sequence[tuple[int, int]]] | None = None,
     arc_step: float = ARC_STEP,
     max_charts: int = MAX_CHARTS,
     theta: float = 0.0,
@@ -246,11 +260,13 @@ def build_atlas(
     return StructureAtlas(robot, b.trees, space, charts, edges, p0, theta, offsets)
 
 
-def _states(trees, nodes):
+def _states(trees: Sequence[CableStateTree], nodes: Sequence[int]) -> tuple[tuple[tuple[int, int], ...], ...]:
     return tuple(t.contacts(n) for t, n in zip(trees, nodes))
 
 
-def _find_or_build(b: _Builder, charts: list[Chart], nodes, point, stack, max_charts: int):
+def _find_or_build(
+    b: _Builder, charts: list[Chart], nodes: tuple[int, ...], point: np.ndarray, stack: list[int], max_charts: int
+) -> int | None:
     for C in charts:
         if C.nodes == nodes and shapely.contains_xy(C.domain, *point):
             return C.index

@@ -24,15 +24,21 @@ References
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 import shapely
 import shapely.affinity
-from shapely.geometry import Polygon
+from shapely.geometry import MultiPolygon, Polygon
 
 from taut.atlas.reachable import close_cracks
 from taut.wrapping.tree import DIR, L_STATIC, OBJ, THETA_IN, CableStateTree
+
+if TYPE_CHECKING:
+    from shapely.geometry.base import BaseGeometry
 
 
 @dataclass
@@ -43,8 +49,8 @@ class Chart:
     nodes: tuple[int, ...]  #: the structure S (Eq. 5.1) as CST nodes, one per cable
     domain: Polygon  #: Q, the SRA component containing the seed
     seed: np.ndarray  #: the point the chart was built from
-    states: tuple = ()  #: per cable, the wrapped objects ``((object, ±1), ...)``
-    neighbours: dict = field(default_factory=dict)  #: adjacent chart index → transitions
+    states: tuple[tuple[tuple[int, int], ...], ...] = ()  #: per cable, the wrapped objects ``((object, ±1), ...)``
+    neighbours: dict[int, list[int]] = field(default_factory=dict)  #: adjacent chart index → transitions
 
     @property
     def area(self) -> float:
@@ -52,7 +58,7 @@ class Chart:
 
 
 def chart_lengths(
-    trees: list[CableStateTree], nodes, points, offsets=None
+    trees: list[CableStateTree], nodes: Sequence[int], points: npt.ArrayLike, offsets: npt.ArrayLike | None = None
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``(l (N, n), l_0 + ν (N, n), A (N, n, 2))`` of structure ``nodes`` at reference
     points ``points`` ``(N, 2)``: Eq. (4.9) with the chart elements of Eqs. (5.3)–(5.5),
@@ -89,7 +95,9 @@ def chart_lengths(
     return L_out, wrapped, A
 
 
-def structure_reachable_area(cras: list, offsets=None, pra=None):
+def structure_reachable_area(
+    cras: list[BaseGeometry], offsets: npt.ArrayLike | None = None, pra: BaseGeometry | None = None
+) -> Polygon | MultiPolygon:
     """``SRA^S = ∩_i CRA^{s_i}`` (Eq. 5.6) of the cables' reachable areas; for a rigid
     platform at orientation ``θ``, ``SRA^{S,θ} = (∩_i (CRA^{s_i} − R(θ) r_i)) ∩ PRA^{S,θ}``
     (Eq. 5.15) with ``offsets[i] = R(θ) r_i`` and ``pra`` the platform-reachable area.
@@ -110,7 +118,7 @@ def structure_reachable_area(cras: list, offsets=None, pra=None):
     return close_cracks(sra)
 
 
-def component_containing(area, point, tol: float = 1e-9) -> Polygon | None:
+def component_containing(area: BaseGeometry, point: npt.ArrayLike, tol: float = 1e-9) -> Polygon | None:
     """The component of ``area`` that contains ``point`` (within ``tol``), or ``None``."""
     parts = [g for g in getattr(area, "geoms", [area]) if isinstance(g, Polygon) and not g.is_empty]
     if not parts:

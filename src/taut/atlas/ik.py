@@ -22,9 +22,11 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 import shapely
 
 from taut.atlas.atlas import StructureAtlas
@@ -46,7 +48,7 @@ class AtlasIK:
         return self.charts >= 0
 
 
-def locate(atlas: StructureAtlas, points, charts=None) -> np.ndarray:
+def locate(atlas: StructureAtlas, points: npt.ArrayLike, charts: Iterable[int] | None = None) -> np.ndarray:
     """``(N,)`` index of the first chart (of ``charts``, default all) containing each point."""
     P = np.atleast_2d(np.asarray(points, float))
     out = np.full(len(P), -1, dtype=np.int64)
@@ -79,7 +81,7 @@ def _evaluate(atlas: StructureAtlas, P: np.ndarray, ch: np.ndarray) -> AtlasIK:
     return AtlasIK(ch, lengths, exits)
 
 
-def direct_ik(atlas: StructureAtlas, points, charts=None) -> AtlasIK:
+def direct_ik(atlas: StructureAtlas, points: npt.ArrayLike, charts: Iterable[int] | None = None) -> AtlasIK:
     """Alg. 5.3 at every point of ``points`` ``(N, 2)``.
 
     References
@@ -91,7 +93,7 @@ def direct_ik(atlas: StructureAtlas, points, charts=None) -> AtlasIK:
     return _evaluate(atlas, P, locate(atlas, P, charts))
 
 
-def _crossings(atlas: StructureAtlas, chart: int, p1, d):
+def _crossings(atlas: StructureAtlas, chart: int, p1: np.ndarray, d: np.ndarray) -> Iterator[tuple[float, int]]:
     """``(t, neighbour)`` of the traversable edges of ``chart`` that ``p1 + t d`` crosses
     towards the neighbour."""
     for nb, idx in atlas.charts[chart].neighbours.items():
@@ -104,7 +106,7 @@ def _crossings(atlas: StructureAtlas, chart: int, p1, d):
                 yield ((w[0] * e[1] - w[1] * e[0]) / den if den != 0 else 0.0), nb
 
 
-def iterative_step(atlas: StructureAtlas, chart: int, p1, p2) -> int:
+def iterative_step(atlas: StructureAtlas, chart: int, p1: npt.ArrayLike, p2: npt.ArrayLike) -> int:
     """Alg. 5.4: the active chart after the move ``p1 → p2`` from ``chart``.  The earliest
     traversable edge crossed switches the chart; the rest of the move continues from the
     new chart (several transitions at one point — e.g. two cables wrapping at a corner of
@@ -129,7 +131,7 @@ def iterative_step(atlas: StructureAtlas, chart: int, p1, p2) -> int:
     raise PoseError(f"the move {p1.tolist()} → {p2.tolist()} does not settle in a chart")
 
 
-def iterative_ik(atlas: StructureAtlas, points, chart: int = 0) -> AtlasIK:
+def iterative_ik(atlas: StructureAtlas, points: npt.ArrayLike, chart: int = 0) -> AtlasIK:
     """Alg. 5.4 along the polyline ``points`` ``(T, 2)`` starting in chart ``chart``.
 
     References

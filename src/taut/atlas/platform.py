@@ -34,14 +34,22 @@ References
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 import shapely
 import shapely.affinity
 from shapely.geometry import MultiPoint, Polygon
 
 from taut.errors import TautError
 from taut.wrapping.tree import DIR, OBJ, CableStateTree
+
+if TYPE_CHECKING:
+    from shapely.geometry.base import BaseGeometry
+
+    from taut.model.robot import Robot
 
 #: Largest distance [m] of an anchor from the platform outline.
 ON_OUTLINE = 1e-9
@@ -52,7 +60,7 @@ def rotation(theta: float) -> np.ndarray:
     return np.array([[c, -s], [s, c]])
 
 
-def platform_outline(robot, theta: float) -> Polygon | None:
+def platform_outline(robot: Robot, theta: float) -> Polygon | None:
     """``M^θ``: the platform polygon rotated by ``θ`` (``None`` without a polygon)."""
     shape = robot.platform.shape
     if robot.is_point_mass or shape is None or not shape.polygon:
@@ -78,7 +86,7 @@ def minkowski_sum(a: np.ndarray, b: np.ndarray) -> Polygon:
     return MultiPoint(S).convex_hull
 
 
-def swept_region(M: Polygon, shapes) -> object:
+def swept_region(M: Polygon, shapes: Iterable[tuple[str, np.ndarray]]) -> BaseGeometry:
     """``∪_k P_k ⊕ (−M)`` for ``shapes``: ``("polygon", V)``, ``("segment", (2, 2))`` or
     ``("circle", (cx, cy, ρ))``."""
     neg = [-v for v in _convex_pieces(M)]
@@ -98,7 +106,7 @@ def swept_region(M: Polygon, shapes) -> object:
     return shapely.union_all(out) if out else Polygon()
 
 
-def interior_cone(M: Polygon, anchor) -> tuple[float, float]:
+def interior_cone(M: Polygon, anchor: npt.ArrayLike) -> tuple[float, float]:
     """``(α, span)``: the directions ``v`` with ``anchor + εv`` inside ``M`` are the angles
     ``α + (0, span)``.  Raises :class:`TautError` if the anchor is not on the outline."""
     b = np.asarray(anchor, float)
@@ -140,8 +148,15 @@ def active_collision_region(
 
 
 def platform_reachable_area(
-    robot, theta: float, space: Polygon, trees, nodes, offsets: np.ndarray, arc_step: float, reach: float
-):
+    robot: Robot,
+    theta: float,
+    space: Polygon,
+    trees: Sequence[CableStateTree],
+    nodes: Sequence[int],
+    offsets: np.ndarray,
+    arc_step: float,
+    reach: float,
+) -> BaseGeometry | None:
     """``PRA^{S,θ}`` (Eq. 5.14) of structure ``nodes`` (one CST node per cable), or
     ``None`` when the platform has no outline (only its anchors, which the cable-reachable
     areas already keep in the installation space).
@@ -164,7 +179,7 @@ def platform_reachable_area(
     )
 
 
-def fixed_collision_region(robot, M: Polygon, space: Polygon, trees):
+def fixed_collision_region(robot: Robot, M: Polygon, space: Polygon, trees: Sequence[CableStateTree]) -> BaseGeometry:
     """``H_obj ∪ H_border`` (Eqs. 5.10, 5.11)."""
     shapes = []
     C = trees[0].circles[:-1]  # the obstacles (zero-radius ones are polygon corners)
@@ -176,7 +191,14 @@ def fixed_collision_region(robot, M: Polygon, space: Polygon, trees):
     return swept_region(M, shapes)
 
 
-def structure_collision_region(M: Polygon, trees, nodes, offsets: np.ndarray, arc_step: float, reach: float):
+def structure_collision_region(
+    M: Polygon,
+    trees: Sequence[CableStateTree],
+    nodes: Sequence[int],
+    offsets: np.ndarray,
+    arc_step: float,
+    reach: float,
+) -> BaseGeometry:
     """``H_static ∪ H_active`` (Eqs. 5.12, 5.13) of structure ``nodes``."""
     out = []
     for i, (tree, node) in enumerate(zip(trees, nodes)):

@@ -37,13 +37,18 @@ References
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 import shapely
 from shapely.geometry import MultiPolygon, Polygon
 
 from taut.geometry.tangents import directed_tangent
 from taut.wrapping.tree import DIR, OBJ, UX, UY, CableStateTree
+
+if TYPE_CHECKING:
+    from shapely.geometry.base import BaseGeometry
 
 #: Default angular step [rad] of the chords that polygonise circular arcs.
 ARC_STEP = 0.01
@@ -68,7 +73,7 @@ def _sweep_frame(tree: CableStateTree, node: int) -> tuple[np.ndarray, float, in
     return c, r, d, math.atan2(tree.F[node, UY], tree.F[node, UX]), WRAP_SPAN
 
 
-def _rays(c, r, d, a0, s):
+def _rays(c: np.ndarray, r: float, d: int, a0: float, s: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """Scan-line origins (tangent points) and directions at sweep parameters ``s``."""
     a = a0 + d * np.asarray(s, float)
     U = np.column_stack([np.cos(a), np.sin(a)])
@@ -76,7 +81,7 @@ def _rays(c, r, d, a0, s):
     return c - d * r * N, U
 
 
-def _segment_hits(O, U, P, Q):
+def _segment_hits(O: np.ndarray, U: np.ndarray, P: np.ndarray, Q: np.ndarray) -> np.ndarray:
     """``(A, E)`` ray parameter ``t`` where each ray meets each segment (inf if not)."""
     E = Q - P
     den = U[:, None, 0] * E[None, :, 1] - U[:, None, 1] * E[None, :, 0]
@@ -88,7 +93,7 @@ def _segment_hits(O, U, P, Q):
     return np.where(ok, t, np.inf)
 
 
-def _circle_hits(O, U, C, R, strict: bool = True):
+def _circle_hits(O: np.ndarray, U: np.ndarray, C: np.ndarray, R: np.ndarray, strict: bool = True) -> np.ndarray:
     """``(A, K)`` ray parameter of the first entry into each disc (inf if none)."""
     D = C[None] - O[:, None]
     b = D[..., 0] * U[:, None, 0] + D[..., 1] * U[:, None, 1]
@@ -104,7 +109,7 @@ def _circle_hits(O, U, C, R, strict: bool = True):
 class _Scene:
     """The blocking elements seen by one cable state: segments, circles, polygons."""
 
-    def __init__(self, tree: CableStateTree, node: int, bbox: np.ndarray):
+    def __init__(self, tree: CableStateTree, node: int, bbox: np.ndarray) -> None:
         k = int(tree.I[node, OBJ])
         segs = [tree.static_segments(node)[:-1]] if node != 0 else []
         self.polys = [np.asarray(p, float) for p in tree.disallowed]
@@ -137,7 +142,7 @@ class _Scene:
             pts.append(P[i] + s[ok][:, None] * E[i])
         return np.concatenate(pts)
 
-    def nearest(self, O, U):
+    def nearest(self, O: np.ndarray, U: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``(t, kind, index)`` of the first blocking element along each ray: kind 0 a
         segment, 1 a circle, 2 the origin itself (the ray starts into a polygon)."""
         ts = _segment_hits(O, U, self.P, self.Q)
@@ -156,7 +161,7 @@ class _Scene:
         return t, kind, idx
 
 
-def _circle_segment_angles(c, r, P, Q) -> np.ndarray:
+def _circle_segment_angles(c: np.ndarray, r: float, P: np.ndarray, Q: np.ndarray) -> np.ndarray:
     """Angles about ``c`` of the points where the circle ``(c, r)`` crosses the segments."""
     E = Q - P
     F = P - c
@@ -176,6 +181,7 @@ def _circle_segment_angles(c, r, P, Q) -> np.ndarray:
 
 
 def _bbox(tree: CableStateTree, space: Polygon | None) -> np.ndarray:
+    pts: list[np.ndarray] | np.ndarray
     pts = [tree.circles[:, :2] - tree.circles[:, 2:3], tree.circles[:, :2] + tree.circles[:, 2:3]]
     pts += [np.asarray(p, float) for p in tree.disallowed]
     if space is not None:
@@ -186,7 +192,12 @@ def _bbox(tree: CableStateTree, space: Polygon | None) -> np.ndarray:
     return np.array([lo[0] - m, lo[1] - m, hi[0] + m, hi[1] + m])
 
 
-def cable_reachable_area(tree: CableStateTree, node: int, installation_space=None, arc_step: float = ARC_STEP):
+def cable_reachable_area(
+    tree: CableStateTree,
+    node: int,
+    installation_space: npt.ArrayLike | Polygon | None = None,
+    arc_step: float = ARC_STEP,
+) -> Polygon | MultiPolygon:
     """The CRA of the cable whose state is CST node ``node`` (§5.1.2), as a shapely
     (Multi)Polygon clipped to ``installation_space`` (vertices ``(V, 2)`` or a shapely
     polygon; without one the region is bounded by a box around the objects).
@@ -263,16 +274,16 @@ def cable_reachable_area(tree: CableStateTree, node: int, installation_space=Non
     return _polygonal(region)
 
 
-def close_cracks(geom, eps: float = CRACK):
+def close_cracks(geom: BaseGeometry, eps: float = CRACK) -> Polygon | MultiPolygon:
     """Morphological closing by ``eps``: joins pieces that round-off left a hairline apart
     (two boundary pieces along one scan line do not share vertices)."""
     return _polygonal(geom.buffer(eps, join_style="mitre").buffer(-eps, join_style="mitre"))
 
 
-def _polygonal(geom):
+def _polygonal(geom: BaseGeometry) -> Polygon | MultiPolygon:
     """The polygonal part of a shapely geometry, as a Polygon or MultiPolygon."""
     parts = [g for g in getattr(geom, "geoms", [geom]) if isinstance(g, (Polygon, MultiPolygon)) and not g.is_empty]
-    polys = []
+    polys: list[Polygon] = []
     for g in parts:
         polys.extend(g.geoms if isinstance(g, MultiPolygon) else [g])
     if len(polys) == 1:

@@ -28,7 +28,7 @@ import shapely
 from taut.atlas.atlas import PROBE, StructureAtlas
 from taut.atlas.chart import chart_lengths
 from taut.errors import TautError
-from taut.workspace.conditions import WrenchCondition, make_condition
+from taut.workspace.conditions import WorkspaceCondition, WrenchCondition, make_condition
 
 #: Grid points along the longer side of the atlas when no step is given.
 DEFAULT_RESOLUTION = 200
@@ -70,7 +70,11 @@ def _feasible(atlas: StructureAtlas, cond: WrenchCondition, chart: int, P: np.nd
     return out
 
 
-def atlas_workspace(atlas: StructureAtlas, condition="wrench-feasible", step: float | None = None) -> AtlasWorkspace:
+def atlas_workspace(
+    atlas: StructureAtlas,
+    condition: str | WorkspaceCondition | type[WorkspaceCondition] = "wrench-feasible",
+    step: float | None = None,
+) -> AtlasWorkspace:
     """Alg. 5.2: the workspace under ``condition`` (a name or a
     :class:`~taut.workspace.conditions.WrenchCondition`) and the pruned chart list.
 

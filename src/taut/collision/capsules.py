@@ -76,7 +76,7 @@ class CapsuleModel:
         return len(self.names)
 
 
-def _point_on_segment(p, a, b) -> bool:
+def _point_on_segment(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> bool:
     v = b - a
     vv = float(v @ v)
     t = 0.0 if vv == 0 else min(1.0, max(0.0, float((p - a) @ v) / vv))
@@ -109,7 +109,7 @@ def capsule_model(robot: Robot) -> CapsuleModel:
                 robot.cable_bodies[i] == robot.cable_bodies[j] and np.linalg.norm(anchors[i] - anchors[j]) <= ON_TOL
             )
             pairs.append((i, j))
-            shared.append((same_exit, same_anchor))
+            shared.append((bool(same_exit), bool(same_anchor)))
             cut.append((radii[i] + radii[j]) / math.sin(SHARED_END_ANGLE))
     for i in range(n):
         for c, (k, _) in enumerate(caps):

@@ -23,6 +23,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 from taut.collision.capsules import SHARED_END_MIN, CapsuleModel, capsule_model, capsule_segments
@@ -34,7 +35,7 @@ __all__ = ["ProximityResult", "proximity"]
 
 
 @njit(cache=True)
-def _cut(P, Q, c):
+def _cut(P: np.ndarray, Q: np.ndarray, c: float) -> np.ndarray:
     """``P`` moved towards ``Q`` by ``c`` (at most to ``Q``)."""
     v = Q - P
     L = np.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
@@ -44,7 +45,9 @@ def _cut(P, Q, c):
 
 
 @njit(cache=True)
-def _proximity_kernel(A, B, pairs, shared, cut, dist):
+def _proximity_kernel(
+    A: np.ndarray, B: np.ndarray, pairs: np.ndarray, shared: np.ndarray, cut: np.ndarray, dist: np.ndarray
+) -> None:
     N = A.shape[0]
     for k in range(N):
         for p in range(pairs.shape[0]):
@@ -77,7 +80,7 @@ class ProximityResult:
     @property
     def interference_free(self) -> np.ndarray:
         """``(N,)`` bool: every checked ``ε > 0`` (§3.4)."""
-        return ~self.colliding.any(axis=1)
+        return np.asarray(~self.colliding.any(axis=1))
 
     @property
     def min_clearance(self) -> np.ndarray:
@@ -88,7 +91,7 @@ class ProximityResult:
 
     def collisions(self, k: int) -> list[tuple[int, int]]:
         """Colliding pairs at pose ``k`` as 0-based capsule indices ``(i, j)``."""
-        return [tuple(int(x) for x in self.model.pairs[p]) for p in np.flatnonzero(self.colliding[k])]
+        return [(int(self.model.pairs[p, 0]), int(self.model.pairs[p, 1])) for p in np.flatnonzero(self.colliding[k])]
 
     def _matrix(self, values: np.ndarray) -> np.ndarray:
         N = values.shape[0]
@@ -107,7 +110,7 @@ class ProximityResult:
         return self._matrix(self.clearances)
 
 
-def proximity(robot: Robot, poses, model: CapsuleModel | None = None) -> ProximityResult:
+def proximity(robot: Robot, poses: npt.ArrayLike, model: CapsuleModel | None = None) -> ProximityResult:
     """Proximities and clearances of all checked capsule pairs at each pose (``(N, pose_size)``
     or one pose).  Raises :class:`~taut.errors.PoseError` for invalid poses.
 

@@ -37,6 +37,7 @@ References
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import TautError
 from taut.statics.feasibility import wrench_closure
@@ -51,7 +52,7 @@ LP_TOL = 1e-9
 RANK_TOL = 1e-10
 
 
-def jacobian_singular(J, tol: float = JACOBIAN_TOL) -> tuple[np.ndarray, np.ndarray]:
+def jacobian_singular(J: npt.ArrayLike, tol: float = JACOBIAN_TOL) -> tuple[np.ndarray, np.ndarray]:
     """Jacobian singularity of ``J (N, rows, cols)``: ``(singular (N,), σ_min/σ_max (N,))``.
 
     References
@@ -71,7 +72,7 @@ def jacobian_singular(J, tol: float = JACOBIAN_TOL) -> tuple[np.ndarray, np.ndar
     return ratio <= tol, ratio
 
 
-def positive_span_lp(W) -> np.ndarray:
+def positive_span_lp(W: npt.ArrayLike) -> np.ndarray:
     """Reference positive-span test (one LP per matrix): ``(N,)`` bool, see the module
     docstring."""
     import highspy
@@ -122,7 +123,7 @@ def positive_span_lp(W) -> np.ndarray:
     return out
 
 
-def force_closure_singular(W, method: str = "fast") -> np.ndarray:
+def force_closure_singular(W: npt.ArrayLike, method: str = "fast") -> np.ndarray:
     """Force-closure singularity of the structure matrices ``W (N, m, n)``: ``(N,)`` bool,
     true where the columns do not positively span ``R^m``.  ``method``: ``"fast"``
     (vectorised, for grids) or ``"lp"`` (reference).

@@ -30,10 +30,12 @@ References
 from __future__ import annotations
 
 import json
+from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.collision.capsules import CapsuleModel, capsule_model
 from taut.collision.proximity import ProximityResult, proximity
@@ -67,7 +69,9 @@ def _fill(robot: Robot, waypoints: np.ndarray, what: str) -> np.ndarray:
     return np.concatenate([waypoints, np.broadcast_to(rest, (len(waypoints), size - d))], axis=1)
 
 
-def sample_waypoints(robot: Robot, waypoints, steps=None, what: str = "trajectory") -> np.ndarray:
+def sample_waypoints(
+    robot: Robot, waypoints: npt.ArrayLike, steps: Iterable[int] | None = None, what: str = "trajectory"
+) -> np.ndarray:
     """Poses ``(1 + Σ steps, pose_size)`` along straight moves between ``waypoints``, with
     ``steps[k]`` increments on move ``k`` (default :data:`DEFAULT_STEPS` each)."""
     try:
@@ -122,7 +126,7 @@ def _csv(text: str, robot: Robot, source: str) -> np.ndarray:
     return np.array(rows)
 
 
-def load_trajectory(robot: Robot, path) -> np.ndarray:
+def load_trajectory(robot: Robot, path: str | Path) -> np.ndarray:
     """Poses from a trajectory file (CSV, YAML or JSON; formats in the module docstring).
     Raises :class:`PoseError` / :class:`TautError` naming the file for bad content."""
     path = Path(path)
@@ -213,7 +217,12 @@ class CheckResult:
 
 
 def check_poses(
-    robot: Robot, poses, *, jacobian_tol: float = JACOBIAN_TOL, method: str = "fast", model: CapsuleModel | None = None
+    robot: Robot,
+    poses: npt.ArrayLike,
+    *,
+    jacobian_tol: float = JACOBIAN_TOL,
+    method: str = "fast",
+    model: CapsuleModel | None = None,
 ) -> CheckResult:
     """Self-collision and singularity check at each of the poses ``(N, pose_size)``.
 

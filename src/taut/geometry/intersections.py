@@ -15,16 +15,19 @@ References
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 #: Default tolerance [m] of the strict tests (round-off of tangent constructions).
 TOL = 1e-9
 
 
-def _cross(p, q):
+def _cross(p: np.ndarray, q: np.ndarray) -> np.ndarray:
     return p[..., 0] * q[..., 1] - p[..., 1] * q[..., 0]
 
 
-def segments_intersect(a1, b1, a2, b2, tol: float = 0.0, collinear: bool = True):
+def segments_intersect(
+    a1: npt.ArrayLike, b1: npt.ArrayLike, a2: npt.ArrayLike, b2: npt.ArrayLike, tol: float = 0.0, collinear: bool = True
+) -> np.ndarray:
     """Whether segments ``a1b1`` and ``a2b2`` share a point (A.1).
 
     With ``s = ((a2 − a1) × (b2 − a2)) / ((b1 − a1) × (b2 − a2))`` and ``u = ((a2 − a1) ×
@@ -60,7 +63,7 @@ def segments_intersect(a1, b1, a2, b2, tol: float = 0.0, collinear: bool = True)
     return np.where(parallel, on_line & overlap & collinear, crossing)
 
 
-def closest_point_on_segment(a, b, c):
+def closest_point_on_segment(a: npt.ArrayLike, b: npt.ArrayLike, c: npt.ArrayLike) -> np.ndarray:
     """The point ``q`` of segment ``ab`` closest to ``c`` (A.2)."""
     a, b, c = (np.asarray(v, float) for v in (a, b, c))
     ab = b - a
@@ -70,14 +73,16 @@ def closest_point_on_segment(a, b, c):
     return a + s[..., None] * ab
 
 
-def segment_circle_distance(a, b, c):
+def segment_circle_distance(a: npt.ArrayLike, b: npt.ArrayLike, c: npt.ArrayLike) -> np.ndarray:
     """Distance from the centre ``c`` to segment ``ab`` (A.2: ``‖q − c‖``)."""
     q = closest_point_on_segment(a, b, c)
     d = q - np.asarray(c, float)
     return np.hypot(d[..., 0], d[..., 1])
 
 
-def segment_meets_circle(a, b, c, r, tol: float = TOL):
+def segment_meets_circle(
+    a: npt.ArrayLike, b: npt.ArrayLike, c: npt.ArrayLike, r: npt.ArrayLike, tol: float = TOL
+) -> np.ndarray:
     """Whether segment ``ab`` enters the open disc ``(c, r)``: ``‖q − c‖ < r − tol``.
 
     A.2 states ``≤ r``; the strict form lets a cable touch an object tangentially (a
@@ -91,7 +96,7 @@ def segment_meets_circle(a, b, c, r, tol: float = TOL):
     return segment_circle_distance(a, b, c) < np.asarray(r, float) - tol
 
 
-def point_in_polygon(p, vertices):
+def point_in_polygon(p: npt.ArrayLike, vertices: npt.ArrayLike) -> np.ndarray:
     """Whether points ``p`` (``(..., 2)``) lie strictly inside the polygon (even–odd rule)."""
     p = np.asarray(p, float)
     v = np.asarray(vertices, float)
@@ -103,7 +108,7 @@ def point_in_polygon(p, vertices):
     return (np.count_nonzero(cond & (x < xs), axis=-1) % 2) == 1
 
 
-def segment_enters_polygon(a, b, vertices, tol: float = TOL):
+def segment_enters_polygon(a: npt.ArrayLike, b: npt.ArrayLike, vertices: npt.ArrayLike, tol: float = TOL) -> np.ndarray:
     """Whether segment ``ab`` enters the interior of a polygon (a disallowed region, §4.2.1).
 
     §4.2.1 checks the segment against each edge of the bounding polygon (A.1); a segment
@@ -121,7 +126,9 @@ def segment_enters_polygon(a, b, vertices, tol: float = TOL):
     return hit | (point_in_polygon(mid, v) & ~on_boundary)
 
 
-def circles_overlap(c1, r1, c2, r2, tol: float = TOL):
+def circles_overlap(
+    c1: npt.ArrayLike, r1: npt.ArrayLike, c2: npt.ArrayLike, r2: npt.ArrayLike, tol: float = TOL
+) -> np.ndarray:
     """Whether two closed discs share interior points (``‖c1 − c2‖ < r1 + r2 − tol``),
     or coincide (two points at the same place)."""
     d = np.asarray(c2, float) - np.asarray(c1, float)

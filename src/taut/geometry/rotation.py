@@ -26,6 +26,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 CONVENTIONS = ("xyz-fixed", "xyz-moving", "tilt-torsion")
@@ -58,14 +59,14 @@ def _matrices(angles: np.ndarray, code: int) -> np.ndarray:
     return out
 
 
-def planar_rotation(theta) -> np.ndarray:
+def planar_rotation(theta: npt.ArrayLike) -> np.ndarray:
     """``R(θ)`` of shape ``(..., 2, 2)`` for angles of shape ``(...)``."""
     theta = np.asarray(theta, dtype=float)
     c, s = np.cos(theta), np.sin(theta)
     return np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)
 
 
-def rotation_matrix(angles, convention: str = "xyz-fixed") -> np.ndarray:
+def rotation_matrix(angles: npt.ArrayLike, convention: str = "xyz-fixed") -> np.ndarray:
     """Rotation matrices ``(..., 3, 3)`` from three angles ``(..., 3)`` in ``convention``.
 
     References
@@ -112,7 +113,7 @@ def _angles(R: np.ndarray, code: int) -> np.ndarray:
     return out
 
 
-def angles_from_matrix(R, convention: str = "xyz-fixed") -> np.ndarray:
+def angles_from_matrix(R: npt.ArrayLike, convention: str = "xyz-fixed") -> np.ndarray:
     """Inverse of :func:`rotation_matrix`: angles ``(..., 3)`` with the middle angle in
     ``[-π/2, π/2]`` (``[0, π]`` for tilt-and-torsion)."""
     if convention not in CONVENTIONS:

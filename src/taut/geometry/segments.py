@@ -34,7 +34,10 @@ References
 
 from __future__ import annotations
 
+from typing import Literal, overload
+
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 __all__ = ["segment_distance"]
@@ -44,12 +47,14 @@ PARALLEL_TOL = 1e-14
 
 
 @njit(cache=True, inline="always")
-def _clamp01(x):
+def _clamp01(x: float) -> float:
     return 0.0 if x < 0.0 else (1.0 if x > 1.0 else x)
 
 
 @njit(cache=True)
-def _point_segment(px, py, pz, ax, ay, az, vx, vy, vz, vv):
+def _point_segment(
+    px: float, py: float, pz: float, ax: float, ay: float, az: float, vx: float, vy: float, vz: float, vv: float
+) -> tuple[float, float]:
     """(squared distance, parameter) from point p to the segment a + t v."""
     t = 0.0
     if vv > 0.0:
@@ -61,7 +66,9 @@ def _point_segment(px, py, pz, ax, ay, az, vx, vy, vz, vv):
 
 
 @njit(cache=True)
-def segment_distance_scalar(a1, b1, a2, b2):
+def segment_distance_scalar(
+    a1: np.ndarray, b1: np.ndarray, a2: np.ndarray, b2: np.ndarray
+) -> tuple[float, float, float]:
     """``(δ, ξ_i, ξ_j)`` of the segments ``a1 b1`` and ``a2 b2`` (3-vectors)."""
     v1x, v1y, v1z = b1[0] - a1[0], b1[1] - a1[1], b1[2] - a1[2]
     v2x, v2y, v2z = b2[0] - a2[0], b2[1] - a2[1], b2[2] - a2[2]
@@ -109,7 +116,9 @@ def segment_distance_scalar(a1, b1, a2, b2):
 
 
 @njit(cache=True)
-def _distance_kernel(a1, b1, a2, b2, dist, xi, xj):
+def _distance_kernel(
+    a1: np.ndarray, b1: np.ndarray, a2: np.ndarray, b2: np.ndarray, dist: np.ndarray, xi: np.ndarray, xj: np.ndarray
+) -> None:
     for k in range(a1.shape[0]):
         dist[k], xi[k], xj[k] = segment_distance_scalar(a1[k], b1[k], a2[k], b2[k])
 
@@ -122,7 +131,17 @@ def _as3(x: np.ndarray) -> np.ndarray:
     raise ValueError(f"segment end points must be 2-D or 3-D, got {x.shape[-1]} coordinates")
 
 
-def segment_distance(a1, b1, a2, b2, *, parameters: bool = False):
+@overload
+def segment_distance(
+    a1: npt.ArrayLike, b1: npt.ArrayLike, a2: npt.ArrayLike, b2: npt.ArrayLike, *, parameters: Literal[False] = ...
+) -> np.ndarray: ...
+@overload
+def segment_distance(
+    a1: npt.ArrayLike, b1: npt.ArrayLike, a2: npt.ArrayLike, b2: npt.ArrayLike, *, parameters: Literal[True]
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]: ...
+def segment_distance(
+    a1: npt.ArrayLike, b1: npt.ArrayLike, a2: npt.ArrayLike, b2: npt.ArrayLike, *, parameters: bool = False
+) -> np.ndarray | tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Minimal distance ``δ`` between the segments ``a1 b1`` and ``a2 b2`` (§3.5).
 
     The end points are arrays ``(..., 2)`` or ``(..., 3)`` that broadcast together; returns
@@ -140,7 +159,7 @@ def segment_distance(a1, b1, a2, b2, *, parameters: bool = False):
     flat = [np.ascontiguousarray(_as3(x).reshape(-1, 3)) for x in arrs]
     M = flat[0].shape[0]
     dist, xi, xj = np.empty(M), np.empty(M), np.empty(M)
-    _distance_kernel(*flat, dist, xi, xj)
+    _distance_kernel(flat[0], flat[1], flat[2], flat[3], dist, xi, xj)
     if parameters:
         return dist.reshape(shape), xi.reshape(shape), xj.reshape(shape)
     return dist.reshape(shape)

@@ -25,9 +25,12 @@ References
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 
-def directed_tangent(c1, r1, d1, c2, r2, d2):
+def directed_tangent(
+    c1: npt.ArrayLike, r1: npt.ArrayLike, d1: npt.ArrayLike, c2: npt.ArrayLike, r2: npt.ArrayLike, d2: npt.ArrayLike
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """The tangent from circle 1 (wrap ``d1``) to circle 2 (wrap ``d2``), arrays broadcast.
 
     Returns ``(x1, x2, u, length, exists)``: the tangent points ``(..., 2)``, the unit
@@ -51,7 +54,7 @@ def directed_tangent(c1, r1, d1, c2, r2, d2):
     return x1, x2, u, L, exists
 
 
-def point_circle_tangents(a, c, r):
+def point_circle_tangents(a: npt.ArrayLike, c: npt.ArrayLike, r: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """Both tangents from point ``a`` to circle ``(c, r)`` (A.3).
 
     Returns ``(b, dirs)``: tangent points ``(..., 2, 2)`` for the wrap directions
@@ -71,7 +74,9 @@ def point_circle_tangents(a, c, r):
     return b, dirs
 
 
-def circle_circle_tangents(c1, r1, c2, r2):
+def circle_circle_tangents(
+    c1: npt.ArrayLike, r1: npt.ArrayLike, c2: npt.ArrayLike, r2: npt.ArrayLike
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """The four common tangents of two circles (A.4): two external, two internal.
 
     Returns ``(a, b, dir1, dir2)`` with tangent points ``a`` on circle 1 and ``b`` on
@@ -95,7 +100,7 @@ def circle_circle_tangents(c1, r1, c2, r2):
     return a, b, dir1, dir2
 
 
-def wrap_direction(c, x, y):
+def wrap_direction(c: npt.ArrayLike, x: npt.ArrayLike, y: npt.ArrayLike) -> np.ndarray:
     """Wrap direction about the circle centred at ``c`` of a cable that runs along
     ``x → y`` touching the circle at ``x`` (or at ``y``): ``sign((y − x) × (c − x))``,
     ``+1`` (ccw) when the centre is on the left of the travel.  This is ``dir`` of A.3

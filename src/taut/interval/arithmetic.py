@@ -17,55 +17,58 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 from taut.interval import kernels as K
 
 
 @njit(cache=True, fastmath=False)
-def _add(al, ah, bl, bh, lo, hi):
+def _add(al: np.ndarray, ah: np.ndarray, bl: np.ndarray, bh: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> None:
     for i in range(lo.size):
         lo[i], hi[i] = K.add(al[i], ah[i], bl[i], bh[i])
 
 
 @njit(cache=True, fastmath=False)
-def _sub(al, ah, bl, bh, lo, hi):
+def _sub(al: np.ndarray, ah: np.ndarray, bl: np.ndarray, bh: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> None:
     for i in range(lo.size):
         lo[i], hi[i] = K.sub(al[i], ah[i], bl[i], bh[i])
 
 
 @njit(cache=True, fastmath=False)
-def _mul(al, ah, bl, bh, lo, hi):
+def _mul(al: np.ndarray, ah: np.ndarray, bl: np.ndarray, bh: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> None:
     for i in range(lo.size):
         lo[i], hi[i] = K.mul(al[i], ah[i], bl[i], bh[i])
 
 
 @njit(cache=True, fastmath=False)
-def _div(al, ah, bl, bh, lo, hi):
+def _div(al: np.ndarray, ah: np.ndarray, bl: np.ndarray, bh: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> None:
     for i in range(lo.size):
         lo[i], hi[i] = K.div(al[i], ah[i], bl[i], bh[i])
 
 
 @njit(cache=True, fastmath=False)
-def _sqr(al, ah, lo, hi):
+def _sqr(al: np.ndarray, ah: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> None:
     for i in range(lo.size):
         lo[i], hi[i] = K.sqr(al[i], ah[i])
 
 
 @njit(cache=True, fastmath=False)
-def _sqrt(al, ah, lo, hi):
+def _sqrt(al: np.ndarray, ah: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> None:
     for i in range(lo.size):
         lo[i], hi[i] = K.sqrt(al[i], ah[i])
 
 
 @njit(cache=True, fastmath=False)
-def _pow(al, ah, n, lo, hi):
+def _pow(al: np.ndarray, ah: np.ndarray, n: int, lo: np.ndarray, hi: np.ndarray) -> None:
     for i in range(lo.size):
         lo[i], hi[i] = K.power(al[i], ah[i], n)
 
 
-def _flat(*arrays):
+def _flat(*arrays: np.ndarray) -> tuple[tuple[int, ...], list[np.ndarray]]:
     shape = np.broadcast_shapes(*(a.shape for a in arrays))
     return shape, [np.ascontiguousarray(np.broadcast_to(a, shape), dtype=np.float64).ravel() for a in arrays]
 
@@ -75,7 +78,7 @@ class Interval:
 
     __array_priority__ = 1000  # ``ndarray + Interval`` defers to Interval.__radd__
 
-    def __init__(self, lo, hi=None):
+    def __init__(self, lo: npt.ArrayLike, hi: npt.ArrayLike | None = None) -> None:
         lo = np.asarray(lo, dtype=np.float64)
         hi = lo if hi is None else np.asarray(hi, dtype=np.float64)
         shape = np.broadcast_shapes(lo.shape, hi.shape)
@@ -84,12 +87,12 @@ class Interval:
 
     # -- construction and inspection -------------------------------------------------
     @classmethod
-    def point(cls, x) -> Interval:
+    def point(cls, x: npt.ArrayLike) -> Interval:
         """The degenerate interval ``[x, x]`` (exact: ``x`` is a float)."""
         return cls(x, x)
 
     @property
-    def shape(self):
+    def shape(self) -> tuple[int, ...]:
         return self.lo.shape
 
     @property
@@ -103,13 +106,13 @@ class Interval:
     def is_empty(self) -> np.ndarray:
         return ~(self.lo <= self.hi)
 
-    def contains(self, x) -> np.ndarray:
+    def contains(self, x: npt.ArrayLike) -> np.ndarray:
         return (self.lo <= x) & (x <= self.hi)
 
     def subset(self, other: Interval) -> np.ndarray:
         return (other.lo <= self.lo) & (self.hi <= other.hi)
 
-    def __getitem__(self, key) -> Interval:
+    def __getitem__(self, key: int | slice | np.ndarray | tuple[int | slice | np.ndarray | None, ...]) -> Interval:
         return Interval(self.lo[key], self.hi[key])
 
     def __repr__(self) -> str:
@@ -119,42 +122,42 @@ class Interval:
 
     # -- arithmetic -------------------------------------------------------------------
     @staticmethod
-    def _coerce(x) -> Interval:
+    def _coerce(x: Interval | npt.ArrayLike) -> Interval:
         return x if isinstance(x, Interval) else Interval(x, x)
 
-    def _binary(self, other, kernel, swap=False) -> Interval:
+    def _binary(self, other: Interval | npt.ArrayLike, kernel: Callable[..., None], swap: bool = False) -> Interval:
         a, b = (self._coerce(other), self) if swap else (self, self._coerce(other))
         shape, (al, ah, bl, bh) = _flat(a.lo, a.hi, b.lo, b.hi)
         lo, hi = np.empty_like(al), np.empty_like(al)
         kernel(al, ah, bl, bh, lo, hi)
         return Interval(lo.reshape(shape), hi.reshape(shape))
 
-    def __add__(self, other):
+    def __add__(self, other: Interval | npt.ArrayLike) -> Interval:
         return self._binary(other, _add)
 
     __radd__ = __add__
 
-    def __sub__(self, other):
+    def __sub__(self, other: Interval | npt.ArrayLike) -> Interval:
         return self._binary(other, _sub)
 
-    def __rsub__(self, other):
+    def __rsub__(self, other: Interval | npt.ArrayLike) -> Interval:
         return self._binary(other, _sub, swap=True)
 
-    def __mul__(self, other):
+    def __mul__(self, other: Interval | npt.ArrayLike) -> Interval:
         return self._binary(other, _mul)
 
     __rmul__ = __mul__
 
-    def __truediv__(self, other):
+    def __truediv__(self, other: Interval | npt.ArrayLike) -> Interval:
         return self._binary(other, _div)
 
-    def __rtruediv__(self, other):
+    def __rtruediv__(self, other: Interval | npt.ArrayLike) -> Interval:
         return self._binary(other, _div, swap=True)
 
-    def __neg__(self):
+    def __neg__(self) -> Interval:
         return Interval(-self.hi, -self.lo)
 
-    def _unary(self, kernel, *args) -> Interval:
+    def _unary(self, kernel: Callable[..., None], *args: int) -> Interval:
         shape, (al, ah) = _flat(self.lo, self.hi)
         lo, hi = np.empty_like(al), np.empty_like(al)
         kernel(al, ah, *args, lo, hi)

@@ -42,9 +42,12 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from typing import cast
 
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 from taut.interval.expression import System
@@ -63,7 +66,21 @@ class BranchAndPruneResult:
 
 
 @njit(cache=True, fastmath=False)
-def _smear(jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, h, lo, hi, primary):
+def _smear(
+    jop: np.ndarray,
+    ja: np.ndarray,
+    jb: np.ndarray,
+    jclo: np.ndarray,
+    jchi: np.ndarray,
+    jstart: np.ndarray,
+    jend: np.ndarray,
+    rows: np.ndarray,
+    cols: np.ndarray,
+    h: int,
+    lo: np.ndarray,
+    hi: np.ndarray,
+    primary: np.ndarray,
+) -> np.ndarray:
     """Relative smear of each primary variable over the box: ``Σ_i s_ij / Σ_k s_ik`` with
     ``s_ij = mag(J_ij(X)) w(X_j)`` (Kearfott & Novoa 1990; "smearsumrel" of Ibex), the
     share of each equation's width that the variable is responsible for.  Zeros (no
@@ -75,7 +92,16 @@ def _smear(jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, h, lo, hi, primary
 
 
 @njit(cache=True, fastmath=False)
-def _smear_of(rows, cols, h, vl, vh, lo, hi, primary):
+def _smear_of(
+    rows: np.ndarray,
+    cols: np.ndarray,
+    h: int,
+    vl: np.ndarray,
+    vh: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+    primary: np.ndarray,
+) -> np.ndarray:
     """:func:`_smear` from the Jacobian's nonzero entries ``[vl, vh]`` (at ``rows, cols``)."""
     n, nj = lo.size, rows.size
     sm = np.zeros(nj)
@@ -94,7 +120,7 @@ def _smear_of(rows, cols, h, vl, vh, lo, hi, primary):
 
 
 @njit(cache=True, fastmath=False)
-def _bisect_index(width, primary, eps, score):
+def _bisect_index(width: np.ndarray, primary: np.ndarray, eps: float, score: np.ndarray) -> int:
     """The variable to bisect (§3.1.4): a primary one while the widest of them is at least
     ``eps`` — the one of largest ``score`` (:func:`_smear`) when any is positive, else the
     widest — then the widest variable of all."""
@@ -111,7 +137,9 @@ def _bisect_index(width, primary, eps, score):
     return j
 
 
-def _split(lo, hi, j):
+def _split(
+    lo: np.ndarray, hi: np.ndarray, j: int
+) -> tuple[tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]:
     m = 0.5 * lo[j] + 0.5 * hi[j]
     if not np.isfinite(m):  # unbounded variable: split at a finite point
         m = max(2.0 * lo[j], 1.0) if np.isfinite(lo[j]) else (min(2.0 * hi[j], -1.0) if np.isfinite(hi[j]) else 0.0)
@@ -124,20 +152,20 @@ def _split(lo, hi, j):
 
 def branch_and_prune(
     system: System,
-    lo,
-    hi,
+    lo: npt.ArrayLike,
+    hi: npt.ArrayLike,
     *,
-    primary=None,
+    primary: npt.ArrayLike | None = None,
     eps: float = 1e-7,
     certify_width: float = 0.5,
     newton_width: float = 1e-3,
     max_boxes: int = 2_000_000,
-    filters=(),
+    filters: Sequence[Callable[[np.ndarray, np.ndarray], bool]] = (),
     method: str = "auto",
     passes: int = 1,
     gain: float = 0.2,
     ratio: float = 0.05,
-    domain=None,
+    domain: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
     bisection: str = "width",
     tube: int = 0,
     filter_width: float = np.inf,
@@ -262,7 +290,8 @@ def branch_and_prune(
                         continue
                     if cert.covers(lo, hi):
                         continue
-            lo, hi = np.maximum(lo, res.lo), np.minimum(hi, res.hi)
+            # casts: numpy types the ufuncs' result Any, which would widen lo, hi back to ArrayLike
+            lo, hi = cast(np.ndarray, np.maximum(lo, res.lo)), cast(np.ndarray, np.minimum(hi, res.hi))
             if np.any(lo > hi):
                 continue
             width = hi - lo
@@ -277,7 +306,7 @@ def branch_and_prune(
 
 
 @njit(cache=True, fastmath=False)
-def _primary_width(lo, hi, primary):
+def _primary_width(lo: np.ndarray, hi: np.ndarray, primary: np.ndarray) -> float:
     w = 0.0
     for i in range(lo.size):
         if primary[i] and hi[i] - lo[i] > w:
@@ -286,7 +315,7 @@ def _primary_width(lo, hi, primary):
 
 
 @njit(cache=True, fastmath=False)
-def _pad(lo, hi, lo0, hi0):
+def _pad(lo: np.ndarray, hi: np.ndarray, lo0: np.ndarray, hi0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The box widened by 0.1 % of its widths (at least ~1e-10 relative), within the
     domain: Krawczyk cannot prove ``K(X) ⊂ int X`` on a box HC4 shrank to a few ulps."""
     klo, khi = np.empty(lo.size), np.empty(lo.size)
@@ -303,61 +332,61 @@ _DONE, _CERTIFY, _UNDECIDED, _MAX_BOXES, _STACK_FULL = range(5)
 
 @njit(cache=True, fastmath=False)
 def _drive(
-    op,
-    a,
-    b,
-    clo,
-    chi,
-    start,
-    end,
-    blo,
-    bhi,
-    h,
-    jop,
-    ja,
-    jb,
-    jclo,
-    jchi,
-    jstart,
-    jend,
-    rows,
-    cols,
-    fop,
-    fa,
-    fb,
-    fclo,
-    fchi,
-    fstart,
-    fend,
-    fm,
-    fsign,
-    stk_lo,
-    stk_hi,
-    sp,
-    sol_x,
-    sol_r,
-    nsol,
-    lo0,
-    hi0,
-    primary,
-    eps,
-    certify_width,
-    newton_width,
-    max_boxes,
-    boxes,
-    out,
-    passes,
-    gain,
-    ratio,
-    stats,
-    smear,
-    tube_g,
-    tube_vars,
-    dependent,
-    tube_points,
-    krawczyk_points,
-    filter_width,
-):
+    op: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    clo: np.ndarray,
+    chi: np.ndarray,
+    start: np.ndarray,
+    end: np.ndarray,
+    blo: np.ndarray,
+    bhi: np.ndarray,
+    h: int,
+    jop: np.ndarray,
+    ja: np.ndarray,
+    jb: np.ndarray,
+    jclo: np.ndarray,
+    jchi: np.ndarray,
+    jstart: np.ndarray,
+    jend: np.ndarray,
+    rows: np.ndarray,
+    cols: np.ndarray,
+    fop: np.ndarray,
+    fa: np.ndarray,
+    fb: np.ndarray,
+    fclo: np.ndarray,
+    fchi: np.ndarray,
+    fstart: np.ndarray,
+    fend: np.ndarray,
+    fm: int,
+    fsign: bool,
+    stk_lo: np.ndarray,
+    stk_hi: np.ndarray,
+    sp: int,
+    sol_x: np.ndarray,
+    sol_r: np.ndarray,
+    nsol: int,
+    lo0: np.ndarray,
+    hi0: np.ndarray,
+    primary: np.ndarray,
+    eps: float,
+    certify_width: float,
+    newton_width: float,
+    max_boxes: int,
+    boxes: int,
+    out: np.ndarray,
+    passes: int,
+    gain: float,
+    ratio: float,
+    stats: np.ndarray,
+    smear: bool,
+    tube_g: int,
+    tube_vars: np.ndarray,
+    dependent: int,
+    tube_points: int,
+    krawczyk_points: int,
+    filter_width: float,
+) -> tuple[int, int, int, bool]:
     """The loop of :func:`branch_and_prune` on the stack ``stk_lo[:sp], stk_hi[:sp]``
     until a box needs Python (a certification, an undecided box, the box budget, a full
     stack).  Returns ``(code, sp, boxes, unique)``; ``out`` rows hold the box, the
@@ -539,7 +568,9 @@ def _slope_points(system: System, k: int) -> int:
     return points_for(int(np.max(system.degrees[:k]))) if k else 0
 
 
-def _domain(lo, hi, domain) -> tuple[np.ndarray, np.ndarray]:
+def _domain(
+    lo: npt.ArrayLike, hi: npt.ArrayLike, domain: tuple[npt.ArrayLike, npt.ArrayLike] | None
+) -> tuple[np.ndarray, np.ndarray]:
     if domain is None:
         return np.array(lo, float), np.array(hi, float)
     dlo, dhi = (np.array(d, float) for d in domain)
@@ -554,23 +585,23 @@ def same_solution(a: Certificate, b: Certificate) -> bool:
 
 
 def _branch_and_prune_numba(
-    system,
-    lo,
-    hi,
-    primary,
-    eps,
-    certify_width,
-    newton_width,
-    max_boxes,
-    filters,
-    passes,
-    gain,
-    ratio,
-    domain,
-    smear,
-    tube,
-    filter_width,
-):
+    system: System,
+    lo: npt.ArrayLike,
+    hi: npt.ArrayLike,
+    primary: npt.ArrayLike | None,
+    eps: float,
+    certify_width: float,
+    newton_width: float,
+    max_boxes: int,
+    filters: Sequence[Callable[[np.ndarray, np.ndarray], bool]],
+    passes: int,
+    gain: float,
+    ratio: float,
+    domain: tuple[npt.ArrayLike, npt.ArrayLike] | None,
+    smear: bool,
+    tube: int,
+    filter_width: float,
+) -> BranchAndPruneResult:
     lo0, hi0 = _domain(lo, hi, domain)
     n = lo0.size
     primary = np.ones(n, bool) if primary is None else np.asarray(primary, bool)
@@ -579,6 +610,7 @@ def _branch_and_prune_numba(
     t_jac = (*jt.arrays[:7], system.rows, system.cols, system.n_equations)
     if filters:
         f = filters[0]
+        assert isinstance(f, LinearFilter)  # the caller runs this loop only with LinearFilters
         ftape, fm, fsign = f.tape.arrays[:7], f.m, f.sign_only
     else:
         ftape, fm, fsign = jt.arrays[:7], 0, False
@@ -592,7 +624,7 @@ def _branch_and_prune_numba(
     tube_vars, dependent = _tube_vars(system, tube, primary)
     tube_points, krawczyk_points = _slope_points(system, tube), _slope_points(system, system.n_equations)
 
-    def push(blo, bhi):
+    def push(blo: np.ndarray, bhi: np.ndarray) -> None:
         nonlocal sp, stk_lo, stk_hi
         if sp >= stk_lo.shape[0]:
             stk_lo = np.concatenate([stk_lo, np.empty_like(stk_lo)])
@@ -693,7 +725,7 @@ def _drop_covered(out: BranchAndPruneResult) -> BranchAndPruneResult:
     return out
 
 
-def _admissible(system: System, cert: Certificate, lo0, hi0) -> bool:
+def _admissible(system: System, cert: Certificate, lo0: np.ndarray, hi0: np.ndarray) -> bool:
     """The certified box lies in the search domain and satisfies the redundant constraints
     (a solution whose enclosure straddles a bound — e.g. a zero tension — is rejected: it
     belongs to the boundary, see :mod:`taut.dgp`)."""

@@ -23,6 +23,7 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -37,13 +38,13 @@ class Expr:
     __slots__ = ("op", "args", "index", "lo", "hi")
     __array_priority__ = 1000
 
-    def __init__(self, op, args=(), index=0, lo=0.0, hi=0.0):
+    def __init__(self, op: int, args: Iterable[Expr] = (), index: int = 0, lo: float = 0.0, hi: float = 0.0) -> None:
         self.op, self.args, self.index, self.lo, self.hi = op, tuple(args), int(index), float(lo), float(hi)
 
-    def is_const(self, value=None) -> bool:
+    def is_const(self, value: float | None = None) -> bool:
         return self.op == CONST and (value is None or (self.lo == value and self.hi == value))
 
-    def __add__(self, o):
+    def __add__(self, o: Expr | float) -> Expr:
         o = _coerce(o)
         if self.is_const(0.0):
             return o
@@ -51,10 +52,10 @@ class Expr:
             return self
         return Expr(ADD, (self, o))
 
-    def __radd__(self, o):
+    def __radd__(self, o: Expr | float) -> Expr:
         return _coerce(o) + self
 
-    def __sub__(self, o):
+    def __sub__(self, o: Expr | float) -> Expr:
         o = _coerce(o)
         if o.is_const(0.0):
             return self
@@ -62,10 +63,10 @@ class Expr:
             return -o
         return Expr(SUB, (self, o))
 
-    def __rsub__(self, o):
+    def __rsub__(self, o: Expr | float) -> Expr:
         return _coerce(o) - self
 
-    def __mul__(self, o):
+    def __mul__(self, o: Expr | float) -> Expr:
         o = _coerce(o)
         if self.is_const(0.0) or o.is_const(0.0):
             return ZERO
@@ -75,18 +76,18 @@ class Expr:
             return self
         return Expr(MUL, (self, o))
 
-    def __rmul__(self, o):
+    def __rmul__(self, o: Expr | float) -> Expr:
         return _coerce(o) * self
 
-    def __truediv__(self, o):
+    def __truediv__(self, o: Expr | float) -> Expr:
         return Expr(DIV, (self, _coerce(o)))
 
-    def __neg__(self):
+    def __neg__(self) -> Expr:
         if self.op == CONST:
             return Expr(CONST, lo=-self.hi, hi=-self.lo)
         return Expr(NEG, (self,))
 
-    def __pow__(self, n: int):
+    def __pow__(self, n: int) -> Expr:
         if int(n) != n or n < 0:
             raise ValueError(f"expressions take non-negative integer powers, got {n!r}")
         n = int(n)
@@ -114,7 +115,7 @@ def const(lo: float, hi: float | None = None) -> Expr:
     return Expr(CONST, lo=lo, hi=lo if hi is None else hi)
 
 
-def _coerce(x) -> Expr:
+def _coerce(x: Expr | float) -> Expr:
     return x if isinstance(x, Expr) else const(float(x))
 
 
@@ -226,7 +227,11 @@ class Tape:
     bhi: np.ndarray
 
     @property
-    def arrays(self):
+    def arrays(
+        self,
+    ) -> tuple[
+        np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray
+    ]:
         return (self.op, self.a, self.b, self.clo, self.chi, self.start, self.end, self.blo, self.bhi)
 
     @property
@@ -240,7 +245,7 @@ class Tape:
         return int(np.count_nonzero(first & (self.a == k)) + np.count_nonzero(second & (self.b == k)))
 
 
-def compile_tape(exprs, bounds) -> Tape:
+def compile_tape(exprs: Iterable[Expr | float], bounds: Sequence[tuple[float, ...]]) -> Tape:
     """Compile expressions ``exprs[c]`` with value bounds ``bounds[c] = (lo, hi)``.
 
     Nodes are shared across constraints and merged when structurally equal (hash-consing:
@@ -248,6 +253,7 @@ def compile_tape(exprs, bounds) -> Tape:
     nodes that earlier constraints lack: the tape is evaluated in order, from its first
     node (a Jacobian's entries and the secondary points of the DGP repeat the same
     products many times over)."""
+    op: list[int]
     op, a, b, clo, chi, start, end = [], [], [], [], [], [], []
     index: dict = {}
     keep: list[Expr] = []  # an id is a key only while its object lives
@@ -322,7 +328,11 @@ class System:
     degrees: np.ndarray
 
 
-def compile_system(n: int, equations, constraints=()) -> System:
+def compile_system(
+    n: int,
+    equations: Iterable[Expr],
+    constraints: Sequence[tuple[Expr | float, tuple[float, float]]] = (),
+) -> System:
     """Compile ``equations`` (expressions equal to 0, ``len == n``) and ``constraints``
     (pairs ``(expr, (lo, hi))``) over the unknowns ``x_0 … x_{n-1}``."""
     equations = [_coerce(e) for e in equations]
@@ -343,6 +353,6 @@ def compile_system(n: int, equations, constraints=()) -> System:
                 rows.append(i)
                 cols.append(j)
     jtape = compile_tape(jac, [(-np.inf, np.inf)] * len(jac))
-    memo: dict = {}
+    memo = {}
     degrees = np.array([degree(e, memo) for e in equations], np.int64)
     return System(n, n, tape, jtape, np.array(rows, np.int64), np.array(cols, np.int64), degrees)

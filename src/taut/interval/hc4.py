@@ -28,6 +28,7 @@ References
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 from taut.interval import kernels as K
@@ -35,7 +36,19 @@ from taut.interval.expression import ADD, CONST, MUL, NEG, POW, SQR, SQRT, SUB, 
 
 
 @njit(cache=True, fastmath=False)
-def _forward(op, a, b, clo, chi, s, e, lo, hi, nl, nh):
+def _forward(
+    op: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    clo: np.ndarray,
+    chi: np.ndarray,
+    s: int,
+    e: int,
+    lo: np.ndarray,
+    hi: np.ndarray,
+    nl: np.ndarray,
+    nh: np.ndarray,
+) -> None:
     for k in range(s, e):
         o = op[k]
         if o == VAR:
@@ -61,7 +74,7 @@ def _forward(op, a, b, clo, chi, s, e, lo, hi, nl, nh):
 
 
 @njit(cache=True, fastmath=False, inline="always")
-def _meet(nl, nh, i, lo, hi):
+def _meet(nl: np.ndarray, nh: np.ndarray, i: int, lo: float, hi: float) -> bool:
     """Intersect node ``i`` with ``[lo, hi]``; False when it becomes empty."""
     if lo > nl[i]:
         nl[i] = lo
@@ -71,7 +84,19 @@ def _meet(nl, nh, i, lo, hi):
 
 
 @njit(cache=True, fastmath=False)
-def _backward(op, a, b, s, e, lo, hi, nl, nh, fl, fh):
+def _backward(
+    op: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    s: int,
+    e: int,
+    lo: np.ndarray,
+    hi: np.ndarray,
+    nl: np.ndarray,
+    nh: np.ndarray,
+    fl: np.ndarray,
+    fh: np.ndarray,
+) -> bool:
     """Project nodes ``e − 1`` down to ``s`` onto their children.  A node whose domain is
     still its forward value ``[fl, fh]`` (no parent or bound narrowed it) is skipped: as
     ``z ⊇ x ∘ y``, ``x ∈ z ∘⁻¹ y`` cannot narrow ``x``."""
@@ -157,7 +182,21 @@ def _backward(op, a, b, s, e, lo, hi, nl, nh, fl, fh):
 
 
 @njit(cache=True, fastmath=False)
-def contract_kernel(op, a, b, clo, chi, start, end, blo, bhi, lo, hi, ratio, max_rounds):
+def contract_kernel(
+    op: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    clo: np.ndarray,
+    chi: np.ndarray,
+    start: np.ndarray,
+    end: np.ndarray,
+    blo: np.ndarray,
+    bhi: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+    ratio: float,
+    max_rounds: int,
+) -> bool:
     """HC4 fixpoint on the box ``lo, hi`` (modified in place); False when proven empty.
 
     One round is one forward sweep over the whole tape, every root met with its
@@ -193,7 +232,19 @@ def contract_kernel(op, a, b, clo, chi, start, end, blo, bhi, lo, hi, ratio, max
 
 
 @njit(cache=True, fastmath=False)
-def evaluate_kernel(op, a, b, clo, chi, start, end, lo, hi, out_lo, out_hi):
+def evaluate_kernel(
+    op: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    clo: np.ndarray,
+    chi: np.ndarray,
+    start: np.ndarray,
+    end: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+    out_lo: np.ndarray,
+    out_hi: np.ndarray,
+) -> None:
     nl = np.empty(op.size)
     nh = np.empty(op.size)
     # the segments tile the tape in order: one sweep evaluates them all (shared nodes too)
@@ -203,7 +254,17 @@ def evaluate_kernel(op, a, b, clo, chi, start, end, lo, hi, out_lo, out_hi):
 
 
 @njit(cache=True, fastmath=False)
-def point_kernel(op, a, b, clo, chi, start, end, x, out):
+def point_kernel(
+    op: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    clo: np.ndarray,
+    chi: np.ndarray,
+    start: np.ndarray,
+    end: np.ndarray,
+    x: np.ndarray,
+    out: np.ndarray,
+) -> None:
     """Plain floating-point evaluation at ``x`` (constants at their midpoints): for Newton."""
     v = np.empty(op.size)
     for c in range(start.size):
@@ -237,7 +298,7 @@ def contract(tape: Tape, lo: np.ndarray, hi: np.ndarray, ratio: float = 0.05, ma
     return bool(contract_kernel(*tape.arrays, lo, hi, ratio, max_rounds))
 
 
-def evaluate(tape: Tape, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def evaluate(tape: Tape, lo: npt.ArrayLike, hi: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """Natural interval evaluation of every constraint over the box."""
     out_lo, out_hi = np.empty(tape.size), np.empty(tape.size)
     op, a, b, clo, chi, start, end, _, _ = tape.arrays
@@ -245,7 +306,7 @@ def evaluate(tape: Tape, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np
     return out_lo, out_hi
 
 
-def evaluate_point(tape: Tape, x: np.ndarray) -> np.ndarray:
+def evaluate_point(tape: Tape, x: npt.ArrayLike) -> np.ndarray:
     out = np.empty(tape.size)
     op, a, b, clo, chi, start, end, _, _ = tape.arrays
     point_kernel(op, a, b, clo, chi, start, end, np.asarray(x, float), out)

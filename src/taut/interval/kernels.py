@@ -38,7 +38,7 @@ _MAX = float(np.finfo(np.float64).max)
 
 
 @njit(cache=True, fastmath=False, inline="always")
-def down(x):
+def down(x: float) -> float:
     """A float ``≤ pred(x)`` (a lower bound of any real within ½ ulp of ``x``).  ``-∞`` and
     NaN are returned unchanged; ``+∞`` becomes the largest finite float, because a ``+∞``
     computed from finite operands is an overflow whose exact value is finite, and ``+∞``
@@ -51,7 +51,7 @@ def down(x):
 
 
 @njit(cache=True, fastmath=False, inline="always")
-def up(x):
+def up(x: float) -> float:
     """A float ``≥ succ(x)``; ``-∞`` becomes the most negative finite float (see :func:`down`)."""
     if x == -INF:
         return -_MAX
@@ -61,17 +61,17 @@ def up(x):
 
 
 @njit(cache=True, fastmath=False)
-def add(al, ah, bl, bh):
+def add(al: float, ah: float, bl: float, bh: float) -> tuple[float, float]:
     return down(al + bl), up(ah + bh)
 
 
 @njit(cache=True, fastmath=False)
-def sub(al, ah, bl, bh):
+def sub(al: float, ah: float, bl: float, bh: float) -> tuple[float, float]:
     return down(al - bh), up(ah - bl)
 
 
 @njit(cache=True, fastmath=False, inline="always")
-def _prod_down(a, b):
+def _prod_down(a: float, b: float) -> float:
     """Lower bound of ``a·b``: exact 0 only when a factor is 0 (an underflow to 0 is not)."""
     if a == 0.0 or b == 0.0:
         return 0.0
@@ -79,14 +79,14 @@ def _prod_down(a, b):
 
 
 @njit(cache=True, fastmath=False, inline="always")
-def _prod_up(a, b):
+def _prod_up(a: float, b: float) -> float:
     if a == 0.0 or b == 0.0:
         return 0.0
     return up(a * b)
 
 
 @njit(cache=True, fastmath=False)
-def mul(al, ah, bl, bh):
+def mul(al: float, ah: float, bl: float, bh: float) -> tuple[float, float]:
     """``[a] × [b]`` by the signs of the endpoints (Moore's nine cases): two rounded
     products, four only when both factors straddle 0."""
     if al >= 0.0:
@@ -110,13 +110,13 @@ def mul(al, ah, bl, bh):
 
 
 @njit(cache=True, fastmath=False)
-def scale(c, al, ah):
+def scale(c: float, al: float, ah: float) -> tuple[float, float]:
     """``c × [a]`` for a float ``c``."""
     return mul(c, c, al, ah)
 
 
 @njit(cache=True, fastmath=False)
-def sqr(al, ah):
+def sqr(al: float, ah: float) -> tuple[float, float]:
     """``[a]²`` — sharper than ``[a]×[a]``: ``[-1, 2]² = [0, 4]``."""
     if al >= 0.0:
         lo, hi = _prod_down(al, al), _prod_up(ah, ah)
@@ -128,7 +128,7 @@ def sqr(al, ah):
 
 
 @njit(cache=True, fastmath=False)
-def sqrt(al, ah):
+def sqrt(al: float, ah: float) -> tuple[float, float]:
     """``√[a]`` of the non-negative part of ``[a]`` (empty when ``ah < 0``)."""
     if ah < 0.0:
         return 1.0, -1.0
@@ -137,7 +137,7 @@ def sqrt(al, ah):
 
 
 @njit(cache=True, fastmath=False)
-def div(al, ah, bl, bh):
+def div(al: float, ah: float, bl: float, bh: float) -> tuple[float, float]:
     """``[a] / [b]`` for ``0 ∉ [b]`` (``[-∞, ∞]`` when ``0 ∈ [b]``)."""
     if bl <= 0.0 <= bh:
         return -INF, INF
@@ -157,7 +157,7 @@ def div(al, ah, bl, bh):
 
 
 @njit(cache=True, fastmath=False)
-def power(al, ah, n):
+def power(al: float, ah: float, n: int) -> tuple[float, float]:
     """``[a]^n`` for an integer ``n ≥ 0``: even powers by repeated :func:`sqr`, odd powers
     (monotone) as ``x·x^(n-1)`` at each endpoint separately; every product is rounded
     outwards."""
@@ -176,7 +176,7 @@ def power(al, ah, n):
 
 
 @njit(cache=True, fastmath=False)
-def neg(al, ah):
+def neg(al: float, ah: float) -> tuple[float, float]:
     return -ah, -al
 
 

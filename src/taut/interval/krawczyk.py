@@ -38,6 +38,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 from taut.interval import kernels as K
@@ -47,22 +48,22 @@ from taut.interval.linear import _precondition, float_inverse
 from taut.interval.slope import slopes
 
 
-def jacobian(system: System, lo, hi) -> tuple[np.ndarray, np.ndarray]:
+def jacobian(system: System, lo: npt.ArrayLike, hi: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """Interval enclosure ``(Jlo, Jhi)`` of the Jacobian of the equations over a box."""
     return _dense(system, *evaluate(system.jacobian, lo, hi))
 
 
-def jacobian_at(system: System, x) -> np.ndarray:
+def jacobian_at(system: System, x: npt.ArrayLike) -> np.ndarray:
     J = np.zeros((system.n_equations, system.n))
     J[system.rows, system.cols] = evaluate_point(system.jacobian, x)
     return J
 
 
-def residual(system: System, x) -> np.ndarray:
+def residual(system: System, x: npt.ArrayLike) -> np.ndarray:
     return evaluate_point(system.tape, x)[: system.n_equations]
 
 
-def newton(system: System, x0, tol: float = 1e-13, max_iter: int = 30) -> tuple[np.ndarray, bool]:
+def newton(system: System, x0: npt.ArrayLike, tol: float = 1e-13, max_iter: int = 30) -> tuple[np.ndarray, bool]:
     """Newton's method from ``x0``; ``(x, converged)``."""
     x = np.array(x0, dtype=float)
     for _ in range(max_iter):
@@ -85,21 +86,40 @@ _TINY = 1e-300
 
 
 @njit(cache=True, fastmath=False)
-def _mid_rad(lo, hi):
+def _mid_rad(lo: float, hi: float) -> tuple[float, float]:
     """``(c, r)`` with ``[lo, hi] ⊆ [c − r, c + r]``; ``r`` rounded up."""
     c = 0.5 * lo + 0.5 * hi
     return c, K.up(max(c - lo, hi - c))
 
 
 @njit(cache=True, fastmath=False)
-def _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi):
+def _krawczyk(
+    C: np.ndarray,
+    y: np.ndarray,
+    fl: np.ndarray,
+    fh: np.ndarray,
+    Jl: np.ndarray,
+    Jh: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray]:
     """``K(X) = y − C f(y) + (I − C J(X))(X − y)`` for a square system: :func:`_krawczyk_rows`
     with every variable solved for."""
     return _krawczyk_rows(C, np.arange(C.shape[0]), y, fl, fh, Jl, Jh, lo, hi)
 
 
 @njit(cache=True, fastmath=False)
-def _krawczyk_rows(C, sel, y, fl, fh, Jl, Jh, lo, hi):
+def _krawczyk_rows(
+    C: np.ndarray,
+    sel: np.ndarray,
+    y: np.ndarray,
+    fl: np.ndarray,
+    fh: np.ndarray,
+    Jl: np.ndarray,
+    Jh: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray]:
     """``K(X) = y_S − C f(y) + (I_S − C J(X))(X − y)`` for ``h`` equations in ``n ≥ h``
     variables, of which the ``h`` variables ``S = sel`` are solved for and the others are
     parameters (``I_S``: rows of the identity at ``S``; ``C ≈ J_S⁻¹``).  By the mean-value
@@ -163,7 +183,7 @@ def _krawczyk_rows(C, sel, y, fl, fh, Jl, Jh, lo, hi):
 
 
 @njit(cache=True, fastmath=False)
-def _diagonally_dominant(Sl, Sh):
+def _diagonally_dominant(Sl: np.ndarray, Sh: np.ndarray) -> bool:
     """``m_S > M_S`` of Eqs. 3.28–3.29 (strict row diagonal dominance of an interval matrix)."""
     h = Sl.shape[0]
     m_s = np.inf
@@ -187,7 +207,7 @@ class KrawczykResult:
     hi: np.ndarray
 
 
-def krawczyk(system: System, lo, hi, points: int = 0) -> KrawczykResult:
+def krawczyk(system: System, lo: npt.ArrayLike, hi: npt.ArrayLike, points: int = 0) -> KrawczykResult:
     """One Krawczyk step on the box ``[lo, hi]`` (see module docstring).  With
     ``points > 0`` the slope enclosure of :mod:`taut.interval.slope` (that many nodes)
     replaces ``J(X)``: it proves more boxes empty and contracts more, but ``K(X) ⊂ int X``
@@ -212,7 +232,7 @@ def krawczyk(system: System, lo, hi, points: int = 0) -> KrawczykResult:
     return _krawczyk_step(system, lo, hi, *jacobian(system, lo, hi))
 
 
-def _dense(system: System, vl, vh) -> tuple[np.ndarray, np.ndarray]:
+def _dense(system: System, vl: np.ndarray, vh: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     Jl = np.zeros((system.n_equations, system.n))
     Jh = np.zeros((system.n_equations, system.n))
     Jl[system.rows, system.cols] = vl
@@ -220,7 +240,7 @@ def _dense(system: System, vl, vh) -> tuple[np.ndarray, np.ndarray]:
     return Jl, Jh
 
 
-def _krawczyk_step(system: System, lo, hi, Jl, Jh) -> KrawczykResult:
+def _krawczyk_step(system: System, lo: np.ndarray, hi: np.ndarray, Jl: np.ndarray, Jh: np.ndarray) -> KrawczykResult:
     """:func:`krawczyk` with the matrix ``[Jl, Jh]`` (the Jacobian over the box or slopes)."""
     y = 0.5 * lo + 0.5 * hi
     try:
@@ -241,7 +261,27 @@ def _krawczyk_step(system: System, lo, hi, Jl, Jh) -> KrawczykResult:
 
 
 @njit(cache=True, fastmath=False)
-def _krawczyk_box(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, lo, hi):
+def _krawczyk_box(
+    op: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    clo: np.ndarray,
+    chi: np.ndarray,
+    start: np.ndarray,
+    end: np.ndarray,
+    h: int,
+    jop: np.ndarray,
+    ja: np.ndarray,
+    jb: np.ndarray,
+    jclo: np.ndarray,
+    jchi: np.ndarray,
+    jstart: np.ndarray,
+    jend: np.ndarray,
+    rows: np.ndarray,
+    cols: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+) -> tuple[int, np.ndarray, np.ndarray]:
     """Numba twin of :func:`krawczyk`: ``(status, lo, hi)`` with
     status 0 unknown, 1 unique, 2 empty."""
     nj = jstart.size
@@ -251,7 +291,22 @@ def _krawczyk_box(op, a, b, clo, chi, start, end, h, jop, ja, jb, jclo, jchi, js
 
 
 @njit(cache=True, fastmath=False)
-def _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, vl, vh, lo, hi):
+def _krawczyk_jacobian(
+    op: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    clo: np.ndarray,
+    chi: np.ndarray,
+    start: np.ndarray,
+    end: np.ndarray,
+    h: int,
+    rows: np.ndarray,
+    cols: np.ndarray,
+    vl: np.ndarray,
+    vh: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+) -> tuple[int, np.ndarray, np.ndarray]:
     """:func:`_krawczyk_box` given the Jacobian's nonzero entries ``[vl, vh]`` over the box
     (at ``rows, cols``), which the caller may use again."""
     n = lo.size
@@ -286,7 +341,23 @@ def _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, vl, vh, lo
 
 
 @njit(cache=True, fastmath=False)
-def tube_kernel(op, a, b, clo, chi, end, g, gvars, dependent, rows, cols, vl, vh, lo, hi):
+def tube_kernel(
+    op: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    clo: np.ndarray,
+    chi: np.ndarray,
+    end: np.ndarray,
+    g: int,
+    gvars: np.ndarray,
+    dependent: int,
+    rows: np.ndarray,
+    cols: np.ndarray,
+    vl: np.ndarray,
+    vh: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+) -> int:
     """Contract the box ``[lo, hi]`` (in place) onto the manifold of the tape's first ``g``
     equations, which involve only the ``k > g`` variables ``gvars``: the parametric
     Krawczyk operator (:func:`_krawczyk_rows`) solves for the ``g`` of them that column-
@@ -373,30 +444,30 @@ def tube_kernel(op, a, b, clo, chi, end, g, gvars, dependent, rows, cols, vl, vh
 
 @njit(cache=True, fastmath=False)
 def certified_step(
-    op,
-    a,
-    b,
-    clo,
-    chi,
-    start,
-    end,
-    h,
-    jop,
-    ja,
-    jb,
-    jclo,
-    jchi,
-    jstart,
-    jend,
-    rows,
-    cols,
-    x0,
-    margin,
-    floor,
-    tol,
-    max_iter,
-    inflations,
-):
+    op: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    clo: np.ndarray,
+    chi: np.ndarray,
+    start: np.ndarray,
+    end: np.ndarray,
+    h: int,
+    jop: np.ndarray,
+    ja: np.ndarray,
+    jb: np.ndarray,
+    jclo: np.ndarray,
+    jchi: np.ndarray,
+    jstart: np.ndarray,
+    jend: np.ndarray,
+    rows: np.ndarray,
+    cols: np.ndarray,
+    x0: np.ndarray,
+    margin: float,
+    floor: float,
+    tol: float,
+    max_iter: int,
+    inflations: int,
+) -> tuple[int, np.ndarray, np.ndarray, np.ndarray]:
     """Newton from ``x0``, then Krawczyk on the box around the limit ``x`` whose
     half-width covers the step: ``margin·|x − x₀| + floor·max(1, ‖x‖∞) + ‖x − x₀‖∞²`` per
     component, widened ``inflations`` times to the Krawczyk hull (ε-inflation, Rump 1983).
@@ -444,7 +515,7 @@ def certified_step(
     return status, x, rl, rh
 
 
-def inflate(system: System, x, delta: float = 1e-9, max_doublings: int = 60) -> float:
+def inflate(system: System, x: npt.ArrayLike, delta: float = 1e-9, max_doublings: int = 60) -> float:
     """Half-width of the largest box ``x ± 2^k δ`` over which ``J`` is proven regular
     (§3.2.1, Eqs. 3.25–3.29); 0 when even ``x ± δ`` fails.
 
@@ -482,12 +553,12 @@ class Certificate:
     def width(self) -> float:
         return float(np.max(self.hi - self.lo))
 
-    def covers(self, lo, hi) -> bool:
+    def covers(self, lo: np.ndarray, hi: np.ndarray) -> bool:
         """The box ``[lo, hi]`` lies in ``x ± radius``: it holds no solution but ``x``."""
         return bool(np.all(lo >= self.x - self.radius) and np.all(hi <= self.x + self.radius))
 
 
-def certify(system: System, x0, scale: float = 1e-8) -> Certificate | None:
+def certify(system: System, x0: npt.ArrayLike, scale: float = 1e-8) -> Certificate | None:
     """Newton from ``x0``, then Krawczyk on a small box around the limit, then inflation."""
     x, ok = newton(system, x0)
     if not ok:

@@ -20,14 +20,16 @@ References
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 from taut.interval import kernels as K
+from taut.interval.expression import Tape
 from taut.interval.hc4 import evaluate_kernel
 
 
 @njit(cache=True, fastmath=False)
-def _precondition(C, Jl, Jh):
+def _precondition(C: np.ndarray, Jl: np.ndarray, Jh: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``S = C·J`` for a float matrix ``C`` and an interval matrix ``J``."""
     h, n = C.shape[0], Jl.shape[1]
     Sl = np.zeros((h, n))
@@ -49,7 +51,7 @@ def _precondition(C, Jl, Jh):
 
 
 @njit(cache=True, fastmath=False)
-def _gauss(Al, Ah, bl, bh):
+def _gauss(Al: np.ndarray, Ah: np.ndarray, bl: np.ndarray, bh: np.ndarray) -> tuple[bool, np.ndarray, np.ndarray]:
     n = Al.shape[0]
     Al, Ah, bl, bh = Al.copy(), Ah.copy(), bl.copy(), bh.copy()
     for k in range(n):
@@ -72,7 +74,9 @@ def _gauss(Al, Ah, bl, bh):
     return True, xl, xh
 
 
-def interval_gauss(Al, Ah, bl, bh):
+def interval_gauss(
+    Al: npt.ArrayLike, Ah: npt.ArrayLike, bl: npt.ArrayLike, bh: npt.ArrayLike
+) -> tuple[np.ndarray, np.ndarray] | None:
     """Enclosure ``(xlo, xhi)`` of the solution set of a square interval system, or None."""
     ok, xl, xh = _gauss(np.asarray(Al, float), np.asarray(Ah, float), np.asarray(bl, float), np.asarray(bh, float))
     return (xl, xh) if ok else None
@@ -88,7 +92,9 @@ def generalised_inverse(J: np.ndarray) -> np.ndarray:
     return np.linalg.solve(W.T @ J, W.T)
 
 
-def preconditioned_solve(Al, Ah, bl, bh, K_=None):
+def preconditioned_solve(
+    Al: npt.ArrayLike, Ah: npt.ArrayLike, bl: npt.ArrayLike, bh: npt.ArrayLike, K_: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray] | None:
     """Solve ``K[A] x = K[b]`` by :func:`interval_gauss` (Eqs. 3.10–3.12); ``K_`` defaults to
     :func:`generalised_inverse` of ``mid [A]``.  None when elimination fails."""
     Al, Ah = np.asarray(Al, float), np.asarray(Ah, float)
@@ -106,7 +112,7 @@ def preconditioned_solve(Al, Ah, bl, bh, K_=None):
 
 
 @njit(cache=True, fastmath=False)
-def float_inverse(A):
+def float_inverse(A: np.ndarray) -> tuple[bool, np.ndarray]:
     """``(ok, A⁻¹)`` by Gauss–Jordan with partial pivoting, in plain floating point.
 
     Only used for preconditioners (any float matrix gives a sound enclosure), so no
@@ -152,7 +158,7 @@ def float_inverse(A):
 
 
 @njit(cache=True, fastmath=False)
-def _generalised_inverse(J):
+def _generalised_inverse(J: np.ndarray) -> tuple[bool, np.ndarray]:
     """Numba twin of :func:`generalised_inverse`."""
     r, m = J.shape
     if r == m:
@@ -176,7 +182,18 @@ def _generalised_inverse(J):
 
 
 @njit(cache=True, fastmath=False)
-def enclosure_kernel(op, a, b, clo, chi, start, end, m, lo, hi):
+def enclosure_kernel(
+    op: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    clo: np.ndarray,
+    chi: np.ndarray,
+    start: np.ndarray,
+    end: np.ndarray,
+    m: int,
+    lo: np.ndarray,
+    hi: np.ndarray,
+) -> tuple[bool, np.ndarray, np.ndarray]:
     """Enclosure ``(ok, t_lo, t_hi)`` of the solutions ``t`` (``m`` of them) of the interval
     linear system ``[A](X) t = [b](X)`` whose ``r·m`` matrix entries (row-major) and ``r``
     right-hand sides are the constraints of the tape, over the box ``X = [lo, hi]``:
@@ -212,7 +229,19 @@ def enclosure_kernel(op, a, b, clo, chi, start, end, m, lo, hi):
 
 
 @njit(cache=True, fastmath=False)
-def linear_filter_kernel(op, a, b, clo, chi, start, end, m, sign_only, lo, hi):
+def linear_filter_kernel(
+    op: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    clo: np.ndarray,
+    chi: np.ndarray,
+    start: np.ndarray,
+    end: np.ndarray,
+    m: int,
+    sign_only: bool,
+    lo: np.ndarray,
+    hi: np.ndarray,
+) -> bool:
     """Contract the last ``m`` variables of the box with the enclosure of
     :func:`enclosure_kernel`, or — ``sign_only``, the unknowns hold no ``t`` — check that
     every ``t_j`` may be non-negative; False when the box is proven empty."""
@@ -243,7 +272,7 @@ class LinearFilter:
     not unknowns of the box: the filter only rejects boxes where some ``t_j`` must be
     negative.  The branch-and-prune kernel runs it without Python."""
 
-    def __init__(self, tape, m: int, sign_only: bool = False):
+    def __init__(self, tape: Tape, m: int, sign_only: bool = False) -> None:
         self.tape, self.m, self.sign_only = tape, int(m), bool(sign_only)
 
     def __call__(self, lo: np.ndarray, hi: np.ndarray) -> bool:

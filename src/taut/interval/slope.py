@@ -37,6 +37,7 @@ import numpy as np
 from numba import njit
 
 from taut.interval import kernels as K
+from taut.interval.expression import System
 from taut.interval.hc4 import evaluate, evaluate_kernel
 
 #: Upper bounds of the two Gauss–Legendre nodes ``½ ∓ √3/6`` on [0, 1]: the rounded values
@@ -45,7 +46,7 @@ from taut.interval.hc4 import evaluate, evaluate_kernel
 _NODES_2 = 0.5 + np.array([-1.0, 1.0]) * np.sqrt(3.0) / 6.0 + 1e-15
 
 
-def slopes(system, lo, hi, points: int) -> tuple[np.ndarray, np.ndarray]:
+def slopes(system: System, lo: np.ndarray, hi: np.ndarray, points: int) -> tuple[np.ndarray, np.ndarray]:
     """The slope enclosure of a :class:`~taut.interval.expression.System`'s Jacobian
     entries over the box (``points`` nodes; the Jacobian over the box when 0)."""
     if not points:
@@ -64,7 +65,7 @@ def points_for(degree: int) -> int:
 
 
 @njit(cache=True, fastmath=False)
-def _shrunk(lo, hi, theta):
+def _shrunk(lo: np.ndarray, hi: np.ndarray, theta: float) -> tuple[np.ndarray, np.ndarray]:
     """``c + θ (X − c)`` with ``c`` the midpoint of ``X`` (as the operators compute it),
     rounded outwards; variables with an infinite bound keep their domain."""
     zl, zh = lo.copy(), hi.copy()
@@ -77,7 +78,20 @@ def _shrunk(lo, hi, theta):
 
 
 @njit(cache=True, fastmath=False)
-def slope_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, points, out_lo, out_hi):
+def slope_kernel(
+    jop: np.ndarray,
+    ja: np.ndarray,
+    jb: np.ndarray,
+    jclo: np.ndarray,
+    jchi: np.ndarray,
+    jstart: np.ndarray,
+    jend: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+    points: int,
+    out_lo: np.ndarray,
+    out_hi: np.ndarray,
+) -> None:
     """The slope enclosure of every Jacobian entry (tape ``j*``) over the box, with respect
     to its midpoint: ``points`` Gauss–Legendre nodes (1 or 2, see :func:`points_for`)."""
     if points == 1:

@@ -41,6 +41,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import TautError
 
@@ -195,12 +196,12 @@ class Atlas:
     def __init__(
         self,
         manifold: ImplicitManifold,
-        x0,
+        x0: npt.ArrayLike,
         radius: float,
         epsilon: float = 0.1,
         min_step: float = 0.05,
         metric: np.ndarray | None = None,
-    ):
+    ) -> None:
         x0 = np.asarray(x0, dtype=float)
         if radius <= 0 or not 0 < epsilon < 1:
             raise TautError(f"atlas needs radius > 0 and 0 < epsilon < 1, got {radius}, {epsilon}")
@@ -282,7 +283,7 @@ class Atlas:
                 if np.linalg.svd(chart.basis.T @ basis, compute_uv=False).min() >= 1 - self.epsilon:
                     j = self.add_chart(x, basis)
                     if j not in chart.neighbours:  # no cut happened (should not): force one
-                        chart.polytope.cut(2 * u, u @ u, 2 * self.manifold.dim + j)
+                        chart.polytope.cut(2 * u, float(u @ u), 2 * self.manifold.dim + j)
                         c = self.cost(chart.centre, x)
                         chart.neighbours[j] = c
                         self.charts[j].neighbours[i] = c
@@ -311,7 +312,7 @@ class Atlas:
         """The manifold point of tangent coordinates ``u`` in chart ``i``."""
         c = self.charts[i]
         return project(
-            self.manifold, c.centre + c.basis @ u, c.basis, max_step=max(self.epsilon, 2 * np.linalg.norm(u))
+            self.manifold, c.centre + c.basis @ u, c.basis, max_step=max(self.epsilon, 2 * float(np.linalg.norm(u)))
         )
 
     def reaches(self, i: int, x: np.ndarray, tol: float = 1e-6) -> bool:

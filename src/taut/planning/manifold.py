@@ -39,12 +39,18 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import InfeasiblePoseError, PoseError, TautError
 from taut.planning.continuation import ImplicitManifold
+
+if TYPE_CHECKING:
+    from taut.model.robot import Robot
 
 __all__ = ["POSE_NAMES", "WrenchFeasibleManifold", "rotation_derivatives"]
 
@@ -66,21 +72,21 @@ _P, _TAU, _R, _U, _RHO, _G, _F0, _V, _S, _T = (
 N_VARS = 99
 
 
-def _rz(a):
+def _rz(a: float) -> tuple[np.ndarray, np.ndarray]:
     c, s = np.cos(a), np.sin(a)
     return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]), np.array(
         [[-s, -c, 0.0], [c, -s, 0.0], [0.0, 0.0, 0.0]]
     )
 
 
-def _ry(a):
+def _ry(a: float) -> tuple[np.ndarray, np.ndarray]:
     c, s = np.cos(a), np.sin(a)
     return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]]), np.array(
         [[-s, 0.0, c], [0.0, 0.0, 0.0], [-c, 0.0, -s]]
     )
 
 
-def rotation_derivatives(tau) -> tuple[np.ndarray, np.ndarray]:
+def rotation_derivatives(tau: np.ndarray | Sequence[float]) -> tuple[np.ndarray, np.ndarray]:
     """``R = Rz(φ) Ry(θ) Rz(σ − φ)`` (Eq. 1) and ``∂R/∂(φ, θ, σ)`` ``(3, 3, 3)``."""
     phi, theta, sigma = tau
     A, dA = _rz(phi)
@@ -90,7 +96,7 @@ def rotation_derivatives(tau) -> tuple[np.ndarray, np.ndarray]:
     return R, np.array([dA @ Bm @ C - A @ Bm @ dC, A @ dB @ C, A @ Bm @ dC])
 
 
-def _skew(v):
+def _skew(v: np.ndarray) -> np.ndarray:
     return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
 
 
@@ -123,14 +129,14 @@ class WrenchFeasibleManifold:
     #: weights of the variable blocks (p, τ, R, u, ρ, g, f_0, v, s, t) in the coordinates of
     #: :meth:`implicit`: a linear change of variables that keeps chart steps in pose space
     #: of the order of the chart radius (the slacks vary like 1/margin near the boundary)
-    weights: tuple = (1.0, 1.0, 0.1, 0.1, 0.1, 0.01, 1.0, 10.0, 0.01, 0.01)
+    weights: tuple[float, ...] = (1.0, 1.0, 0.1, 0.1, 0.1, 0.01, 1.0, 10.0, 0.01, 0.01)
     #: window of the torsion-free tilt azimuth φ (length 2π): with θ ∈ [0, π] every rotation
     #: has tilt-and-torsion angles in ``[φ_lo, φ_lo + 2π] × [0, π]``, so an atlas of a slice
     #: that frees φ or θ stays bounded and can complete (charts whose centre leaves the
     #: window are frontier charts, like those beyond ``slack_max``)
-    phi_window: tuple = (-np.pi, np.pi)
+    phi_window: tuple[float, float] = (-np.pi, np.pi)
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         self.a = np.asarray(self.a, float).reshape(6, 3)
         self.b = np.asarray(self.b, float).reshape(6, 3)
         self.c = self.b - np.asarray(self.wrench_point, float)
@@ -165,7 +171,9 @@ class WrenchFeasibleManifold:
             raise TautError(f"phi_window must span 2π, got {self.phi_window}")
 
     @classmethod
-    def from_robot(cls, robot, E=None, fixed=None, **kw) -> WrenchFeasibleManifold:
+    def from_robot(
+        cls, robot: Robot, E: np.ndarray | None = None, fixed: Mapping[str, float] | None = None, **kw: Any
+    ) -> WrenchFeasibleManifold:
         """The manifold of a 6-cable spatial robot file: exits ``a``, anchors ``b``, the
         platform's constant ``wrench`` about ``wrench_point`` as ``ŵ_0``, the cables'
         tension and length bounds (a zero lower length bound becomes 1e-6: Eq. (8) needs
@@ -194,7 +202,7 @@ class WrenchFeasibleManifold:
 
     # -- Eqs. (1)–(8) on the full variable vector -------------------------------------
 
-    def _screw(self, R, u, rho):
+    def _screw(self, R: np.ndarray, u: np.ndarray, rho: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         Rc = self.c @ R.T  # (6, 3): R c_i
         d = u / rho[:, None]
         return np.vstack([d.T, np.cross(Rc, d).T]), Rc, d
@@ -324,7 +332,7 @@ class WrenchFeasibleManifold:
             upper=hi[self.free] * self._w,
         )
 
-    def canonical(self, pose) -> np.ndarray:
+    def canonical(self, pose: npt.ArrayLike) -> np.ndarray:
         """The same pose(s) ``(..., 6)`` with ``θ ∈ [0, π]`` and ``φ`` in :attr:`phi_window`:
         ``(φ, θ)`` and ``(φ + π, −θ)`` give the same ``R`` of Eq. (1) for any ``σ``, and ``φ``
         and ``θ`` are ``2π``-periodic."""
@@ -351,7 +359,7 @@ class WrenchFeasibleManifold:
         out[..., self._fixed_idx] = self._fixed_val
         return out
 
-    def lift(self, pose) -> np.ndarray:
+    def lift(self, pose: npt.ArrayLike) -> np.ndarray:
         """The free vector of the point of the slice over ``pose`` (Eqs. 1–8 solved in closed
         form, angles made :meth:`canonical`); :class:`InfeasiblePoseError` if the pose is not
         wrench-feasible."""
@@ -394,7 +402,9 @@ class WrenchFeasibleManifold:
         )
         return x[self.free] * self._w
 
-    def extreme_tensions(self, pose):
+    def extreme_tensions(
+        self, pose: npt.ArrayLike
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None:
         """``(R, u, ρ, f_0, V)`` at a pose (row ``i`` of ``V`` is ``v_i`` of Eq. 5, ``v_i,i > 0``),
         or ``None`` where ``J`` is singular.  The tension range of cable ``i`` over the
         ellipsoid is ``f_0,i ± v_i,i``."""

@@ -27,6 +27,7 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import TautError
 from taut.planning.continuation import Atlas, ImplicitManifold
@@ -74,11 +75,11 @@ def refine_path(atlas: Atlas, charts: list[int], goal: np.ndarray, spacing: floa
 
 def plan_path(
     manifold: ImplicitManifold,
-    start,
-    goal,
+    start: npt.ArrayLike,
+    goal: npt.ArrayLike,
     radius: float,
     epsilon: float = 0.1,
-    metric=None,
+    metric: np.ndarray | None = None,
     max_charts: int = 20_000,
     spacing: float | None = None,
 ) -> PathResult:

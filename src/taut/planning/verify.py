@@ -20,6 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.kinematics.inverse import inverse_kinematics
 from taut.kinematics.pose import platform_frame
@@ -41,7 +42,7 @@ class PathCheck:
         return bool(self.feasible.all())
 
 
-def interpolate_poses(poses, subdivide: int) -> np.ndarray:
+def interpolate_poses(poses: npt.ArrayLike, subdivide: int) -> np.ndarray:
     """``subdivide`` evenly spaced poses on each segment of ``poses`` ``(M, 6)``, ends included."""
     poses = np.asarray(poses, float)
     t = np.linspace(0.0, 1.0, subdivide, endpoint=False)
@@ -49,7 +50,7 @@ def interpolate_poses(poses, subdivide: int) -> np.ndarray:
     return np.vstack([inner.reshape(-1, poses.shape[1]), poses[-1:]])
 
 
-def verify_path(robot: Robot, poses, E=None, subdivide: int = 10) -> PathCheck:
+def verify_path(robot: Robot, poses: npt.ArrayLike, E: npt.ArrayLike | None = None, subdivide: int = 10) -> PathCheck:
     """Check every interpolated pose of ``poses`` for wrench feasibility (module doc).
 
     References

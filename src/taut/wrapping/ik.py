@@ -23,9 +23,11 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import PoseError, TautError
 from taut.geometry.intersections import circles_overlap, point_in_polygon
@@ -44,6 +46,7 @@ def collidable_objects(robot: Robot) -> tuple[np.ndarray, list[np.ndarray]]:
     overlaps a winch pulley."""
     if robot.dimension != 2:
         raise TautError(f"{robot.name}: cable wrapping is implemented for planar robots (dimension 2)")
+    circles: list[list[float]] | np.ndarray
     circles, polys = [], [np.asarray(p, float) for p in robot.disallowed]
     for o in robot.obstacles:
         if isinstance(o, Circle):
@@ -94,8 +97,8 @@ class WrappedIK:
     directions: np.ndarray  #: ``(T, n, 2)`` unit vectors ``u_i`` (platform → last contact)
     exit_points: np.ndarray  #: ``(T, n, 2)`` where each active segment leaves its object
     structure_matrix: np.ndarray  #: ``(T, m, n)``
-    events: list  #: per cable, ``(E, 4)`` rows ``(sample, fraction, kind, node)``
-    trees: list = field(repr=False)  #: the cable-state tree of each cable
+    events: list[np.ndarray]  #: per cable, ``(E, 4)`` rows ``(sample, fraction, kind, node)``
+    trees: list[CableStateTree] = field(repr=False)  #: the cable-state tree of each cable
 
     def contacts(self, sample: int, cable: int) -> tuple[tuple[int, int], ...]:
         """Objects wrapped by ``cable`` at ``sample`` (0-based), with directions."""
@@ -108,7 +111,7 @@ class WrappedIK:
             tree.circles, tree.winch_direction, tree.state(int(self.nodes[sample, cable])), self.anchors[sample, cable]
         )
 
-    def transitions(self, times=None) -> list[dict]:
+    def transitions(self, times: npt.ArrayLike | None = None) -> list[dict]:
         """Wraps and unwraps in time order: ``{"time", "sample", "cable", "kind", "object"}``
         with 1-based cable and object numbers (``time`` interpolated within the step)."""
         t = np.arange(len(self.poses), dtype=float) if times is None else np.asarray(times, float)
@@ -128,7 +131,7 @@ class WrappedIK:
         return sorted(out, key=lambda e: (e["time"], e["cable"]))
 
 
-def _reference_angle(tree: CableStateTree, node: int, b) -> float:
+def _reference_angle(tree: CableStateTree, node: int, b: npt.ArrayLike) -> float:
     path = tree.path(node)
     if len(path) > 1:
         u = tree.F[path[1], [4, 5]]
@@ -137,7 +140,9 @@ def _reference_angle(tree: CableStateTree, node: int, b) -> float:
     return float(contact_angle(u, tree.winch_direction))
 
 
-def wrapped_inverse_kinematics(robot: Robot, poses, initial: dict | None = None) -> WrappedIK:
+def wrapped_inverse_kinematics(
+    robot: Robot, poses: npt.ArrayLike, initial: Mapping[int, Sequence[tuple[int, int]]] | None = None
+) -> WrappedIK:
     """Track every cable of a planar VSCR along ``poses`` (``(T, pose_size)``, consecutive
     poses joined by straight moves of the anchors) and compute lengths and structure
     matrices (§4.3).  ``initial`` maps a 0-based cable index to its starting state
@@ -185,7 +190,7 @@ def wrapped_inverse_kinematics(robot: Robot, poses, initial: dict | None = None)
     return WrappedIK(arr, b, lengths, nodes, u, exits, W, events, trees)
 
 
-def _start_node(tree: CableStateTree, b, contacts, i: int) -> int:
+def _start_node(tree: CableStateTree, b: np.ndarray, contacts: Sequence[tuple[int, int]] | None, i: int) -> int:
     if contacts is None:
         return tree.shortest_taut_state(b)
     node = tree.find([(int(k), int(d)) for k, d in contacts])

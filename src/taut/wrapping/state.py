@@ -25,9 +25,11 @@ References
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import TautError
 from taut.geometry.tangents import directed_tangent
@@ -38,7 +40,7 @@ WRAP_LOW = -0.5 * math.pi
 WINCH_LOW = -math.pi
 
 
-def contact_angle(u, d) -> np.ndarray:
+def contact_angle(u: npt.ArrayLike, d: npt.ArrayLike) -> np.ndarray:
     """Angle about an object's centre of the point where a cable with direction ``u``
     touches it with wrap direction ``d`` (the point is ``c − d r n``, ``n`` the left normal
     of ``u``; Eqs. 4.1–4.2 turn it back into a point)."""
@@ -47,7 +49,9 @@ def contact_angle(u, d) -> np.ndarray:
     return np.arctan2(-d * u[..., 0], d * u[..., 1])
 
 
-def wrap_angle(theta_in, theta_out, d, low: float = WRAP_LOW):
+def wrap_angle(
+    theta_in: npt.ArrayLike, theta_out: npt.ArrayLike, d: npt.ArrayLike, low: float = WRAP_LOW
+) -> np.ndarray:
     """Wrap angle ``φ = d (θ_out − θ_in)`` brought into ``[low, low + 2π)``."""
     phi = np.asarray(d, float) * (np.asarray(theta_out, float) - np.asarray(theta_in, float))
     return np.mod(phi - low, 2 * math.pi) + low
@@ -88,7 +92,7 @@ class CablePath:
         return np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)])
 
 
-def rebuild_path(circles, winch_direction: int, state: CableState, b) -> CablePath:
+def rebuild_path(circles: npt.ArrayLike, winch_direction: int, state: CableState, b: npt.ArrayLike) -> CablePath:
     """The path of a cable in ``state`` whose platform end is at ``b`` (§4.1.1).
 
     ``circles`` is ``(K + 1, 3)``: ``(x, y, r)`` of the objects, the winch pulley last.
@@ -127,7 +131,7 @@ def rebuild_path(circles, winch_direction: int, state: CableState, b) -> CablePa
     return CablePath(np.array(segs, float), np.array(arcs, float), length)
 
 
-def contacts_text(contacts) -> str:
+def contacts_text(contacts: Iterable[tuple[int, int]]) -> str:
     """A cable's contacts as users read them: 1-based object numbers with the wrap
     direction, e.g. ``"2+ 3-"`` (empty for a straight cable)."""
     return " ".join(f"{k + 1}{'+' if d > 0 else '-'}" for k, d in contacts)

@@ -23,9 +23,11 @@ References
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import TautError
 from taut.model.robot import Robot
@@ -50,7 +52,7 @@ PARAMETRIC = {
 }
 
 
-def sample_waypoints(waypoints, speed: float, dwell: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
+def sample_waypoints(waypoints: npt.ArrayLike, speed: float, dwell: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
     """``(times (T,), poses (T, k))`` of straight moves at ``speed`` between waypoints with
     a ``dwell`` at each (the first waypoint included), sampled every ``dt`` (each move and
     dwell is divided into a whole number of equal steps no longer than ``dt``)."""
@@ -61,7 +63,7 @@ def sample_waypoints(waypoints, speed: float, dwell: float, dt: float) -> tuple[
         raise TautError(f"dt, speed must be > 0 and dwell >= 0, got dt={dt}, speed={speed}, dwell={dwell}")
     times, poses, t = [np.zeros(1)], [W[:1]], 0.0
 
-    def hold(p, duration):
+    def hold(p: np.ndarray, duration: float) -> None:
         nonlocal t
         k = math.ceil(duration / dt - 1e-9)
         if k > 0:
@@ -82,7 +84,9 @@ def sample_waypoints(waypoints, speed: float, dwell: float, dt: float) -> tuple[
     return np.concatenate(times), np.vstack(poses)
 
 
-def sample_path(path, t0: float, t1: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
+def sample_path(
+    path: Callable[[np.ndarray], npt.ArrayLike], t0: float, t1: float, dt: float
+) -> tuple[np.ndarray, np.ndarray]:
     """``(times, poses)`` of a parametric path ``path(t) -> (T, k)`` every ``dt``."""
     if not (dt > 0 and t1 >= t0):
         raise TautError(f"dt must be > 0 and t1 >= t0, got dt={dt}, t0={t0}, t1={t1}")
@@ -108,7 +112,7 @@ def builtin_trajectory(
     return sample_waypoints(tr.waypoints, speed or tr.speed or DEFAULT_SPEED, tr.dwell if dwell is None else dwell, dt)
 
 
-def full_poses(robot: Robot, poses) -> np.ndarray:
+def full_poses(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """Waypoints given as positions become poses with zero orientation and joints."""
     P = np.atleast_2d(np.asarray(poses, float))
     if P.shape[1] == robot.pose_size:
@@ -166,7 +170,12 @@ class TrajectoryResult:
 
 
 def run_trajectory(
-    robot: Robot, times, poses, initial: dict | None = None, wrench=None, tension_bounds=None
+    robot: Robot,
+    times: npt.ArrayLike,
+    poses: npt.ArrayLike,
+    initial: Mapping[int, Sequence[tuple[int, int]]] | None = None,
+    wrench: npt.ArrayLike | None = None,
+    tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
 ) -> TrajectoryResult:
     """IK, length-control assignment and LP tensions at every sample of ``(times, poses)``.
 

@@ -32,8 +32,10 @@ References
 from __future__ import annotations
 
 import heapq
+from collections.abc import Iterable, Sequence
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import TautError
 from taut.geometry.intersections import segment_enters_polygon, segment_meets_circle, segments_intersect
@@ -65,7 +67,13 @@ class CableStateTree:
        of Waterloo, 2022, §4.2.1, Algs. 4.2–4.3. (docs/references.bib: rushton2022)
     """
 
-    def __init__(self, circles, winch_direction: int = 1, disallowed=(), reference_angle: float = 0.0):
+    def __init__(
+        self,
+        circles: npt.ArrayLike,
+        winch_direction: int = 1,
+        disallowed: Iterable[npt.ArrayLike] = (),
+        reference_angle: float = 0.0,
+    ) -> None:
         self.circles = np.ascontiguousarray(circles, dtype=float)
         self.n_objects = len(self.circles) - 1
         self.winch_direction = int(winch_direction)
@@ -116,7 +124,7 @@ class CableStateTree:
         f, k = self.I[node, FIRST], self.I[node, COUNT]
         return np.arange(f, f + k)
 
-    def find(self, contacts) -> int:
+    def find(self, contacts: Sequence[tuple[int, int]]) -> int:
         """The node of a cable state given as ``[(object, direction), ...]``; raises
         :class:`TautError` if that sequence of wraps is not reachable."""
         node = 0
@@ -203,13 +211,13 @@ class CableStateTree:
         return self.size
 
     # ---- the active segment ------------------------------------------------------------
-    def active_segment(self, node: int, b):
+    def active_segment(self, node: int, b: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """``(x, u, L, exists)``: the tangent from the object of ``node`` to the point ``b``."""
         k = int(self.I[node, OBJ])
         x1, _, u, L, ok = directed_tangent(self.circles[k, :2], self.circles[k, 2], self.F[node, DIR], b, 0.0, 1.0)
         return x1, u, L, ok
 
-    def length(self, node: int, b) -> float:
+    def length(self, node: int, b: np.ndarray | Sequence[float]) -> float:
         """Cable length (Eq. 4.9) in state ``node`` with the platform end at ``b``."""
         x, u, L, ok = self.active_segment(node, b)
         if not ok:
@@ -221,7 +229,7 @@ class CableStateTree:
         phi = wrap_angle(self.F[node, THETA_IN], contact_angle(u, d), d, low)
         return float(self.F[node, L_STATIC] + self.circles[int(self.I[node, OBJ]), 2] * phi + L)
 
-    def is_taut(self, node: int, b) -> bool:
+    def is_taut(self, node: int, b: npt.ArrayLike) -> bool:
         """Whether the cable in state ``node`` ending at ``b`` is a taut, admissible path:
         the active segment exists, leaves the last object with a wrap angle ``≥ 0``, meets
         no object, crosses no static segment and enters no disallowed region."""
@@ -240,7 +248,7 @@ class CableStateTree:
             return False
         return not any(bool(segment_enters_polygon(x, b, poly, MEET_TOL)) for poly in self.disallowed)
 
-    def shortest_taut_state(self, b, max_nodes: int = 20000) -> int:
+    def shortest_taut_state(self, b: npt.ArrayLike, max_nodes: int = 20000) -> int:
         """The taut admissible state of least length with the platform end at ``b``: a
         best-first (A*) search over the lazily expanded tree, each node bounded below by
         its static length plus the distance from its entry point to ``b``.  The default

@@ -49,6 +49,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 from taut.errors import TautError
@@ -62,7 +63,9 @@ MAX_EVENTS_PER_STEP = 1000
 
 
 @njit(cache=True)
-def _length(F, I, circles, node, bx, by):
+def _length(
+    F: np.ndarray, I: np.ndarray, circles: np.ndarray, node: int, bx: float, by: float
+) -> tuple[float, float, float]:
     k = I[node, 1]
     cx, cy, r = circles[k, 0], circles[k, 1], circles[k, 2]
     d = F[node, 9]
@@ -81,7 +84,23 @@ def _length(F, I, circles, node, bx, by):
 
 
 @njit(cache=True)
-def _track(F, I, circles, P, node, j0, t0, nodes, lengths, dirs, ev_j, ev_t, ev_kind, ev_node, n_ev):
+def _track(
+    F: np.ndarray,
+    I: np.ndarray,
+    circles: np.ndarray,
+    P: np.ndarray,
+    node: int,
+    j0: int,
+    t0: float,
+    nodes: np.ndarray,
+    lengths: np.ndarray,
+    dirs: np.ndarray,
+    ev_j: np.ndarray,
+    ev_t: np.ndarray,
+    ev_kind: np.ndarray,
+    ev_node: np.ndarray,
+    n_ev: int,
+) -> tuple[int, int, float, int, int]:
     T = P.shape[0]
     for j in range(j0, T):
         if j > 0:
@@ -151,7 +170,7 @@ class Tracking:
     #: kind 1 = wrap onto ``node``'s object, 2 = unwrap from ``node``'s object
 
 
-def track(tree: CableStateTree, points, node: int = 0) -> Tracking:
+def track(tree: CableStateTree, points: npt.ArrayLike, node: int = 0) -> Tracking:
     """Update the state of a cable whose platform end visits ``points`` (``(T, 2)``, a
     polyline of straight moves) from state ``node`` at ``points[0]`` (Alg. 4.4 per step).
 
@@ -199,7 +218,7 @@ def track(tree: CableStateTree, points, node: int = 0) -> Tracking:
     return Tracking(nodes, lengths, dirs, events)
 
 
-def update_state(tree: CableStateTree, node: int, b0, b1) -> int:
+def update_state(tree: CableStateTree, node: int, b0: npt.ArrayLike, b1: npt.ArrayLike) -> int:
     """One state update (Alg. 4.4): the tracked node after the platform end moves ``b0 → b1``.
 
     References
