@@ -11,7 +11,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import least_squares
 
 from taut.errors import PoseError, TautError, UnreachableLengthsError
 from taut.kinematics.inverse import _anchors
@@ -40,6 +39,8 @@ def forward_kinematics(robot: Robot, lengths, guess=None, *, tol: float = 1e-9) 
 
     Raises :class:`UnreachableLengthsError` when no pose near the guess fits the lengths
     to ``tol`` (lengths that violate a triangle inequality, or a guess in another basin)."""
+    from scipy.optimize import least_squares
+
     L = np.asarray(lengths, dtype=float)
     if L.shape != (robot.n_cables,):
         raise TautError(f"{robot.name}: expected {robot.n_cables} cable lengths, got {L.size}")
