@@ -7,9 +7,12 @@ taking a :class:`taut.viz.Report`; an analysis joins the demo by adding its func
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
+from taut.errors import TautError
 from taut.model import example, example_names
 from taut.viz import Report
 from taut.viz.atlas import atlas_section
@@ -17,6 +20,9 @@ from taut.viz.check import check_section
 from taut.viz.dgp import dgp_section
 from taut.viz.plan import plan_section
 from taut.viz.trajectory import trajectory_section
+
+if TYPE_CHECKING:
+    from taut.model.robot import Robot
 
 
 def robots_section(report: Report) -> None:
@@ -39,19 +45,21 @@ def robots_section(report: Report) -> None:
     )
 
 
-def _line_of_poses(robot, start, shift, n=60):
+def _line_of_poses(robot: Robot, start: npt.ArrayLike, shift: npt.ArrayLike, n: int = 60) -> np.ndarray:
     poses = np.repeat(np.asarray(start, float)[None, :], n, axis=0)
     poses[:, : robot.dimension] += np.linspace(0.0, 1.0, n)[:, None] * np.asarray(shift, float)
     return poses
 
 
-def standard_model_section(report: Report, name: str, shift, resolution: int) -> None:
+def standard_model_section(report: Report, name: str, shift: npt.ArrayLike, resolution: int) -> None:
     """Robot drawing, wrench-feasible workspace and tensions along a straight move."""
     from taut.statics.tension import distribute_tensions
     from taut.viz import draw_robot, plot_tensions, plot_workspace
     from taut.workspace import evaluate_workspace
 
     robot = example(name)
+    if robot.reference is None or "home" not in robot.reference.poses:
+        raise TautError(f"{name}: the demo draws a robot at its reference pose 'home', and it has none")
     home = np.asarray(robot.reference.poses["home"], float)
     ax = draw_robot(robot, home)
     drawing = ax.figure

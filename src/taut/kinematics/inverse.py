@@ -13,6 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import InfeasiblePoseError
 from taut.kinematics.pose import as_poses, body_frames, platform_frame
@@ -36,7 +37,7 @@ class IKResult:
     structure_matrix: np.ndarray  #: ``(N, m, n)`` wrench matrix ``W``
 
 
-def anchor_points(robot: Robot, poses) -> np.ndarray:
+def anchor_points(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """Platform anchors ``b_i`` in the fixed frame, ``(N, n, d)`` (``(n, d)`` for one pose)."""
     arr, single = as_poses(robot, poses)
     b = _anchors(robot, arr)
@@ -74,7 +75,7 @@ def _zero_length(robot: Robot, lengths: np.ndarray) -> InfeasiblePoseError:
     )
 
 
-def inverse_kinematics(robot: Robot, poses) -> IKResult:
+def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
     """Lengths, unit vectors, anchors and structure matrix at each pose.
 
     Robots without jointed bodies go through the Numba kernel of
@@ -118,11 +119,11 @@ def _batched(robot: Robot, poses: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
     return batch_structure_matrices(robot, poses) if supports_batch(robot) else None
 
 
-def cable_lengths(robot: Robot, poses) -> np.ndarray:
+def cable_lengths(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """Cable lengths ``(N, n)`` (``(n,)`` for one pose)."""
     return inverse_kinematics(robot, poses).lengths
 
 
-def structure_matrix(robot: Robot, poses) -> np.ndarray:
+def structure_matrix(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """Structure (wrench) matrix ``W`` of shape ``(N, m, n)`` (``(m, n)`` for one pose)."""
     return inverse_kinematics(robot, poses).structure_matrix
