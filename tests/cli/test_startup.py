@@ -49,6 +49,8 @@ def test_imports_load_no_heavy_library(statement):
         (["examples", "--json"], set(), '"name": "planar-4cable"'),
         (["ik", "planar-4cable", "--pose", "0.2,0.1,0", "--json"], set(), '"lengths"'),
         (["ik", "vscr-four-cable", "--json"], set(), '"lengths"'),
+        (["ik", "spatial-8cable", "--pose", "0.1,0,0.2,0.1,-0.1,0.2", "--json"], set(), '"lengths"'),
+        (["ik", "robocrane", "--json"], set(), '"lengths"'),
         # the default method is an LP solved by HiGHS: that one it needs
         (["tensions", "planar-4cable", "--pose", "0,0,0", "--json"], {"highspy"}, '"feasible": true'),
     ],

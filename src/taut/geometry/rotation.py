@@ -23,15 +23,26 @@ def planar_rotation(theta) -> np.ndarray:
     return np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)
 
 
+def _axis(k: int, t: np.ndarray) -> np.ndarray:
+    """Rotations ``(..., 3, 3)`` by the angles ``t`` about axis ``k`` (0: x, 1: y, 2: z)."""
+    c, s = np.cos(t), np.sin(t)
+    M = np.zeros(t.shape + (3, 3))
+    i, j = (k + 1) % 3, (k + 2) % 3
+    M[..., k, k] = 1.0
+    M[..., i, i], M[..., i, j], M[..., j, i], M[..., j, j] = c, -s, s, c
+    return M
+
+
 def rotation_matrix(angles, convention: str = "xyz-fixed") -> np.ndarray:
     """Rotation matrices ``(..., 3, 3)`` from three angles ``(..., 3)`` in ``convention``."""
     if convention not in CONVENTIONS:
         raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
-    angles = np.asarray(angles, dtype=float)
-    flat = np.ascontiguousarray(angles.reshape(-1, 3))
-    from taut.geometry.rotation_kernels import matrices
-
-    return matrices(flat, CONVENTIONS.index(convention)).reshape(angles.shape[:-1] + (3, 3))
+    a, b, c = np.moveaxis(np.asarray(angles, dtype=float), -1, 0)
+    if convention == "xyz-fixed":
+        return _axis(2, c) @ _axis(1, b) @ _axis(0, a)
+    if convention == "xyz-moving":
+        return _axis(0, a) @ _axis(1, b) @ _axis(2, c)
+    return _axis(2, a) @ _axis(1, b) @ _axis(2, c - a)
 
 
 def angles_from_matrix(R, convention: str = "xyz-fixed") -> np.ndarray:

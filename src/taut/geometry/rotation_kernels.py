@@ -1,6 +1,6 @@
-"""Compiled kernels of :mod:`taut.geometry.rotation`, in a module of their own so that
-Numba is imported only by the code that calls them (the conventions are those of
-:data:`taut.geometry.rotation.CONVENTIONS`, by index)."""
+"""The compiled kernel of :func:`taut.geometry.rotation.angles_from_matrix`, in a module of
+its own so that Numba is imported only by the code that calls it (the conventions are those
+of :data:`taut.geometry.rotation.CONVENTIONS`, by index)."""
 
 from __future__ import annotations
 
@@ -11,37 +11,10 @@ from numba import njit
 
 
 @njit(cache=True)
-def _axis(k: int, t: float) -> np.ndarray:
-    """Rotation by ``t`` about axis ``k`` (0: x, 1: y, 2: z)."""
-    c, s = math.cos(t), math.sin(t)
-    M = np.zeros((3, 3))
-    i, j = (k + 1) % 3, (k + 2) % 3
-    M[k, k] = 1.0
-    M[i, i], M[i, j], M[j, i], M[j, j] = c, -s, s, c
-    return M
-
-
-@njit(cache=True)
-def matrices(angles: np.ndarray, code: int) -> np.ndarray:
-    """Matrices ``(N, 3, 3)`` of the angles ``(N, 3)``, convention ``code`` (index in
-    :data:`~taut.geometry.rotation.CONVENTIONS`).  Compiled for the same reason as :func:`angles`."""
-    out = np.empty((angles.shape[0], 3, 3))
-    for n in range(angles.shape[0]):
-        a, b, c = angles[n, 0], angles[n, 1], angles[n, 2]
-        if code == 0:
-            out[n] = _axis(2, c) @ _axis(1, b) @ _axis(0, a)
-        elif code == 1:
-            out[n] = _axis(0, a) @ _axis(1, b) @ _axis(2, c)
-        else:
-            out[n] = _axis(2, a) @ _axis(1, b) @ _axis(2, c - a)
-    return out
-
-
-@njit(cache=True)
 def angles(R: np.ndarray, code: int) -> np.ndarray:
     """Angles of the matrices ``R`` (``(N, 3, 3)``), convention ``code`` (index in
-    :data:`~taut.geometry.rotation.CONVENTIONS`).  Compiled: tracking converts one matrix per update, where array
-    ufuncs on a single matrix cost more than the arithmetic."""
+    :data:`~taut.geometry.rotation.CONVENTIONS`).  Compiled: tracking converts one matrix
+    per update, where array ufuncs on a single matrix cost more than the arithmetic."""
     out = np.empty((R.shape[0], 3))
     for k in range(R.shape[0]):
         M = R[k]
