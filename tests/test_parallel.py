@@ -115,6 +115,8 @@ def test_dask_local_cluster_gives_identical_results():
                 ex.map(_fail, range(5))
         finally:
             ex.close()
+        with pytest.raises(TautError, match="closed"):
+            ex.map(_square, [1])
         with distributed.Client(cluster) as client:  # an existing client is used as is
             ex2 = get_executor(scheduler=client)
             assert ex2.map(_square, [1, 2, 3]) == [1, 4, 9]

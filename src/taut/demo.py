@@ -8,9 +8,12 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
+from taut.errors import TautError
 from taut.model import example, example_names
 from taut.viz import Report
 from taut.viz.atlas import atlas_section
@@ -18,6 +21,9 @@ from taut.viz.check import check_section
 from taut.viz.dgp import dgp_section
 from taut.viz.plan import plan_section
 from taut.viz.trajectory import trajectory_section
+
+if TYPE_CHECKING:
+    from taut.model.robot import Robot
 
 
 def robots_section(report: Report) -> None:
@@ -40,19 +46,21 @@ def robots_section(report: Report) -> None:
     )
 
 
-def _line_of_poses(robot, start, shift, n=60):
+def _line_of_poses(robot: Robot, start: npt.ArrayLike, shift: npt.ArrayLike, n: int = 60) -> np.ndarray:
     poses = np.repeat(np.asarray(start, float)[None, :], n, axis=0)
     poses[:, : robot.dimension] += np.linspace(0.0, 1.0, n)[:, None] * np.asarray(shift, float)
     return poses
 
 
-def standard_model_section(report: Report, name: str, shift, resolution: int) -> None:
+def standard_model_section(report: Report, name: str, shift: npt.ArrayLike, resolution: int) -> None:
     """Robot drawing, wrench-feasible workspace and tensions along a straight move."""
     from taut.statics.tension import distribute_tensions
     from taut.viz import draw_robot, plot_tensions, plot_workspace
     from taut.workspace import evaluate_workspace
 
     robot = example(name)
+    if robot.reference is None or "home" not in robot.reference.poses:
+        raise TautError(f"{name}: the demo draws a robot at its reference pose 'home', and it has none")
     home = np.asarray(robot.reference.poses["home"], float)
     ax = draw_robot(robot, home)
     drawing = ax.figure
@@ -69,7 +77,7 @@ def standard_model_section(report: Report, name: str, shift, resolution: int) ->
     text = (
         f"{robot.description} Wrench-feasible workspace (box wrench set around the weight) over a "
         f"{resolution}-point-per-axis grid at the home orientation: {summary['inside']} of "
-        f"{summary['poses']} poses ({100 * summary['fraction']:.1f} %), {summary['elapsed_s']:.3f} s. "
+        f"{summary['poses']} poses ({100 * ws.fraction:.1f} %), {ws.elapsed_s:.3f} s. "
         f"Minimum-sum tensions (LP, HiGHS) along a straight move of {np.linalg.norm(shift):.2f} m: "
         f"feasible at {int(np.count_nonzero(res.feasible))} of {len(poses)} poses."
     )

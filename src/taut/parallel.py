@@ -24,9 +24,15 @@ import weakref
 from abc import ABC, abstractmethod
 from collections.abc import Callable, Iterable
 from concurrent.futures import ProcessPoolExecutor, as_completed
-from typing import Any
+from typing import TYPE_CHECKING, Any, Self, TypeVar
 
 from taut.errors import TautError
+
+if TYPE_CHECKING:
+    from distributed import Client
+
+T = TypeVar("T")
+R = TypeVar("R")
 
 __all__ = ["DaskExecutor", "Executor", "ProcessExecutor", "SerialExecutor", "as_executor", "get_executor"]
 
@@ -41,17 +47,17 @@ class Executor(ABC):
 
     @abstractmethod
     def map(
-        self, fn: Callable[[Any], Any], items: Iterable[Any], *, callback: Callable[[int], None] | None = None
-    ) -> list:
+        self, fn: Callable[[T], R], items: Iterable[T], *, callback: Callable[[int], None] | None = None
+    ) -> list[R]:
         """``[fn(item) for item in items]`` in order; ``callback(i)`` as item ``i`` completes."""
 
     def close(self) -> None:  # noqa: B027 — optional hook, not abstract
         """Release workers (a no-op where there are none)."""
 
-    def __enter__(self):
+    def __enter__(self) -> Self:
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, *exc: object) -> None:
         self.close()
 
     def __repr__(self) -> str:
@@ -63,7 +69,9 @@ class SerialExecutor(Executor):
 
     name = "serial"
 
-    def map(self, fn, items, *, callback=None):
+    def map(
+        self, fn: Callable[[T], R], items: Iterable[T], *, callback: Callable[[int], None] | None = None
+    ) -> list[R]:
         out = []
         for i, item in enumerate(items):
             out.append(fn(item))
@@ -85,7 +93,7 @@ class ProcessExecutor(Executor):
     def __init__(self, workers: int):
         self.workers = int(workers)
         self._pool: ProcessPoolExecutor | None = None
-        self._finalizer = None
+        self._finalizer: weakref.finalize[[ProcessPoolExecutor], ProcessExecutor] | None = None
 
     def _get_pool(self) -> ProcessPoolExecutor:
         if self._pool is None:
@@ -95,11 +103,13 @@ class ProcessExecutor(Executor):
             self._finalizer = weakref.finalize(self, _shutdown, self._pool)
         return self._pool
 
-    def map(self, fn, items, *, callback=None):
+    def map(
+        self, fn: Callable[[T], R], items: Iterable[T], *, callback: Callable[[int], None] | None = None
+    ) -> list[R]:
         items = list(items)
         pool = self._get_pool()
         futures = {pool.submit(fn, item): i for i, item in enumerate(items)}
-        out: list = [None] * len(items)
+        out: list[Any] = [None] * len(items)
         for fut in as_completed(futures):
             i = futures[fut]
             out[i] = fut.result()
@@ -122,25 +132,30 @@ class DaskExecutor(Executor):
 
     name = "dask"
 
-    def __init__(self, client, owns_client: bool = False):
-        self.client = client
+    def __init__(self, client: Client, owns_client: bool = False):
+        self.client: Client | None = client
         self._owns = owns_client
 
-    def map(self, fn, items, *, callback=None):
+    def map(
+        self, fn: Callable[[T], R], items: Iterable[T], *, callback: Callable[[int], None] | None = None
+    ) -> list[R]:
         from distributed import as_completed as dask_completed
 
+        client = self.client
+        if client is None:
+            raise TautError("this DaskExecutor is closed: its client was closed by close()")
         items = list(items)
         if not items:
             return []
-        futures = self.client.map(fn, items, pure=False)
+        futures = client.map(fn, items, pure=False)
         index = {f.key: i for i, f in enumerate(futures)}
         try:
-            for fut in dask_completed(futures, loop=self.client.loop):
+            for fut in dask_completed(futures, loop=client.loop):
                 if fut.status == "error":
                     fut.result()  # re-raises the task's exception here
                 if callback is not None:
                     callback(index[fut.key])
-            return self.client.gather(futures)
+            return client.gather(futures)
         finally:
             for f in futures:
                 f.release()
@@ -155,7 +170,7 @@ class DaskExecutor(Executor):
         return f"<DaskExecutor {addr}>"
 
 
-def _dask_client(scheduler, timeout: float):
+def _dask_client(scheduler: object, timeout: float) -> tuple[Client, bool]:
     try:
         from distributed import Client
     except ImportError:
@@ -180,7 +195,7 @@ def _dask_client(scheduler, timeout: float):
     return client, True
 
 
-def get_executor(workers: int | None = None, scheduler=None, *, timeout: float = CONNECT_TIMEOUT) -> Executor:
+def get_executor(workers: int | None = None, scheduler: object = None, *, timeout: float = CONNECT_TIMEOUT) -> Executor:
     """The executor for ``workers`` local processes or a dask ``scheduler``.
 
     ``workers`` ``None`` or 1 (and no scheduler): serial.  ``workers > 1``: local processes.
@@ -205,7 +220,7 @@ def get_executor(workers: int | None = None, scheduler=None, *, timeout: float =
     return SerialExecutor() if workers == 1 else ProcessExecutor(workers)
 
 
-def as_executor(executor) -> Executor:
+def as_executor(executor: object) -> Executor:
     """``None`` → serial; an :class:`Executor` as is; a ``distributed.Client`` (or a cluster
     object) → :class:`DaskExecutor`.  Anything else is a :class:`TautError`."""
     if executor is None:

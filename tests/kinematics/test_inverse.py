@@ -127,3 +127,26 @@ def test_unstretched_length_inverts_eq_2_15(length, tension, ea):
     assert l0 <= length
     # l − l0 cancels: the tension is exact to about EA·ε
     assert tension_from_stretch(length, l0, ea) == pytest.approx(tension, rel=1e-9, abs=1e-14 * ea)
+
+
+RIGID = [n for n in taut.example_names() if taut.example(n).n_joints == 0]
+
+
+@pytest.mark.parametrize("name, convention", [(n, None) for n in RIGID] + [("spatial-8cable", "xyz-moving")])
+def test_few_poses_agree_with_the_batch_kernel(name, convention):
+    """Fewer than BATCH_POSES poses go through NumPy, more through the Numba kernel: the two
+    paths give the same lengths, directions, anchors and structure matrices."""
+    from taut.kinematics.forward import default_guess
+    from taut.kinematics.inverse import BATCH_POSES
+    from taut.model import robot_to_dict
+
+    robot = taut.example(name)
+    if convention is not None:
+        robot = robot_from_dict(robot_to_dict(robot) | {"orientation": convention})
+    rng = np.random.default_rng(2)
+    poses = default_guess(robot) + rng.uniform(-0.05, 0.05, (BATCH_POSES, robot.pose_size))
+    many = inverse_kinematics(robot, poses)
+    for k in (0, 1, 5):
+        few = inverse_kinematics(robot, poses[k : k + 3])
+        for field in ("lengths", "directions", "anchors", "structure_matrix"):
+            np.testing.assert_allclose(getattr(few, field), getattr(many, field)[k : k + 3], rtol=1e-12, atol=1e-12)

@@ -216,3 +216,15 @@ def test_vscr_sampled_trajectories_follow_their_formulas():
     t = np.linspace(0, 5, 41)
     expected = np.c_[0.75 * np.cos(np.pi * t / 5), -0.5 + 0.75 * np.sin(np.pi * t / 5)]
     np.testing.assert_allclose(four.waypoints, expected, atol=5e-7)
+
+
+def test_descriptions_read_from_yaml_match_the_validated_robots():
+    """``taut examples`` reads two keys of each file; the validated robots say the same."""
+    from taut.model import example_descriptions
+
+    desc = example_descriptions()
+    assert list(desc) == list(taut.example_names())
+    for name, line in desc.items():
+        robot = taut.example(name)
+        assert line == (robot.description or robot.name).strip().splitlines()[0]
+        assert line and "\n" not in line

@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import math
 import re
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from taut.errors import PoseError, TautError
-from taut.kinematics.pose import as_poses
-from taut.model.robot import Robot
+
+if TYPE_CHECKING:
+    from taut.model.robot import Robot
 
 _PI = re.compile(r"^([+-]?)(\d*\.?\d*)\*?pi(?:/(\d*\.?\d+))?$")
 
@@ -62,6 +64,8 @@ def assignments(text: str, what: str) -> dict[str, float | None]:
 
 def pose(robot: Robot, text: str) -> np.ndarray:
     """``x,y`` / ``x,y,theta`` / ``x,y,z,a,b,c`` followed by joint coordinates."""
+    from taut.kinematics.pose import as_poses
+
     values = vector(text, "--pose")
     if values.size != robot.pose_size:
         raise PoseError(

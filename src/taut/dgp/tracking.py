@@ -51,7 +51,8 @@ from taut.dgp.formulation import Subproblem, _frame, build_subproblem, load
 from taut.dgp.solve import DGPSolution, check_lengths
 from taut.dgp.stability import _smallest_eigenvalue
 from taut.errors import TautError, TrackingLostError
-from taut.geometry.rotation import CONVENTIONS, _angles, rotation_matrix
+from taut.geometry.rotation import CONVENTIONS, rotation_matrix
+from taut.geometry.rotation_kernels import angles as matrix_angles
 from taut.interval.expression import CONST, SQR
 from taut.interval.hc4 import point_kernel
 from taut.interval.krawczyk import certified_step
@@ -248,7 +249,7 @@ def _update(
         at[j], bt[j] = exits[idx[j]], p + R @ anchors[idx[j]]
         taut_tau[j], rho[j] = tau[idx[j]], lengths[idx[j]]
     eig = _smallest_eigenvalue(at, bt, p + R @ gp, taut_tau, rho)
-    ang = _angles(R.reshape(1, 3, 3), convention)[0]
+    ang = matrix_angles(R.reshape(1, 3, 3), convention)[0]
     return status, p, R, ang, tau, spans, eig, width
 
 

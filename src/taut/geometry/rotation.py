@@ -23,40 +23,10 @@ References
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import numpy.typing as npt
-from numba import njit
 
 CONVENTIONS = ("xyz-fixed", "xyz-moving", "tilt-torsion")
-
-
-@njit(cache=True)
-def _axis(k: int, t: float) -> np.ndarray:
-    """Rotation by ``t`` about axis ``k`` (0: x, 1: y, 2: z)."""
-    c, s = math.cos(t), math.sin(t)
-    M = np.zeros((3, 3))
-    i, j = (k + 1) % 3, (k + 2) % 3
-    M[k, k] = 1.0
-    M[i, i], M[i, j], M[j, i], M[j, j] = c, -s, s, c
-    return M
-
-
-@njit(cache=True)
-def _matrices(angles: np.ndarray, code: int) -> np.ndarray:
-    """Matrices ``(N, 3, 3)`` of the angles ``(N, 3)``, convention ``code`` (index in
-    :data:`CONVENTIONS`).  Compiled for the same reason as :func:`_angles`."""
-    out = np.empty((angles.shape[0], 3, 3))
-    for n in range(angles.shape[0]):
-        a, b, c = angles[n, 0], angles[n, 1], angles[n, 2]
-        if code == 0:
-            out[n] = _axis(2, c) @ _axis(1, b) @ _axis(0, a)
-        elif code == 1:
-            out[n] = _axis(0, a) @ _axis(1, b) @ _axis(2, c)
-        else:
-            out[n] = _axis(2, a) @ _axis(1, b) @ _axis(2, c - a)
-    return out
 
 
 def planar_rotation(theta: npt.ArrayLike) -> np.ndarray:
@@ -64,6 +34,16 @@ def planar_rotation(theta: npt.ArrayLike) -> np.ndarray:
     theta = np.asarray(theta, dtype=float)
     c, s = np.cos(theta), np.sin(theta)
     return np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)
+
+
+def _axis(k: int, t: np.ndarray) -> np.ndarray:
+    """Rotations ``(..., 3, 3)`` by the angles ``t`` about axis ``k`` (0: x, 1: y, 2: z)."""
+    c, s = np.cos(t), np.sin(t)
+    M = np.zeros(t.shape + (3, 3))
+    i, j = (k + 1) % 3, (k + 2) % 3
+    M[..., k, k] = 1.0
+    M[..., i, i], M[..., i, j], M[..., j, i], M[..., j, j] = c, -s, s, c
+    return M
 
 
 def rotation_matrix(angles: npt.ArrayLike, convention: str = "xyz-fixed") -> np.ndarray:
@@ -84,33 +64,12 @@ def rotation_matrix(angles: npt.ArrayLike, convention: str = "xyz-fixed") -> np.
     """
     if convention not in CONVENTIONS:
         raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
-    angles = np.asarray(angles, dtype=float)
-    flat = np.ascontiguousarray(angles.reshape(-1, 3))
-    return _matrices(flat, CONVENTIONS.index(convention)).reshape(angles.shape[:-1] + (3, 3))
-
-
-@njit(cache=True)
-def _angles(R: np.ndarray, code: int) -> np.ndarray:
-    """Angles of the matrices ``R`` (``(N, 3, 3)``), convention ``code`` (index in
-    :data:`CONVENTIONS`).  Compiled: tracking converts one matrix per update, where array
-    ufuncs on a single matrix cost more than the arithmetic."""
-    out = np.empty((R.shape[0], 3))
-    for k in range(R.shape[0]):
-        M = R[k]
-        if code == 0:
-            b = math.asin(min(1.0, max(-1.0, -M[2, 0])))
-            a = math.atan2(M[2, 1], M[2, 2])
-            c = math.atan2(M[1, 0], M[0, 0])
-        elif code == 1:
-            b = math.asin(min(1.0, max(-1.0, M[0, 2])))
-            a = math.atan2(-M[1, 2], M[2, 2])
-            c = math.atan2(-M[0, 1], M[0, 0])
-        else:
-            b = math.acos(min(1.0, max(-1.0, M[2, 2])))
-            a = math.atan2(M[1, 2], M[0, 2])
-            c = math.atan2(M[2, 1], -M[2, 0]) + a  # σ − φ, then σ
-        out[k, 0], out[k, 1], out[k, 2] = a, b, c
-    return out
+    a, b, c = np.moveaxis(np.asarray(angles, dtype=float), -1, 0)
+    if convention == "xyz-fixed":
+        return _axis(2, c) @ _axis(1, b) @ _axis(0, a)
+    if convention == "xyz-moving":
+        return _axis(0, a) @ _axis(1, b) @ _axis(2, c)
+    return _axis(2, a) @ _axis(1, b) @ _axis(2, c - a)
 
 
 def angles_from_matrix(R: npt.ArrayLike, convention: str = "xyz-fixed") -> np.ndarray:
@@ -120,4 +79,6 @@ def angles_from_matrix(R: npt.ArrayLike, convention: str = "xyz-fixed") -> np.nd
         raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
     R = np.asarray(R, dtype=float)
     flat = np.ascontiguousarray(R.reshape(-1, 3, 3))
-    return _angles(flat, CONVENTIONS.index(convention)).reshape(R.shape[:-2] + (3,))
+    from taut.geometry.rotation_kernels import angles
+
+    return angles(flat, CONVENTIONS.index(convention)).reshape(R.shape[:-2] + (3,))

@@ -17,6 +17,7 @@ References
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 from taut.geometry.rotation import CONVENTIONS
@@ -28,7 +29,7 @@ __all__ = ["batch_structure_matrices", "supports_batch"]
 
 
 @njit(cache=True, nogil=True)
-def _rot_axis(axis, t, out):
+def _rot_axis(axis: int, t: float, out: np.ndarray) -> None:
     c = np.cos(t)
     s = np.sin(t)
     for i in range(3):
@@ -55,14 +56,24 @@ def _rot_axis(axis, t, out):
 
 
 @njit(cache=True, nogil=True)
-def _mul3(X, Y, out):
+def _mul3(X: np.ndarray, Y: np.ndarray, out: np.ndarray) -> None:
     for i in range(3):
         for j in range(3):
             out[i, j] = X[i, 0] * Y[0, j] + X[i, 1] * Y[1, j] + X[i, 2] * Y[2, j]
 
 
 @njit(cache=True, nogil=True)
-def _rotation(conv, a, b, c, R, T1, T2, T3, T4):
+def _rotation(
+    conv: int,
+    a: float,
+    b: float,
+    c: float,
+    R: np.ndarray,
+    T1: np.ndarray,
+    T2: np.ndarray,
+    T3: np.ndarray,
+    T4: np.ndarray,
+) -> None:
     """``R`` for the angles ``(a, b, c)``: 0 ``xyz-fixed`` ``Rz(c)Ry(b)Rx(a)``,
     1 ``xyz-moving`` ``Rx(a)Ry(b)Rz(c)``, 2 ``tilt-torsion`` ``Rz(a)Ry(b)Rz(c−a)``."""
     if conv == 0:
@@ -82,7 +93,18 @@ def _rotation(conv, a, b, c, R, T1, T2, T3, T4):
 
 
 @njit(cache=True, nogil=True)
-def _ik_kernel(poses, exits, anchors, dim, point_mass, conv, min_length, lengths, W, ok):
+def _ik_kernel(
+    poses: np.ndarray,
+    exits: np.ndarray,
+    anchors: np.ndarray,
+    dim: int,
+    point_mass: bool,
+    conv: int,
+    min_length: float,
+    lengths: np.ndarray,
+    W: np.ndarray,
+    ok: np.ndarray,
+) -> None:
     N = poses.shape[0]
     n = exits.shape[0]
     R = np.zeros((3, 3))
@@ -144,7 +166,7 @@ def supports_batch(robot: Robot) -> bool:
     return robot.n_joints == 0
 
 
-def batch_structure_matrices(robot: Robot, poses) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def batch_structure_matrices(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Cable lengths ``(N, n)``, structure matrices ``W (N, m, n)`` and a mask ``ok (N,)``
     of the poses where every cable has a length of at least ``MIN_LENGTH`` (elsewhere
     ``W`` is zero).  Robots with jointed bodies go through the NumPy implementation."""

@@ -10,12 +10,13 @@ References
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import TautError
 from taut.model.robot import Robot
 
 
-def unstretched_length(lengths, tensions, stiffness) -> np.ndarray:
+def unstretched_length(lengths: npt.ArrayLike, tensions: npt.ArrayLike, stiffness: npt.ArrayLike) -> np.ndarray:
     """Unstretched length ``l0`` that stretches to ``lengths`` under ``tensions`` with axial
     stiffness ``stiffness = EA`` (arrays broadcast).
 
@@ -32,7 +33,7 @@ def unstretched_length(lengths, tensions, stiffness) -> np.ndarray:
     return l / (1.0 + t / ea)
 
 
-def tension_from_stretch(lengths, unstretched, stiffness) -> np.ndarray:
+def tension_from_stretch(lengths: npt.ArrayLike, unstretched: npt.ArrayLike, stiffness: npt.ArrayLike) -> np.ndarray:
     """Eq. (2.15): tension of a cable of unstretched length ``l0`` stretched to ``l``;
     a cable shorter than ``l0`` is slack (tension 0).
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import least_squares
+import numpy.typing as npt
 
 from taut.errors import PoseError, TautError, UnreachableLengthsError
 from taut.kinematics.inverse import _anchors
@@ -35,11 +35,15 @@ def default_guess(robot: Robot) -> np.ndarray:
     return pose
 
 
-def forward_kinematics(robot: Robot, lengths, guess=None, *, tol: float = 1e-9) -> FKResult:
+def forward_kinematics(
+    robot: Robot, lengths: npt.ArrayLike, guess: npt.ArrayLike | None = None, *, tol: float = 1e-9
+) -> FKResult:
     """The pose at which the cables have ``lengths``, found from ``guess``.
 
     Raises :class:`UnreachableLengthsError` when no pose near the guess fits the lengths
     to ``tol`` (lengths that violate a triangle inequality, or a guess in another basin)."""
+    from scipy.optimize import least_squares
+
     L = np.asarray(lengths, dtype=float)
     if L.shape != (robot.n_cables,):
         raise TautError(f"{robot.name}: expected {robot.n_cables} cable lengths, got {L.size}")
@@ -56,7 +60,7 @@ def forward_kinematics(robot: Robot, lengths, guess=None, *, tol: float = 1e-9) 
     if robot.n_joints:
         lo[robot.wrench_dim :], hi[robot.wrench_dim :] = robot.joint_limits.T
 
-    def residual(x):
+    def residual(x: np.ndarray) -> np.ndarray:
         b = _anchors(robot, x[None, :])[0]
         return np.linalg.norm(robot.exits - b, axis=1) - L
 

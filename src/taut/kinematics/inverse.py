@@ -21,6 +21,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import InfeasiblePoseError
 from taut.kinematics.pose import as_poses, body_frames, platform_frame
@@ -28,6 +29,10 @@ from taut.model.robot import Robot
 
 #: A cable shorter than this [m] has no direction: the pose is rejected.
 MIN_LENGTH = 1e-12
+
+#: From this many poses on, rigid platforms go through the Numba kernel; below it NumPy is
+#: as fast per call and spares the process the import of Numba.
+BATCH_POSES = 32
 
 
 @dataclass(frozen=True)
@@ -40,7 +45,7 @@ class IKResult:
     structure_matrix: np.ndarray  #: ``(N, m, n)`` wrench matrix ``W``
 
 
-def anchor_points(robot: Robot, poses) -> np.ndarray:
+def anchor_points(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """Platform anchors ``b_i`` in the fixed frame, ``(N, n, d)`` (``(n, d)`` for one pose)."""
     arr, single = as_poses(robot, poses)
     b = _anchors(robot, arr)
@@ -78,11 +83,12 @@ def _zero_length(robot: Robot, lengths: np.ndarray) -> InfeasiblePoseError:
     )
 
 
-def inverse_kinematics(robot: Robot, poses) -> IKResult:
+def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
     """Lengths, unit vectors, anchors and structure matrix at each pose.
 
     Robots without jointed bodies go through the Numba kernel of
-    :mod:`taut.kinematics.batch`; jointed platforms through NumPy over body frames.
+    :mod:`taut.kinematics.batch` from :data:`BATCH_POSES` poses on; fewer poses and jointed
+    platforms through NumPy over body frames.
     Raises :class:`InfeasiblePoseError` when a cable has zero length (its direction and the
     structure matrix do not exist there).
 
@@ -91,12 +97,11 @@ def inverse_kinematics(robot: Robot, poses) -> IKResult:
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §2.1.1, Eqs. 2.1, 2.8 and 2.10. (docs/references.bib: rushton2022)
     """
-    from taut.kinematics.batch import batch_structure_matrices, supports_batch
-
     arr, single = as_poses(robot, poses)
     d = robot.dimension
-    if supports_batch(robot):
-        lengths, W, ok = batch_structure_matrices(robot, arr)
+    batched = _batched(robot, arr)
+    if batched is not None:
+        lengths, W, ok = batched
         if not ok.all():
             raise _zero_length(robot, lengths)
         u = np.swapaxes(W[:, :d, :], 1, 2)
@@ -108,20 +113,32 @@ def inverse_kinematics(robot: Robot, poses) -> IKResult:
         if lengths.size and lengths.min() < MIN_LENGTH:
             raise _zero_length(robot, lengths)
         u = v / lengths[..., None]
-        m = _cross(b - arr[:, None, :d], u)
-        m = m[..., None] if m.ndim == 2 else m
-        W = np.concatenate([np.swapaxes(u, 1, 2), np.swapaxes(m, 1, 2)], axis=1)
+        W = np.swapaxes(u, 1, 2)
+        if not robot.is_point_mass:
+            m = _cross(b - arr[:, None, :d], u)
+            m = m[..., None] if m.ndim == 2 else m
+            W = np.concatenate([W, np.swapaxes(m, 1, 2)], axis=1)
     if single:
         return IKResult(lengths[0], u[0], b[0], W[0])
     return IKResult(lengths, u, b, W)
 
 
-def cable_lengths(robot: Robot, poses) -> np.ndarray:
+def _batched(robot: Robot, poses: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """``(lengths, W, ok)`` of :func:`taut.kinematics.batch.batch_structure_matrices`, or None
+    for fewer than :data:`BATCH_POSES` poses or a robot the kernel does not handle."""
+    if poses.shape[0] < BATCH_POSES:
+        return None
+    from taut.kinematics.batch import batch_structure_matrices, supports_batch
+
+    return batch_structure_matrices(robot, poses) if supports_batch(robot) else None
+
+
+def cable_lengths(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """Cable lengths ``(N, n)`` (``(n,)`` for one pose)."""
     return inverse_kinematics(robot, poses).lengths
 
 
-def structure_matrix(robot: Robot, poses) -> np.ndarray:
+def structure_matrix(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """Structure (wrench) matrix ``W`` of shape ``(N, m, n)`` (``(m, n)`` for one pose).
 
     References

@@ -33,6 +33,7 @@ References
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import TautError
 from taut.kinematics.inverse import _anchors, inverse_kinematics
@@ -42,7 +43,7 @@ from taut.model.robot import Robot
 __all__ = ["actuator_jacobian", "actuator_positions", "joint_forces", "jointed_structure_matrix"]
 
 
-def actuator_positions(robot: Robot, poses) -> np.ndarray:
+def actuator_positions(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """``q`` of Eqs. 3.2.3–3.2.4: cable lengths then joint coordinates, ``(N, n + n_joints)``.
 
     References
@@ -60,7 +61,7 @@ def actuator_positions(robot: Robot, poses) -> np.ndarray:
 def _chains(robot: Robot) -> list[list[int]]:
     """For each body (0 = platform) the joints (1-based body indices) from it to the platform."""
     index = {"platform": 0} | {b.name: k for k, b in enumerate(robot.platform.bodies, 1)}
-    chains = [[]]
+    chains: list[list[int]] = [[]]
     for k, body in enumerate(robot.platform.bodies, 1):
         chains.append([k] + chains[index[body.parent]])
     return chains
@@ -92,7 +93,7 @@ def _joint_derivatives(robot: Robot, arr: np.ndarray, b: np.ndarray) -> np.ndarr
     return out
 
 
-def actuator_jacobian(robot: Robot, poses) -> np.ndarray:
+def actuator_jacobian(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """Inverse-kinematics Jacobian ``J`` (Eq. 3.2.12): ``q̇ = J [v, ω, q̇_joints]``, shape
     ``(N, n + n_joints, m + n_joints)`` with ``m`` the platform wrench size (9×7 for the
     adjustable platform).  Raises :class:`~taut.errors.InfeasiblePoseError` at a
@@ -116,7 +117,7 @@ def actuator_jacobian(robot: Robot, poses) -> np.ndarray:
     return J[0] if single else J
 
 
-def jointed_structure_matrix(robot: Robot, poses) -> np.ndarray:
+def jointed_structure_matrix(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """``A = [−J_cablesᵀ, J_jointsᵀ]`` of shape ``(N, m + n_joints, n + n_joints)``:
     ``A [τ; ζ] + Q_ext = 0`` (Eqs. 3.3.7–3.3.12, sign convention in the module docstring).
     Its top-left ``m × n`` block is the platform structure matrix ``W``.
@@ -134,7 +135,7 @@ def jointed_structure_matrix(robot: Robot, poses) -> np.ndarray:
     return A
 
 
-def joint_forces(robot: Robot, poses, tensions) -> np.ndarray:
+def joint_forces(robot: Robot, poses: npt.ArrayLike, tensions: npt.ArrayLike) -> np.ndarray:
     """Joint actuator forces ``ζ`` (Eq. 3.3.12) balancing the cable tensions ``τ`` along the
     joint coordinates, ``(N, n_joints)``: ``ζ = −A_joints,cables τ`` (positive ``ζ`` pushes the
     child body along its joint axis; a revolute joint gets a torque about its axis).

@@ -9,13 +9,14 @@ joint coordinates of extra bodies (``docs/architecture.md`` §2.2).  Functions t
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.errors import PoseError
 from taut.geometry.rotation import planar_rotation, rotation_matrix
 from taut.model.robot import Robot
 
 
-def as_poses(robot: Robot, poses) -> tuple[np.ndarray, bool]:
+def as_poses(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, bool]:
     """Validate poses; return ``(array (N, pose_size), was_single)``.
 
     Raises :class:`PoseError` for a wrong size, a non-finite coordinate, or a joint

@@ -1,22 +1,66 @@
 """Robot descriptions: data classes, files, validation, built-in examples (``docs/architecture.md`` §3)."""
 
+from __future__ import annotations
+
+from importlib import import_module
+from typing import TYPE_CHECKING
+
 from taut.model.examples import example, example_descriptions, example_names
-from taut.model.io import load_robot, parse_robot, robot_from_dict, robot_to_dict, save_robot
-from taut.model.robot import (
-    Body,
-    Cable,
-    Capsule,
-    Circle,
-    Joint,
-    Platform,
-    Polygon,
-    Pulley,
-    Reference,
-    Robot,
-    Shape,
-    Trajectory,
-)
-from taut.model.schema import robot_schema
+
+if TYPE_CHECKING:
+    from taut.model.io import load_robot, parse_robot, robot_from_dict, robot_to_dict, save_robot
+    from taut.model.robot import (
+        Body,
+        Cable,
+        Capsule,
+        Circle,
+        Joint,
+        Platform,
+        Polygon,
+        Pulley,
+        Reference,
+        Robot,
+        Shape,
+        Trajectory,
+    )
+    from taut.model.schema import robot_schema
+
+#: Names re-exported from the modules that load pydantic and PyYAML: imported on first use
+#: (PEP 562), so that listing the examples does not build the pydantic models.
+_LAZY = {
+    **dict.fromkeys(["load_robot", "parse_robot", "robot_from_dict", "robot_to_dict", "save_robot"], "taut.model.io"),
+    **dict.fromkeys(
+        [
+            "Body",
+            "Cable",
+            "Capsule",
+            "Circle",
+            "Joint",
+            "Platform",
+            "Polygon",
+            "Pulley",
+            "Reference",
+            "Robot",
+            "Shape",
+            "Trajectory",
+        ],
+        "taut.model.robot",
+    ),
+    "robot_schema": "taut.model.schema",
+}
+
+
+def __getattr__(name: str) -> object:
+    if name not in _LAZY:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(import_module(_LAZY[name]), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
+
 
 __all__ = [
     "Body",

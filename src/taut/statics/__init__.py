@@ -1,8 +1,11 @@
 """Statics: external wrenches and wrench sets, wrench-closure / wrench-feasibility /
 equilibrium tests, tension distribution."""
 
-from taut.statics.feasibility import static_equilibrium, wrench_closure, wrench_feasible
-from taut.statics.tension import METHODS, TensionResult, distribute_tensions, solve_tensions
+from __future__ import annotations
+
+from importlib import import_module
+from typing import TYPE_CHECKING
+
 from taut.statics.wrench import (
     BoxWrenchSet,
     EllipsoidWrenchSet,
@@ -11,6 +14,35 @@ from taut.statics.wrench import (
     WrenchSet,
     external_wrench,
 )
+
+if TYPE_CHECKING:
+    from taut.statics.feasibility import static_equilibrium, wrench_closure, wrench_feasible
+    from taut.statics.tension import METHODS, TensionResult, distribute_tensions, solve_tensions
+
+#: Names re-exported from modules that load Numba or HiGHS: imported on first use (PEP 562),
+#: so that ``import taut.statics.wrench`` does not pay for them.
+_LAZY = {
+    "static_equilibrium": "taut.statics.feasibility",
+    "wrench_closure": "taut.statics.feasibility",
+    "wrench_feasible": "taut.statics.feasibility",
+    "METHODS": "taut.statics.tension",
+    "TensionResult": "taut.statics.tension",
+    "distribute_tensions": "taut.statics.tension",
+    "solve_tensions": "taut.statics.tension",
+}
+
+
+def __getattr__(name: str) -> object:
+    if name not in _LAZY:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(import_module(_LAZY[name]), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
+
 
 __all__ = [
     "BoxWrenchSet",

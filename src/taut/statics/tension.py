@@ -69,7 +69,6 @@ from dataclasses import dataclass
 import highspy
 import numpy as np
 import numpy.typing as npt
-from scipy.spatial import HalfspaceIntersection, QhullError, cKDTree
 
 from taut.errors import TautError
 from taut.kinematics.inverse import inverse_kinematics
@@ -457,6 +456,8 @@ def _distinct(V: np.ndarray, tol: float) -> np.ndarray:
     """The points of ``V`` without near-duplicates (closer than ``tol``): Qhull reports a
     degenerate vertex, where more than ``r`` bounds are active, once per facet of the dual
     hull."""
+    from scipy.spatial import cKDTree
+
     drop = {j for _, j in cKDTree(V).query_pairs(tol)}
     return V[[i for i in range(len(V)) if i not in drop]]
 
@@ -466,6 +467,8 @@ def _polytope_centre(
 ) -> tuple[np.ndarray | None, bool]:
     """Centroid of the vertices of ``{tp + Z λ : lo ≤ tp + Z λ ≤ hi}`` (``Z (n, r)``
     orthonormal): ``(tensions (n,) or None, empty)``."""
+    from scipy.spatial import HalfspaceIntersection, QhullError
+
     n, r = Z.shape
     scale = max(float(_tension_scale(tp[None], lo[None], hi[None])[0]), 1e-300)
     if r <= 1:
