@@ -1,6 +1,5 @@
 """Structure atlas (Alg. 5.1), charts (Eqs. 5.2–5.6), workspace (Alg. 5.2)."""
 
-import time
 
 import numpy as np
 import pytest
@@ -15,15 +14,13 @@ from taut.model.robot import Robot
 @pytest.fixture(scope="module")
 def t_atlas():
     robot = example("vscr-t-shaped")
-    t0 = time.perf_counter()
-    atlas = build_atlas(robot, robot.reference.poses["initial"])
-    return atlas, time.perf_counter() - t0
+    return build_atlas(robot, robot.reference.poses["initial"])
 
 
 def test_t_shaped_atlas_covers_installation_space(t_atlas):
     """The charts cover the T minus the parts no cable end can reach: the idler discs and
     the winch pulleys that overlap the T."""
-    atlas, seconds = t_atlas
+    atlas = t_atlas
     robot = atlas.robot
     unreachable = shapely.union_all(
         [shapely.Point(o.center).buffer(o.radius, 64) for o in robot.obstacles]
@@ -33,11 +30,10 @@ def test_t_shaped_atlas_covers_installation_space(t_atlas):
     got = atlas.reachable_area()
     assert got.symmetric_difference(expected).area < 1e-5 * expected.area
     assert len(atlas.charts) > 10 and atlas.n_edges >= len(atlas.charts) - 1
-    assert seconds < 5.0  # the benchmark reports the figure (target 2 s)
 
 
 def test_charts_are_distinct_structures_with_valid_domains(t_atlas):
-    atlas, _ = t_atlas
+    atlas = t_atlas
     keys = [(c.nodes, c.domain.representative_point().coords[0]) for c in atlas.charts]
     assert len({k[0] for k in keys}) == len(keys)  # the T's structures each have one component
     rng = np.random.default_rng(3)
@@ -52,7 +48,7 @@ def test_charts_are_distinct_structures_with_valid_domains(t_atlas):
 
 
 def test_edges_join_charts_differing_in_one_cable(t_atlas):
-    atlas, _ = t_atlas
+    atlas = t_atlas
     for e in atlas.edges:
         a, b = (atlas.charts[k] for k in e.charts)
         diff = [i for i in range(len(a.nodes)) if a.nodes[i] != b.nodes[i]]
@@ -82,7 +78,7 @@ def test_single_cable_atlas_structures():
 
 
 def test_workspace_prunes_and_is_within_charts(t_atlas):
-    atlas, _ = t_atlas
+    atlas = t_atlas
     ws = atlas_workspace(atlas, "wrench-feasible")
     reach = atlas.reachable_area()
     assert 0 < ws.area <= reach.area + 1e-9
