@@ -46,7 +46,10 @@ def reduced_hessian(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray
 
 
 @njit(cache=True)
-def _smallest_eigenvalue(a, b, g, tau, rho) -> float:
+def smallest_eigenvalue(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray, rho: np.ndarray) -> float:
+    """Smallest eigenvalue of the (symmetrised) reduced Hessian of :func:`reduced_hessian`,
+    ``inf`` when the null space is empty; the equilibrium is stable when it is positive.
+    Compiled, for callers that are compiled too (the tracking update); arrays contiguous."""
     Hr = reduced_hessian(a, b, g, tau, rho)
     if Hr.size == 0:
         return np.inf
@@ -56,4 +59,4 @@ def _smallest_eigenvalue(a, b, g, tau, rho) -> float:
 def is_stable(a, b, g, tau, rho) -> bool:
     """Positive-definite reduced Hessian (sufficient condition of §3.2.2); a fully
     constrained equilibrium (empty null space) is stable."""
-    return bool(_smallest_eigenvalue(*(np.ascontiguousarray(v, dtype=float) for v in (a, b, g, tau, rho))) > 0.0)
+    return bool(smallest_eigenvalue(*(np.ascontiguousarray(v, dtype=float) for v in (a, b, g, tau, rho))) > 0.0)

@@ -33,7 +33,7 @@ def _axis(k: int, t: float) -> np.ndarray:
 @njit(cache=True)
 def _matrices(angles: np.ndarray, code: int) -> np.ndarray:
     """Matrices ``(N, 3, 3)`` of the angles ``(N, 3)``, convention ``code`` (index in
-    :data:`CONVENTIONS`).  Compiled for the same reason as :func:`_angles`."""
+    :data:`CONVENTIONS`).  Compiled for the same reason as :func:`angles_kernel`."""
     out = np.empty((angles.shape[0], 3, 3))
     for n in range(angles.shape[0]):
         a, b, c = angles[n, 0], angles[n, 1], angles[n, 2]
@@ -63,9 +63,9 @@ def rotation_matrix(angles, convention: str = "xyz-fixed") -> np.ndarray:
 
 
 @njit(cache=True)
-def _angles(R: np.ndarray, code: int) -> np.ndarray:
+def angles_kernel(R: np.ndarray, code: int) -> np.ndarray:
     """Angles of the matrices ``R`` (``(N, 3, 3)``), convention ``code`` (index in
-    :data:`CONVENTIONS`).  Compiled: tracking converts one matrix per update, where array
+    :data:`CONVENTIONS`): the core of :func:`angles_from_matrix`, for compiled callers.  Compiled: tracking converts one matrix per update, where array
     ufuncs on a single matrix cost more than the arithmetic."""
     out = np.empty((R.shape[0], 3))
     for k in range(R.shape[0]):
@@ -93,4 +93,4 @@ def angles_from_matrix(R, convention: str = "xyz-fixed") -> np.ndarray:
         raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
     R = np.asarray(R, dtype=float)
     flat = np.ascontiguousarray(R.reshape(-1, 3, 3))
-    return _angles(flat, CONVENTIONS.index(convention)).reshape(R.shape[:-2] + (3,))
+    return angles_kernel(flat, CONVENTIONS.index(convention)).reshape(R.shape[:-2] + (3,))

@@ -14,7 +14,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from taut.errors import PoseError, TautError, UnreachableLengthsError
-from taut.kinematics.inverse import _anchors
+from taut.kinematics.inverse import anchors_at
 from taut.kinematics.pose import as_poses
 from taut.model.robot import Robot
 
@@ -57,7 +57,7 @@ def forward_kinematics(robot: Robot, lengths, guess=None, *, tol: float = 1e-9) 
         lo[robot.wrench_dim :], hi[robot.wrench_dim :] = robot.joint_limits.T
 
     def residual(x):
-        b = _anchors(robot, x[None, :])[0]
+        b = anchors_at(robot, x[None, :])[0]
         return np.linalg.norm(robot.exits - b, axis=1) - L
 
     method = "trf" if robot.n_joints else "lm"

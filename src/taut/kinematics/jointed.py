@@ -29,7 +29,7 @@ from __future__ import annotations
 import numpy as np
 
 from taut.errors import TautError
-from taut.kinematics.inverse import _anchors, inverse_kinematics
+from taut.kinematics.inverse import anchors_at, inverse_kinematics
 from taut.kinematics.pose import as_poses, body_frames
 from taut.model.robot import Robot
 
@@ -39,7 +39,7 @@ __all__ = ["actuator_jacobian", "actuator_positions", "joint_forces", "jointed_s
 def actuator_positions(robot: Robot, poses) -> np.ndarray:
     """``q`` of Eqs. 3.2.3–3.2.4: cable lengths then joint coordinates, ``(N, n + n_joints)``."""
     arr, single = as_poses(robot, poses)
-    b = _anchors(robot, arr)
+    b = anchors_at(robot, arr)
     q = np.concatenate([np.linalg.norm(robot.exits[None] - b, axis=-1), arr[:, robot.wrench_dim :]], axis=1)
     return q[0] if single else q
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
+from typing import Any
 
 import yaml
 from pydantic import ValidationError
@@ -113,9 +114,19 @@ def load_robot(spec: str | Path) -> Robot:
     return parse_robot(text, str(path), json_text=path.suffix.lower() == ".json")
 
 
-def robot_to_dict(robot: Robot) -> dict:
-    """The robot as plain data, without fields left at their defaults."""
-    return robot.model_dump(mode="python", exclude_defaults=True) | {"format": robot.format}
+def _plain(value: object) -> object:
+    """Tuples (the model's immutable sequences) as lists, which YAML and JSON write alike."""
+    if isinstance(value, (tuple, list)):
+        return [_plain(v) for v in value]
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items()}
+    return value
+
+
+def robot_to_dict(robot: Robot) -> dict[str, Any]:
+    """The robot as plain data (lists, dicts, numbers, strings), without fields left at their defaults."""
+    data = robot.model_dump(mode="python", exclude_defaults=True)
+    return {k: _plain(v) for k, v in data.items()} | {"format": robot.format}
 
 
 def save_robot(robot: Robot, path: str | Path) -> None:
