@@ -5,12 +5,13 @@ from __future__ import annotations
 
 from functools import cache
 from importlib import resources
+from importlib.resources.abc import Traversable
 
 from taut.errors import RobotFileError
 from taut.model.robot import Robot
 
 
-def _files():
+def _files() -> Traversable:
     return resources.files("taut") / "examples"
 
 

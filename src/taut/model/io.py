@@ -13,12 +13,13 @@ from typing import Any
 
 import yaml
 from pydantic import ValidationError
+from pydantic_core import ErrorDetails
 
 from taut.errors import RobotFileError
 from taut.model.robot import Robot
 
 
-def _field(loc: tuple) -> str:
+def _field(loc: tuple[int | str, ...]) -> str:
     out = ""
     for part in loc:
         if isinstance(part, int):
@@ -30,7 +31,7 @@ def _field(loc: tuple) -> str:
     return out or "(top level)"
 
 
-def _message(err: dict) -> str:
+def _message(err: ErrorDetails) -> str:
     kind, msg = err["type"], err["msg"]
     if kind == "extra_forbidden":
         return "unknown key (not part of the taut/1 format)"
@@ -64,7 +65,7 @@ def validation_message(source: str, exc: ValidationError) -> str:
     return "\n".join(lines)
 
 
-def robot_from_dict(data, source: str = "<robot>") -> Robot:
+def robot_from_dict(data: object, source: str = "<robot>") -> Robot:
     """Validate a parsed robot description."""
     if not isinstance(data, dict):
         raise RobotFileError(

@@ -21,7 +21,7 @@ from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError,
 from taut.errors import RobotFileError
 from taut.geometry.rotation import CONVENTIONS
 
-FORMAT = "taut/1"
+FORMAT: Literal["taut/1"] = "taut/1"
 
 #: Gravitational acceleration [m/s²] along the last axis (−y planar, −z spatial) when a
 #: platform has a mass but no ``gravity``.
@@ -69,7 +69,7 @@ class _DerivedArrays(dict[str, Any]):
     def __eq__(self, other: object) -> bool:
         return isinstance(other, _DerivedArrays)
 
-    __hash__ = None  # type: ignore[assignment]  # a mutable cache, like dict
+    __hash__ = None  # a mutable cache, like dict
 
 
 def _check_bounds(v: tuple[float, float], what: str) -> tuple[float, float]:
@@ -107,12 +107,12 @@ class Cable(_Strict):
 
     @field_validator("tension")
     @classmethod
-    def _tension(cls, v):
+    def _tension(cls, v: tuple[float, float]) -> tuple[float, float]:
         return _check_bounds(v, "tension")
 
     @field_validator("length")
     @classmethod
-    def _length(cls, v):
+    def _length(cls, v: tuple[float, float] | None) -> tuple[float, float] | None:
         return None if v is None else _check_bounds(v, "length")
 
 
@@ -132,14 +132,14 @@ class Joint(_Strict):
 
     @field_validator("axis")
     @classmethod
-    def _axis(cls, v):
+    def _axis(cls, v: tuple[float, ...]) -> tuple[float, ...]:
         if not any(abs(x) > 0 for x in v):
             raise ValueError("joint axis must be a non-zero vector")
         return v
 
     @field_validator("limits")
     @classmethod
-    def _limits(cls, v):
+    def _limits(cls, v: tuple[float, float]) -> tuple[float, float]:
         if v[0] > v[1]:
             raise ValueError(f"joint limits are inverted: lower {v[0]} > upper {v[1]}")
         return v
@@ -197,7 +197,7 @@ class Polygon(_Strict):
 
     @field_validator("vertices")
     @classmethod
-    def _vertices(cls, v):
+    def _vertices(cls, v: tuple[tuple[float, ...], ...]) -> tuple[tuple[float, ...], ...]:
         if len(v) < 3:
             raise ValueError(f"a polygon needs at least 3 vertices, got {len(v)}")
         return v
@@ -250,18 +250,18 @@ class Robot(_Strict):
 
     @field_validator("orientation")
     @classmethod
-    def _orientation(cls, v):
+    def _orientation(cls, v: str) -> str:
         if v not in CONVENTIONS:
             raise ValueError(f"unknown orientation convention {v!r}; expected one of {', '.join(CONVENTIONS)}")
         return v
 
     @model_validator(mode="after")
-    def _consistent(self):
+    def _consistent(self) -> Self:
         d = self.dimension
         pm = self.platform.kind == "point-mass"
         bodies = {"platform"} | {b.name for b in self.platform.bodies}
 
-        def need(vec, n, where):
+        def need(vec: tuple[float, ...] | None, n: int, where: str) -> None:
             if vec is not None and len(vec) != n:
                 raise ValueError(f"{where}: expected {n} numbers, got {len(vec)}")
 
@@ -274,7 +274,7 @@ class Robot(_Strict):
                 )
             if c.body is not None and c.body not in bodies:
                 raise ValueError(f"cables[{i}].body: unknown body {c.body!r}; expected one of {sorted(bodies)}")
-        keys = {}
+        keys: dict[tuple[tuple[float, ...], tuple[float, ...], str], int] = {}
         for i, c in enumerate(self.cables, 1):
             key = (tuple(c.exit), tuple(c.anchor or [0.0] * d), c.body or "platform")
             if key in keys:
