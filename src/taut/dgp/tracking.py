@@ -306,7 +306,7 @@ def _state(robot: Robot, sol: DGPSolution, lengths: np.ndarray) -> _State:
     tau = np.asarray(sol.tensions, float)
     if tau.shape != (robot.n_cables,):
         raise TautError(f"{robot.name} has {robot.n_cables} cables, the solution has {tau.size} tensions")
-    taut = tuple(sorted(int(i) - 1 for i in sol.taut))
+    taut = tuple(sorted(int(i) for i in sol.taut))
     p = np.asarray(sol.position, float)
     R = rotation_matrix(np.asarray(sol.orientation, float), robot.orientation)
     held = lengths.copy()
@@ -315,7 +315,7 @@ def _state(robot: Robot, sol: DGPSolution, lengths: np.ndarray) -> _State:
 
 
 def _solution(s: _State, width: float) -> DGPSolution:
-    return DGPSolution(tuple(i + 1 for i in s.taut), s.p, s.angles, s.tensions, s.stable, width, 0.0)
+    return DGPSolution(tuple(s.taut), s.p, s.angles, s.tensions, s.stable, width, 0.0)
 
 
 def track(robot: Robot, previous_solution, lengths) -> DGPSolution:
