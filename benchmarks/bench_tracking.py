@@ -37,7 +37,7 @@ def main():
         sp.system, sp.unknowns(pose[:3], rotation_matrix(np.array(pose[3:]), "xyz-fixed"), np.array(ten) / L)
     )
     p, ang, _ = sp.pose(cert.x, "xyz-fixed")
-    start = DGPSolution((1, 2, 3), p, ang, sp.tensions(cert.x, L, 3), True, cert.width, cert.radius)
+    start = DGPSolution((0, 1, 2), p, ang, sp.tensions(cert.x, L, 3), True, cert.width, cert.radius)
     half = [L + k * 0.002 * np.array([1.0, -1.0, 0.5]) for k in range(1, STEPS // 2 + 1)]
     path = half + half[-2::-1] + [L]
     track_path(robot, start, path[:2])  # compile the sub-problem and the kernels outside the timing

@@ -56,3 +56,68 @@ def test_no_upward_import(path):
     own = LAYERS[_top(path)]
     upward = sorted({m for m in _imports(path) if LAYERS[m] > own})
     assert not upward, f"{path.relative_to(SRC)} (layer {own}) imports {upward}"
+
+
+#: Private names a module still takes from another; dgp/solve.py's two go with the dgp helper's branch.
+KNOWN_PRIVATE_IMPORTS = {"dgp/solve.py": {"_bisect_index", "_split"}}
+
+
+def _is_module(dotted: str) -> bool:
+    path = SRC.parent.joinpath(*dotted.split("."))
+    return path.with_suffix(".py").exists() or (path / "__init__.py").exists()
+
+
+def _private(name: str) -> bool:
+    return name.startswith("_") and not name.startswith("__")
+
+
+def _module_name(path: Path) -> str:
+    return "taut." + ".".join(path.relative_to(SRC).with_suffix("").parts)
+
+
+def _private_uses(own: str, source: str):
+    """``(module, name)`` for every private name of another taut module that the module
+    ``own`` uses in ``source``: ``from taut.x import _name``, and ``m._name`` after
+    ``import taut.x as m`` or ``from taut.pkg import x as m``."""
+    tree = ast.parse(source)
+    aliases = {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("taut"):
+            for alias in node.names:
+                if _private(alias.name) and node.module != own:
+                    yield node.module, alias.name
+                if _is_module(f"{node.module}.{alias.name}"):
+                    aliases[alias.asname or alias.name] = f"{node.module}.{alias.name}"
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                if alias.name.startswith("taut.") and alias.asname:
+                    aliases[alias.asname] = alias.name
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Attribute) and _private(node.attr):
+            target = node.value
+            if isinstance(target, ast.Name) and target.id in aliases and aliases[target.id] != own:
+                yield aliases[target.id], node.attr
+            elif isinstance(target, ast.Attribute) and ast.unparse(target).startswith("taut."):
+                yield ast.unparse(target), node.attr
+
+
+@pytest.mark.parametrize("path", FILES, ids=[str(p.relative_to(SRC)) for p in FILES])
+def test_no_private_name_across_modules(path):
+    allowed = KNOWN_PRIVATE_IMPORTS.get(str(path.relative_to(SRC)), set())
+    used = sorted({f"{m}.{n}" for m, n in _private_uses(_module_name(path), path.read_text()) if n not in allowed})
+    assert not used, f"{path.relative_to(SRC)} uses private names of other modules: {used}"
+
+
+def test_private_use_is_detected():
+    source = (
+        "from taut.kinematics.inverse import _x, anchors_at\n"
+        "from taut.interval import kernels as K\n"
+        "import taut.geometry.rotation\n"
+        "from taut.statics.wrench import _own\n"
+        "K._y, K.add, K.__name__, taut.geometry.rotation._z\n"
+    )
+    assert list(_private_uses("taut.statics.wrench", source)) == [
+        ("taut.kinematics.inverse", "_x"),
+        ("taut.interval.kernels", "_y"),
+        ("taut.geometry.rotation", "_z"),
+    ]

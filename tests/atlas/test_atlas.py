@@ -1,6 +1,5 @@
 """Structure atlas (Alg. 5.1), charts (Eqs. 5.2–5.6), workspace (Alg. 5.2)."""
 
-
 import numpy as np
 import pytest
 import shapely

@@ -74,7 +74,8 @@ def test_igp_reports_an_exhausted_budget(capsys):
         (["suspended-3cable", "--taut", "1,2", "--fix", "x=1,y"], "give a value"),
         (["suspended-3cable", "--taut", "1,2", "--fix", "x=1,y=nan"], "not finite"),
         (["suspended-3cable", "--taut", "1,2", "--fix", "x=1,x=2"], "twice"),
-        (["suspended-3cable", "--taut", "1,9", "--fix", "x=1,y=2"], "out of range"),
+        (["suspended-3cable", "--taut", "1,9", "--fix", "x=1,y=2"], "--taut: no cable 9; the robot has cables 1..3"),
+        (["suspended-3cable", "--taut", "0,1", "--fix", "x=1,y=2"], "--taut: no cable 0;"),
         (["suspended-3cable", "--taut", "1,1", "--fix", "x=1,y=2"], "twice"),
         (["suspended-3cable", "--taut", "1,two", "--fix", "x=1,y=2"], "cable numbers"),
         (["suspended-3cable", "--taut", "1,2", "--fix", "x=1,a=2", "--box", "0,0,0"], "--box"),
@@ -86,3 +87,15 @@ def test_igp_bad_input_exits_2(argv, words, capsys):
     code = main(["igp", *argv])
     _, err = capsys.readouterr()
     assert code == 2 and err.startswith("taut: error: ") and words in err and "Traceback" not in err
+
+
+def test_fk_json_numbers_cables_from_1(capsys):
+    """The library's 0-based taut sets come out of the CLI 1-based: an equilibrium's taut
+    cables are those with a non-zero tension, counted from 1."""
+    # cables 1 and 3 long enough to stay slack: the platform hangs from cable 2
+    assert main(["fk", "suspended-3cable", "--max-taut", "1", "--lengths", "30,5,30", "--json"]) == 0
+    sols = json.loads(capsys.readouterr().out)["solutions"]
+    assert len(sols) == 2
+    for s in sols:
+        assert s["taut"] == [2]
+        assert [k + 1 for k, t in enumerate(s["tensions"]) if t > 0] == s["taut"]

@@ -25,11 +25,11 @@ def solve_subsets():
 
 
 def _printed_taut(row):
-    """1-based taut cables of a printed row ``pose (6), tensions (n)``; None when the OCR lost
-    one of its tensions."""
+    """Taut cables (0-based indices) of a printed row ``pose (6), tensions (n)``; None when the
+    OCR lost one of its tensions."""
     if any(t is None for t in row[6:]):
         return None
-    return tuple(i + 1 for i, t in enumerate(row[6:]) if t > 0)
+    return tuple(i for i, t in enumerate(row[6:]) if t > 0)
 
 
 @pytest.fixture

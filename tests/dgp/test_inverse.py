@@ -37,8 +37,8 @@ def check_solution(robot, s, taut):
     pose = np.concatenate([s.position, s.orientation])
     assert equilibrium_residual(robot, s) < 1e-9
     assert np.allclose(inverse_kinematics(robot, pose).lengths, s.lengths, atol=1e-12)
-    slack = [k for k in range(robot.n_cables) if k + 1 not in taut]
-    assert s.taut == tuple(sorted(taut)) and s.slack == tuple(k + 1 for k in slack)
+    slack = [k for k in range(robot.n_cables) if k not in taut]
+    assert s.taut == tuple(sorted(taut)) and s.slack == tuple(slack)
     assert np.all(s.tensions >= 0) and np.all(s.tensions[slack] == 0)
     assert s.certificate_width < 1e-9 and s.uniqueness_radius > 0
 
@@ -57,7 +57,7 @@ def dgp_certified(robot, taut0, lengths, pose, tensions):
 
 @pytest.fixture(scope="module")
 def suspended_m3():
-    return solve_igp(SUSPENDED, (1, 2, 3), dict(zip("xyz", T43_POSE[:3])))
+    return solve_igp(SUSPENDED, (0, 1, 2), dict(zip("xyz", T43_POSE[:3])))
 
 
 def test_table_4_3_round_trip_position_gives_orientation_tensions_and_lengths(suspended_m3):
@@ -65,7 +65,7 @@ def test_table_4_3_round_trip_position_gives_orientation_tensions_and_lengths(su
     # four equilibria with this origin (Newton from 3000 random starts finds the same four)
     assert res.complete and not res.exhausted and len(res.solutions) == 4
     for s in res.solutions:
-        check_solution(SUSPENDED, s, (1, 2, 3))
+        check_solution(SUSPENDED, s, (0, 1, 2))
         assert np.allclose(s.position, T43_POSE[:3], atol=0)
     stable = [s for s in res.solutions if s.stable]
     assert len(stable) == 1
@@ -91,17 +91,17 @@ def test_exact_round_trip_with_the_direct_problem():
     orientation, tensions and lengths to Newton precision."""
     lengths = SUSPENDED.reference.lengths
     pose, tau = dgp_certified(SUSPENDED, (0, 1, 2), lengths, T43_POSE, T43_TENSIONS)
-    res = solve_igp(SUSPENDED, [3, 1, 2], {"x": pose[0], "y": pose[1], "z": pose[2]})
+    res = solve_igp(SUSPENDED, [2, 0, 1], {"x": pose[0], "y": pose[1], "z": pose[2]})
     match = [s for s in res.solutions if np.allclose(s.orientation, pose[3:], atol=1e-9)]
     assert len(match) == 1
     assert np.allclose(match[0].tensions, tau, atol=1e-9) and np.allclose(match[0].lengths, lengths, atol=1e-9)
 
 
 def test_table_4_6_six_taut_cables_is_a_linear_problem():
-    res = solve_igp(PROTOTYPE, range(1, 7), dict(zip(PROTOTYPE.pose_names, T46_POSE)))
+    res = solve_igp(PROTOTYPE, range(6), dict(zip(PROTOTYPE.pose_names, T46_POSE)))
     assert res.undecided == 0 and len(res.solutions) == 1
     s = res.solutions[0]
-    check_solution(PROTOTYPE, s, range(1, 7))
+    check_solution(PROTOTYPE, s, range(6))
     assert np.array_equal(s.position, T46_POSE[:3]) and np.array_equal(s.orientation, T46_POSE[3:])
     assert np.allclose(s.tensions, T46_TENSIONS, atol=8e-3) and s.stable
     assert np.allclose(s.lengths, PROTOTYPE.reference.lengths, atol=2e-3)
@@ -115,7 +115,7 @@ def test_table_4_4_conf_8_five_taut_cables_recovers_phi_z():
     lengths = np.array(COGIRO.reference.lengths)
     taut0 = [2, 3, 5, 6, 7]
     pose, tau = dgp_certified(COGIRO, taut0, lengths, printed, [0, 0, 0.62, 0.55, 0, 0.01, 0.63, 0.55])
-    taut = (3, 4, 6, 7, 8)
+    taut = tuple(taut0)
     res = solve_igp(COGIRO, taut, {"x": pose[0], "y": pose[1], "z": pose[2], "phix": pose[3], "phiy": pose[4]})
     assert res.undecided == 0 and len(res.solutions) == 3
     for s in res.solutions:
@@ -130,7 +130,7 @@ def test_table_4_4_conf_8_five_taut_cables_recovers_phi_z():
 
 
 def test_four_taut_cables_assigning_phi_x():
-    taut = (1, 2, 4, 6)
+    taut = (0, 1, 3, 5)
     res = solve_igp(PROTOTYPE, taut, {"x": 0.346, "y": 0.453, "z": 0.066, "φx": -0.003})
     assert res.undecided == 0 and len(res.solutions) == 2  # as many as Newton from random starts
     for s in res.solutions:
@@ -140,7 +140,7 @@ def test_four_taut_cables_assigning_phi_x():
 
 def test_free_position_coordinate_in_a_given_box():
     """Assigning two angles instead of z (Table 4.6 Conf. 3, cable 5 slack)."""
-    taut = (1, 2, 3, 4, 6)
+    taut = (0, 1, 2, 3, 5)
     assigned = {"x": 0.363, "y": 0.454, "a": -2.420, "b": 0.406, "c": -1.341}
     res = solve_igp(PROTOTYPE, taut, assigned)
     assert len(res.solutions) == 1
@@ -158,12 +158,12 @@ def test_length_bounds_are_reported_not_enforced():
     data["cables"][0]["length"] = [0.0, 0.75]  # taut cable 1 is 0.80 long
     data["cables"][4]["length"] = [0.0, 0.70]  # slack cable 5 spans 0.78
     robot = Robot.model_validate(data)
-    res = solve_igp(robot, (1, 2, 3, 4, 6), {"x": 0.363, "y": 0.454, "z": 0.122, "a": -2.420, "b": 0.406})
+    res = solve_igp(robot, (0, 1, 2, 3, 5), {"x": 0.363, "y": 0.454, "z": 0.122, "a": -2.420, "b": 0.406})
     assert len(res.solutions) == 2
     for s in res.solutions:
         assert s.lengths[0] > 0.75 and s.lengths[4] > 0.70
-        assert s.length_violations == (1, 5)
-        assert s.as_dict()["length_violations"] == [1, 5]
+        assert s.length_violations == (0, 4)
+        assert s.as_dict()["length_violations"] == [0, 4]
 
 
 @pytest.mark.parametrize("convention", ["xyz-moving", "tilt-torsion"])
@@ -171,7 +171,7 @@ def test_the_rotations_found_do_not_depend_on_the_convention(convention, suspend
     data = SUSPENDED.model_dump()
     data["orientation"] = convention
     robot = Robot.model_validate(data)
-    res = solve_igp(robot, (1, 2, 3), dict(zip("xyz", T43_POSE[:3])))
+    res = solve_igp(robot, (0, 1, 2), dict(zip("xyz", T43_POSE[:3])))
     assert res.undecided == 0 and len(res.solutions) == 4
     ours = sorted(rotation_matrix(s.orientation, convention).ravel().round(9).tolist() for s in res.solutions)
     fixed = sorted(
@@ -179,7 +179,7 @@ def test_the_rotations_found_do_not_depend_on_the_convention(convention, suspend
     )
     assert np.allclose(ours, fixed, atol=1e-8)
     for s in res.solutions:
-        check_solution(robot, s, (1, 2, 3))
+        check_solution(robot, s, (0, 1, 2))
 
 
 ROBOCRANE = load_robot("robocrane")
@@ -187,7 +187,7 @@ ROBOCRANE = load_robot("robocrane")
 
 @pytest.fixture(scope="module")
 def robocrane_m3():
-    return solve_igp(ROBOCRANE, (1, 3, 5), {"x": 0, "y": 0, "z": 2})
+    return solve_igp(ROBOCRANE, (0, 2, 4), {"x": 0, "y": 0, "z": 2})
 
 
 def test_tension_bounds_bound_the_domain(robocrane_m3):
@@ -195,7 +195,7 @@ def test_tension_bounds_bound_the_domain(robocrane_m3):
     res = robocrane_m3
     assert res.complete and not res.exhausted and len(res.solutions) == 4
     for s in res.solutions:
-        check_solution(ROBOCRANE, s, (1, 3, 5))
+        check_solution(ROBOCRANE, s, (0, 2, 4))
         assert np.all(s.tensions <= 1.0) and 0 <= s.orientation[1] <= np.pi
 
 
@@ -229,7 +229,7 @@ def test_any_three_coordinates_of_a_solution_give_it_back(fixture, names, reques
 def test_a_continuum_exhausts_the_budget_and_says_so():
     """x = y = 0 and φ of a Robocrane solution: the platform can slide along a curve of
     equilibria (z, θ and σ − φ change together), so no isolated solution is proven there."""
-    res = solve_igp(ROBOCRANE, (1, 3, 5), {"x": 0, "y": 0, "phi": 2.8797932657906435}, max_boxes=3000)
+    res = solve_igp(ROBOCRANE, (0, 2, 4), {"x": 0, "y": 0, "phi": 2.8797932657906435}, max_boxes=3000)
     assert res.exhausted and res.boxes == 3000 and res.undecided > 0 and not res.complete
 
 
@@ -239,7 +239,7 @@ def test_six_taut_cables_match_the_linear_solve(dx, dy, dz, dc):
     """m = 6: the IGP returns the tensions of W τ = −w_ext when they are all positive, and
     nothing when one is negative."""
     pose = np.array(T46_POSE) + [dx, dy, dz, 0, 0, dc]
-    res = solve_igp(PROTOTYPE, range(1, 7), dict(zip(PROTOTYPE.pose_names, pose)))
+    res = solve_igp(PROTOTYPE, range(6), dict(zip(PROTOTYPE.pose_names, pose)))
     ik = inverse_kinematics(PROTOTYPE, pose)
     tau = np.linalg.solve(ik.structure_matrix, -external_wrench(PROTOTYPE, pose))
     if np.all(tau > 1e-9):
@@ -251,7 +251,7 @@ def test_six_taut_cables_match_the_linear_solve(dx, dy, dz, dc):
 @settings(max_examples=15, deadline=None)
 @given(st.floats(0.30, 0.40), st.floats(0.40, 0.50), st.floats(0.05, 0.2))
 def test_five_taut_cables_every_solution_is_an_admissible_equilibrium(x, y, z):
-    taut = (1, 2, 3, 4, 6)
+    taut = (0, 1, 2, 3, 5)
     res = solve_igp(PROTOTYPE, taut, {"x": x, "y": y, "z": z, "a": -2.420, "b": 0.406})
     for s in res.solutions:
         check_solution(PROTOTYPE, s, taut)
@@ -270,25 +270,25 @@ POINT_MASS = Robot.model_validate(
 @pytest.mark.parametrize(
     "robot, taut, assigned, error, words",
     [
-        (SUSPENDED, (1, 2, 3), {"x": 1, "y": 2}, PoseError, "exactly 3"),
-        (SUSPENDED, (1, 2), {"x": 1, "y": 2, "z": 3}, PoseError, "exactly 2"),
-        (SUSPENDED, (1, 2), {"x": 1, "w": 2}, PoseError, "unknown pose coordinate 'w'"),
-        (SUSPENDED, (1, 2), {"x": 1, "phi": 2}, PoseError, "unknown pose coordinate"),
-        (SUSPENDED, (1, 2), {"a": 1, "phix": 2}, PoseError, "assigned twice"),
-        (SUSPENDED, (1, 2), {"x": 1, "y": float("nan")}, PoseError, "finite"),
-        (SUSPENDED, (1, 2), {"x": 1, "y": float("inf")}, PoseError, "finite"),
-        (SUSPENDED, (1, 2), {"x": 1, "y": "two"}, PoseError, "not a number"),
-        (SUSPENDED, (1, 2), [1.0, 2.0], PoseError, "mapping"),
-        (SUSPENDED, (1, 4), {"x": 1, "y": 2}, CableSetError, "out of range"),
-        (SUSPENDED, (0, 1), {"x": 1, "y": 2}, CableSetError, "out of range"),
-        (SUSPENDED, (1, 1, 2), {"x": 1, "y": 2, "z": 3}, CableSetError, "twice"),
-        (SUSPENDED, (1.5, 2), {"x": 1, "y": 2}, CableSetError, "whole"),
-        (SUSPENDED, (1,), {"x": 1}, CableSetError, "2 to 6"),
-        (COGIRO, range(1, 8), dict.fromkeys("xyzabc", 0.0), CableSetError, "2 to 6"),
-        (SUSPENDED, 3, {"x": 1}, CableSetError, "cable numbers"),
-        (load_robot("planar-4cable"), (1, 2), {"x": 0, "y": 0}, UnsupportedRobotError, "planar"),
-        (POINT_MASS, (1, 2), {"x": 0, "y": 0}, UnsupportedRobotError, "point-mass"),
-        (load_robot("adjustable-8cable"), (1, 2), {"x": 0, "y": 0}, UnsupportedRobotError, "jointed"),
+        (SUSPENDED, (0, 1, 2), {"x": 1, "y": 2}, PoseError, "exactly 3"),
+        (SUSPENDED, (0, 1), {"x": 1, "y": 2, "z": 3}, PoseError, "exactly 2"),
+        (SUSPENDED, (0, 1), {"x": 1, "w": 2}, PoseError, "unknown pose coordinate 'w'"),
+        (SUSPENDED, (0, 1), {"x": 1, "phi": 2}, PoseError, "unknown pose coordinate"),
+        (SUSPENDED, (0, 1), {"a": 1, "phix": 2}, PoseError, "assigned twice"),
+        (SUSPENDED, (0, 1), {"x": 1, "y": float("nan")}, PoseError, "finite"),
+        (SUSPENDED, (0, 1), {"x": 1, "y": float("inf")}, PoseError, "finite"),
+        (SUSPENDED, (0, 1), {"x": 1, "y": "two"}, PoseError, "not a number"),
+        (SUSPENDED, (0, 1), [1.0, 2.0], PoseError, "mapping"),
+        (SUSPENDED, (0, 3), {"x": 1, "y": 2}, CableSetError, r"no cable 4 \(0-based index \[3\]\)"),
+        (SUSPENDED, (-1, 0), {"x": 1, "y": 2}, CableSetError, "no cable 0 "),
+        (SUSPENDED, (0, 0, 1), {"x": 1, "y": 2, "z": 3}, CableSetError, "twice"),
+        (SUSPENDED, (0.5, 1), {"x": 1, "y": 2}, CableSetError, "whole"),
+        (SUSPENDED, (0,), {"x": 1}, CableSetError, "2 to 6"),
+        (COGIRO, range(7), dict.fromkeys("xyzabc", 0.0), CableSetError, "2 to 6"),
+        (SUSPENDED, 3, {"x": 1}, CableSetError, "cable indices 0..2"),
+        (load_robot("planar-4cable"), (0, 1), {"x": 0, "y": 0}, UnsupportedRobotError, "planar"),
+        (POINT_MASS, (0, 1), {"x": 0, "y": 0}, UnsupportedRobotError, "point-mass"),
+        (load_robot("adjustable-8cable"), (0, 1), {"x": 0, "y": 0}, UnsupportedRobotError, "jointed"),
     ],
 )
 def test_bad_input_raises_typed_errors(robot, taut, assigned, error, words):
@@ -299,11 +299,11 @@ def test_bad_input_raises_typed_errors(robot, taut, assigned, error, words):
 @pytest.mark.parametrize("box", [([0, 0], [1, 1]), ([0, 0, 0], [1, 1, np.nan]), ([0, 0, 1], [1, 1, 0]), "box"])
 def test_bad_box_raises(box):
     with pytest.raises(PoseError, match="box"):
-        solve_igp(SUSPENDED, (1, 2), {"x": 1, "a": 0}, box=box)
+        solve_igp(SUSPENDED, (0, 1), {"x": 1, "a": 0}, box=box)
 
 
 def test_bad_solver_settings_raise():
     with pytest.raises(TautError, match="eps"):
-        solve_igp(SUSPENDED, (1, 2), {"x": 1, "a": 0}, eps=0.0)
+        solve_igp(SUSPENDED, (0, 1), {"x": 1, "a": 0}, eps=0.0)
     with pytest.raises(TautError, match="max_boxes"):
-        solve_igp(SUSPENDED, (1, 2), {"x": 1, "a": 0}, max_boxes=0)
+        solve_igp(SUSPENDED, (0, 1), {"x": 1, "a": 0}, max_boxes=0)

@@ -60,7 +60,7 @@ def test_table_4_3_complete_solution_set(workers, split):
     with get_executor(workers=workers) as ex:  # workers=2: the 3-taut domain in 8 pieces
         res = solve_dgp(ROBOT, executor=ex, split=split)
     assert res.subproblems == 7 and res.undecided == 0
-    assert len(res.solutions) == 6 and all(s.taut == (1, 2, 3) for s in res.solutions)
+    assert len(res.solutions) == 6 and all(s.taut == (0, 1, 2) for s in res.solutions)
     assert sum(s.stable for s in res.solutions) == 1
     for pose, tensions, stable in TABLE:
         match = [s for s in res.solutions if np.allclose(s.position, pose[:3], atol=6e-3)]

@@ -24,7 +24,7 @@ def start():
     R = rotation_matrix(np.array(POSE[3:]), "xyz-fixed")
     cert = certify(sp.system, sp.unknowns(POSE[:3], R, np.array(TENSIONS) / LENGTHS))
     p, ang, _ = sp.pose(cert.x, "xyz-fixed")
-    return DGPSolution((1, 2, 3), p, ang, sp.tensions(cert.x, LENGTHS, 3), True, cert.width, cert.radius)
+    return DGPSolution((0, 1, 2), p, ang, sp.tensions(cert.x, LENGTHS, 3), True, cert.width, cert.radius)
 
 
 def _assert_equilibrium(sol, lengths):
@@ -32,7 +32,7 @@ def _assert_equilibrium(sol, lengths):
     b = sol.position + ROBOT.anchors @ R.T
     a = ROBOT.exits
     f, m, gp = load(ROBOT)
-    taut = [i - 1 for i in sol.taut]
+    taut = list(sol.taut)
     assert np.all(sol.tensions >= 0.0)
     span = np.linalg.norm(b - a, axis=1)
     assert np.allclose(span[taut], lengths[taut], atol=1e-9, rtol=0)
@@ -49,7 +49,7 @@ def test_path_and_back_satisfies_the_equations_and_returns_to_the_start(start):
     there = track_path(ROBOT, start, path)
     back = track_path(ROBOT, there[-1], path[-2::-1] + [LENGTHS])
     for sol, lengths in zip(there + back, path + path[-2::-1] + [LENGTHS]):
-        assert sol.taut == (1, 2, 3) and sol.stable and sol.certificate_width < 1e-3
+        assert sol.taut == (0, 1, 2) and sol.stable and sol.certificate_width < 1e-3
         _assert_equilibrium(sol, lengths)
     assert not np.allclose(there[-1].position, start.position, atol=1e-3)  # it did move
     assert np.allclose(back[-1].position, start.position, atol=1e-9, rtol=0)
@@ -63,9 +63,9 @@ def test_a_cable_going_slack_switches_sub_problem_and_back(start):
     path = out + out[-2::-1] + [LENGTHS]
     sols = track_path(ROBOT, start, path)
     sets = [s.taut for s in sols]
-    first, last = sets.index((1, 3)), len(sets) - 1 - sets[::-1].index((1, 3))
-    assert set(sets[:first]) == {(1, 2, 3)} and set(sets[first : last + 1]) == {(1, 3)}
-    assert set(sets[last + 1 :]) == {(1, 2, 3)}
+    first, last = sets.index((0, 2)), len(sets) - 1 - sets[::-1].index((0, 2))
+    assert set(sets[:first]) == {(0, 1, 2)} and set(sets[first : last + 1]) == {(0, 2)}
+    assert set(sets[last + 1 :]) == {(0, 1, 2)}
     assert 0.0 < sols[first - 1].tensions[1] < 0.02  # dropped where its tension reached zero
     assert sols[first].tensions[1] == 0.0
     for sol, lengths in zip(sols, path):
@@ -104,14 +104,14 @@ def test_six_taut_cables_track_without_tension_unknowns():
     pose = np.array([-0.278, -1.470, 0.549, -0.670, 0.014, -0.043])
     cert = certify(sp.system, sp.unknowns(pose[:3], rotation_matrix(pose[3:], "xyz-fixed")))
     p, ang, _ = sp.pose(cert.x, "xyz-fixed")
-    start = DGPSolution(tuple(range(1, 7)), p, ang, sp.tensions(cert.x, L, 6), True, cert.width, cert.radius)
+    start = DGPSolution(tuple(range(6)), p, ang, sp.tensions(cert.x, L, 6), True, cert.width, cert.radius)
     assert np.all(start.tensions > 0)
     path = [L + k * 0.001 * np.array([1.0, -1.0, 0.5, 0.0, 0.5, -1.0]) for k in range(1, 21)]
     sols = track_path(robot, start, path)
     for sol, lengths in zip(sols, path):
         R = rotation_matrix(sol.orientation, robot.orientation)
         b = sol.position + robot.anchors @ R.T
-        taut = [i - 1 for i in sol.taut]
+        taut = list(sol.taut)
         assert np.allclose(np.linalg.norm(b[taut] - robot.exits[taut], axis=1), lengths[taut], atol=1e-9)
         f, m, gp = load(robot)
         u = (robot.exits - b) / np.linalg.norm(robot.exits - b, axis=1)[:, None] * sol.tensions[:, None]

@@ -21,6 +21,7 @@ def _ry(a):
     return np.array([[np.cos(a), 0, np.sin(a)], [0, 1, 0], [-np.sin(a), 0, np.cos(a)]])
 
 
+@settings(deadline=None)  # the first call may compile the kernel
 @given(angles)
 def test_conventions_match_their_definitions(v):
     a, b, c = v

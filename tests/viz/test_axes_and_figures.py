@@ -85,7 +85,7 @@ def data() -> dict[str, Any]:
         sp.system, sp.unknowns(pose[:3], rotation_matrix(np.array(pose[3:]), "xyz-fixed"), tensions / lengths)
     )
     p, ang, _ = sp.pose(cert.x, "xyz-fixed")
-    start = DGPSolution((1, 2, 3), p, ang, sp.tensions(cert.x, lengths, 3), True, cert.width, cert.radius)
+    start = DGPSolution((0, 1, 2), p, ang, sp.tensions(cert.x, lengths, 3), True, cert.width, cert.radius)
     out["suspended"], out["equilibria"] = suspended, [start]
     out["tracking"] = track_path(
         suspended, start, [lengths + k * 0.002 * np.array([1.0, -1.0, 0.5]) for k in range(1, 6)]

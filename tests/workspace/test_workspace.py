@@ -242,7 +242,7 @@ def rot_z(t: float) -> np.ndarray:
     return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
 
 
-#: The orientation conventions written out from elementary rotations (DESIGN §2).
+#: The orientation conventions written out from elementary rotations (docs/architecture.md §2.3).
 ROTATIONS = {
     "xyz-fixed": lambda a, b, c: rot_z(c) @ rot_y(b) @ rot_x(a),
     "xyz-moving": lambda a, b, c: rot_x(a) @ rot_y(b) @ rot_z(c),

@@ -173,7 +173,7 @@ def test_bad_input():
         run_trajectory(r, [0, 1], [[0.75, -0.5], [0.0, -0.3333]])
     with pytest.raises(TautError, match="not taut"):
         run_trajectory(r, [0, 1], [[0.75, -0.5], [0.7, -0.5]], initial={0: [(1, -1)]})
-    bad = r.model_copy(update={"obstacles": r.obstacles + [r.obstacles[0].model_copy(update={"center": [0.1, -0.3]})]})
+    bad = r.model_copy(update={"obstacles": (*r.obstacles, r.obstacles[0].model_copy(update={"center": [0.1, -0.3]}))})
     with pytest.raises(TautError, match="overlap"):
         run_trajectory(bad, [0, 1], [[0.75, -0.5], [0.7, -0.5]])
 

@@ -6,6 +6,7 @@ used.  No equilibrium is an empty list, not an error."""
 from __future__ import annotations
 
 from taut.cli import args as A
+from taut.cli.cables import cable_numbers, numbered
 from taut.cli.main import console, emit, load, save_figure
 from taut.errors import TautError
 
@@ -22,7 +23,7 @@ def cmd_fk(ns) -> int:
         res = solve_dgp(robot, lengths, max_taut=ns.max_taut, executor=executor)
     data = {
         "robot": robot.name,
-        "solutions": [s.as_dict() for s in res.solutions],
+        "solutions": [numbered(s.as_dict()) for s in res.solutions],
         "subproblems": res.subproblems,
         "undecided_boxes": res.undecided,
         "elapsed_s": res.elapsed_s,
@@ -45,7 +46,7 @@ def cmd_fk(ns) -> int:
             t.add_column(h, justify="right")
         for s in res.solutions:
             t.add_row(
-                ",".join(map(str, s.taut)),
+                ",".join(map(str, cable_numbers(s.taut))),
                 *(f"{v:.4f}" for v in s.position),
                 *(f"{v:.4f}" for v in s.orientation),
                 *(f"{v:.4f}" for v in s.tensions),

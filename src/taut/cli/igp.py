@@ -55,17 +55,24 @@ def _box(text: str | None):
 
 
 def cmd_igp(ns) -> int:
+    from taut.cli.cables import cable_indices, cable_numbers, numbered
     from taut.cli.main import console, emit, load
     from taut.dgp import solve_igp
 
     robot = load(ns.robot)
     cables = _cables(ns.taut)
-    res = solve_igp(robot, cables, _assigned(ns.fix), box=_box(ns.box), max_boxes=ns.max_boxes)
+    res = solve_igp(
+        robot,
+        cable_indices(cables, robot.n_cables, "--taut"),
+        _assigned(ns.fix),
+        box=_box(ns.box),
+        max_boxes=ns.max_boxes,
+    )
     data = {
         "robot": robot.name,
         "taut": sorted(cables),
         "assigned": res.assigned,
-        "solutions": [s.as_dict() for s in res.solutions],
+        "solutions": [numbered(s.as_dict()) for s in res.solutions],
         "undecided_boxes": res.undecided,
         "boxes": res.boxes,
         "exhausted": res.exhausted,
@@ -95,13 +102,13 @@ def cmd_igp(ns) -> int:
         for i in range(robot.n_cables):
             t.add_row(
                 str(i + 1),
-                *(f"≥{s.lengths[i]:.4f}" if i + 1 in s.slack else f"{s.lengths[i]:.4f}" for s in res.solutions),
+                *(f"≥{s.lengths[i]:.4f}" if i in s.slack else f"{s.lengths[i]:.4f}" for s in res.solutions),
             )
         con.print(t)
         for k, s in enumerate(res.solutions, 1):
             if s.length_violations:
                 con.print(
-                    f"[yellow]solution {k}: cables {list(s.length_violations)} are outside their length bounds[/]"
+                    f"[yellow]solution {k}: cables {cable_numbers(s.length_violations)} are outside their length bounds[/]"
                 )
 
     def human(d):

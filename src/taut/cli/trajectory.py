@@ -63,6 +63,8 @@ def cmd_trajectory(ns) -> int:
         t, P = sample_waypoints(W, ns.speed or DEFAULT_SPEED, 1.0 if ns.dwell is None else ns.dwell, ns.dt)
     res = run_trajectory(robot, t, P)
     data = {"robot": robot.name} | res.summary()
+    # users read 1-based cable and object numbers
+    data["transitions"] = [e | {"cable": e["cable"] + 1, "object": e["object"] + 1} for e in data["transitions"]]
     data["times"] = res.times.tolist()
     data["length_controlled"] = res.controlled.tolist()
     if ns.out:

@@ -39,7 +39,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from taut.kinematics.inverse import _anchors
+from taut.kinematics.inverse import anchors_at
 from taut.kinematics.pose import body_frames
 from taut.model.robot import Robot
 
@@ -141,7 +141,7 @@ def capsule_segments(
     A = np.zeros((N, model.n_capsules, 3))
     B = np.zeros((N, model.n_capsules, 3))
     A[:, :n, :d] = robot.exits
-    B[:, :n, :d] = _anchors(robot, poses)
+    B[:, :n, :d] = anchors_at(robot, poses)
     if model.n_capsules > n:
         pos, rot = body_frames(robot, poses)
         k = model.body[n:]

@@ -88,9 +88,7 @@ def load(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     w = np.zeros(6)
     if plat.wrench is not None:
         w += np.asarray(plat.wrench, float)
-    if plat.mass is not None:
-        g = np.asarray(plat.gravity, float) if plat.gravity is not None else np.array([0.0, 0.0, -9.81])
-        w[:3] += plat.mass * g
+    w[:3] += robot.weight
     gp = np.zeros(3) if plat.wrench_point is None else np.asarray(plat.wrench_point, float)
     return w[:3], w[3:], gp
 
@@ -134,7 +132,7 @@ class Subproblem:
 
     def frame(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``(position p, rotation R)`` of the platform frame from the unknowns ``x``."""
-        return _frame(np.ascontiguousarray(x[:9]).reshape(3, 3), self.body_refs)
+        return frame_from_points(np.ascontiguousarray(x[:9]).reshape(3, 3), self.body_refs)
 
     @property
     def tension_unknowns(self) -> bool:
@@ -167,7 +165,7 @@ class Subproblem:
 
 
 @njit(cache=True)
-def _frame(q: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def frame_from_points(q: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Platform frame from the reference points ``q`` (fixed frame) and ``b`` (body frame):
     ``R`` maps the body triad ``(b₂−b₁, b₃−b₁, their cross product)`` onto the fixed one,
     projected on the nearest rotation (it is orthogonal at a solution).  Compiled: the
@@ -235,12 +233,11 @@ def _exact_cross(u, w) -> list[Fraction]:
 
 
 def _exact_load(robot: Robot) -> tuple[list[Fraction], list[Fraction]]:
-    """``(f, m_ext)`` of :func:`load` in exact rational arithmetic."""
+    """``(f, m_ext)`` of :func:`load` in exact rational arithmetic (of the float weight, as
+    :func:`load` has it)."""
     plat = robot.platform
     w = _exact(plat.wrench) if plat.wrench is not None else [Fraction(0)] * 6
-    if plat.mass is not None:
-        g = _exact(plat.gravity) if plat.gravity is not None else _exact([0.0, 0.0, -9.81])
-        w = [w[k] + Fraction(float(plat.mass)) * g[k] if k < 3 else w[k] for k in range(6)]
+    w = [w[k] + Fraction(float(robot.weight[k])) if k < 3 else w[k] for k in range(6)]
     return w[:3], w[3:]
 
 
@@ -267,7 +264,7 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
     Every constant derived from the robot's data (the ``β`` of secondary points, squared
     distances between reference points, exit-point differences, the load) is computed in
     exact rational arithmetic and entered as the float interval enclosing it, so the
-    system holds the exact one of the data (DESIGN §5: outward rounding throughout)."""
+    system holds the exact one of the data (docs/architecture.md §5: outward rounding throughout)."""
     n, m = robot.n_cables, len(taut)
     a, r = robot.exits, robot.anchors
     _, _, gp = load(robot)

@@ -59,7 +59,7 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -79,13 +79,13 @@ ALIASES = {"phix": "a", "phiy": "b", "phiz": "c", "φx": "a", "φy": "b", "φz":
 
 @dataclass(frozen=True)
 class IGPSolution:
-    taut: tuple[int, ...]  #: 1-based taut cables
+    taut: tuple[int, ...]  #: taut cables (0-based indices)
     position: np.ndarray
     orientation: np.ndarray  #: angles in the robot's convention
     tensions: np.ndarray  #: all n cables (0 for slack ones)
     lengths: np.ndarray  #: all n cables: the length to command (taut), the span (slack)
-    slack: tuple[int, ...]  #: 1-based slack cables
-    length_violations: tuple[int, ...]  #: 1-based cables outside the robot's length bounds
+    slack: tuple[int, ...]  #: slack cables (0-based indices)
+    length_violations: tuple[int, ...]  #: cables (0-based indices) outside the robot's length bounds
     stable: bool
     certificate_width: float  #: width of the Krawczyk box proven to hold this solution
     uniqueness_radius: float  #: half-width of the inflated box with no other solution
@@ -131,24 +131,25 @@ def _check_robot(robot: Robot) -> None:
         )
 
 
-def _check_taut(robot: Robot, taut) -> tuple[int, ...]:
-    """0-based taut cables from 1-based cable numbers."""
+def _check_taut(robot: Robot, taut: Iterable[int]) -> tuple[int, ...]:
+    """The taut cables' 0-based indices, sorted; messages name cables by their 1-based numbers."""
     n = robot.n_cables
     try:
         items = list(taut)
-        numbers = [int(i) for i in items]
+        indices = [int(i) for i in items]
     except (TypeError, ValueError):
-        raise CableSetError(f"taut cables: expected cable numbers 1..{n}, got {taut!r}") from None
-    if any(k != i for k, i in zip(numbers, items)):
-        raise CableSetError(f"taut cables: expected whole cable numbers 1..{n}, got {items}")
-    bad = [i for i in numbers if not 1 <= i <= n]
+        raise CableSetError(f"taut cables: expected cable indices 0..{n - 1}, got {taut!r}") from None
+    if any(k != i for k, i in zip(indices, items)):
+        raise CableSetError(f"taut cables: expected whole cable indices 0..{n - 1}, got {items}")
+    bad = [i for i in indices if not 0 <= i < n]
     if bad:
-        raise CableSetError(f"taut cables: {bad} out of range; {robot.name} has cables 1..{n}")
-    if len(set(numbers)) != len(numbers):
-        raise CableSetError(f"taut cables: {numbers} names a cable twice")
-    if not 2 <= len(numbers) <= 6:
-        raise CableSetError(f"the inverse geometrico-static problem takes 2 to 6 taut cables, got {len(numbers)}")
-    return tuple(sorted(i - 1 for i in numbers))
+        numbers = ", ".join(str(i + 1) for i in bad)
+        raise CableSetError(f"taut cables: no cable {numbers} (0-based index {bad}); {robot.name} has cables 1..{n}")
+    if len(set(indices)) != len(indices):
+        raise CableSetError(f"taut cables: {[i + 1 for i in indices]} names a cable twice")
+    if not 2 <= len(indices) <= 6:
+        raise CableSetError(f"the inverse geometrico-static problem takes 2 to 6 taut cables, got {len(indices)}")
+    return tuple(sorted(indices))
 
 
 def _check_assigned(robot: Robot, assigned: dict, m: int) -> dict[int, float]:
@@ -371,7 +372,8 @@ def solve_igp(
 ) -> IGPResult:
     """All certified solutions of the inverse geometrico-static problem (module docstring).
 
-    ``taut``: the 1-based numbers of the ``m`` taut cables (``2 ≤ m ≤ 6``); ``assigned``:
+    ``taut``: the 0-based indices of the ``m`` taut cables (``2 ≤ m ≤ 6``; the cables the
+    command line numbers 1, 2, 3 are ``[0, 1, 2]``); ``assigned``:
     exactly ``m`` pose coordinates by name (the robot's ``pose_names``: ``x, y, z, a, b, c``
     — ``phix, phiy, phiz`` are accepted for the ``xyz`` conventions — or
     ``phi, theta, sigma`` for tilt-and-torsion); ``box``: ``(lower, upper)`` corners of the
@@ -448,13 +450,13 @@ def _solution(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pb: 
     out_of_bounds = [k for k in range(robot.n_cables) if lengths[k] > lmax[k] or (k in taut and lengths[k] < lmin[k])]
     stable = is_stable(a[idx], b[idx], p + R @ gp, tensions[idx], lengths[idx])
     return IGPSolution(
-        tuple(i + 1 for i in taut),
+        tuple(taut),
         p,
         pose[3:],
         tensions,
         lengths,
-        tuple(k + 1 for k in slack),
-        tuple(k + 1 for k in out_of_bounds),
+        tuple(slack),
+        tuple(out_of_bounds),
         stable,
         cert.width,
         cert.radius,

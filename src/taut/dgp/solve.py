@@ -38,7 +38,7 @@ from taut.parallel import SerialExecutor, get_executor
 
 @dataclass(frozen=True)
 class DGPSolution:
-    taut: tuple[int, ...]  #: 1-based taut cables
+    taut: tuple[int, ...]  #: taut cables (0-based indices)
     position: np.ndarray
     orientation: np.ndarray  #: angles in the robot's convention (xyz-fixed by default)
     tensions: np.ndarray  #: all n cables (0 for slack ones)
@@ -148,7 +148,7 @@ def _solve_piece(job):
         for s in single_cable_equilibria(robot, lengths, taut[0]):
             out.append(
                 DGPSolution(
-                    (taut[0] + 1,),
+                    (taut[0],),
                     s["p"],
                     angles_from_matrix(s["R"], robot.orientation),
                     s["tensions"],
@@ -199,7 +199,7 @@ def _solve_piece(job):
         b = p + r @ R.T
         g = p + R @ gp
         stable = is_stable(a[idx], b[idx], g, tau[idx], lengths[idx])
-        out.append(DGPSolution(tuple(i + 1 for i in taut), p, ang, tau, stable, c.width, c.radius))
+        out.append(DGPSolution(tuple(taut), p, ang, tau, stable, c.width, c.radius))
         certs.append(c)
     return out, certs, undecided, res.boxes
 

@@ -64,7 +64,10 @@ def reduced_hessian(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray
 
 
 @njit(cache=True)
-def _smallest_eigenvalue(a, b, g, tau, rho) -> float:
+def smallest_eigenvalue(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray, rho: np.ndarray) -> float:
+    """Smallest eigenvalue of the (symmetrised) reduced Hessian of :func:`reduced_hessian`,
+    ``inf`` when the null space is empty; the equilibrium is stable when it is positive.
+    Compiled, for callers that are compiled too (the tracking update); arrays contiguous."""
     Hr = reduced_hessian(a, b, g, tau, rho)
     if Hr.size == 0:
         return np.inf
@@ -81,4 +84,4 @@ def is_stable(a, b, g, tau, rho) -> bool:
        interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
        Università di Bologna, 2015, §3.2.2. (docs/references.bib: berti2015)
     """
-    return bool(_smallest_eigenvalue(*(np.ascontiguousarray(v, dtype=float) for v in (a, b, g, tau, rho))) > 0.0)
+    return bool(smallest_eigenvalue(*(np.ascontiguousarray(v, dtype=float) for v in (a, b, g, tau, rho))) > 0.0)

@@ -47,9 +47,9 @@ from dataclasses import dataclass, field
 import numpy as np
 from numba import njit
 
-from taut.dgp.formulation import Subproblem, _frame, build_subproblem, load
+from taut.dgp.formulation import Subproblem, build_subproblem, frame_from_points, load
 from taut.dgp.solve import DGPSolution, check_lengths
-from taut.dgp.stability import _smallest_eigenvalue
+from taut.dgp.stability import smallest_eigenvalue
 from taut.errors import TautError, TrackingLostError
 from taut.geometry.rotation import CONVENTIONS, rotation_matrix
 from taut.geometry.rotation_kernels import angles as matrix_angles
@@ -192,7 +192,7 @@ def _update(
 
     The unknowns of the pose ``(p0, R0)`` and tensions ``tau0`` (the three ``refs``
     reference points, then ``τ/ρ`` unless six cables are taut) start
-    :func:`~taut.interval.krawczyk.certified_step`; from its limit come the frame (:func:`~taut.dgp.formulation._frame`), the tensions
+    :func:`~taut.interval.krawczyk.certified_step`; from its limit come the frame (:func:`~taut.dgp.formulation.frame_from_points`), the tensions
     (for six taut cables the square statics of the ``s*`` tape, §3.1.3), every cable's
     span ``‖b_i − a_i‖`` and the smallest eigenvalue of the reduced Hessian (§3.2.2).
     Returns ``(status, p, R, angles, tensions, spans, eigenvalue, box width)``; status as
@@ -232,7 +232,7 @@ def _update(
     tau, spans = np.zeros(n), np.zeros(n)
     if status != 1:
         return status, p0, R0, np.zeros(3), tau, spans, 0.0, width
-    p, R = _frame(np.ascontiguousarray(x[:9]).reshape(3, 3), refs)
+    p, R = frame_from_points(np.ascontiguousarray(x[:9]).reshape(3, 3), refs)
     if h > pose:
         for j in range(m):
             tau[idx[j]] = x[pose + j] * lengths[idx[j]]
@@ -248,7 +248,7 @@ def _update(
     for j in range(m):
         at[j], bt[j] = exits[idx[j]], p + R @ anchors[idx[j]]
         taut_tau[j], rho[j] = tau[idx[j]], lengths[idx[j]]
-    eig = _smallest_eigenvalue(at, bt, p + R @ gp, taut_tau, rho)
+    eig = smallest_eigenvalue(at, bt, p + R @ gp, taut_tau, rho)
     ang = matrix_angles(R.reshape(1, 3, 3), convention)[0]
     return status, p, R, ang, tau, spans, eig, width
 
@@ -314,7 +314,7 @@ def _state(robot: Robot, sol: DGPSolution, lengths: np.ndarray) -> _State:
     tau = np.asarray(sol.tensions, float)
     if tau.shape != (robot.n_cables,):
         raise TautError(f"{robot.name} has {robot.n_cables} cables, the solution has {tau.size} tensions")
-    taut = tuple(sorted(int(i) - 1 for i in sol.taut))
+    taut = tuple(sorted(int(i) for i in sol.taut))
     p = np.asarray(sol.position, float)
     R = rotation_matrix(np.asarray(sol.orientation, float), robot.orientation)
     held = lengths.copy()
@@ -323,7 +323,7 @@ def _state(robot: Robot, sol: DGPSolution, lengths: np.ndarray) -> _State:
 
 
 def _solution(s: _State, width: float) -> DGPSolution:
-    return DGPSolution(tuple(i + 1 for i in s.taut), s.p, s.angles, s.tensions, s.stable, width, 0.0)
+    return DGPSolution(tuple(s.taut), s.p, s.angles, s.tensions, s.stable, width, 0.0)
 
 
 def track(robot: Robot, previous_solution, lengths) -> DGPSolution:

@@ -52,7 +52,7 @@ from numba import njit
 
 from taut.interval.expression import System
 from taut.interval.hc4 import contract, contract_kernel, evaluate, evaluate_kernel
-from taut.interval.krawczyk import Certificate, _krawczyk_jacobian, certify, krawczyk, tube_kernel
+from taut.interval.krawczyk import Certificate, certify, krawczyk, krawczyk_jacobian, tube_kernel
 from taut.interval.linear import LinearFilter, linear_filter_kernel
 from taut.interval.slope import points_for, slope_kernel, slopes
 
@@ -482,11 +482,11 @@ def _drive(
                 slope_kernel(jop, ja, jb, jclo, jchi, jstart, jend, klo, khi, krawczyk_points, jl, jh)
             else:
                 evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, klo, khi, jl, jh)
-            status, rl, rh = _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, jl, jh, klo, khi)
+            status, rl, rh = krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, jl, jh, klo, khi)
             if status == 1 and krawczyk_points > 0:  # (never padded: that needs degree > 4)
                 # slopes exclude and contract; only the Jacobian proves a solution unique
                 evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, klo, khi, jl, jh)
-                status, rl, rh = _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, jl, jh, klo, khi)
+                status, rl, rh = krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, jl, jh, klo, khi)
             have_j = True
             stats[5] += 1
             if status == 2:

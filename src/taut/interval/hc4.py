@@ -36,7 +36,7 @@ from taut.interval.expression import ADD, CONST, MUL, NEG, POW, SQR, SQRT, SUB, 
 
 
 @njit(cache=True, fastmath=False)
-def _forward(
+def forward_kernel(
     op: np.ndarray,
     a: np.ndarray,
     b: np.ndarray,
@@ -49,6 +49,9 @@ def _forward(
     nl: np.ndarray,
     nh: np.ndarray,
 ) -> None:
+    """Forward sweep of the tape ``(op, a, b, clo, chi)`` over its nodes ``s … e−1`` on the
+    box ``[lo, hi]``: writes each node's outward-rounded enclosure into ``[nl, nh]``
+    (point evaluation with ``lo = hi``).  Compiled, for compiled callers."""
     for k in range(s, e):
         o = op[k]
         if o == VAR:
@@ -213,7 +216,7 @@ def contract_kernel(
     for _ in range(max_rounds):
         for j in range(n):
             before[j] = hi[j] - lo[j]
-        _forward(op, a, b, clo, chi, 0, N, lo, hi, nl, nh)
+        forward_kernel(op, a, b, clo, chi, 0, N, lo, hi, nl, nh)
         fl[:] = nl
         fh[:] = nh
         for c in range(start.size):
@@ -248,7 +251,7 @@ def evaluate_kernel(
     nl = np.empty(op.size)
     nh = np.empty(op.size)
     # the segments tile the tape in order: one sweep evaluates them all (shared nodes too)
-    _forward(op, a, b, clo, chi, 0, op.size, lo, hi, nl, nh)
+    forward_kernel(op, a, b, clo, chi, 0, op.size, lo, hi, nl, nh)
     for c in range(start.size):
         out_lo[c], out_hi[c] = nl[end[c] - 1], nh[end[c] - 1]
 

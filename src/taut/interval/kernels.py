@@ -71,7 +71,7 @@ def sub(al: float, ah: float, bl: float, bh: float) -> tuple[float, float]:
 
 
 @njit(cache=True, fastmath=False, inline="always")
-def _prod_down(a: float, b: float) -> float:
+def prod_down(a: float, b: float) -> float:
     """Lower bound of ``a·b``: exact 0 only when a factor is 0 (an underflow to 0 is not)."""
     if a == 0.0 or b == 0.0:
         return 0.0
@@ -79,7 +79,8 @@ def _prod_down(a: float, b: float) -> float:
 
 
 @njit(cache=True, fastmath=False, inline="always")
-def _prod_up(a: float, b: float) -> float:
+def prod_up(a: float, b: float) -> float:
+    """Upper bound of ``a·b``: exact 0 only when a factor is 0 (an underflow to 0 is not)."""
     if a == 0.0 or b == 0.0:
         return 0.0
     return up(a * b)
@@ -91,22 +92,22 @@ def mul(al: float, ah: float, bl: float, bh: float) -> tuple[float, float]:
     products, four only when both factors straddle 0."""
     if al >= 0.0:
         if bl >= 0.0:
-            return _prod_down(al, bl), _prod_up(ah, bh)
+            return prod_down(al, bl), prod_up(ah, bh)
         if bh <= 0.0:
-            return _prod_down(ah, bl), _prod_up(al, bh)
-        return _prod_down(ah, bl), _prod_up(ah, bh)
+            return prod_down(ah, bl), prod_up(al, bh)
+        return prod_down(ah, bl), prod_up(ah, bh)
     if ah <= 0.0:
         if bl >= 0.0:
-            return _prod_down(al, bh), _prod_up(ah, bl)
+            return prod_down(al, bh), prod_up(ah, bl)
         if bh <= 0.0:
-            return _prod_down(ah, bh), _prod_up(al, bl)
-        return _prod_down(al, bh), _prod_up(al, bl)
+            return prod_down(ah, bh), prod_up(al, bl)
+        return prod_down(al, bh), prod_up(al, bl)
     if bl >= 0.0:
-        return _prod_down(al, bh), _prod_up(ah, bh)
+        return prod_down(al, bh), prod_up(ah, bh)
     if bh <= 0.0:
-        return _prod_down(ah, bl), _prod_up(al, bl)
+        return prod_down(ah, bl), prod_up(al, bl)
     # both straddle 0: the lower end is a product of opposite signs, the upper of equal ones
-    return min(_prod_down(al, bh), _prod_down(ah, bl)), max(_prod_up(al, bl), _prod_up(ah, bh))
+    return min(prod_down(al, bh), prod_down(ah, bl)), max(prod_up(al, bl), prod_up(ah, bh))
 
 
 @njit(cache=True, fastmath=False)
@@ -119,11 +120,11 @@ def scale(c: float, al: float, ah: float) -> tuple[float, float]:
 def sqr(al: float, ah: float) -> tuple[float, float]:
     """``[a]²`` — sharper than ``[a]×[a]``: ``[-1, 2]² = [0, 4]``."""
     if al >= 0.0:
-        lo, hi = _prod_down(al, al), _prod_up(ah, ah)
+        lo, hi = prod_down(al, al), prod_up(ah, ah)
     elif ah <= 0.0:
-        lo, hi = _prod_down(ah, ah), _prod_up(al, al)
+        lo, hi = prod_down(ah, ah), prod_up(al, al)
     else:
-        lo, hi = 0.0, max(_prod_up(al, al), _prod_up(ah, ah))
+        lo, hi = 0.0, max(prod_up(al, al), prod_up(ah, ah))
     return max(lo, 0.0), hi
 
 
@@ -178,8 +179,3 @@ def power(al: float, ah: float, n: int) -> tuple[float, float]:
 @njit(cache=True, fastmath=False)
 def neg(al: float, ah: float) -> tuple[float, float]:
     return -ah, -al
-
-
-@njit(cache=True, fastmath=False)
-def intersect(al, ah, bl, bh):
-    return max(al, bl), min(ah, bh)

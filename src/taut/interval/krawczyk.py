@@ -43,8 +43,8 @@ from numba import njit
 
 from taut.interval import kernels as K
 from taut.interval.expression import System
-from taut.interval.hc4 import _forward, evaluate, evaluate_kernel, evaluate_point, point_kernel
-from taut.interval.linear import _precondition, float_inverse
+from taut.interval.hc4 import evaluate, evaluate_kernel, evaluate_point, forward_kernel, point_kernel
+from taut.interval.linear import float_inverse, precondition
 from taut.interval.slope import slopes
 
 
@@ -287,11 +287,11 @@ def _krawczyk_box(
     nj = jstart.size
     vl, vh = np.empty(nj), np.empty(nj)
     evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, lo, hi, vl, vh)
-    return _krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, vl, vh, lo, hi)
+    return krawczyk_jacobian(op, a, b, clo, chi, start, end, h, rows, cols, vl, vh, lo, hi)
 
 
 @njit(cache=True, fastmath=False)
-def _krawczyk_jacobian(
+def krawczyk_jacobian(
     op: np.ndarray,
     a: np.ndarray,
     b: np.ndarray,
@@ -307,8 +307,12 @@ def _krawczyk_jacobian(
     lo: np.ndarray,
     hi: np.ndarray,
 ) -> tuple[int, np.ndarray, np.ndarray]:
-    """:func:`_krawczyk_box` given the Jacobian's nonzero entries ``[vl, vh]`` over the box
-    (at ``rows, cols``), which the caller may use again."""
+    """Krawczyk test of the box ``[lo, hi]`` for the ``h`` equations that lead the tape
+    ``(op, a, b, clo, chi, start, end)``, given the Jacobian's nonzero entries ``[vl, vh]``
+    over the box (at ``rows, cols``), which the caller may use again: ``(status, lo', hi')``
+    with status 0 unknown (``[lo', hi']`` the contracted box), 1 a unique zero in the
+    Krawczyk image ``[lo', hi']``, 2 no zero in the box.  Compiled (:func:`_krawczyk_box` and
+    the branch-and-prune loop call it)."""
     n = lo.size
     nj = rows.size
     Jl, Jh, Jm = np.zeros((h, n)), np.zeros((h, n)), np.zeros((h, n))
@@ -324,7 +328,7 @@ def _krawczyk_jacobian(
     nodes = np.empty(op.size)
     nodeh = np.empty(op.size)
     fl, fh = np.empty(h), np.empty(h)
-    _forward(op, a, b, clo, chi, 0, end[h - 1], y, y, nodes, nodeh)  # the equations lead the tape
+    forward_kernel(op, a, b, clo, chi, 0, end[h - 1], y, y, nodes, nodeh)  # the equations lead the tape
     for c in range(h):
         fl[c], fh[c] = nodes[end[c] - 1], nodeh[end[c] - 1]
     kl, kh = _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)
@@ -425,7 +429,7 @@ def tube_kernel(
     if not ok:
         return 0
     nodes, nodeh = np.empty(end[g - 1]), np.empty(end[g - 1])
-    _forward(op, a, b, clo, chi, 0, end[g - 1], x, x, nodes, nodeh)  # the equations lead the tape
+    forward_kernel(op, a, b, clo, chi, 0, end[g - 1], x, x, nodes, nodeh)  # the equations lead the tape
     fl, fh = np.empty(g), np.empty(g)
     for c in range(g):
         fl[c], fh[c] = nodes[end[c] - 1], nodeh[end[c] - 1]
@@ -533,7 +537,7 @@ def inflate(system: System, x: npt.ArrayLike, delta: float = 1e-9, max_doublings
     best, d = 0.0, delta
     for _ in range(max_doublings):
         Jl, Jh = jacobian(system, x - d, x + d)
-        Sl, Sh = _precondition(C, Jl, Jh)
+        Sl, Sh = precondition(C, Jl, Jh)
         if not _diagonally_dominant(Sl, Sh):
             break
         best, d = d, 2.0 * d

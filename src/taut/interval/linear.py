@@ -29,8 +29,9 @@ from taut.interval.hc4 import evaluate_kernel
 
 
 @njit(cache=True, fastmath=False)
-def _precondition(C: np.ndarray, Jl: np.ndarray, Jh: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """``S = C·J`` for a float matrix ``C`` and an interval matrix ``J``."""
+def precondition(C: np.ndarray, Jl: np.ndarray, Jh: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``S = C·J`` for a float matrix ``C`` and an interval matrix ``J = [Jl, Jh]``, rounded
+    outwards: the enclosure ``[Sl, Sh]``.  Compiled."""
     h, n = C.shape[0], Jl.shape[1]
     Sl = np.zeros((h, n))
     Sh = np.zeros((h, n))
@@ -42,9 +43,9 @@ def _precondition(C: np.ndarray, Jl: np.ndarray, Jh: np.ndarray) -> tuple[np.nda
                 if c == 0.0 or (jl == 0.0 and jh == 0.0):
                     continue
                 if c > 0.0:  # point × interval: two rounded products instead of eight
-                    pl, ph = K._prod_down(c, jl), K._prod_up(c, jh)
+                    pl, ph = K.prod_down(c, jl), K.prod_up(c, jh)
                 else:
-                    pl, ph = K._prod_down(c, jh), K._prod_up(c, jl)
+                    pl, ph = K.prod_down(c, jh), K.prod_up(c, jl)
                 sl, sh = K.add(sl, sh, pl, ph)
             Sl[i, j], Sh[i, j] = sl, sh
     return Sl, Sh
@@ -106,8 +107,8 @@ def preconditioned_solve(
             return None
     if not np.all(np.isfinite(K_)):
         return None
-    Cl, Ch = _precondition(K_, Al, Ah)
-    rl, rh = _precondition(K_, bl[:, None], bh[:, None])
+    Cl, Ch = precondition(K_, Al, Ah)
+    rl, rh = precondition(K_, bl[:, None], bh[:, None])
     return interval_gauss(Cl, Ch, rl[:, 0], rh[:, 0])
 
 
@@ -220,11 +221,11 @@ def enclosure_kernel(
         for j in range(Kp.shape[1]):
             if not np.isfinite(Kp[i, j]):
                 return False, none, none
-    Cl, Ch = _precondition(Kp, Al, Ah)
+    Cl, Ch = precondition(Kp, Al, Ah)
     bl, bh = np.empty((r, 1)), np.empty((r, 1))
     for i in range(r):
         bl[i, 0], bh[i, 0] = vl[k + i], vh[k + i]
-    rl, rh = _precondition(Kp, bl, bh)
+    rl, rh = precondition(Kp, bl, bh)
     return _gauss(Cl, Ch, rl[:, 0].copy(), rh[:, 0].copy())
 
 

@@ -14,7 +14,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import PoseError, TautError, UnreachableLengthsError
-from taut.kinematics.inverse import _anchors
+from taut.kinematics.inverse import anchors_at
 from taut.kinematics.pose import as_poses
 from taut.model.robot import Robot
 
@@ -61,7 +61,7 @@ def forward_kinematics(
         lo[robot.wrench_dim :], hi[robot.wrench_dim :] = robot.joint_limits.T
 
     def residual(x: np.ndarray) -> np.ndarray:
-        b = _anchors(robot, x[None, :])[0]
+        b = anchors_at(robot, x[None, :])[0]
         return np.linalg.norm(robot.exits - b, axis=1) - L
 
     method = "trf" if robot.n_joints else "lm"

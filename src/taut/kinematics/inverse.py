@@ -24,6 +24,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import InfeasiblePoseError
+from taut.geometry.vectors import cross
 from taut.kinematics.pose import as_poses, body_frames, platform_frame
 from taut.model.robot import Robot
 
@@ -48,11 +49,14 @@ class IKResult:
 def anchor_points(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """Platform anchors ``b_i`` in the fixed frame, ``(N, n, d)`` (``(n, d)`` for one pose)."""
     arr, single = as_poses(robot, poses)
-    b = _anchors(robot, arr)
+    b = anchors_at(robot, arr)
     return b[0] if single else b
 
 
-def _anchors(robot: Robot, poses: np.ndarray) -> np.ndarray:
+def anchors_at(robot: Robot, poses: np.ndarray) -> np.ndarray:
+    """:func:`anchor_points` without the checks: ``poses`` is an ``(N, pose_size)`` array
+    already checked by :func:`~taut.kinematics.pose.as_poses` (solvers and samplers call it
+    on their own iterates, which may leave the joint limits); returns ``(N, n, d)``."""
     if robot.is_point_mass:
         return np.broadcast_to(poses[:, None, : robot.dimension], (poses.shape[0], robot.n_cables, robot.dimension))
     if robot.n_joints == 0:
@@ -61,19 +65,6 @@ def _anchors(robot: Robot, poses: np.ndarray) -> np.ndarray:
     pos, rot = body_frames(robot, poses)
     idx = robot.cable_bodies
     return pos[:, idx, :] + np.einsum("nkij,kj->nki", rot[:, idx], robot.anchors)
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    if a.shape[-1] == 2:
-        return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
-    return np.stack(
-        [
-            a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
-            a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
-            a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0],
-        ],
-        -1,
-    )
 
 
 def _zero_length(robot: Robot, lengths: np.ndarray) -> InfeasiblePoseError:
@@ -107,7 +98,7 @@ def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
         u = np.swapaxes(W[:, :d, :], 1, 2)
         b = robot.exits[None, :, :] - u * lengths[..., None]
     else:
-        b = _anchors(robot, arr)
+        b = anchors_at(robot, arr)
         v = robot.exits[None, :, :] - b
         lengths = np.sqrt(np.einsum("nki,nki->nk", v, v))
         if lengths.size and lengths.min() < MIN_LENGTH:
@@ -115,7 +106,7 @@ def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
         u = v / lengths[..., None]
         W = np.swapaxes(u, 1, 2)
         if not robot.is_point_mass:
-            m = _cross(b - arr[:, None, :d], u)
+            m = cross(b - arr[:, None, :d], u)
             m = m[..., None] if m.ndim == 2 else m
             W = np.concatenate([W, np.swapaxes(m, 1, 2)], axis=1)
     if single:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from functools import cache
 from importlib import resources
+from importlib.resources.abc import Traversable
 from typing import TYPE_CHECKING
 
 from taut.errors import RobotFileError
@@ -13,7 +14,7 @@ if TYPE_CHECKING:
     from taut.model.robot import Robot
 
 
-def _files():
+def _files() -> Traversable:
     return resources.files("taut") / "examples"
 
 

@@ -9,15 +9,17 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
+from typing import Any
 
 import yaml
 from pydantic import ValidationError
+from pydantic_core import ErrorDetails
 
 from taut.errors import RobotFileError
 from taut.model.robot import Robot
 
 
-def _field(loc: tuple) -> str:
+def _field(loc: tuple[int | str, ...]) -> str:
     out = ""
     for part in loc:
         if isinstance(part, int):
@@ -29,7 +31,7 @@ def _field(loc: tuple) -> str:
     return out or "(top level)"
 
 
-def _message(err: dict) -> str:
+def _message(err: ErrorDetails) -> str:
     kind, msg = err["type"], err["msg"]
     if kind == "extra_forbidden":
         return "unknown key (not part of the taut/1 format)"
@@ -63,7 +65,7 @@ def validation_message(source: str, exc: ValidationError) -> str:
     return "\n".join(lines)
 
 
-def robot_from_dict(data, source: str = "<robot>") -> Robot:
+def robot_from_dict(data: object, source: str = "<robot>") -> Robot:
     """Validate a parsed robot description."""
     if not isinstance(data, dict):
         raise RobotFileError(
@@ -113,9 +115,19 @@ def load_robot(spec: str | Path) -> Robot:
     return parse_robot(text, str(path), json_text=path.suffix.lower() == ".json")
 
 
-def robot_to_dict(robot: Robot) -> dict:
-    """The robot as plain data, without fields left at their defaults."""
-    return robot.model_dump(mode="python", exclude_defaults=True) | {"format": robot.format}
+def _plain(value: object) -> object:
+    """Tuples (the model's immutable sequences) as lists, which YAML and JSON write alike."""
+    if isinstance(value, (tuple, list)):
+        return [_plain(v) for v in value]
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items()}
+    return value
+
+
+def robot_to_dict(robot: Robot) -> dict[str, Any]:
+    """The robot as plain data (lists, dicts, numbers, strings), without fields left at their defaults."""
+    data = robot.model_dump(mode="python", exclude_defaults=True)
+    return {k: _plain(v) for k, v in data.items()} | {"format": robot.format}
 
 
 def save_robot(robot: Robot, path: str | Path) -> None:

@@ -20,24 +20,64 @@ References
 from __future__ import annotations
 
 import math
-from functools import cached_property
-from typing import Annotated, Literal
+from collections.abc import Callable, Mapping
+from typing import Annotated, Any, Literal, Self, TypeVar
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError, field_validator, model_validator
 
+from taut.errors import RobotFileError
 from taut.geometry.rotation import CONVENTIONS
 
-FORMAT = "taut/1"
+FORMAT: Literal["taut/1"] = "taut/1"
+
+#: Gravitational acceleration [m/s²] along the last axis (−y planar, −z spatial) when a
+#: platform has a mass but no ``gravity``.
+STANDARD_GRAVITY = 9.81
 
 Number = Annotated[float, Field(allow_inf_nan=True)]
 Finite = Annotated[float, Field(allow_inf_nan=False)]
 #: Coordinates [m]: beyond a million kilometres squares overflow, and no robot is that large.
 Coordinate = Annotated[float, Field(allow_inf_nan=False, ge=-1e9, le=1e9)]
 
+Derived = TypeVar("Derived", np.ndarray, tuple[np.ndarray, np.ndarray])
+
 
 class _Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=False, validate_assignment=False)
+    """Base of the description's models: unknown keys are errors and instances are immutable
+    (frozen, with tuples for sequences), so that arrays derived from them cannot go stale."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    def model_copy(self, *, update: Mapping[str, Any] | None = None, deep: bool = False) -> Self:
+        """A copy of this instance; with ``update``, a new instance validated from this one's
+        fields and the update (pydantic's own copy would take the update unchecked and keep
+        the arrays derived from the old fields).
+
+        Raises
+        ------
+        RobotFileError
+            If the updated fields do not validate.
+        """
+        if not update:
+            return super().model_copy(deep=deep)
+        fields = {name: getattr(self, name) for name in self.model_fields_set}
+        try:
+            return type(self).model_validate(fields | dict(update))
+        except ValidationError as exc:
+            from taut.model.io import validation_message
+
+            raise RobotFileError(validation_message(f"{type(self).__name__}.model_copy", exc)) from None
+
+
+class _DerivedArrays(dict[str, Any]):
+    """Arrays computed from a robot's fields on first use.  They are not part of the robot's
+    value: two robots with equal fields are equal whatever each has computed so far."""
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, _DerivedArrays)
+
+    __hash__ = None  # a mutable cache, like dict
 
 
 def _check_bounds(v: tuple[float, float], what: str) -> tuple[float, float]:
@@ -64,8 +104,8 @@ class Cable(_Strict):
     """Cable *i*: from the fixed exit point ``a_i`` to the anchor ``r_i`` on a platform body."""
 
     name: str | None = None
-    exit: list[Coordinate]
-    anchor: list[Coordinate] | None = None
+    exit: tuple[Coordinate, ...]
+    anchor: tuple[Coordinate, ...] | None = None
     body: str | None = None
     tension: tuple[Number, Number] = (0.0, math.inf)
     length: tuple[Number, Number] | None = None
@@ -75,12 +115,12 @@ class Cable(_Strict):
 
     @field_validator("tension")
     @classmethod
-    def _tension(cls, v):
+    def _tension(cls, v: tuple[float, float]) -> tuple[float, float]:
         return _check_bounds(v, "tension")
 
     @field_validator("length")
     @classmethod
-    def _length(cls, v):
+    def _length(cls, v: tuple[float, float] | None) -> tuple[float, float] | None:
         return None if v is None else _check_bounds(v, "length")
 
 
@@ -93,21 +133,21 @@ class Joint(_Strict):
     """
 
     kind: Literal["prismatic", "revolute"]
-    axis: list[Finite]
-    origin: list[Coordinate] | None = None
+    axis: tuple[Finite, ...]
+    origin: tuple[Coordinate, ...] | None = None
     limits: tuple[Finite, Finite]
     name: str | None = None
 
     @field_validator("axis")
     @classmethod
-    def _axis(cls, v):
+    def _axis(cls, v: tuple[float, ...]) -> tuple[float, ...]:
         if not any(abs(x) > 0 for x in v):
             raise ValueError("joint axis must be a non-zero vector")
         return v
 
     @field_validator("limits")
     @classmethod
-    def _limits(cls, v):
+    def _limits(cls, v: tuple[float, float]) -> tuple[float, float]:
         if v[0] > v[1]:
             raise ValueError(f"joint limits are inverted: lower {v[0]} > upper {v[1]}")
         return v
@@ -116,8 +156,8 @@ class Joint(_Strict):
 class Capsule(_Strict):
     """A segment swept by a sphere: the collision model of Lieskovský 2020, §2.3.2."""
 
-    a: list[Coordinate]
-    b: list[Coordinate]
+    a: tuple[Coordinate, ...]
+    b: tuple[Coordinate, ...]
     radius: Finite = Field(ge=0)
     name: str | None = None
 
@@ -128,14 +168,14 @@ class Body(_Strict):
     name: str
     parent: str = "platform"
     joint: Joint
-    capsules: list[Capsule] = []
+    capsules: tuple[Capsule, ...] = ()
 
 
 class Shape(_Strict):
     """Platform outline in its body frame: a polygon (planar) and/or capsules (collision)."""
 
-    polygon: list[list[Coordinate]] | None = None
-    capsules: list[Capsule] = []
+    polygon: tuple[tuple[Coordinate, ...], ...] | None = None
+    capsules: tuple[Capsule, ...] = ()
 
 
 class Platform(_Strict):
@@ -143,29 +183,29 @@ class Platform(_Strict):
     the weight ``mass·gravity``; both act at ``wrench_point`` (body frame)."""
 
     kind: Literal["rigid", "point-mass"] = "rigid"
-    wrench: list[Finite] | None = None
+    wrench: tuple[Finite, ...] | None = None
     mass: Finite | None = Field(default=None, gt=0)
-    gravity: list[Finite] | None = None
-    wrench_point: list[Coordinate] | None = None
+    gravity: tuple[Finite, ...] | None = None
+    wrench_point: tuple[Coordinate, ...] | None = None
     shape: Shape | None = None
-    bodies: list[Body] = []
+    bodies: tuple[Body, ...] = ()
 
 
 class Circle(_Strict):
     kind: Literal["circle"]
-    center: list[Coordinate]
+    center: tuple[Coordinate, ...]
     radius: Finite = Field(ge=0)
     name: str | None = None
 
 
 class Polygon(_Strict):
     kind: Literal["polygon"]
-    vertices: list[list[Coordinate]]
+    vertices: tuple[tuple[Coordinate, ...], ...]
     name: str | None = None
 
     @field_validator("vertices")
     @classmethod
-    def _vertices(cls, v):
+    def _vertices(cls, v: tuple[tuple[float, ...], ...]) -> tuple[tuple[float, ...], ...]:
         if len(v) < 3:
             raise ValueError(f"a polygon needs at least 3 vertices, got {len(v)}")
         return v
@@ -178,8 +218,8 @@ class Reference(_Strict):
     """Reference data quoted from a source document (cable lengths of a DGP table, ...)."""
 
     source: str | None = None
-    lengths: list[Finite] | None = None
-    poses: dict[str, list[Finite]] = {}
+    lengths: tuple[Finite, ...] | None = None
+    poses: dict[str, tuple[Finite, ...]] = {}
     notes: str | None = None
 
 
@@ -191,8 +231,8 @@ class Trajectory(_Strict):
     """
 
     description: str | None = None
-    waypoints: list[list[Finite]]
-    steps: list[int] | None = None
+    waypoints: tuple[tuple[Finite, ...], ...]
+    steps: tuple[int, ...] | None = None
     speed: Finite | None = Field(default=None, gt=0)
     dwell: Finite = Field(default=0.0, ge=0)
 
@@ -207,27 +247,29 @@ class Robot(_Strict):
     dimension: Literal[2, 3]
     orientation: str = "xyz-fixed"
     platform: Platform = Platform()
-    cables: list[Cable] = Field(min_length=1)
-    obstacles: list[Obstacle] = []
-    installation_space: list[list[Coordinate]] | None = None
-    disallowed: list[list[list[Coordinate]]] = []
+    cables: tuple[Cable, ...] = Field(min_length=1)
+    obstacles: tuple[Obstacle, ...] = ()
+    installation_space: tuple[tuple[Coordinate, ...], ...] | None = None
+    disallowed: tuple[tuple[tuple[Coordinate, ...], ...], ...] = ()
     reference: Reference | None = None
     trajectories: dict[str, Trajectory] = {}
 
+    _arrays: _DerivedArrays = PrivateAttr(default_factory=_DerivedArrays)
+
     @field_validator("orientation")
     @classmethod
-    def _orientation(cls, v):
+    def _orientation(cls, v: str) -> str:
         if v not in CONVENTIONS:
             raise ValueError(f"unknown orientation convention {v!r}; expected one of {', '.join(CONVENTIONS)}")
         return v
 
     @model_validator(mode="after")
-    def _consistent(self):
+    def _consistent(self) -> Self:
         d = self.dimension
         pm = self.platform.kind == "point-mass"
         bodies = {"platform"} | {b.name for b in self.platform.bodies}
 
-        def need(vec, n, where):
+        def need(vec: tuple[float, ...] | None, n: int, where: str) -> None:
             if vec is not None and len(vec) != n:
                 raise ValueError(f"{where}: expected {n} numbers, got {len(vec)}")
 
@@ -240,7 +282,7 @@ class Robot(_Strict):
                 )
             if c.body is not None and c.body not in bodies:
                 raise ValueError(f"cables[{i}].body: unknown body {c.body!r}; expected one of {sorted(bodies)}")
-        keys = {}
+        keys: dict[tuple[tuple[float, ...], tuple[float, ...], str], int] = {}
         for i, c in enumerate(self.cables, 1):
             key = (tuple(c.exit), tuple(c.anchor or [0.0] * d), c.body or "platform")
             if key in keys:
@@ -316,7 +358,7 @@ class Robot(_Strict):
     def pose_names(self) -> list[str]:
         pos = ["x", "y", "z"][: self.dimension]
         if self.is_point_mass:
-            ang = []
+            ang: list[str] = []
         elif self.dimension == 2:
             ang = ["theta"]
         elif self.orientation == "tilt-torsion":
@@ -325,33 +367,77 @@ class Robot(_Strict):
             ang = ["a", "b", "c"]
         return pos + ang + [b.joint.name or b.name for b in self.platform.bodies]
 
-    # ---- arrays (computed once per robot) -------------------------------------------
-    @cached_property
+    # ---- arrays (computed from the fields once per robot, read-only) -----------------
+    def _derived(self, name: str, build: Callable[[], Derived]) -> Derived:
+        value: Derived | None = self._arrays.get(name)
+        if value is None:
+            value = build()
+            self._arrays[name] = value
+        # Again on every use: a deep copy or an unpickled robot holds writeable copies.
+        for array in value if isinstance(value, tuple) else (value,):
+            array.setflags(write=False)
+        return value
+
+    @property
     def exits(self) -> np.ndarray:
         """Exit points ``a_i``, shape ``(n, d)``."""
-        return np.array([c.exit for c in self.cables], dtype=float)
+        return self._derived("exits", lambda: np.array([c.exit for c in self.cables], dtype=float))
 
-    @cached_property
+    @property
     def anchors(self) -> np.ndarray:
         """Anchors ``r_i`` in the frame of their body, shape ``(n, d)``."""
-        d = self.dimension
-        return np.array([c.anchor if c.anchor is not None else [0.0] * d for c in self.cables], dtype=float)
+        zero = (0.0,) * self.dimension
+        return self._derived("anchors", lambda: np.array([c.anchor or zero for c in self.cables], dtype=float))
 
-    @cached_property
+    @property
     def cable_bodies(self) -> np.ndarray:
         """Index of each cable's body: 0 for the platform, ``k`` for ``platform.bodies[k-1]``."""
         index = {"platform": 0} | {b.name: k for k, b in enumerate(self.platform.bodies, 1)}
-        return np.array([index[c.body or "platform"] for c in self.cables], dtype=int)
+        return self._derived("cable_bodies", lambda: np.array([index[c.body or "platform"] for c in self.cables]))
 
-    @cached_property
+    @property
     def tension_bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        t = np.array([c.tension for c in self.cables], dtype=float)
-        return t[:, 0], t[:, 1]
+        """Lower and upper tension bounds [N], each of shape ``(n,)``."""
 
-    @cached_property
+        def build() -> tuple[np.ndarray, np.ndarray]:
+            t = np.array([c.tension for c in self.cables], dtype=float)
+            return t[:, 0], t[:, 1]
+
+        return self._derived("tension_bounds", build)
+
+    @property
     def length_bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        t = np.array([c.length if c.length is not None else (0.0, math.inf) for c in self.cables], dtype=float)
-        return t[:, 0], t[:, 1]
+        """Lower and upper length bounds [m], each of shape ``(n,)`` (``0`` and ``inf`` when not given)."""
+
+        def build() -> tuple[np.ndarray, np.ndarray]:
+            t = np.array([c.length or (0.0, math.inf) for c in self.cables], dtype=float)
+            return t[:, 0], t[:, 1]
+
+        return self._derived("length_bounds", build)
+
+    @property
+    def joint_limits(self) -> np.ndarray:
+        """Limits of the joint coordinates, shape ``(n_joints, 2)``."""
+        return self._derived(
+            "joint_limits",
+            lambda: np.array([b.joint.limits for b in self.platform.bodies], dtype=float).reshape(-1, 2),
+        )
+
+    @property
+    def weight(self) -> np.ndarray:
+        """The platform's weight, the force ``mass·g`` [N] in the fixed frame, shape ``(d,)``:
+        ``g`` is ``platform.gravity``, by default ``STANDARD_GRAVITY`` = 9.81 m/s² downwards
+        along the last axis (``(0, −9.81)`` planar, ``(0, 0, −9.81)`` spatial); zero without a
+        ``platform.mass``."""
+
+        def build() -> np.ndarray:
+            plat, d = self.platform, self.dimension
+            if plat.mass is None:
+                return np.zeros(d)
+            g = np.array(plat.gravity, dtype=float) if plat.gravity is not None else -STANDARD_GRAVITY * np.eye(d)[-1]
+            return plat.mass * g
+
+        return self._derived("weight", build)
 
     @property
     def body_capsules(self) -> list[tuple[int, Capsule]]:
@@ -360,7 +446,3 @@ class Robot(_Strict):
         for k, body in enumerate(self.platform.bodies, 1):
             out += [(k, c) for c in body.capsules]
         return out
-
-    @cached_property
-    def joint_limits(self) -> np.ndarray:
-        return np.array([b.joint.limits for b in self.platform.bodies], dtype=float).reshape(-1, 2)

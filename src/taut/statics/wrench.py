@@ -28,7 +28,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TautError
-from taut.kinematics.inverse import _cross
+from taut.geometry.vectors import cross
 from taut.kinematics.pose import as_poses, platform_frame
 from taut.model.robot import Robot
 
@@ -38,19 +38,15 @@ def external_wrench(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     arr, single = as_poses(robot, poses)
     d, m = robot.dimension, robot.wrench_dim
     plat = robot.platform
-    force = np.zeros(d)
     wrench = np.zeros(m)
     if plat.wrench is not None:
         wrench += np.asarray(plat.wrench, float)
-    if plat.mass is not None:
-        g = np.asarray(plat.gravity, float) if plat.gravity is not None else -9.81 * np.eye(d)[d - 1]
-        force = plat.mass * g
-        wrench[:d] += force
+    wrench[:d] += robot.weight
     out = np.broadcast_to(wrench, (arr.shape[0], m)).copy()
     if not robot.is_point_mass and plat.wrench_point is not None:
         _, R = platform_frame(robot, arr)
         arm = R @ np.asarray(plat.wrench_point, float)
-        moment = _cross(arm, out[:, :d])
+        moment = cross(arm, out[:, :d])
         out[:, d:] += moment[:, None] if moment.ndim == 1 else moment
     return out[0] if single else out
 

@@ -55,7 +55,7 @@ def plot_equilibria(
     for k, s in enumerate(solutions):
         ax = fig.add_subplot(rows, cols, k + 1, projection="3d")
         draw_robot(robot, np.concatenate([s.position, s.orientation]), ax=ax)
-        taut = ",".join(map(str, s.taut))
+        taut = ",".join(str(i + 1) for i in s.taut)
         ax.set_title(f"#{k + 1}: cables {taut} taut, {'stable' if s.stable else 'unstable'}", fontsize=9)
     fig.tight_layout()
     return fig
@@ -82,7 +82,11 @@ def plot_tracking(path: Sequence[DGPSolution], fig: Figure | None = None) -> Fig
             for ax in (ax_p, ax_t):
                 ax.axvline(k[j], color="0.4", ls=":", lw=1)
             ax_t.annotate(
-                f"taut {','.join(map(str, path[j].taut))}", (k[j], ax_t.get_ylim()[1]), fontsize=8, va="top", ha="left"
+                f"taut {','.join(str(i + 1) for i in path[j].taut)}",
+                (k[j], ax_t.get_ylim()[1]),
+                fontsize=8,
+                va="top",
+                ha="left",
             )
     ax_p.set(xlabel="update", ylabel="platform position [m]")
     ax_t.set(xlabel="update", ylabel="tension")
@@ -106,7 +110,7 @@ def dgp_section(report: Report) -> None:
     res = solve_dgp(robot)
     rows: list[dict[str, object]] = []
     for k, s in enumerate(res.solutions):
-        row = {"#": k + 1, "taut": ",".join(map(str, s.taut))}
+        row = {"#": k + 1, "taut": ",".join(str(i + 1) for i in s.taut)}
         row.update(
             {n: round(float(v), 4) for n, v in zip(robot.pose_names, np.concatenate([s.position, s.orientation]))}
         )
@@ -129,7 +133,10 @@ def dgp_section(report: Report) -> None:
         sequence = lengths + np.linspace(0.0, 3.0, 301)[1:, None] * np.array([-1.0, 1.0, 0.0])
         path = track_path(robot, stable[0], sequence)
         figures.append((plot_tracking(path), "dgp-tracking.png", "tracking: cable 1 in, cable 2 out by 3 m"))
-        summary["tracking"] = {"updates": len(path), "taut_sets": sorted({",".join(map(str, s.taut)) for s in path})}
+        summary["tracking"] = {
+            "updates": len(path),
+            "taut_sets": sorted({",".join(str(i + 1) for i in s.taut) for s in path}),
+        }
     report.add_section(
         "Under-constrained robots: every equilibrium, then tracking",
         text=(

@@ -30,6 +30,7 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -261,7 +262,7 @@ def draw_scene_2d(robot: Robot, ax: Axes | None = None, *, labels: bool = True) 
     return ax
 
 
-def _floor(robot: Robot, region: list[list[float]]) -> np.ndarray:
+def _floor(robot: Robot, region: Sequence[Sequence[float]]) -> np.ndarray:
     """A region's points in 3-D: a 2-D footprint is drawn on the floor of the frame."""
     pts = np.asarray(region, float)
     if pts.shape[1] == 2:
@@ -269,7 +270,7 @@ def _floor(robot: Robot, region: list[list[float]]) -> np.ndarray:
     return pts[:, :3]
 
 
-def _sphere(center: list[float], radius: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _sphere(center: Sequence[float], radius: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Wireframe grid (x, y, z), each (9, 17), of a spherical obstacle."""
     c = np.asarray(center, float)
     u, v = np.meshgrid(np.linspace(0, 2 * np.pi, 17), np.linspace(0, np.pi, 9))

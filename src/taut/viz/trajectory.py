@@ -69,7 +69,7 @@ def plot_trajectory(robot: Robot, result: TrajectoryResult, snapshots: int = 3, 
     for i in range(L.shape[1]):
         ax.plot(t, L[:, i], color=cable_color(i), label=f"cable {i + 1}")
     for e in result.transitions:
-        i, j = e["cable"] - 1, e["sample"]
+        i, j = e["cable"], e["sample"]
         y = np.interp(e["time"], t[j - 1 : j + 1], L[j - 1 : j + 1, i])
         ax.plot(e["time"], y, "o", ms=7, mec="k", mfc="k" if e["kind"] == "wrap" else "none", zorder=5)
     ax.set_xlabel("time [s]")

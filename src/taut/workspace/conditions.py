@@ -116,9 +116,7 @@ def default_wrench_set(robot: Robot) -> BoxWrenchSet:
     force = np.zeros(d)
     if plat.wrench is not None:
         force += np.asarray(plat.wrench[:d], float)
-    if plat.mass is not None:
-        g = np.asarray(plat.gravity, float) if plat.gravity is not None else -9.81 * np.eye(d)[d - 1]
-        force += plat.mass * g
+    force += robot.weight
     F = float(np.linalg.norm(force))
     f = max(DEFAULT_FRACTION * F, MIN_FORCE)
     half = np.full(m, f)

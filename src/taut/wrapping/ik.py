@@ -113,7 +113,7 @@ class WrappedIK:
 
     def transitions(self, times: npt.ArrayLike | None = None) -> list[dict]:
         """Wraps and unwraps in time order: ``{"time", "sample", "cable", "kind", "object"}``
-        with 1-based cable and object numbers (``time`` interpolated within the step)."""
+        with 0-based cable and object indices (``time`` interpolated within the step)."""
         t = np.arange(len(self.poses), dtype=float) if times is None else np.asarray(times, float)
         out = []
         for i, ev in enumerate(self.events):
@@ -123,9 +123,9 @@ class WrappedIK:
                     {
                         "time": float(t[j - 1] + tau * (t[j] - t[j - 1])),
                         "sample": j,
-                        "cable": i + 1,
+                        "cable": i,
                         "kind": "wrap" if kind == 1 else "unwrap",
-                        "object": int(self.trees[i].I[node, OBJ]) + 1,
+                        "object": int(self.trees[i].I[node, OBJ]),
                     }
                 )
         return sorted(out, key=lambda e: (e["time"], e["cable"]))

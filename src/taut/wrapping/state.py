@@ -80,11 +80,6 @@ class CablePath:
     arcs: np.ndarray
     length: float
 
-    @property
-    def straight_length(self) -> float:
-        d = self.segments[:, 1] - self.segments[:, 0]
-        return float(np.hypot(d[:, 0], d[:, 1]).sum())
-
     def arc_points(self, k: int, n: int = 16) -> np.ndarray:
         """``n`` points along the ``k``-th arc (for drawing)."""
         cx, cy, r, t0, phi, d = self.arcs[k]

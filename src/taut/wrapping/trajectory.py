@@ -152,7 +152,7 @@ class TrajectoryResult:
     tensions: np.ndarray  #: ``(T, n)`` minimum-sum tensions (zeros where infeasible)
     feasible: np.ndarray  #: ``(T,)`` bool: a tension distribution exists
     controlled: np.ndarray  #: ``(T, n)`` bool: length-controlled cables
-    transitions: list  #: ``{"time", "sample", "cable", "kind", "object"}`` (1-based numbers)
+    transitions: list  #: ``{"time", "sample", "cable", "kind", "object"}`` (0-based cable and object indices)
 
     @property
     def lengths(self) -> np.ndarray:

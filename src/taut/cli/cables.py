@@ -1,0 +1,32 @@
+"""Cable numbers at the command line's boundary: users read and write 1-based cable numbers,
+the library takes and returns 0-based indices (``docs/conventions-cables.md``)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import Any
+
+from taut.errors import CableSetError
+
+#: Fields of the library's result dictionaries that hold cable indices.
+CABLE_FIELDS = ("taut", "slack", "length_violations")
+
+
+def cable_indices(numbers: Iterable[int], n_cables: int, option: str) -> list[int]:
+    """0-based indices of the 1-based cable ``numbers`` a user gave to ``option``; a number
+    outside ``1..n_cables`` raises :class:`~taut.errors.CableSetError` naming it."""
+    numbers = [int(k) for k in numbers]
+    bad = [k for k in numbers if not 1 <= k <= n_cables]
+    if bad:
+        raise CableSetError(f"{option}: no cable {', '.join(map(str, bad))}; the robot has cables 1..{n_cables}")
+    return [k - 1 for k in numbers]
+
+
+def cable_numbers(indices: Iterable[int]) -> list[int]:
+    """1-based cable numbers, for users, of 0-based cable ``indices``."""
+    return [int(i) + 1 for i in indices]
+
+
+def numbered(record: dict[str, Any]) -> dict[str, Any]:
+    """``record`` (a solution's ``as_dict()``) with its cable-index fields as 1-based numbers."""
+    return record | {k: cable_numbers(record[k]) for k in CABLE_FIELDS if k in record}
