@@ -1,5 +1,5 @@
 """Cable numbers at the command line's boundary: users read and write 1-based cable numbers,
-the library takes and returns 0-based indices (``docs/conventions-cables.md``)."""
+the library takes and returns 0-based indices (``docs/architecture.md`` §2.6)."""
 
 from __future__ import annotations
 
