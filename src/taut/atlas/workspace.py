@@ -15,6 +15,7 @@ both structures have the same exit points).  Charts never visited are pruned too
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -65,9 +66,16 @@ def _feasible(atlas: StructureAtlas, cond: WrenchCondition, chart: int, P: np.nd
     return out
 
 
-def atlas_workspace(atlas: StructureAtlas, condition="wrench-feasible", step: float | None = None) -> AtlasWorkspace:
+def atlas_workspace(
+    atlas: StructureAtlas,
+    condition: str | WrenchCondition = "wrench-feasible",
+    step: float | None = None,
+    progress: Callable[[int, int | None], None] | None = None,
+) -> AtlasWorkspace:
     """Alg. 5.2: the workspace under ``condition`` (a name or a
-    :class:`~taut.workspace.conditions.WrenchCondition`) and the pruned chart list."""
+    :class:`~taut.workspace.conditions.WrenchCondition`) and the pruned chart list.
+    ``progress(done, charts)`` is called as charts are decided (visited, or pruned
+    unvisited at the end)."""
     cond = make_condition(condition)
     if not isinstance(cond, WrenchCondition):
         raise TautError(
@@ -90,6 +98,8 @@ def atlas_workspace(atlas: StructureAtlas, condition="wrench-feasible", step: fl
         if c in visited:
             continue
         visited.add(c)
+        if progress is not None:
+            progress(len(visited), len(atlas.charts))
         dom = atlas.charts[c].domain
         inside = np.flatnonzero(shapely.contains_xy(dom, G[:, 0], G[:, 1]))
         ok = _feasible(atlas, cond, c, G[inside])
@@ -110,4 +120,6 @@ def atlas_workspace(atlas: StructureAtlas, condition="wrench-feasible", step: fl
                     queue.append(nb)
                     break
     pruned = [c for c in range(len(atlas.charts)) if c not in subs]
+    if progress is not None:
+        progress(len(atlas.charts), len(atlas.charts))
     return AtlasWorkspace(cond.name, float(step), G[in_ws], sorted(kept), pruned, subs)

@@ -4,7 +4,16 @@ an error."""
 
 from __future__ import annotations
 
+import argparse
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+import numpy as np
+
 from taut.errors import CableSetError, PoseError
+
+if TYPE_CHECKING:
+    from rich.console import Console
 
 HELP = """With the cables of --taut taut (m of them, 2 <= m <= 6) only m pose coordinates
 can be assigned: give them with --fix (names x, y, z and the robot's angle names, e.g.
@@ -36,7 +45,7 @@ def _assigned(text: str) -> dict[str, float]:
     return values
 
 
-def _box(text: str | None):
+def _box(text: str | None) -> tuple[np.ndarray, np.ndarray] | None:
     if text is None:
         return None
     from taut.cli import args as A
@@ -47,13 +56,15 @@ def _box(text: str | None):
     return v[:3], v[3:]
 
 
-def cmd_igp(ns) -> int:
+def cmd_igp(ns: argparse.Namespace) -> int:
     from taut.cli.main import console, emit, load
+    from taut.cli.progress import progress_bar, wanted
     from taut.dgp import solve_igp
 
     robot = load(ns.robot)
     cables = _cables(ns.taut)
-    res = solve_igp(robot, cables, _assigned(ns.fix), box=_box(ns.box), max_boxes=ns.max_boxes)
+    with progress_bar("igp (boxes)", wanted(ns.json)) as progress:
+        res = solve_igp(robot, cables, _assigned(ns.fix), box=_box(ns.box), max_boxes=ns.max_boxes, progress=progress)
     data = {
         "robot": robot.name,
         "taut": sorted(cables),
@@ -65,7 +76,7 @@ def cmd_igp(ns) -> int:
         "elapsed_s": res.elapsed_s,
     }
 
-    def tables(con, d):
+    def tables(con: Console, d: dict) -> None:
         from rich.table import Table
 
         free = [k for k, name in enumerate(robot.pose_names[:6]) if name not in res.assigned]
@@ -97,7 +108,7 @@ def cmd_igp(ns) -> int:
                     f"[yellow]solution {k}: cables {list(s.length_violations)} are outside their length bounds[/]"
                 )
 
-    def human(d):
+    def human(d: dict) -> None:
         con = console()
         fixed = ", ".join(f"{k}={v:.6g}" for k, v in res.assigned.items())
         con.print(
@@ -118,9 +129,7 @@ def cmd_igp(ns) -> int:
     return 0
 
 
-def register(command) -> None:
-    import argparse
-
+def register(command: Callable[..., argparse.ArgumentParser]) -> None:
     c = command("igp", "pose, tensions and lengths for chosen taut cables (inverse geometrico-static problem)", cmd_igp)
     c.description = HELP
     c.formatter_class = argparse.RawDescriptionHelpFormatter

@@ -52,10 +52,11 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.dgp.formulation import load
 from taut.dgp.stability import is_stable
@@ -65,6 +66,9 @@ from taut.interval.branch_prune import branch_and_prune
 from taut.interval.expression import ONE, ZERO, Expr, System, compile_system, compile_tape, const, variables
 from taut.interval.linear import LinearFilter
 from taut.model.robot import Robot
+
+#: Bound of the cosine and sine unknowns of the free angles, beyond their range [-1, 1].
+COS_SIN_BOUND = 1.25
 
 #: Alternative names of the angles of the ``xyz`` conventions (the thesis's ``φx, φy, φz``).
 ALIASES = {"phix": "a", "phiy": "b", "phiz": "c", "φx": "a", "φy": "b", "φz": "c"}
@@ -350,7 +354,10 @@ def _build(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo,
     lo, hi = np.empty(nv), np.empty(nv)
     np_ = len(free_pos)
     lo[:np_], hi[:np_] = pos_lo[free_pos], pos_hi[free_pos]
-    lo[np_ : nv - m], hi[np_ : nv - m] = -1.0, 1.0
+    # cos and sin lie in [-1, 1], but a solution at a multiple of π/2 (an angle of 0, a
+    # common one) has one of them on that bound, where no certified box fits in the domain:
+    # the circle c² + s² = 1 contracts them into [-1, 1] anyway
+    lo[np_ : nv - m], hi[np_ : nv - m] = -COS_SIN_BOUND, COS_SIN_BOUND
     half = _half_turn_restricted(robot.orientation, free_ang)
     if half is not None:
         lo[np_ + 2 * free_ang.index(half[0]) + half[1]] = 0.0
@@ -360,7 +367,14 @@ def _build(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo,
 
 
 def solve_igp(
-    robot: Robot, taut, assigned: dict, *, box=None, eps: float = 1e-7, max_boxes: int = 100_000
+    robot: Robot,
+    taut: Iterable[int],
+    assigned: Mapping[str, float],
+    *,
+    box: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
+    eps: float = 1e-7,
+    max_boxes: int = 100_000,
+    progress: Callable[[int, int | None], None] | None = None,
 ) -> IGPResult:
     """All certified solutions of the inverse geometrico-static problem (module docstring).
 
@@ -374,6 +388,8 @@ def solve_igp(
     boxes, a continuum of solutions (an assignment that does not fix the pose, e.g. ``x, y,
     φ`` of the Robocrane with cables 1, 3, 5 at ``x = y = 0``) would take them all, at about
     1 ms per box; what is left when it runs out is ``undecided`` and ``exhausted`` is set.
+    ``progress(boxes, None)`` is called as the boxes are processed (their number is not
+    known in advance) and ``progress(boxes, boxes)`` at the end.
     """
     _check_robot(robot)
     idx = _check_taut(robot, taut)
@@ -399,10 +415,13 @@ def solve_igp(
             filters=(pb.statics,),
             certify_width=0.5,
             max_boxes=max_boxes,
+            progress=progress,
         )
         solutions = [_solution(robot, idx, fixed, pb, c) for c in res.solutions]
         solutions.sort(key=lambda s: (not s.stable, *s.position, *s.orientation))
         undecided, boxes, exhausted = len(res.undecided), min(res.boxes, max_boxes), res.boxes > max_boxes
+    elif progress is not None:
+        progress(0, 0)
     return IGPResult(
         solutions,
         {names[k]: v for k, v in sorted(fixed.items())},

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import heapq
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -75,9 +76,13 @@ def plan_path(
     metric=None,
     max_charts: int = 20_000,
     spacing: float | None = None,
+    progress: Callable[[int, int | None], None] | None = None,
 ) -> PathResult:
     """A path on ``manifold`` from ``start`` to ``goal`` (both on it), or proof that the
-    connected component of ``start`` does not reach ``goal`` at resolution ``radius``."""
+    connected component of ``start`` does not reach ``goal`` at resolution ``radius``.
+
+    ``progress(expanded, None)`` is called as charts are expanded (how many the search
+    needs is not known in advance) and ``progress(expanded, expanded)`` when it stops."""
     t0 = time.perf_counter()
     start, goal = np.asarray(start, float), np.asarray(goal, float)
     if np.linalg.norm(manifold.function(goal)) > 1e-6 * (1 + np.linalg.norm(goal)):
@@ -102,6 +107,8 @@ def plan_path(
             break
         atlas.grow(i)
         expanded += 1
+        if progress is not None:
+            progress(expanded, None)
         for j, c in atlas.charts[i].neighbours.items():
             if j in done:
                 continue
@@ -110,6 +117,8 @@ def plan_path(
                 g[j], parent[j] = gj, i
                 heapq.heappush(heap, (gj + h(j), j))
     exhausted = found_at is None and not heap
+    if progress is not None:
+        progress(expanded, expanded)
     if found_at is None:
         return PathResult(
             False,
