@@ -332,3 +332,22 @@ def test_bad_solver_settings_raise():
         solve_igp(SUSPENDED, (1, 2), {"x": 1, "a": 0}, eps=0.0)
     with pytest.raises(TautError, match="max_boxes"):
         solve_igp(SUSPENDED, (1, 2), {"x": 1, "a": 0}, max_boxes=0)
+
+
+def test_progress_counts_boxes_up_to_the_budget():
+    calls = []
+    res = solve_igp(
+        ROBOCRANE,
+        (1, 3, 5),
+        {"x": 0, "y": 0, "phi": 2.8797932657906435},
+        max_boxes=2500,
+        progress=lambda done, total: calls.append((done, total)),
+    )
+    assert res.exhausted and res.boxes == 2500
+    assert calls == [(1000, None), (2000, None), (2500, 2500)]
+    calls.clear()
+    res = solve_igp(
+        PROTOTYPE, (1, 2, 4, 6), {"x": 0.346, "y": 0.453, "z": 0.066, "a": -0.003}, progress=lambda *c: calls.append(c)
+    )
+    assert res.complete and calls[-1] == (res.boxes, res.boxes)
+    assert all(t is None for _, t in calls[:-1]) and [d for d, _ in calls] == sorted({d for d, _ in calls})

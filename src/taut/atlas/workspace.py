@@ -120,6 +120,6 @@ def atlas_workspace(
                     queue.append(nb)
                     break
     pruned = [c for c in range(len(atlas.charts)) if c not in subs]
-    if progress is not None:
+    if progress is not None and len(visited) < len(atlas.charts):  # the rest: pruned unvisited
         progress(len(atlas.charts), len(atlas.charts))
     return AtlasWorkspace(cond.name, float(step), G[in_ws], sorted(kept), pruned, subs)

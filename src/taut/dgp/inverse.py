@@ -415,7 +415,7 @@ def solve_igp(
             filters=(pb.statics,),
             certify_width=0.5,
             max_boxes=max_boxes,
-            progress=progress,
+            progress=None if progress is None else _within_budget(progress, int(max_boxes)),
         )
         solutions = [_solution(robot, idx, fixed, pb, c) for c in res.solutions]
         solutions.sort(key=lambda s: (not s.stable, *s.position, *s.orientation))
@@ -430,6 +430,16 @@ def solve_igp(
         exhausted,
         time.perf_counter() - t0,
     )
+
+
+def _within_budget(progress: Callable[[int, int | None], None], budget: int) -> Callable[[int, int | None], None]:
+    """``progress`` with box counts capped at the budget: when it runs out the solver has
+    counted the one box it did not process, which the result does not count."""
+
+    def report(done: int, total: int | None) -> None:
+        progress(min(done, budget), None if total is None else min(total, budget))
+
+    return report
 
 
 def _solution(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pb: _Problem, cert) -> IGPSolution:
