@@ -22,13 +22,14 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from taut.dgp.formulation import build_subproblem, load
+from taut.dgp.formulation import Subproblem, build_subproblem, load
 from taut.dgp.single_cable import single_cable_equilibria
 from taut.dgp.stability import is_stable
 from taut.errors import TautError
 from taut.geometry.rotation import angles_from_matrix
-from taut.interval.branch_prune import bisect, branch_and_prune, same_solution
+from taut.interval.branch_prune import Box, bisect, branch_and_prune, same_solution
 from taut.interval.hc4 import contract
+from taut.interval.krawczyk import Certificate
 from taut.model.robot import Robot
 from taut.parallel import Executor, as_executor
 
@@ -84,7 +85,7 @@ def solution_key(solution: DGPSolution) -> tuple:
     return (solution.taut, *solution.position.tolist(), *solution.orientation.tolist())
 
 
-def check_lengths(robot: Robot, lengths) -> np.ndarray:
+def check_lengths(robot: Robot, lengths: npt.ArrayLike) -> np.ndarray:
     arr = np.asarray(lengths, dtype=float).ravel()
     if arr.size != robot.n_cables:
         raise TautError(f"{robot.name} has {robot.n_cables} cables, got {arr.size} lengths")
@@ -95,7 +96,7 @@ def check_lengths(robot: Robot, lengths) -> np.ndarray:
     return arr
 
 
-def _pieces(sp, split: int) -> list[tuple[np.ndarray, np.ndarray]]:
+def _pieces(sp: Subproblem, split: int) -> list[Box]:
     """The sub-problem's domain cut into up to ``2**split`` pieces that may hold solutions:
     breadth first, the widest piece is contracted (HC4, statics filter) and halved across
     its widest pose variable, empty pieces dropped — most of the initial box is empty, and
@@ -133,11 +134,11 @@ def certify_width(m: int) -> float:
 #: Per process, the sub-problems last built and their pieces, keyed by the job's data:
 #: a worker running several pieces of one sub-problem builds it once (a build takes
 #: ~20 ms, as long as solving many pieces).
-_PREPARED: dict = {}
+_PREPARED: dict[tuple[str, bytes, tuple[int, ...], int], tuple[Subproblem, list[Box]]] = {}
 _PREPARED_SIZE = 8
 
 
-def _prepared(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: int):
+def _prepared(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: int) -> tuple[Subproblem, list[Box]]:
     key = (robot.model_dump_json(), lengths.tobytes(), taut, split)
     hit = _PREPARED.get(key)
     if hit is None:
@@ -149,7 +150,11 @@ def _prepared(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: i
     return hit
 
 
-def _solve_piece(job):
+#: A job of :func:`solve_dgp`: robot, lengths, taut cables (0-based), eps, split, piece.
+Job = tuple[Robot, np.ndarray, tuple[int, ...], float, int, int]
+
+
+def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], int, int]:
     """One job of :func:`solve_dgp`: the sub-problem of ``taut`` on piece ``k`` of
     ``pieces`` of its domain.  Returns ``(solutions, certificates, undecided, boxes)``."""
     robot, lengths, taut, eps, split, k = job
@@ -196,7 +201,7 @@ def _solve_piece(job):
     )
     idx = list(taut)
     undecided = len(res.undecided)
-    certs = []
+    certs: list[Certificate | None] = []
     for c in res.solutions:
         if not sp.tension_unknowns:
             # the sign of the tensions over the certified box: all positive, or the
@@ -217,7 +222,7 @@ def _solve_piece(job):
     return out, certs, undecided, res.boxes
 
 
-def _solve_subset(job) -> tuple[list[DGPSolution], int, int]:
+def _solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple[list[DGPSolution], int, int]:
     """The whole sub-problem of ``taut``: ``(solutions, undecided boxes, boxes)``."""
     robot, lengths, taut, eps = job
     sols, _, undecided, boxes = _solve_piece((robot, lengths, taut, eps, 0, 0))

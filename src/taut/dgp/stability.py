@@ -46,14 +46,14 @@ def reduced_hessian(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray
 
 
 @njit(cache=True)
-def _smallest_eigenvalue(a, b, g, tau, rho) -> float:
+def _smallest_eigenvalue(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray, rho: np.ndarray) -> float:
     Hr = reduced_hessian(a, b, g, tau, rho)
     if Hr.size == 0:
         return np.inf
     return np.linalg.eigvalsh(0.5 * (Hr + Hr.T))[0]
 
 
-def is_stable(a, b, g, tau, rho) -> bool:
+def is_stable(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray, rho: np.ndarray) -> bool:
     """Positive-definite reduced Hessian (sufficient condition of §3.2.2); a fully
     constrained equilibrium (empty null space) is stable."""
     return bool(_smallest_eigenvalue(*(np.ascontiguousarray(v, dtype=float) for v in (a, b, g, tau, rho))) > 0.0)
