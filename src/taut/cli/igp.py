@@ -42,7 +42,7 @@ def _assigned(text: str) -> dict[str, float]:
     bare = [name for name, v in values.items() if v is None]
     if bare:
         raise PoseError(f"--fix: give a value to {', '.join(bare)} (e.g. {bare[0]}=0.1)")
-    return values
+    return {name: v for name, v in values.items() if v is not None}
 
 
 def _box(text: str | None) -> tuple[np.ndarray, np.ndarray] | None:
