@@ -130,9 +130,11 @@ def bisect(
     mask = np.ones(lo.size, bool) if primary is None else np.asarray(primary, bool)
     weights = np.zeros(lo.size) if score is None else np.asarray(score, float)
     j = _bisect_index(hi - lo, mask, float(eps), weights)
-    m = 0.5 * lo[j] + 0.5 * hi[j]
-    if not np.isfinite(m):  # unbounded variable: split at a finite point
-        m = max(2.0 * lo[j], 1.0) if np.isfinite(lo[j]) else (min(2.0 * hi[j], -1.0) if np.isfinite(hi[j]) else 0.0)
+    a, b = float(lo[j]), float(hi[j])
+    if np.isfinite(a) and np.isfinite(b):
+        m = 0.5 * a + 0.5 * b
+    else:  # unbounded variable: split at a finite point
+        m = max(2.0 * a, 1.0) if np.isfinite(a) else (min(2.0 * b, -1.0) if np.isfinite(b) else 0.0)
     a_hi, b_lo = hi.copy(), lo.copy()
     a_hi[j] = b_lo[j] = m
     return (lo, a_hi), (b_lo, hi)
