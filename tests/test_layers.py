@@ -58,10 +58,6 @@ def test_no_upward_import(path):
     assert not upward, f"{path.relative_to(SRC)} (layer {own}) imports {upward}"
 
 
-#: Private names a module still takes from another; dgp/solve.py's two go with the dgp helper's branch.
-KNOWN_PRIVATE_IMPORTS = {"dgp/solve.py": {"_bisect_index", "_split"}}
-
-
 def _is_module(dotted: str) -> bool:
     path = SRC.parent.joinpath(*dotted.split("."))
     return path.with_suffix(".py").exists() or (path / "__init__.py").exists()
@@ -103,8 +99,7 @@ def _private_uses(own: str, source: str):
 
 @pytest.mark.parametrize("path", FILES, ids=[str(p.relative_to(SRC)) for p in FILES])
 def test_no_private_name_across_modules(path):
-    allowed = KNOWN_PRIVATE_IMPORTS.get(str(path.relative_to(SRC)), set())
-    used = sorted({f"{m}.{n}" for m, n in _private_uses(_module_name(path), path.read_text()) if n not in allowed})
+    used = sorted({f"{m}.{n}" for m, n in _private_uses(_module_name(path), path.read_text())})
     assert not used, f"{path.relative_to(SRC)} uses private names of other modules: {used}"
 
 

@@ -124,3 +124,58 @@ def test_dask_local_cluster_gives_identical_results():
             assert client.status == "running"
             direct = evaluate_workspace(SPATIAL, "static", resolution=9, executor=client, chunk=250)
             assert np.array_equal(direct.inside, ref["spatial"].inside)
+
+
+SUSPENDED = taut.example("suspended-3cable")
+
+
+def _poses(res):
+    return np.array([np.r_[s.position, s.orientation, s.tensions] for s in res.solutions])
+
+
+def _assert_table_4_3(res):
+    """Table 4.3 of Berti's thesis: six equilibria, all with the three cables taut, each at the
+    reference lengths (independent inverse kinematics)."""
+    from taut.kinematics import inverse_kinematics
+
+    assert res.complete and len(res.solutions) == 6 and {s.taut for s in res.solutions} == {(0, 1, 2)}
+    for s in res.solutions:
+        lengths = inverse_kinematics(SUSPENDED, np.r_[s.position, s.orientation]).lengths
+        assert np.allclose(lengths, SUSPENDED.reference.lengths, atol=1e-9)
+
+
+def test_dgp_serial_processes_and_dask_agree_bitwise():
+    """solve_dgp takes the executors evaluate_workspace takes; the solution lists are the same
+    to the bit and in the same order (canonical: taut set, then pose)."""
+    distributed = pytest.importorskip("distributed")
+    from taut.dgp import solve_dgp
+
+    calls = []
+    serial = solve_dgp(SUSPENDED, progress=lambda d, t: calls.append((d, t)))
+    _assert_table_4_3(serial)
+    keys = [(s.taut, *s.position, *s.orientation) for s in serial.solutions]
+    assert keys == sorted(keys)
+    total = calls[-1][1]
+    assert calls[0] == (0, total) and calls[-1] == (total, total) and total > serial.subproblems
+    assert [d for d, _ in calls] == list(range(total + 1)) and {t for _, t in calls} == {total}
+    with get_executor(workers=2) as ex:
+        processes = solve_dgp(SUSPENDED, executor=ex)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        with distributed.Client(cluster) as client:
+            on_dask = [
+                solve_dgp(SUSPENDED, executor=client),  # a client as is, as evaluate_workspace takes it
+                solve_dgp(SUSPENDED, executor=get_executor(scheduler=client)),
+            ]
+            assert client.status == "running"  # not closed by solve_dgp
+    for res in (processes, *on_dask):
+        assert [s.taut for s in res.solutions] == [s.taut for s in serial.solutions]
+        assert np.array_equal(_poses(res), _poses(serial))
+        assert [s.stable for s in res.solutions] == [s.stable for s in serial.solutions]
+        assert (res.subproblems, res.boxes, res.undecided) == (serial.subproblems, serial.boxes, 0)
+
+
+def test_dgp_refuses_what_is_not_an_executor():
+    from taut.dgp import solve_dgp
+
+    with pytest.raises(TautError, match="executor"):
+        solve_dgp(SUSPENDED, max_taut=1, executor=4)

@@ -98,3 +98,16 @@ def test_bad_input():
     atlas = build_atlas(example("vscr-agriculture"), [0.0, 0.991])
     with pytest.raises(TautError):
         atlas_workspace(atlas, "interference-free")
+
+
+def test_progress_counts_charts_expanded_then_charts_decided():
+    robot = example("vscr-single-cable")
+    calls = []
+    atlas = build_atlas(robot, [0.0, 2.0], progress=lambda done, total: calls.append((done, total)))
+    n = len(atlas.charts)
+    assert n > 1 and calls == [(k, None) for k in range(1, n + 1)] + [(n, n)]
+    calls.clear()
+    ws = atlas_workspace(atlas, "static", step=0.5, progress=lambda done, total: calls.append((done, total)))
+    done = [d for d, _ in calls]
+    assert {t for _, t in calls} == {n} and done == sorted(set(done)) and calls[-1] == (n, n)
+    assert len(calls) >= len(ws.charts)  # every chart kept was visited

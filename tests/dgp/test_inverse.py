@@ -248,13 +248,38 @@ def test_six_taut_cables_match_the_linear_solve(dx, dy, dz, dc):
         assert res.solutions == []
 
 
+def with_wrench(robot: Robot, wrench: np.ndarray) -> Robot:
+    """``robot`` with the constant external wrench ``wrench`` (about the platform origin)."""
+    data = robot.model_dump()
+    data["platform"].update(wrench=[float(w) for w in wrench], wrench_point=None, mass=None)
+    return Robot.model_validate(data)
+
+
 @settings(max_examples=15, deadline=None)
-@given(st.floats(0.30, 0.40), st.floats(0.40, 0.50), st.floats(0.05, 0.2))
-def test_five_taut_cables_every_solution_is_an_admissible_equilibrium(x, y, z):
+@given(
+    st.tuples(st.floats(0.30, 0.40), st.floats(0.40, 0.50), st.floats(0.05, 0.2)),
+    st.tuples(*[st.floats(-0.3, 0.3)] * 3),
+    st.tuples(*[st.floats(0.05, 0.5)] * 5),
+)
+def test_five_taut_cables_find_the_equilibrium_they_were_built_from(position, angles, tensions):
+    """A pose of the prototype made an equilibrium with five taut cables by choosing the
+    external wrench ``−W τ`` (independent structure matrix): assigning five of its
+    coordinates, the search is complete and finds it, with its tensions; every solution
+    is an admissible equilibrium."""
     taut = (0, 1, 2, 3, 5)
-    res = solve_igp(PROTOTYPE, taut, {"x": x, "y": y, "z": z, "a": -2.420, "b": 0.406})
+    pose = np.array([*position, *angles])
+    tau = np.zeros(PROTOTYPE.n_cables)
+    tau[list(taut)] = tensions
+    robot = with_wrench(PROTOTYPE, -inverse_kinematics(PROTOTYPE, pose).structure_matrix @ tau)
+    assert np.allclose(inverse_kinematics(robot, pose).structure_matrix @ tau + external_wrench(robot, pose), 0)
+    res = solve_igp(robot, taut, dict(zip(("x", "y", "z", "a", "b"), pose[:5])))
+    assert res.complete and not res.exhausted and res.undecided == 0
+    assert len(res.solutions) >= 1
     for s in res.solutions:
-        check_solution(PROTOTYPE, s, taut)
+        check_solution(robot, s, taut)
+    found = [s for s in res.solutions if abs(s.orientation[2] - pose[5]) < 1e-9]
+    assert len(found) == 1
+    assert np.array_equal(found[0].position, pose[:3]) and np.allclose(found[0].tensions, tau, atol=1e-9)
 
 
 POINT_MASS = Robot.model_validate(
@@ -307,3 +332,22 @@ def test_bad_solver_settings_raise():
         solve_igp(SUSPENDED, (0, 1), {"x": 1, "a": 0}, eps=0.0)
     with pytest.raises(TautError, match="max_boxes"):
         solve_igp(SUSPENDED, (0, 1), {"x": 1, "a": 0}, max_boxes=0)
+
+
+def test_progress_counts_boxes_up_to_the_budget():
+    calls = []
+    res = solve_igp(
+        ROBOCRANE,
+        (0, 2, 4),
+        {"x": 0, "y": 0, "phi": 2.8797932657906435},
+        max_boxes=2500,
+        progress=lambda done, total: calls.append((done, total)),
+    )
+    assert res.exhausted and res.boxes == 2500
+    assert calls == [(1000, None), (2000, None), (2500, 2500)]
+    calls.clear()
+    res = solve_igp(
+        PROTOTYPE, (0, 1, 3, 5), {"x": 0.346, "y": 0.453, "z": 0.066, "a": -0.003}, progress=lambda *c: calls.append(c)
+    )
+    assert res.complete and calls[-1] == (res.boxes, res.boxes)
+    assert all(t is None for _, t in calls[:-1]) and [d for d, _ in calls] == sorted({d for d, _ in calls})

@@ -57,7 +57,7 @@ def test_no_equilibrium_with_one_or_two_taut_cables():
 @pytest.mark.slow
 @pytest.mark.parametrize("workers, split", [(1, 0), (2, None), (1, 3)])
 def test_table_4_3_complete_solution_set(workers, split):
-    with get_executor(workers=workers) as ex:  # workers=2: the 3-taut domain in 8 pieces
+    with get_executor(workers=workers) as ex:  # split None: the 3-taut domain in 2**SPLIT pieces
         res = solve_dgp(ROBOT, executor=ex, split=split)
     assert res.subproblems == 7 and res.undecided == 0
     assert len(res.solutions) == 6 and all(s.taut == (0, 1, 2) for s in res.solutions)

@@ -113,3 +113,10 @@ def test_boxed_component_gives_no_path_with_exhaustion():
 def test_start_off_manifold_is_rejected():
     with pytest.raises(TautError):
         Atlas(SPHERE, [0, 0, 2.0], 0.2)
+
+
+def test_progress_counts_the_charts_expanded():
+    calls = []
+    res = plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], 0.2, progress=lambda done, total: calls.append((done, total)))
+    assert res.found and res.expanded > 1
+    assert calls == [(k, None) for k in range(1, res.expanded + 1)] + [(res.expanded, res.expanded)]

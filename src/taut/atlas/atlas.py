@@ -38,7 +38,7 @@ References
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -188,11 +188,14 @@ def build_atlas(
     arc_step: float = ARC_STEP,
     max_charts: int = MAX_CHARTS,
     theta: float = 0.0,
+    progress: Callable[[int, int | None], None] | None = None,
 ) -> StructureAtlas:
     """The structure atlas of a planar VSCR from the start point ``start`` (Alg. 5.1) —
     for a rigid platform the page of orientation ``theta`` (§5.2.2), ``start`` being the
     platform reference point.  ``initial`` maps a 0-based cable index to its starting
     state (see :func:`taut.wrapping.ik.wrapped_inverse_kinematics`).
+    ``progress(expanded, None)`` is called as charts are expanded (how many there are is
+    not known in advance) and ``progress(charts, charts)`` at the end.
 
     References
     ----------
@@ -235,9 +238,13 @@ def build_atlas(
     charts = [Chart(0, nodes0, q0, p0, _states(ik.trees, nodes0))]
     edges: list[Edge] = []
     stack = [0]
+    expanded = 0
     while stack:
         ci = stack.pop()
         C = charts[ci]
+        expanded += 1
+        if progress is not None:
+            progress(expanded, None)
         for i, new, ray_node, side, kind, obj in b.transitions(C.nodes):
             tree = b.trees[i]
             e = tree.F[ray_node, [EX, EY]] - b.offsets[i]
@@ -257,6 +264,8 @@ def build_atlas(
                 if target is not None and target != ci:
                     edges.append(Edge((ci, target), i, kind, obj, seg, nrm))
                     C.neighbours.setdefault(target, []).append(len(edges) - 1)
+    if progress is not None:
+        progress(expanded, expanded)
     return StructureAtlas(robot, b.trees, space, charts, edges, p0, theta, offsets)
 
 

@@ -20,6 +20,7 @@ References
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -74,9 +75,12 @@ def atlas_workspace(
     atlas: StructureAtlas,
     condition: str | WorkspaceCondition | type[WorkspaceCondition] = "wrench-feasible",
     step: float | None = None,
+    progress: Callable[[int, int | None], None] | None = None,
 ) -> AtlasWorkspace:
     """Alg. 5.2: the workspace under ``condition`` (a name or a
     :class:`~taut.workspace.conditions.WrenchCondition`) and the pruned chart list.
+    ``progress(done, charts)`` is called as charts are decided (visited, or pruned
+    unvisited at the end).
 
     References
     ----------
@@ -105,6 +109,8 @@ def atlas_workspace(
         if c in visited:
             continue
         visited.add(c)
+        if progress is not None:
+            progress(len(visited), len(atlas.charts))
         dom = atlas.charts[c].domain
         inside = np.flatnonzero(shapely.contains_xy(dom, G[:, 0], G[:, 1]))
         ok = _feasible(atlas, cond, c, G[inside])
@@ -125,4 +131,6 @@ def atlas_workspace(
                     queue.append(nb)
                     break
     pruned = [c for c in range(len(atlas.charts)) if c not in subs]
+    if progress is not None and len(visited) < len(atlas.charts):  # the rest: pruned unvisited
+        progress(len(atlas.charts), len(atlas.charts))
     return AtlasWorkspace(cond.name, float(step), G[in_ws], sorted(kept), pruned, subs)

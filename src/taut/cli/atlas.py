@@ -45,12 +45,13 @@ def _chart_json(atlas, c) -> dict:
     }
 
 
-def cmd_atlas(ns) -> int:
+def cmd_atlas(ns: argparse.Namespace) -> int:
     import time
 
     from taut.atlas import atlas_workspace, build_atlas
     from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
+    from taut.cli.progress import progress_bar, wanted
     from taut.wrapping.state import contacts_text
 
     robot = load(ns.robot)
@@ -71,8 +72,10 @@ def cmd_atlas(ns) -> int:
     if ns.theta is None and not robot.is_point_mass and ref is not None and ref.size == 3:
         theta = float(ref[2])
     t0 = time.perf_counter()
-    atlas = build_atlas(robot, start, theta=theta)
-    ws = atlas_workspace(atlas, ns.condition)
+    with progress_bar("atlas (charts expanded)", wanted(ns.json)) as progress:
+        atlas = build_atlas(robot, start, theta=theta, progress=progress)
+    with progress_bar("workspace (charts)", wanted(ns.json)) as progress:
+        ws = atlas_workspace(atlas, ns.condition, progress=progress)
     data = {
         "robot": robot.name,
         "start": start.tolist(),
@@ -107,7 +110,7 @@ def cmd_atlas(ns) -> int:
 
         save_figure(plot_atlas(atlas, ws), ns.plot, data)
 
-    def human(d):
+    def human(d: dict) -> None:
         con = console()
         page = "" if robot.is_point_mass else f" (page θ = {d['theta']:.6g} rad)"
         con.print(

@@ -5,13 +5,17 @@ used.  No equilibrium is an empty list, not an error."""
 
 from __future__ import annotations
 
+import argparse
+from collections.abc import Callable
+
 from taut.cli import args as A
 from taut.cli.cables import cable_numbers, numbered
 from taut.cli.main import console, emit, load, save_figure
+from taut.cli.progress import progress_bar, wanted
 from taut.errors import TautError
 
 
-def cmd_fk(ns) -> int:
+def cmd_fk(ns: argparse.Namespace) -> int:
     from taut.dgp import solve_dgp
     from taut.parallel import get_executor
 
@@ -19,8 +23,11 @@ def cmd_fk(ns) -> int:
     lengths = A.vector(ns.lengths, "--lengths") if ns.lengths else None
     if ns.max_taut is not None and ns.max_taut < 1:
         raise TautError(f"--max-taut must be at least 1, got {ns.max_taut}")
-    with get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor:
-        res = solve_dgp(robot, lengths, max_taut=ns.max_taut, executor=executor)
+    with (
+        get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor,
+        progress_bar("fk", wanted(ns.json)) as progress,
+    ):
+        res = solve_dgp(robot, lengths, max_taut=ns.max_taut, executor=executor, progress=progress)
     data = {
         "robot": robot.name,
         "solutions": [numbered(s.as_dict()) for s in res.solutions],
@@ -33,16 +40,16 @@ def cmd_fk(ns) -> int:
 
         save_figure(plot_equilibria(robot, res.solutions), ns.plot, data)
 
-    def human(d):
+    def human(d: dict) -> None:
         from rich.table import Table
 
         con = console()
-        # a row is 7 pose values and n tensions of 7 characters: never squeeze it into "…"
+        # a row is the taut set, 6 pose values and n tensions of 7 characters: never squeeze it into "…"
         con.width = max(con.width, 20 + 10 * (7 + robot.n_cables))
         t = Table(
             title=f"{robot.name}: {len(res.solutions)} equilibria ({res.subproblems} sub-problems, {res.elapsed_s:.2f} s)"
         )
-        for h in ("taut", "x", "y", "z", "a", "b", "c", *(f"τ{i + 1}" for i in range(robot.n_cables)), "stable"):
+        for h in ("taut", *robot.pose_names, *(f"τ{i + 1}" for i in range(robot.n_cables)), "stable"):
             t.add_column(h, justify="right")
         for s in res.solutions:
             t.add_row(
@@ -60,7 +67,7 @@ def cmd_fk(ns) -> int:
     return 0
 
 
-def register(command) -> None:
+def register(command: Callable[..., argparse.ArgumentParser]) -> None:
     c = command("fk", "all equilibria for given cable lengths (direct geometrico-static problem)", cmd_fk)
     c.add_argument("--lengths", help="cable lengths L1,...,Ln (default: the robot's reference lengths)")
     c.add_argument(

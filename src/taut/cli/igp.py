@@ -11,7 +11,16 @@ References
 
 from __future__ import annotations
 
+import argparse
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+import numpy as np
+
 from taut.errors import CableSetError, PoseError
+
+if TYPE_CHECKING:
+    from rich.console import Console
 
 HELP = """With the cables of --taut taut (m of them, 2 <= m <= 6) only m pose coordinates
 can be assigned: give them with --fix (names x, y, z and the robot's angle names, e.g.
@@ -40,10 +49,10 @@ def _assigned(text: str) -> dict[str, float]:
     bare = [name for name, v in values.items() if v is None]
     if bare:
         raise PoseError(f"--fix: give a value to {', '.join(bare)} (e.g. {bare[0]}=0.1)")
-    return values
+    return {name: v for name, v in values.items() if v is not None}
 
 
-def _box(text: str | None):
+def _box(text: str | None) -> tuple[np.ndarray, np.ndarray] | None:
     if text is None:
         return None
     from taut.cli import args as A
@@ -54,20 +63,23 @@ def _box(text: str | None):
     return v[:3], v[3:]
 
 
-def cmd_igp(ns) -> int:
+def cmd_igp(ns: argparse.Namespace) -> int:
     from taut.cli.cables import cable_indices, cable_numbers, numbered
     from taut.cli.main import console, emit, load
+    from taut.cli.progress import progress_bar, wanted
     from taut.dgp import solve_igp
 
     robot = load(ns.robot)
     cables = _cables(ns.taut)
-    res = solve_igp(
-        robot,
-        cable_indices(cables, robot.n_cables, "--taut"),
-        _assigned(ns.fix),
-        box=_box(ns.box),
-        max_boxes=ns.max_boxes,
-    )
+    with progress_bar("igp (boxes)", wanted(ns.json)) as progress:
+        res = solve_igp(
+            robot,
+            cable_indices(cables, robot.n_cables, "--taut"),
+            _assigned(ns.fix),
+            box=_box(ns.box),
+            max_boxes=ns.max_boxes,
+            progress=progress,
+        )
     data = {
         "robot": robot.name,
         "taut": sorted(cables),
@@ -79,7 +91,7 @@ def cmd_igp(ns) -> int:
         "elapsed_s": res.elapsed_s,
     }
 
-    def tables(con, d):
+    def tables(con: Console, d: dict) -> None:
         from rich.table import Table
 
         free = [k for k, name in enumerate(robot.pose_names[:6]) if name not in res.assigned]
@@ -111,7 +123,7 @@ def cmd_igp(ns) -> int:
                     f"[yellow]solution {k}: cables {cable_numbers(s.length_violations)} are outside their length bounds[/]"
                 )
 
-    def human(d):
+    def human(d: dict) -> None:
         con = console()
         fixed = ", ".join(f"{k}={v:.6g}" for k, v in res.assigned.items())
         con.print(
@@ -132,9 +144,7 @@ def cmd_igp(ns) -> int:
     return 0
 
 
-def register(command) -> None:
-    import argparse
-
+def register(command: Callable[..., argparse.ArgumentParser]) -> None:
     c = command("igp", "pose, tensions and lengths for chosen taut cables (inverse geometrico-static problem)", cmd_igp)
     c.description = HELP
     c.formatter_class = argparse.RawDescriptionHelpFormatter

@@ -10,6 +10,9 @@ References
 
 from __future__ import annotations
 
+import argparse
+from collections.abc import Callable
+
 import numpy as np
 
 from taut.errors import TautError
@@ -67,8 +70,9 @@ def _ellipsoid(text: str | None) -> np.ndarray:
     return E
 
 
-def cmd_plan(ns) -> int:
+def cmd_plan(ns: argparse.Namespace) -> int:
     from taut.cli.main import console, emit, load, save_figure
+    from taut.cli.progress import progress_bar, wanted
     from taut.planning import plan_path
     from taut.planning.manifold import WrenchFeasibleManifold
     from taut.planning.verify import verify_path
@@ -80,7 +84,10 @@ def cmd_plan(ns) -> int:
         raise TautError("--radius must be positive, --max-charts and --subdivide at least 1")
     M = WrenchFeasibleManifold.from_robot(robot, E=_ellipsoid(ns.wrench_ellipsoid), fixed=fixed)
     y0, y1 = M.lift(start), M.lift(goal)
-    res = plan_path(M.implicit(), y0, y1, ns.radius, metric=M.pose_metric, max_charts=ns.max_charts)
+    with progress_bar("plan (charts expanded)", wanted(ns.json)) as progress:
+        res = plan_path(
+            M.implicit(), y0, y1, ns.radius, metric=M.pose_metric, max_charts=ns.max_charts, progress=progress
+        )
     data = {
         "robot": robot.name,
         "found": res.found,
@@ -104,7 +111,7 @@ def cmd_plan(ns) -> int:
             path=poses.tolist(), min_tension_margin=float(margin), length=res.length, verified=check.all_feasible
         )
 
-    def human(d):
+    def human(d: dict) -> None:
         con = console()
         if d["found"]:
             con.print(
@@ -121,11 +128,8 @@ def cmd_plan(ns) -> int:
 
     emit(data, ns.json, human)
     if ns.out and poses is not None:
-        head = (
-            "x,y,z,phi,theta,sigma,"
-            + ",".join(f"f_min_{i + 1}" for i in range(6))
-            + ","
-            + ",".join(f"f_max_{i + 1}" for i in range(6))
+        head = ",".join(
+            [*robot.pose_names, *(f"f_min_{i + 1}" for i in range(6)), *(f"f_max_{i + 1}" for i in range(6))]
         )
         np.savetxt(ns.out, np.hstack([poses, lo, hi]), delimiter=",", header=head, comments="")
     if ns.plot:
@@ -139,9 +143,7 @@ def cmd_plan(ns) -> int:
     return 0
 
 
-def register(command) -> None:
-    import argparse
-
+def register(command: Callable[..., argparse.ArgumentParser]) -> None:
     c = command("plan", "wrench-feasible path between two configurations (cable hexapods)", cmd_plan)
     c.description = HELP
     c.formatter_class = argparse.RawDescriptionHelpFormatter

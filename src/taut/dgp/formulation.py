@@ -58,11 +58,13 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 from itertools import combinations
 
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 from taut.geometry.rotation import angles_from_matrix
@@ -93,7 +95,7 @@ def load(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return w[:3], w[3:], gp
 
 
-def _cross(u, v):
+def _cross(u: Sequence[Expr], v: Sequence[Expr]) -> list[Expr]:
     return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
 
 
@@ -123,7 +125,7 @@ class Subproblem:
         p, R = self.frame(x)
         return p, angles_from_matrix(R, convention), R
 
-    def unknowns(self, p: np.ndarray, R: np.ndarray, t=()) -> np.ndarray:
+    def unknowns(self, p: npt.ArrayLike, R: npt.ArrayLike, t: npt.ArrayLike = ()) -> np.ndarray:
         """The unknowns ``x`` of the platform frame ``(p, R)`` and the scaled tensions
         ``t = τ/ρ`` of the taut cables (none for six taut cables): :meth:`frame` inverted."""
         q = np.asarray(p, float) + self.body_refs @ np.asarray(R, float).T
@@ -187,7 +189,7 @@ def frame_from_points(q: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndar
 NON_TAUT_REFERENCE = 0.5
 
 
-def _reference_choice(robot: Robot, taut, gp) -> tuple[list, np.ndarray]:
+def _reference_choice(robot: Robot, taut: tuple[int, ...], gp: np.ndarray) -> tuple[list[int | str], np.ndarray]:
     """Reference points (§3.1.1, "Cable numbering"): the three non-collinear platform points
     — anchors or the load point G — whose secondary points have the smallest mean
     ``|weight|`` (the affine weights and ``β₄`` of Eqs. 2.23–2.24: the term ``I_α`` that
@@ -197,7 +199,7 @@ def _reference_choice(robot: Robot, taut, gp) -> tuple[list, np.ndarray]:
     by hundreds.  Returns their labels (cable index or "G") and body coordinates."""
     r = robot.anchors
     points = [(i, r[i]) for i in taut] + [("G", gp)] + [(k, r[k]) for k in range(robot.n_cables) if k not in taut]
-    scale = max(1e-12, max(np.linalg.norm(c[1] - points[0][1]) for c in points))
+    scale = max(1e-12, max(float(np.linalg.norm(c[1] - points[0][1])) for c in points))
     best, best_cost = None, np.inf
     for triple in combinations(points, 3):
         ref = np.array([c[1] for c in triple])
@@ -224,11 +226,11 @@ def _enclose(x: Fraction) -> Expr:
     return const(float(np.nextafter(f, -np.inf)), float(np.nextafter(f, np.inf)))
 
 
-def _exact(v) -> list[Fraction]:
+def _exact(v: npt.ArrayLike) -> list[Fraction]:
     return [Fraction(float(c)) for c in np.ravel(v)]
 
 
-def _exact_cross(u, w) -> list[Fraction]:
+def _exact_cross(u: Sequence[Fraction], w: Sequence[Fraction]) -> list[Fraction]:
     return [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
 
 
@@ -249,8 +251,8 @@ def _coordinates(refs: np.ndarray, body: np.ndarray) -> list[Fraction]:
     cols.append(_exact_cross(cols[0], cols[1]))
     rhs = [pt[k] - r0[k] for k in range(3)]
 
-    def det(c):
-        return sum(c[0][k] * _exact_cross(c[1], c[2])[k] for k in range(3))
+    def det(c: list[list[Fraction]]) -> Fraction:
+        return sum((c[0][k] * _exact_cross(c[1], c[2])[k] for k in range(3)), Fraction(0))
 
     d = det(cols)
     return [det(cols[:j] + [rhs] + cols[j + 1 :]) / d for j in range(3)]
@@ -283,7 +285,7 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
     e2 = [q[2][k] - q[0][k] for k in range(3)]
     n12 = v[9:12] if normal else _cross(e1, e2)
 
-    def point(label) -> list[Expr]:
+    def point(label: int | str) -> list[Expr]:
         """A secondary point (Eqs. 2.23–2.24) as ``c₁ q₁ + c₂ q₂ + c₃ q₃`` with affine weights
         ``c₁ = 1 − β₂ − β₃``, ``c₂ = β₂``, ``c₃ = β₃`` — each unknown occurs once, so its
         interval evaluation is exact — plus ``β₄ n`` off the reference plane (``n`` the normal
@@ -303,12 +305,12 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
     b = {i: point(i) for i in range(n)}
     g = point("G")
 
-    def dist2(p, c) -> Expr:
+    def dist2(p: Sequence[Expr], c: np.ndarray) -> Expr:
         return sum(((p[k] - float(c[k])) ** 2 for k in range(3)), const(0.0))
 
     eqs: list[Expr] = []
     for i, j in ((0, 1), (0, 2), (1, 2)):
-        d2 = sum((x - y) ** 2 for x, y in zip(_exact(refs[i]), _exact(refs[j])))
+        d2 = sum(((x - y) ** 2 for x, y in zip(_exact(refs[i]), _exact(refs[j]))), Fraction(0))
         eqs.append(sum(((q[i][k] - q[j][k]) ** 2 for k in range(3)), const(0.0)) - _enclose(d2))
     for i in taut:
         eqs.append(dist2(b[i], a[i]) - const(float(lengths[i])) ** 2)
@@ -318,19 +320,19 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
         for k in range(3):
             eqs.append(sum((t[i] * (float(a[i][k]) - b[i][k]) for i in taut), const(0.0)) + _enclose(f[k]))
 
-    def moment_arm(i, pole, k) -> Expr:
+    def moment_arm(i: int, pole: np.ndarray, k: int) -> Expr:
         """``((b_i − pole) × (a_i − pole))_k``."""
         k1, k2 = (k + 1) % 3, (k + 2) % 3
         c = [x - y for x, y in zip(_exact(a[i]), _exact(pole))]
         return (b[i][k1] - float(pole[k1])) * _enclose(c[k2]) - (b[i][k2] - float(pole[k2])) * _enclose(c[k1])
 
-    def load_moment(pole, k) -> Expr:
+    def load_moment(pole: np.ndarray, k: int) -> Expr:
         k1, k2 = (k + 1) % 3, (k + 2) % 3
         return ((g[k1] - float(pole[k1])) * _enclose(f[k2]) - (g[k2] - float(pole[k2])) * _enclose(f[k1])) + _enclose(
             mext[k]
         )
 
-    def moments(pole) -> list[Expr]:
+    def moments(pole: np.ndarray) -> list[Expr]:
         out = []
         for k in range(3):
             acc: Expr = load_moment(pole, k)
@@ -343,7 +345,8 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
     if normal:
         # redundant: n has the (constant) length of e₁ × e₂ and is orthogonal to e₁, e₂
         d01, d02, d12 = (
-            sum((x - y) ** 2 for x, y in zip(_exact(refs[i]), _exact(refs[j]))) for i, j in ((0, 1), (0, 2), (1, 2))
+            sum(((x - y) ** 2 for x, y in zip(_exact(refs[i]), _exact(refs[j]))), Fraction(0))
+            for i, j in ((0, 1), (0, 2), (1, 2))
         )
         dot = (d01 + d02 - d12) / 2
         area2 = d01 * d02 - dot * dot  # ‖e₁ × e₂‖² = ‖e₁‖²‖e₂‖² − (e₁·e₂)²

@@ -59,10 +59,11 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 from taut.dgp.formulation import load
 from taut.dgp.stability import is_stable
@@ -70,8 +71,15 @@ from taut.errors import CableSetError, PoseError, TautError, UnsupportedRobotErr
 from taut.geometry.rotation import rotation_matrix
 from taut.interval.branch_prune import branch_and_prune
 from taut.interval.expression import ONE, ZERO, Expr, System, compile_system, compile_tape, const, variables
+from taut.interval.krawczyk import Certificate
 from taut.interval.linear import LinearFilter
 from taut.model.robot import Robot
+
+#: A 3×3 matrix of expressions (a rotation's entries as polynomials).
+Matrix = list[list[Expr]]
+
+#: Bound of the cosine and sine unknowns of the free angles, beyond their range [-1, 1].
+COS_SIN_BOUND = 1.25
 
 #: Alternative names of the angles of the ``xyz`` conventions (the thesis's ``φx, φy, φz``).
 ALIASES = {"phix": "a", "phiy": "b", "phiz": "c", "φx": "a", "φy": "b", "φz": "c"}
@@ -152,7 +160,7 @@ def _check_taut(robot: Robot, taut: Iterable[int]) -> tuple[int, ...]:
     return tuple(sorted(indices))
 
 
-def _check_assigned(robot: Robot, assigned: dict, m: int) -> dict[int, float]:
+def _check_assigned(robot: Robot, assigned: Mapping[str, float], m: int) -> dict[int, float]:
     """Pose index (0…5) → value of the assigned coordinates."""
     names = robot.pose_names[:6]
     if not isinstance(assigned, Mapping):
@@ -181,7 +189,9 @@ def _check_assigned(robot: Robot, assigned: dict, m: int) -> dict[int, float]:
     return out
 
 
-def _position_box(robot: Robot, taut: tuple[int, ...], box) -> tuple[np.ndarray, np.ndarray]:
+def _position_box(
+    robot: Robot, taut: tuple[int, ...], box: tuple[npt.ArrayLike, npt.ArrayLike] | None
+) -> tuple[np.ndarray, np.ndarray]:
     """The search box of the platform origin: given, or the intersection over the taut
     cables of ``a_i ± (reach_i + ‖r_i‖)`` with ``reach_i`` the cable's largest length, or
     the diagonal of the exit points' bounding box for a cable without one."""
@@ -218,23 +228,23 @@ def _cos_sin(angle: float) -> tuple[Expr, Expr]:
     return enclose(math.cos(angle)), enclose(math.sin(angle))
 
 
-def _matmul(A, B):
+def _matmul(A: Matrix, B: Matrix) -> Matrix:
     return [[sum((A[i][k] * B[k][j] for k in range(3)), ZERO) for j in range(3)] for i in range(3)]
 
 
-def _rx(c, s):
+def _rx(c: Expr, s: Expr) -> Matrix:
     return [[ONE, ZERO, ZERO], [ZERO, c, -s], [ZERO, s, c]]
 
 
-def _ry(c, s):
+def _ry(c: Expr, s: Expr) -> Matrix:
     return [[c, ZERO, s], [ZERO, ONE, ZERO], [-s, ZERO, c]]
 
 
-def _rz(c, s):
+def _rz(c: Expr, s: Expr) -> Matrix:
     return [[c, -s, ZERO], [s, c, ZERO], [ZERO, ZERO, ONE]]
 
 
-def _rotation(cs, convention: str):
+def _rotation(cs: Sequence[tuple[Expr, Expr]], convention: str) -> Matrix:
     """``R`` of :func:`taut.geometry.rotation.rotation_matrix` as polynomials in the
     ``(cos, sin)`` pairs ``cs`` of its three elementary rotations — for tilt-and-torsion
     those of ``φ``, ``θ`` and ``σ − φ`` (``R = Rz(φ) Ry(θ) Rz(σ − φ)``)."""
@@ -265,7 +275,9 @@ class _Problem:
     free_ang: list[int]  #: pose indices 3–5 (as 0–2) that are unknowns, in variable order
 
 
-def _build(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo, pos_hi) -> _Problem:
+def _build(
+    robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo: np.ndarray, pos_hi: np.ndarray
+) -> _Problem:
     a, r = robot.exits, robot.anchors
     f, mext, gp = load(robot)
     m = len(taut)
@@ -283,13 +295,13 @@ def _build(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo,
     t = {i: next(v) for i in taut}
     R = _rotation(cs, robot.orientation)
 
-    def rotated(vec) -> list[Expr]:
+    def rotated(vec: np.ndarray) -> list[Expr]:
         return [sum((R[k][j] * float(vec[j]) for j in range(3)), ZERO) for k in range(3)]
 
-    def cross(u, w) -> list[Expr]:
+    def cross(u: Sequence[Expr], w: Sequence[Expr | float]) -> list[Expr]:
         return [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
 
-    def dot(u, w) -> Expr:
+    def dot(u: Sequence[Expr], w: Sequence[Expr | float]) -> Expr:
         return sum((u[k] * w[k] for k in range(3)), ZERO)
 
     fl, ml = [float(x) for x in f], [float(x) for x in mext]
@@ -299,23 +311,23 @@ def _build(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo,
     ap = {i: [float(a[i][k]) - p[k] for k in range(3)] for i in taut}  # a_i − p
     span = {i: [ap[i][k] - Rr[i][k] for k in range(3)] for i in taut}  # a_i − b_i
 
-    def anchor_arm(i, j) -> list[Expr]:
+    def anchor_arm(i: int, j: int) -> list[Expr]:
         """(b_i − b_j) × (a_i − b_i) = (R u) × (a_i − p) − R(u × r_i), u = r_i − r_j:
         linear in R, platform-sized."""
         u = r[i] - r[j]
         return [x - y for x, y in zip(cross(rotated(u), ap[i]), rotated(np.cross(u, r[i])))]
 
-    def anchor_load(j) -> list[Expr]:
+    def anchor_load(j: int) -> list[Expr]:
         return [x + ml[k] for k, x in enumerate(cross(rotated(gp - r[j]), fl))]
 
-    def exit_arm(i, pole) -> list[Expr]:
+    def exit_arm(i: int, pole: np.ndarray) -> list[Expr]:
         """(b_i − pole) × (a_i − pole): one occurrence of b_i."""
         return cross([b[i][k] - float(pole[k]) for k in range(3)], [float(x) for x in a[i] - pole])
 
-    def exit_load(pole) -> list[Expr]:
+    def exit_load(pole: np.ndarray) -> list[Expr]:
         return [x + ml[k] for k, x in enumerate(cross([g[k] - float(pole[k]) for k in range(3)], fl))]
 
-    def anchor_axis(i, j) -> Expr:
+    def anchor_axis(i: int, j: int) -> Expr:
         """The moment about the axis b_i b_j, which drops t_i and t_j: with v = r_j − r_i and
         n = v × (r_q − r_i), term q is t_q (a_q − b_q)·R n = t_q ((a_q − p)·R n − r_q·n)."""
         v = r[j] - r[i]
@@ -324,9 +336,9 @@ def _build(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo,
             if q not in (i, j):
                 n = np.cross(v, r[q] - r[i])
                 terms.append(t[q] * (dot(ap[q], rotated(n)) - float(r[q] @ n)))
-        return sum(terms, dot(fl, rotated(np.cross(v, gp - r[i]))) + dot(ml, rotated(v)))
+        return sum(terms, dot(rotated(np.cross(v, gp - r[i])), fl) + dot(rotated(v), ml))
 
-    def exit_axis(i, j) -> Expr:
+    def exit_axis(i: int, j: int) -> Expr:
         """The moment about the axis a_i a_j, which drops t_i and t_j."""
         d = [float(x) for x in a[j] - a[i]]
         return sum((t[q] * dot(exit_arm(q, a[i]), d) for q in taut if q not in (i, j)), dot(exit_load(a[i]), d))
@@ -358,7 +370,10 @@ def _build(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo,
     lo, hi = np.empty(nv), np.empty(nv)
     np_ = len(free_pos)
     lo[:np_], hi[:np_] = pos_lo[free_pos], pos_hi[free_pos]
-    lo[np_ : nv - m], hi[np_ : nv - m] = -1.0, 1.0
+    # cos and sin lie in [-1, 1], but a solution at a multiple of π/2 (an angle of 0, a
+    # common one) has one of them on that bound, where no certified box fits in the domain:
+    # the circle c² + s² = 1 contracts them into [-1, 1] anyway
+    lo[np_ : nv - m], hi[np_ : nv - m] = -COS_SIN_BOUND, COS_SIN_BOUND
     half = _half_turn_restricted(robot.orientation, free_ang)
     if half is not None:
         lo[np_ + 2 * free_ang.index(half[0]) + half[1]] = 0.0
@@ -368,7 +383,14 @@ def _build(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo,
 
 
 def solve_igp(
-    robot: Robot, taut, assigned: dict, *, box=None, eps: float = 1e-7, max_boxes: int = 100_000
+    robot: Robot,
+    taut: Iterable[int],
+    assigned: Mapping[str, float],
+    *,
+    box: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
+    eps: float = 1e-7,
+    max_boxes: int = 100_000,
+    progress: Callable[[int, int | None], None] | None = None,
 ) -> IGPResult:
     """All certified solutions of the inverse geometrico-static problem (module docstring).
 
@@ -383,6 +405,8 @@ def solve_igp(
     boxes, a continuum of solutions (an assignment that does not fix the pose, e.g. ``x, y,
     φ`` of the Robocrane with cables 1, 3, 5 at ``x = y = 0``) would take them all, at about
     1 ms per box; what is left when it runs out is ``undecided`` and ``exhausted`` is set.
+    ``progress(boxes, None)`` is called as the boxes are processed (their number is not
+    known in advance) and ``progress(boxes, boxes)`` at the end.
 
     References
     ----------
@@ -414,10 +438,13 @@ def solve_igp(
             filters=(pb.statics,),
             certify_width=0.5,
             max_boxes=max_boxes,
+            progress=None if progress is None else _within_budget(progress, int(max_boxes)),
         )
         solutions = [_solution(robot, idx, fixed, pb, c) for c in res.solutions]
         solutions.sort(key=lambda s: (not s.stable, *s.position, *s.orientation))
         undecided, boxes, exhausted = len(res.undecided), min(res.boxes, max_boxes), res.boxes > max_boxes
+    elif progress is not None:
+        progress(0, 0)
     return IGPResult(
         solutions,
         {names[k]: v for k, v in sorted(fixed.items())},
@@ -428,7 +455,19 @@ def solve_igp(
     )
 
 
-def _solution(robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pb: _Problem, cert) -> IGPSolution:
+def _within_budget(progress: Callable[[int, int | None], None], budget: int) -> Callable[[int, int | None], None]:
+    """``progress`` with box counts capped at the budget: when it runs out the solver has
+    counted the one box it did not process, which the result does not count."""
+
+    def report(done: int, total: int | None) -> None:
+        progress(min(done, budget), None if total is None else min(total, budget))
+
+    return report
+
+
+def _solution(
+    robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pb: _Problem, cert: Certificate
+) -> IGPSolution:
     x = cert.x
     pose = np.array([fixed.get(k, 0.0) for k in range(6)])
     pose[pb.free_pos] = x[: len(pb.free_pos)]

@@ -18,6 +18,8 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 
 from taut.dgp.formulation import load
@@ -47,18 +49,18 @@ def _axis_rotation(axis: np.ndarray, theta: float) -> np.ndarray:
     return np.eye(3) + np.sin(theta) * K + (1.0 - np.cos(theta)) * K @ K
 
 
-def _arcs(conditions) -> list[tuple[float, float]]:
+def _arcs(conditions: Sequence[tuple[float, float, float]]) -> list[tuple[float, float]]:
     """Arcs of ``[0, 2π)`` where every ``A + B cos ϑ + C sin ϑ ≤ 0`` holds."""
-    cuts = [0.0, TWO_PI]
+    angles = [0.0, TWO_PI]
     for A, B, C in conditions:
         r = np.hypot(B, C)
         if r > 0 and abs(A) <= r:
             phi = np.arctan2(C, B)
             d = np.arccos(np.clip(-A / r, -1.0, 1.0))
-            cuts += [(phi + d) % TWO_PI, (phi - d) % TWO_PI]
-    cuts = np.unique(cuts)
+            angles += [(phi + d) % TWO_PI, (phi - d) % TWO_PI]
+    cuts = np.unique(angles)
 
-    def ok(th):
+    def ok(th: float) -> bool:
         return all(A + B * np.cos(th) + C * np.sin(th) <= 0.0 for A, B, C in conditions)
 
     arcs = [(lo, hi) for lo, hi in zip(cuts[:-1], cuts[1:]) if hi > lo and ok(0.5 * (lo + hi))]
@@ -72,7 +74,7 @@ def _arcs(conditions) -> list[tuple[float, float]]:
     if len(merged) > 1 and merged[0][0] == 0.0 and merged[-1][1] == TWO_PI:
         first = merged.pop(0)
         merged[-1][1] = TWO_PI + first[1]
-    return [tuple(a) for a in merged]
+    return [(lo, hi) for lo, hi in merged]
 
 
 def single_cable_equilibria(robot: Robot, lengths: np.ndarray, i: int) -> list[dict]:

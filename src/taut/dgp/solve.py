@@ -20,20 +20,27 @@ References
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
+from collections.abc import Callable
+from dataclasses import dataclass
 from itertools import combinations
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
-from taut.dgp.formulation import build_subproblem, load
+from taut.dgp.formulation import Subproblem, build_subproblem, load
 from taut.dgp.single_cable import single_cable_equilibria
 from taut.dgp.stability import is_stable
 from taut.errors import TautError
 from taut.geometry.rotation import angles_from_matrix
-from taut.interval.branch_prune import _bisect_index, _split, branch_and_prune, same_solution
+from taut.interval.branch_prune import Box, bisect, branch_and_prune, same_solution
 from taut.interval.hc4 import contract
+from taut.interval.krawczyk import Certificate
 from taut.model.robot import Robot
-from taut.parallel import SerialExecutor, get_executor
+from taut.parallel import Executor, as_executor
+
+if TYPE_CHECKING:
+    from distributed import Client
 
 
 @dataclass(frozen=True)
@@ -62,16 +69,29 @@ class DGPSolution:
         return d
 
 
-@dataclass
+@dataclass(frozen=True)
 class DGPResult:
-    solutions: list[DGPSolution] = field(default_factory=list)
-    subproblems: int = 0
-    undecided: int = 0  #: boxes of width < eps that could not be certified (should be 0)
-    boxes: int = 0
-    elapsed_s: float = 0.0
+    """All equilibria found, in canonical order (:func:`solution_key`), and the search's
+    bookkeeping."""
+
+    solutions: list[DGPSolution]
+    subproblems: int  #: taut subsets solved
+    undecided: int  #: boxes of width < eps that could not be certified (should be 0)
+    boxes: int  #: boxes processed by branch-and-prune over all sub-problems
+    elapsed_s: float
+
+    @property
+    def complete(self) -> bool:
+        """Every equilibrium is in ``solutions`` (no box left undecided)."""
+        return self.undecided == 0
 
 
-def check_lengths(robot: Robot, lengths) -> np.ndarray:
+def solution_key(solution: DGPSolution) -> tuple:
+    """The canonical order of solutions: by taut set, then position and orientation."""
+    return (solution.taut, *solution.position.tolist(), *solution.orientation.tolist())
+
+
+def check_lengths(robot: Robot, lengths: npt.ArrayLike) -> np.ndarray:
     arr = np.asarray(lengths, dtype=float).ravel()
     if arr.size != robot.n_cables:
         raise TautError(f"{robot.name} has {robot.n_cables} cables, got {arr.size} lengths")
@@ -82,7 +102,7 @@ def check_lengths(robot: Robot, lengths) -> np.ndarray:
     return arr
 
 
-def _pieces(sp, split: int) -> list[tuple[np.ndarray, np.ndarray]]:
+def _pieces(sp: Subproblem, split: int) -> list[Box]:
     """The sub-problem's domain cut into up to ``2**split`` pieces that may hold solutions:
     breadth first, the widest piece is contracted (HC4, statics filter) and halved across
     its widest pose variable, empty pieces dropped — most of the initial box is empty, and
@@ -94,7 +114,7 @@ def _pieces(sp, split: int) -> list[tuple[np.ndarray, np.ndarray]]:
             break
         widths = [np.max(np.where(sp.primary, hi - lo, -1.0)) for lo, hi in live]
         lo, hi = live.pop(int(np.argmax(widths)))
-        for part in _split(lo, hi, _bisect_index(hi - lo, sp.primary, 0.0, np.zeros(lo.size))):
+        for part in bisect(lo, hi, primary=sp.primary):
             if contract(sp.system.tape, *part) and sp.statics(*part):
                 live.append(part)
         if not live:
@@ -120,11 +140,11 @@ def certify_width(m: int) -> float:
 #: Per process, the sub-problems last built and their pieces, keyed by the job's data:
 #: a worker running several pieces of one sub-problem builds it once (a build takes
 #: ~20 ms, as long as solving many pieces).
-_PREPARED: dict = {}
+_PREPARED: dict[tuple[str, bytes, tuple[int, ...], int], tuple[Subproblem, list[Box]]] = {}
 _PREPARED_SIZE = 8
 
 
-def _prepared(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: int):
+def _prepared(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: int) -> tuple[Subproblem, list[Box]]:
     key = (robot.model_dump_json(), lengths.tobytes(), taut, split)
     hit = _PREPARED.get(key)
     if hit is None:
@@ -136,7 +156,11 @@ def _prepared(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: i
     return hit
 
 
-def _solve_piece(job):
+#: A job of :func:`solve_dgp`: robot, lengths, taut cables (0-based), eps, split, piece.
+Job = tuple[Robot, np.ndarray, tuple[int, ...], float, int, int]
+
+
+def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], int, int]:
     """One job of :func:`solve_dgp`: the sub-problem of ``taut`` on piece ``k`` of
     ``pieces`` of its domain.  Returns ``(solutions, certificates, undecided, boxes)``."""
     robot, lengths, taut, eps, split, k = job
@@ -183,7 +207,7 @@ def _solve_piece(job):
     )
     idx = list(taut)
     undecided = len(res.undecided)
-    certs = []
+    certs: list[Certificate | None] = []
     for c in res.solutions:
         if not sp.tension_unknowns:
             # the sign of the tensions over the certified box: all positive, or the
@@ -204,29 +228,44 @@ def _solve_piece(job):
     return out, certs, undecided, res.boxes
 
 
-def _solve_subset(job) -> tuple[list[DGPSolution], int, int]:
+def _solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple[list[DGPSolution], int, int]:
     """The whole sub-problem of ``taut``: ``(solutions, undecided boxes, boxes)``."""
     robot, lengths, taut, eps = job
     sols, _, undecided, boxes = _solve_piece((robot, lengths, taut, eps, 0, 0))
     return sols, undecided, boxes
 
 
+#: Default ``split`` of :func:`solve_dgp`, whatever the executor, so that every executor
+#: runs the same jobs and returns bitwise the same solutions.  The pieces cost nothing in
+#: serial (CPU time with 1 and 16 pieces per sub-problem: Table 4.3 1.37 s and 1.37 s,
+#: Table 4.6 3.83 s and 3.75 s, CoGiRo's Table 4.4 124 s and 115 s).
+SPLIT = 4
+
+
 def solve_dgp(
     robot: Robot,
-    lengths=None,
+    lengths: npt.ArrayLike | None = None,
     *,
     max_taut: int | None = None,
-    executor=None,
+    executor: Executor | Client | None = None,
     eps: float = 1e-7,
     split: int | None = None,
+    progress: Callable[[int, int | None], None] | None = None,
 ) -> DGPResult:
     """All admissible equilibria (``τ ≥ 0``) for the cable lengths (default: the robot's
     ``reference.lengths``), each with its stability flag and certificate.
 
+    ``executor``: where the jobs run, as for
+    :func:`~taut.workspace.evaluate.evaluate_workspace` — ``None`` (serial), an executor of
+    :func:`taut.parallel.get_executor`, or a ``distributed.Client``; it is not closed.
     ``split``: the domain of every sub-problem with at least 3 taut cables is cut into
-    ``2**split`` pieces solved as separate jobs (default 0 on the serial executor, 4 on a
-    parallel one, so that one hard sub-problem is shared by the workers); a solution
-    found by two neighbouring pieces is reported once (:func:`same_solution`).
+    ``2**split`` pieces solved as separate jobs (default :data:`SPLIT`), so that one hard
+    sub-problem is shared by the workers; a solution found by two neighbouring pieces is
+    reported once (:func:`same_solution`), from the first piece in job order.  Each job is
+    computed by the same code whatever the executor, so for a given ``split`` the solutions
+    are bitwise identical on every executor; they are sorted by :func:`solution_key`.
+    ``progress(done, total)`` is called with the number of jobs done (pieces of
+    sub-problems) out of all of them, from 0 to the total.
 
     References
     ----------
@@ -241,39 +280,49 @@ def solve_dgp(
         if robot.reference is None or robot.reference.lengths is None:
             raise TautError(f"{robot.name} has no reference lengths: give the cable lengths")
         lengths = robot.reference.lengths
-    lengths = check_lengths(robot, lengths)
+    checked = check_lengths(robot, lengths)
     n = robot.n_cables
     top = min(n, 6) if max_taut is None else min(n, 6, int(max_taut))
     if top < 1:
         raise TautError(f"--max-taut must be at least 1, got {max_taut}")
-    if split is not None and not 0 <= split <= 10:
-        raise TautError(f"split must be between 0 and 10 (up to 1024 pieces), got {split}")
-    t0 = time.perf_counter()
-    own = executor is None
-    ex = get_executor() if own else executor
     if split is None:
-        split = 0 if isinstance(ex, SerialExecutor) else 4
+        split = SPLIT
+    if not 0 <= split <= 10:
+        raise TautError(f"split must be between 0 and 10 (up to 1024 pieces), got {split}")
+    runner = as_executor(executor)
+    t0 = time.perf_counter()
     subsets = [taut for m in range(top, 0, -1) for taut in combinations(range(n), m)]
     jobs = [
-        (robot, lengths, taut, eps, split if len(taut) >= 3 else 0, k)
+        (robot, checked, taut, eps, split if len(taut) >= 3 else 0, k)
         for taut in subsets
         for k in range(2**split if len(taut) >= 3 else 1)
     ]
+    done = 0
+
+    def callback(_: int) -> None:
+        nonlocal done
+        done += 1
+        if progress is not None:
+            progress(done, len(jobs))
+
+    if progress is not None:
+        progress(0, len(jobs))
     try:
-        parts = ex.map(_solve_piece, jobs)
+        parts = runner.map(_solve_piece, jobs, callback=callback if progress is not None else None)
     finally:
-        if own:
-            ex.close()
-    out = DGPResult(subproblems=len(subsets))
+        if runner is not executor:  # a client made here for a cluster object
+            runner.close()
+    solutions: list[DGPSolution] = []
     kept: dict[tuple[int, ...], list] = {}
-    for sols, certs, und, boxes in parts:
+    undecided = boxes = 0
+    for sols, certs, und, count in parts:
         for sol, cert in zip(sols, certs):
             seen = kept.setdefault(sol.taut, [])
             if cert is not None and any(same_solution(c, cert) or same_solution(cert, c) for c in seen):
                 continue
             seen.append(cert)
-            out.solutions.append(sol)
-        out.undecided += und
-        out.boxes += boxes
-    out.elapsed_s = time.perf_counter() - t0
-    return out
+            solutions.append(sol)
+        undecided += und
+        boxes += count
+    solutions.sort(key=solution_key)
+    return DGPResult(solutions, len(subsets), undecided, boxes, time.perf_counter() - t0)

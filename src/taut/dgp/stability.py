@@ -74,7 +74,7 @@ def smallest_eigenvalue(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.nda
     return np.linalg.eigvalsh(0.5 * (Hr + Hr.T))[0]
 
 
-def is_stable(a, b, g, tau, rho) -> bool:
+def is_stable(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray, rho: np.ndarray) -> bool:
     """Positive-definite reduced Hessian (sufficient condition of §3.2.2); a fully
     constrained equilibrium (empty null space) is stable.
 

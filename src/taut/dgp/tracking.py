@@ -45,9 +45,11 @@ import weakref
 from dataclasses import dataclass, field
 
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 from taut.dgp.formulation import Subproblem, build_subproblem, frame_from_points, load
+from taut.dgp.inverse import IGPSolution
 from taut.dgp.solve import DGPSolution, check_lengths
 from taut.dgp.stability import smallest_eigenvalue
 from taut.errors import TautError, TrackingLostError
@@ -66,6 +68,10 @@ BOX_MARGIN = 1.25
 MAX_HALVINGS = 10
 
 
+#: What :func:`_update` returns: status, p, R, angles, tensions, spans, eigenvalue, box width.
+Update = tuple[int, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, float, float]
+
+
 @dataclass(frozen=True)
 class _Compiled:
     """A sub-problem compiled once, and where its length constants sit in the tape."""
@@ -74,14 +80,15 @@ class _Compiled:
     nodes: np.ndarray  #: tape index of the CONST node ``ρ_i`` of each taut cable's length equation
     args: tuple  #: the leading arguments of :func:`_update` (tapes, geometry, taut indices)
 
-    def update(self, lengths: np.ndarray, s: _State):
+    def update(self, lengths: np.ndarray, s: _State) -> Update:
         """:func:`_update` from ``s`` to ``lengths``: the length constants of the tape are
         patched in place first (one update at a time per process, as tracking runs)."""
         tape = self.sub.system.tape
         rho = lengths[list(self.sub.taut)]
         tape.clo[self.nodes] = rho
         tape.chi[self.nodes] = rho
-        return _update(*self.args, lengths, s.p, s.R, s.tensions)
+        # numba's Dispatcher is typed as taking no arguments
+        return _update(*self.args, lengths, s.p, s.R, s.tensions)  # type: ignore[call-arg]
 
 
 @dataclass
@@ -153,41 +160,41 @@ class _State:
 
 @njit(cache=True)
 def _update(
-    op,
-    a,
-    b,
-    clo,
-    chi,
-    start,
-    end,
-    h,
-    jop,
-    ja,
-    jb,
-    jclo,
-    jchi,
-    jstart,
-    jend,
-    rows,
-    cols,
-    sop,
-    sa,
-    sb,
-    sclo,
-    schi,
-    sstart,
-    send,
-    refs,
-    anchors,
-    exits,
-    gp,
-    idx,
-    convention,
-    lengths,
-    p0,
-    R0,
-    tau0,
-):
+    op: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    clo: np.ndarray,
+    chi: np.ndarray,
+    start: np.ndarray,
+    end: np.ndarray,
+    h: int,
+    jop: np.ndarray,
+    ja: np.ndarray,
+    jb: np.ndarray,
+    jclo: np.ndarray,
+    jchi: np.ndarray,
+    jstart: np.ndarray,
+    jend: np.ndarray,
+    rows: np.ndarray,
+    cols: np.ndarray,
+    sop: np.ndarray,
+    sa: np.ndarray,
+    sb: np.ndarray,
+    sclo: np.ndarray,
+    schi: np.ndarray,
+    sstart: np.ndarray,
+    send: np.ndarray,
+    refs: np.ndarray,
+    anchors: np.ndarray,
+    exits: np.ndarray,
+    gp: np.ndarray,
+    idx: np.ndarray,
+    convention: int,
+    lengths: np.ndarray,
+    p0: np.ndarray,
+    R0: np.ndarray,
+    tau0: np.ndarray,
+) -> Update:
     """Steps 1–2 of the module docstring and the solution's data, in one compiled call.
 
     The unknowns of the pose ``(p0, R0)`` and tensions ``tau0`` (the three ``refs``
@@ -253,7 +260,9 @@ def _update(
     return status, p, R, ang, tau, spans, eig, width
 
 
-def _attempt(robot: Robot, s: _State, taut: tuple[int, ...], lengths: np.ndarray):
+def _attempt(
+    robot: Robot, s: _State, taut: tuple[int, ...], lengths: np.ndarray
+) -> str | tuple[_State, float, np.ndarray]:
     """Newton + Krawczyk on subset ``taut``; ``(state, box width)`` or a reason string."""
     if not 2 <= len(taut) <= 6:
         return f"a taut set of {len(taut)} cable(s) has no isolated equilibrium to track"
@@ -305,7 +314,7 @@ def _advance(robot: Robot, s: _State, lengths: np.ndarray) -> tuple[_State, floa
         taut = nxt
 
 
-def _state(robot: Robot, sol: DGPSolution, lengths: np.ndarray) -> _State:
+def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) -> _State:
     """The state of ``sol``, about to move to ``lengths``: the lengths it holds are its
     taut cables' spans (a solution does not carry them) and, for its slack cables, the new
     ``lengths`` (they enter no equation)."""
@@ -323,10 +332,11 @@ def _state(robot: Robot, sol: DGPSolution, lengths: np.ndarray) -> _State:
 
 
 def _solution(s: _State, width: float) -> DGPSolution:
+    assert s.angles is not None, "a certified step sets the angles"
     return DGPSolution(tuple(s.taut), s.p, s.angles, s.tensions, s.stable, width, 0.0)
 
 
-def track(robot: Robot, previous_solution, lengths) -> DGPSolution:
+def track(robot: Robot, previous_solution: DGPSolution | IGPSolution, lengths: npt.ArrayLike) -> DGPSolution:
     """The equilibrium that continues ``previous_solution`` (a :class:`DGPSolution` or an
     :class:`~taut.dgp.inverse.IGPSolution`) at the new cable ``lengths`` (see the module
     docstring); raises :class:`~taut.errors.TrackingLostError` when it
@@ -344,7 +354,9 @@ def track(robot: Robot, previous_solution, lengths) -> DGPSolution:
     return _solution(s, width)
 
 
-def track_path(robot: Robot, start_solution, lengths_sequence) -> list[DGPSolution]:
+def track_path(
+    robot: Robot, start_solution: DGPSolution | IGPSolution, lengths_sequence: npt.ArrayLike
+) -> list[DGPSolution]:
     """:func:`track` along a sequence of cable lengths (one solution per row)."""
     try:
         rows = np.asarray(lengths_sequence, dtype=float)

@@ -137,17 +137,42 @@ def _bisect_index(width: np.ndarray, primary: np.ndarray, eps: float, score: np.
     return j
 
 
-def _split(
-    lo: np.ndarray, hi: np.ndarray, j: int
-) -> tuple[tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]:
-    m = 0.5 * lo[j] + 0.5 * hi[j]
-    if not np.isfinite(m):  # unbounded variable: split at a finite point
-        m = max(2.0 * lo[j], 1.0) if np.isfinite(lo[j]) else (min(2.0 * hi[j], -1.0) if np.isfinite(hi[j]) else 0.0)
-    a_hi = hi.copy()
-    a_hi[j] = m
-    b_lo = lo.copy()
-    b_lo[j] = m
-    return (lo, a_hi), (b_lo, hi.copy())
+Box = tuple[np.ndarray, np.ndarray]
+
+
+def bisect(
+    lo: npt.ArrayLike,
+    hi: npt.ArrayLike,
+    *,
+    primary: npt.ArrayLike | None = None,
+    eps: float = 0.0,
+    score: npt.ArrayLike | None = None,
+) -> tuple[Box, Box]:
+    """The two halves ``((lo, mid), (mid, hi))`` of the box ``[lo, hi]`` cut across the
+    variable chosen by the bisection rule of the solver (§3.1.4): a ``primary`` one (all
+    variables by default) while the widest of them is at least ``eps`` — the one of
+    largest ``score`` when any is positive (e.g. the relative smear), else the widest —
+    then the widest variable of all.  The cut is at the midpoint, or at a finite point of
+    an unbounded variable.  The halves are new arrays.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §3.1.4. (docs/references.bib: berti2015)
+    """
+    lo, hi = np.array(lo, float), np.array(hi, float)
+    mask = np.ones(lo.size, bool) if primary is None else np.asarray(primary, bool)
+    weights = np.zeros(lo.size) if score is None else np.asarray(score, float)
+    j = _bisect_index(hi - lo, mask, float(eps), weights)
+    a, b = float(lo[j]), float(hi[j])
+    if np.isfinite(a) and np.isfinite(b):
+        m = 0.5 * a + 0.5 * b
+    else:  # unbounded variable: split at a finite point
+        m = max(2.0 * a, 1.0) if np.isfinite(a) else (min(2.0 * b, -1.0) if np.isfinite(b) else 0.0)
+    a_hi, b_lo = hi.copy(), lo.copy()
+    a_hi[j] = b_lo[j] = m
+    return (lo, a_hi), (b_lo, hi)
 
 
 def branch_and_prune(
@@ -169,6 +194,7 @@ def branch_and_prune(
     bisection: str = "width",
     tube: int = 0,
     filter_width: float = np.inf,
+    progress: Callable[[int, int | None], None] | None = None,
 ) -> BranchAndPruneResult:
     """All solutions of ``system`` in the box ``[lo, hi]`` (see module docstring).
 
@@ -205,6 +231,9 @@ def branch_and_prune(
     before bisecting); ``ratio`` is the HC4 stopping threshold of
     :func:`taut.interval.hc4.contract` in the compiled loop.  The result's ``stats`` count
     the boxes each operator discarded (compiled loop only).
+
+    ``progress(boxes, None)`` is called every :data:`PROGRESS_BOXES` boxes processed (the
+    total is unknown until the end), and ``progress(boxes, boxes)`` once the search is done.
     """
     kernel_ok = all(isinstance(f, LinearFilter) for f in filters) and len(filters) <= 1
     if method not in ("auto", "numba", "python"):
@@ -232,6 +261,7 @@ def branch_and_prune(
             smear,
             tube,
             filter_width,
+            progress,
         )
     lo0, hi0 = _domain(lo, hi, domain)
     primary = np.ones(lo0.size, bool) if primary is None else np.asarray(primary, bool)
@@ -243,6 +273,8 @@ def branch_and_prune(
     while stack:
         lo, hi = stack.pop()
         out.boxes += 1
+        if progress is not None and out.boxes % PROGRESS_BOXES == 0:
+            progress(out.boxes, None)
         if out.boxes > max_boxes:
             out.undecided.append((lo, hi))
             out.undecided.extend(stack)
@@ -298,10 +330,12 @@ def branch_and_prune(
         if np.max(width) < eps:
             out.undecided.append((lo, hi))
             continue
-        score = _smear(*jac, lo, hi, primary) if smear else np.zeros(lo.size)
-        a, b = _split(lo, hi, _bisect_index(width, primary, eps, score))
+        score = _smear(*jac, lo, hi, primary) if smear else None
+        a, b = bisect(lo, hi, primary=primary, eps=eps, score=score)
         stack.append(b)
         stack.append(a)
+    if progress is not None:
+        progress(out.boxes, out.boxes)
     return _drop_covered(out)
 
 
@@ -327,7 +361,11 @@ def _pad(lo: np.ndarray, hi: np.ndarray, lo0: np.ndarray, hi0: np.ndarray) -> tu
 
 
 # Return codes of :func:`_drive`.
-_DONE, _CERTIFY, _UNDECIDED, _MAX_BOXES, _STACK_FULL = range(5)
+_DONE, _CERTIFY, _UNDECIDED, _MAX_BOXES, _STACK_FULL, _PAUSE = range(6)
+
+#: Boxes between two calls of ``progress`` in :func:`branch_and_prune` (the compiled loop
+#: hands back to Python for each: about a millisecond of boxes or more).
+PROGRESS_BOXES = 1000
 
 
 @njit(cache=True, fastmath=False)
@@ -386,15 +424,19 @@ def _drive(
     tube_points: int,
     krawczyk_points: int,
     filter_width: float,
+    pause_at: int,
 ) -> tuple[int, int, int, bool]:
     """The loop of :func:`branch_and_prune` on the stack ``stk_lo[:sp], stk_hi[:sp]``
     until a box needs Python (a certification, an undecided box, the box budget, a full
-    stack).  Returns ``(code, sp, boxes, unique)``; ``out`` rows hold the box, the
-    Krawczyk box and the Krawczyk result (code ``_CERTIFY``)."""
+    stack) or ``pause_at`` boxes are processed (to report progress).  Returns
+    ``(code, sp, boxes, unique)``; ``out`` rows hold the box, the Krawczyk box and the
+    Krawczyk result (code ``_CERTIFY``)."""
     n = lo0.size
     cap = stk_lo.shape[0]
     jl, jh = np.empty(jstart.size), np.empty(jstart.size)
     while sp > 0:
+        if boxes >= pause_at:
+            return _PAUSE, sp, boxes, False
         sp -= 1
         lo = stk_lo[sp].copy()
         hi = stk_hi[sp].copy()
@@ -518,7 +560,7 @@ def _drive(
         if sp + 2 > cap:
             stk_lo[sp], stk_hi[sp] = lo, hi
             return _STACK_FULL, sp + 1, boxes - 1, False
-        # bisection rule of §3.1.4 (as _split); the smear reuses the Jacobian of the last
+        # bisection rule of §3.1.4 (as bisect); the smear reuses the Jacobian of the last
         # Krawczyk step, taken over a box a little wider than this one
         if smear and have_j:
             score = _smear_of(rows, cols, h, jl, jh, lo, hi, primary)
@@ -601,6 +643,7 @@ def _branch_and_prune_numba(
     smear: bool,
     tube: int,
     filter_width: float,
+    progress: Callable[[int, int | None], None] | None,
 ) -> BranchAndPruneResult:
     lo0, hi0 = _domain(lo, hi, domain)
     n = lo0.size
@@ -623,6 +666,8 @@ def _branch_and_prune_numba(
     stats = np.zeros(8, np.int64)
     tube_vars, dependent = _tube_vars(system, tube, primary)
     tube_points, krawczyk_points = _slope_points(system, tube), _slope_points(system, system.n_equations)
+    never = np.iinfo(np.int64).max
+    pause_at = PROGRESS_BOXES if progress is not None else never
 
     def push(blo: np.ndarray, bhi: np.ndarray) -> None:
         nonlocal sp, stk_lo, stk_hi
@@ -668,9 +713,15 @@ def _branch_and_prune_numba(
             tube_points,
             krawczyk_points,
             float(filter_width),
+            pause_at,
         )
         if code == _DONE:
             break
+        if code == _PAUSE:
+            assert progress is not None, "the loop pauses only to report progress"
+            progress(boxes, None)
+            pause_at = boxes + PROGRESS_BOXES
+            continue
         if code == _MAX_BOXES:
             out.undecided.extend((stk_lo[i].copy(), stk_hi[i].copy()) for i in range(sp))
             break
@@ -703,8 +754,8 @@ def _branch_and_prune_numba(
         if np.max(width) < eps:
             out.undecided.append((blo, bhi))
             continue
-        score = _smear(*t_jac, blo, bhi, primary) if smear else np.zeros(n)
-        (alo, ahi), (b2lo, b2hi) = _split(blo, bhi, _bisect_index(width, primary, eps, score))
+        score = _smear(*t_jac, blo, bhi, primary) if smear else None
+        (alo, ahi), (b2lo, b2hi) = bisect(blo, bhi, primary=primary, eps=eps, score=score)
         push(b2lo, b2hi)
         push(alo, ahi)
     out.boxes = boxes
@@ -714,6 +765,8 @@ def _branch_and_prune_numba(
             stats.tolist(),
         )
     )
+    if progress is not None:
+        progress(boxes, boxes)
     return _drop_covered(out)
 
 

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import heapq
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -82,10 +83,13 @@ def plan_path(
     metric: np.ndarray | None = None,
     max_charts: int = 20_000,
     spacing: float | None = None,
+    progress: Callable[[int, int | None], None] | None = None,
 ) -> PathResult:
     """A path on ``manifold`` from ``start`` to ``goal`` (both on it), or proof that the
     connected component of ``start`` does not reach ``goal`` at resolution ``radius``.
 
+    ``progress(expanded, None)`` is called as charts are expanded (how many the search
+    needs is not known in advance) and ``progress(expanded, expanded)`` when it stops.
     References
     ----------
     .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
@@ -116,6 +120,8 @@ def plan_path(
             break
         atlas.grow(i)
         expanded += 1
+        if progress is not None:
+            progress(expanded, None)
         for j, c in atlas.charts[i].neighbours.items():
             if j in done:
                 continue
@@ -124,6 +130,8 @@ def plan_path(
                 g[j], parent[j] = gj, i
                 heapq.heappush(heap, (gj + h(j), j))
     exhausted = found_at is None and not heap
+    if progress is not None:
+        progress(expanded, expanded)
     if found_at is None:
         return PathResult(
             False,

@@ -1,0 +1,107 @@
+"""``taut fk`` through real subprocesses: the progress bar on a terminal (and none with
+``--json``), and the table headers named after the robot's pose coordinates."""
+
+import json
+import os
+import pty
+import subprocess
+import sys
+import threading
+from pathlib import Path
+
+import numpy as np
+
+from taut.dgp import solve_dgp
+from taut.geometry.rotation import rotation_matrix
+from taut.model import load_robot
+
+TAUT = str(Path(sys.executable).with_name("taut"))
+BAR = "━"  # what rich draws a bar with
+HIDE_CURSOR = "\x1b[?25l"  # a live display starts so
+
+
+def run_with_terminal_stderr(args: list[str]) -> tuple[int, str, str]:
+    """Run ``taut ARGS`` with stderr on a pseudo-terminal and stdout on a pipe:
+    ``(exit status, stdout, everything written to the terminal)``."""
+    master, slave = pty.openpty()
+    env = {k: v for k, v in os.environ.items() if k not in ("TTY_INTERACTIVE", "NO_COLOR")}
+    env["TERM"] = "xterm-256color"
+    proc = subprocess.Popen([TAUT, *args], stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=slave, env=env)
+    os.close(slave)
+    chunks: list[bytes] = []
+
+    def drain() -> None:  # a full pty buffer would block the child
+        while True:
+            try:
+                data = os.read(master, 4096)
+            except OSError:  # EIO: the child closed the terminal
+                return
+            if not data:
+                return
+            chunks.append(data)
+
+    reader = threading.Thread(target=drain)
+    reader.start()
+    out, _ = proc.communicate(timeout=600)
+    reader.join(timeout=60)
+    os.close(master)
+    return proc.returncode, out.decode(), b"".join(chunks).decode(errors="replace")
+
+
+def test_fk_shows_a_bar_on_a_terminal_and_none_with_json():
+    code, out, term = run_with_terminal_stderr(["fk", "suspended-3cable"])
+    assert code == 0, term
+    assert HIDE_CURSOR in term and "fk " in term and BAR in term and "%" in term
+    assert "6 equilibria" in out and "\x1b" not in out  # stdout is the result alone
+    code, out, term = run_with_terminal_stderr(["fk", "suspended-3cable", "--json"])
+    assert code == 0, term
+    data = json.loads(out)
+    assert len(data["solutions"]) == 6 and data["undecided_boxes"] == 0
+    assert term == ""
+    # two worker processes: the same solutions to the bit, in the same order
+    done = subprocess.run(
+        [TAUT, "fk", "suspended-3cable", "--workers", "2", "--json"], capture_output=True, text=True, timeout=600
+    )
+    assert done.returncode == 0, done.stderr
+    assert json.loads(done.stdout)["solutions"] == data["solutions"]
+
+
+TILT_TORSION = """\
+format: taut/1
+name: suspended 3-cable robot, tilt-and-torsion angles
+dimension: 3
+orientation: tilt-torsion
+platform:
+  kind: rigid
+  wrench: [0, 0, 1, 0, 0, 0]
+  wrench_point: [0, 0, -0.577]
+cables:
+  - {exit: [0, 0, 0], anchor: [0.817, 0, 0]}
+  - {exit: [10, 0, 0], anchor: [-0.408, 0.707, 0]}
+  - {exit: [0, 12, 0], anchor: [-0.408, -0.707, 0]}
+reference:
+  lengths: [7.5, 10, 9.5]
+"""
+
+
+def test_fk_headers_and_angles_follow_the_robots_orientation_convention(tmp_path):
+    """The suspended robot of Table 4.3 written with tilt-and-torsion angles: the table is
+    headed phi, theta, sigma, and each rotation is that of an equilibrium of the built-in
+    (xyz-fixed) robot."""
+    robot = tmp_path / "tilt.yaml"
+    robot.write_text(TILT_TORSION)
+    done = subprocess.run([TAUT, "fk", str(robot), "--max-taut", "3"], capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    header = next(line for line in done.stdout.splitlines() if "taut" in line and "stable" in line)
+    names = header.replace("┃", " ").split()
+    assert names[:7] == ["taut", "x", "y", "z", "phi", "theta", "sigma"]
+    assert not {"a", "b", "c"} & set(names)
+    done = subprocess.run([TAUT, "fk", str(robot), "--json"], capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    got = json.loads(done.stdout)["solutions"]
+    reference = solve_dgp(load_robot("suspended-3cable")).solutions
+    assert len(got) == len(reference) == 6
+    for s in reference:
+        (match,) = [g for g in got if np.allclose(g["position"], s.position, atol=1e-9)]
+        R = rotation_matrix(np.array(match["orientation"]), "tilt-torsion")
+        assert np.allclose(R, rotation_matrix(s.orientation, "xyz-fixed"), atol=1e-9)
