@@ -3,12 +3,16 @@
 from __future__ import annotations
 
 import math
+import os
 import re
+from collections.abc import Collection
+from pathlib import Path
 
 import numpy as np
 
 from taut.errors import PoseError, TautError
 from taut.kinematics.pose import as_poses
+from taut.model.io import MAX_MAGNITUDE
 from taut.model.robot import Robot
 
 _PI = re.compile(r"^([+-]?)(\d*\.?\d*)\*?pi(?:/(\d*\.?\d+))?$")
@@ -32,6 +36,8 @@ def number(text: str, what: str) -> float:
     value *= scale
     if not math.isfinite(value):
         raise TautError(f"{what}: {text!r} is not finite")
+    if abs(value) > MAX_MAGNITUDE:
+        raise TautError(f"{what}: {text!r} is out of range (taut takes magnitudes up to {MAX_MAGNITUDE:g} in SI units)")
     return value
 
 
@@ -78,3 +84,46 @@ def default_pose(robot: Robot) -> np.ndarray:
     from taut.kinematics.forward import default_guess
 
     return default_guess(robot)
+
+
+def positive(value: float, what: str, *, largest: float = math.inf) -> float:
+    """A finite value ``0 < value <= largest`` of a numeric option, or a :class:`TautError`."""
+    if not (math.isfinite(value) and 0 < value <= largest):
+        bound = "" if math.isinf(largest) else f" and at most {largest:g}"
+        raise TautError(f"{what} must be a finite number greater than 0{bound}, got {value!r}")
+    return value
+
+
+def output_file(text: str | None, what: str, suffixes: Collection[str] | None = None) -> Path | None:
+    """The path of an output option, checked before any computation: a file (not a
+    directory) in an existing, writable directory, with one of ``suffixes`` if given.  The
+    file is written at exactly this path."""
+    if text is None:
+        return None
+    path = Path(text)
+    if suffixes is not None and path.suffix.lower() not in suffixes:
+        raise TautError(f"{what}: {text!r} must end in one of {', '.join(sorted(suffixes))}")
+    if not path.name or path.is_dir():
+        raise TautError(f"{what}: {text!r} is a directory; give a file name")
+    parent = path.parent
+    if not parent.is_dir():
+        raise TautError(f"{what}: the directory {str(parent)!r} does not exist")
+    existed = path.exists()
+    try:
+        # opening for append is the one reliable test (read-only mounts, /proc, permissions)
+        with path.open("a"):
+            pass
+    except OSError as exc:
+        raise TautError(f"{what}: cannot write {text!r}: {exc.strerror or exc}") from None
+    if not existed:
+        os.unlink(path)
+    return path
+
+
+def plot_file(text: str | None) -> Path | None:
+    """``--plot FILE``: :func:`output_file` with a suffix matplotlib writes (png, pdf, svg, ...)."""
+    if text is None:
+        return None
+    from matplotlib.figure import Figure
+
+    return output_file(text, "--plot", {f".{k}" for k in Figure().canvas.get_supported_filetypes()})

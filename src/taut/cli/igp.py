@@ -4,7 +4,17 @@ an error."""
 
 from __future__ import annotations
 
-from taut.errors import CableSetError, PoseError
+import argparse
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from taut.errors import CableSetError, PoseError, TautError
+
+if TYPE_CHECKING:
+    from rich.console import Console
+
+    from taut.cli.main import Command
 
 HELP = """With the cables of --taut taut (m of them, 2 <= m <= 6) only m pose coordinates
 can be assigned: give them with --fix (names x, y, z and the robot's angle names, e.g.
@@ -33,10 +43,10 @@ def _assigned(text: str) -> dict[str, float]:
     bare = [name for name, v in values.items() if v is None]
     if bare:
         raise PoseError(f"--fix: give a value to {', '.join(bare)} (e.g. {bare[0]}=0.1)")
-    return values
+    return {name: v for name, v in values.items() if v is not None}
 
 
-def _box(text: str | None):
+def _box(text: str | None) -> tuple[np.ndarray, np.ndarray] | None:
     if text is None:
         return None
     from taut.cli import args as A
@@ -47,10 +57,12 @@ def _box(text: str | None):
     return v[:3], v[3:]
 
 
-def cmd_igp(ns) -> int:
+def cmd_igp(ns: argparse.Namespace) -> int:
     from taut.cli.main import console, emit, load
     from taut.dgp import solve_igp
 
+    if ns.max_boxes < 1:
+        raise TautError(f"--max-boxes must be at least 1, got {ns.max_boxes}")
     robot = load(ns.robot)
     cables = _cables(ns.taut)
     res = solve_igp(robot, cables, _assigned(ns.fix), box=_box(ns.box), max_boxes=ns.max_boxes)
@@ -65,7 +77,7 @@ def cmd_igp(ns) -> int:
         "elapsed_s": res.elapsed_s,
     }
 
-    def tables(con, d):
+    def tables(con: Console, d: dict) -> None:
         from rich.table import Table
 
         free = [k for k, name in enumerate(robot.pose_names[:6]) if name not in res.assigned]
@@ -97,7 +109,7 @@ def cmd_igp(ns) -> int:
                     f"[yellow]solution {k}: cables {list(s.length_violations)} are outside their length bounds[/]"
                 )
 
-    def human(d):
+    def human(d: dict) -> None:
         con = console()
         fixed = ", ".join(f"{k}={v:.6g}" for k, v in res.assigned.items())
         con.print(
@@ -118,9 +130,7 @@ def cmd_igp(ns) -> int:
     return 0
 
 
-def register(command) -> None:
-    import argparse
-
+def register(command: Command) -> None:
     c = command("igp", "pose, tensions and lengths for chosen taut cables (inverse geometrico-static problem)", cmd_igp)
     c.description = HELP
     c.formatter_class = argparse.RawDescriptionHelpFormatter
