@@ -11,6 +11,7 @@ import sys
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import NamedTuple
 
 import pytest
 
@@ -54,3 +55,29 @@ def run_taut(*argv: str, timeout: float = 600, cwd: Path | None = None, stdin: s
 def taut_cli() -> Callable[..., Run]:
     """``taut_cli("ik", "planar-4cable", "--json")`` runs ``python -m taut ...`` and returns a :class:`Run`."""
     return run_taut
+
+
+class Output(NamedTuple):
+    out: str
+    err: str
+
+
+class Session:
+    """Commands run one after another in subprocesses: ``main(argv)`` returns the exit status
+    and ``readouterr()`` the last command's ``(out, err)``, as pytest's ``capsys`` would."""
+
+    def __init__(self) -> None:
+        self.last = Run(0, "", "")
+
+    def main(self, argv: list[str]) -> int:
+        self.last = run_taut(*argv)
+        return self.last.code
+
+    def readouterr(self) -> Output:
+        return Output(self.last.out, self.last.err)
+
+
+@pytest.fixture
+def cli() -> Session:
+    """``cli.main([...])`` then ``cli.readouterr()``: :class:`Session`."""
+    return Session()

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import argparse
 import math
 import os
 import re
@@ -127,3 +128,19 @@ def plot_file(text: str | None) -> Path | None:
     from matplotlib.figure import Figure
 
     return output_file(text, "--plot", {f".{k}" for k in Figure().canvas.get_supported_filetypes()})
+
+
+#: Most local worker processes: more than this many per core only thrashes.
+WORKERS_PER_CPU = 4
+
+
+def worker_count(text: str) -> int:
+    """``--workers N`` (an argparse ``type``): 1 to :data:`WORKERS_PER_CPU` per CPU."""
+    largest = WORKERS_PER_CPU * (os.cpu_count() or 1)
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number of processes, got {text!r}") from None
+    if not 1 <= n <= largest:
+        raise argparse.ArgumentTypeError(f"expected 1 to {largest} processes on this machine, got {n}")
+    return n

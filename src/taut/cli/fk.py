@@ -84,6 +84,6 @@ def register(command: Command) -> None:
     c.add_argument(
         "--max-taut", type=int, default=None, metavar="K", help="largest number of taut cables (default min(n, 6))"
     )
-    c.add_argument("--workers", type=int, default=1, help="local worker processes")
+    c.add_argument("--workers", type=A.worker_count, default=1, help="local worker processes")
     c.add_argument("--scheduler", default=None, metavar="ADDRESS", help="dask.distributed scheduler tcp://HOST:PORT")
     c.add_argument("--plot", metavar="FILE.png", help="the robot in every equilibrium found")

@@ -330,7 +330,7 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--orientation", help="fixed platform orientation (theta, or a,b,c) and joint coordinates")
     c.add_argument("--out", metavar="FILE.npz", help="save poses and verdicts")
     c.add_argument("--plot", metavar="FILE.png", help="plot the workspace")
-    c.add_argument("--workers", type=int, default=None, help="local worker processes")
+    c.add_argument("--workers", type=A.worker_count, default=None, help="local worker processes")
     c.add_argument("--scheduler", metavar="ADDRESS", help="dask.distributed scheduler, e.g. tcp://host:8786")
 
     c = command("demo", "run taut on the built-in robots and write an HTML report", cmd_demo, robot=False)
