@@ -25,6 +25,7 @@ LAYERS = {
     "viz": 7,
     "demo": 8,
     "cli": 9,
+    "__main__": 10,
 }
 
 

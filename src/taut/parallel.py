@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import multiprocessing
 import operator
+import re
 import weakref
 from abc import ABC, abstractmethod
 from collections.abc import Callable, Iterable
@@ -170,6 +171,43 @@ class DaskExecutor(Executor):
         return f"<DaskExecutor {addr}>"
 
 
+_ADDRESS = re.compile(r"^(?:(?P<scheme>[a-z]+)://)?(?P<host>\[[0-9a-fA-F:.]+\]|[^\s/:\[\]]+):(?P<port>\d{1,5})$")
+
+
+def _check_address(address: str, timeout: float) -> None:
+    """Refuse an address that is not ``[SCHEME://]HOST:PORT``; for ``tcp`` check within
+    ``timeout`` seconds that a dask scheduler listens there.
+
+    A dask scheduler speaks first: on connection it sends its handshake, a frame whose
+    first 8 bytes are a little-endian length.  Anything else (an HTTP server, an SSH
+    daemon) would leave ``distributed.Client`` reading a frame that never ends, so the
+    whole exchange is bounded here, before a client exists."""
+    import socket
+    import struct
+
+    m = _ADDRESS.match(address)
+    if m is None or not 0 < int(m["port"]) < 65536:
+        raise TautError(f"scheduler address must look like tcp://HOST:PORT, got {address!r}")
+    if (m["scheme"] or "tcp") != "tcp":
+        return
+    host = m["host"].strip("[]")
+    try:
+        with socket.create_connection((host, int(m["port"])), timeout=timeout) as sock:
+            sock.settimeout(timeout)
+            head = b""
+            while len(head) < 8:
+                chunk = sock.recv(8 - len(head))
+                if not chunk:
+                    break
+                head += chunk
+    except TimeoutError:
+        raise TautError(f"no dask scheduler answered at {address} within {timeout:g} s") from None
+    except OSError as exc:
+        raise TautError(f"cannot reach the dask scheduler at {address} ({exc.strerror or exc})") from None
+    if len(head) < 8 or struct.unpack("<Q", head)[0] >= 1 << 32:
+        raise TautError(f"the server at {address} is not a dask scheduler")
+
+
 def _dask_client(scheduler: object, timeout: float) -> tuple[Client, bool]:
     try:
         from distributed import Client
@@ -186,6 +224,7 @@ def _dask_client(scheduler: object, timeout: float) -> tuple[Client, bool]:
                 f"scheduler must be an address such as tcp://host:8786 or a distributed.Client, got {scheduler!r}"
             )
         address = scheduler.strip()
+        _check_address(address, timeout)
     try:
         client = Client(address, timeout=timeout, set_as_default=False)
     except (OSError, TimeoutError, ValueError) as exc:

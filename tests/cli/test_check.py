@@ -5,20 +5,19 @@ import json
 import pytest
 
 import taut
-from taut.cli.main import main
 from taut.collision import trajectory_poses
 
 ROBOT = taut.example("adjustable-8cable")
 
 
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
+def run(cli, *argv):
+    code = cli.main(list(argv))
+    out, err = cli.readouterr()
     return code, out, err
 
 
-def test_builtin_trajectory_json(capsys):
-    code, out, err = run(capsys, "check", "adjustable-8cable", "--trajectory", "sim-d", "--json")
+def test_builtin_trajectory_json(cli):
+    code, out, err = run(cli, "check", "adjustable-8cable", "--trajectory", "sim-d", "--json")
     assert code == 0, err
     data = json.loads(out)
     steps = data["steps"]
@@ -29,23 +28,23 @@ def test_builtin_trajectory_json(capsys):
     assert data["summary"]["first_collision"] == 28
 
 
-def test_sim_b_singular_steps_and_plot(capsys, tmp_path):
+def test_sim_b_singular_steps_and_plot(cli, tmp_path):
     png = tmp_path / "b.png"
-    code, out, err = run(capsys, "check", "adjustable-8cable", "--trajectory", "sim-b", "--json", "--plot", str(png))
+    code, out, err = run(cli, "check", "adjustable-8cable", "--trajectory", "sim-b", "--json", "--plot", str(png))
     assert code == 0, err
     data = json.loads(out)
     assert data["summary"]["force_closure_singular_steps"] == [[126, 201]]
     assert png.stat().st_size > 10_000
 
 
-def test_human_output(capsys):
-    code, out, err = run(capsys, "check", "adjustable-8cable", "--trajectory", "sim-c")
+def test_human_output(cli):
+    code, out, err = run(cli, "check", "adjustable-8cable", "--trajectory", "sim-c")
     assert code == 0, err
     assert "first collision at step 71" in out
 
 
 @pytest.mark.parametrize("fmt", ["csv", "yaml", "json", "waypoints"])
-def test_trajectory_files(capsys, tmp_path, fmt):
+def test_trajectory_files(cli, tmp_path, fmt):
     poses = trajectory_poses(ROBOT, "sim-c")
     if fmt == "csv":
         f = tmp_path / "t.csv"
@@ -59,7 +58,7 @@ def test_trajectory_files(capsys, tmp_path, fmt):
     else:
         f = tmp_path / "w.yaml"
         f.write_text("waypoints: [[5, 5, 5, 0, 0, 0, 2], [5, 5, 5, 0.39269908169872414, 0, 0, 2]]\nsteps: [100]\n")
-    code, out, err = run(capsys, "check", "adjustable-8cable", "--trajectory", str(f), "--json")
+    code, out, err = run(cli, "check", "adjustable-8cable", "--trajectory", str(f), "--json")
     assert code == 0, err
     assert json.loads(out)["summary"]["first_collision"] == 71
 
@@ -75,22 +74,22 @@ def test_trajectory_files(capsys, tmp_path, fmt):
         ("{not yaml", ".yaml", "not valid"),
     ],
 )
-def test_bad_trajectory_files_exit_2(capsys, tmp_path, content, suffix, message):
+def test_bad_trajectory_files_exit_2(cli, tmp_path, content, suffix, message):
     f = tmp_path / f"bad{suffix}"
     f.write_text(content)
-    code, out, err = run(capsys, "check", "adjustable-8cable", "--trajectory", str(f))
+    code, out, err = run(cli, "check", "adjustable-8cable", "--trajectory", str(f))
     assert code == 2 and message in err and "Traceback" not in err
 
 
-def test_unknown_trajectory_exit_2(capsys):
-    code, out, err = run(capsys, "check", "adjustable-8cable", "--trajectory", "sim-z")
+def test_unknown_trajectory_exit_2(cli):
+    code, out, err = run(cli, "check", "adjustable-8cable", "--trajectory", "sim-z")
     assert code == 2 and "sim-a" in err
 
 
-def test_other_robots_with_a_pose_file(capsys, tmp_path):
+def test_other_robots_with_a_pose_file(cli, tmp_path):
     f = tmp_path / "p.csv"
     f.write_text("0.1,0.0,0.2,0,0,0\n0.0,0.1,0.0,0,0,0.1\n")
-    code, out, err = run(capsys, "check", "spatial-8cable", "--trajectory", str(f), "--json")
+    code, out, err = run(cli, "check", "spatial-8cable", "--trajectory", str(f), "--json")
     assert code == 0, err
     assert len(json.loads(out)["steps"]) == 2
 

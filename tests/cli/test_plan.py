@@ -5,14 +5,12 @@ import json
 import numpy as np
 import pytest
 
-from taut.cli.main import main
-
 SLICE = "x=0,y=0,z=2,sigma=35deg"
 
 
-def test_plan_q1_q2_json_csv_plot(capsys, tmp_path):
+def test_plan_q1_q2_json_csv_plot(cli, tmp_path):
     csv, png = tmp_path / "p.csv", tmp_path / "p.png"
-    code = main(
+    code = cli.main(
         [
             "plan",
             "robocrane",
@@ -29,7 +27,7 @@ def test_plan_q1_q2_json_csv_plot(capsys, tmp_path):
             "--json",
         ]
     )
-    out, err = capsys.readouterr()
+    out, err = cli.readouterr()
     assert code == 0, err
     d = json.loads(out)
     assert d["found"] and d["verified"] and d["charts"] > 1 and d["elapsed_s"] > 0
@@ -42,9 +40,9 @@ def test_plan_q1_q2_json_csv_plot(capsys, tmp_path):
     assert png.stat().st_size > 1000
 
 
-def test_plan_human_output(capsys):
-    assert main(["plan", "robocrane", "--start", "q1", "--goal", "q2", "--fix", SLICE]) == 0
-    assert "independent check: feasible" in capsys.readouterr().out
+def test_plan_human_output(cli):
+    assert cli.main(["plan", "robocrane", "--start", "q1", "--goal", "q2", "--fix", SLICE]) == 0
+    assert "independent check: feasible" in cli.readouterr().out
 
 
 @pytest.mark.parametrize(
@@ -58,25 +56,26 @@ def test_plan_human_output(capsys):
         ["--start", "q1", "--goal", "q2", "--wrench-ellipsoid", "-1"],
     ],
 )
-def test_plan_bad_input_exit_2(capsys, argv):
-    assert main(["plan", "robocrane", *argv]) == 2
-    assert "taut: error:" in capsys.readouterr().err
+def test_plan_bad_input_exit_2(cli, argv):
+    assert cli.main(["plan", "robocrane", *argv]) == 2
+    assert "taut: error:" in cli.readouterr().err
 
 
-def test_plan_needs_a_hexapod(capsys):
-    assert main(["plan", "suspended-3cable", "--start", "0,0,0,0,0,0", "--goal", "0,0,0,0,0,0"]) == 2
+def test_plan_needs_a_hexapod(cli):
+    assert cli.main(["plan", "suspended-3cable", "--start", "0,0,0,0,0,0", "--goal", "0,0,0,0,0,0"]) == 2
 
 
-def test_plan_q3_q4_and_a_proof_of_no_path(capsys):
+def test_plan_q3_q4_and_a_proof_of_no_path(cli):
     assert (
-        main(["plan", "robocrane", "--start", "q3", "--goal", "q4", "--fix", SLICE, "--radius", "0.3", "--json"]) == 0
+        cli.main(["plan", "robocrane", "--start", "q3", "--goal", "q4", "--fix", SLICE, "--radius", "0.3", "--json"])
+        == 0
     )
-    d = json.loads(capsys.readouterr().out)
+    d = json.loads(cli.readouterr().out)
     assert d["found"] and d["verified"] and d["length"] > 4
     # two islands of the slice (tests/planning/test_robocrane.py): the atlas of the start's
     # component completes inside the angle window φ ∈ [−π, π], θ ∈ [0, π]
     assert (
-        main(
+        cli.main(
             [
                 "plan",
                 "robocrane",
@@ -93,5 +92,5 @@ def test_plan_q3_q4_and_a_proof_of_no_path(capsys):
         )
         == 0
     )
-    d = json.loads(capsys.readouterr().out)
+    d = json.loads(cli.readouterr().out)
     assert not d["found"] and d["exhausted"] and d["path"] == [] and d["charts"] == d["expanded"]

@@ -2,13 +2,18 @@
 
 from __future__ import annotations
 
+import argparse
 import math
+import os
 import re
+from collections.abc import Collection
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from taut.errors import PoseError, TautError
+from taut.model.limits import MAX_MAGNITUDE
 
 if TYPE_CHECKING:
     from taut.model.robot import Robot
@@ -34,6 +39,8 @@ def number(text: str, what: str) -> float:
     value *= scale
     if not math.isfinite(value):
         raise TautError(f"{what}: {text!r} is not finite")
+    if abs(value) > MAX_MAGNITUDE:
+        raise TautError(f"{what}: {text!r} is out of range (taut takes magnitudes up to {MAX_MAGNITUDE:g} in SI units)")
     return value
 
 
@@ -82,3 +89,62 @@ def default_pose(robot: Robot) -> np.ndarray:
     from taut.kinematics.forward import default_guess
 
     return default_guess(robot)
+
+
+def positive(value: float, what: str, *, largest: float = math.inf) -> float:
+    """A finite value ``0 < value <= largest`` of a numeric option, or a :class:`TautError`."""
+    if not (math.isfinite(value) and 0 < value <= largest):
+        bound = "" if math.isinf(largest) else f" and at most {largest:g}"
+        raise TautError(f"{what} must be a finite number greater than 0{bound}, got {value!r}")
+    return value
+
+
+def output_file(text: str | None, what: str, suffixes: Collection[str] | None = None) -> Path | None:
+    """The path of an output option, checked before any computation: a file (not a
+    directory) in an existing, writable directory, with one of ``suffixes`` if given.  The
+    file is written at exactly this path."""
+    if text is None:
+        return None
+    path = Path(text)
+    if suffixes is not None and path.suffix.lower() not in suffixes:
+        raise TautError(f"{what}: {text!r} must end in one of {', '.join(sorted(suffixes))}")
+    if not path.name or path.is_dir():
+        raise TautError(f"{what}: {text!r} is a directory; give a file name")
+    parent = path.parent
+    if not parent.is_dir():
+        raise TautError(f"{what}: the directory {str(parent)!r} does not exist")
+    existed = path.exists()
+    try:
+        # opening for append is the one reliable test (read-only mounts, /proc, permissions)
+        with path.open("a"):
+            pass
+    except OSError as exc:
+        raise TautError(f"{what}: cannot write {text!r}: {exc.strerror or exc}") from None
+    if not existed:
+        os.unlink(path)
+    return path
+
+
+def plot_file(text: str | None) -> Path | None:
+    """``--plot FILE``: :func:`output_file` with a suffix matplotlib writes (png, pdf, svg, ...)."""
+    if text is None:
+        return None
+    from matplotlib.figure import Figure
+
+    return output_file(text, "--plot", {f".{k}" for k in Figure().canvas.get_supported_filetypes()})
+
+
+#: Most local worker processes: more than this many per core only thrashes.
+WORKERS_PER_CPU = 4
+
+
+def worker_count(text: str) -> int:
+    """``--workers N`` (an argparse ``type``): 1 to :data:`WORKERS_PER_CPU` per CPU."""
+    largest = WORKERS_PER_CPU * (os.cpu_count() or 1)
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number of processes, got {text!r}") from None
+    if not 1 <= n <= largest:
+        raise argparse.ArgumentTypeError(f"expected 1 to {largest} processes on this machine, got {n}")
+    return n

@@ -12,10 +12,15 @@ from __future__ import annotations
 
 import argparse
 import json
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from taut.errors import TautError
+
+if TYPE_CHECKING:
+    from taut.atlas.atlas import StructureAtlas
+    from taut.cli.main import Command
 
 HELP = """Build the structure atlas of a planar VSCR (one chart per reachable structure,
 Alg. 5.1) from a start point, and its workspace under a condition (Alg. 5.2).  For a
@@ -32,7 +37,7 @@ platform outline (platform.shape.polygon) hits no object, border or cable.
 JSON: {"charts", "edges", "theta", "reachable_area", "workspace_area", "pruned", "time"}."""
 
 
-def _chart_json(atlas, c) -> dict:
+def _chart_json(atlas: StructureAtlas, c: int) -> dict:
     C = atlas.charts[c]
     dom = C.domain
     return {
@@ -54,6 +59,8 @@ def cmd_atlas(ns: argparse.Namespace) -> int:
     from taut.cli.progress import progress_bar, wanted
     from taut.wrapping.state import contacts_text
 
+    out = A.output_file(ns.out, "--out")
+    plot = A.plot_file(ns.plot)
     robot = load(ns.robot)
     ref = None
     if robot.reference is not None and robot.reference.poses:
@@ -88,7 +95,7 @@ def cmd_atlas(ns: argparse.Namespace) -> int:
         "pruned": [c + 1 for c in ws.pruned],
         "time": time.perf_counter() - t0,
     }
-    if ns.out:
+    if out is not None:
         full = data | {
             "chart_list": [_chart_json(atlas, c) for c in range(len(atlas.charts))],
             "edge_list": [
@@ -102,13 +109,13 @@ def cmd_atlas(ns: argparse.Namespace) -> int:
                 for e in atlas.edges
             ],
         }
-        with open(ns.out, "w") as fh:
+        with open(out, "w") as fh:
             json.dump(full, fh, indent=1)
-        data["out"] = str(ns.out)
-    if ns.plot:
+        data["out"] = str(out)
+    if plot is not None:
         from taut.viz.atlas import plot_atlas
 
-        save_figure(plot_atlas(atlas, ws), ns.plot, data)
+        save_figure(plot_atlas(atlas, ws), plot, data)
 
     def human(d: dict) -> None:
         con = console()
@@ -126,7 +133,7 @@ def cmd_atlas(ns: argparse.Namespace) -> int:
     return 0
 
 
-def register(command) -> None:
+def register(command: Command) -> None:
     c = command("atlas", "structure atlas and workspace of a planar VSCR (rigid: one orientation page)", cmd_atlas)
     c.description = HELP
     c.formatter_class = argparse.RawDescriptionHelpFormatter

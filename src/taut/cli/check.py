@@ -12,10 +12,14 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from taut.errors import TautError
+
+if TYPE_CHECKING:
+    from taut.cli.main import Command
 
 HELP = """Check every step of a trajectory for cable/platform self-collision (capsule model),
 Jacobian singularity and force-closure singularity.
@@ -42,10 +46,12 @@ def _runs(flags: np.ndarray) -> list[list[int]]:
     return [[int(s) + 1, int(e) + 1] for s, e in zip(starts, ends)]
 
 
-def cmd_check(ns) -> int:
+def cmd_check(ns: argparse.Namespace) -> int:
+    from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
     from taut.collision import check_poses, load_trajectory, trajectory_poses
 
+    plot = A.plot_file(ns.plot)
     robot = load(ns.robot)
     spec = ns.trajectory
     if spec in robot.trajectories:
@@ -77,12 +83,12 @@ def cmd_check(ns) -> int:
         "summary": summary,
         "steps": res.steps(),
     }
-    if ns.plot:
+    if plot is not None:
         from taut.viz.check import plot_check
 
-        save_figure(plot_check(robot, res), ns.plot, data)
+        save_figure(plot_check(robot, res), plot, data)
 
-    def human(d):
+    def human(d: dict) -> None:
         con = console()
         s = d["summary"]
         con.print(
@@ -106,7 +112,7 @@ def cmd_check(ns) -> int:
     return 0
 
 
-def register(command) -> None:
+def register(command: Command) -> None:
     c = command("check", "self-collision and singularity check along a trajectory", cmd_check)
     c.description = HELP
     c.formatter_class = argparse.RawDescriptionHelpFormatter

@@ -6,21 +6,30 @@ used.  No equilibrium is an empty list, not an error."""
 from __future__ import annotations
 
 import argparse
-from collections.abc import Callable
+import sys
 
 from taut.cli import args as A
 from taut.cli.cables import cable_numbers, numbered
-from taut.cli.main import console, emit, load, save_figure
+from taut.cli.main import Command, console, emit, load, save_figure
 from taut.cli.progress import progress_bar, wanted
 from taut.errors import TautError
+
+HELP = """All equilibrium poses of the platform for given cable lengths, every one certified
+(interval branch-and-prune, Krawczyk).  A box too small to split that could be neither
+discarded nor certified (a near-singular solution) is counted in undecided_boxes: the list
+of equilibria is then possibly incomplete, JSON "complete" is false and a warning goes to
+stderr; the exit status stays 0, since the certified solutions are valid.
+JSON: {"robot", "solutions": [{"taut", "position", "orientation", "tensions", "stable", ...}],
+"complete", "subproblems", "undecided_boxes", "elapsed_s"}."""
 
 
 def cmd_fk(ns: argparse.Namespace) -> int:
     from taut.dgp import solve_dgp
     from taut.parallel import get_executor
 
+    plot = A.plot_file(ns.plot)
     robot = load(ns.robot)
-    lengths = A.vector(ns.lengths, "--lengths") if ns.lengths else None
+    lengths = A.vector(ns.lengths, "--lengths") if ns.lengths is not None else None
     if ns.max_taut is not None and ns.max_taut < 1:
         raise TautError(f"--max-taut must be at least 1, got {ns.max_taut}")
     with (
@@ -33,12 +42,19 @@ def cmd_fk(ns: argparse.Namespace) -> int:
         "solutions": [numbered(s.as_dict()) for s in res.solutions],
         "subproblems": res.subproblems,
         "undecided_boxes": res.undecided,
+        "complete": res.undecided == 0,
         "elapsed_s": res.elapsed_s,
     }
-    if ns.plot:
+    if plot is not None:
         from taut.viz.dgp import plot_equilibria
 
-        save_figure(plot_equilibria(robot, res.solutions), ns.plot, data)
+        save_figure(plot_equilibria(robot, res.solutions), plot, data)
+    if res.undecided:
+        print(
+            f"taut: warning: {res.undecided} boxes could not be certified (near-singular solutions): "
+            "the list of equilibria may be incomplete",
+            file=sys.stderr,
+        )
 
     def human(d: dict) -> None:
         from rich.table import Table
@@ -60,19 +76,19 @@ def cmd_fk(ns: argparse.Namespace) -> int:
                 "yes" if s.stable else "no",
             )
         con.print(t)
-        if res.undecided:
-            con.print(f"[yellow]{res.undecided} boxes could not be certified (near-singular solutions)[/]")
 
     emit(data, ns.json, human)
     return 0
 
 
-def register(command: Callable[..., argparse.ArgumentParser]) -> None:
+def register(command: Command) -> None:
     c = command("fk", "all equilibria for given cable lengths (direct geometrico-static problem)", cmd_fk)
+    c.description = HELP
+    c.formatter_class = argparse.RawDescriptionHelpFormatter
     c.add_argument("--lengths", help="cable lengths L1,...,Ln (default: the robot's reference lengths)")
     c.add_argument(
         "--max-taut", type=int, default=None, metavar="K", help="largest number of taut cables (default min(n, 6))"
     )
-    c.add_argument("--workers", type=int, default=1, help="local worker processes")
+    c.add_argument("--workers", type=A.worker_count, default=1, help="local worker processes")
     c.add_argument("--scheduler", default=None, metavar="ADDRESS", help="dask.distributed scheduler tcp://HOST:PORT")
     c.add_argument("--plot", metavar="FILE.png", help="the robot in every equilibrium found")

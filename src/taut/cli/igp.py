@@ -12,12 +12,16 @@ References
 from __future__ import annotations
 
 import argparse
-from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from taut.errors import CableSetError, PoseError
+from taut.errors import CableSetError, PoseError, TautError
+
+if TYPE_CHECKING:
+    from rich.console import Console
+
+    from taut.cli.main import Command
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -69,6 +73,8 @@ def cmd_igp(ns: argparse.Namespace) -> int:
     from taut.cli.progress import progress_bar, wanted
     from taut.dgp import solve_igp
 
+    if ns.max_boxes < 1:
+        raise TautError(f"--max-boxes must be at least 1, got {ns.max_boxes}")
     robot = load(ns.robot)
     cables = _cables(ns.taut)
     with progress_bar("igp (boxes)", wanted(ns.json)) as progress:
@@ -144,7 +150,7 @@ def cmd_igp(ns: argparse.Namespace) -> int:
     return 0
 
 
-def register(command: Callable[..., argparse.ArgumentParser]) -> None:
+def register(command: Command) -> None:
     c = command("igp", "pose, tensions and lengths for chosen taut cables (inverse geometrico-static problem)", cmd_igp)
     c.description = HELP
     c.formatter_class = argparse.RawDescriptionHelpFormatter

@@ -10,7 +10,10 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 from pathlib import Path
+from typing import TYPE_CHECKING, NoReturn
 
 import numpy as np
 
@@ -18,44 +21,65 @@ from taut.cli import args as A
 from taut.cli.progress import progress_bar, wanted
 from taut.errors import TautError
 
+if TYPE_CHECKING:
+    from types import ModuleType
+
+    from matplotlib.figure import FigureBase
+    from rich.console import Console
+    from rich.table import Table
+
+    from taut.model.robot import Robot
+
+#: ``command(name, help, fn, robot=True)``: adds a sub-command (see :func:`build_parser`).
+Command = Callable[..., argparse.ArgumentParser]
+
+#: Most poses of one ``workspace`` grid: beyond it the verdicts alone fill gigabytes.
+MAX_GRID_POSES = 10**9
+
 
 class _Parser(argparse.ArgumentParser):
-    def error(self, message):
+    def error(self, message: str) -> NoReturn:
         self.print_usage(sys.stderr)
         print(f"taut: error: {message}", file=sys.stderr)
         raise SystemExit(2)
 
 
-def load(spec: str):
+def load(spec: str) -> Robot:
     from taut.model import load_robot
 
     return load_robot(spec)
 
 
-def emit(data: dict, as_json: bool, human) -> None:
+def emit(data: dict, as_json: bool, human: Callable[[dict], None]) -> None:
+    """The result: one JSON document on stdout, or the human form.  Called last, after every
+    file of the command is written, so that a failure never follows printed output."""
     if as_json:
         print(json.dumps(data, indent=2, allow_nan=False))
     else:
         human(data)
 
 
-def save_figure(fig, path, data: dict | None = None) -> None:
-    """Write a figure of a ``--plot`` option and close it; record the path in ``data``."""
+def save_figure(fig: FigureBase, path: str | Path, data: dict | None = None) -> None:
+    """Write the figure of a ``--plot`` option (the whole figure a subfigure or an Axes'
+    ``.figure`` belongs to) and close it; record the path in ``data``."""
     import matplotlib.pyplot as plt
+    from matplotlib.figure import Figure
 
-    fig.savefig(path, dpi=110, bbox_inches="tight")
-    plt.close(fig)
+    root = fig if isinstance(fig, Figure) else fig.get_figure(root=True)
+    assert root is not None, "every figure belongs to a root figure"
+    root.savefig(path, dpi=110, bbox_inches="tight")
+    plt.close(root)
     if data is not None:
         data["plot"] = str(path)
 
 
-def console():
+def console() -> Console:
     from rich.console import Console
 
     return Console()
 
 
-def _matrix_table(title, rows, header):
+def _matrix_table(title: str, rows: Sequence[Sequence[str]], header: Sequence[str]) -> Table:
     from rich.table import Table
 
     t = Table(title=title)
@@ -73,7 +97,7 @@ def _fmt(x: float) -> str:
 # ---- commands --------------------------------------------------------------------
 
 
-def cmd_examples(ns) -> int:
+def cmd_examples(ns: argparse.Namespace) -> int:
     from taut.model import example_descriptions
 
     desc = example_descriptions()
@@ -86,18 +110,19 @@ def cmd_examples(ns) -> int:
     return 0
 
 
-def cmd_schema(ns) -> int:
+def cmd_schema(ns: argparse.Namespace) -> int:
     from taut.model.schema import schema_text
 
     sys.stdout.write(schema_text())
     return 0
 
 
-def cmd_ik(ns) -> int:
+def cmd_ik(ns: argparse.Namespace) -> int:
     from taut.kinematics import inverse_kinematics
 
+    plot = A.plot_file(ns.plot)
     robot = load(ns.robot)
-    pose = A.pose(robot, ns.pose) if ns.pose else A.default_pose(robot)
+    pose = A.pose(robot, ns.pose) if ns.pose is not None else A.default_pose(robot)
     ik = inverse_kinematics(robot, pose)
     data = {
         "robot": robot.name,
@@ -108,7 +133,7 @@ def cmd_ik(ns) -> int:
         "structure_matrix": ik.structure_matrix.tolist(),
     }
 
-    def human(d):
+    def human(d: dict) -> None:
         con = console()
         con.print(
             f"[bold]{robot.name}[/] at pose {', '.join(f'{n}={_fmt(v)}' for n, v in zip(robot.pose_names, pose))}"
@@ -123,21 +148,21 @@ def cmd_ik(ns) -> int:
         rows = [[f"{x:.4g}" for x in row] for row in W]
         con.print(_matrix_table("structure matrix W", rows, [str(i + 1) for i in range(W.shape[1])]))
 
-    if ns.plot:
+    if plot is not None:
         from taut.viz import draw_robot
 
-        save_figure(draw_robot(robot, pose).figure, ns.plot, data)
+        save_figure(draw_robot(robot, pose).figure, plot, data)
     emit(data, ns.json, human)
     return 0
 
 
-def cmd_tensions(ns) -> int:
+def cmd_tensions(ns: argparse.Namespace) -> int:
     from taut.statics.tension import distribute_tensions
 
     robot = load(ns.robot)
-    pose = A.pose(robot, ns.pose) if ns.pose else A.default_pose(robot)
+    pose = A.pose(robot, ns.pose) if ns.pose is not None else A.default_pose(robot)
     wrench = None
-    if ns.wrench:
+    if ns.wrench is not None:
         wrench = A.vector(ns.wrench, "--wrench")
         if wrench.size != robot.wrench_dim:
             raise TautError(
@@ -154,7 +179,7 @@ def cmd_tensions(ns) -> int:
         "method": res.method,
     }
 
-    def human(d):
+    def human(d: dict) -> None:
         con = console()
         if not feasible:
             why = (
@@ -171,36 +196,50 @@ def cmd_tensions(ns) -> int:
     return 0
 
 
-def _grid(text: str | None):
-    """``--grid N`` (points per axis) or ``lo:hi:n;lo:hi:n[;...]`` (one range per axis)."""
+def _grid(text: str | None, dimension: int) -> tuple[list[tuple[float, float, int]] | None, int | None]:
+    """``--grid N`` (points per axis) or ``lo:hi:n;lo:hi:n[;...]`` (one range per axis), with
+    at least one point per axis and at most :data:`MAX_GRID_POSES` poses in all."""
     if text is None:
         return None, None
     if text.strip().isdigit():
-        return None, int(text)
-    axes = []
-    for part in text.split(";"):
-        lo, hi, n = (part.split(":") + [None, None])[:3]
-        if n is None or not n.strip().isdigit():
-            raise TautError(f"--grid: expected N or lo:hi:n;lo:hi:n[;...], got {text!r}")
-        axes.append((A.number(lo, "--grid"), A.number(hi, "--grid"), int(n)))
-    return axes, None
+        n = int(text)
+        count = n**dimension
+        axes = None
+    else:
+        axes = []
+        for part in text.split(";"):
+            lo, hi, k = (part.split(":") + [None, None])[:3]
+            if lo is None or hi is None or k is None or not k.strip().isdigit() or len(k.strip()) > 9:
+                raise TautError(f"--grid: expected N or lo:hi:n;lo:hi:n[;...], got {text!r}")
+            axes.append((A.number(lo, "--grid"), A.number(hi, "--grid"), int(k)))
+        n = min(k for _, _, k in axes)
+        count = int(np.prod([float(k) for _, _, k in axes]))
+    if n < 1:
+        raise TautError(f"--grid: every axis needs at least one point, got {text!r}")
+    if count > MAX_GRID_POSES:
+        raise TautError(f"--grid: {text!r} makes {float(count):.3g} poses, more than {MAX_GRID_POSES:.0e}")
+    return axes, None if axes is not None else n
 
 
-def cmd_workspace(ns) -> int:
+def cmd_workspace(ns: argparse.Namespace) -> int:
     from taut.parallel import get_executor
     from taut.statics.wrench import BoxWrenchSet
     from taut.workspace import evaluate_workspace
 
+    out = A.output_file(ns.out, "--out", {".npz"})
+    plot = A.plot_file(ns.plot)
     robot = load(ns.robot)
-    grid, resolution = _grid(ns.grid)
-    orientation = A.vector(ns.orientation, "--orientation") if ns.orientation else None
+    grid, resolution = _grid(ns.grid, robot.dimension)
+    orientation = A.vector(ns.orientation, "--orientation") if ns.orientation is not None else None
     wrench_set = None
-    if ns.box:
+    if ns.box is not None:
         if ns.condition != "wrench-feasible":
             raise TautError("--box sets the wrench set of --condition wrench-feasible")
         half = A.vector(ns.box, "--box")
         if half.size != robot.wrench_dim:
             raise TautError(f"--box: {robot.name} takes {robot.wrench_dim} half-widths, got {half.size}")
+        if np.any(half < 0):
+            raise TautError(f"--box: half-widths must be >= 0, got {ns.box!r}")
         wrench_set = BoxWrenchSet.around(np.zeros(robot.wrench_dim), half)
     with (
         get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor,
@@ -217,15 +256,15 @@ def cmd_workspace(ns) -> int:
             progress=progress,
         )
     data = {"robot": robot.name, "condition": ns.condition} | res.summary()
-    if ns.out:
-        res.save(ns.out)
-        data["out"] = str(ns.out)
-    if ns.plot:
+    if out is not None:
+        res.save(out)
+        data["out"] = str(out)
+    if plot is not None:
         from taut.viz import plot_workspace
 
-        save_figure(plot_workspace(res, robot).figure, ns.plot, data)
+        save_figure(plot_workspace(res, robot).figure, plot, data)
 
-    def human(d):
+    def human(d: dict) -> None:
         console().print(
             f"{robot.name}: {d['condition']} workspace: {d['inside']} of {d['poses']} poses inside "
             f"({100 * d['fraction']:.1f} %), {d['elapsed_s']:.3f} s"
@@ -235,10 +274,15 @@ def cmd_workspace(ns) -> int:
     return 0
 
 
-def cmd_demo(ns) -> int:
+def cmd_demo(ns: argparse.Namespace) -> int:
     from taut.demo import run_demo
 
-    path = run_demo(Path(ns.out))
+    out = Path(ns.out)
+    if out.exists() and not out.is_dir():
+        raise TautError(f"--out: {ns.out!r} is a file; give a directory for the report")
+    if not out.parent.is_dir():
+        raise TautError(f"--out: the directory {str(out.parent)!r} does not exist")
+    path = run_demo(out)
     if ns.json:
         print(json.dumps({"report": str(path)}))
     else:
@@ -253,7 +297,9 @@ def build_parser() -> argparse.ArgumentParser:
     p = _Parser(prog="taut", description="Cable-driven parallel robots: kinematics, statics, workspaces.")
     sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
 
-    def command(name, help, fn, robot=True):
+    def command(
+        name: str, help: str, fn: Callable[[argparse.Namespace], int], robot: bool = True
+    ) -> argparse.ArgumentParser:
         c = sub.add_parser(name, help=help, description=help)
         if robot:
             c.add_argument("robot", help="robot file (YAML/JSON) or built-in example name (see `taut examples`)")
@@ -288,7 +334,7 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--orientation", help="fixed platform orientation (theta, or a,b,c) and joint coordinates")
     c.add_argument("--out", metavar="FILE.npz", help="save poses and verdicts")
     c.add_argument("--plot", metavar="FILE.png", help="plot the workspace")
-    c.add_argument("--workers", type=int, default=None, help="local worker processes")
+    c.add_argument("--workers", type=A.worker_count, default=None, help="local worker processes")
     c.add_argument("--scheduler", metavar="ADDRESS", help="dask.distributed scheduler, e.g. tcp://host:8786")
 
     c = command("demo", "run taut on the built-in robots and write an HTML report", cmd_demo, robot=False)
@@ -298,7 +344,7 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
-def _command_modules():
+def _command_modules() -> Iterator[ModuleType]:
     """The modules of ``taut.cli`` that add commands: each defines ``register(command)``,
     where ``command(name, help, fn, robot=True)`` returns a subparser with ROBOT and
     ``--json`` already added."""
@@ -314,13 +360,33 @@ def _command_modules():
                 yield module
 
 
+@contextmanager
+def _quiet_warnings() -> Iterator[None]:
+    """Library warnings (numba's, dask's, numpy's) are not messages for a user of the
+    command line: input that would cause them is refused with an error, and what is left is
+    noise on stderr.  Logging of third-party libraries is kept to errors, on stderr."""
+    import logging
+    import warnings
+
+    logging.basicConfig(level=logging.ERROR, stream=sys.stderr)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        yield
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     ns = parser.parse_args(argv)
     try:
-        return ns.fn(ns)
+        with _quiet_warnings():
+            code: int = ns.fn(ns)
+        return code
     except TautError as exc:
         print(f"taut: error: {exc}", file=sys.stderr)
+        return 2
+    except (MemoryError, RecursionError) as exc:
+        # input large or deep enough to exhaust the process: bad input, not a bug to report
+        print(f"taut: error: the input is too large to process ({type(exc).__name__})", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         print("taut: interrupted", file=sys.stderr)

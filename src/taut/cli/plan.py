@@ -11,11 +11,19 @@ References
 from __future__ import annotations
 
 import argparse
-from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from taut.errors import TautError
+
+if TYPE_CHECKING:
+    from taut.cli.main import Command
+    from taut.model.robot import Robot
+
+#: Smallest chart radius: the number of charts grows as radius^-k on a k-dimensional slice,
+#: and below this even a 2-D slice needs more charts than a search can visit.
+MIN_RADIUS = 1e-3
 
 HELP = """Plan a path along which the cables balance every wrench of the ellipsoid
 (w - w0)^T E (w - w0) <= 1 with tensions and lengths strictly inside their bounds
@@ -28,7 +36,7 @@ JSON: {"found", "path": [[x,y,z,phi,theta,sigma], ...], "charts", "elapsed_s",
 "min_tension_margin", "expanded", "exhausted", "length", "verified"}."""
 
 
-def _pose(robot, text: str, what: str) -> np.ndarray:
+def _pose(robot: Robot, text: str, what: str) -> np.ndarray:
     from taut.cli import args as A
 
     ref = robot.reference.poses if robot.reference is not None else {}
@@ -44,7 +52,11 @@ def _fixed(text: str | None, start: np.ndarray) -> dict[str, float]:
     from taut.cli import args as A
     from taut.planning.manifold import POSE_NAMES
 
-    values = A.assignments(text or "", "--fix")
+    if text is None:
+        return {}
+    values = A.assignments(text, "--fix")
+    if not values:
+        raise TautError(f"--fix: expected name=value,... (e.g. x=0,y=0,sigma=35deg), got {text!r}")
     for name in values:
         if name not in POSE_NAMES:
             raise TautError(f"--fix: unknown coordinate {name!r}; expected {', '.join(POSE_NAMES)}")
@@ -71,17 +83,26 @@ def _ellipsoid(text: str | None) -> np.ndarray:
 
 
 def cmd_plan(ns: argparse.Namespace) -> int:
+    from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
     from taut.cli.progress import progress_bar, wanted
     from taut.planning import plan_path
-    from taut.planning.manifold import WrenchFeasibleManifold
+    from taut.planning.manifold import POSE_NAMES, WrenchFeasibleManifold
     from taut.planning.verify import verify_path
 
+    out = A.output_file(ns.out, "--out")
+    plot = A.plot_file(ns.plot)
+    A.positive(ns.radius, "--radius")
+    if ns.radius < MIN_RADIUS:
+        raise TautError(f"--radius {ns.radius:g} is below {MIN_RADIUS:g}: the search could not cover the space")
+    if ns.max_charts < 1 or ns.subdivide < 1:
+        raise TautError("--max-charts and --subdivide must be at least 1")
     robot = load(ns.robot)
     start, goal = _pose(robot, ns.start, "--start"), _pose(robot, ns.goal, "--goal")
     fixed = _fixed(ns.fix, start)
-    if ns.radius <= 0 or ns.max_charts < 1 or ns.subdivide < 1:
-        raise TautError("--radius must be positive, --max-charts and --subdivide at least 1")
+    free = [n for n in POSE_NAMES if n not in fixed]
+    if plot is not None and len(free) < 2:
+        raise TautError("--plot draws a map of two free coordinates: fix at most four")
     M = WrenchFeasibleManifold.from_robot(robot, E=_ellipsoid(ns.wrench_ellipsoid), fixed=fixed)
     y0, y1 = M.lift(start), M.lift(goal)
     with progress_bar("plan (charts expanded)", wanted(ns.json)) as progress:
@@ -101,7 +122,7 @@ def cmd_plan(ns: argparse.Namespace) -> int:
         "verified": None,
         "fixed": fixed,
     }
-    poses = lo = hi = None
+    table = None  # the path's poses and extreme tensions, one row per pose
     if res.found:
         poses = M.pose(res.path)
         lo, hi = M.tension_range(res.path)
@@ -110,6 +131,7 @@ def cmd_plan(ns: argparse.Namespace) -> int:
         data.update(
             path=poses.tolist(), min_tension_margin=float(margin), length=res.length, verified=check.all_feasible
         )
+        table = np.hstack([poses, lo, hi])
 
     def human(d: dict) -> None:
         con = console()
@@ -126,24 +148,22 @@ def cmd_plan(ns: argparse.Namespace) -> int:
             why = "the start's component is exhausted" if d["exhausted"] else "the chart limit was reached"
             con.print(f"[bold]{robot.name}[/]: no path ({why}; {d['charts']} charts explored, {d['elapsed_s']:.3g} s)")
 
-    emit(data, ns.json, human)
-    if ns.out and poses is not None:
+    if out is not None and table is not None:
         head = ",".join(
             [*robot.pose_names, *(f"f_min_{i + 1}" for i in range(6)), *(f"f_max_{i + 1}" for i in range(6))]
         )
-        np.savetxt(ns.out, np.hstack([poses, lo, hi]), delimiter=",", header=head, comments="")
-    if ns.plot:
-        from taut.planning.manifold import POSE_NAMES
+        with open(out, "w") as fh:
+            np.savetxt(fh, table, delimiter=",", header=head, comments="")
+        data["out"] = str(out)
+    if plot is not None:
         from taut.viz.plan import plot_plan
 
-        free = [n for n in POSE_NAMES if n not in fixed]
-        if len(free) < 2:
-            raise TautError("--plot draws a map of two free coordinates: fix at most four")
-        save_figure(plot_plan(M, res, axes=tuple(free[:2])), ns.plot)
+        save_figure(plot_plan(M, res, axes=(free[0], free[1])), plot, data)
+    emit(data, ns.json, human)
     return 0
 
 
-def register(command: Callable[..., argparse.ArgumentParser]) -> None:
+def register(command: Command) -> None:
     c = command("plan", "wrench-feasible path between two configurations (cable hexapods)", cmd_plan)
     c.description = HELP
     c.formatter_class = argparse.RawDescriptionHelpFormatter

@@ -9,15 +9,20 @@ References
 
 from __future__ import annotations
 
+import argparse
 import json
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from taut.errors import TautError
 
+if TYPE_CHECKING:
+    from taut.cli.main import Command
 
-def _read_waypoints(spec: str, robot):
+
+def _read_waypoints(spec: str) -> tuple[str | None, np.ndarray | None]:
     """``builtin`` / ``builtin:NAME`` (the robot's trajectories) or a file: JSON/YAML list
     of waypoints, or text with one waypoint per line (commas or spaces)."""
     if spec == "builtin" or spec.startswith("builtin:"):
@@ -25,12 +30,21 @@ def _read_waypoints(spec: str, robot):
     path = Path(spec)
     if not path.is_file():
         raise TautError(f"--waypoints: no such file {spec!r} (or write 'builtin')")
-    text = path.read_text()
+    if path.stat().st_size > 16 << 20:
+        raise TautError(f"--waypoints {spec}: larger than 16 MiB")
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise TautError(f"--waypoints {spec}: cannot read the file: {exc}") from None
     try:
         if path.suffix.lower() in (".json", ".yaml", ".yml"):
             import yaml
 
-            data = yaml.safe_load(text)
+            try:
+                data = yaml.safe_load(text)
+            except yaml.YAMLError as exc:
+                problem = getattr(exc, "problem", None) or "not valid YAML/JSON"
+                raise TautError(f"--waypoints {spec}: {problem}") from None
             data = data.get("waypoints", data) if isinstance(data, dict) else data
             W = np.asarray(data, dtype=float)
         else:
@@ -40,22 +54,28 @@ def _read_waypoints(spec: str, robot):
                 if ln.strip() and not ln.lstrip().startswith("#")
             ]
             W = np.asarray(rows, dtype=float)
-    except (ValueError, TypeError, AttributeError) as exc:
+    except (ValueError, TypeError, AttributeError, RecursionError) as exc:
         raise TautError(f"--waypoints {spec}: expected rows of numbers ({exc})") from None
     if W.ndim != 2 or len(W) < 1 or not np.isfinite(W).all():
         raise TautError(f"--waypoints {spec}: expected rows of finite numbers")
     return None, W
 
 
-def cmd_trajectory(ns) -> int:
+def cmd_trajectory(ns: argparse.Namespace) -> int:
+    from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
     from taut.wrapping.state import contacts_text
     from taut.wrapping.trajectory import DEFAULT_SPEED, builtin_trajectory, full_poses, run_trajectory, sample_waypoints
 
+    out = A.output_file(ns.out, "--out")
+    plot = A.plot_file(ns.plot)
     robot = load(ns.robot)
-    if not ns.dt > 0:
-        raise TautError(f"--dt must be > 0, got {ns.dt}")
-    name, W = _read_waypoints(ns.waypoints, robot)
+    A.positive(ns.dt, "--dt")
+    if ns.speed is not None:
+        A.positive(ns.speed, "--speed")
+    if ns.dwell is not None and not (np.isfinite(ns.dwell) and ns.dwell >= 0):
+        raise TautError(f"--dwell must be a finite number >= 0, got {ns.dwell!r}")
+    name, W = _read_waypoints(ns.waypoints)
     if W is None:
         t, P = builtin_trajectory(robot, name, dt=ns.dt, speed=ns.speed, dwell=ns.dwell)
     else:
@@ -67,7 +87,7 @@ def cmd_trajectory(ns) -> int:
     data["transitions"] = [e | {"cable": e["cable"] + 1, "object": e["object"] + 1} for e in data["transitions"]]
     data["times"] = res.times.tolist()
     data["length_controlled"] = res.controlled.tolist()
-    if ns.out:
+    if out is not None:
         n = robot.n_cables
         head = [
             "time",
@@ -77,19 +97,19 @@ def cmd_trajectory(ns) -> int:
             "feasible",
             *(f"state{i + 1}" for i in range(n)),
         ]
-        with open(ns.out, "w") as fh:
+        with open(out, "w") as fh:
             fh.write(",".join(head) + "\n")
             for s in range(len(t)):
                 states = [contacts_text(res.ik.contacts(s, i)) for i in range(n)]
                 vals = [t[s], *res.ik.poses[s], *res.lengths[s], *res.tensions[s]]
                 fh.write(",".join(f"{v:.9g}" for v in vals) + f",{int(res.feasible[s])}," + ",".join(states) + "\n")
-        data["out"] = str(ns.out)
-    if ns.plot:
+        data["out"] = str(out)
+    if plot is not None:
         from taut.viz.trajectory import plot_trajectory
 
-        save_figure(plot_trajectory(robot, res), ns.plot, data)
+        save_figure(plot_trajectory(robot, res), plot, data)
 
-    def human(d):
+    def human(d: dict) -> None:
         con = console()
         con.print(
             f"[bold]{robot.name}[/]: {d['samples']} samples over {d['duration']:.3g} s, "
@@ -109,7 +129,7 @@ def cmd_trajectory(ns) -> int:
     return 0
 
 
-def register(command) -> None:
+def register(command: Command) -> None:
     c = command("trajectory", "VSCR trajectory: wrapping cable states, lengths, transitions, tensions", cmd_trajectory)
     c.add_argument(
         "--waypoints",

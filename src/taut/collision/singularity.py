@@ -82,8 +82,9 @@ def positive_span_lp(W: npt.ArrayLike) -> np.ndarray:
         W = W[None]
     N, m, n = W.shape
     out = np.zeros(N, bool)
-    h = highspy.Highs()
-    h.setOptionValue("output_flag", False)
+    from taut.statics.highs import QuietHighs
+
+    h = QuietHighs()
     inf = highspy.kHighsInf
     for k in range(N):
         norms = np.linalg.norm(W[k], axis=0)

@@ -67,6 +67,7 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut.errors import SingularConfigurationError
 from taut.geometry.rotation import angles_from_matrix
 from taut.interval.expression import Expr, System, compile_system, compile_tape, const, variables
 from taut.interval.hc4 import evaluate_point
@@ -214,7 +215,10 @@ def _reference_choice(robot: Robot, taut: tuple[int, ...], gp: np.ndarray) -> tu
         if cost < best_cost - 1e-12:
             best, best_cost = triple, cost
     if best is None:
-        raise ValueError("the platform points are collinear: three reference points are needed")
+        raise SingularConfigurationError(
+            "the platform anchors are collinear or coincide: the platform's pose is not determined "
+            "by its cables (three non-collinear anchors are needed)"
+        )
     return [c[0] for c in best], np.array([c[1] for c in best])
 
 

@@ -8,6 +8,8 @@ positions, as cable numbers are shown to users) and what was expected.
 from __future__ import annotations
 
 import json
+import math
+import stat
 from pathlib import Path
 from typing import Any
 
@@ -16,6 +18,7 @@ from pydantic import ValidationError
 from pydantic_core import ErrorDetails
 
 from taut.errors import RobotFileError
+from taut.model.limits import MAX_MAGNITUDE
 from taut.model.robot import Robot
 
 
@@ -65,12 +68,45 @@ def validation_message(source: str, exc: ValidationError) -> str:
     return "\n".join(lines)
 
 
+#: Largest robot file read, in bytes: a robot of thousands of cables is a few hundred KiB.
+MAX_FILE_BYTES = 16 << 20
+
+#: Deepest nesting of lists and mappings in a robot file (the format needs about 6).
+MAX_DEPTH = 32
+
+
+def _check_values(data: object, source: str) -> None:
+    """Refuse nesting deeper than :data:`MAX_DEPTH` and finite numbers larger than
+    :data:`MAX_MAGNITUDE` (infinities are left to validation: ``.inf`` is a valid tension bound)."""
+    stack: list[tuple[object, str, int]] = [(data, "", 0)]
+    while stack:
+        value, field, depth = stack.pop()
+        if depth > MAX_DEPTH:
+            raise RobotFileError(f"{source}: nested more than {MAX_DEPTH} levels deep at {field or '(top level)'}")
+        if isinstance(value, dict):
+            stack.extend((v, f"{field}.{k}" if field else str(k), depth + 1) for k, v in value.items())
+        elif isinstance(value, list):
+            stack.extend((v, f"{field}[{i + 1}]", depth + 1) for i, v in enumerate(value))
+        elif isinstance(value, (int, float)) and not isinstance(value, bool):
+            too_large = (
+                abs(value) > MAX_MAGNITUDE
+                if isinstance(value, int)
+                else math.isfinite(value) and abs(value) > MAX_MAGNITUDE
+            )
+            if too_large:
+                raise RobotFileError(
+                    f"{source}: {field or '(top level)'}: {float(value):.3g} is out of range "
+                    f"(taut takes magnitudes up to {MAX_MAGNITUDE:g} in SI units)"
+                )
+
+
 def robot_from_dict(data: object, source: str = "<robot>") -> Robot:
     """Validate a parsed robot description."""
     if not isinstance(data, dict):
         raise RobotFileError(
             f"{source}: expected a mapping of robot fields at the top level, got {type(data).__name__}"
         )
+    _check_values(data, source)
     try:
         return Robot.model_validate(data)
     except ValidationError as exc:
@@ -82,20 +118,25 @@ def parse_robot(text: str, source: str = "<robot>", *, json_text: bool = False) 
 
     JSON is read by :mod:`json` (which knows ``Infinity`` for unbounded tensions), YAML by
     ``yaml.safe_load`` (where it is ``.inf``)."""
-    if json_text:
-        try:
-            data = json.loads(text)
-        except json.JSONDecodeError as exc:
-            raise RobotFileError(
-                f"{source}: not valid JSON at line {exc.lineno}, column {exc.colno}: {exc.msg}"
-            ) from None
-        return robot_from_dict(data, source)
     try:
-        data = yaml.safe_load(text)
-    except yaml.YAMLError as exc:
-        where = getattr(exc, "problem_mark", None)
-        at = f" at line {where.line + 1}, column {where.column + 1}" if where is not None else ""
-        raise RobotFileError(f"{source}: not valid YAML/JSON{at}: {getattr(exc, 'problem', exc)}") from None
+        if json_text:
+            try:
+                data = json.loads(text)
+            except json.JSONDecodeError as exc:
+                raise RobotFileError(
+                    f"{source}: not valid JSON at line {exc.lineno}, column {exc.colno}: {exc.msg}"
+                ) from None
+        else:
+            try:
+                data = yaml.safe_load(text)
+            except yaml.YAMLError as exc:
+                where = getattr(exc, "problem_mark", None)
+                at = f" at line {where.line + 1}, column {where.column + 1}" if where is not None else ""
+                raise RobotFileError(f"{source}: not valid YAML/JSON{at}: {getattr(exc, 'problem', exc)}") from None
+    except RecursionError:
+        raise RobotFileError(f"{source}: nested too deeply (at most {MAX_DEPTH} levels)") from None
+    except ValueError:  # an integer of thousands of digits: beyond Python's int conversion limit
+        raise RobotFileError(f"{source}: a number has too many digits to be read") from None
     return robot_from_dict(data, source)
 
 
@@ -109,7 +150,14 @@ def load_robot(spec: str | Path) -> Robot:
             return example(str(spec))
         raise RobotFileError(f"{spec}: no such file and not a built-in example (see `taut examples`)")
     try:
-        text = path.read_text(encoding="utf-8")
+        # a FIFO, a device or a directory would block or never end: only regular files are read
+        if not stat.S_ISREG(path.stat().st_mode):
+            raise RobotFileError(f"{path}: not a regular file")
+        with path.open("rb") as fh:
+            raw = fh.read(MAX_FILE_BYTES + 1)
+        if len(raw) > MAX_FILE_BYTES:
+            raise RobotFileError(f"{path}: larger than {MAX_FILE_BYTES >> 20} MiB: not a robot file")
+        text = raw.decode("utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         raise RobotFileError(f"{path}: cannot read the file: {exc}") from None
     return parse_robot(text, str(path), json_text=path.suffix.lower() == ".json")

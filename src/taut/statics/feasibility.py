@@ -425,10 +425,9 @@ def _highs() -> highspy.Highs:
     """One reused HiGHS instance per thread (dask workers may run several threads)."""
     h = getattr(_LOCAL, "highs", None)
     if h is None:
-        import highspy
+        from taut.statics.highs import QuietHighs
 
-        h = highspy.Highs()
-        h.setOptionValue("output_flag", False)
+        h = QuietHighs()
         _LOCAL.highs = h
     return h
 

@@ -73,6 +73,7 @@ import numpy.typing as npt
 from taut.errors import TautError
 from taut.kinematics.inverse import inverse_kinematics
 from taut.model.robot import Robot
+from taut.statics.highs import QuietHighs
 from taut.statics.wrench import external_wrench
 
 #: Relative equilibrium tolerance of a reported solution.
@@ -170,8 +171,7 @@ _S = highspy.HighsModelStatus
 
 
 def _new_highs() -> highspy.Highs:
-    h = highspy.Highs()
-    h.setOptionValue("output_flag", False)
+    h = QuietHighs()
     h.setOptionValue("presolve", "off")
     h.setOptionValue("primal_feasibility_tolerance", 1e-9)  # programs are scaled to order one
     return h

@@ -41,6 +41,18 @@ DWELL = 1.0
 #: Speed [m/s] used when a waypoint trajectory gives none (§6.2 prints none).
 DEFAULT_SPEED = 0.1
 
+#: Most samples of one trajectory: each carries a pose, lengths, tensions and cable states
+#: (about a kilobyte); at the default 0.01 s step this is close to three hours of motion.
+MAX_SAMPLES = 1_000_000
+
+
+def _check_samples(count: float, dt: float) -> None:
+    if not count <= MAX_SAMPLES:  # also refuses an infinite or NaN count
+        raise TautError(
+            f"sampling every {dt:g} s gives {count:.3g} samples, more than {MAX_SAMPLES:,}: choose a larger dt"
+        )
+
+
 #: Parametric paths of the source: name → (p(t) for an array t, t0, t1).
 PARAMETRIC = {
     "eq-4.12": (lambda t: np.column_stack([t, 1 + np.cos(2 * np.pi * t / 3)]), 0.0, 4.0),
@@ -61,6 +73,8 @@ def sample_waypoints(waypoints: npt.ArrayLike, speed: float, dwell: float, dt: f
         raise TautError("a trajectory needs at least one waypoint")
     if not (dt > 0 and speed > 0 and dwell >= 0):
         raise TautError(f"dt, speed must be > 0 and dwell >= 0, got dt={dt}, speed={speed}, dwell={dwell}")
+    moves = [float(np.linalg.norm(b[:2] - a[:2])) / speed if len(a) >= 2 else 0.0 for a, b in zip(W[:-1], W[1:])]
+    _check_samples(1 + len(W) * (dwell / dt + 1) + sum(d / dt + 1 for d in moves), dt)
     times, poses, t = [np.zeros(1)], [W[:1]], 0.0
 
     def hold(p: np.ndarray, duration: float) -> None:
@@ -72,9 +86,7 @@ def sample_waypoints(waypoints: npt.ArrayLike, speed: float, dwell: float, dt: f
             t += duration
 
     hold(W[0], dwell)
-    for a, b in zip(W[:-1], W[1:]):
-        dist = float(np.linalg.norm(b[:2] - a[:2])) if len(a) >= 2 else 0.0
-        duration = dist / speed
+    for a, b, duration in zip(W[:-1], W[1:], moves):
         k = max(1, math.ceil(duration / dt - 1e-9))
         s = np.arange(1, k + 1) / k
         times.append(t + duration * s)
@@ -90,6 +102,7 @@ def sample_path(
     """``(times, poses)`` of a parametric path ``path(t) -> (T, k)`` every ``dt``."""
     if not (dt > 0 and t1 >= t0):
         raise TautError(f"dt must be > 0 and t1 >= t0, got dt={dt}, t0={t0}, t1={t1}")
+    _check_samples((t1 - t0) / dt + 1, dt)
     k = max(1, math.ceil((t1 - t0) / dt - 1e-9))
     t = t0 + (t1 - t0) * np.arange(k + 1) / k
     return t, np.asarray(path(t), float)

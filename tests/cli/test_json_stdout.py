@@ -1,0 +1,175 @@
+"""``--json`` is one JSON document on stdout and nothing else, for every command and every
+method, condition and mode, with the solver, numba, dask and matplotlib all in play.
+
+Each case runs ``python -m taut`` in a subprocess, as a user or a pipe does (HiGHS writes its
+banner from C, where an in-process capture would not see it)."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from taut.statics.tension import METHODS
+from taut.workspace.conditions import CONDITIONS
+
+#: Asserts on the JSON document (and files in the temporary directory); a check written as
+#: one expression returns its truth instead.
+Check = Callable[[dict, Path], object]
+
+
+def _no_check(d: dict, tmp: Path) -> None:
+    assert isinstance(d, dict) and d
+
+
+def _tensions(method: str) -> Check:
+    def check(d: dict, tmp: Path) -> None:
+        assert d["method"] == method and d["feasible"] is True and d["status"] == "optimal"
+        tau = np.array(d["tensions"])
+        assert tau.shape == (8,) and np.all(tau >= 0)
+
+    return check
+
+
+def _workspace(condition: str) -> Check:
+    def check(d: dict, tmp: Path) -> None:
+        assert d["condition"] == condition and d["poses"] == 4**2
+        assert 0 <= d["inside"] <= d["poses"]
+
+    return check
+
+
+def _trajectory(d: dict, tmp: Path) -> None:
+    assert d["samples"] == len(d["times"]) > 1 and isinstance(d["tension_feasible"], bool)
+    assert (tmp / "t.csv").read_text().startswith("time,x,y")
+    assert (tmp / "t.png").stat().st_size > 1000
+
+
+def _ik(d: dict, tmp: Path) -> None:
+    u = np.array(d["directions"])
+    np.testing.assert_allclose(np.linalg.norm(u, axis=1), 1.0)
+    assert (tmp / "ik.png").stat().st_size > 1000 and d["plot"] == str(tmp / "ik.png")
+
+
+#: (id, argv, check); ``{tmp}`` in an argument is replaced by the test's temporary directory.
+CASES: list[tuple[str, list[str], Check]] = [
+    ("examples", ["examples"], lambda d, tmp: d["examples"] and d["examples"][0]["name"]),
+    ("schema", ["schema"], lambda d, tmp: d["type"] == "object"),
+    ("ik", ["ik", "planar-4cable", "--pose=0.1,0,5deg", "--plot", "{tmp}/ik.png"], _ik),
+    *(
+        (
+            f"tensions-{m}",
+            ["tensions", "spatial-8cable", "--pose", "0.1,0.1,0,0,0,0", "--method", m],
+            _tensions(m),
+        )
+        for m in METHODS
+    ),
+    (
+        "tensions-infeasible",
+        ["tensions", "planar-4cable", "--pose", "0,0,0", "--wrench", "0,1e6,0"],
+        lambda d, tmp: d["feasible"] is False and d["tensions"] is None,
+    ),
+    *(
+        (
+            f"workspace-{c}",
+            ["workspace", "planar-4cable", "--condition", c, "--grid", "4", "--orientation", "0"],
+            _workspace(c),
+        )
+        for c in CONDITIONS
+    ),
+    (
+        "workspace-out-plot",
+        ["workspace", "vscr-four-cable", "--condition", "static", "--grid", "4"]
+        + ["--out", "{tmp}/w.npz", "--plot", "{tmp}/w.png"],
+        lambda d, tmp: (tmp / "w.npz").is_file() and (tmp / "w.png").is_file() and d["out"].endswith("w.npz"),
+    ),
+    (
+        "fk",
+        ["fk", "suspended-3cable", "--max-taut", "2"],
+        # Table 4.3 of the thesis: no equilibrium with at most 2 taut cables, 6 sub-problems
+        lambda d, tmp: (
+            d["complete"] is True and d["undecided_boxes"] == 0 and d["solutions"] == [] and d["subproblems"] == 6
+        ),
+    ),
+    (
+        "igp",
+        ["igp", "suspended-3cable", "--taut", "3,1,2", "--fix", "x=2.7505,y=3.9798,z=5.5061"],
+        lambda d, tmp: len(d["solutions"]) == 4,
+    ),
+    (
+        "trajectory",
+        ["trajectory", "vscr-single-cable", "--out", "{tmp}/t.csv", "--plot", "{tmp}/t.png"],
+        _trajectory,
+    ),
+    *(
+        (
+            f"atlas-{c}",
+            ["atlas", "vscr-agriculture", "--start", "0,0.991", "--theta", "0", "--condition", c],
+            lambda d, tmp: d["charts"] >= 1 and d["reachable_area"] > 0,
+        )
+        for c in ("wrench-feasible", "wrench-closure", "static")
+    ),
+    *(
+        (
+            f"check-{m}",
+            ["check", "adjustable-8cable", "--trajectory", "sim-d", "--method", m],
+            lambda d, tmp: d["summary"]["poses"] == len(d["steps"]) > 0,
+        )
+        for m in ("fast", "lp")
+    ),
+    (
+        "plan",
+        ["plan", "robocrane", "--start", "q1", "--goal", "q2", "--fix", "x=0,y=0,z=2,sigma=35deg"]
+        + ["--out", "{tmp}/p.csv", "--plot", "{tmp}/p.png"],
+        lambda d, tmp: d["found"] and d["verified"] and (tmp / "p.csv").is_file() and (tmp / "p.png").is_file(),
+    ),
+]
+
+#: Commands whose JSON is checked elsewhere (``demo``: tests/cli/test_cli.py, a minute long).
+ELSEWHERE = {"demo"}
+
+
+def _commands() -> set[str]:
+    """The commands ``taut --help`` lists."""
+    out = subprocess.run([sys.executable, "-m", "taut", "--help"], capture_output=True, text=True, check=True).stdout
+    return set(re.search(r"\{([a-z,-]+)\}", out).group(1).split(","))
+
+
+def test_every_command_has_a_case():
+    assert _commands() == {argv[0] for _, argv, _ in CASES} | ELSEWHERE
+
+
+#: Cases of the quick suite: every command once, and the modes that run HiGHS (whose banner
+#: was the historical stdout pollution); the slow suite runs every case.
+QUICK = {
+    "examples",
+    "schema",
+    "ik",
+    "tensions-lp",
+    "tensions-qp",
+    "tensions-infeasible",
+    "workspace-wrench-feasible",
+    "workspace-out-plot",
+    "fk",
+    "igp",
+    "trajectory",
+    "atlas-wrench-feasible",
+    "check-lp",
+    "plan",
+}
+
+
+@pytest.mark.parametrize(
+    ("argv", "check"), [pytest.param(a, c, id=i, marks=() if i in QUICK else pytest.mark.slow) for i, a, c in CASES]
+)
+def test_stdout_is_json_alone(argv, check, taut_cli, tmp_path):
+    run = taut_cli(*(a.replace("{tmp}", str(tmp_path)) for a in argv), "--json")
+    assert run.code == 0, run.err
+    verdict = check(run.json(), tmp_path)
+    assert verdict is None or verdict, "the JSON fields are not as expected"
+    assert "Traceback" not in run.err and "Warning" not in run.err
