@@ -55,9 +55,10 @@ def test_simulation_b_force_closure_singular_from_step_126(sims):
 @pytest.mark.parametrize("name, step", [("sim-c", 71), ("sim-d", 28)])
 def test_first_self_collision(sims, name, step):
     r = sims[name]
-    assert r.first(r.collides) == step
+    assert r.first(r.collides) == step - 1  # 0-based pose index of the source's 1-based step
     assert r.proximity.collisions(step - 1) == [(0, 4), (3, 7)]  # cables 1 & 5 and 4 & 8
-    assert r.steps()[step - 1]["collisions"] == [[1, 5], [4, 8]]
+    assert r.steps()[step - 1]["index"] == step - 1
+    assert r.steps()[step - 1]["collisions"] == [[0, 4], [3, 7]]
     assert not r.force_closure_singular.any() and not r.jacobian_singular.any()
 
 

@@ -35,6 +35,11 @@ JSON: {"steps": [{"index", "collisions": [[i, j], ...], "jacobian_singular",
 "force_closure_singular", "min_clearance"}, ...], "summary": {...}}."""
 
 
+def _step(index: int | None) -> int | None:
+    """The 1-based step shown to users of a 0-based pose index."""
+    return None if index is None else index + 1
+
+
 def _runs(flags: np.ndarray) -> list[list[int]]:
     """1-based inclusive ranges of consecutive true flags."""
     idx = np.flatnonzero(flags)
@@ -64,13 +69,12 @@ def cmd_check(ns: argparse.Namespace) -> int:
             f"--trajectory: {spec!r} is neither a file nor a built-in trajectory of {robot.name} (built-in: {known})"
         )
     res = check_poses(robot, poses, method=ns.method)
-    first = res.first(res.problems)
     summary = {
         "poses": len(poses),
-        "first_collision": res.first(res.collides),
-        "first_jacobian_singular": res.first(res.jacobian_singular),
-        "first_force_closure_singular": res.first(res.force_closure_singular),
-        "first_problem": first,
+        "first_collision": _step(res.first(res.collides)),
+        "first_jacobian_singular": _step(res.first(res.jacobian_singular)),
+        "first_force_closure_singular": _step(res.first(res.force_closure_singular)),
+        "first_problem": _step(res.first(res.problems)),
         "collision_steps": _runs(res.collides),
         "jacobian_singular_steps": _runs(res.jacobian_singular),
         "force_closure_singular_steps": _runs(res.force_closure_singular),
@@ -81,7 +85,10 @@ def cmd_check(ns: argparse.Namespace) -> int:
         "trajectory": spec,
         "capsules": list(res.model.names),
         "summary": summary,
-        "steps": res.steps(),
+        "steps": [
+            r | {"index": r["index"] + 1, "collisions": [[i + 1, j + 1] for i, j in r["collisions"]]}
+            for r in res.steps()
+        ],
     }
     if plot is not None:
         from taut.viz.check import plot_check

@@ -197,17 +197,19 @@ class CheckResult:
         return self.collides | self.jacobian_singular | self.force_closure_singular
 
     def first(self, flags: np.ndarray) -> int | None:
-        """1-based step of the first true flag, or None."""
+        """0-based index of the first pose whose flag is true, or None."""
         idx = np.flatnonzero(flags)
-        return int(idx[0]) + 1 if idx.size else None
+        return int(idx[0]) if idx.size else None
 
     def steps(self) -> list[dict]:
-        """The per-step JSON records: 1-based ``index`` and capsule numbers in ``collisions``."""
+        """One record per pose: its 0-based ``index``, the 0-based capsule pairs in
+        ``collisions`` (cables first, as in :attr:`model`), the two singularity flags and the
+        smallest clearance (None where no pair is checked)."""
         clear = self.proximity.min_clearance
         return [
             {
-                "index": k + 1,
-                "collisions": [[i + 1, j + 1] for i, j in self.proximity.collisions(k)],
+                "index": k,
+                "collisions": [[i, j] for i, j in self.proximity.collisions(k)],
                 "jacobian_singular": bool(self.jacobian_singular[k]),
                 "force_closure_singular": bool(self.force_closure_singular[k]),
                 "min_clearance": float(clear[k]) if np.isfinite(clear[k]) else None,

@@ -63,7 +63,7 @@ def plot_check(robot: Robot, result: CheckResult, fig: Figure | None = None) -> 
     ax.set_xlim(0.5, N + 0.5)
     ax.legend(loc="best", fontsize=8)
     first = result.first(result.problems)
-    k = (first or 1) - 1
+    k = first or 0
     three_d = robot.dimension == 3
     rax = fig.add_subplot(1, 2, 2, projection="3d") if three_d else fig.add_subplot(1, 2, 2)
     draw_robot(robot, result.poses[k], ax=rax)
@@ -86,12 +86,12 @@ def check_section(report: Report) -> None:
     robot = example("adjustable-8cable")
     res = check_poses(robot, trajectory_poses(robot, "sim-c"))
     first = res.first(res.collides)
-    pairs = ", ".join(f"{i + 1} & {j + 1}" for i, j in res.proximity.collisions(first - 1)) if first else "none"
+    pairs = ", ".join(f"{i + 1} & {j + 1}" for i, j in res.proximity.collisions(first)) if first is not None else "none"
     text = (
         "Simulation c of Lieskovský 2020, §4.2.2: the adjustable platform (two bodies joined by a "
         "prismatic joint, 8 cables) rotates about x from 0 to π/8 in 100 steps with the joint retracted "
         f"(s23 = 2). Capsule model: cables of radius 0.1, the two rectangles and the joint column. First "
-        f"self-collision at step {first} between cables {pairs} (the source reports step 71, cables 1 & 5 and "
+        f"self-collision at step {None if first is None else first + 1} between cables {pairs} (the source reports step 71, cables 1 & 5 and "
         f"4 & 8). Force-closure singular steps: {int(res.force_closure_singular.sum())}; Jacobian singular: "
         f"{int(res.jacobian_singular.sum())}."
     )
