@@ -1,19 +1,25 @@
-"""Every example of the README runs: python blocks are executed, console lines are run
-through the CLI entry point and must succeed."""
+"""Every example of the README and of docs/ runs: python blocks are executed, console lines
+are run as the user runs them (a real ``taut`` process) and must succeed, and YAML blocks are
+robot files that validate."""
 
 import re
 import shlex
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
 
-from taut.cli.main import main
+from taut.model import parse_robot
 
-README = (Path(__file__).parents[1] / "README.md").read_text()
-PYTHON = re.findall(r"```python\n(.*?)```", README, re.S)
+ROOT = Path(__file__).parents[1]
+README = (ROOT / "README.md").read_text()
+DOCS = README + "".join(p.read_text() for p in sorted((ROOT / "docs").glob("*.md")))
+PYTHON = re.findall(r"```python\n(.*?)```", DOCS, re.S)
+YAML = re.findall(r"```yaml\n(.*?)```", DOCS, re.S)
 CONSOLE = [
     line[2:]
-    for block in re.findall(r"```console\n(.*?)```", README, re.S)
+    for block in re.findall(r"```console\n(.*?)```", DOCS, re.S)
     for line in block.splitlines()
     if line.startswith("$ ")
 ]
@@ -31,8 +37,18 @@ def test_python_blocks(code, tmp_path, monkeypatch):
 
 
 @pytest.mark.parametrize("line", CONSOLE)
-def test_console_lines(line, capsys):
+def test_console_lines(line, tmp_path):
     argv = shlex.split(line)
     assert argv[0] == "taut"
-    assert main(argv[1:]) == 0, capsys.readouterr().err
-    assert capsys.readouterr().out.strip()
+    done = subprocess.run(
+        [sys.executable, "-m", "taut", *argv[1:]], capture_output=True, text=True, cwd=tmp_path, timeout=600
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip()
+    assert "Traceback" not in done.stderr
+
+
+@pytest.mark.parametrize("text", YAML, ids=[f"yaml-{i}" for i in range(len(YAML))])
+def test_yaml_blocks_are_valid_robot_files(text):
+    robot = parse_robot(text, "README")
+    assert robot.n_cables == text.count("- {exit:")
