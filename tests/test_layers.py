@@ -10,6 +10,7 @@ SRC = Path(__file__).parents[1] / "src" / "taut"
 #: Layer of each top-level module of taut; a module may import its own layer and below.
 LAYERS = {
     "errors": 0,
+    "lazy": 0,
     "geometry": 0,
     "interval": 0,
     "model": 1,

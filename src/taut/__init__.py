@@ -6,7 +6,6 @@ Layers (``docs/architecture.md`` §1): ``model`` → ``kinematics`` → ``static
 
 from __future__ import annotations
 
-from importlib import import_module
 from typing import TYPE_CHECKING
 
 from taut.errors import (
@@ -17,6 +16,7 @@ from taut.errors import (
     TautError,
     UnreachableLengthsError,
 )
+from taut.lazy import lazy_exports
 
 if TYPE_CHECKING:
     from taut.model import Robot, example, example_names, load_robot, save_robot
@@ -26,18 +26,6 @@ __version__ = "0.1.0"
 #: The model's names are imported on first use (PEP 562): ``import taut`` (and so every
 #: ``taut`` command) does not build the pydantic models until one needs a robot.
 _LAZY = dict.fromkeys(["Robot", "example", "example_names", "load_robot", "save_robot"], "taut.model")
-
-
-def __getattr__(name: str) -> object:
-    if name not in _LAZY:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(import_module(_LAZY[name]), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(__all__))
 
 
 __all__ = [
@@ -53,3 +41,5 @@ __all__ = [
     "load_robot",
     "save_robot",
 ]
+
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

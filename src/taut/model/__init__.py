@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from importlib import import_module
 from typing import TYPE_CHECKING
 
+from taut.lazy import lazy_exports
 from taut.model.examples import example, example_descriptions, example_names
 
 if TYPE_CHECKING:
@@ -50,18 +50,6 @@ _LAZY = {
 }
 
 
-def __getattr__(name: str) -> object:
-    if name not in _LAZY:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(import_module(_LAZY[name]), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(__all__))
-
-
 __all__ = [
     "Body",
     "Cable",
@@ -85,3 +73,5 @@ __all__ = [
     "robot_to_dict",
     "save_robot",
 ]
+
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

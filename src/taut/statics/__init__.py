@@ -3,9 +3,9 @@ equilibrium tests, tension distribution."""
 
 from __future__ import annotations
 
-from importlib import import_module
 from typing import TYPE_CHECKING
 
+from taut.lazy import lazy_exports
 from taut.statics.wrench import (
     BoxWrenchSet,
     EllipsoidWrenchSet,
@@ -32,18 +32,6 @@ _LAZY = {
 }
 
 
-def __getattr__(name: str) -> object:
-    if name not in _LAZY:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(import_module(_LAZY[name]), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(__all__))
-
-
 __all__ = [
     "BoxWrenchSet",
     "EllipsoidWrenchSet",
@@ -59,3 +47,5 @@ __all__ = [
     "distribute_tensions",
     "solve_tensions",
 ]
+
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)
