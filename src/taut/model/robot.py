@@ -80,6 +80,15 @@ class _DerivedArrays(dict[str, Any]):
     __hash__ = None  # a mutable cache, like dict
 
 
+def _inertia_matrix(values: tuple[float, ...]) -> np.ndarray:
+    """The symmetric tensor of ``Izz`` or of ``Ixx, Iyy, Izz, Ixy, Ixz, Iyz`` (MuJoCo's
+    ``fullinertia`` order)."""
+    if len(values) == 1:
+        return np.array([[values[0]]], dtype=float)
+    xx, yy, zz, xy, xz, yz = values
+    return np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]], dtype=float)
+
+
 def _check_bounds(v: tuple[float, float], what: str) -> tuple[float, float]:
     lo, hi = v
     if math.isnan(lo) or math.isnan(hi):
@@ -180,11 +189,17 @@ class Shape(_Strict):
 
 class Platform(_Strict):
     """The moving platform.  The external wrench is ``wrench`` (constant, fixed frame) plus
-    the weight ``mass·gravity``; both act at ``wrench_point`` (body frame)."""
+    the weight ``mass·gravity``; both act at ``wrench_point`` (body frame), which is also
+    the centre of mass that ``inertia`` is taken about."""
 
     kind: Literal["rigid", "point-mass"] = "rigid"
     wrench: tuple[Finite, ...] | None = None
     mass: Finite | None = Field(default=None, gt=0)
+    inertia: tuple[Finite, ...] | None = Field(
+        default=None,
+        description="rotational inertia about the centre of mass in the body frame [kg m²]: "
+        "Izz (planar), or Ixx, Iyy, Izz, Ixy, Ixz, Iyz (spatial)",
+    )
     gravity: tuple[Finite, ...] | None = None
     wrench_point: tuple[Coordinate, ...] | None = None
     shape: Shape | None = None
@@ -292,6 +307,18 @@ class Robot(_Strict):
         need(p.wrench, self.wrench_dim, "platform.wrench")
         need(p.gravity, d, "platform.gravity")
         need(p.wrench_point, d, "platform.wrench_point")
+        if p.inertia is not None:
+            if pm:
+                raise ValueError("platform.inertia: a point-mass platform has no rotational inertia")
+            if p.mass is None:
+                raise ValueError("platform.inertia is given without platform.mass")
+            need(p.inertia, 1 if d == 2 else 6, "platform.inertia")
+            tensor = _inertia_matrix(p.inertia)
+            # rounding leaves a singular tensor (a rod, a point) slightly negative
+            if np.linalg.eigvalsh(tensor).min() < -1e-12 * max(1.0, float(np.abs(tensor).max())):
+                raise ValueError(
+                    f"platform.inertia: not a positive semi-definite inertia tensor, got {list(p.inertia)}"
+                )
         if p.gravity is not None and p.mass is None:
             raise ValueError("platform.gravity is given without platform.mass")
         if pm and p.bodies:
@@ -422,6 +449,15 @@ class Robot(_Strict):
             "joint_limits",
             lambda: np.array([b.joint.limits for b in self.platform.bodies], dtype=float).reshape(-1, 2),
         )
+
+    @property
+    def inertia(self) -> np.ndarray | None:
+        """The platform's inertia tensor about its centre of mass in the body frame, ``(1, 1)``
+        planar or ``(3, 3)`` spatial [kg m²]; None when the file gives none."""
+        values = self.platform.inertia
+        if values is None:
+            return None
+        return self._derived("inertia", lambda: _inertia_matrix(values))
 
     @property
     def weight(self) -> np.ndarray:
