@@ -9,6 +9,7 @@ from taut.model.examples import example, example_descriptions, example_names
 
 if TYPE_CHECKING:
     from taut.model.io import load_robot, parse_robot, robot_from_dict, robot_to_dict, save_robot
+    from taut.model.mjcf import mjcf_text, pose_to_qpos, write_mjcf
     from taut.model.robot import (
         Body,
         Cable,
@@ -47,6 +48,7 @@ _LAZY = {
         "taut.model.robot",
     ),
     "robot_schema": "taut.model.schema",
+    **dict.fromkeys(["mjcf_text", "pose_to_qpos", "write_mjcf"], "taut.model.mjcf"),
 }
 
 
@@ -67,11 +69,14 @@ __all__ = [
     "example_descriptions",
     "example_names",
     "load_robot",
+    "mjcf_text",
     "parse_robot",
+    "pose_to_qpos",
     "robot_from_dict",
     "robot_schema",
     "robot_to_dict",
     "save_robot",
+    "write_mjcf",
 ]
 
 __getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)
