@@ -10,7 +10,6 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import taut
-from taut.errors import PoseError, UnsupportedRobotError
 from taut.geometry.rotation import CONVENTIONS, rotation_matrix
 from taut.kinematics import inverse_kinematics
 from taut.model import robot_from_dict, robot_to_dict
@@ -333,43 +332,3 @@ def test_quaternion_is_mujoco_rotation(angles, convention):
     assert np.isclose(np.linalg.norm(q), 1, atol=1e-15)
     assert q[0] >= 0
     assert np.allclose(out.reshape(3, 3), R, atol=1e-14)
-
-
-def adjust(name, **platform):
-    robot = taut.example(name)
-    return robot.model_copy(update={"platform": robot.platform.model_copy(update=platform)})
-
-
-@pytest.mark.parametrize(
-    "robot, words",
-    [
-        (taut.example("adjustable-8cable"), "platform.bodies"),
-        (taut.example("vscr-four-cable"), "obstacles"),
-        (taut.example("cogiro"), "no platform.mass"),
-        (taut.example("spatial-8cable"), "no platform.inertia"),
-        (adjust("cogiro", mass=1.0, inertia=(1, 1, 1, 0, 0, 0)), "platform.wrench"),
-        (adjust("spatial-8cable", inertia=(1, 1, 3, 0, 0, 0)), "A + B >= C"),
-        (adjust("spatial-8cable", inertia=(1, 1, 0, 0, 0, 0)), "singular"),
-        (adjust("planar-4cable", inertia=(0.0,)), "Izz"),
-    ],
-    ids=["jointed", "obstacles", "no mass", "no inertia", "wrench", "triangle", "singular", "planar zero"],
-)
-def test_unsupported_robots_are_refused_by_name(robot, words):
-    with pytest.raises(UnsupportedRobotError, match="cannot be written as a MuJoCo model") as err:
-        mjcf_text(robot)
-    assert words in str(err.value)
-
-
-def test_exit_pulleys_are_refused():
-    data = robot_to_dict(ROBOTS["planar point mass"]())
-    data["cables"][2]["pulley"] = {"radius": 0.02}
-    with pytest.raises(UnsupportedRobotError, match="cable 3 leaves an exit pulley"):
-        mjcf_text(robot_from_dict(data))
-
-
-def test_bad_poses_are_refused():
-    robot = ROBOTS["planar-4cable"]()
-    with pytest.raises(PoseError, match="3 coordinates"):
-        pose_to_qpos(robot, [0.0, 0.0])
-    with pytest.raises(PoseError, match="not finite"):
-        pose_to_qpos(robot, [0.0, math.nan, 0.0])

@@ -1,0 +1,66 @@
+"""Robots the MuJoCo model cannot hold exactly are refused by name, and bad poses are refused
+(no MuJoCo needed: these run without the optional extra)."""
+
+import math
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+import taut
+from taut.errors import PoseError, UnsupportedRobotError
+from taut.model import mjcf_text, pose_to_qpos, robot_from_dict, robot_to_dict
+
+
+def with_inertia(name, **platform):
+    robot = taut.example(name)
+    return robot.model_copy(update={"platform": robot.platform.model_copy(update=platform)})
+
+
+@pytest.mark.parametrize(
+    "robot, words",
+    [
+        (taut.example("adjustable-8cable"), "platform.bodies"),
+        (taut.example("vscr-four-cable"), "obstacles"),
+        (taut.example("cogiro"), "no platform.mass"),
+        (taut.example("spatial-8cable"), "no platform.inertia"),
+        (with_inertia("cogiro", mass=1.0, inertia=(1, 1, 1, 0, 0, 0)), "platform.wrench"),
+        (with_inertia("spatial-8cable", inertia=(1, 1, 3, 0, 0, 0)), "A + B >= C"),
+        (with_inertia("spatial-8cable", inertia=(1, 1, 0, 0, 0, 0)), "singular"),
+        (with_inertia("planar-4cable", inertia=(0.0,)), "Izz"),
+    ],
+    ids=["jointed", "obstacles", "no mass", "no inertia", "wrench", "triangle", "singular", "planar zero"],
+)
+def test_unsupported_robots_are_refused_by_name(robot, words):
+    with pytest.raises(UnsupportedRobotError, match="cannot be written as a MuJoCo model") as err:
+        mjcf_text(robot)
+    assert words in str(err.value)
+
+
+def test_exit_pulleys_are_refused():
+    data = robot_to_dict(with_inertia("planar-4cable", inertia=(0.01,)))
+    data["cables"][2]["pulley"] = {"radius": 0.02}
+    with pytest.raises(UnsupportedRobotError, match="cable 3 leaves an exit pulley"):
+        mjcf_text(robot_from_dict(data))
+
+
+def test_bad_poses_are_refused():
+    robot = with_inertia("planar-4cable", inertia=(0.01,))
+    with pytest.raises(PoseError, match="3 coordinates"):
+        pose_to_qpos(robot, [0.0, 0.0])
+    with pytest.raises(PoseError, match="not finite"):
+        pose_to_qpos(robot, [0.0, math.nan, 0.0])
+
+
+def test_planar_pose_is_qpos_and_the_text_names_every_cable():
+    robot = with_inertia("planar-4cable", inertia=(0.01,))
+    poses = np.array([[0.1, -0.2, 0.3], [0.0, 0.5, -1.0]])
+    assert np.array_equal(pose_to_qpos(robot, poses), poses)
+    root = ET.fromstring(mjcf_text(robot))
+    tendons = root.findall("./tendon/spatial")
+    assert [t.get("name") for t in tendons] == [f"cable{i}" for i in range(1, 5)]
+    assert [[s.get("site") for s in t] for t in tendons] == [[f"exit{i}", f"anchor{i}"] for i in range(1, 5)]
+    assert [a.get("tendon") for a in root.findall("./actuator/general")] == [t.get("name") for t in tendons]
+    assert root.find("./worldbody/body/inertial").get("diaginertia") == "0.005 0.005 0.01"
+    assert root.find("./option").get("gravity") == "0.0 -9.81 0.0"
+    assert math.isclose(float(root.find("./worldbody/body/inertial").get("mass")), 1.0)
