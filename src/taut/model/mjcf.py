@@ -24,6 +24,11 @@ is the cable tension ``τ_i`` [N] pulling the platform towards the exit point, i
 ``ctrlrange`` the tension bounds.  Cables are ideal (massless, inextensible): their
 ``stiffness`` is not written.
 
+In MuJoCo's generalised coordinates a platform wrench ``(f, m)`` (force in the fixed frame,
+moment about ``p``, as :mod:`taut.statics` writes them) is ``(f, Rᵀ m)`` for the freejoint,
+whose angular velocity is expressed in the body frame, and ``(f_x, f_y, m_z)`` or ``f`` for the
+planar and point-mass joints: ``mj_inverse`` at rest returns that of ``−w_ext``.
+
 A robot this description cannot hold raises :class:`~taut.errors.UnsupportedRobotError`
 naming the construct: no ``platform.mass``, a rigid platform without a positive-definite
 ``platform.inertia``, a constant ``platform.wrench`` (MJCF has no constant applied wrench),
