@@ -344,7 +344,7 @@ def wirex_robot(model: WirexModel, source: str = "<wcrfx>", *, pulleys: PulleyMo
         raise UnsupportedRobotError(
             f'{source}: <chain id="{c.number}"> <base>: swivelling pulleys of radius {c.pulley_radius:g} m '
             f"are not modelled yet ({len(pulleyed)} of {len(model.chains)} cables); "
-            "read_wirex(..., pulleys='points') takes each pulley as its fixed point, WireX's standard model"
+            "in Python, read_wirex(path, pulleys='points') takes each pulley as its fixed point, WireX's standard model"
         )
     if pulleyed:
         radii = sorted({c.pulley_radius for c in pulleyed})
