@@ -379,3 +379,39 @@ def test_writer_refusals(tmp_path):
     )
     with pytest.raises(UnsupportedRobotError, match="different tension bounds"):
         write_wirex(mixed, tmp_path / "m.wcrfx")
+
+
+coordinates = st.floats(-50, 50, allow_subnormal=False)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.lists(st.tuples(*[coordinates] * 6), min_size=1, max_size=9, unique_by=lambda t: t[:3]),
+    st.floats(0.01, 100),
+    st.lists(st.floats(-1, 1), min_size=9, max_size=9),
+    st.tuples(*[coordinates] * 3),
+    st.tuples(st.floats(0, 10), st.floats(10, 1e4)),
+)
+def test_round_trip_of_any_spatial_robot(tmp_path_factory, rows, mass, entries, center, tension):
+    """Every number comes back bit for bit (the writer prints ``repr`` of each float)."""
+    A = np.array(entries).reshape(3, 3)
+    I = A @ A.T
+    robot = taut.Robot.model_validate(
+        {
+            "name": "random",
+            "dimension": 3,
+            "platform": {
+                "mass": mass,
+                "wrench_point": center,
+                "inertia": [I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]],
+            },
+            "cables": [{"exit": r[:3], "anchor": r[3:], "tension": tension} for r in rows],
+        }
+    )
+    path = tmp_path_factory.mktemp("wcrfx") / "random.wcrfx"
+    write_wirex(robot, path)
+    back = read_wirex(path)
+    assert np.array_equal(back.exits, robot.exits) and np.array_equal(back.anchors, robot.anchors)
+    assert back.platform.mass == mass and back.platform.wrench_point == robot.platform.wrench_point
+    assert np.array_equal(back.inertia, robot.inertia)
+    assert all(c.tension == tension for c in back.cables)

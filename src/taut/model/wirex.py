@@ -30,7 +30,8 @@ max_cable_load>``.  The mapping follows WireX's own reader and kinematics (``Wir
   ``platform.wrench_point``; the inertia tensor about the centre of gravity (WireX's
   Newton–Euler wrench uses it so) → ``platform.inertia``: all nine entries for ``3R3T`` (WireX
   reads a tensor only when all nine are there), ``Izz`` for ``1R2T``.  An incomplete tensor is
-  not imported, and the description says so.  Gravity is WireX's, 9.81 m/s² along −z: taut's
+  not imported, and the description says so.  Gravity is WireX's, 9.81 m/s² along −z (the
+  weight in ``CRobotDocument::doElastoGeometricalForwardKinematics``): taut's
   spatial default, and normal to the plane of the planar patterns (``platform.gravity`` =
   ``(0, 0)``).  A point mass has no inertia and no moment arm.
 * **Cable loads.** ``min_cable_load`` and ``max_cable_load`` bound every cable's tension;
