@@ -122,6 +122,15 @@ def test_point_pulleys_say_so_in_the_description():
     assert "APPROXIMATION" not in read("spatial_3r3t.wcrfx").description
 
 
+def test_point_pulleys_are_the_fixed_points():
+    """Pulleys of radius 0.05 taken as points give the robot whose file says radius 0."""
+    with pytest.raises(UnsupportedRobotError, match="radius 0.05 m .*8 of 8 cables"):
+        read_wirex(FIXTURES / "pulleys_3r3t.wcrfx")
+    points, plain = read("pulleys_3r3t.wcrfx"), read("spatial_3r3t.wcrfx")
+    assert np.array_equal(points.exits, plain.exits) and np.array_equal(points.anchors, plain.anchors)
+    assert "radius 0.05 m" in points.description
+
+
 def test_missing_radius_is_wirex_default_pulley():
     """WireX assumes a 0.1 m pulley where <base> gives no radius (CRobotData::getXmlNode)."""
     with pytest.raises(UnsupportedRobotError, match="radius 0.1 m"):
