@@ -141,7 +141,8 @@ def parse_robot(text: str, source: str = "<robot>", *, json_text: bool = False) 
 
 
 def load_robot(spec: str | Path) -> Robot:
-    """Load a robot from a file path, or a built-in example by name (``taut examples``)."""
+    """Load a robot from a file path (YAML, JSON, or a WireX ``.wcrfx`` file read by
+    :func:`taut.model.wirex.read_wirex`), or a built-in example by name (``taut examples``)."""
     from taut.model.examples import example, example_names
 
     path = Path(spec)
@@ -149,6 +150,10 @@ def load_robot(spec: str | Path) -> Robot:
         if str(spec) in example_names():
             return example(str(spec))
         raise RobotFileError(f"{spec}: no such file and not a built-in example (see `taut examples`)")
+    if path.suffix.lower() == ".wcrfx":
+        from taut.model.wirex import read_wirex
+
+        return read_wirex(path)
     try:
         # a FIFO, a device or a directory would block or never end: only regular files are read
         if not stat.S_ISREG(path.stat().st_mode):

@@ -1,0 +1,63 @@
+"""WireX ``.wcrfx`` files on the command line: ``taut ik`` and ``taut workspace`` read them
+like taut's own files, and a bad or unsupported file exits 2 with one line."""
+
+from __future__ import annotations
+
+import math
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+FIXTURES = Path(__file__).parents[1] / "model" / "fixtures" / "wirex"
+
+
+def test_ik_of_a_wcrfx_file(taut_cli):
+    """Lengths against the file's raw points at a pose with rotation Rz(0) Ry(0) Rx(0.3)."""
+    path = FIXTURES / "spatial_3r3t.wcrfx"
+    result = taut_cli("ik", str(path), "--pose", "0.1,0.2,1,0.3,0,0", "--json").json()
+    chains = ET.parse(path).getroot().findall("robot/geometry/chain")
+    base = np.array([[float(c.find("base").get(k)) for k in "xyz"] for c in chains])
+    plat = np.array([[float(c.find("platform").get(k)) for k in "xyz"] for c in chains])
+    c, s = math.cos(0.3), math.sin(0.3)
+    R = np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
+    expected = np.linalg.norm(base - [0.1, 0.2, 1.0] - plat @ R.T, axis=1)
+    assert result["robot"] == "spatial fixture"
+    assert np.allclose(result["lengths"], expected, rtol=0, atol=1e-12)
+
+
+def test_workspace_of_a_wcrfx_file(taut_cli):
+    result = taut_cli(
+        "workspace",
+        str(FIXTURES / "point_2t.wcrfx"),
+        "--condition",
+        "wrench-closure",
+        "--grid",
+        "0.2:1.8:5;0.2:1.8:5",
+        "--json",
+    ).json()
+    assert result["robot"] == "planar point fixture" and result["poses"] == 25
+    assert 0 < result["inside"] < 25  # the triangle of exit points holds some grid points, not all
+
+
+@pytest.mark.parametrize(
+    "name, words",
+    [
+        ("IPAnema.wcrfx", "swivelling pulleys of radius 0.1 m are not modelled yet"),
+        ("line_1t.wcrfx", "motion pattern 1T (a point moving on a line)"),
+        ("five_dof_2r3t.wcrfx", "motion pattern 2R3T"),
+    ],
+)
+def test_unsupported_files_exit_2(taut_cli, name, words):
+    run = taut_cli("ik", str(FIXTURES / name), "--pose", "0,0,1,0,0,0")
+    assert run.code == 2 and run.out == ""
+    assert run.err.startswith("taut: error: ") and words in run.err and run.err.count("\n") == 1
+
+
+def test_malformed_file_exits_2(taut_cli, tmp_path):
+    path = tmp_path / "broken.wcrfx"
+    path.write_text((FIXTURES / "spatial_3r3t.wcrfx").read_text().replace('z="2.0" a11="0.6"', 'z="nan" a11="0.6"'))
+    run = taut_cli("workspace", str(path), "--condition", "wrench-closure", "--grid", "3", "--json")
+    assert run.code == 2 and run.out == ""
+    assert run.err == f"taut: error: {path}: <chain id=\"2\"> <base> z: expected a finite number, got 'nan'\n"
