@@ -104,5 +104,8 @@ def write_robot(robot: Robot, path: str | Path) -> str:
     """Write ``robot`` to ``path`` in the format its name selects; return the format's name."""
     fmt = format_of(path, "write")
     assert fmt.writer is not None, "format_of returns a format able to write"
-    fmt.writer(robot, Path(path))
+    try:
+        fmt.writer(robot, Path(path))
+    except OSError as exc:
+        raise RobotFileError(f"{path}: cannot write the file: {exc}") from None
     return fmt.name
