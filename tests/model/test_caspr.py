@@ -394,3 +394,23 @@ def test_written_pair_is_read_by_the_independent_parser(tmp_path: Path) -> None:
     ik = inverse_kinematics(robot, q)
     np.testing.assert_allclose(ik.lengths, lengths, rtol=1e-12)
     np.testing.assert_allclose(ik.structure_matrix, W, rtol=1e-10, atol=1e-12)
+
+
+@pytest.mark.parametrize("bodies", list(MODELS), ids=[p.stem for p in MODELS])
+def test_round_trip_of_every_fixture(tmp_path: Path, bodies: Path) -> None:
+    """Read, write, read again: the same robot (a horizontal plane stays horizontal, a YZ
+    model comes back in the XZ plane with the same taut coordinates)."""
+    robot = load_robot(bodies)
+    out = tmp_path / "again_bodies.xml"
+    write_caspr(robot, out)
+    back = read_caspr(out)
+    assert (back.dimension, back.platform.kind, back.orientation) == (
+        robot.dimension,
+        robot.platform.kind,
+        robot.orientation,
+    )
+    for field in ("exits", "anchors", "tension_bounds", "weight", "inertia"):
+        np.testing.assert_array_equal(getattr(back, field), getattr(robot, field), err_msg=field)
+    assert back.platform.wrench_point == robot.platform.wrench_point
+    assert [c.stiffness for c in back.cables] == [c.stiffness for c in robot.cables]
+    assert [c.name for c in back.cables] == [c.name for c in robot.cables]

@@ -462,15 +462,23 @@ def _refuse(robot: Robot, why: str) -> UnsupportedRobotError:
     return UnsupportedRobotError(f"{robot.name}: a CASPR model cannot hold {why}")
 
 
+def _horizontal(robot: Robot) -> bool:
+    """Whether a planar robot's plane is horizontal: a mass without gravity in the plane."""
+    gravity = robot.platform.gravity
+    return robot.dimension == 2 and robot.platform.mass is not None and gravity is not None and not any(gravity)
+
+
 def _weight(robot: Robot) -> tuple[float, np.ndarray]:
     """Mass and centre of mass (taut frame) whose weight under CASPR's gravity is the robot's
     external wrench exactly."""
     plat, d = robot.platform, robot.dimension
     point = np.array(plat.wrench_point if plat.wrench_point is not None else [0.0] * d)
+    if plat.wrench is not None and plat.mass is not None:
+        raise _refuse(robot, "both a constant wrench and a mass")
+    if _horizontal(robot):
+        return float(plat.mass or 0.0), point
     down = -np.eye(d)[-1]
     if plat.wrench is not None:
-        if plat.mass is not None:
-            raise _refuse(robot, "both a constant wrench and a mass")
         w = np.array(plat.wrench)
         force, moment = w[:d], w[d:]
         if np.any(moment != 0) or np.any(force[:-1] != 0) or force[-1] > 0:
@@ -492,8 +500,8 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
 
     A spatial rigid platform becomes a ``SPATIAL_EULER_XYZ`` link (``xyz-moving``) or a massless
     ``T_XYZ`` link carrying a ``S_FIXED_XYZ`` one (``xyz-fixed``); a planar one a
-    ``PLANAR_XZ`` link (taut's ``y`` is CASPR's ``z``, where its gravity acts); point masses
-    ``T_XYZ`` or ``P_XZ``. A constant external wrench that is a downward force becomes the
+    ``PLANAR_XZ`` link (taut's ``y`` is CASPR's ``z``, where its gravity acts), or ``PLANAR_XY``
+    when it has a mass and no gravity in its plane; point masses ``T_XYZ``, ``P_XZ`` or ``P_XY``. A constant external wrench that is a downward force becomes the
     mass whose weight it is. Reference data and trajectories are not part of a CASPR model
     and are not written.
 
@@ -521,15 +529,24 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
     mass, com = _weight(robot)
     d, rigid = robot.dimension, not robot.is_point_mass
 
+    # a planar robot goes into CASPR's vertical XZ plane, where its gravity acts, unless it
+    # has a mass and no gravity in its plane: then into the horizontal XY plane
+    horizontal = _horizontal(robot)
+
     def lift(v: np.ndarray) -> np.ndarray:
-        return v if d == 3 else np.array([v[0], 0.0, v[1]])
+        if d == 3:
+            return v
+        return np.array([v[0], v[1], 0.0]) if horizontal else np.array([v[0], 0.0, v[1]])
 
     exits = np.array([lift(e) for e in robot.exits])
     start = exits.mean(axis=0)
     inertia = np.zeros(6)
     if robot.platform.inertia is not None:
         values = robot.platform.inertia
-        inertia = np.array(values) if d == 3 else np.array([0.0, values[0], 0.0, 0.0, 0.0, 0.0])
+        if d == 3:
+            inertia = np.array(values)
+        else:  # the moment about the plane's normal: Izz (XY plane) or Iyy (XZ plane)
+            inertia[2 if horizontal else 1] = values[0]
     if d == 3:
         translation = [start[0], start[1], start[2]]
         if not rigid:
@@ -539,7 +556,8 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
         else:
             joints = [("T_XYZ", translation), ("S_FIXED_XYZ", [0.0, 0.0, 0.0])]
     else:
-        joints = [("PLANAR_XZ", [start[0], start[2], 0.0])] if rigid else [("P_XZ", [start[0], start[2]])]
+        plane, (i, j) = ("XY", (0, 1)) if horizontal else ("XZ", (0, 2))
+        joints = [(f"PLANAR_{plane}", [start[i], start[j], 0.0])] if rigid else [(f"P_{plane}", [start[i], start[j]])]
     root = ET.Element("bodies_system")
     links = ET.SubElement(root, "links")
     for k, (joint, q0) in enumerate(joints, 1):
