@@ -396,6 +396,7 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
     plane = _PLANES[plane_name] if plane_name is not None else None
     scale = max(1.0, float(np.abs(origin).max()))
     out = []
+    shifted = False
     for i, c in enumerate(cables, 1):
         if c.link != link.num:
             raise UnsupportedRobotError(
@@ -404,6 +405,7 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
         anchor = c.location + link.com if c.reference == "com" else c.location
         exit_ = c.base - origin
         if not rigid:
+            shifted = shifted or bool(np.any(anchor != 0))
             exit_, anchor = exit_ - anchor, np.zeros(3)
         if plane is not None:
             off = exit_[plane.normal] - anchor[plane.normal]
@@ -439,7 +441,7 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
         notes.append(plane.note)
     if np.any(origin != 0):
         notes.append(f"exits relative to the joint origin {origin.tolist()}")
-    if not rigid and any(np.any(c.location != 0) for c in cables):
+    if shifted:
         notes.append("point-mass exits shifted by their attachments")
     data = {
         "name": stem,
