@@ -128,6 +128,11 @@ CASES: list[tuple[str, list[str], Check]] = [
         + ["--out", "{tmp}/p.csv", "--plot", "{tmp}/p.png"],
         lambda d, tmp: d["found"] and d["verified"] and (tmp / "p.csv").is_file() and (tmp / "p.png").is_file(),
     ),
+    (
+        "convert",
+        ["convert", "cogiro", "{tmp}/c_bodies.xml"],
+        lambda d, tmp: d["format"] == "caspr" and (tmp / "c_bodies.xml").is_file() and (tmp / "c_cables.xml").is_file(),
+    ),
 ]
 
 #: Commands whose JSON is checked elsewhere (``demo``: tests/cli/test_cli.py, a minute long).
@@ -161,6 +166,7 @@ QUICK = {
     "atlas-wrench-feasible",
     "check-lp",
     "plan",
+    "convert",
 }
 
 

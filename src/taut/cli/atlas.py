@@ -61,7 +61,7 @@ def cmd_atlas(ns: argparse.Namespace) -> int:
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)
-    robot = load(ns.robot)
+    robot = load(ns.robot, ns.cable_set)
     ref = None
     if robot.reference is not None and robot.reference.poses:
         ref = np.asarray(next(iter(robot.reference.poses.values())), float)

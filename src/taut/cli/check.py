@@ -57,7 +57,7 @@ def cmd_check(ns: argparse.Namespace) -> int:
     from taut.collision import check_poses, load_trajectory, trajectory_poses
 
     plot = A.plot_file(ns.plot)
-    robot = load(ns.robot)
+    robot = load(ns.robot, ns.cable_set)
     spec = ns.trajectory
     if spec in robot.trajectories:
         poses = trajectory_poses(robot, spec)

@@ -28,7 +28,7 @@ def cmd_fk(ns: argparse.Namespace) -> int:
     from taut.parallel import get_executor
 
     plot = A.plot_file(ns.plot)
-    robot = load(ns.robot)
+    robot = load(ns.robot, ns.cable_set)
     lengths = A.vector(ns.lengths, "--lengths") if ns.lengths is not None else None
     if ns.max_taut is not None and ns.max_taut < 1:
         raise TautError(f"--max-taut must be at least 1, got {ns.max_taut}")

@@ -75,7 +75,7 @@ def cmd_igp(ns: argparse.Namespace) -> int:
 
     if ns.max_boxes < 1:
         raise TautError(f"--max-boxes must be at least 1, got {ns.max_boxes}")
-    robot = load(ns.robot)
+    robot = load(ns.robot, ns.cable_set)
     cables = _cables(ns.taut)
     with progress_bar("igp (boxes)", wanted(ns.json)) as progress:
         res = solve_igp(

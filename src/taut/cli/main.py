@@ -44,10 +44,12 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-def load(spec: str) -> Robot:
+def load(spec: str, cable_set: str | None = None) -> Robot:
+    """The robot of a command: a file in any format :mod:`taut.model.formats` reads, or a
+    built-in example; ``cable_set`` is the ``--cable-set`` of a CASPR model."""
     from taut.model import load_robot
 
-    return load_robot(spec)
+    return load_robot(spec, cable_set=cable_set)
 
 
 def emit(data: dict, as_json: bool, human: Callable[[dict], None]) -> None:
@@ -121,7 +123,7 @@ def cmd_ik(ns: argparse.Namespace) -> int:
     from taut.kinematics import inverse_kinematics
 
     plot = A.plot_file(ns.plot)
-    robot = load(ns.robot)
+    robot = load(ns.robot, ns.cable_set)
     pose = A.pose(robot, ns.pose) if ns.pose is not None else A.default_pose(robot)
     ik = inverse_kinematics(robot, pose)
     data = {
@@ -159,7 +161,7 @@ def cmd_ik(ns: argparse.Namespace) -> int:
 def cmd_tensions(ns: argparse.Namespace) -> int:
     from taut.statics.tension import distribute_tensions
 
-    robot = load(ns.robot)
+    robot = load(ns.robot, ns.cable_set)
     pose = A.pose(robot, ns.pose) if ns.pose is not None else A.default_pose(robot)
     wrench = None
     if ns.wrench is not None:
@@ -228,7 +230,7 @@ def cmd_workspace(ns: argparse.Namespace) -> int:
 
     out = A.output_file(ns.out, "--out", {".npz"})
     plot = A.plot_file(ns.plot)
-    robot = load(ns.robot)
+    robot = load(ns.robot, ns.cable_set)
     grid, resolution = _grid(ns.grid, robot.dimension)
     orientation = A.vector(ns.orientation, "--orientation") if ns.orientation is not None else None
     wrench_set = None
@@ -302,7 +304,16 @@ def build_parser() -> argparse.ArgumentParser:
     ) -> argparse.ArgumentParser:
         c = sub.add_parser(name, help=help, description=help)
         if robot:
-            c.add_argument("robot", help="robot file (YAML/JSON) or built-in example name (see `taut examples`)")
+            c.add_argument(
+                "robot",
+                help="robot file (taut YAML/JSON, or a CASPR X_bodies.xml with its X_cables.xml beside it) "
+                "or built-in example name (see `taut examples`)",
+            )
+            c.add_argument(
+                "--cable-set",
+                metavar="ID",
+                help="CASPR model: the cable set to use (default: the file's default_cable_set)",
+            )
         c.add_argument("--json", action="store_true", help="machine-readable result on stdout")
         c.set_defaults(fn=fn)
         return c

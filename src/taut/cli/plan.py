@@ -97,7 +97,7 @@ def cmd_plan(ns: argparse.Namespace) -> int:
         raise TautError(f"--radius {ns.radius:g} is below {MIN_RADIUS:g}: the search could not cover the space")
     if ns.max_charts < 1 or ns.subdivide < 1:
         raise TautError("--max-charts and --subdivide must be at least 1")
-    robot = load(ns.robot)
+    robot = load(ns.robot, ns.cable_set)
     start, goal = _pose(robot, ns.start, "--start"), _pose(robot, ns.goal, "--goal")
     fixed = _fixed(ns.fix, start)
     free = [n for n in POSE_NAMES if n not in fixed]

@@ -69,7 +69,7 @@ def cmd_trajectory(ns: argparse.Namespace) -> int:
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)
-    robot = load(ns.robot)
+    robot = load(ns.robot, ns.cable_set)
     A.positive(ns.dt, "--dt")
     if ns.speed is not None:
         A.positive(ns.speed, "--speed")

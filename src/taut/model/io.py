@@ -140,32 +140,45 @@ def parse_robot(text: str, source: str = "<robot>", *, json_text: bool = False) 
     return robot_from_dict(data, source)
 
 
-def load_robot(spec: str | Path) -> Robot:
-    """Load a robot from a file path (YAML, JSON, or a WireX ``.wcrfx`` file read by
-    :func:`taut.model.wirex.read_wirex`), or a built-in example by name (``taut examples``)."""
-    from taut.model.examples import example, example_names
+def read_text(path: Path) -> str:
+    """The UTF-8 text of a robot file: regular files only (a FIFO, a device or a directory
+    would block or never end), at most :data:`MAX_FILE_BYTES`.
 
-    path = Path(spec)
-    if not path.exists():
-        if str(spec) in example_names():
-            return example(str(spec))
-        raise RobotFileError(f"{spec}: no such file and not a built-in example (see `taut examples`)")
-    if path.suffix.lower() == ".wcrfx":
-        from taut.model.wirex import read_wirex
-
-        return read_wirex(path)
+    Raises
+    ------
+    RobotFileError
+        If the file cannot be read, is not a regular file, is too large or is not UTF-8.
+    """
     try:
-        # a FIFO, a device or a directory would block or never end: only regular files are read
         if not stat.S_ISREG(path.stat().st_mode):
             raise RobotFileError(f"{path}: not a regular file")
         with path.open("rb") as fh:
             raw = fh.read(MAX_FILE_BYTES + 1)
         if len(raw) > MAX_FILE_BYTES:
             raise RobotFileError(f"{path}: larger than {MAX_FILE_BYTES >> 20} MiB: not a robot file")
-        text = raw.decode("utf-8")
+        return raw.decode("utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         raise RobotFileError(f"{path}: cannot read the file: {exc}") from None
-    return parse_robot(text, str(path), json_text=path.suffix.lower() == ".json")
+
+
+def load_robot(spec: str | Path, *, cable_set: str | None = None) -> Robot:
+    """Load a robot from a file path, or a built-in example by name (``taut examples``).
+
+    The file's name selects its format (:mod:`taut.model.formats`): taut's YAML/JSON, a
+    WireX ``.wcrfx`` file, or a CASPR ``*_bodies.xml`` model whose cable set ``cable_set``
+    (default: the file's ``default_cable_set``) is read from the ``*_cables.xml`` beside it."""
+    from taut.model.examples import example, example_names
+    from taut.model.formats import format_of, read_robot
+
+    path = Path(spec)
+    if not path.exists():
+        if str(spec) in example_names():
+            if cable_set is not None:
+                raise RobotFileError(f"{spec}: --cable-set selects a cable set of a CASPR model, not of an example")
+            return example(str(spec))
+        raise RobotFileError(f"{spec}: no such file and not a built-in example (see `taut examples`)")
+    format_of(path, "read")
+    return read_robot(path, read_text(path), cable_set)
 
 
 def _plain(value: object) -> object:

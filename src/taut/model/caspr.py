@@ -1,0 +1,599 @@
+"""CASPR models: read a ``X_bodies.xml`` / ``X_cables.xml`` pair into a :class:`Robot`, and
+write one.
+
+CASPR [1]_ describes a robot by its links (``<link_rigid>``, each with a joint to its parent,
+mass, centre of mass and inertia) in ``X_bodies.xml`` and by named cable sets in
+``X_cables.xml`` beside it. taut reads the single-body models its platform represents:
+
+- one link whose joint is ``SPATIAL_EULER_XYZ`` (pose ``x y z α β γ``, ``R = Rx(α) Ry(β) Rz(γ)``:
+  taut's ``xyz-moving``), ``T_XYZ`` (a spatial point mass), ``PLANAR_XY`` / ``PLANAR_XZ`` /
+  ``PLANAR_YZ`` (a planar rigid body) or ``P_XY`` / ``P_XZ`` (a planar point mass);
+- two links, a massless ``T_XYZ`` link carrying a ``S_EULER_XYZ`` (``xyz-moving``) or
+  ``S_FIXED_XYZ`` (``R = Rz(γ) Ry(β) Rx(α)``: taut's ``xyz-fixed``) link, all cables on the
+  second: one rigid body with pose ``x y z α β γ``.
+
+Planes map onto taut's ``(x, y)`` so that CASPR's gravity (9.81 m/s² along −z) stays along
+taut's −y: ``PLANAR_XZ`` takes ``(x, y) = (X, Z)`` and ``θ = −θ_CASPR`` (CASPR rotates about
++Y, which points out of the XZ plane's taut frame backwards); ``PLANAR_YZ`` takes
+``(x, y) = (Y, Z)`` and ``θ = θ_CASPR``; ``PLANAR_XY`` takes ``(X, Y)`` and ``θ_CASPR``, with
+no gravity in the plane (CASPR's is perpendicular to it). The description of the robot states
+the mapping. Only the moment of inertia about the plane's normal matters to planar motion.
+
+Exit points are given relative to the platform's joint origin (the sum of the ``<parent>
+<location>`` offsets), so that taut's pose is CASPR's ``q``. A point mass carries no rotation,
+so an attachment ``r`` on it is exactly the point mass at the exit ``a − r``.
+
+Cable attachments are relative to the joint (``attachment_reference="joint"``) or to the
+centre of mass (``"com"``); inertia is given about the centre of mass (``ref="com"``) or the
+joint (``ref="joint"``, shifted to the centre of mass: ``I_G = I_O − m(|c|² E − c cᵀ)``).
+``cable_linear_spring``'s ``<K>`` is the cable's axial rigidity EA [N]: CASPR's stiffness is
+``K / length`` [N/m]; taut's ``stiffness`` is EA. ``q_min``/``q_max`` and ``q_initial`` bound
+and start CASPR's simulations and are not part of the robot.
+
+Refused with :class:`UnsupportedRobotError`, never approximated: swivelling pulleys
+(``base_rotating_pulley``), cables routed through more than two attachments, chains of links,
+actuated joints, other joint and cable types, planar cables that leave the plane.
+
+References
+----------
+.. [1] D. Lau, J. Eden, Y. Tan, D. Oetomo, "CASPR: A comprehensive cable-robot analysis and
+   simulation platform for the research of cable-driven parallel robots", IEEE/RSJ
+   International Conference on Intelligent Robots and Systems (IROS), 2016.
+   (docs/references.bib: lau2016)
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from taut.errors import RobotFileError, UnsupportedRobotError
+from taut.model.robot import STANDARD_GRAVITY, Robot
+
+#: CASPR's gravitational acceleration [m/s²], along its −z axis.
+CASPR_GRAVITY = 9.81
+
+BODIES_SUFFIX = "_bodies.xml"
+CABLES_SUFFIX = "_cables.xml"
+
+_ENTITY = re.compile(r"<!ENTITY", re.IGNORECASE)
+
+
+@dataclass(frozen=True)
+class _Plane:
+    """How a CASPR plane maps onto taut's planar ``(x, y, θ)``."""
+
+    axes: tuple[int, int]
+    normal: int
+    in_plane_gravity: bool
+    note: str
+
+
+_PLANES = {
+    "XY": _Plane((0, 1), 2, False, "taut (x, y, theta) = CASPR (x, y, theta); no gravity in the XY plane"),
+    "XZ": _Plane((0, 2), 1, True, "taut (x, y, theta) = CASPR (x, z, -theta)"),
+    "YZ": _Plane((1, 2), 0, True, "taut (x, y, theta) = CASPR (y, z, theta)"),
+}
+
+#: Single-link joints: (taut dimension, rigid?, plane or None, orientation convention).
+_SINGLE = {
+    "SPATIAL_EULER_XYZ": (3, True, None, "xyz-moving"),
+    "T_XYZ": (3, False, None, "xyz-fixed"),
+    "PLANAR_XY": (2, True, "XY", "xyz-fixed"),
+    "PLANAR_XZ": (2, True, "XZ", "xyz-fixed"),
+    "PLANAR_YZ": (2, True, "YZ", "xyz-fixed"),
+    "P_XY": (2, False, "XY", "xyz-fixed"),
+    "P_XZ": (2, False, "XZ", "xyz-fixed"),
+}
+_SPHERICAL = {"S_EULER_XYZ": "xyz-moving", "S_FIXED_XYZ": "xyz-fixed"}
+_CABLE_TYPES = ("cable_ideal", "cable_linear_spring")
+_INERTIA = ("Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz")
+
+
+def parse_xml(text: str, source: str) -> ET.Element:
+    """The root element of an XML text. Entity declarations are refused before parsing (they
+    serve no purpose in a model and are how an XML file expands to gigabytes); CASPR's own
+    ``<!DOCTYPE ... SYSTEM "...dtd">`` and ``<!ATTLIST>`` lines are harmless and accepted."""
+    if _ENTITY.search(text):
+        raise RobotFileError(f"{source}: XML entity declarations (<!ENTITY>) are not accepted in a model file")
+    try:
+        return ET.fromstring(text)
+    except ET.ParseError as exc:
+        raise RobotFileError(f"{source}: not valid XML: {exc}") from None
+
+
+def _attrs(elem: ET.Element, allowed: tuple[str, ...], where: str) -> None:
+    extra = sorted(set(elem.attrib) - set(allowed))
+    if extra:
+        raise RobotFileError(f"{where}: unknown attribute {extra[0]!r} (expected {', '.join(allowed) or 'none'})")
+
+
+def _children(elem: ET.Element, allowed: tuple[str, ...], where: str) -> None:
+    for child in elem:
+        if child.tag not in allowed:
+            raise RobotFileError(f"{where}: unknown element <{child.tag}> (expected {', '.join(allowed)})")
+
+
+def _one(elem: ET.Element, tag: str, where: str) -> ET.Element:
+    found = elem.findall(tag)
+    if len(found) != 1:
+        what = "missing" if not found else f"given {len(found)} times"
+        raise RobotFileError(f"{where}: <{tag}> is {what}")
+    return found[0]
+
+
+def _numbers(text: str | None, n: int | None, where: str, *, allow_inf: bool = False) -> list[float]:
+    parts = (text or "").split()
+    try:
+        values = [float(p) for p in parts]
+    except ValueError:
+        raise RobotFileError(f"{where}: expected numbers, got {text!r}") from None
+    if n is not None and len(values) != n:
+        raise RobotFileError(f"{where}: expected {n} numbers, got {len(values)} ({text!r})")
+    for v in values:
+        if math.isnan(v) or (math.isinf(v) and not allow_inf):
+            raise RobotFileError(f"{where}: expected finite numbers, got {text!r}")
+    return values
+
+
+def _number(elem: ET.Element, tag: str, where: str, *, allow_inf: bool = False) -> float:
+    return _numbers(_one(elem, tag, where).text, 1, f"{where} <{tag}>", allow_inf=allow_inf)[0]
+
+
+def _vector(elem: ET.Element, tag: str, where: str) -> np.ndarray:
+    return np.array(_numbers(_one(elem, tag, where).text, 3, f"{where} <{tag}>"))
+
+
+def _integer(elem: ET.Element, tag: str, where: str) -> int:
+    value = _number(elem, tag, where)
+    if value != int(value):
+        raise RobotFileError(f"{where} <{tag}>: expected a whole number, got {value}")
+    return int(value)
+
+
+@dataclass(frozen=True)
+class _Link:
+    num: int
+    name: str
+    joint: str
+    parent: int
+    location: np.ndarray
+    mass: float
+    com: np.ndarray
+    inertia: np.ndarray  # about the centre of mass, 3x3
+
+
+def _read_link(elem: ET.Element, where: str) -> _Link:
+    _attrs(elem, ("num", "name"), where)
+    _children(elem, ("joint", "physical", "parent"), where)
+    num_text = elem.get("num")
+    if num_text is None or not num_text.strip().isdigit():
+        raise RobotFileError(f"{where}: attribute num must be a link number, got {num_text!r}")
+    where = f"{where} (link {num_text})"
+    joint = _one(elem, "joint", where)
+    _attrs(joint, ("type", "q_initial", "q_min", "q_max", "actuated"), f"{where} <joint>")
+    if joint.get("actuated", "false").strip().lower() == "true":
+        raise UnsupportedRobotError(f"{where}: actuated joints are not modelled by taut")
+    physical = _one(elem, "physical", where)
+    _children(physical, ("mass", "com_location", "end_location", "inertia"), f"{where} <physical>")
+    mass = _number(physical, "mass", f"{where} <physical>")
+    if mass < 0:
+        raise RobotFileError(f"{where} <physical> <mass>: must be >= 0, got {mass}")
+    com = _vector(physical, "com_location", f"{where} <physical>")
+    inertia_el = _one(physical, "inertia", f"{where} <physical>")
+    iw = f"{where} <inertia>"
+    _attrs(inertia_el, ("ref",), iw)
+    _children(inertia_el, _INERTIA, iw)
+    xx, yy, zz, xy, xz, yz = (_number(inertia_el, t, iw) for t in _INERTIA)
+    tensor = np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
+    ref = inertia_el.get("ref")
+    if ref == "joint":
+        tensor = tensor - mass * (float(com @ com) * np.eye(3) - np.outer(com, com))
+    elif ref != "com":
+        raise RobotFileError(f"{iw}: ref must be 'com' or 'joint', got {ref!r}")
+    parent = _one(elem, "parent", where)
+    _children(parent, ("num", "location"), f"{where} <parent>")
+    return _Link(
+        num=int(num_text),
+        name=elem.get("name", ""),
+        joint=joint.get("type", ""),
+        parent=_integer(parent, "num", f"{where} <parent>"),
+        location=_vector(parent, "location", f"{where} <parent>"),
+        mass=mass,
+        com=com,
+        inertia=tensor,
+    )
+
+
+def _read_links(root: ET.Element, source: str) -> list[_Link]:
+    if root.tag != "bodies_system":
+        raise RobotFileError(f"{source}: expected a <bodies_system> CASPR bodies file, got <{root.tag}>")
+    _children(root, ("links",), source)
+    links_el = _one(root, "links", source)
+    _attrs(links_el, ("display_range", "view_angle"), f"{source} <links>")
+    for child in links_el:
+        if child.tag != "link_rigid":
+            raise UnsupportedRobotError(f"{source}: <{child.tag}> links are not modelled by taut (only <link_rigid>)")
+    links = [_read_link(el, f"{source} <link_rigid>") for el in links_el]
+    if not links:
+        raise RobotFileError(f"{source}: <links> holds no <link_rigid>")
+    for k, link in enumerate(links, 1):
+        if link.num != k:
+            raise RobotFileError(
+                f"{source}: link number {link.num} out of order (expected {k}: links are numbered 1, 2, ...)"
+            )
+        if not 0 <= link.parent < k:
+            raise RobotFileError(f"{source}: link {k}: parent {link.parent} must be an earlier link or 0 (the base)")
+    return links
+
+
+@dataclass(frozen=True)
+class _Cable:
+    name: str
+    kind: str
+    reference: str
+    force: tuple[float, float]
+    stiffness: float | None
+    base: np.ndarray
+    link: int
+    location: np.ndarray
+
+
+def _read_cable(elem: ET.Element, n_links: int, where: str) -> _Cable:
+    name = elem.get("name") or ""
+    where = f"{where} <{elem.tag} name={name!r}>"
+    _attrs(elem, ("name", "attachment_reference"), where)
+    _children(elem, ("properties", "attachments"), where)
+    reference = elem.get("attachment_reference")
+    if reference not in ("com", "joint"):
+        raise RobotFileError(f"{where}: attachment_reference must be 'com' or 'joint', got {reference!r}")
+    props = _one(elem, "properties", where)
+    pw = f"{where} <properties>"
+    allowed = ("force_min", "force_max", "K") if elem.tag == "cable_linear_spring" else ("force_min", "force_max")
+    _children(props, allowed, pw)
+    lo = _number(props, "force_min", pw)
+    hi = _number(props, "force_max", pw, allow_inf=True)
+    stiffness = None
+    if elem.tag == "cable_linear_spring":
+        stiffness = _number(props, "K", pw)
+        if stiffness <= 0:
+            raise RobotFileError(f"{pw} <K>: the cable's axial rigidity EA must be > 0 N, got {stiffness}")
+    atts = _one(elem, "attachments", where)
+    aw = f"{where} <attachments>"
+    for child in atts:
+        if "pulley" in child.tag:
+            raise UnsupportedRobotError(f"{aw}: swivelling pulleys ({child.tag}) are not modelled yet (cable {name!r})")
+        if child.tag != "attachment":
+            raise RobotFileError(f"{aw}: unknown element <{child.tag}> (expected <attachment>)")
+    points = []
+    for el in atts:
+        _children(el, ("link", "location"), f"{aw} <attachment>")
+        link = _integer(el, "link", f"{aw} <attachment>")
+        if not 0 <= link <= n_links:
+            raise RobotFileError(f"{aw}: attachment on link {link}, but the bodies file has links 1..{n_links}")
+        points.append((link, _vector(el, "location", f"{aw} <attachment>")))
+    if len(points) != 2:
+        if len(points) > 2:
+            raise UnsupportedRobotError(
+                f"{aw}: cable {name!r} is routed through {len(points)} attachments; taut models a cable from the base to one body"
+            )
+        raise RobotFileError(f"{aw}: cable {name!r} needs two attachments, got {len(points)}")
+    points.sort(key=lambda p: p[0])
+    (l0, base), (l1, loc) = points
+    if l0 != 0 or l1 == 0:
+        raise UnsupportedRobotError(
+            f"{aw}: cable {name!r} must run from the base (link 0) to a body, got links {l0} and {l1}"
+        )
+    return _Cable(name, elem.tag, reference, (lo, hi), stiffness, base, l1, loc)
+
+
+def _read_cables(root: ET.Element, source: str, n_links: int, cable_set: str | None) -> tuple[str, list[_Cable]]:
+    if root.tag != "cables":
+        raise RobotFileError(f"{source}: expected a <cables> CASPR cables file, got <{root.tag}>")
+    _attrs(root, ("default_cable_set",), source)
+    _children(root, ("cable_set",), source)
+    sets: dict[str, ET.Element] = {}
+    for el in root.findall("cable_set"):
+        _attrs(el, ("id",), f"{source} <cable_set>")
+        sid = el.get("id")
+        if not sid:
+            raise RobotFileError(f"{source}: a <cable_set> has no id")
+        if sid in sets:
+            raise RobotFileError(f"{source}: cable set id {sid!r} is given twice")
+        sets[sid] = el
+    wanted = cable_set if cable_set is not None else root.get("default_cable_set")
+    if wanted is None:
+        raise RobotFileError(
+            f"{source}: <cables> has no default_cable_set; pick one of {sorted(sets)} with --cable-set"
+        )
+    if wanted not in sets:
+        raise RobotFileError(f"{source}: no cable set {wanted!r}; the file has {', '.join(sorted(sets)) or 'none'}")
+    where = f"{source} <cable_set id={wanted!r}>"
+    cables = []
+    for el in sets[wanted]:
+        if el.tag not in _CABLE_TYPES:
+            raise UnsupportedRobotError(
+                f"{where}: <{el.tag}> cables are not modelled by taut (only {', '.join(_CABLE_TYPES)})"
+            )
+        cables.append(_read_cable(el, n_links, where))
+    if not cables:
+        raise RobotFileError(f"{where}: the cable set holds no cables")
+    return wanted, cables
+
+
+def cables_path(bodies_path: str | Path) -> Path:
+    """The ``X_cables.xml`` beside ``X_bodies.xml`` (CASPR's naming)."""
+    path = Path(bodies_path)
+    if not path.name.lower().endswith(BODIES_SUFFIX):
+        raise RobotFileError(f"{path}: a CASPR model is given by its X{BODIES_SUFFIX} file")
+    return path.with_name(path.name[: -len(BODIES_SUFFIX)] + CABLES_SUFFIX)
+
+
+def read_caspr(bodies_path: str | Path, cable_set: str | None = None) -> Robot:
+    """Read the CASPR model ``X_bodies.xml`` and its ``X_cables.xml`` (see the module docstring).
+
+    ``cable_set`` picks a cable set other than the file's ``default_cable_set``.
+
+    Raises
+    ------
+    RobotFileError
+        A missing or malformed file, inconsistent ids, a NaN.
+    UnsupportedRobotError
+        A construct taut does not model, named.
+    """
+    from taut.model.io import read_text
+
+    path = Path(bodies_path)
+    return parse_caspr(path, read_text(path), cable_set)
+
+
+def parse_caspr(path: Path, text: str, cable_set: str | None = None) -> Robot:
+    """:func:`read_caspr` given the text of the bodies file ``path``."""
+    from taut.model.io import read_text
+
+    source = str(path)
+    links = _read_links(parse_xml(text, source), source)
+    cpath = cables_path(path)
+    if not cpath.exists():
+        raise RobotFileError(
+            f"{source}: the cables file {cpath} is missing (CASPR keeps X_cables.xml beside X_bodies.xml)"
+        )
+    set_id, cables = _read_cables(parse_xml(read_text(cpath), str(cpath)), str(cpath), len(links), cable_set)
+    return _robot(path, links, set_id, cables)
+
+
+def _platform_link(links: list[_Link], source: str) -> tuple[_Link, np.ndarray, tuple[int, bool, str | None, str]]:
+    """The link cables pull on, the offset of its joint origin from the base's, and how it maps."""
+    if len(links) == 1:
+        link = links[0]
+        if link.joint not in _SINGLE:
+            raise UnsupportedRobotError(
+                f"{source}: link 1 has a {link.joint or '(missing)'} joint; taut reads {', '.join(_SINGLE)}, "
+                f"or T_XYZ carrying {' or '.join(_SPHERICAL)}"
+            )
+        return link, link.location, _SINGLE[link.joint]
+    if len(links) == 2 and links[0].joint == "T_XYZ" and links[1].joint in _SPHERICAL and links[1].parent == 1:
+        carrier, body = links
+        if carrier.mass != 0:
+            raise UnsupportedRobotError(
+                f"{source}: link 1 (T_XYZ) carries a mass of {carrier.mass}; taut's platform is one rigid body"
+            )
+        return body, carrier.location + body.location, (3, True, None, _SPHERICAL[body.joint])
+    joints = ", ".join(f"{k.num}:{k.joint}" for k in links)
+    raise UnsupportedRobotError(
+        f"{source}: a chain of {len(links)} links ({joints}) is a multi-link robot; taut models one platform body"
+    )
+
+
+def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) -> Robot:
+    source = str(path)
+    link, origin, (dim, rigid, plane_name, orientation) = _platform_link(links, source)
+    plane = _PLANES[plane_name] if plane_name is not None else None
+    scale = max(1.0, float(np.abs(origin).max()))
+    out = []
+    shifted = False
+    for i, c in enumerate(cables, 1):
+        if c.link != link.num:
+            raise UnsupportedRobotError(
+                f"{source}: cable {i} ({c.name!r}) is attached to link {c.link}, which carries no cables in taut's model"
+            )
+        anchor = c.location + link.com if c.reference == "com" else c.location
+        exit_ = c.base - origin
+        if not rigid:
+            shifted = shifted or bool(np.any(anchor != 0))
+            exit_, anchor = exit_ - anchor, np.zeros(3)
+        if plane is not None:
+            off = exit_[plane.normal] - anchor[plane.normal]
+            if abs(off) > 1e-9 * max(scale, float(np.abs(c.base).max())):
+                raise UnsupportedRobotError(
+                    f"{source}: cable {i} ({c.name!r}) leaves the {plane_name} plane by {off:g} m; taut's planar robots keep cables in the plane"
+                )
+            exit_, anchor = exit_[list(plane.axes)], anchor[list(plane.axes)]
+        cable: dict[str, object] = {"name": c.name or None, "exit": exit_.tolist(), "tension": list(c.force)}
+        if rigid:
+            cable["anchor"] = anchor.tolist()
+        if c.stiffness is not None:
+            cable["stiffness"] = c.stiffness
+        out.append(cable)
+    platform: dict[str, object] = {"kind": "rigid" if rigid else "point-mass"}
+    if link.mass > 0:
+        platform["mass"] = link.mass
+        if plane is not None and not plane.in_plane_gravity:
+            platform["gravity"] = [0.0, 0.0]
+        if rigid:
+            com = link.com if plane is None else link.com[list(plane.axes)]
+            platform["wrench_point"] = com.tolist()
+            if np.any(link.inertia != 0):
+                t = link.inertia
+                platform["inertia"] = (
+                    [t[0, 0], t[1, 1], t[2, 2], t[0, 1], t[0, 2], t[1, 2]]
+                    if plane is None
+                    else [t[plane.normal, plane.normal]]
+                )
+    stem = path.name[: -len(BODIES_SUFFIX)]
+    notes = [f"CASPR model {stem}, cable set {set_id!r}, {' + '.join(k.joint for k in links)}"]
+    if plane is not None:
+        notes.append(plane.note)
+    if np.any(origin != 0):
+        notes.append(f"exits relative to the joint origin {origin.tolist()}")
+    if shifted:
+        notes.append("point-mass exits shifted by their attachments")
+    data = {
+        "name": stem,
+        "description": "; ".join(notes),
+        "source": "CASPR model file",
+        "dimension": dim,
+        "orientation": orientation,
+        "platform": platform,
+        "cables": out,
+    }
+    from taut.model.io import robot_from_dict
+
+    return robot_from_dict(data, source)
+
+
+# ---- writing -----------------------------------------------------------------------------
+
+
+def _refuse(robot: Robot, why: str) -> UnsupportedRobotError:
+    return UnsupportedRobotError(f"{robot.name}: a CASPR model cannot hold {why}")
+
+
+def _horizontal(robot: Robot) -> bool:
+    """Whether a planar robot's plane is horizontal: a mass without gravity in the plane."""
+    gravity = robot.platform.gravity
+    return robot.dimension == 2 and robot.platform.mass is not None and gravity is not None and not any(gravity)
+
+
+def _weight(robot: Robot) -> tuple[float, np.ndarray]:
+    """Mass and centre of mass (taut frame) whose weight under CASPR's gravity is the robot's
+    external wrench exactly."""
+    plat, d = robot.platform, robot.dimension
+    point = np.array(plat.wrench_point if plat.wrench_point is not None else [0.0] * d)
+    if plat.wrench is not None and plat.mass is not None:
+        raise _refuse(robot, "both a constant wrench and a mass")
+    if _horizontal(robot):
+        return float(plat.mass or 0.0), point
+    down = -np.eye(d)[-1]
+    if plat.wrench is not None:
+        w = np.array(plat.wrench)
+        force, moment = w[:d], w[d:]
+        if np.any(moment != 0) or np.any(force[:-1] != 0) or force[-1] > 0:
+            raise _refuse(robot, f"the external wrench {list(plat.wrench)}: CASPR's only load is the weight (along -z)")
+        return float(-force[-1]) / CASPR_GRAVITY, point
+    if plat.mass is None:
+        return 0.0, point
+    if plat.gravity is not None and not np.allclose(plat.gravity, STANDARD_GRAVITY * down, rtol=0, atol=1e-12):
+        raise _refuse(robot, f"gravity {list(plat.gravity)}: CASPR's is {CASPR_GRAVITY} m/s² along -z")
+    return float(plat.mass), point
+
+
+def _fmt(values: np.ndarray | list[float]) -> str:
+    return " ".join(repr(float(v)) for v in values)
+
+
+def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
+    """Write ``robot`` as the CASPR pair ``X_bodies.xml`` (``bodies_path``) and ``X_cables.xml``.
+
+    A spatial rigid platform becomes a ``SPATIAL_EULER_XYZ`` link (``xyz-moving``) or a massless
+    ``T_XYZ`` link carrying a ``S_FIXED_XYZ`` one (``xyz-fixed``); a planar one a
+    ``PLANAR_XZ`` link (taut's ``y`` is CASPR's ``z``, where its gravity acts), or ``PLANAR_XY``
+    when it has a mass and no gravity in its plane; point masses ``T_XYZ``, ``P_XZ`` or ``P_XY``. A constant external wrench that is a downward force becomes the
+    mass whose weight it is. Reference data and trajectories are not part of a CASPR model
+    and are not written.
+
+    Raises
+    ------
+    UnsupportedRobotError
+        For what the format cannot hold: jointed bodies, obstacles, exit pulleys, length bounds,
+        cable radii, other wrenches and gravities, the ``tilt-torsion`` convention.
+    """
+    bodies = Path(bodies_path)
+    cables = cables_path(bodies)
+    if robot.platform.bodies:
+        raise _refuse(robot, "jointed platform bodies (a chain of links is not read back as one platform)")
+    if robot.obstacles or robot.installation_space is not None or robot.disallowed:
+        raise _refuse(robot, "obstacles or an installation space")
+    for i, c in enumerate(robot.cables, 1):
+        if c.pulley is not None:
+            raise _refuse(robot, f"the exit pulley of cable {i}")
+        if c.length is not None:
+            raise _refuse(robot, f"the length bounds of cable {i}")
+        if c.radius != 0:
+            raise _refuse(robot, f"the radius of cable {i}")
+    if robot.orientation == "tilt-torsion" and not robot.is_point_mass and robot.dimension == 3:
+        raise _refuse(robot, "the tilt-torsion orientation convention")
+    mass, com = _weight(robot)
+    d, rigid = robot.dimension, not robot.is_point_mass
+
+    # a planar robot goes into CASPR's vertical XZ plane, where its gravity acts, unless it
+    # has a mass and no gravity in its plane: then into the horizontal XY plane
+    horizontal = _horizontal(robot)
+
+    def lift(v: np.ndarray) -> np.ndarray:
+        if d == 3:
+            return v
+        return np.array([v[0], v[1], 0.0]) if horizontal else np.array([v[0], 0.0, v[1]])
+
+    exits = np.array([lift(e) for e in robot.exits])
+    start = exits.mean(axis=0)
+    inertia = np.zeros(6)
+    if robot.platform.inertia is not None:
+        values = robot.platform.inertia
+        if d == 3:
+            inertia = np.array(values)
+        else:  # the moment about the plane's normal: Izz (XY plane) or Iyy (XZ plane)
+            inertia[2 if horizontal else 1] = values[0]
+    if d == 3:
+        translation = [start[0], start[1], start[2]]
+        if not rigid:
+            joints = [("T_XYZ", translation)]
+        elif robot.orientation == "xyz-moving":
+            joints = [("SPATIAL_EULER_XYZ", translation + [0.0, 0.0, 0.0])]
+        else:
+            joints = [("T_XYZ", translation), ("S_FIXED_XYZ", [0.0, 0.0, 0.0])]
+    else:
+        plane, (i, j) = ("XY", (0, 1)) if horizontal else ("XZ", (0, 2))
+        joints = [(f"PLANAR_{plane}", [start[i], start[j], 0.0])] if rigid else [(f"P_{plane}", [start[i], start[j]])]
+    root = ET.Element("bodies_system")
+    links = ET.SubElement(root, "links")
+    for k, (joint, q0) in enumerate(joints, 1):
+        last = k == len(joints)
+        link = ET.SubElement(links, "link_rigid", num=str(k), name=robot.name if last else "translation")
+        ET.SubElement(link, "joint", type=joint, q_initial=_fmt(q0))
+        phys = ET.SubElement(link, "physical")
+        ET.SubElement(phys, "mass").text = repr(mass if last else 0.0)
+        ET.SubElement(phys, "com_location").text = _fmt(lift(com) if last and rigid else np.zeros(3))
+        ET.SubElement(phys, "end_location").text = _fmt(np.zeros(3))
+        inert = ET.SubElement(phys, "inertia", ref="com")
+        for tag, value in zip(_INERTIA, inertia if last else np.zeros(6)):
+            ET.SubElement(inert, tag).text = repr(float(value))
+        parent = ET.SubElement(link, "parent")
+        ET.SubElement(parent, "num").text = str(k - 1)
+        ET.SubElement(parent, "location").text = _fmt(np.zeros(3))
+    body_link = str(len(joints))
+    croot = ET.Element("cables", default_cable_set="taut")
+    cset = ET.SubElement(croot, "cable_set", id="taut")
+    for i, c in enumerate(robot.cables, 1):
+        kind = "cable_ideal" if c.stiffness is None else "cable_linear_spring"
+        el = ET.SubElement(cset, kind, name=c.name or f"cable {i}", attachment_reference="joint")
+        props = ET.SubElement(el, "properties")
+        if c.stiffness is not None:
+            ET.SubElement(props, "K").text = repr(float(c.stiffness))
+        ET.SubElement(props, "force_min").text = repr(float(c.tension[0]))
+        ET.SubElement(props, "force_max").text = "Inf" if math.isinf(c.tension[1]) else repr(float(c.tension[1]))
+        atts = ET.SubElement(el, "attachments")
+        for link_num, point in (("0", exits[i - 1]), (body_link, lift(robot.anchors[i - 1]))):
+            att = ET.SubElement(atts, "attachment")
+            ET.SubElement(att, "link").text = link_num
+            ET.SubElement(att, "location").text = _fmt(point)
+    for tree, target in ((root, bodies), (croot, cables)):
+        ET.indent(tree)
+        target.write_text(
+            '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(tree, encoding="unicode") + "\n", encoding="utf-8"
+        )
