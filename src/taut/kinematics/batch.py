@@ -21,7 +21,7 @@ import numpy.typing as npt
 from numba import njit
 
 from taut.geometry.rotation import CONVENTIONS
-from taut.kinematics.inverse import MIN_LENGTH, inverse_kinematics
+from taut.kinematics.inverse import MIN_LENGTH, OK, ik_status
 from taut.kinematics.pose import as_poses
 from taut.model.robot import Robot
 
@@ -162,26 +162,21 @@ def _ik_kernel(
 
 
 def supports_batch(robot: Robot) -> bool:
-    """True when the kernel handles the robot (no jointed bodies)."""
-    return robot.n_joints == 0
+    """True when the kernel handles the robot (no jointed bodies, no swivelling pulleys)."""
+    return robot.n_joints == 0 and not robot.swivel_cables
 
 
 def batch_structure_matrices(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Cable lengths ``(N, n)``, structure matrices ``W (N, m, n)`` and a mask ``ok (N,)``
-    of the poses where every cable has a length of at least ``MIN_LENGTH`` (elsewhere
-    ``W`` is zero).  Robots with jointed bodies go through the NumPy implementation."""
+    of the poses where every cable has a length of at least ``MIN_LENGTH`` and, through a
+    swivelling pulley, a tangent point (elsewhere ``W`` is zero).  Robots with jointed bodies
+    or swivelling pulleys go through the NumPy implementation
+    (:func:`taut.kinematics.inverse.ik_status`)."""
     arr, _ = as_poses(robot, poses)
     N, n, m, d = arr.shape[0], robot.n_cables, robot.wrench_dim, robot.dimension
     if not supports_batch(robot):
-        from taut.kinematics.inverse import anchor_points
-
-        b = anchor_points(robot, arr).reshape(N, n, d)
-        lengths = np.linalg.norm(robot.exits[None] - b, axis=-1)
-        ok = lengths.min(axis=1) >= MIN_LENGTH
-        W = np.zeros((N, m, n))
-        if ok.any():
-            W[ok] = inverse_kinematics(robot, arr[ok]).structure_matrix
-        return lengths, W, ok
+        ik, status = ik_status(robot, arr)
+        return ik.lengths, ik.structure_matrix, (status == OK).all(axis=1)
     lengths = np.empty((N, n))
     W = np.zeros((N, m, n))
     ok = np.empty(N, np.bool_)

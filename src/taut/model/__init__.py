@@ -21,6 +21,7 @@ if TYPE_CHECKING:
         Reference,
         Robot,
         Shape,
+        SwivelPulley,
         Trajectory,
     )
     from taut.model.schema import robot_schema
@@ -42,6 +43,7 @@ _LAZY = {
             "Reference",
             "Robot",
             "Shape",
+            "SwivelPulley",
             "Trajectory",
         ],
         "taut.model.robot",
@@ -62,6 +64,7 @@ __all__ = [
     "Reference",
     "Robot",
     "Shape",
+    "SwivelPulley",
     "Trajectory",
     "example",
     "example_descriptions",
