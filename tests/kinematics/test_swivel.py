@@ -246,6 +246,7 @@ def test_singular_configurations_raise_and_are_flagged() -> None:
 
 
 def test_batch_path_equals_inverse_kinematics_and_flags_singular_poses() -> None:
+    """The Numba kernel against the NumPy implementation, singular poses included."""
     rng = np.random.default_rng(7)
     P = np.column_stack([rng.uniform(-0.3, 0.3, (64, 3)), rng.uniform(-0.2, 0.2, (64, 3))])
     lengths, W, ok = batch_structure_matrices(ROBOT, P)
@@ -261,9 +262,13 @@ def test_batch_path_equals_inverse_kinematics_and_flags_singular_poses() -> None
             "cables": [{"exit": [0, 0, 0], "swivel": {"axis": [0, 0, 1], "radius": 0.1}}],
         }
     )
-    lengths, W, ok = batch_structure_matrices(one, [[0.0, 0.0, -1.0], [1.0, 0.0, 1.0]])
-    assert ok.tolist() == [False, True]
-    assert np.isfinite(lengths).all() and not W[0].any()
+    P = np.array([[0.0, 0.0, -1.0], [0.15, 0.0, 0.02], [1.0, 0.0, 1.0], [0.05, 0.0, -1.0]])
+    lengths, W, ok = batch_structure_matrices(one, P)
+    assert ok.tolist() == [False, False, True, True]
+    assert not W[:2].any()
+    ik, status = ik_status(one, P)
+    np.testing.assert_allclose(lengths, ik.lengths, rtol=1e-14)
+    np.testing.assert_allclose(W, ik.structure_matrix, atol=1e-15)
 
 
 @settings(max_examples=15, deadline=None)

@@ -185,8 +185,9 @@ def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
 
 def _batched(robot: Robot, poses: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
     """``(lengths, W, ok)`` of :func:`taut.kinematics.batch.batch_structure_matrices`, or None
-    for fewer than :data:`BATCH_POSES` poses or a robot the kernel does not handle."""
-    if poses.shape[0] < BATCH_POSES:
+    for fewer than :data:`BATCH_POSES` poses, a robot the kernel does not handle, or one with
+    swivelling pulleys (the kernel does not return their tangent points)."""
+    if poses.shape[0] < BATCH_POSES or robot.swivel_cables:
         return None
     from taut.kinematics.batch import batch_structure_matrices, supports_batch
 

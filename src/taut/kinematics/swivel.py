@@ -63,7 +63,7 @@ def swivel_parameters(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]
     return idx, axes, radii
 
 
-def _normal_fallback(k: np.ndarray) -> np.ndarray:
+def normal_fallback(k: np.ndarray) -> np.ndarray:
     """A unit vector normal to each axis ``k (s, 3)``: the pulley plane of an anchor on the
     axis, where every plane gives the same length."""
     helper = np.where(np.abs(k[:, :1]) < 0.9, np.array([[1.0, 0.0, 0.0]]), np.array([[0.0, 1.0, 0.0]]))
@@ -83,7 +83,7 @@ def swivel_paths(points: np.ndarray, axes: np.ndarray, radii: np.ndarray, anchor
     d = np.linalg.norm(w, axis=-1)
     scale = radii[None] + np.linalg.norm(v, axis=-1)
     on_axis = d <= SINGULAR_TOL * scale
-    e = np.where(on_axis[..., None], _normal_fallback(axes)[None], w / np.where(on_axis, 1.0, d)[..., None])
+    e = np.where(on_axis[..., None], normal_fallback(axes)[None], w / np.where(on_axis, 1.0, d)[..., None])
     x = d - radii[None]
     rho2 = x * x + h * h
     free = np.sqrt(np.maximum(rho2 - radii[None] ** 2, 0.0))
