@@ -332,3 +332,26 @@ def test_bad_swivels_are_refused(swivel: dict, dimension: int, message: str) -> 
     }
     with pytest.raises(RobotFileError, match=message):
         robot_from_dict(data)
+
+
+def test_jointed_platform_jacobian_through_pulleys() -> None:
+    """The adjustable 8-cable robot with pulleys on its frame posts (axes vertical, cables
+    from winches below): the actuator Jacobian's translation and joint columns are the
+    derivatives of the pulley lengths."""
+    from taut.kinematics.jointed import actuator_jacobian, actuator_positions
+
+    data = robot_to_dict(taut.example("adjustable-8cable"))
+    for c in data["cables"]:
+        c["swivel"] = {"axis": [0.0, 0.0, 1.0], "radius": 0.15}
+    robot = robot_from_dict(data)
+    pose = np.array([5.3, 4.6, 2.5, 0.05, -0.04, 0.1, 2.2])
+    J = actuator_jacobian(robot, pose)
+    q = actuator_positions(robot, pose)
+    np.testing.assert_allclose(q[:8], cable_lengths(robot, pose))
+    assert (q[:8] > np.linalg.norm(robot.exits - inverse_kinematics(robot, pose).anchors, axis=1)).all()
+    eps = 1e-6
+    for j in (0, 1, 2, 6):
+        dp = np.zeros(7)
+        dp[j] = eps
+        grad = (cable_lengths(robot, pose + dp) - cable_lengths(robot, pose - dp)) / (2 * eps)
+        np.testing.assert_allclose(grad, J[:8, j], atol=1e-7)

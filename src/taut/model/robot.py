@@ -128,9 +128,10 @@ class SwivelPulley(_Strict):
 
     axis: tuple[Finite, Finite, Finite] = Field(
         description="direction of the swivel axis in the fixed frame: the way the cable runs, coming from "
-        "its winch, into the pulley at the cable's exit point (CASPR's cable_entry_vector, the z axis of "
-        "WireX's winch frame); any non-zero length, it is normalised. Its sign decides the side the cable "
-        "leaves on: the cable turns away from this direction towards the anchor"
+        "its winch, onto the pulley at the cable's exit point (CASPR's cable_entry_vector, the z axis of "
+        "WireX's winch frame); any non-zero length, it is normalised. Its sign fixes the side the cable "
+        "leaves on: the pulley swivels to face the anchor (its centre on the anchor's side of the axis) "
+        "and the cable, running along this direction, wraps around it until it heads for the anchor"
     )
     radius: Finite = Field(gt=0, le=1e9, description="pulley radius [m] (to the cable's centre line in the groove)")
 
