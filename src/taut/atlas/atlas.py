@@ -51,6 +51,7 @@ from taut.atlas.chart import Chart, chart_lengths, component_containing, structu
 from taut.atlas.platform import fixed_collision_region, platform_outline, rotation, structure_collision_region
 from taut.atlas.reachable import ARC_STEP, cable_reachable_area
 from taut.errors import PoseError, TautError
+from taut.kinematics.swivel import refuse_swivels
 from taut.model.robot import Robot
 from taut.wrapping.ik import wrapped_inverse_kinematics
 from taut.wrapping.tree import DIR, EX, EY, OBJ, PARENT, UX, UY, CableStateTree
@@ -207,6 +208,7 @@ def build_atlas(
         raise PoseError(f"{robot.name}: the orientation must be finite, got {theta}")
     if robot.is_point_mass and theta != 0.0:
         raise PoseError(f"{robot.name}: a point-mass platform has no orientation (theta must be 0)")
+    refuse_swivels(robot, "the structure atlas")
     if not robot.is_point_mass and (robot.dimension != 2 or robot.n_joints):
         raise TautError(f"{robot.name}: the structure atlas is implemented for planar platforms without joints")
     p0 = np.asarray(start, float).reshape(-1)

@@ -39,7 +39,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from taut.kinematics.inverse import anchors_at
+from taut.kinematics.inverse import anchors_at, cable_paths
 from taut.kinematics.pose import body_frames
 from taut.model.robot import Robot
 
@@ -134,14 +134,16 @@ def capsule_segments(
     robot: Robot, poses: np.ndarray, model: CapsuleModel | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
     """End points ``A, B`` of every capsule at each pose, ``(N, C, 3)`` each (planar robots
-    get ``z = 0``).  Cable capsules run from the exit point (``A``) to the anchor (``B``).
+    get ``z = 0``).  Cable capsules run from the exit point (``A``; the tangent point of a
+    swivelling pulley) to the anchor (``B``).
     ``poses`` must already be validated (:func:`taut.kinematics.as_poses`)."""
     model = capsule_model(robot) if model is None else model
     N, n, d = poses.shape[0], robot.n_cables, robot.dimension
     A = np.zeros((N, model.n_capsules, 3))
     B = np.zeros((N, model.n_capsules, 3))
-    A[:, :n, :d] = robot.exits
-    B[:, :n, :d] = anchors_at(robot, poses)
+    b = anchors_at(robot, poses)
+    A[:, :n, :d] = cable_paths(robot, b)[1] if robot.swivel_cables else robot.exits
+    B[:, :n, :d] = b
     if model.n_capsules > n:
         pos, rot = body_frames(robot, poses)
         k = model.body[n:]

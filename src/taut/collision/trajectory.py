@@ -41,7 +41,7 @@ from taut.collision.capsules import CapsuleModel, capsule_model
 from taut.collision.proximity import ProximityResult, proximity
 from taut.collision.singularity import JACOBIAN_TOL, force_closure_singular, jacobian_singular
 from taut.errors import PoseError, TautError
-from taut.kinematics.inverse import MIN_LENGTH, anchors_at
+from taut.kinematics.inverse import OK, ik_status
 from taut.kinematics.jointed import actuator_jacobian
 from taut.kinematics.pose import as_poses
 from taut.model.robot import Robot
@@ -239,8 +239,7 @@ def check_poses(
     prox = proximity(robot, arr, model)
     N = arr.shape[0]
     jac, ratio, fc = np.ones(N, bool), np.zeros(N), np.ones(N, bool)
-    lengths = np.linalg.norm(robot.exits[None] - anchors_at(robot, arr), axis=-1)
-    ok = lengths.min(axis=1) >= MIN_LENGTH
+    ok = (ik_status(robot, arr)[1] == OK).all(axis=1)
     if ok.any():
         J = actuator_jacobian(robot, arr[ok])
         jac[ok], ratio[ok] = jacobian_singular(J, jacobian_tol)

@@ -73,6 +73,7 @@ from taut.interval.branch_prune import branch_and_prune
 from taut.interval.expression import ONE, ZERO, Expr, System, compile_system, compile_tape, const, variables
 from taut.interval.krawczyk import Certificate
 from taut.interval.linear import LinearFilter
+from taut.kinematics.swivel import refuse_swivels
 from taut.model.robot import Robot
 
 #: A 3×3 matrix of expressions (a rotation's entries as polynomials).
@@ -132,6 +133,7 @@ class IGPResult:
 
 
 def _check_robot(robot: Robot) -> None:
+    refuse_swivels(robot, "the inverse geometrico-static problem")
     if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
         kind = "planar" if robot.dimension != 3 else "point-mass" if robot.is_point_mass else "jointed"
         raise UnsupportedRobotError(

@@ -36,6 +36,7 @@ from taut.geometry.rotation import angles_from_matrix
 from taut.interval.branch_prune import Box, bisect, branch_and_prune, same_solution
 from taut.interval.hc4 import contract
 from taut.interval.krawczyk import Certificate
+from taut.kinematics.swivel import refuse_swivels
 from taut.model.robot import Robot
 from taut.parallel import Executor, as_executor
 
@@ -274,6 +275,7 @@ def solve_dgp(
        Università di Bologna, 2015, Chs. 2–3, §4.2 (Tables 4.3–4.6).
        (docs/references.bib: berti2015)
     """
+    refuse_swivels(robot, "the DGP solver")
     if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
         raise TautError("the DGP solver handles spatial rigid platforms without joints")
     if lengths is None:

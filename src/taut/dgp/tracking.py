@@ -58,6 +58,7 @@ from taut.geometry.rotation_kernels import angles as matrix_angles
 from taut.interval.expression import CONST, SQR
 from taut.interval.hc4 import point_kernel
 from taut.interval.krawczyk import certified_step
+from taut.kinematics.swivel import refuse_swivels
 from taut.model.robot import Robot
 
 #: Relative floor of the Krawczyk box half-width (a zero step still needs a box).
@@ -318,6 +319,7 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
     """The state of ``sol``, about to move to ``lengths``: the lengths it holds are its
     taut cables' spans (a solution does not carry them) and, for its slack cables, the new
     ``lengths`` (they enter no equation)."""
+    refuse_swivels(robot, "tracking")
     if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
         raise TautError("tracking handles spatial rigid platforms without joints")
     tau = np.asarray(sol.tensions, float)

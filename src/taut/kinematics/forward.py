@@ -1,8 +1,8 @@
 """Forward kinematics of robots whose cables are all taut (``n ≥`` pose size).
 
 Damped Newton (Levenberg–Marquardt, ``scipy.optimize.least_squares(method="lm")``) on
-the residual ``l(x) − L`` of the inverse kinematics of :mod:`taut.kinematics.inverse`,
-from a guess.  Under-constrained robots, whose cables need not all be taut, are the
+the residual ``l(x) − L`` of the inverse kinematics of :mod:`taut.kinematics.inverse`
+(lengths over swivelling pulleys included), from a guess.  Under-constrained robots, whose cables need not all be taut, are the
 direct geometrico-static problem (``taut.dgp``), not this.
 """
 
@@ -14,7 +14,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import PoseError, TautError, UnreachableLengthsError
-from taut.kinematics.inverse import anchors_at
+from taut.kinematics.inverse import lengths_at
 from taut.kinematics.pose import as_poses
 from taut.model.robot import Robot
 
@@ -61,8 +61,7 @@ def forward_kinematics(
         lo[robot.wrench_dim :], hi[robot.wrench_dim :] = robot.joint_limits.T
 
     def residual(x: np.ndarray) -> np.ndarray:
-        b = anchors_at(robot, x[None, :])[0]
-        return np.linalg.norm(robot.exits - b, axis=1) - L
+        return lengths_at(robot, x[None, :])[0] - L
 
     method = "trf" if robot.n_joints else "lm"
     sol = least_squares(

@@ -7,6 +7,10 @@ platform to the exit point.  The structure matrix is ``W = [u_i ; (b_i − p) ×
 (Eq. 2.11).  For jointed platforms (Lieskovský 2020) ``b_i`` is the anchor on the cable's own
 body and moments are still taken about the platform reference point ``p``.
 
+A cable that leaves the frame through a swivelling pulley (Pott 2018) has the arc wound on
+the pulley in its length, and runs straight from the pulley's tangent point ``c_i``: ``u_i =
+(c_i − b_i)/‖c_i − b_i‖`` (:mod:`taut.kinematics.swivel`).
+
 References
 ----------
 .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
@@ -14,6 +18,8 @@ References
 .. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
    Bachelor thesis, Czech Technical University in Prague, 2020, §3.2.
    (docs/references.bib: lieskovsky2020)
+.. [3] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+   Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
 """
 
 from __future__ import annotations
@@ -44,6 +50,9 @@ class IKResult:
     directions: np.ndarray  #: ``(N, n, d)`` unit vectors ``u_i`` (platform → exit point)
     anchors: np.ndarray  #: ``(N, n, d)`` platform anchors ``b_i`` in the fixed frame
     structure_matrix: np.ndarray  #: ``(N, m, n)`` wrench matrix ``W``
+    #: ``(N, n, d)`` where the straight part of each cable begins: its exit point ``a_i``, or
+    #: the tangent point on its swivelling pulley
+    exit_points: np.ndarray
 
 
 def anchor_points(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
@@ -67,26 +76,93 @@ def anchors_at(robot: Robot, poses: np.ndarray) -> np.ndarray:
     return pos[:, idx, :] + np.einsum("nkij,kj->nki", rot[:, idx], robot.anchors)
 
 
-def _zero_length(robot: Robot, lengths: np.ndarray) -> InfeasiblePoseError:
-    k, i = np.unravel_index(np.argmin(lengths), lengths.shape)
-    return InfeasiblePoseError(
-        f"{robot.name}: at pose {k + 1} cable {i + 1} has zero length (its anchor is at its exit point)"
-    )
+#: ``ik_status`` codes of a cable at a pose: its quantities exist, or why they do not.
+OK, ZERO_LENGTH, ON_SWIVEL_AXIS, ON_PULLEY = 0, 1, 2, 3
+
+_WHY = {
+    ZERO_LENGTH: "has zero length (its anchor is at its exit point)",
+    ON_SWIVEL_AXIS: "has its anchor on the axis of its swivelling pulley (the pulley's swivel angle is undefined)",
+    ON_PULLEY: "has its anchor on or inside the circle of its swivelling pulley (no tangent to leave it by)",
+}
 
 
-def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
-    """Lengths, unit vectors, anchors and structure matrix at each pose.
+def _infeasible(robot: Robot, status: np.ndarray) -> InfeasiblePoseError:
+    k, i = np.argwhere(status != OK)[0]
+    return InfeasiblePoseError(f"{robot.name}: at pose {k + 1} cable {i + 1} {_WHY[int(status[k, i])]}")
 
-    Robots without jointed bodies go through the Numba kernel of
-    :mod:`taut.kinematics.batch` from :data:`BATCH_POSES` poses on; fewer poses and jointed
-    platforms through NumPy over body frames.
-    Raises :class:`InfeasiblePoseError` when a cable has zero length (its direction and the
-    structure matrix do not exist there).
+
+def ik_status(robot: Robot, poses: np.ndarray) -> tuple[IKResult, np.ndarray]:
+    """:func:`inverse_kinematics` of ``(N, pose_size)`` poses already checked by
+    :func:`~taut.kinematics.pose.as_poses`, without raising: the result at every pose and the
+    status ``(N, n)`` of each cable (:data:`OK`, :data:`ZERO_LENGTH`, :data:`ON_SWIVEL_AXIS`,
+    :data:`ON_PULLEY`).  Lengths and exit points are finite everywhere; directions and the
+    structure matrix are zero for the cables and poses whose status is not :data:`OK`.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §2.1.1, Eqs. 2.1, 2.8 and 2.10. (docs/references.bib: rushton2022)
+    .. [2] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+       Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+    """
+    d = robot.dimension
+    b = anchors_at(robot, poses)
+    lengths, exits, status = cable_paths(robot, b)
+    v = exits - b
+    free = np.sqrt(np.einsum("nki,nki->nk", v, v))
+    good = status == OK
+    u = np.where(good[..., None], v / np.where(good, free, 1.0)[..., None], 0.0)
+    W = np.swapaxes(u, 1, 2)
+    if not robot.is_point_mass:
+        m = cross(b - poses[:, None, :d], u)
+        m = m[..., None] if m.ndim == 2 else m
+        W = np.concatenate([W, np.swapaxes(m, 1, 2)], axis=1)
+    W = np.where(good.all(axis=1)[:, None, None], W, 0.0)
+    return IKResult(lengths, u, b, W, exits), status
+
+
+def cable_paths(robot: Robot, anchors: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Cable lengths ``(N, n)``, the points where their straight parts begin ``(N, n, d)``
+    (exit points, or tangent points of swivelling pulleys) and their status ``(N, n)`` (see
+    :func:`ik_status`) for the platform anchors ``(N, n, d)`` in the fixed frame."""
+    exits = np.broadcast_to(robot.exits[None], anchors.shape)
+    v = exits - anchors
+    lengths = np.sqrt(np.einsum("nki,nki->nk", v, v))
+    status = np.where(lengths < MIN_LENGTH, ZERO_LENGTH, OK)
+    if robot.swivel_cables:
+        from taut.kinematics.swivel import swivel_parameters, swivel_paths
+
+        idx, axes, radii = swivel_parameters(robot)
+        paths = swivel_paths(robot.exits[idx], axes, radii, anchors[:, idx])
+        exits = exits.copy()
+        lengths[:, idx] = paths.lengths
+        exits[:, idx] = paths.tangent_points
+        status[:, idx] = np.select([paths.on_axis, paths.on_pulley], [ON_SWIVEL_AXIS, ON_PULLEY], OK)
+    return lengths, exits, status
+
+
+def lengths_at(robot: Robot, poses: np.ndarray) -> np.ndarray:
+    """Cable lengths ``(N, n)`` at ``(N, pose_size)`` poses without checks (solvers call it on
+    their own iterates): finite everywhere, also where :func:`ik_status` flags a cable."""
+    return cable_paths(robot, anchors_at(robot, poses))[0]
+
+
+def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
+    """Lengths, unit vectors, anchors and structure matrix at each pose.
+
+    Robots without jointed bodies or swivelling pulleys go through the Numba kernel of
+    :mod:`taut.kinematics.batch` from :data:`BATCH_POSES` poses on; fewer poses, jointed
+    platforms and robots with swivelling pulleys (:mod:`taut.kinematics.swivel`) through NumPy.
+    Raises :class:`InfeasiblePoseError` when a cable has zero length, or its anchor is on the
+    axis or inside the circle of its swivelling pulley (its direction and the structure matrix
+    do not exist there).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.1, Eqs. 2.1, 2.8 and 2.10. (docs/references.bib: rushton2022)
+    .. [2] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+       Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
     """
     arr, single = as_poses(robot, poses)
     d = robot.dimension
@@ -94,30 +170,24 @@ def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
     if batched is not None:
         lengths, W, ok = batched
         if not ok.all():
-            raise _zero_length(robot, lengths)
+            raise _infeasible(robot, np.where(lengths < MIN_LENGTH, ZERO_LENGTH, OK))
         u = np.swapaxes(W[:, :d, :], 1, 2)
         b = robot.exits[None, :, :] - u * lengths[..., None]
+        res = IKResult(lengths, u, b, W, np.broadcast_to(robot.exits[None], b.shape))
     else:
-        b = anchors_at(robot, arr)
-        v = robot.exits[None, :, :] - b
-        lengths = np.sqrt(np.einsum("nki,nki->nk", v, v))
-        if lengths.size and lengths.min() < MIN_LENGTH:
-            raise _zero_length(robot, lengths)
-        u = v / lengths[..., None]
-        W = np.swapaxes(u, 1, 2)
-        if not robot.is_point_mass:
-            m = cross(b - arr[:, None, :d], u)
-            m = m[..., None] if m.ndim == 2 else m
-            W = np.concatenate([W, np.swapaxes(m, 1, 2)], axis=1)
+        res, status = ik_status(robot, arr)
+        if (status != OK).any():
+            raise _infeasible(robot, status)
     if single:
-        return IKResult(lengths[0], u[0], b[0], W[0])
-    return IKResult(lengths, u, b, W)
+        return IKResult(res.lengths[0], res.directions[0], res.anchors[0], res.structure_matrix[0], res.exit_points[0])
+    return res
 
 
 def _batched(robot: Robot, poses: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
     """``(lengths, W, ok)`` of :func:`taut.kinematics.batch.batch_structure_matrices`, or None
-    for fewer than :data:`BATCH_POSES` poses or a robot the kernel does not handle."""
-    if poses.shape[0] < BATCH_POSES:
+    for fewer than :data:`BATCH_POSES` poses, a robot the kernel does not handle, or one with
+    swivelling pulleys (the kernel does not return their tangent points)."""
+    if poses.shape[0] < BATCH_POSES or robot.swivel_cables:
         return None
     from taut.kinematics.batch import batch_structure_matrices, supports_batch
 

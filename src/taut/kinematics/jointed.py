@@ -36,7 +36,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TautError
-from taut.kinematics.inverse import anchors_at, inverse_kinematics
+from taut.kinematics.inverse import inverse_kinematics, lengths_at
 from taut.kinematics.pose import as_poses, body_frames
 from taut.model.robot import Robot
 
@@ -53,8 +53,7 @@ def actuator_positions(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
        (docs/references.bib: lieskovsky2020)
     """
     arr, single = as_poses(robot, poses)
-    b = anchors_at(robot, arr)
-    q = np.concatenate([np.linalg.norm(robot.exits[None] - b, axis=-1), arr[:, robot.wrench_dim :]], axis=1)
+    q = np.concatenate([lengths_at(robot, arr), arr[:, robot.wrench_dim :]], axis=1)
     return q[0] if single else q
 
 

@@ -22,6 +22,7 @@ if TYPE_CHECKING:
         Reference,
         Robot,
         Shape,
+        SwivelPulley,
         Trajectory,
     )
     from taut.model.schema import robot_schema
@@ -43,6 +44,7 @@ _LAZY = {
             "Reference",
             "Robot",
             "Shape",
+            "SwivelPulley",
             "Trajectory",
         ],
         "taut.model.robot",
@@ -64,6 +66,7 @@ __all__ = [
     "Reference",
     "Robot",
     "Shape",
+    "SwivelPulley",
     "Trajectory",
     "example",
     "example_descriptions",

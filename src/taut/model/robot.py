@@ -109,8 +109,44 @@ class Pulley(_Strict):
     direction: Literal["ccw", "cw"] = "ccw"
 
 
+class SwivelPulley(_Strict):
+    """A swivelling exit pulley of a spatial robot (CASPR's ``base_rotating_pulley``, the
+    pulley of WireX's and Pott's kinematic model).
+
+    The cable comes from its winch along the swivel axis and runs onto the pulley at the
+    cable's ``exit`` point, which lies on that axis.  The pulley turns about the axis so that
+    its plane contains the platform anchor; its centre lies ``radius`` away from the axis, on
+    the anchor's side, the cable wraps around it and leaves it tangentially towards the
+    anchor.  The wrap angle and the tangent point follow from the anchor's position
+    (``taut.kinematics.swivel``).
+
+    References
+    ----------
+    .. [1] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+       Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+    """
+
+    axis: tuple[Finite, Finite, Finite] = Field(
+        description="direction of the swivel axis in the fixed frame: the way the cable runs, coming from "
+        "its winch, onto the pulley at the cable's exit point (CASPR's cable_entry_vector, the z axis of "
+        "WireX's winch frame); any non-zero length, it is normalised. Its sign fixes the side the cable "
+        "leaves on: the pulley swivels to face the anchor (its centre on the anchor's side of the axis) "
+        "and the cable, running along this direction, wraps around it until it heads for the anchor"
+    )
+    radius: Finite = Field(gt=0, le=1e9, description="pulley radius [m] (to the cable's centre line in the groove)")
+
+    @field_validator("axis")
+    @classmethod
+    def _axis(cls, v: tuple[float, float, float]) -> tuple[float, float, float]:
+        if not math.hypot(*v) > 0:
+            raise ValueError(f"swivel axis must be a non-zero vector, got {list(v)}")
+        return v
+
+
 class Cable(_Strict):
-    """Cable *i*: from the fixed exit point ``a_i`` to the anchor ``r_i`` on a platform body."""
+    """Cable *i*: from the fixed exit point ``a_i`` to the anchor ``r_i`` on a platform body.
+
+    With ``swivel``, ``a_i`` is the point where the cable runs onto its swivelling pulley."""
 
     name: str | None = None
     exit: tuple[Coordinate, ...]
@@ -121,6 +157,12 @@ class Cable(_Strict):
     stiffness: Finite | None = Field(default=None, gt=0, description="axial stiffness EA [N]")
     radius: Finite = Field(default=0.0, ge=0, description="cable radius for interference checks [m]")
     pulley: Pulley | None = None
+    swivel: SwivelPulley | None = Field(
+        default=None,
+        description="swivelling exit pulley of a spatial robot: the cable runs onto it at `exit` and leaves "
+        "it tangentially towards the anchor (not to be confused with `pulley`, the exit pulley of a planar "
+        "winch that collidable cables wrap around)",
+    )
 
     @field_validator("tension")
     @classmethod
@@ -295,6 +337,12 @@ class Robot(_Strict):
                 raise ValueError(
                     f"cables[{i}].anchor: a point-mass platform has all anchors at its origin, got {c.anchor}"
                 )
+            if c.swivel is not None and d != 3:
+                raise ValueError(
+                    f"cables[{i}].swivel: swivelling pulleys are modelled on spatial robots (dimension 3) only"
+                )
+            if c.swivel is not None and c.pulley is not None:
+                raise ValueError(f"cables[{i}]: give either swivel (spatial) or pulley (planar winch), not both")
             if c.body is not None and c.body not in bodies:
                 raise ValueError(f"cables[{i}].body: unknown body {c.body!r}; expected one of {sorted(bodies)}")
         keys: dict[tuple[tuple[float, ...], tuple[float, ...], str], int] = {}
@@ -360,6 +408,11 @@ class Robot(_Strict):
     @property
     def n_cables(self) -> int:
         return len(self.cables)
+
+    @property
+    def swivel_cables(self) -> tuple[int, ...]:
+        """0-based indices of the cables that leave the frame through a swivelling pulley."""
+        return tuple(i for i, c in enumerate(self.cables) if c.swivel is not None)
 
     @property
     def is_point_mass(self) -> bool:

@@ -47,6 +47,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import InfeasiblePoseError, PoseError, TautError
+from taut.kinematics.swivel import refuse_swivels
 from taut.planning.continuation import ImplicitManifold
 
 if TYPE_CHECKING:
@@ -178,6 +179,7 @@ class WrenchFeasibleManifold:
         platform's constant ``wrench`` about ``wrench_point`` as ``ŵ_0``, the cables'
         tension and length bounds (a zero lower length bound becomes 1e-6: Eq. (8) needs
         ``ρ_min > 0``), and ``E`` (default ``10⁴ I``, §5)."""
+        refuse_swivels(robot, "wrench-feasible path planning")
         if robot.dimension != 3 or robot.n_cables != 6 or robot.is_point_mass or robot.n_joints:
             raise TautError(f"{robot.name}: wrench-feasible path planning needs a rigid 6-cable spatial robot")
         if robot.orientation != "tilt-torsion":

@@ -33,6 +33,7 @@ from taut.errors import PoseError, TautError
 from taut.geometry.intersections import circles_overlap, point_in_polygon
 from taut.kinematics.inverse import anchor_points
 from taut.kinematics.pose import as_poses
+from taut.kinematics.swivel import refuse_swivels
 from taut.model.robot import Circle, Robot
 from taut.wrapping.state import CablePath, contact_angle, rebuild_path
 from taut.wrapping.tree import DIR, OBJ, CableStateTree
@@ -44,6 +45,7 @@ def collidable_objects(robot: Robot) -> tuple[np.ndarray, list[np.ndarray]]:
     polygon obstacles as zero-radius vertices plus their interior, and the robot's
     disallowed regions.  Raises :class:`TautError` if two objects overlap or an object
     overlaps a winch pulley."""
+    refuse_swivels(robot, "cable wrapping")
     if robot.dimension != 2:
         raise TautError(f"{robot.name}: cable wrapping is implemented for planar robots (dimension 2)")
     circles: list[list[float]] | np.ndarray

@@ -1,0 +1,96 @@
+"""A robot with swivelling exit pulleys through the command line: `taut ik`, `taut workspace`
+and `taut check` model the pulleys, `taut fk` refuses them with one line and status 2."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from taut.kinematics import inverse_kinematics
+from taut.model import load_robot
+from taut.statics.feasibility import wrench_closure
+
+ROBOT_YAML = """\
+format: taut/1
+name: swivel test robot
+description: spatial 8-cable test robot whose cables leave the frame through swivelling pulleys
+dimension: 3
+orientation: xyz-fixed
+platform:
+  kind: rigid
+  mass: 5.0
+  wrench_point: [0, 0, 0]
+  shape:
+    capsules:
+      - {a: [-0.15, 0, 0], b: [0.15, 0, 0], radius: 0.1}
+cables:
+  - {exit: [-1.5, -1, -1], anchor: [0.15, -0.1, 0.05], tension: [5, 500], swivel: {axis: [0, 0, 1], radius: 0.08}}
+  - {exit: [1.5, -1, -1], anchor: [-0.15, -0.1, 0.05], tension: [5, 500], swivel: {axis: [0, 0, 1], radius: 0.08}}
+  - {exit: [1.5, 1, -1], anchor: [-0.15, 0.1, 0.05], tension: [5, 500], swivel: {axis: [0, 0, 1], radius: 0.08}}
+  - {exit: [-1.5, 1, -1], anchor: [0.15, 0.1, 0.05], tension: [5, 500], swivel: {axis: [0, 0, 1], radius: 0.08}}
+  - {exit: [-1.5, -1, 1], anchor: [0.15, -0.1, -0.05], tension: [5, 500], swivel: {axis: [0, 0, -1], radius: 0.08}}
+  - {exit: [1.5, -1, 1], anchor: [-0.15, -0.1, -0.05], tension: [5, 500], swivel: {axis: [0, 0, -1], radius: 0.08}}
+  - {exit: [1.5, 1, 1], anchor: [-0.15, 0.1, -0.05], tension: [5, 500], swivel: {axis: [0, 0, -1], radius: 0.08}}
+  - {exit: [-1.5, 1, 1], anchor: [0.15, 0.1, -0.05], tension: [5, 500], swivel: {axis: [0, 0, -1], radius: 0.08}}
+"""
+
+
+@pytest.fixture
+def robot_file(tmp_path: Path) -> Path:
+    path = tmp_path / "swivel.yaml"
+    path.write_text(ROBOT_YAML, encoding="utf-8")
+    return path
+
+
+def test_ik_includes_the_pulleys(robot_file: Path, taut_cli: Callable) -> None:
+    pose = [0.2, -0.1, 0.3, 0.1, -0.05, 0.2]
+    res = taut_cli("ik", str(robot_file), "--pose", ",".join(map(str, pose)), "--json").json()
+    robot = load_robot(robot_file)
+    ik = inverse_kinematics(robot, pose)
+    np.testing.assert_allclose(res["lengths"], ik.lengths, rtol=1e-12)
+    np.testing.assert_allclose(res["directions"], ik.directions, atol=1e-12)
+    np.testing.assert_allclose(res["structure_matrix"], ik.structure_matrix, atol=1e-12)
+    # the arc and the offset tangent point make every cable longer than the straight line
+    straight = np.linalg.norm(robot.exits - ik.anchors, axis=1)
+    assert (np.asarray(res["lengths"]) > straight).all()
+
+
+def test_workspace_uses_the_pulley_structure_matrix(robot_file: Path, tmp_path: Path, taut_cli: Callable) -> None:
+    out = tmp_path / "ws.npz"
+    res = taut_cli(
+        "workspace",
+        str(robot_file),
+        "--condition",
+        "wrench-closure",
+        "--grid=-1.8:1.8:7;-0.8:0.8:5;-0.8:0.8:5",
+        "--orientation",
+        "0,0,0",
+        "--out",
+        str(out),
+        "--json",
+    ).json()
+    assert res["poses"] == 7 * 5 * 5
+    data = np.load(out)
+    grid = np.meshgrid(data["axis_0"], data["axis_1"], data["axis_2"], indexing="ij")
+    poses = np.column_stack([g.reshape(-1) for g in grid] + [np.zeros((grid[0].size, 3))])
+    inside = data["inside"]
+    W = inverse_kinematics(load_robot(robot_file), poses).structure_matrix
+    np.testing.assert_array_equal(inside, wrench_closure(W))
+    assert res["inside"] == int(inside.sum()) and 0 < res["inside"] < res["poses"]
+
+
+def test_check_runs_on_the_tangent_points(robot_file: Path, tmp_path: Path, taut_cli: Callable) -> None:
+    traj = tmp_path / "traj.yaml"
+    traj.write_text("waypoints: [[0, 0, 0, 0, 0, 0], [0.3, 0.2, 0.1, 0, 0, 0.2]]\nsteps: [10]\n", encoding="utf-8")
+    res = taut_cli("check", str(robot_file), "--trajectory", str(traj), "--json").json()
+    assert len(res["steps"]) == 11
+
+
+def test_fk_refuses_pulleys_with_one_line(robot_file: Path, taut_cli: Callable) -> None:
+    run = taut_cli("fk", str(robot_file), "--lengths", ",".join(["2.0"] * 8))
+    assert run.code == 2
+    assert run.err.count("\n") == 1 and run.err.startswith("taut: error: ")
+    assert "swivelling pulleys" in run.err and "Traceback" not in run.err
