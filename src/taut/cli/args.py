@@ -10,12 +10,12 @@ from collections.abc import Collection
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-import numpy as np
-
 from taut.errors import PoseError, TautError
 from taut.model.limits import MAX_MAGNITUDE
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from taut.model.robot import Robot
 
 _PI = re.compile(r"^([+-]?)(\d*\.?\d*)\*?pi(?:/(\d*\.?\d+))?$")
@@ -46,6 +46,8 @@ def number(text: str, what: str) -> float:
 
 def vector(text: str, what: str) -> np.ndarray:
     """Comma-separated numbers."""
+    import numpy as np
+
     parts = [p for p in text.split(",")]
     if not text.strip() or any(not p.strip() for p in parts):
         raise TautError(f"{what}: expected comma-separated numbers, got {text!r}")
@@ -83,6 +85,8 @@ def pose(robot: Robot, text: str) -> np.ndarray:
 
 def default_pose(robot: Robot) -> np.ndarray:
     """The example's `home` reference pose if it has one, else the centroid of the exits."""
+    import numpy as np
+
     if robot.reference is not None and robot.reference.poses:
         name = "home" if "home" in robot.reference.poses else next(iter(robot.reference.poses))
         return np.asarray(robot.reference.poses[name], float)

@@ -14,8 +14,6 @@ import argparse
 import json
 from typing import TYPE_CHECKING
 
-import numpy as np
-
 from taut.errors import TautError
 
 if TYPE_CHECKING:
@@ -38,6 +36,8 @@ JSON: {"charts", "edges", "theta", "reachable_area", "workspace_area", "pruned",
 
 
 def _chart_json(atlas: StructureAtlas, c: int) -> dict:
+    import numpy as np
+
     C = atlas.charts[c]
     dom = C.domain
     return {
@@ -52,6 +52,8 @@ def _chart_json(atlas: StructureAtlas, c: int) -> dict:
 
 def cmd_atlas(ns: argparse.Namespace) -> int:
     import time
+
+    import numpy as np
 
     from taut.atlas import atlas_workspace, build_atlas
     from taut.cli import args as A

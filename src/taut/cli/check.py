@@ -14,11 +14,11 @@ import argparse
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-import numpy as np
-
 from taut.errors import TautError
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from taut.cli.main import Command
 
 HELP = """Check every step of a trajectory for cable/platform self-collision (capsule model),
@@ -42,6 +42,8 @@ def _step(index: int | None) -> int | None:
 
 def _runs(flags: np.ndarray) -> list[list[int]]:
     """1-based inclusive ranges of consecutive true flags."""
+    import numpy as np
+
     idx = np.flatnonzero(flags)
     if not idx.size:
         return []
@@ -52,6 +54,8 @@ def _runs(flags: np.ndarray) -> list[list[int]]:
 
 
 def cmd_check(ns: argparse.Namespace) -> int:
+    import numpy as np
+
     from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
     from taut.collision import check_poses, load_trajectory, trajectory_poses

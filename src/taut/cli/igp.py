@@ -14,11 +14,10 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING
 
-import numpy as np
-
 from taut.errors import CableSetError, PoseError, TautError
 
 if TYPE_CHECKING:
+    import numpy as np
     from rich.console import Console
 
     from taut.cli.main import Command

@@ -15,8 +15,6 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING, NoReturn
 
-import numpy as np
-
 from taut.cli import args as A
 from taut.cli.progress import progress_bar, wanted
 from taut.errors import TautError
@@ -201,6 +199,8 @@ def cmd_tensions(ns: argparse.Namespace) -> int:
 def _grid(text: str | None, dimension: int) -> tuple[list[tuple[float, float, int]] | None, int | None]:
     """``--grid N`` (points per axis) or ``lo:hi:n;lo:hi:n[;...]`` (one range per axis), with
     at least one point per axis and at most :data:`MAX_GRID_POSES` poses in all."""
+    import numpy as np
+
     if text is None:
         return None, None
     if text.strip().isdigit():
@@ -224,6 +224,8 @@ def _grid(text: str | None, dimension: int) -> tuple[list[tuple[float, float, in
 
 
 def cmd_workspace(ns: argparse.Namespace) -> int:
+    import numpy as np
+
     from taut.parallel import get_executor
     from taut.statics.wrench import BoxWrenchSet
     from taut.workspace import evaluate_workspace

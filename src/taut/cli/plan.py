@@ -13,11 +13,11 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING
 
-import numpy as np
-
 from taut.errors import TautError
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from taut.cli.main import Command
     from taut.model.robot import Robot
 
@@ -37,6 +37,8 @@ JSON: {"found", "path": [[x,y,z,phi,theta,sigma], ...], "charts", "elapsed_s",
 
 
 def _pose(robot: Robot, text: str, what: str) -> np.ndarray:
+    import numpy as np
+
     from taut.cli import args as A
 
     ref = robot.reference.poses if robot.reference is not None else {}
@@ -64,6 +66,8 @@ def _fixed(text: str | None, start: np.ndarray) -> dict[str, float]:
 
 
 def _ellipsoid(text: str | None) -> np.ndarray:
+    import numpy as np
+
     from taut.cli import args as A
 
     if text is None:
@@ -83,6 +87,8 @@ def _ellipsoid(text: str | None) -> np.ndarray:
 
 
 def cmd_plan(ns: argparse.Namespace) -> int:
+    import numpy as np
+
     from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
     from taut.cli.progress import progress_bar, wanted

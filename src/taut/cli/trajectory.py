@@ -14,17 +14,19 @@ import json
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-import numpy as np
-
 from taut.errors import TautError
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from taut.cli.main import Command
 
 
 def _read_waypoints(spec: str) -> tuple[str | None, np.ndarray | None]:
     """``builtin`` / ``builtin:NAME`` (the robot's trajectories) or a file: JSON/YAML list
     of waypoints, or text with one waypoint per line (commas or spaces)."""
+    import numpy as np
+
     if spec == "builtin" or spec.startswith("builtin:"):
         return spec.partition(":")[2] or None, None
     path = Path(spec)
@@ -62,6 +64,8 @@ def _read_waypoints(spec: str) -> tuple[str | None, np.ndarray | None]:
 
 
 def cmd_trajectory(ns: argparse.Namespace) -> int:
+    import numpy as np
+
     from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
     from taut.wrapping.state import contacts_text
