@@ -114,7 +114,10 @@ def test_convert_to_mujoco(taut_cli: Callable[..., Any], tmp_path: Path) -> None
 @pytest.mark.parametrize(
     ("argv", "message"),
     [
-        (["ik", str(FIXTURES / "pulley_bodies.xml")], "swivelling pulleys (base_rotating_pulley) are not modelled yet"),
+        (
+            ["convert", str(FIXTURES / "pulley_bodies.xml"), "pulley.mjcf.xml"],
+            "cable 1 has a swivelling pulley of radius 0.05; the tendon would run straight from its exit point",
+        ),
         (["ik", str(FIXTURES / "multilink_bodies.xml")], "multi-link"),
         (["ik", str(COGIRO), "--cable-set", "nope"], "no cable set 'nope'"),
         (["ik", "planar-4cable", "--cable-set", "x"], "--cable-set"),

@@ -41,10 +41,43 @@ def test_workspace_of_a_wcrfx_file(taut_cli):
     assert 0 < result["inside"] < 25  # the triangle of exit points holds some grid points, not all
 
 
+def test_ik_of_wcrfx_pulleys(taut_cli):
+    """IPAnema's pulleys are read as swivels: at (0, 0, 1) each cable's length is WireX's
+    pulley length (``CKinematics::doInverseKinematicsPulleyEx``: the anchor at ``bxy`` from
+    the winch z axis and ``bz`` along it, ``BM = ‖(bxy − r, bz)‖``, ``l_f = √(BM² − r²)``,
+    ``l = r (acos(l_f/BM) + acos(bz/BM)) + l_f``), with r = 0.1."""
+    path = FIXTURES / "IPAnema.wcrfx"
+    result = taut_cli("ik", str(path), "--pose", "0,0,1,0,0,0", "--json").json()
+    chains = ET.parse(path).getroot().findall("robot/geometry/chain")
+    base = np.array([[float(c.find("base").get(k)) for k in "xyz"] for c in chains])
+    plat = np.array([[float(c.find("platform").get(k)) for k in "xyz"] for c in chains])
+    ap = plat + [0, 0, 1] - base
+    bxy, bz, r = np.hypot(ap[:, 0], ap[:, 1]), ap[:, 2], 0.1
+    bm = np.hypot(bxy - r, bz)
+    lf = np.sqrt(bm**2 - r**2)
+    assert np.allclose(result["lengths"], r * (np.arccos(lf / bm) + np.arccos(bz / bm)) + lf, rtol=0, atol=1e-12)
+
+
+def test_workspace_of_wcrfx_pulleys(taut_cli):
+    result = taut_cli(
+        "workspace",
+        str(FIXTURES / "IPAnema.wcrfx"),
+        "--condition",
+        "wrench-closure",
+        "--grid",
+        "4",
+        "--orientation",
+        "0,0,0",
+        "--json",
+    ).json()
+    assert result["robot"] == "IPAnema" and result["poses"] == 64
+    assert 0 < result["inside"] < 64
+
+
 @pytest.mark.parametrize(
     "name, words",
     [
-        ("IPAnema.wcrfx", "swivelling pulleys of radius 0.1 m are not modelled yet"),
+        ("no_radius_2t.wcrfx", "swivelling pulleys of radius 0.1 m (3 of 3 cables) on a planar robot (2T)"),
         ("line_1t.wcrfx", "motion pattern 1T (a point moving on a line)"),
         ("five_dof_2r3t.wcrfx", "motion pattern 2R3T"),
     ],

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from taut.errors import RobotFileError, UnsupportedRobotError
@@ -242,11 +242,86 @@ def test_cable_sets_and_linear_springs(q: list[float]) -> None:
     assert robot.tension_bounds[1].tolist() == [math.inf] * 8
 
 
-def test_refused_constructs() -> None:
+def caspr_pulley_lengths(cables: Path, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Cable lengths ``(n,)`` of the ``base_rotating_pulley`` cables at the pose ``q`` of a
+    ``SPATIAL_EULER_XYZ`` link at the origin, as CASPR computes them
+    (``BaseRotatingPulleyAttachment.ComputePulleyLeavingLocation``, ``src/Model/Cables/
+    CableAttachments/BaseRotatingPulleyAttachment/``; the cable length is the segment from the
+    leaving point plus the first attachment's ``length_offset``, ``CableSegmentModel``), and
+    whether each pose is in the domain of CASPR's formula.
+
+    With the entry point ``F``, the entry direction ``v``, the anchor ``B``: the plane normal
+    ``n = v × (B − F)``, the centre ``C = F + R (n × v)/‖n × v‖``, ``ρ = R/‖B − C‖``, the
+    leaving point ``A = C + ρ² (B − C) − ρ √(1 − ρ²) n̂ × (B − C)`` and the arc
+    ``R acos(((F − C)/‖F − C‖)·((A − C)/‖A − C‖))``: a single ``acos``, right while the
+    cable wraps at most half a turn, i.e. while ``A`` is not behind the centre along ``v``."""
+    R = rx(q[3]) @ ry(q[4]) @ rz(q[5])
+    lengths, valid = [], []
+    for el in ET.parse(cables).getroot().iter("cable_ideal"):
+        F = vec(el, "attachments/base_rotating_pulley/fixed_location")
+        radius = float(vec(el, "attachments/base_rotating_pulley/pulley_radius")[0])
+        v = vec(el, "attachments/base_rotating_pulley/cable_entry_vector")
+        B = q[:3] + R @ vec(el, "attachments/attachment/location")
+        n = np.cross(v, B - F)
+        n_hat = n / np.linalg.norm(n)
+        towards = np.cross(n, v)
+        C = F + radius * towards / np.linalg.norm(towards)
+        rho = radius / np.linalg.norm(B - C)
+        A = C + rho**2 * (B - C) - rho * math.sqrt(1 - rho**2) * np.cross(n_hat, B - C)
+        n1, n2 = (F - C) / np.linalg.norm(F - C), (A - C) / np.linalg.norm(A - C)
+        lengths.append(np.linalg.norm(B - A) + radius * math.acos(float(n1 @ n2)))
+        valid.append(float((A - C) @ v) > 1e-9 * radius and np.linalg.norm(n) > 1e-6)
+    return np.array(lengths), np.array(valid)
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.tuples(st.floats(-0.8, 0.8), st.floats(-0.5, 0.5), st.floats(0.4, 1.6)),
+    st.tuples(*[st.floats(-0.4, 0.4)] * 3),
+)
+def test_base_rotating_pulleys_are_casprs_lengths(position: tuple, angles: tuple) -> None:
+    """``base_rotating_pulley`` cables read as swivels have CASPR's lengths (to 1e-9) at
+    random poses where CASPR's single-``acos`` arc is valid (wraps up to half a turn)."""
+    q = np.array([*position, *angles])
+    expected, valid = caspr_pulley_lengths(FIXTURES / "pulley_cables.xml", q)
+    assume(bool(valid.all()))
+    robot = load_robot(FIXTURES / "pulley_bodies.xml")
+    assert robot.swivel_cables == tuple(range(8))
+    np.testing.assert_allclose(inverse_kinematics(robot, q).lengths, expected, rtol=0, atol=1e-9)
+
+
+def test_base_rotating_pulleys_round_trip(tmp_path: Path) -> None:
+    robot = load_robot(FIXTURES / "pulley_bodies.xml")
+    write_caspr(robot, tmp_path / "back_bodies.xml")
+    assert (tmp_path / "back_cables.xml").read_text().count("<base_rotating_pulley>") == 8
+    back = read_caspr(tmp_path / "back_bodies.xml")
+    assert [c.swivel for c in back.cables] == [c.swivel for c in robot.cables]
+    assert np.array_equal(back.exits, robot.exits) and np.array_equal(back.anchors, robot.anchors)
+    q = np.array([[0.1, -0.2, 0.9, 0.1, -0.2, 0.3], [0, 0, 1, 0, 0, 0]])
+    np.testing.assert_allclose(
+        inverse_kinematics(back, q).lengths, inverse_kinematics(robot, q).lengths, rtol=0, atol=0
+    )
+
+
+def test_refused_constructs(tmp_path: Path) -> None:
+    screw = copy_model(
+        tmp_path, "pulley", edit_cables=lambda s: s.replace("base_rotating_pulley", "screw_base_rotating_pulley")
+    )
+    with pytest.raises(UnsupportedRobotError, match=r"<screw_base_rotating_pulley> is not modelled by taut"):
+        load_robot(screw)
+    planar = copy_model(
+        tmp_path,
+        "planar_xz",
+        edit_cables=lambda s: s.replace(
+            "<attachment><link>0</link><location>-1 0.3 1</location></attachment>",
+            "<base_rotating_pulley><fixed_location>-1 0.3 1</fixed_location><pulley_radius>0.05</pulley_radius>"
+            "<cable_entry_vector>0 0 1</cable_entry_vector></base_rotating_pulley>",
+        ),
+    )
     with pytest.raises(
-        UnsupportedRobotError, match=r"swivelling pulleys \(base_rotating_pulley\) are not modelled yet.*swivel"
+        UnsupportedRobotError, match=r"cable 1 \('c1'\) leaves through a base_rotating_pulley; .*spatial robots only"
     ):
-        load_robot(FIXTURES / "pulley_bodies.xml")
+        load_robot(planar)
     with pytest.raises(UnsupportedRobotError, match="multi-link"):
         load_robot(FIXTURES / "multilink_bodies.xml")
 

@@ -44,6 +44,17 @@ def test_exit_pulleys_are_refused():
         mjcf_text(robot_from_dict(data))
 
 
+def test_swivelling_pulleys_are_refused():
+    data = robot_to_dict(with_inertia("spatial-8cable", mass=2.0, inertia=(1, 1, 1, 0, 0, 0)))
+    data["cables"][4]["swivel"] = {"axis": [0, 0, 1], "radius": 0.05}
+    with pytest.raises(
+        UnsupportedRobotError, match="cable 5 has a swivelling pulley of radius 0.05; the tendon would run straight"
+    ):
+        mjcf_text(robot_from_dict(data))
+    del data["cables"][4]["swivel"]
+    assert "<tendon" in mjcf_text(robot_from_dict(data))
+
+
 def test_bad_poses_are_refused():
     robot = with_inertia("planar-4cable", inertia=(0.01,))
     with pytest.raises(PoseError, match="3 coordinates"):

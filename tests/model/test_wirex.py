@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import taut
@@ -108,12 +108,21 @@ def test_ipanema_reproduces_wirex_reference_values():
     assert np.allclose(ik.structure_matrix[0].T, WIREX_AT, rtol=0, atol=1e-14)
 
 
-def test_pulleys_are_refused_by_default():
+def test_pulleys_are_swivels_by_default():
+    robot = read_wirex(FIXTURES / "IPAnema.wcrfx")
+    base, _ = raw_chains("IPAnema.wcrfx")
+    assert np.array_equal(robot.exits, base)
+    assert all(c.swivel is not None and c.swivel.axis == (0, 0, 1) and c.swivel.radius == 0.1 for c in robot.cables)
+    assert "APPROXIMATION" not in robot.description
+
+
+def test_planar_pulleys_are_refused_by_default():
     with pytest.raises(
-        UnsupportedRobotError, match=r'IPAnema\.wcrfx: <chain id="1"> <base>: swivelling pulleys of radius 0\.1 m'
+        UnsupportedRobotError, match=r'no_radius_2t\.wcrfx: <chain id="1"> <base>: swivelling pulleys of radius 0\.1 m'
     ) as err:
-        read_wirex(FIXTURES / "IPAnema.wcrfx")
-    assert "pulleys='points'" in str(err.value) and "\n" not in str(err.value)
+        read_wirex(FIXTURES / "no_radius_2t.wcrfx")
+    assert "spatial robots only" in str(err.value) and "pulleys='points'" in str(err.value)
+    assert "\n" not in str(err.value)
 
 
 def test_point_pulleys_say_so_in_the_description():
@@ -124,8 +133,8 @@ def test_point_pulleys_say_so_in_the_description():
 
 def test_point_pulleys_are_the_fixed_points():
     """Pulleys of radius 0.05 taken as points give the robot whose file says radius 0."""
-    with pytest.raises(UnsupportedRobotError, match="radius 0.05 m .*8 of 8 cables"):
-        read_wirex(FIXTURES / "pulleys_3r3t.wcrfx")
+    swivels = read_wirex(FIXTURES / "pulleys_3r3t.wcrfx")
+    assert [c.swivel.radius for c in swivels.cables] == [0.05] * 8
     points, plain = read("pulleys_3r3t.wcrfx"), read("spatial_3r3t.wcrfx")
     assert np.array_equal(points.exits, plain.exits) and np.array_equal(points.anchors, plain.anchors)
     assert "radius 0.05 m" in points.description
@@ -136,6 +145,97 @@ def test_missing_radius_is_wirex_default_pulley():
     with pytest.raises(UnsupportedRobotError, match="radius 0.1 m"):
         read_wirex(FIXTURES / "no_radius_2t.wcrfx")
     assert read("no_radius_2t.wcrfx").n_cables == 3
+
+
+# ---- pulleys: WireX's own pulley kinematics -----------------------------------------------------
+
+
+def raw_winches(root: ET.Element) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Base points ``(n, 3)``, winch frames ``(n, 3, 3)`` (``aRC`` is row R, column C),
+    pulley radii ``(n,)`` (0.1 where absent) and platform points ``(n, 3)`` of a ``<robot>``."""
+    chains = root.find("geometry").findall("chain")
+    bases = [c.find("base") for c in chains]
+    points = np.array([[float(b.get(k)) for k in "xyz"] for b in bases])
+    frames = np.array(
+        [[[float(b.get(f"a{i}{j}", float(i == j))) for j in (1, 2, 3)] for i in (1, 2, 3)] for b in bases]
+    )
+    radii = np.array([float(b.get("radius", 0.1)) for b in bases])
+    plat = np.array([[float(c.find("platform").get(k)) for k in "xyz"] for c in chains])
+    return points, frames, radii, plat
+
+
+def wirex_pulley_lengths(root: ET.Element, r: np.ndarray, R: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Cable lengths ``(n,)`` of WireX's pulley kinematics, as ``CKinematics::doInverseKinematicsPulleyEx``
+    (``WireLib/Kinematics.cpp``) computes them, and each anchor's distance from its swivel axis.
+
+    The platform point minus the base point, expressed in the winch frame, has the distance
+    ``bxy`` from the frame's z axis and the height ``bz`` along it; the distance from the pulley
+    centre (``r_p`` off the axis) is ``BM = √((bxy − r_p)² + bz²)``, the free length
+    ``l_f = √(BM² − r_p²)``, the wrap angle ``acos(l_f/BM) + acos(bz/BM)``, the length
+    ``wrap · r_p + l_f``."""
+    base, frames, rp, plat = raw_winches(root)
+    ap = r + plat @ R.T - base
+    local = np.einsum("nji,nj->ni", frames, ap)
+    bxy, bz = np.hypot(local[:, 0], local[:, 1]), local[:, 2]
+    bm = np.hypot(bxy - rp, bz)
+    lf = np.sqrt(bz**2 + (bxy - rp) ** 2 - rp**2)
+    wrap = np.arccos(lf / bm) + np.arccos(bz / bm)
+    return wrap * rp + lf, bxy / rp
+
+
+positions = st.tuples(st.floats(-1.6, 1.6), st.floats(-1.1, 1.1), st.floats(0.2, 1.8))
+turns = st.tuples(*[st.floats(-0.6, 0.6)] * 3)
+
+
+@settings(max_examples=60, deadline=None)
+@given(positions, turns)
+def test_ipanema_swivels_are_wirex_pulley_kinematics(position, abc):
+    """taut's lengths with the imported swivels equal WireX's pulley kinematics on the real
+    IPAnema file.  WireX's two-``arccos`` wrap angle is right only for anchors at least the
+    pulley radius from the swivel axis (and WireX itself refuses anchors within ``2 r_p`` of
+    the pulley centre): the poses are restricted to that domain."""
+    a, b, c = abc
+    root = raw("IPAnema.wcrfx")
+    expected, off_axis = wirex_pulley_lengths(root, np.array(position), rz(c) @ ry(b) @ rx(a))
+    assume(np.all(off_axis >= 1.0))
+    ik = inverse_kinematics(read_wirex(FIXTURES / "IPAnema.wcrfx"), [*position, a, b, c])
+    assert np.allclose(ik.lengths, expected, rtol=0, atol=1e-9)
+    # the pulleys lengthen the cables: the standard model's lengths differ
+    assert not np.allclose(
+        ik.lengths, wirex_standard_model("IPAnema.wcrfx", np.array(position), rz(c) @ ry(b) @ rx(a))[0]
+    )
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    positions,
+    turns,
+    st.lists(
+        st.tuples(st.floats(-math.pi, math.pi), st.floats(-2.5, 2.5), st.floats(-math.pi, math.pi)),
+        min_size=8,
+        max_size=8,
+    ),
+)
+def test_tilted_winch_frames_are_wirex_pulley_kinematics(tmp_path_factory, position, abc, tilts):
+    """IPAnema with every winch frame turned (``R_z R_x R_z``): the swivel axis is the frame's
+    z axis, and the lengths stay WireX's (same domain as above)."""
+    root = raw("IPAnema.wcrfx")
+    for chain, (t1, t2, t3) in zip(root.find("geometry").findall("chain"), tilts, strict=True):
+        frame = rz(t1) @ rx(t2) @ rz(t3)
+        chain.find("base").attrib.update(
+            {f"a{i + 1}{j + 1}": repr(float(frame[i, j])) for i in range(3) for j in range(3)}
+        )
+    path = tmp_path_factory.mktemp("wcrfx") / "tilted.wcrfx"
+    models = ET.Element("models")
+    models.append(root)
+    ET.ElementTree(models).write(path)
+    a, b, c = abc
+    expected, off_axis = wirex_pulley_lengths(root, np.array(position), rz(c) @ ry(b) @ rx(a))
+    assume(np.all(off_axis >= 1.0))
+    robot = read_wirex(path)
+    assert np.array_equal([c.swivel.axis for c in robot.cables], raw_winches(root)[1][:, :, 2])
+    ik = inverse_kinematics(robot, [*position, a, b, c])
+    assert np.allclose(ik.lengths, expected, rtol=0, atol=1e-9)
 
 
 # ---- independent computation from the raw numbers -------------------------------------------
@@ -226,8 +326,10 @@ def test_unrepresentable_motion_patterns(name, words):
 
 def test_load_robot_reads_wcrfx():
     assert load_robot(FIXTURES / "spatial_3r3t.wcrfx") == read_wirex(FIXTURES / "spatial_3r3t.wcrfx")
-    with pytest.raises(UnsupportedRobotError):
-        load_robot(FIXTURES / "CoGiRo.wcrfx")
+    cogiro = load_robot(FIXTURES / "CoGiRo.wcrfx")
+    assert cogiro == read_wirex(FIXTURES / "CoGiRo.wcrfx") and cogiro.swivel_cables == tuple(range(8))
+    with pytest.raises(UnsupportedRobotError, match="spatial robots only"):
+        load_robot(FIXTURES / "no_radius_2t.wcrfx")
 
 
 # ---- bad files ---------------------------------------------------------------------------------
@@ -374,6 +476,19 @@ def test_round_trip_of_fixtures(tmp_path, name):
     assert_same_robot(robot, back)
     for field in ("mass", "wrench_point", "inertia", "gravity"):
         assert getattr(back.platform, field) == getattr(robot.platform, field)
+
+
+@pytest.mark.parametrize("name", [*REAL, "pulleys_3r3t.wcrfx"])
+def test_round_trip_keeps_swivels(tmp_path, name):
+    """Swivels are written as winch frames with z = the unit axis and the pulley radius."""
+    robot = read_wirex(FIXTURES / name)
+    write_wirex(robot, tmp_path / name)
+    back = read_wirex(tmp_path / name)
+    assert_same_robot(robot, back)
+    for a, b in zip(robot.cables, back.cables, strict=True):
+        assert a.swivel.radius == b.swivel.radius
+        axis = np.array(a.swivel.axis) / np.linalg.norm(a.swivel.axis)
+        assert np.allclose(b.swivel.axis, axis, rtol=0, atol=1e-15)
 
 
 def test_writer_refusals(tmp_path):

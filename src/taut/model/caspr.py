@@ -30,9 +30,21 @@ joint (``ref="joint"``, shifted to the centre of mass: ``I_G = I_O − m(|c|² E
 ``K / length`` [N/m]; taut's ``stiffness`` is EA. ``q_min``/``q_max`` and ``q_initial`` bound
 and start CASPR's simulations and are not part of the robot.
 
-Refused with :class:`UnsupportedRobotError`, never approximated: swivelling pulleys
-(``base_rotating_pulley``), cables routed through more than two attachments, chains of links,
-actuated joints, other joint and cable types, planar cables that leave the plane.
+A ``base_rotating_pulley`` (CASPR's ``BaseRotatingPulleyAttachment``, the first attachment of
+a cable) is taut's swivelling pulley (``cables[].swivel``): ``fixed_location`` (in the base
+frame) is the point where the cable runs onto the pulley, the exit; ``cable_entry_vector``, the
+direction of the cable entering that point, is the swivel axis; ``pulley_radius`` the radius.
+CASPR puts the pulley centre ``pulley_radius`` from the point, in the plane of the entry
+vector and the anchor, normal to the entry vector towards the anchor, takes the tangent point
+on the anchor's side and the arc ``r·acos(n₁·n₂)`` between the entry point and the tangent
+point; its cable length (segment plus the attachment's ``length_offset``, the arc) is taut's
+``r β + l_f`` for wraps up to half a turn (``acos`` cannot give more).  The writer writes a
+swivel back as a ``base_rotating_pulley``.
+
+Refused with :class:`UnsupportedRobotError`, never approximated: other pulley attachments
+(``screw_base_rotating_pulley``), swivelling pulleys of planar robots, cables routed through
+more than two attachments, chains of links, actuated joints, other joint and cable types,
+planar cables that leave the plane.
 
 References
 ----------
@@ -242,6 +254,7 @@ class _Cable:
     base: np.ndarray
     link: int
     location: np.ndarray
+    swivel: tuple[np.ndarray, float] | None = None  #: ``cable_entry_vector``, ``pulley_radius``
 
 
 def _read_cable(elem: ET.Element, n_links: int, where: str) -> _Cable:
@@ -265,13 +278,27 @@ def _read_cable(elem: ET.Element, n_links: int, where: str) -> _Cable:
             raise RobotFileError(f"{pw} <K>: the cable's axial rigidity EA must be > 0 N, got {stiffness}")
     atts = _one(elem, "attachments", where)
     aw = f"{where} <attachments>"
-    for child in atts:
-        if "pulley" in child.tag:
-            raise UnsupportedRobotError(f"{aw}: swivelling pulleys ({child.tag}) are not modelled yet (cable {name!r})")
-        if child.tag != "attachment":
-            raise RobotFileError(f"{aw}: unknown element <{child.tag}> (expected <attachment>)")
+    swivel = None
     points = []
-    for el in atts:
+    for k, child in enumerate(atts):
+        if child.tag == "base_rotating_pulley" and k == 0:
+            pw = f"{aw} <base_rotating_pulley>"
+            _children(child, ("fixed_location", "pulley_radius", "cable_entry_vector"), pw)
+            radius = _number(child, "pulley_radius", pw)
+            if radius <= 0:
+                raise RobotFileError(f"{pw} <pulley_radius>: must be > 0, got {radius}")
+            entry = _vector(child, "cable_entry_vector", pw)
+            if not np.any(entry != 0):
+                raise RobotFileError(f"{pw} <cable_entry_vector>: must be a non-zero vector")
+            swivel = (entry, radius)
+            points.append((0, _vector(child, "fixed_location", pw)))
+        elif "pulley" in child.tag:
+            raise UnsupportedRobotError(
+                f"{aw}: <{child.tag}> is not modelled by taut (cable {name!r}; only a first <base_rotating_pulley>)"
+            )
+        elif child.tag != "attachment":
+            raise RobotFileError(f"{aw}: unknown element <{child.tag}> (expected <attachment>)")
+    for el in atts.findall("attachment"):
         _children(el, ("link", "location"), f"{aw} <attachment>")
         link = _integer(el, "link", f"{aw} <attachment>")
         if not 0 <= link <= n_links:
@@ -289,7 +316,7 @@ def _read_cable(elem: ET.Element, n_links: int, where: str) -> _Cable:
         raise UnsupportedRobotError(
             f"{aw}: cable {name!r} must run from the base (link 0) to a body, got links {l0} and {l1}"
         )
-    return _Cable(name, elem.tag, reference, (lo, hi), stiffness, base, l1, loc)
+    return _Cable(name, elem.tag, reference, (lo, hi), stiffness, base, l1, loc, swivel)
 
 
 def _read_cables(root: ET.Element, source: str, n_links: int, cable_set: str | None) -> tuple[str, list[_Cable]]:
@@ -407,6 +434,11 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
         if not rigid:
             shifted = shifted or bool(np.any(anchor != 0))
             exit_, anchor = exit_ - anchor, np.zeros(3)
+        if plane is not None and c.swivel is not None:
+            raise UnsupportedRobotError(
+                f"{source}: cable {i} ({c.name!r}) leaves through a base_rotating_pulley; taut models swivelling "
+                "pulleys on spatial robots only"
+            )
         if plane is not None:
             off = exit_[plane.normal] - anchor[plane.normal]
             if abs(off) > 1e-9 * max(scale, float(np.abs(c.base).max())):
@@ -419,6 +451,8 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
             cable["anchor"] = anchor.tolist()
         if c.stiffness is not None:
             cable["stiffness"] = c.stiffness
+        if c.swivel is not None:
+            cable["swivel"] = {"axis": c.swivel[0].tolist(), "radius": c.swivel[1]}
         out.append(cable)
     platform: dict[str, object] = {"kind": "rigid" if rigid else "point-mass"}
     if link.mass > 0:
@@ -588,7 +622,14 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
         ET.SubElement(props, "force_min").text = repr(float(c.tension[0]))
         ET.SubElement(props, "force_max").text = "Inf" if math.isinf(c.tension[1]) else repr(float(c.tension[1]))
         atts = ET.SubElement(el, "attachments")
+        if c.swivel is not None:
+            pulley = ET.SubElement(atts, "base_rotating_pulley")
+            ET.SubElement(pulley, "fixed_location").text = _fmt(exits[i - 1])
+            ET.SubElement(pulley, "pulley_radius").text = repr(float(c.swivel.radius))
+            ET.SubElement(pulley, "cable_entry_vector").text = _fmt(list(c.swivel.axis))
         for link_num, point in (("0", exits[i - 1]), (body_link, lift(robot.anchors[i - 1]))):
+            if link_num == "0" and c.swivel is not None:
+                continue
             att = ET.SubElement(atts, "attachment")
             ET.SubElement(att, "link").text = link_num
             ET.SubElement(att, "location").text = _fmt(point)

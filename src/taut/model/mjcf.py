@@ -32,8 +32,8 @@ planar and point-mass joints: ``mj_inverse`` at rest returns that of ``−w_ext`
 A robot this description cannot hold raises :class:`~taut.errors.UnsupportedRobotError`
 naming the construct: no ``platform.mass``, a rigid platform without a positive-definite
 ``platform.inertia``, a constant ``platform.wrench`` (MJCF has no constant applied wrench),
-jointed bodies (the robot file gives them no mass), exit pulleys of non-zero radius and
-obstacles (the tendons run straight from exit to anchor).
+jointed bodies (the robot file gives them no mass), exit pulleys of non-zero radius,
+swivelling pulleys and obstacles (the tendons run straight from exit to anchor).
 
 References
 ----------
@@ -113,6 +113,11 @@ def check_mjcf(robot: Robot) -> None:
             raise _refuse(
                 robot,
                 f"cable {i} leaves an exit pulley of radius {cable.pulley.radius:g}; the tendon would run straight from its exit point",
+            )
+        if cable.swivel is not None:
+            raise _refuse(
+                robot,
+                f"cable {i} has a swivelling pulley of radius {cable.swivel.radius:g}; the tendon would run straight from its exit point",
             )
     if plat.mass is None:
         raise _refuse(robot, "no platform.mass (a MuJoCo body needs one; add platform.mass and platform.gravity)")

@@ -13,6 +13,7 @@ max_cable_load>``.  The mapping follows WireX's own reader and kinematics (``Wir
   taut's model (``docs/architecture.md`` §2.4): ``<base>`` is the exit point, ``<platform>``
   the anchor.  The frames ``a11 … a33`` enter only WireX's pulley kinematics (the winch frame's
   z axis is the swivel axis of the pulley); they are read and checked to be rotations.
+  With pulleys the lengths and directions are those of the pulley kinematics (below).
 * **Motion patterns.** ``3R3T`` is taut's spatial rigid platform (angles ``xyz-fixed``: the
   file has no angle convention); ``1R2T`` the planar rigid platform in WireX's xy plane;
   ``3T`` and ``2T`` the spatial and planar point mass, with each anchor offset folded into its
@@ -20,12 +21,20 @@ max_cable_load>``.  The mapping follows WireX's own reader and kinematics (``Wir
   every cable in a plane of motion (``<base>`` z = ``<platform>`` z), or the planar lengths
   would not be WireX's.  ``1T`` (a point on a line) and ``2R3T`` (five degrees of freedom)
   have no taut platform and raise :class:`~taut.errors.UnsupportedRobotError`.
-* **Pulleys.** WireX's pulley kinematics wind the cable over a pulley of radius ``r`` that
-  swivels about the winch frame's z axis through ``<base>``; a ``<base>`` without ``radius``
-  means WireX's default, 0.1 m.  taut does not model them yet: a pulley of radius > 0 raises
-  :class:`~taut.errors.UnsupportedRobotError` unless ``pulleys="points"`` asks for WireX's
-  standard model, each pulley taken as its fixed point, which the robot's ``description``
-  then states.  Radius 0 is that model exactly.
+* **Pulleys.** WireX's pulley kinematics (``CKinematics::doInverseKinematicsPulleyEx``) wind
+  the cable over a pulley of radius ``r`` that swivels about the winch frame's z axis
+  through ``<base>``: the anchor ``b`` in the winch frame ``A`` is ``Aᵀ(b − base)``, the
+  pulley centre lies ``r`` from the axis towards the anchor, the wrap angle is
+  ``β = acos(l_f/ρ) + acos(b_z/ρ)`` and the tangent point ``base + A R_z(γ)((r, 0, 0) +
+  R_y(β)(−r, 0, 0))`` is ``base`` itself at ``β = 0``.  That is taut's swivelling pulley
+  (``cables[].swivel``, ``taut.kinematics.swivel``) with ``exit`` = ``<base>``, ``axis`` = the
+  frame's z axis (third column of ``a11 … a33``) and ``radius`` = ``r``; a ``<base>`` without
+  ``radius`` means WireX's default, 0.1 m.  WireX's two-``arccos`` wrap angle equals taut's
+  for anchors at least ``r`` from the axis (closer ones WireX's formula gets wrong).  taut's
+  planar robots have no swivelling pulleys: a planar pattern with pulleys of radius > 0
+  raises :class:`~taut.errors.UnsupportedRobotError`.  ``pulleys="points"`` asks for WireX's
+  standard model instead, each pulley taken as its fixed point, which the robot's
+  ``description`` then states.  Radius 0 is that model exactly.
 * **Mass properties.** ``mass`` → ``platform.mass``; ``<centerofgravity>`` (body frame) →
   ``platform.wrench_point``; the inertia tensor about the centre of gravity (WireX's
   Newton–Euler wrench uses it so) → ``platform.inertia``: all nine entries for ``3R3T`` (WireX
@@ -74,8 +83,9 @@ MOTION_PATTERNS = {"1T": 1, "2T": 2, "3T": 3, "1R2T": 3, "2R3T": 5, "3R3T": 6}
 #: Pulley radius [m] WireX assumes when a ``<base>`` gives none (``CRobotData::getXmlNode``).
 DEFAULT_PULLEY_RADIUS = 0.1
 
-#: How to take pulleys of radius > 0: refuse them, or take each as its fixed point.
-PulleyModel = Literal["error", "points"]
+#: How to take pulleys of radius > 0: as taut swivelling pulleys (WireX's pulley kinematics),
+#: or each as its fixed point (WireX's standard model).
+PulleyModel = Literal["swivel", "points"]
 
 #: Order of the nine frame entries in a ``<base>`` or ``<platform>`` tag: ``aRC`` is row R, column C.
 FRAME_KEYS = ("a11", "a12", "a13", "a21", "a22", "a23", "a31", "a32", "a33")
@@ -316,14 +326,15 @@ def _inertia(model: WirexModel, source: str, planar: bool, notes: list[str]) -> 
     return (I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2])
 
 
-def wirex_robot(model: WirexModel, source: str = "<wcrfx>", *, pulleys: PulleyModel = "error") -> Robot:
+def wirex_robot(model: WirexModel, source: str = "<wcrfx>", *, pulleys: PulleyModel = "swivel") -> Robot:
     """The taut robot of a parsed WireX file (the mapping is in this module's docstring).
 
     Raises
     ------
     UnsupportedRobotError
         A motion pattern taut has no platform for (``1T``, ``2R3T``), a planar pattern with a
-        cable out of its plane, or pulleys of radius > 0 without ``pulleys="points"``.
+        cable out of its plane, or pulleys of radius > 0 on a planar pattern without
+        ``pulleys="points"`` (taut's swivelling pulleys are spatial).
     RobotFileError
         Data that do not make a valid taut robot (e.g. two identical cables).
     """
@@ -339,22 +350,24 @@ def wirex_robot(model: WirexModel, source: str = "<wcrfx>", *, pulleys: PulleyMo
             "has no taut platform; taut's platforms have 2, 3 or 6"
         )
     notes: list[str] = []
+    planar = pattern in ("2T", "1R2T")
     pulleyed = [c for c in model.chains if c.pulley_radius > 0]
-    if pulleyed and pulleys != "points":
+    swivels = pulleys == "swivel" and bool(pulleyed)
+    if swivels and planar:
         c = pulleyed[0]
         raise UnsupportedRobotError(
             f'{source}: <chain id="{c.number}"> <base>: swivelling pulleys of radius {c.pulley_radius:g} m '
-            f"are not modelled yet ({len(pulleyed)} of {len(model.chains)} cables); "
-            "in Python, read_wirex(path, pulleys='points') takes each pulley as its fixed point, WireX's standard model"
+            f"({len(pulleyed)} of {len(model.chains)} cables) on a planar robot ({pattern}): taut models "
+            "swivelling pulleys on spatial robots only; in Python, read_wirex(path, pulleys='points') takes "
+            "each pulley as its fixed point, WireX's standard model"
         )
-    if pulleyed:
+    if pulleyed and not swivels:
         radii = sorted({c.pulley_radius for c in pulleyed})
         notes.append(
             f"APPROXIMATION: the swivelling pulleys (radius {', '.join(f'{r:g}' for r in radii)} m) of "
             f"{len(pulleyed)} cables are taken as their fixed points (WireX's standard model, not its pulley "
             "kinematics): lengths and directions differ from the pulley model by about the radius"
         )
-    planar = pattern in ("2T", "1R2T")
     point_mass = pattern in ("2T", "3T")
     d = 2 if planar else 3
     if planar:
@@ -376,6 +389,8 @@ def wirex_robot(model: WirexModel, source: str = "<wcrfx>", *, pulleys: PulleyMo
         cable: dict[str, object] = {"name": f"chain {c.number}", "exit": exit_point.tolist(), "tension": tension}
         if not point_mass:
             cable["anchor"] = anchor.tolist()
+        if swivels and c.pulley_radius > 0:
+            cable["swivel"] = {"axis": c.base_frame[:, 2].tolist(), "radius": c.pulley_radius}
         cables.append(cable)
     if point_mass and any(any(c.platform[:d]) for c in model.chains):
         notes.append("a translating platform: each anchor offset is folded into its exit point (a_i - b_i)")
@@ -413,7 +428,7 @@ def wirex_robot(model: WirexModel, source: str = "<wcrfx>", *, pulleys: PulleyMo
         raise RobotFileError(validation_message(source, exc).replace("\n", "; ")) from None
 
 
-def read_wirex(path: str | Path, *, pulleys: PulleyModel = "error") -> Robot:
+def read_wirex(path: str | Path, *, pulleys: PulleyModel = "swivel") -> Robot:
     """Read a WireX ``.wcrfx`` robot file (see the module docstring for the mapping).
 
     Parameters
@@ -422,10 +437,11 @@ def read_wirex(path: str | Path, *, pulleys: PulleyModel = "error") -> Robot:
         The file; read only if it is a regular file of at most
         :data:`taut.model.io.MAX_FILE_BYTES`.
     pulleys
-        ``"error"`` (default): a pulley of radius > 0 raises
-        :class:`~taut.errors.UnsupportedRobotError`, since taut does not model swivelling
-        pulleys yet.  ``"points"``: each pulley is taken as its fixed point (WireX's standard
-        model), and the robot's ``description`` states the approximation.
+        ``"swivel"`` (default): a pulley of radius > 0 is a swivelling pulley
+        (``cables[].swivel``) whose lengths are WireX's pulley kinematics; on a planar motion
+        pattern it raises :class:`~taut.errors.UnsupportedRobotError`.  ``"points"``: each
+        pulley is taken as its fixed point (WireX's standard model), and the robot's
+        ``description`` states the approximation.
 
     Raises
     ------
@@ -433,7 +449,7 @@ def read_wirex(path: str | Path, *, pulleys: PulleyModel = "error") -> Robot:
         An unreadable or malformed file (one line naming the file and the element).
     UnsupportedRobotError
         A construct taut does not model (motion patterns 1T and 2R3T, out-of-plane cables of a
-        planar pattern, pulleys without ``pulleys="points"``).
+        planar pattern, pulleys of a planar pattern without ``pulleys="points"``).
 
     References
     ----------
@@ -505,6 +521,18 @@ def _set_point(element: ET.Element, point: np.ndarray | tuple[float, ...]) -> No
         element.set(key, _fmt(value))
 
 
+def winch_frame(axis: tuple[float, float, float]) -> np.ndarray:
+    """A rotation whose z axis (third column) is the unit ``axis``: a winch frame for a
+    swivelling pulley (WireX's pulley lengths depend only on that column); the identity for
+    ``(0, 0, 1)``."""
+    k = np.asarray(axis, dtype=float)
+    k = k / np.linalg.norm(k)
+    helper = np.array([1.0, 0.0, 0.0]) if abs(k[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+    x = helper - (helper @ k) * k
+    x /= np.linalg.norm(x)
+    return np.column_stack([x, np.cross(k, x), k])
+
+
 def wirex_text(robot: Robot) -> str:
     """The WireX XML of ``robot`` (see :func:`write_wirex`)."""
     why = _refusal(robot)
@@ -523,8 +551,14 @@ def wirex_text(robot: Robot) -> str:
         chain = ET.SubElement(geometry, "chain", id=str(i + 1))
         base = ET.SubElement(chain, "base")
         _set_point(base, exits[i])
-        base.attrib.update(identity)
-        base.set("radius", "0.0")
+        swivel = robot.cables[i].swivel
+        if swivel is None:
+            base.attrib.update(identity)
+            base.set("radius", "0.0")
+        else:
+            frame = winch_frame(swivel.axis)
+            base.attrib.update({k: _fmt(v) for k, v in zip(FRAME_KEYS, frame.ravel(), strict=True)})
+            base.set("radius", _fmt(swivel.radius))
         anchor = ET.SubElement(chain, "platform")
         _set_point(anchor, anchors[i])
         anchor.attrib.update(identity)
@@ -556,7 +590,8 @@ def write_wirex(robot: Robot, path: str | Path) -> None:
     """Write ``robot`` as a WireX ``.wcrfx`` file that :func:`read_wirex` reads back as the same robot.
 
     Written: the cables (``<chain>``: exit point as ``<base>`` with an identity frame and
-    pulley radius 0, anchor as ``<platform>``), the motion pattern (``3R3T`` spatial rigid,
+    pulley radius 0, or for a swivelling pulley a winch frame whose z axis is the unit swivel
+    axis and the pulley radius; anchor as ``<platform>``), the motion pattern (``3R3T`` spatial rigid,
     ``1R2T`` planar rigid, ``3T``/``2T`` point masses), the name and description, the mass,
     centre of gravity and inertia, and the tension bounds as ``<application>`` cable loads.
     A constant downward force ``(0, 0, −F)`` without moment is written as the weight of the
@@ -567,7 +602,7 @@ def write_wirex(robot: Robot, path: str | Path) -> None:
     ------
     UnsupportedRobotError
         For what a WireX file cannot hold: jointed platforms, obstacles, platform shapes,
-        pulleys, cable stiffness, radius or length bounds, different tension bounds per cable,
+        planar exit pulleys, cable stiffness, radius or length bounds, different tension bounds per cable,
         other wrenches or gravities, a weight in a planar robot's plane, and spatial rigid
         platforms whose angles are not ``xyz-fixed``.
 
