@@ -3,13 +3,12 @@ import json
 import pytest
 
 import taut
-from taut.cli.main import main
 
 
-def test_atlas_json_out_plot(tmp_path, capsys):
+def test_atlas_json_out_plot(tmp_path, cli):
     out, png = tmp_path / "a.json", tmp_path / "a.png"
-    assert main(["atlas", "vscr-t-shaped", "--json", "--out", str(out), "--plot", str(png)]) == 0
-    d = json.loads(capsys.readouterr().out)
+    assert cli.main(["atlas", "vscr-t-shaped", "--json", "--out", str(out), "--plot", str(png)]) == 0
+    d = json.loads(cli.readouterr().out)
     assert d["charts"] >= 10 and d["edges"] >= d["charts"] - 1
     assert 0.89 < d["reachable_area"] < 0.9084 and 0 < d["workspace_area"] <= d["reachable_area"]
     full = json.loads(out.read_text())
@@ -17,43 +16,43 @@ def test_atlas_json_out_plot(tmp_path, capsys):
     assert png.stat().st_size > 10_000
 
 
-def test_atlas_human_and_options(capsys):
-    assert main(["atlas", "vscr-agriculture", "--start", "0,0.991", "--condition", "static", "--theta", "0"]) == 0
-    assert "charts" in capsys.readouterr().out
+def test_atlas_human_and_options(cli):
+    assert cli.main(["atlas", "vscr-agriculture", "--start", "0,0.991", "--condition", "static", "--theta", "0"]) == 0
+    assert "charts" in cli.readouterr().out
 
 
-def test_atlas_bad_input(capsys):
-    assert main(["atlas", "vscr-t-shaped", "--start", "5,5"]) == 2
-    assert "outside the installation space" in capsys.readouterr().err
-    assert main(["atlas", "vscr-t-shaped", "--start", "1"]) == 2
-    assert main(["atlas", "vscr-t-shaped", "--theta", "0.3"]) == 2
-    assert main(["atlas", "spatial-8cable"]) == 2
-    assert main(["atlas", "vscr-rigid-t-shaped", "--theta", "x"]) == 2
-    with pytest.raises(SystemExit) as exc:
-        main(["atlas", "vscr-t-shaped", "--condition", "nope"])
-    assert exc.value.code == 2
+def test_atlas_bad_input(cli):
+    assert cli.main(["atlas", "vscr-t-shaped", "--start", "5,5"]) == 2
+    assert "outside the installation space" in cli.readouterr().err
+    assert cli.main(["atlas", "vscr-t-shaped", "--start", "1"]) == 2
+    assert cli.main(["atlas", "vscr-t-shaped", "--theta", "0.3"]) == 2
+    assert cli.main(["atlas", "spatial-8cable"]) == 2
+    assert cli.main(["atlas", "vscr-rigid-t-shaped", "--theta", "x"]) == 2
+    assert cli.main(["atlas", "vscr-t-shaped", "--condition", "nope"]) == 2
 
 
-def test_atlas_rigid_page(capsys):
+def test_atlas_rigid_page(cli):
     """A rigid platform: one atlas page per orientation (§5.2)."""
-    assert main(["atlas", "vscr-rigid-t-shaped", "--json"]) == 0
-    d0 = json.loads(capsys.readouterr().out)
-    assert main(["atlas", "vscr-rigid-t-shaped", "--theta", "15deg", "--condition", "wrench-closure", "--json"]) == 0
-    d1 = json.loads(capsys.readouterr().out)
+    assert cli.main(["atlas", "vscr-rigid-t-shaped", "--json"]) == 0
+    d0 = json.loads(cli.readouterr().out)
+    assert (
+        cli.main(["atlas", "vscr-rigid-t-shaped", "--theta", "15deg", "--condition", "wrench-closure", "--json"]) == 0
+    )
+    d1 = json.loads(cli.readouterr().out)
     assert d0["theta"] == 0.0 and abs(d1["theta"] - 0.2617993877991494) < 1e-12
     assert d0["charts"] >= 10 and d1["charts"] >= 10
     # the platform must stay in the T, off the idlers and its cables: less than the point mass's 0.9
     assert 0.5 < d1["reachable_area"] < d0["reachable_area"] < 0.8
-    assert main(["atlas", "vscr-rigid-t-shaped", "--theta", "0.1"]) == 0
-    assert "page θ = 0.1 rad" in capsys.readouterr().out
+    assert cli.main(["atlas", "vscr-rigid-t-shaped", "--theta", "0.1"]) == 0
+    assert "page θ = 0.1 rad" in cli.readouterr().out
 
 
 @pytest.mark.parametrize("name", [n for n in taut.example_names() if n.startswith("vscr-")])
-def test_atlas_with_plot_on_every_planar_vscr_example(name, tmp_path, capsys):
+def test_atlas_with_plot_on_every_planar_vscr_example(name, tmp_path, cli):
     """Also the examples whose wrench-feasible workspace is empty (no weight is printed for
     them): the plot shows the charts and an empty workspace panel."""
     png = tmp_path / "atlas.png"
-    assert main(["atlas", name, "--json", "--plot", str(png)]) == 0
-    data = json.loads(capsys.readouterr().out)
+    assert cli.main(["atlas", name, "--json", "--plot", str(png)]) == 0
+    data = json.loads(cli.readouterr().out)
     assert data["charts"] >= 1 and 0 <= data["workspace_area"] <= data["reachable_area"] + 1e-9
     assert png.stat().st_size > 10_000

@@ -8,7 +8,6 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import taut
-from taut.cli.main import main
 from taut.model import robot_to_dict
 
 GOOD = """
@@ -88,11 +87,11 @@ def test_unreadable_and_unparsable(tmp_path):
         taut.load_robot(binary)
 
 
-def test_cli_reports_bad_file_with_status_2(tmp_path, capsys):
+def test_cli_reports_bad_file_with_status_2(tmp_path, cli):
     path = tmp_path / "bad.yaml"
     path.write_text(GOOD.replace("dimension: 2", "dimension: two"))
-    assert main(["ik", str(path), "--pose", "0.5,0.5"]) == 2
-    err = capsys.readouterr().err
+    assert cli.main(["ik", str(path), "--pose", "0.5,0.5"]) == 2
+    err = cli.readouterr().err
     assert "dimension" in err and "Traceback" not in err
 
 
