@@ -79,6 +79,8 @@ CASES: list[tuple[str, list[str], tuple[str, ...]]] = [
     ("lengths-1e308", ["fk", "suspended-3cable", "--lengths=1e308,1e308,1e308"], ("--lengths", "out of range")),
     ("coinciding-anchors", ["fk", "{coincide}"], ("collinear",)),
     ("empty-pose", ["ik", "planar-4cable", "--pose="], ("--pose",)),
+    # argparse reads ``--opt=--`` as an empty list (found by the hypothesis test below)
+    ("double-dash-value", ["ik", "planar-4cable", "--plot=--"], ("--plot", "expected one value")),
     ("empty-lengths", ["fk", "suspended-3cable", "--lengths="], ("--lengths",)),
     ("pose-size", ["ik", "planar-4cable", "--pose", "1,2"], ("--pose", "3 coordinates")),
     ("pose-nan", ["ik", "planar-4cable", "--pose", "nan,0,0"], ("--pose",)),
@@ -153,7 +155,16 @@ def _run_case(taut_cli, files: dict[str, str], argv: list[str], words: tuple[str
 
 #: One case of each kind for the quick suite (each is a process start of a few seconds);
 #: the slow suite runs them all.
-QUICK = {"nested-1000", "fifo", "mass-1e300", "empty-pose", "dt-1e-7", "plot-directory", "plan-fix-commas"}
+QUICK = {
+    "nested-1000",
+    "fifo",
+    "mass-1e300",
+    "empty-pose",
+    "double-dash-value",
+    "dt-1e-7",
+    "plot-directory",
+    "plan-fix-commas",
+}
 
 
 @pytest.mark.parametrize(

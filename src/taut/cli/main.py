@@ -390,6 +390,10 @@ def _quiet_warnings() -> Iterator[None]:
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     ns = parser.parse_args(argv)
+    for name, value in vars(ns).items():
+        # argparse turns ``--opt=--`` into an empty list; every option here takes one value
+        if isinstance(value, list):
+            parser.error(f"argument --{name.replace('_', '-')}: expected one value, got '--'")
     try:
         with _quiet_warnings():
             code: int = ns.fn(ns)

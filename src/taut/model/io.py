@@ -140,6 +140,23 @@ def parse_robot(text: str, source: str = "<robot>", *, json_text: bool = False) 
     return robot_from_dict(data, source)
 
 
+def check_regular(path: Path) -> None:
+    """Refuse anything but a regular file (a FIFO, a device or a directory would block or
+    never end).
+
+    Raises
+    ------
+    RobotFileError
+        If ``path`` cannot be examined or is not a regular file.
+    """
+    try:
+        regular = stat.S_ISREG(path.stat().st_mode)
+    except OSError as exc:
+        raise RobotFileError(f"{path}: cannot read the file: {exc}") from None
+    if not regular:
+        raise RobotFileError(f"{path}: not a regular file")
+
+
 def read_text(path: Path) -> str:
     """The UTF-8 text of a robot file: regular files only (a FIFO, a device or a directory
     would block or never end), at most :data:`MAX_FILE_BYTES`.
@@ -149,9 +166,8 @@ def read_text(path: Path) -> str:
     RobotFileError
         If the file cannot be read, is not a regular file, is too large or is not UTF-8.
     """
+    check_regular(path)
     try:
-        if not stat.S_ISREG(path.stat().st_mode):
-            raise RobotFileError(f"{path}: not a regular file")
         with path.open("rb") as fh:
             raw = fh.read(MAX_FILE_BYTES + 1)
         if len(raw) > MAX_FILE_BYTES:
@@ -177,6 +193,7 @@ def load_robot(spec: str | Path, *, cable_set: str | None = None) -> Robot:
                 raise RobotFileError(f"{spec}: --cable-set selects a cable set of a CASPR model, not of an example")
             return example(str(spec))
         raise RobotFileError(f"{spec}: no such file and not a built-in example (see `taut examples`)")
+    check_regular(path)  # before the name is judged: /dev/zero is not a file of any format
     format_of(path, "read")
     return read_robot(path, read_text(path), cable_set)
 
