@@ -3,7 +3,7 @@ PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 BENCH_STAMP := $(VENV)/.installed-bench
 
-.PHONY: install demo test test-all lint types check bench clean
+.PHONY: install demo test test-slow test-all lint types check bench clean
 
 $(STAMP): pyproject.toml
 	test -x $(PY) || python3 -m venv $(VENV)
@@ -23,6 +23,9 @@ demo: $(STAMP)
 test: $(STAMP)
 	$(PY) -m pytest -q
 
+test-slow: $(STAMP)
+	$(PY) -m pytest -q -m slow
+
 test-all: $(STAMP)
 	$(PY) -m pytest -q -m ''
 
@@ -33,7 +36,8 @@ lint: $(STAMP)
 types: $(STAMP)
 	$(VENV)/bin/mypy
 
-check: lint types test-all
+# the quick suite first, so that CI reports its failures before the slow reproductions run
+check: lint types test test-slow
 
 bench: $(BENCH_STAMP)
 	@for b in benchmarks/bench_*.py; do echo "== $$b"; $(PY) $$b || exit 1; done

@@ -157,23 +157,37 @@ def check_regular(path: Path) -> None:
         raise RobotFileError(f"{path}: not a regular file")
 
 
+def read_bytes(path: Path) -> bytes:
+    """The bytes of a robot file: regular files only (a FIFO, a device or a directory would
+    block or never end), at most :data:`MAX_FILE_BYTES`.
+
+    Raises
+    ------
+    RobotFileError
+        If the file cannot be read, is not a regular file or is too large.
+    """
+    check_regular(path)
+    try:
+        with path.open("rb") as fh:
+            raw = fh.read(MAX_FILE_BYTES + 1)
+    except OSError as exc:
+        raise RobotFileError(f"{path}: cannot read the file: {exc}") from None
+    if len(raw) > MAX_FILE_BYTES:
+        raise RobotFileError(f"{path}: larger than {MAX_FILE_BYTES >> 20} MiB: not a robot file")
+    return raw
+
+
 def read_text(path: Path) -> str:
-    """The UTF-8 text of a robot file: regular files only (a FIFO, a device or a directory
-    would block or never end), at most :data:`MAX_FILE_BYTES`.
+    """The UTF-8 text of a robot file, read by :func:`read_bytes`.
 
     Raises
     ------
     RobotFileError
         If the file cannot be read, is not a regular file, is too large or is not UTF-8.
     """
-    check_regular(path)
     try:
-        with path.open("rb") as fh:
-            raw = fh.read(MAX_FILE_BYTES + 1)
-        if len(raw) > MAX_FILE_BYTES:
-            raise RobotFileError(f"{path}: larger than {MAX_FILE_BYTES >> 20} MiB: not a robot file")
-        return raw.decode("utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
+        return read_bytes(path).decode("utf-8")
+    except UnicodeDecodeError as exc:
         raise RobotFileError(f"{path}: cannot read the file: {exc}") from None
 
 

@@ -62,7 +62,6 @@ References
 from __future__ import annotations
 
 import math
-import stat
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
@@ -73,7 +72,7 @@ import numpy as np
 from pydantic import ValidationError
 
 from taut.errors import RobotFileError, UnsupportedRobotError
-from taut.model.io import MAX_FILE_BYTES, validation_message
+from taut.model.io import read_bytes, validation_message
 from taut.model.limits import MAX_MAGNITUDE
 from taut.model.robot import STANDARD_GRAVITY, Robot
 
@@ -456,16 +455,7 @@ def read_wirex(path: str | Path, *, pulleys: PulleyModel = "swivel") -> Robot:
     .. [1] A. Pott, WireX, 2006–2019, ``WireLib/RobotData.cpp``. (docs/references.bib: wirex)
     """
     path = Path(path)
-    try:
-        if not stat.S_ISREG(path.stat().st_mode):
-            raise RobotFileError(f"{path}: not a regular file")
-        with path.open("rb") as fh:
-            raw = fh.read(MAX_FILE_BYTES + 1)
-    except OSError as exc:
-        raise RobotFileError(f"{path}: cannot read the file: {exc}") from None
-    if len(raw) > MAX_FILE_BYTES:
-        raise RobotFileError(f"{path}: larger than {MAX_FILE_BYTES >> 20} MiB: not a robot file")
-    return wirex_robot(parse_wirex(raw, str(path)), str(path), pulleys=pulleys)
+    return wirex_robot(parse_wirex(read_bytes(path), str(path)), str(path), pulleys=pulleys)
 
 
 def _downward_load(robot: Robot) -> float | None:
