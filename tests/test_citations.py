@@ -147,3 +147,18 @@ def test_source_modules_cite_publications():
             cites = re.search(r"Rushton|Berti|Bohigas|Lieskovsk", doc)
             if cites:
                 assert "\nReferences\n----------\n" in doc, f"{path.relative_to(ROOT)} cites without References"
+
+
+def test_bib_entries_are_well_formed():
+    """Each entry closes its braces before the next begins (a merge once dropped two ``}``,
+    which BibTeX reads as one entry swallowing the next)."""
+    text = (ROOT / "docs" / "references.bib").read_text(encoding="utf-8")
+    entries = re.split(r"^(?=@)", text, flags=re.M)[1:]
+    assert len(entries) == len(_bib_keys())
+    for entry in entries:
+        body = entry.split("\n%", 1)[0].rstrip()
+        depth = 0
+        for ch in body:
+            depth += {"{": 1, "}": -1}.get(ch, 0)
+            assert depth >= 0, entry[:60]
+        assert depth == 0 and body.endswith("}"), f"unbalanced entry: {entry[:60]!r}"
