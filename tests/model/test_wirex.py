@@ -116,13 +116,16 @@ def test_pulleys_are_swivels_by_default():
     assert "APPROXIMATION" not in robot.description
 
 
-def test_planar_pulleys_are_refused_by_default():
+def test_planar_pulleys_about_an_axis_out_of_the_plane_are_refused():
+    """WireX's default winch frame is the identity: its z axis, the swivel axis, is normal to
+    the plane of a planar pattern, and the cable would leave the plane over the pulley."""
     with pytest.raises(
-        UnsupportedRobotError, match=r'no_radius_2t\.wcrfx: <chain id="1"> <base>: swivelling pulleys of radius 0\.1 m'
+        UnsupportedRobotError,
+        match=r'no_radius_2t\.wcrfx: <chain id="1"> <base>: the swivelling pulley \(radius 0\.1 m\) turns about',
     ) as err:
         read_wirex(FIXTURES / "no_radius_2t.wcrfx")
-    assert "spatial robots only" in str(err.value) and "pulleys='points'" in str(err.value)
-    assert "\n" not in str(err.value)
+    assert "(0, 0, 1), which leaves the xy plane of motion of 2T" in str(err.value)
+    assert "pulleys='points'" in str(err.value) and "\n" not in str(err.value)
 
 
 def test_point_pulleys_say_so_in_the_description():
@@ -181,6 +184,134 @@ def wirex_pulley_lengths(root: ET.Element, r: np.ndarray, R: np.ndarray) -> tupl
     lf = np.sqrt(bz**2 + (bxy - rp) ** 2 - rp**2)
     wrap = np.arccos(lf / bm) + np.arccos(bz / bm)
     return wrap * rp + lf, bxy / rp
+
+
+def wirex_pulley_ex(root: ET.Element, r: np.ndarray, R: np.ndarray) -> dict[str, np.ndarray]:
+    """Everything ``CKinematics::doInverseKinematicsPulleyEx`` (``WireLib/Kinematics.cpp``)
+    computes at the pose ``(r, R)``, for every chain, transcribed: the lengths ``l``, the
+    swivel angles ``gamma = atan2(b_y, b_x)`` and wrap angles ``beta`` of the pulleys, the
+    tangent points ``C = a + A R_z(gamma)((r_p, 0, 0) + R_y(beta)(−r_p, 0, 0))``, the cable
+    vectors ``U = C − R b − r``, WireX's validity flag (it refuses ``BM < 2 r_p`` and anchors
+    within 1e-6 of the axis) and ``off_axis`` = ``bxy / r_p`` (the two-``arccos`` wrap angle
+    holds for ``bxy ≥ r_p``); and the structure matrix of ``CStructureMatrix::getStructureMatrix``
+    with ``usePulley`` (``3R3T``): columns ``[U/‖U‖; R b × U/‖U‖]``."""
+    base, frames, rp, plat = raw_winches(root)
+    P = plat @ R.T
+    ap = r + P - base
+    local = np.einsum("nji,nj->ni", frames, ap)
+    bxy, bz = np.hypot(local[:, 0], local[:, 1]), local[:, 2]
+    bm = np.hypot(bxy - rp, bz)
+    gamma = np.arctan2(local[:, 1], local[:, 0])
+    lf = np.sqrt(bz**2 + (bxy - rp) ** 2 - rp**2)
+    beta = np.arccos(lf / bm) + np.arccos(bz / bm)
+    C = np.array(
+        [
+            a + A @ rz(g) @ (np.array([p, 0, 0]) + ry(b) @ np.array([-p, 0, 0]))
+            for a, A, g, b, p in zip(base, frames, gamma, beta, rp, strict=True)
+        ]
+    )
+    U = C - P - r
+    u = U / np.linalg.norm(U, axis=1, keepdims=True)
+    return {
+        "l": beta * rp + lf,
+        "gamma": gamma,
+        "beta": beta,
+        "C": C,
+        "W": np.vstack([u.T, np.cross(P, u).T]),
+        "valid": ~((bm < 2 * rp) | (bxy < 1e-6)),
+        "off_axis": bxy / np.where(rp > 0, rp, 1.0),
+    }
+
+
+def angle_gap(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``|a − b|`` as angles, wrapped into ``[0, π]``."""
+    return np.abs(np.angle(np.exp(1j * (np.asarray(a) - np.asarray(b)))))
+
+
+@pytest.mark.parametrize("name", REAL)
+def test_real_robots_swivel_angles_tangents_and_structure_matrix_are_wirexs(name):
+    """At 1,200 random poses of each real WireX robot, where WireX's formulas are valid (its own
+    validity test, and anchors at least ``r_p`` from the swivel axis for the two-``arccos``
+    wrap angle), taut's lengths, swivel angles, tangent points and structure matrix are those
+    of WireX's pulley kinematics and its pulley-corrected structure matrix."""
+    from taut.kinematics.swivel import swivel_angles
+
+    root, robot = raw(name), read_wirex(FIXTURES / name)
+    assert robot.swivel_cables == tuple(range(robot.n_cables))
+    base = raw_winches(root)[0]
+    lo, hi = base.min(axis=0), base.max(axis=0)
+    rng = np.random.default_rng(2018)
+    N = 1200
+    positions = lo + (hi - lo) * rng.uniform(0.3, 0.7, (N, 3))
+    angles = rng.uniform(-0.25, 0.25, (N, 3))
+    poses = np.hstack([positions, angles])
+    ik = inverse_kinematics(robot, poses)
+    gamma = swivel_angles(robot, poses)
+    used = 0
+    for k, (position, (a, b, c)) in enumerate(zip(positions, angles, strict=True)):
+        wx = wirex_pulley_ex(root, position, rz(c) @ ry(b) @ rx(a))
+        if not (wx["valid"].all() and (wx["off_axis"] >= 1.0).all()):
+            continue
+        used += 1
+        assert np.allclose(ik.lengths[k], wx["l"], rtol=0, atol=1e-9)
+        assert angle_gap(gamma[k], wx["gamma"]).max() < 1e-12
+        assert np.allclose(ik.exit_points[k], wx["C"], rtol=0, atol=1e-9)
+        assert np.allclose(ik.structure_matrix[k], wx["W"], rtol=0, atol=1e-9)
+    assert used >= 1000
+
+
+PLANAR_PULLEYS = ["planar_pulleys_1r2t.wcrfx", "planar_pulleys_2t.wcrfx"]
+
+
+def test_planar_pulleys_are_in_plane_swivels():
+    robot = read_wirex(FIXTURES / "planar_pulleys_1r2t.wcrfx")
+    _, frames, radii, _ = raw_winches(raw("planar_pulleys_1r2t.wcrfx"))
+    assert robot.swivel_cables == (0, 1, 2, 4)
+    assert [c.swivel.axis for c in robot.cables if c.swivel] == [tuple(f[:2, 2]) for f in frames[[0, 1, 2, 4]]]
+    assert [c.swivel.radius for c in robot.cables if c.swivel] == radii[[0, 1, 2, 4]].tolist()
+    point = read_wirex(FIXTURES / "planar_pulleys_2t.wcrfx")
+    assert (point.dimension, point.platform.kind, point.swivel_cables) == (2, "point-mass", (0, 1, 2))
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(-0.5, 0.5), st.floats(-0.5, 0.5), st.floats(-0.5, 0.5), st.sampled_from(PLANAR_PULLEYS))
+def test_planar_pulleys_are_wirex_pulley_kinematics(x, y, theta, name):
+    """The planar patterns with in-plane pulleys: lengths, swivel angles (0 or π) and tangent
+    points of WireX's pulley kinematics (the pattern does not change them: WireX's
+    ``doInverseKinematicsPulleyEx`` takes the pose ``(r, R)`` of any pattern, here ``r_z = 0``
+    and ``R = R_z(θ)``), and the rows ``f_x, f_y`` (and ``m_z`` for ``1R2T``) of WireX's
+    pulley-corrected structure matrix, the rows the planar patterns keep
+    (``getStructureMatrix``)."""
+    from taut.kinematics.swivel import swivel_angles
+
+    robot, root = read_wirex(FIXTURES / name), raw(name)
+    rigid = robot.platform.kind == "rigid"
+    if rigid:
+        r, R, pose = np.array([x, y, 0.0]), rz(theta), [x, y, theta]
+    else:
+        r, R, pose = np.array([x + 1.0, y + 1.0, 0.0]), np.eye(3), [x + 1.0, y + 1.0]
+    wx = wirex_pulley_ex(root, r, R)
+    assume(wx["valid"].all() and (wx["off_axis"][list(robot.swivel_cables)] >= 1.0).all())
+    ik = inverse_kinematics(robot, pose)
+    assert np.allclose(ik.lengths, wx["l"], rtol=0, atol=1e-9)
+    # a point mass carries its anchor offsets in its exits: its tangent points move with them
+    offsets = 0.0 if rigid else raw_winches(root)[3][:, :2]
+    assert np.allclose(ik.exit_points, wx["C"][:, :2] - offsets, rtol=0, atol=1e-9)
+    assert np.allclose(wx["C"][:, 2], raw_winches(root)[0][:, 2], rtol=0, atol=1e-12), "the cables stay in the plane"
+    rows = [0, 1, 5] if rigid else [0, 1]
+    assert np.allclose(ik.structure_matrix, wx["W"][rows], rtol=0, atol=1e-9)
+    gamma = swivel_angles(robot, pose)
+    assert angle_gap(gamma, wx["gamma"][list(robot.swivel_cables)]).max() < 1e-12
+    assert set(np.round(np.abs(gamma), 12)) <= {0.0, round(math.pi, 12)}
+
+
+@pytest.mark.parametrize("name", PLANAR_PULLEYS)
+def test_planar_pulleys_round_trip(tmp_path, name):
+    robot = read_wirex(FIXTURES / name)
+    write_wirex(robot, tmp_path / name)
+    back = read_wirex(tmp_path / name)
+    assert [c.swivel for c in back.cables] == [c.swivel for c in robot.cables]
+    assert_same_robot(robot, back)
 
 
 positions = st.tuples(st.floats(-1.6, 1.6), st.floats(-1.1, 1.1), st.floats(0.2, 1.8))
@@ -328,7 +459,7 @@ def test_load_robot_reads_wcrfx():
     assert load_robot(FIXTURES / "spatial_3r3t.wcrfx") == read_wirex(FIXTURES / "spatial_3r3t.wcrfx")
     cogiro = load_robot(FIXTURES / "CoGiRo.wcrfx")
     assert cogiro == read_wirex(FIXTURES / "CoGiRo.wcrfx") and cogiro.swivel_cables == tuple(range(8))
-    with pytest.raises(UnsupportedRobotError, match="spatial robots only"):
+    with pytest.raises(UnsupportedRobotError, match="leaves the xy plane"):
         load_robot(FIXTURES / "no_radius_2t.wcrfx")
 
 
