@@ -103,7 +103,7 @@ def test_workspace_of_wcrfx_pulleys(taut_cli):
             "no_radius_2t.wcrfx",
             "turns about the winch frame's z axis (0, 0, 1), which leaves the xy plane of motion of 2T",
         ),
-        ("line_1t.wcrfx", "motion pattern 1T (a point moving on a line)"),
+        ("line_1t.wcrfx", "motion pattern 1T (a point moving on a line) has no taut platform"),
         ("five_dof_2r3t.wcrfx", "motion pattern 2R3T"),
     ],
 )

@@ -253,10 +253,10 @@ def test_real_robots_swivel_angles_tangents_and_structure_matrix_are_wirexs(name
         if not (wx["valid"].all() and (wx["off_axis"] >= 1.0).all()):
             continue
         used += 1
-        assert np.allclose(ik.lengths[k], wx["l"], rtol=0, atol=1e-9)
+        assert np.allclose(ik.lengths[k], wx["l"], rtol=0, atol=1e-12)
         assert angle_gap(gamma[k], wx["gamma"]).max() < 1e-12
-        assert np.allclose(ik.exit_points[k], wx["C"], rtol=0, atol=1e-9)
-        assert np.allclose(ik.structure_matrix[k], wx["W"], rtol=0, atol=1e-9)
+        assert np.allclose(ik.exit_points[k], wx["C"], rtol=0, atol=1e-12)
+        assert np.allclose(ik.structure_matrix[k], wx["W"], rtol=0, atol=1e-12)
     assert used >= 1000
 
 
@@ -448,11 +448,41 @@ def test_incomplete_tensor_and_missing_loads_are_stated():
 
 @pytest.mark.parametrize(
     "name, words",
-    [("line_1t.wcrfx", "motion pattern 1T"), ("five_dof_2r3t.wcrfx", "motion pattern 2R3T")],
+    [
+        ("line_1t.wcrfx", "motion pattern 1T (a point moving on a line) has no taut platform"),
+        ("five_dof_2r3t.wcrfx", "motion pattern 2R3T (5 degrees of freedom"),
+        ("beam_2r3t.wcrfx", "motion pattern 2R3T (5 degrees of freedom"),
+    ],
 )
 def test_unrepresentable_motion_patterns(name, words):
-    with pytest.raises(UnsupportedRobotError, match=words):
+    with pytest.raises(UnsupportedRobotError) as err:
         read_wirex(FIXTURES / name, pulleys="points")
+    message = str(err.value)
+    assert words in message and "\n" not in message
+    assert ("across the line" in message) if "1T" in words else ("wrench-closure" in message)
+
+
+def test_a_2r3t_beam_read_as_3r3t_is_not_the_2r3t_robot():
+    """Why 2R3T is refused: the beam's file read as taut's 6-DOF platform has WireX's lengths,
+    unchanged by the rotation ``a`` about the beam (the body x axis: ``R = Rz(c) Ry(b) Rx(a)``),
+    but its structure matrix has rank 5, the moment about the beam zero in every column, so no
+    pose of it is wrench-closed in six dimensions, whatever the cables."""
+    import dataclasses
+
+    from taut.model.wirex import parse_wirex, wirex_robot
+
+    model = parse_wirex((FIXTURES / "beam_2r3t.wcrfx").read_bytes())
+    robot = wirex_robot(dataclasses.replace(model, motion_pattern="3R3T"), pulleys="points")
+    rng = np.random.default_rng(5)
+    for _ in range(50):
+        position, (a, b, c) = rng.uniform([-0.5, -0.4, 0.6], [0.5, 0.4, 1.4]), rng.uniform(-0.5, 0.5, 3)
+        lengths, W = wirex_standard_model("beam_2r3t.wcrfx", position, rz(c) @ ry(b) @ rx(a))
+        turned = inverse_kinematics(robot, [[*position, a, b, c], [*position, a + 1.0, b, c]])
+        assert np.allclose(turned.lengths, lengths, rtol=0, atol=1e-12)
+        assert np.allclose(turned.structure_matrix[0], W, rtol=0, atol=1e-12)
+        axis = rz(c) @ ry(b) @ rx(a) @ [1.0, 0.0, 0.0]
+        assert np.allclose(axis @ W[3:], 0.0, atol=1e-12)
+        assert np.linalg.matrix_rank(W) == 5
 
 
 def test_load_robot_reads_wcrfx():

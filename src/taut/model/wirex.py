@@ -20,7 +20,16 @@ max_cable_load>``.  The mapping follows WireX's own reader and kinematics (``Wir
   exit point (``a_i − b_i``, exact for a platform that only translates).  Planar patterns need
   every cable in a plane of motion (``<base>`` z = ``<platform>`` z), or the planar lengths
   would not be WireX's.  ``1T`` (a point on a line) and ``2R3T`` (five degrees of freedom)
-  have no taut platform and raise :class:`~taut.errors.UnsupportedRobotError`.
+  have no taut platform and raise :class:`~taut.errors.UnsupportedRobotError`: WireX itself
+  gives them kinematics only (``CStructureMatrix::getStructureMatrix`` supports ``3R3T``,
+  ``3T``, ``2T`` and ``1R2T``; a ``2R3T`` or ``1T`` robot has 5 or 1 rows, ``CRobotData::
+  setMotionPattern``).  A taut point mass in a plane or in space has the lengths of ``1T``
+  on its line, but its statics would balance forces across the line too, which the guide of a
+  ``1T`` robot takes.  taut's 6-DOF rigid platform has the lengths of ``2R3T`` (for a beam,
+  the anchors on the axis the pattern leaves free, any rotation about that axis), but its
+  structure matrix keeps the sixth row, the moment about that axis (zero for a beam), so that
+  wrench-closure never holds and wrench-feasibility and forward kinematics ask for the
+  control of a rotation the robot does not have.  Neither is exact, so neither is done.
 * **Pulleys.** WireX's pulley kinematics (``CKinematics::doInverseKinematicsPulleyEx``) wind
   the cable over a pulley of radius ``r`` that swivels about the winch frame's z axis
   through ``<base>``: the anchor ``b`` in the winch frame ``A`` is ``Aᵀ(b − base)``, the
@@ -347,13 +356,17 @@ def wirex_robot(model: WirexModel, source: str = "<wcrfx>", *, pulleys: PulleyMo
     pattern = model.motion_pattern
     if pattern == "1T":
         raise UnsupportedRobotError(
-            f"{source}: motion pattern 1T (a point moving on a line) has no taut platform; "
-            "taut's point masses move in a plane or in space"
+            f"{source}: motion pattern 1T (a point moving on a line) has no taut platform: taut's point masses "
+            "move in a plane or in space, where the cables would also have to balance every force across the "
+            "line, which 1T's guide takes; the lengths would agree, the structure matrix (1 row in 1T) and "
+            "every wrench and workspace analysis would not"
         )
     if pattern == "2R3T":
         raise UnsupportedRobotError(
-            f"{source}: motion pattern 2R3T (5 degrees of freedom, rotation about one axis left free) "
-            "has no taut platform; taut's platforms have 2, 3 or 6"
+            f"{source}: motion pattern 2R3T (5 degrees of freedom: the rotation about the platform's own axis is "
+            "not controlled) has no taut platform: taut's spatial rigid platform has 6, and read so its "
+            "structure matrix would keep a sixth row (the moment about that axis, zero for a beam) that "
+            "wrench-closure, wrench-feasibility and forward kinematics would ask the cables to control"
         )
     notes: list[str] = []
     planar = pattern in ("2T", "1R2T")
