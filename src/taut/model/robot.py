@@ -346,7 +346,7 @@ class Robot(_Strict):
                 axis = list(c.swivel.axis)
                 if d == 3:
                     raise ValueError(f"cables[{i}].swivel.axis: expected 3 numbers, got {axis}")
-                out = " points out of the robot's plane" if axis[2] != 0 else " has a z component"
+                out = " points out of the robot's plane" if axis[2] != 0 else " gives a third (z) number"
                 raise ValueError(
                     f"cables[{i}].swivel.axis {axis}{out}: a planar robot's swivelling pulley turns about an "
                     "axis in its plane (give x, y), so that the pulley and the cable stay in the plane"
