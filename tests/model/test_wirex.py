@@ -349,7 +349,12 @@ def test_ipanema_swivels_are_wirex_pulley_kinematics(position, abc):
 )
 def test_tilted_winch_frames_are_wirex_pulley_kinematics(tmp_path_factory, position, abc, tilts):
     """IPAnema with every winch frame turned (``R_z R_x R_z``): the swivel axis is the frame's
-    z axis, and the lengths stay WireX's (same domain as above)."""
+    z axis, and the lengths, tangent points and pulley-corrected structure matrix stay WireX's
+    (same domain as above).  The swivel angle is WireX's up to the constant angle between the
+    file frame's x axis and that of :func:`taut.model.wirex.winch_frame`, about the same axis."""
+    from taut.kinematics.swivel import swivel_angles
+    from taut.model.wirex import winch_frame
+
     root = raw("IPAnema.wcrfx")
     for chain, (t1, t2, t3) in zip(root.find("geometry").findall("chain"), tilts, strict=True):
         frame = rz(t1) @ rx(t2) @ rz(t3)
@@ -363,10 +368,18 @@ def test_tilted_winch_frames_are_wirex_pulley_kinematics(tmp_path_factory, posit
     a, b, c = abc
     expected, off_axis = wirex_pulley_lengths(root, np.array(position), rz(c) @ ry(b) @ rx(a))
     assume(np.all(off_axis >= 1.0))
+    wx = wirex_pulley_ex(root, np.array(position), rz(c) @ ry(b) @ rx(a))
+    assume(wx["valid"].all())
     robot = read_wirex(path)
-    assert np.array_equal([c.swivel.axis for c in robot.cables], raw_winches(root)[1][:, :, 2])
+    frames = raw_winches(root)[1]
+    assert np.array_equal([c.swivel.axis for c in robot.cables], frames[:, :, 2])
     ik = inverse_kinematics(robot, [*position, a, b, c])
     assert np.allclose(ik.lengths, expected, rtol=0, atol=1e-9)
+    assert np.allclose(ik.exit_points, wx["C"], rtol=0, atol=1e-9)
+    assert np.allclose(ik.structure_matrix, wx["W"], rtol=0, atol=1e-9)
+    own_x = np.array([winch_frame(f[:, 2])[:, 0] for f in frames])
+    offset = np.arctan2(np.einsum("ni,ni->n", frames[:, :, 1], own_x), np.einsum("ni,ni->n", frames[:, :, 0], own_x))
+    assert angle_gap(swivel_angles(robot, [*position, a, b, c]) + offset, wx["gamma"]).max() < 1e-9
 
 
 # ---- independent computation from the raw numbers -------------------------------------------
