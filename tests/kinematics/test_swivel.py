@@ -550,3 +550,33 @@ def test_caspr_planar_pulleys_round_trip(tmp_path: Path) -> None:
     assert [c.swivel for c in back.cables] == [c.swivel for c in robot.cables]
     q = np.array([[0.1, -0.2, 0.3], [0.0, 0.0, 0.0]])
     np.testing.assert_allclose(inverse_kinematics(back, q).lengths, inverse_kinematics(robot, q).lengths, atol=1e-15)
+
+
+def test_caspr_planar_point_mass_pulley(tmp_path: Path) -> None:
+    """A P_XZ point mass whose first cable, attached off its origin, leaves through an in-plane
+    base_rotating_pulley: the anchor offset folds into the exit as for a straight cable, and the
+    lengths are the root-finding reference in CASPR's frame."""
+    from taut.model import load_robot
+
+    bodies = (CASPR / "point_xz_bodies.xml").read_text()
+    cables = (CASPR / "point_xz_cables.xml").read_text()
+    old = "<attachment><link>0</link><location>-1 0 1</location></attachment><attachment><link>1</link><location>0 0 0</location>"
+    assert old in cables
+    cables = cables.replace(
+        old,
+        "<base_rotating_pulley><fixed_location>-1 0 1</fixed_location><pulley_radius>0.05</pulley_radius>"
+        "<cable_entry_vector>0.6 0 -0.8</cable_entry_vector></base_rotating_pulley>"
+        "<attachment><link>1</link><location>0.05 0 0.02</location>",
+    )
+    (tmp_path / "p_bodies.xml").write_text(bodies)
+    (tmp_path / "p_cables.xml").write_text(cables)
+    robot = load_robot(tmp_path / "p_bodies.xml")
+    assert (robot.dimension, robot.platform.kind, robot.swivel_cables) == (2, "point-mass", (0,))
+    assert robot.cables[0].swivel.axis == (0.6, -0.8)
+    for x, z in [(0.1, -0.2), (-0.3, 0.25), (0.4, 0.4)]:
+        length, tangent = reference_path(
+            np.array([-1.0, 0.0, 1.0]), np.array([0.6, 0.0, -0.8]), 0.05, np.array([x + 0.05, 0.0, z + 0.02])
+        )
+        ik = inverse_kinematics(robot, [x, z])
+        assert ik.lengths[0] == pytest.approx(length, abs=1e-9)
+        np.testing.assert_allclose(ik.exit_points[0], tangent[[0, 2]] - [0.05, 0.02], atol=1e-8)
