@@ -58,6 +58,28 @@ def test_ik_of_wcrfx_pulleys(taut_cli):
     assert np.allclose(result["lengths"], r * (np.arccos(lf / bm) + np.arccos(bz / bm)) + lf, rtol=0, atol=1e-12)
 
 
+def test_ik_and_workspace_of_planar_wcrfx_pulleys(taut_cli):
+    """In-plane pulleys of a 2T file: WireX's pulley lengths with the swivel axis ``k`` (the
+    winch frame's z axis, in the plane): ``bz = k·(r + b − a)``, ``bxy`` the rest."""
+    path = FIXTURES / "planar_pulleys_2t.wcrfx"
+    result = taut_cli("ik", str(path), "--pose", "1.1,0.9", "--json").json()
+    chains = ET.parse(path).getroot().findall("robot/geometry/chain")
+    base = np.array([[float(c.find("base").get(k)) for k in "xyz"] for c in chains])
+    plat = np.array([[float(c.find("platform").get(k)) for k in "xyz"] for c in chains])
+    axes = np.array([[float(c.find("base").get(f"a{i}3")) for i in (1, 2, 3)] for c in chains])
+    r = np.array([float(c.find("base").get("radius")) for c in chains])
+    ap = plat + [1.1, 0.9, 0] - base
+    bz = np.einsum("ij,ij->i", ap, axes)
+    bxy = np.linalg.norm(ap - bz[:, None] * axes, axis=1)
+    bm = np.hypot(bxy - r, bz)
+    lf = np.sqrt(bm**2 - r**2)
+    assert np.allclose(result["lengths"], r * (np.arccos(lf / bm) + np.arccos(bz / bm)) + lf, rtol=0, atol=1e-12)
+    space = taut_cli(
+        "workspace", str(path), "--condition", "wrench-closure", "--grid", "0.3:1.7:5;0.3:1.7:5", "--json"
+    ).json()
+    assert space["poses"] == 25 and 0 < space["inside"] < 25
+
+
 def test_workspace_of_wcrfx_pulleys(taut_cli):
     result = taut_cli(
         "workspace",
@@ -77,8 +99,11 @@ def test_workspace_of_wcrfx_pulleys(taut_cli):
 @pytest.mark.parametrize(
     "name, words",
     [
-        ("no_radius_2t.wcrfx", "swivelling pulleys of radius 0.1 m (3 of 3 cables) on a planar robot (2T)"),
-        ("line_1t.wcrfx", "motion pattern 1T (a point moving on a line)"),
+        (
+            "no_radius_2t.wcrfx",
+            "turns about the winch frame's z axis (0, 0, 1), which leaves the xy plane of motion of 2T",
+        ),
+        ("line_1t.wcrfx", "motion pattern 1T (a point moving on a line) has no taut platform"),
         ("five_dof_2r3t.wcrfx", "motion pattern 2R3T"),
     ],
 )

@@ -10,6 +10,8 @@ differentiated by finite differences, and the two-``arccos`` wrap angle of WireX
 from __future__ import annotations
 
 import math
+import xml.etree.ElementTree as ET
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -324,7 +326,9 @@ def test_analyses_that_do_not_model_pulleys_refuse_them() -> None:
         ({"axis": [0, 0, 0], "radius": 0.1}, 3, "non-zero vector"),
         ({"axis": [0, 0, float("nan")], "radius": 0.1}, 3, "finite number"),
         ({"axis": [0, 1], "radius": 0.1}, 3, "axis"),
-        ({"axis": [0, 0, 1], "radius": 0.1}, 2, "spatial robots"),
+        ({"axis": [0, 0, 1], "radius": 0.1}, 2, r"swivel.axis \[0.0, 0.0, 1.0\] points out of the robot's plane"),
+        ({"axis": [1, 0, 0], "radius": 0.1}, 2, r"gives a third \(z\) number"),
+        ({"axis": [1, 0], "radius": 0.1}, 3, "expected 3 numbers"),
     ],
 )
 def test_bad_swivels_are_refused(swivel: dict, dimension: int, message: str) -> None:
@@ -360,3 +364,219 @@ def test_jointed_platform_jacobian_through_pulleys() -> None:
         dp[j] = eps
         grad = (cable_lengths(robot, pose + dp) - cable_lengths(robot, pose - dp)) / (2 * eps)
         np.testing.assert_allclose(grad, J[:8, j], atol=1e-7)
+
+
+# ---- planar robots: the swivel axis in the robot's plane ------------------------------------------
+
+PLANAR = robot_from_dict(
+    {
+        "name": "planar pulleys",
+        "dimension": 2,
+        "platform": {"kind": "rigid"},
+        "cables": [
+            {"exit": [-1.0, -1.0], "anchor": [-0.1, -0.05], "swivel": {"axis": [0.0, 1.0], "radius": 0.05}},
+            {"exit": [1.0, -1.0], "anchor": [0.1, -0.05], "swivel": {"axis": [0.6, 0.8], "radius": 0.04}},
+            {"exit": [1.0, 1.0], "anchor": [0.1, 0.05], "swivel": {"axis": [0.0, -1.0], "radius": 0.05}},
+            {"exit": [-1.0, 1.0], "anchor": [-0.1, 0.05]},
+        ],
+    }
+)
+planar_poses = arrays(float, (3,), elements=st.floats(-0.4, 0.4))
+
+
+def planar_with_radius(r: float) -> Robot:
+    data = robot_to_dict(PLANAR)
+    for c in data["cables"]:
+        if "swivel" in c:
+            c["swivel"]["radius"] = r
+    return robot_from_dict(data)
+
+
+@settings(max_examples=30, deadline=None)
+@given(planar_poses)
+def test_planar_lengths_and_tangent_points_match_root_finding(pose: np.ndarray) -> None:
+    """The spatial root-finding reference with the plane embedded at z = 0 and the axes in it."""
+    ik = inverse_kinematics(PLANAR, pose)
+    for i in PLANAR.swivel_cables:
+        s = PLANAR.cables[i].swivel
+        D, k = np.array([*PLANAR.exits[i], 0.0]), np.array([*s.axis, 0.0])
+        length, tangent = reference_path(D, k, s.radius, np.array([*ik.anchors[i], 0.0]))
+        assert ik.lengths[i] == pytest.approx(length, abs=1e-9)
+        np.testing.assert_allclose(ik.exit_points[i], tangent[:2], atol=1e-8)
+        assert abs(tangent[2]) < 1e-8, "the tangent point is in the plane"
+
+
+@settings(max_examples=30, deadline=None)
+@given(planar_poses, st.floats(0.01, 0.3))
+def test_planar_structure_matrix_is_minus_the_length_gradient(pose: np.ndarray, r: float) -> None:
+    """Rows ``f_x, f_y, m_z``: ``∂l/∂(x, y, θ) = −W`` by central differences."""
+    robot = planar_with_radius(r)
+    W = structure_matrix(robot, pose)
+    assert W.shape == (3, 4)
+    eps = 1e-6
+    for j in range(3):
+        dp = np.zeros(3)
+        dp[j] = eps
+        grad = (cable_lengths(robot, pose + dp) - cable_lengths(robot, pose - dp)) / (2 * eps)
+        np.testing.assert_allclose(grad, -W[j], atol=1e-7)
+
+
+@settings(max_examples=20, deadline=None)
+@given(planar_poses)
+def test_planar_converges_to_the_point_model_at_rate_r(pose: np.ndarray) -> None:
+    point = inverse_kinematics(
+        PLANAR.model_copy(update={"cables": [c.model_copy(update={"swivel": None}) for c in PLANAR.cables]}), pose
+    )
+    radii = [4e-3, 2e-3, 1e-3]
+    runs = [inverse_kinematics(planar_with_radius(r), pose) for r in radii]
+    dl = [np.abs(ik.lengths - point.lengths).max() for ik in runs]
+    dW = [np.abs(ik.structure_matrix - point.structure_matrix).max() for ik in runs]
+    for coarse, fine in zip(dl, dl[1:]):
+        assert 1.9 < coarse / fine < 2.1
+    for coarse, fine in zip(dW, dW[1:]):
+        assert 1.8 < coarse / fine < 2.2
+    assert dl[-1] < 10 * radii[-1]
+
+
+def test_planar_pulley_flips_across_the_axis_line() -> None:
+    """A point mass crossing the axis line of a pulley: the pulley faces it from the other
+    side (swivel angle 0 → π), the length is continuous, the direction jumps, and on the
+    line the pose is singular."""
+    from taut.kinematics.swivel import swivel_angles
+
+    robot = robot_from_dict(
+        {
+            "name": "one planar pulley",
+            "dimension": 2,
+            "platform": {"kind": "point-mass"},
+            "cables": [{"exit": [0.0, 0.0], "swivel": {"axis": [0.0, 1.0], "radius": 0.1}}, {"exit": [0.0, 5.0]}],
+        }
+    )
+    # winch frame of (0, 1, 0): x axis (1, 0, 0), so an anchor at x > 0 has γ = 0; behind the
+    # pulley (y < 0) the cable wraps about half a turn, and the side matters
+    left, right = np.array([-1e-7, -2.0]), np.array([1e-7, -2.0])
+    assert swivel_angles(robot, right)[0] == 0.0 and swivel_angles(robot, left)[0] == pytest.approx(np.pi)
+    a, b = inverse_kinematics(robot, left), inverse_kinematics(robot, right)
+    assert a.lengths[0] == pytest.approx(b.lengths[0], abs=1e-6)
+    np.testing.assert_allclose(a.exit_points[0], b.exit_points[0] * [-1, 1], atol=1e-6)
+    assert b.exit_points[0, 0] > 0.1 and a.directions[0, 0] < -0.04 and b.directions[0, 0] > 0.04
+    with pytest.raises(InfeasiblePoseError, match="cable 1 has its anchor on the axis of its swivelling pulley"):
+        inverse_kinematics(robot, [0.0, 2.0])
+    with pytest.raises(InfeasiblePoseError, match="swivel angle is undefined"):
+        swivel_angles(robot, [0.0, 2.0])
+    # hand computation: anchor (1, 0.1) level with the top of the pulley centred at (0.1, 0)
+    ik = inverse_kinematics(robot, [1.0, 0.1])
+    assert ik.lengths[0] == pytest.approx(0.1 * np.pi / 2 + 0.9)
+    np.testing.assert_allclose(ik.exit_points[0], [0.1, 0.1], atol=1e-15)
+
+
+def test_swivel_angles_of_a_spatial_pulley_by_hand() -> None:
+    from taut.kinematics.swivel import swivel_angles
+
+    robot = robot_from_dict(
+        {
+            "name": "one pulley",
+            "dimension": 3,
+            "platform": {"kind": "point-mass"},
+            "cables": [{"exit": [0, 0, 0], "swivel": {"axis": [0, 0, 1], "radius": 0.1}}, {"exit": [0, 0, 3]}],
+        }
+    )
+    poses = [[1.0, 1.0, -1.0], [0.0, -2.0, 0.5], [-1.0, 0.0, 1.0]]
+    np.testing.assert_allclose(swivel_angles(robot, poses)[:, 0], [np.pi / 4, -np.pi / 2, np.pi], atol=1e-15)
+    with pytest.raises(UnsupportedRobotError, match="no cable leaves through a swivelling pulley"):
+        swivel_angles(BASE, np.zeros(6))
+
+
+def test_planar_batch_path_and_analyses_use_the_pulleys() -> None:
+    """Planar robots with pulleys go through NumPy in the batch entry point, and the tension
+    distribution balances the wrench through the tangent directions."""
+    from taut.statics.tension import distribute_tensions
+    from taut.statics.wrench import external_wrench
+
+    rng = np.random.default_rng(3)
+    P = rng.uniform(-0.3, 0.3, (64, 3))
+    lengths, W, ok = batch_structure_matrices(PLANAR, P)
+    ik = inverse_kinematics(PLANAR, P)
+    assert ok.all()
+    np.testing.assert_allclose(lengths, ik.lengths, rtol=0, atol=0)
+    np.testing.assert_allclose(W, ik.structure_matrix, rtol=0, atol=0)
+    robot = PLANAR.model_copy(update={"platform": {"kind": "rigid", "wrench": [0.0, -5.0, 0.1]}})
+    pose = np.array([0.1, -0.05, 0.1])
+    res = distribute_tensions(robot, pose)
+    assert res.feasible
+    np.testing.assert_allclose(
+        structure_matrix(robot, pose) @ res.tensions + external_wrench(robot, pose), 0, atol=1e-8
+    )
+
+
+CASPR = Path(__file__).parents[1] / "model" / "fixtures" / "caspr"
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.floats(-0.4, 0.4), st.floats(-0.4, 0.4), st.floats(-0.4, 0.4))
+def test_caspr_planar_base_rotating_pulleys(x: float, z: float, theta: float) -> None:
+    """A PLANAR_XZ CASPR robot whose base_rotating_pulleys have entry vectors in the XZ plane:
+    taut's planar swivels, whose lengths are the root-finding reference in CASPR's 3-D frame
+    (taut (x, y, θ) = CASPR (x, z, −θ))."""
+    from taut.model import load_robot
+
+    robot = load_robot(CASPR / "planar_pulley_xz_bodies.xml")
+    assert robot.dimension == 2 and robot.swivel_cables == (0, 1, 2)
+    cables = ET.parse(CASPR / "planar_pulley_xz_cables.xml").getroot()
+    ik = inverse_kinematics(robot, [x, z, -theta])
+    c, s_ = math.cos(theta), math.sin(theta)
+    for i, el in enumerate(cables.iter("cable_ideal")):
+        pulley = el.find("attachments/base_rotating_pulley")
+        if pulley is None:
+            continue
+        vec = [np.array(pulley.find(tag).text.split(), float) for tag in ("fixed_location", "cable_entry_vector")]
+        radius = float(pulley.find("pulley_radius").text)
+        local = np.array(el.find("attachments/attachment/location").text.split(), float)
+        # PLANAR_XZ: rotation θ about CASPR's y axis, then the translation (x, 0, z)
+        B = np.array([x, 0.0, z]) + np.array([[c, 0, s_], [0, 1, 0], [-s_, 0, c]]) @ local
+        length, tangent = reference_path(vec[0], vec[1], radius, B)
+        assert ik.lengths[i] == pytest.approx(length, abs=1e-9)
+        np.testing.assert_allclose(ik.exit_points[i], tangent[[0, 2]], atol=1e-8)
+
+
+def test_caspr_planar_pulleys_round_trip(tmp_path: Path) -> None:
+    """The CASPR writer lifts a planar swivel axis into the robot's plane, and reads back."""
+    from taut.model import load_robot
+    from taut.model.caspr import write_caspr
+
+    robot = load_robot(CASPR / "planar_pulley_xz_bodies.xml")
+    write_caspr(robot, tmp_path / "back_bodies.xml")
+    back = load_robot(tmp_path / "back_bodies.xml")
+    assert [c.swivel for c in back.cables] == [c.swivel for c in robot.cables]
+    q = np.array([[0.1, -0.2, 0.3], [0.0, 0.0, 0.0]])
+    np.testing.assert_allclose(inverse_kinematics(back, q).lengths, inverse_kinematics(robot, q).lengths, atol=1e-15)
+
+
+def test_caspr_planar_point_mass_pulley(tmp_path: Path) -> None:
+    """A P_XZ point mass whose first cable, attached off its origin, leaves through an in-plane
+    base_rotating_pulley: the anchor offset folds into the exit as for a straight cable, and the
+    lengths are the root-finding reference in CASPR's frame."""
+    from taut.model import load_robot
+
+    bodies = (CASPR / "point_xz_bodies.xml").read_text()
+    cables = (CASPR / "point_xz_cables.xml").read_text()
+    old = "<attachment><link>0</link><location>-1 0 1</location></attachment><attachment><link>1</link><location>0 0 0</location>"
+    assert old in cables
+    cables = cables.replace(
+        old,
+        "<base_rotating_pulley><fixed_location>-1 0 1</fixed_location><pulley_radius>0.05</pulley_radius>"
+        "<cable_entry_vector>0.6 0 -0.8</cable_entry_vector></base_rotating_pulley>"
+        "<attachment><link>1</link><location>0.05 0 0.02</location>",
+    )
+    (tmp_path / "p_bodies.xml").write_text(bodies)
+    (tmp_path / "p_cables.xml").write_text(cables)
+    robot = load_robot(tmp_path / "p_bodies.xml")
+    assert (robot.dimension, robot.platform.kind, robot.swivel_cables) == (2, "point-mass", (0,))
+    assert robot.cables[0].swivel.axis == (0.6, -0.8)
+    for x, z in [(0.1, -0.2), (-0.3, 0.25), (0.4, 0.4)]:
+        length, tangent = reference_path(
+            np.array([-1.0, 0.0, 1.0]), np.array([0.6, 0.0, -0.8]), 0.05, np.array([x + 0.05, 0.0, z + 0.02])
+        )
+        ik = inverse_kinematics(robot, [x, z])
+        assert ik.lengths[0] == pytest.approx(length, abs=1e-9)
+        np.testing.assert_allclose(ik.exit_points[0], tangent[[0, 2]] - [0.05, 0.02], atol=1e-8)

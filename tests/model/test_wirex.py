@@ -116,13 +116,16 @@ def test_pulleys_are_swivels_by_default():
     assert "APPROXIMATION" not in robot.description
 
 
-def test_planar_pulleys_are_refused_by_default():
+def test_planar_pulleys_about_an_axis_out_of_the_plane_are_refused():
+    """WireX's default winch frame is the identity: its z axis, the swivel axis, is normal to
+    the plane of a planar pattern, and the cable would leave the plane over the pulley."""
     with pytest.raises(
-        UnsupportedRobotError, match=r'no_radius_2t\.wcrfx: <chain id="1"> <base>: swivelling pulleys of radius 0\.1 m'
+        UnsupportedRobotError,
+        match=r'no_radius_2t\.wcrfx: <chain id="1"> <base>: the swivelling pulley \(radius 0\.1 m\) turns about',
     ) as err:
         read_wirex(FIXTURES / "no_radius_2t.wcrfx")
-    assert "spatial robots only" in str(err.value) and "pulleys='points'" in str(err.value)
-    assert "\n" not in str(err.value)
+    assert "(0, 0, 1), which leaves the xy plane of motion of 2T" in str(err.value)
+    assert "pulleys='points'" in str(err.value) and "\n" not in str(err.value)
 
 
 def test_point_pulleys_say_so_in_the_description():
@@ -183,6 +186,134 @@ def wirex_pulley_lengths(root: ET.Element, r: np.ndarray, R: np.ndarray) -> tupl
     return wrap * rp + lf, bxy / rp
 
 
+def wirex_pulley_ex(root: ET.Element, r: np.ndarray, R: np.ndarray) -> dict[str, np.ndarray]:
+    """Everything ``CKinematics::doInverseKinematicsPulleyEx`` (``WireLib/Kinematics.cpp``)
+    computes at the pose ``(r, R)``, for every chain, transcribed: the lengths ``l``, the
+    swivel angles ``gamma = atan2(b_y, b_x)`` and wrap angles ``beta`` of the pulleys, the
+    tangent points ``C = a + A R_z(gamma)((r_p, 0, 0) + R_y(beta)(−r_p, 0, 0))``, the cable
+    vectors ``U = C − R b − r``, WireX's validity flag (it refuses ``BM < 2 r_p`` and anchors
+    within 1e-6 of the axis) and ``off_axis`` = ``bxy / r_p`` (the two-``arccos`` wrap angle
+    holds for ``bxy ≥ r_p``); and the structure matrix of ``CStructureMatrix::getStructureMatrix``
+    with ``usePulley`` (``3R3T``): columns ``[U/‖U‖; R b × U/‖U‖]``."""
+    base, frames, rp, plat = raw_winches(root)
+    P = plat @ R.T
+    ap = r + P - base
+    local = np.einsum("nji,nj->ni", frames, ap)
+    bxy, bz = np.hypot(local[:, 0], local[:, 1]), local[:, 2]
+    bm = np.hypot(bxy - rp, bz)
+    gamma = np.arctan2(local[:, 1], local[:, 0])
+    lf = np.sqrt(bz**2 + (bxy - rp) ** 2 - rp**2)
+    beta = np.arccos(lf / bm) + np.arccos(bz / bm)
+    C = np.array(
+        [
+            a + A @ rz(g) @ (np.array([p, 0, 0]) + ry(b) @ np.array([-p, 0, 0]))
+            for a, A, g, b, p in zip(base, frames, gamma, beta, rp, strict=True)
+        ]
+    )
+    U = C - P - r
+    u = U / np.linalg.norm(U, axis=1, keepdims=True)
+    return {
+        "l": beta * rp + lf,
+        "gamma": gamma,
+        "beta": beta,
+        "C": C,
+        "W": np.vstack([u.T, np.cross(P, u).T]),
+        "valid": ~((bm < 2 * rp) | (bxy < 1e-6)),
+        "off_axis": bxy / np.where(rp > 0, rp, 1.0),
+    }
+
+
+def angle_gap(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``|a − b|`` as angles, wrapped into ``[0, π]``."""
+    return np.abs(np.angle(np.exp(1j * (np.asarray(a) - np.asarray(b)))))
+
+
+@pytest.mark.parametrize("name", REAL)
+def test_real_robots_swivel_angles_tangents_and_structure_matrix_are_wirexs(name):
+    """At 1,200 random poses of each real WireX robot, where WireX's formulas are valid (its own
+    validity test, and anchors at least ``r_p`` from the swivel axis for the two-``arccos``
+    wrap angle), taut's lengths, swivel angles, tangent points and structure matrix are those
+    of WireX's pulley kinematics and its pulley-corrected structure matrix."""
+    from taut.kinematics.swivel import swivel_angles
+
+    root, robot = raw(name), read_wirex(FIXTURES / name)
+    assert robot.swivel_cables == tuple(range(robot.n_cables))
+    base = raw_winches(root)[0]
+    lo, hi = base.min(axis=0), base.max(axis=0)
+    rng = np.random.default_rng(2018)
+    N = 1200
+    positions = lo + (hi - lo) * rng.uniform(0.3, 0.7, (N, 3))
+    angles = rng.uniform(-0.25, 0.25, (N, 3))
+    poses = np.hstack([positions, angles])
+    ik = inverse_kinematics(robot, poses)
+    gamma = swivel_angles(robot, poses)
+    used = 0
+    for k, (position, (a, b, c)) in enumerate(zip(positions, angles, strict=True)):
+        wx = wirex_pulley_ex(root, position, rz(c) @ ry(b) @ rx(a))
+        if not (wx["valid"].all() and (wx["off_axis"] >= 1.0).all()):
+            continue
+        used += 1
+        assert np.allclose(ik.lengths[k], wx["l"], rtol=0, atol=1e-12)
+        assert angle_gap(gamma[k], wx["gamma"]).max() < 1e-12
+        assert np.allclose(ik.exit_points[k], wx["C"], rtol=0, atol=1e-12)
+        assert np.allclose(ik.structure_matrix[k], wx["W"], rtol=0, atol=1e-12)
+    assert used >= 1000
+
+
+PLANAR_PULLEYS = ["planar_pulleys_1r2t.wcrfx", "planar_pulleys_2t.wcrfx"]
+
+
+def test_planar_pulleys_are_in_plane_swivels():
+    robot = read_wirex(FIXTURES / "planar_pulleys_1r2t.wcrfx")
+    _, frames, radii, _ = raw_winches(raw("planar_pulleys_1r2t.wcrfx"))
+    assert robot.swivel_cables == (0, 1, 2, 4)
+    assert [c.swivel.axis for c in robot.cables if c.swivel] == [tuple(f[:2, 2]) for f in frames[[0, 1, 2, 4]]]
+    assert [c.swivel.radius for c in robot.cables if c.swivel] == radii[[0, 1, 2, 4]].tolist()
+    point = read_wirex(FIXTURES / "planar_pulleys_2t.wcrfx")
+    assert (point.dimension, point.platform.kind, point.swivel_cables) == (2, "point-mass", (0, 1, 2))
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(-0.5, 0.5), st.floats(-0.5, 0.5), st.floats(-0.5, 0.5), st.sampled_from(PLANAR_PULLEYS))
+def test_planar_pulleys_are_wirex_pulley_kinematics(x, y, theta, name):
+    """The planar patterns with in-plane pulleys: lengths, swivel angles (0 or π) and tangent
+    points of WireX's pulley kinematics (the pattern does not change them: WireX's
+    ``doInverseKinematicsPulleyEx`` takes the pose ``(r, R)`` of any pattern, here ``r_z = 0``
+    and ``R = R_z(θ)``), and the rows ``f_x, f_y`` (and ``m_z`` for ``1R2T``) of WireX's
+    pulley-corrected structure matrix, the rows the planar patterns keep
+    (``getStructureMatrix``)."""
+    from taut.kinematics.swivel import swivel_angles
+
+    robot, root = read_wirex(FIXTURES / name), raw(name)
+    rigid = robot.platform.kind == "rigid"
+    if rigid:
+        r, R, pose = np.array([x, y, 0.0]), rz(theta), [x, y, theta]
+    else:
+        r, R, pose = np.array([x + 1.0, y + 1.0, 0.0]), np.eye(3), [x + 1.0, y + 1.0]
+    wx = wirex_pulley_ex(root, r, R)
+    assume(wx["valid"].all() and (wx["off_axis"][list(robot.swivel_cables)] >= 1.0).all())
+    ik = inverse_kinematics(robot, pose)
+    assert np.allclose(ik.lengths, wx["l"], rtol=0, atol=1e-9)
+    # a point mass carries its anchor offsets in its exits: its tangent points move with them
+    offsets = 0.0 if rigid else raw_winches(root)[3][:, :2]
+    assert np.allclose(ik.exit_points, wx["C"][:, :2] - offsets, rtol=0, atol=1e-9)
+    assert np.allclose(wx["C"][:, 2], raw_winches(root)[0][:, 2], rtol=0, atol=1e-12), "the cables stay in the plane"
+    rows = [0, 1, 5] if rigid else [0, 1]
+    assert np.allclose(ik.structure_matrix, wx["W"][rows], rtol=0, atol=1e-9)
+    gamma = swivel_angles(robot, pose)
+    assert angle_gap(gamma, wx["gamma"][list(robot.swivel_cables)]).max() < 1e-12
+    assert set(np.round(np.abs(gamma), 12)) <= {0.0, round(math.pi, 12)}
+
+
+@pytest.mark.parametrize("name", PLANAR_PULLEYS)
+def test_planar_pulleys_round_trip(tmp_path, name):
+    robot = read_wirex(FIXTURES / name)
+    write_wirex(robot, tmp_path / name)
+    back = read_wirex(tmp_path / name)
+    assert [c.swivel for c in back.cables] == [c.swivel for c in robot.cables]
+    assert_same_robot(robot, back)
+
+
 positions = st.tuples(st.floats(-1.6, 1.6), st.floats(-1.1, 1.1), st.floats(0.2, 1.8))
 turns = st.tuples(*[st.floats(-0.6, 0.6)] * 3)
 
@@ -218,7 +349,12 @@ def test_ipanema_swivels_are_wirex_pulley_kinematics(position, abc):
 )
 def test_tilted_winch_frames_are_wirex_pulley_kinematics(tmp_path_factory, position, abc, tilts):
     """IPAnema with every winch frame turned (``R_z R_x R_z``): the swivel axis is the frame's
-    z axis, and the lengths stay WireX's (same domain as above)."""
+    z axis, and the lengths, tangent points and pulley-corrected structure matrix stay WireX's
+    (same domain as above).  The swivel angle is WireX's up to the constant angle between the
+    file frame's x axis and that of :func:`taut.model.wirex.winch_frame`, about the same axis."""
+    from taut.kinematics.swivel import swivel_angles
+    from taut.model.wirex import winch_frame
+
     root = raw("IPAnema.wcrfx")
     for chain, (t1, t2, t3) in zip(root.find("geometry").findall("chain"), tilts, strict=True):
         frame = rz(t1) @ rx(t2) @ rz(t3)
@@ -232,10 +368,18 @@ def test_tilted_winch_frames_are_wirex_pulley_kinematics(tmp_path_factory, posit
     a, b, c = abc
     expected, off_axis = wirex_pulley_lengths(root, np.array(position), rz(c) @ ry(b) @ rx(a))
     assume(np.all(off_axis >= 1.0))
+    wx = wirex_pulley_ex(root, np.array(position), rz(c) @ ry(b) @ rx(a))
+    assume(wx["valid"].all())
     robot = read_wirex(path)
-    assert np.array_equal([c.swivel.axis for c in robot.cables], raw_winches(root)[1][:, :, 2])
+    frames = raw_winches(root)[1]
+    assert np.array_equal([c.swivel.axis for c in robot.cables], frames[:, :, 2])
     ik = inverse_kinematics(robot, [*position, a, b, c])
     assert np.allclose(ik.lengths, expected, rtol=0, atol=1e-9)
+    assert np.allclose(ik.exit_points, wx["C"], rtol=0, atol=1e-9)
+    assert np.allclose(ik.structure_matrix, wx["W"], rtol=0, atol=1e-9)
+    own_x = np.array([winch_frame(f[:, 2])[:, 0] for f in frames])
+    offset = np.arctan2(np.einsum("ni,ni->n", frames[:, :, 1], own_x), np.einsum("ni,ni->n", frames[:, :, 0], own_x))
+    assert angle_gap(swivel_angles(robot, [*position, a, b, c]) + offset, wx["gamma"]).max() < 1e-9
 
 
 # ---- independent computation from the raw numbers -------------------------------------------
@@ -317,18 +461,48 @@ def test_incomplete_tensor_and_missing_loads_are_stated():
 
 @pytest.mark.parametrize(
     "name, words",
-    [("line_1t.wcrfx", "motion pattern 1T"), ("five_dof_2r3t.wcrfx", "motion pattern 2R3T")],
+    [
+        ("line_1t.wcrfx", "motion pattern 1T (a point moving on a line) has no taut platform"),
+        ("five_dof_2r3t.wcrfx", "motion pattern 2R3T (5 degrees of freedom"),
+        ("beam_2r3t.wcrfx", "motion pattern 2R3T (5 degrees of freedom"),
+    ],
 )
 def test_unrepresentable_motion_patterns(name, words):
-    with pytest.raises(UnsupportedRobotError, match=words):
+    with pytest.raises(UnsupportedRobotError) as err:
         read_wirex(FIXTURES / name, pulleys="points")
+    message = str(err.value)
+    assert words in message and "\n" not in message
+    assert ("across the line" in message) if "1T" in words else ("wrench-closure" in message)
+
+
+def test_a_2r3t_beam_read_as_3r3t_is_not_the_2r3t_robot():
+    """Why 2R3T is refused: the beam's file read as taut's 6-DOF platform has WireX's lengths,
+    unchanged by the rotation ``a`` about the beam (the body x axis: ``R = Rz(c) Ry(b) Rx(a)``),
+    but its structure matrix has rank 5, the moment about the beam zero in every column, so no
+    pose of it is wrench-closed in six dimensions, whatever the cables."""
+    import dataclasses
+
+    from taut.model.wirex import parse_wirex, wirex_robot
+
+    model = parse_wirex((FIXTURES / "beam_2r3t.wcrfx").read_bytes())
+    robot = wirex_robot(dataclasses.replace(model, motion_pattern="3R3T"), pulleys="points")
+    rng = np.random.default_rng(5)
+    for _ in range(50):
+        position, (a, b, c) = rng.uniform([-0.5, -0.4, 0.6], [0.5, 0.4, 1.4]), rng.uniform(-0.5, 0.5, 3)
+        lengths, W = wirex_standard_model("beam_2r3t.wcrfx", position, rz(c) @ ry(b) @ rx(a))
+        turned = inverse_kinematics(robot, [[*position, a, b, c], [*position, a + 1.0, b, c]])
+        assert np.allclose(turned.lengths, lengths, rtol=0, atol=1e-12)
+        assert np.allclose(turned.structure_matrix[0], W, rtol=0, atol=1e-12)
+        axis = rz(c) @ ry(b) @ rx(a) @ [1.0, 0.0, 0.0]
+        assert np.allclose(axis @ W[3:], 0.0, atol=1e-12)
+        assert np.linalg.matrix_rank(W) == 5
 
 
 def test_load_robot_reads_wcrfx():
     assert load_robot(FIXTURES / "spatial_3r3t.wcrfx") == read_wirex(FIXTURES / "spatial_3r3t.wcrfx")
     cogiro = load_robot(FIXTURES / "CoGiRo.wcrfx")
     assert cogiro == read_wirex(FIXTURES / "CoGiRo.wcrfx") and cogiro.swivel_cables == tuple(range(8))
-    with pytest.raises(UnsupportedRobotError, match="spatial robots only"):
+    with pytest.raises(UnsupportedRobotError, match="leaves the xy plane"):
         load_robot(FIXTURES / "no_radius_2t.wcrfx")
 
 

@@ -216,15 +216,17 @@ def _ik_kernel(
 
 
 def supports_batch(robot: Robot) -> bool:
-    """True when the kernel handles the robot (no jointed bodies)."""
-    return robot.n_joints == 0
+    """True when the kernel handles the robot (no jointed bodies, no swivelling pulleys on a
+    planar robot)."""
+    return robot.n_joints == 0 and not (robot.dimension == 2 and robot.swivel_cables)
 
 
 def batch_structure_matrices(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Cable lengths ``(N, n)``, structure matrices ``W (N, m, n)`` and a mask ``ok (N,)``
     of the poses where every cable has a length of at least ``MIN_LENGTH`` and, through a
     swivelling pulley, a tangent point (elsewhere ``W`` is zero).  Robots with jointed bodies
-    go through the NumPy implementation (:func:`taut.kinematics.inverse.ik_status`)."""
+    and planar robots with swivelling pulleys go through the NumPy implementation
+    (:func:`taut.kinematics.inverse.ik_status`)."""
     arr, _ = as_poses(robot, poses)
     N, n, m, d = arr.shape[0], robot.n_cables, robot.wrench_dim, robot.dimension
     if not supports_batch(robot):

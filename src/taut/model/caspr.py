@@ -42,7 +42,8 @@ point; its cable length (segment plus the attachment's ``length_offset``, the ar
 swivel back as a ``base_rotating_pulley``.
 
 Refused with :class:`UnsupportedRobotError`, never approximated: other pulley attachments
-(``screw_base_rotating_pulley``), swivelling pulleys of planar robots, cables routed through
+(``screw_base_rotating_pulley``), swivelling pulleys of planar robots whose entry vector
+leaves the plane (in the plane, the pulley is taut's planar swivel), cables routed through
 more than two attachments, chains of links, actuated joints, other joint and cable types,
 planar cables that leave the plane.
 
@@ -434,11 +435,15 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
         if not rigid:
             shifted = shifted or bool(np.any(anchor != 0))
             exit_, anchor = exit_ - anchor, np.zeros(3)
-        if plane is not None and c.swivel is not None:
-            raise UnsupportedRobotError(
-                f"{source}: cable {i} ({c.name!r}) leaves through a base_rotating_pulley; taut models swivelling "
-                "pulleys on spatial robots only"
-            )
+        swivel_axis = None if c.swivel is None else c.swivel[0]
+        if plane is not None and swivel_axis is not None:
+            if swivel_axis[plane.normal] != 0:
+                raise UnsupportedRobotError(
+                    f"{source}: cable {i} ({c.name!r}) leaves through a base_rotating_pulley whose cable_entry_vector "
+                    f"{swivel_axis.tolist()} leaves the {plane_name} plane; taut's planar swivelling pulleys turn "
+                    "about an axis in the plane, which keeps the cable in it"
+                )
+            swivel_axis = swivel_axis[list(plane.axes)]
         if plane is not None:
             off = exit_[plane.normal] - anchor[plane.normal]
             if abs(off) > 1e-9 * max(scale, float(np.abs(c.base).max())):
@@ -451,8 +456,8 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
             cable["anchor"] = anchor.tolist()
         if c.stiffness is not None:
             cable["stiffness"] = c.stiffness
-        if c.swivel is not None:
-            cable["swivel"] = {"axis": c.swivel[0].tolist(), "radius": c.swivel[1]}
+        if c.swivel is not None and swivel_axis is not None:
+            cable["swivel"] = {"axis": swivel_axis.tolist(), "radius": c.swivel[1]}
         out.append(cable)
     platform: dict[str, object] = {"kind": "rigid" if rigid else "point-mass"}
     if link.mass > 0:
@@ -626,7 +631,7 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
             pulley = ET.SubElement(atts, "base_rotating_pulley")
             ET.SubElement(pulley, "fixed_location").text = _fmt(exits[i - 1])
             ET.SubElement(pulley, "pulley_radius").text = repr(float(c.swivel.radius))
-            ET.SubElement(pulley, "cable_entry_vector").text = _fmt(list(c.swivel.axis))
+            ET.SubElement(pulley, "cable_entry_vector").text = _fmt(lift(np.array(c.swivel.axis)))
         for link_num, point in (("0", exits[i - 1]), (body_link, lift(robot.anchors[i - 1]))):
             if link_num == "0" and c.swivel is not None:
                 continue

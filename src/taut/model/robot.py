@@ -110,15 +110,17 @@ class Pulley(_Strict):
 
 
 class SwivelPulley(_Strict):
-    """A swivelling exit pulley of a spatial robot (CASPR's ``base_rotating_pulley``, the
-    pulley of WireX's and Pott's kinematic model).
+    """A swivelling exit pulley (CASPR's ``base_rotating_pulley``, the pulley of WireX's and
+    Pott's kinematic model).
 
     The cable comes from its winch along the swivel axis and runs onto the pulley at the
     cable's ``exit`` point, which lies on that axis.  The pulley turns about the axis so that
     its plane contains the platform anchor; its centre lies ``radius`` away from the axis, on
     the anchor's side, the cable wraps around it and leaves it tangentially towards the
     anchor.  The wrap angle and the tangent point follow from the anchor's position
-    (``taut.kinematics.swivel``).
+    (``taut.kinematics.swivel``).  On a planar robot the axis lies in the robot's plane (two
+    numbers), and so does the pulley: the cable comes along the axis, wraps the pulley on the
+    anchor's side of the axis line and leaves towards the anchor.
 
     References
     ----------
@@ -126,18 +128,21 @@ class SwivelPulley(_Strict):
        Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
     """
 
-    axis: tuple[Finite, Finite, Finite] = Field(
-        description="direction of the swivel axis in the fixed frame: the way the cable runs, coming from "
+    axis: tuple[Finite, ...] = Field(
+        min_length=2,
+        max_length=3,
+        description="direction of the swivel axis in the fixed frame (x, y, z; x, y in a planar robot's plane): "
+        "the way the cable runs, coming from "
         "its winch, onto the pulley at the cable's exit point (CASPR's cable_entry_vector, the z axis of "
         "WireX's winch frame); any non-zero length, it is normalised. Its sign fixes the side the cable "
         "leaves on: the pulley swivels to face the anchor (its centre on the anchor's side of the axis) "
-        "and the cable, running along this direction, wraps around it until it heads for the anchor"
+        "and the cable, running along this direction, wraps around it until it heads for the anchor",
     )
     radius: Finite = Field(gt=0, le=1e9, description="pulley radius [m] (to the cable's centre line in the groove)")
 
     @field_validator("axis")
     @classmethod
-    def _axis(cls, v: tuple[float, float, float]) -> tuple[float, float, float]:
+    def _axis(cls, v: tuple[float, ...]) -> tuple[float, ...]:
         if not math.hypot(*v) > 0:
             raise ValueError(f"swivel axis must be a non-zero vector, got {list(v)}")
         return v
@@ -159,7 +164,7 @@ class Cable(_Strict):
     pulley: Pulley | None = None
     swivel: SwivelPulley | None = Field(
         default=None,
-        description="swivelling exit pulley of a spatial robot: the cable runs onto it at `exit` and leaves "
+        description="swivelling exit pulley: the cable runs onto it at `exit` and leaves "
         "it tangentially towards the anchor (not to be confused with `pulley`, the exit pulley of a planar "
         "winch that collidable cables wrap around)",
     )
@@ -337,12 +342,19 @@ class Robot(_Strict):
                 raise ValueError(
                     f"cables[{i}].anchor: a point-mass platform has all anchors at its origin, got {c.anchor}"
                 )
-            if c.swivel is not None and d != 3:
+            if c.swivel is not None and len(c.swivel.axis) != d:
+                axis = list(c.swivel.axis)
+                if d == 3:
+                    raise ValueError(f"cables[{i}].swivel.axis: expected 3 numbers, got {axis}")
+                out = " points out of the robot's plane" if axis[2] != 0 else " gives a third (z) number"
                 raise ValueError(
-                    f"cables[{i}].swivel: swivelling pulleys are modelled on spatial robots (dimension 3) only"
+                    f"cables[{i}].swivel.axis {axis}{out}: a planar robot's swivelling pulley turns about an "
+                    "axis in its plane (give x, y), so that the pulley and the cable stay in the plane"
                 )
             if c.swivel is not None and c.pulley is not None:
-                raise ValueError(f"cables[{i}]: give either swivel (spatial) or pulley (planar winch), not both")
+                raise ValueError(
+                    f"cables[{i}]: give either swivel (swivelling pulley) or pulley (planar winch), not both"
+                )
             if c.body is not None and c.body not in bodies:
                 raise ValueError(f"cables[{i}].body: unknown body {c.body!r}; expected one of {sorted(bodies)}")
         keys: dict[tuple[tuple[float, ...], tuple[float, ...], str], int] = {}

@@ -20,7 +20,16 @@ max_cable_load>``.  The mapping follows WireX's own reader and kinematics (``Wir
   exit point (``a_i − b_i``, exact for a platform that only translates).  Planar patterns need
   every cable in a plane of motion (``<base>`` z = ``<platform>`` z), or the planar lengths
   would not be WireX's.  ``1T`` (a point on a line) and ``2R3T`` (five degrees of freedom)
-  have no taut platform and raise :class:`~taut.errors.UnsupportedRobotError`.
+  have no taut platform and raise :class:`~taut.errors.UnsupportedRobotError`: WireX itself
+  gives them kinematics only (``CStructureMatrix::getStructureMatrix`` supports ``3R3T``,
+  ``3T``, ``2T`` and ``1R2T``; a ``2R3T`` or ``1T`` robot has 5 or 1 rows, ``CRobotData::
+  setMotionPattern``).  A taut point mass in a plane or in space has the lengths of ``1T``
+  on its line, but its statics would balance forces across the line too, which the guide of a
+  ``1T`` robot takes.  taut's 6-DOF rigid platform has the lengths of ``2R3T`` (for a beam,
+  the anchors on the axis the pattern leaves free, any rotation about that axis), but its
+  structure matrix keeps the sixth row, the moment about that axis (zero for a beam), so that
+  wrench-closure never holds and wrench-feasibility and forward kinematics ask for the
+  control of a rotation the robot does not have.  Neither is exact, so neither is done.
 * **Pulleys.** WireX's pulley kinematics (``CKinematics::doInverseKinematicsPulleyEx``) wind
   the cable over a pulley of radius ``r`` that swivels about the winch frame's z axis
   through ``<base>``: the anchor ``b`` in the winch frame ``A`` is ``Aᵀ(b − base)``, the
@@ -30,9 +39,15 @@ max_cable_load>``.  The mapping follows WireX's own reader and kinematics (``Wir
   (``cables[].swivel``, ``taut.kinematics.swivel``) with ``exit`` = ``<base>``, ``axis`` = the
   frame's z axis (third column of ``a11 … a33``) and ``radius`` = ``r``; a ``<base>`` without
   ``radius`` means WireX's default, 0.1 m.  WireX's two-``arccos`` wrap angle equals taut's
-  for anchors at least ``r`` from the axis (closer ones WireX's formula gets wrong).  taut's
-  planar robots have no swivelling pulleys: a planar pattern with pulleys of radius > 0
-  raises :class:`~taut.errors.UnsupportedRobotError`.  ``pulleys="points"`` asks for WireX's
+  for anchors at least ``r`` from the axis (closer ones WireX's formula gets wrong).  On a
+  planar pattern (``2T``, ``1R2T``) the pulley model stays in the plane of motion exactly
+  when the swivel axis lies in it (``a33 = 0``): the axis is then taut's planar swivel axis
+  ``(a13, a23)``.  A planar pulley whose axis leaves the plane (WireX's default identity
+  frame has it normal to the plane) lifts the cable out of the plane and raises
+  :class:`~taut.errors.UnsupportedRobotError` naming the chain.  WireX itself computes the
+  structure matrix of a planar pattern without its pulleys (``getStructureMatrix`` uses
+  pulleys for ``3R3T`` only); taut's uses the tangent point, the derivative of the lengths
+  WireX's pulley kinematics gives.  ``pulleys="points"`` asks for WireX's
   standard model instead, each pulley taken as its fixed point, which the robot's
   ``description`` then states.  Radius 0 is that model exactly.
 * **Mass properties.** ``mass`` → ``platform.mass``; ``<centerofgravity>`` (body frame) →
@@ -69,6 +84,7 @@ from typing import Literal
 from xml.parsers import expat
 
 import numpy as np
+import numpy.typing as npt
 from pydantic import ValidationError
 
 from taut.errors import RobotFileError, UnsupportedRobotError
@@ -332,34 +348,41 @@ def wirex_robot(model: WirexModel, source: str = "<wcrfx>", *, pulleys: PulleyMo
     ------
     UnsupportedRobotError
         A motion pattern taut has no platform for (``1T``, ``2R3T``), a planar pattern with a
-        cable out of its plane, or pulleys of radius > 0 on a planar pattern without
-        ``pulleys="points"`` (taut's swivelling pulleys are spatial).
+        cable out of its plane, or a pulley of radius > 0 on a planar pattern whose swivel axis
+        leaves the plane, without ``pulleys="points"``.
     RobotFileError
         Data that do not make a valid taut robot (e.g. two identical cables).
     """
     pattern = model.motion_pattern
     if pattern == "1T":
         raise UnsupportedRobotError(
-            f"{source}: motion pattern 1T (a point moving on a line) has no taut platform; "
-            "taut's point masses move in a plane or in space"
+            f"{source}: motion pattern 1T (a point moving on a line) has no taut platform: taut's point masses "
+            "move in a plane or in space, where the cables would also have to balance every force across the "
+            "line, which 1T's guide takes; the lengths would agree, the structure matrix (1 row in 1T) and "
+            "every wrench and workspace analysis would not"
         )
     if pattern == "2R3T":
         raise UnsupportedRobotError(
-            f"{source}: motion pattern 2R3T (5 degrees of freedom, rotation about one axis left free) "
-            "has no taut platform; taut's platforms have 2, 3 or 6"
+            f"{source}: motion pattern 2R3T (5 degrees of freedom: the rotation about the platform's own axis is "
+            "not controlled) has no taut platform: taut's spatial rigid platform has 6, and read so its "
+            "structure matrix would keep a sixth row (the moment about that axis, zero for a beam) that "
+            "wrench-closure, wrench-feasibility and forward kinematics would ask the cables to control"
         )
     notes: list[str] = []
     planar = pattern in ("2T", "1R2T")
     pulleyed = [c for c in model.chains if c.pulley_radius > 0]
     swivels = pulleys == "swivel" and bool(pulleyed)
     if swivels and planar:
-        c = pulleyed[0]
-        raise UnsupportedRobotError(
-            f'{source}: <chain id="{c.number}"> <base>: swivelling pulleys of radius {c.pulley_radius:g} m '
-            f"({len(pulleyed)} of {len(model.chains)} cables) on a planar robot ({pattern}): taut models "
-            "swivelling pulleys on spatial robots only; in Python, read_wirex(path, pulleys='points') takes "
-            "each pulley as its fixed point, WireX's standard model"
-        )
+        for c in pulleyed:
+            axis = c.base_frame[:, 2]
+            if axis[2] != 0:
+                raise UnsupportedRobotError(
+                    f'{source}: <chain id="{c.number}"> <base>: the swivelling pulley (radius {c.pulley_radius:g} m) '
+                    f"turns about the winch frame's z axis ({', '.join(f'{x:g}' for x in axis)}), which leaves the "
+                    f"xy plane of motion of {pattern}: the cable would leave the plane over the pulley; taut's "
+                    "planar swivels turn about in-plane axes (a13, a23 in the plane, a33 = 0); in Python, "
+                    "read_wirex(path, pulleys='points') takes each pulley as its fixed point, WireX's standard model"
+                )
     if pulleyed and not swivels:
         radii = sorted({c.pulley_radius for c in pulleyed})
         notes.append(
@@ -389,7 +412,7 @@ def wirex_robot(model: WirexModel, source: str = "<wcrfx>", *, pulleys: PulleyMo
         if not point_mass:
             cable["anchor"] = anchor.tolist()
         if swivels and c.pulley_radius > 0:
-            cable["swivel"] = {"axis": c.base_frame[:, 2].tolist(), "radius": c.pulley_radius}
+            cable["swivel"] = {"axis": c.base_frame[:d, 2].tolist(), "radius": c.pulley_radius}
         cables.append(cable)
     if point_mass and any(any(c.platform[:d]) for c in model.chains):
         notes.append("a translating platform: each anchor offset is folded into its exit point (a_i - b_i)")
@@ -438,7 +461,8 @@ def read_wirex(path: str | Path, *, pulleys: PulleyModel = "swivel") -> Robot:
     pulleys
         ``"swivel"`` (default): a pulley of radius > 0 is a swivelling pulley
         (``cables[].swivel``) whose lengths are WireX's pulley kinematics; on a planar motion
-        pattern it raises :class:`~taut.errors.UnsupportedRobotError`.  ``"points"``: each
+        pattern its axis must lie in the plane, or it raises
+        :class:`~taut.errors.UnsupportedRobotError`.  ``"points"``: each
         pulley is taken as its fixed point (WireX's standard model), and the robot's
         ``description`` states the approximation.
 
@@ -448,7 +472,8 @@ def read_wirex(path: str | Path, *, pulleys: PulleyModel = "swivel") -> Robot:
         An unreadable or malformed file (one line naming the file and the element).
     UnsupportedRobotError
         A construct taut does not model (motion patterns 1T and 2R3T, out-of-plane cables of a
-        planar pattern, pulleys of a planar pattern without ``pulleys="points"``).
+        planar pattern, pulleys of a planar pattern turning about an axis out of its plane
+        without ``pulleys="points"``).
 
     References
     ----------
@@ -511,7 +536,7 @@ def _set_point(element: ET.Element, point: np.ndarray | tuple[float, ...]) -> No
         element.set(key, _fmt(value))
 
 
-def winch_frame(axis: tuple[float, float, float]) -> np.ndarray:
+def winch_frame(axis: npt.ArrayLike) -> np.ndarray:
     """A rotation whose z axis (third column) is the unit ``axis``: a winch frame for a
     swivelling pulley (WireX's pulley lengths depend only on that column); the identity for
     ``(0, 0, 1)``."""
@@ -546,7 +571,7 @@ def wirex_text(robot: Robot) -> str:
             base.attrib.update(identity)
             base.set("radius", "0.0")
         else:
-            frame = winch_frame(swivel.axis)
+            frame = winch_frame([*swivel.axis, 0.0][:3])
             base.attrib.update({k: _fmt(v) for k, v in zip(FRAME_KEYS, frame.ravel(), strict=True)})
             base.set("radius", _fmt(swivel.radius))
         anchor = ET.SubElement(chain, "platform")
