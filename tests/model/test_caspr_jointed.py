@@ -116,7 +116,7 @@ def raw_cables(bodies: Path, cable_set: str | None) -> list[dict]:
     return out
 
 
-DOFS = {"SPATIAL_EULER_XYZ": 6, "T_XYZ": 3, "S_EULER_XYZ": 3, "S_FIXED_XYZ": 3}
+DOFS = {"SPATIAL_EULER_XYZ": 6, "T_XYZ": 3, "S_EULER_XYZ": 3, "S_FIXED_XYZ": 3, "PLANAR_XY": 3, "PLANAR_XZ": 3}
 
 
 def frames(links: list[dict], q: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
@@ -138,6 +138,10 @@ def frames(links: list[dict], q: np.ndarray) -> list[tuple[np.ndarray, np.ndarra
             R_pe = rx(qk[0]) @ ry(qk[1]) @ rz(qk[2])
         elif t == "S_FIXED_XYZ":
             R_pe = rz(qk[2]) @ ry(qk[1]) @ rx(qk[0])
+        elif t == "PLANAR_XY":
+            r_rel, R_pe = np.array([qk[0], qk[1], 0.0]), rz(qk[2])
+        elif t == "PLANAR_XZ":
+            r_rel, R_pe = np.array([qk[0], 0.0, qk[1]]), ry(qk[2])
         elif t in ("R_X", "R_Y", "R_Z"):
             R_pe = {"R_X": rx, "R_Y": ry, "R_Z": rz}[t](qk[0])
         elif t == "R_AXIS":
@@ -358,7 +362,7 @@ REFUSED = [
         lambda s: s.replace('"SPATIAL_EULER_XYZ"', '"PLANAR_XZ"'),
         same,
         UnsupportedRobotError,
-        "links 2, 3, 4, 5 are jointed to a PLANAR_XZ platform",
+        r"link 3 \('wrist'\): its R_AXIS joint turns about \[0.0, 1.0, 1.0\]; taut's planar joints turn about the plane's normal",
     ),
     (ARM, lambda s: s.replace('"SPATIAL_EULER_XYZ"', '"T_XYZ"'), same, UnsupportedRobotError, "jointed to a T_XYZ"),
     (
@@ -447,6 +451,109 @@ def test_body_mass_properties_are_validated() -> None:
     np.testing.assert_array_equal(moon.weight, 0.0)
 
 
+# ---- planar jointed platforms ------------------------------------------------------------
+
+XZ = FIXTURES / "jointed_planar_xz_bodies.xml"
+XY = FIXTURES / "jointed_planar_xy_bodies.xml"
+#: plane axes, sign of each taut pose coordinate against CASPR's q (XZ: θ and the R_Y joint
+#: turn against taut's planar angles; R_AXIS about −y turns with them), platform centre
+PLANAR = {
+    "xz": (XZ, (0, 2), np.array([1, 1, -1, -1, 1, 1]), np.array([0.0, 1.0])),
+    "xy": (XY, (0, 1), np.ones(5), np.zeros(2)),
+}
+
+
+@pytest.mark.parametrize("name", list(PLANAR))
+@settings(max_examples=25, deadline=None)
+@given(data=st.data())
+def test_planar_jointed_platforms(name: str, data: st.DataObject) -> None:
+    bodies, (i, j), signs, centre = PLANAR[name]
+    robot = load_robot(bodies)
+    pose = np.concatenate(
+        [
+            centre + np.array(data.draw(st.lists(st.floats(-0.3, 0.3), min_size=2, max_size=2))),
+            [data.draw(st.floats(-0.3, 0.3))],
+            [data.draw(st.floats(lo, hi)) for lo, hi in robot.joint_limits.clip(-1, 1)],
+        ]
+    )
+    q = signs * pose  # CASPR's coordinates
+    links, cables = raw_links(bodies), raw_cables(bodies, None)
+    F = frames(links, q)
+    p = F[0][0]
+    b = anchors(bodies, None, q)
+    base = np.array([c["base"] for c in cables])
+    lengths = np.linalg.norm(base - b, axis=1)
+    u = (base - b) / lengths[:, None]
+    normal = np.cross(np.eye(3)[i], np.eye(3)[j])
+    np.testing.assert_allclose(inverse_kinematics(robot, pose).lengths, lengths, rtol=1e-12, atol=1e-12)
+    A = jointed_structure_matrix(robot, pose)
+    n = robot.n_cables
+    np.testing.assert_allclose(A[:2, :n], u[:, [i, j]].T, atol=1e-12)
+    np.testing.assert_allclose(A[2, :n], np.cross(b - p, u) @ normal, atol=1e-12)
+    for k in range(robot.n_joints):
+        db = derivative(lambda x: anchors(bodies, None, x), q, 3 + k)
+        np.testing.assert_allclose(A[3 + k, :n], signs[3 + k] * np.einsum("id,id->i", u, db), atol=1e-7)
+    # weights: CASPR's gravity along -z, projected on the plane (nothing in the XY plane)
+    force, moment = np.zeros(3), np.zeros(3)
+    for link, (pk, Rk) in zip(links, F):
+        weight = np.array([0.0, 0.0, -G * link["mass"]])
+        force += weight
+        moment += np.cross(pk + Rk @ link["com"] - p, weight)
+    np.testing.assert_allclose(external_wrench(robot, pose), [force[i], force[j], moment @ normal], atol=1e-12)
+    tau = np.linspace(5.0, 50.0, n)
+    expected = [
+        signs[3 + k]
+        * (
+            -tau @ np.einsum("id,id->i", u, derivative(lambda x: anchors(bodies, None, x), q, 3 + k))
+            + derivative(lambda x: potential(bodies, x), q, 3 + k)
+        )
+        for k in range(robot.n_joints)
+    ]
+    np.testing.assert_allclose(joint_forces(robot, pose, tau), expected, rtol=1e-6, atol=1e-6)
+
+
+def test_planar_mapping() -> None:
+    xz = load_robot(XZ)
+    assert [b.joint.limits for b in xz.platform.bodies] == [(-1.2, 1.0), (-math.pi, math.pi), (-0.2, 0.2)]
+    assert "joint coordinates negated (-q of CASPR): arm" in (xz.description or "")
+    assert xz.platform.gravity is None and xz.gravity.tolist() == [0.0, -9.81]
+    assert xz.platform.bodies[0].inertia == pytest.approx((0.02 - 1.0 * 0.1**2,), rel=1e-14)  # Iyy, about the COM
+    xy = load_robot(XY)
+    assert xy.platform.gravity == (0.0, 0.0)  # CASPR's gravity is normal to the XY plane
+    np.testing.assert_array_equal(xy.body_weights, 0.0)
+
+
+def test_written_planar_pair_means_the_same_in_caspr(tmp_path: Path) -> None:
+    """The written XZ model, read by the independent model: the platform angle is −θ (the
+    plane's mapping), the revolute joints are written as R_AXIS about −y, so their CASPR
+    coordinates are taut's."""
+    robot = load_robot(XZ)
+    out = tmp_path / "xz_bodies.xml"
+    write_caspr(robot, out)
+    assert out.read_text().count('type="R_AXIS"') == 2
+    base = np.array([c["base"] for c in raw_cables(out, None)])
+    for pose in random_poses(robot, np.array([0.0, 1.0]), 10):
+        q = np.array([1, 1, -1, 1, 1, 1]) * pose
+        np.testing.assert_allclose(
+            inverse_kinematics(robot, pose).lengths, np.linalg.norm(base - anchors(out, None, q), axis=1), rtol=1e-12
+        )
+
+
+PLANAR_REFUSED = [
+    (XZ, lambda s: s.replace('type="R_Y"', 'type="R_X"'), same, r"R_X joint turns about \[1.0, 0.0, 0.0\]"),
+    (XZ, lambda s: s.replace('axis="1 0 1"', 'axis="1 0.5 1"'), same, "P_AXIS joint moves out of the plane"),
+    # the arm's frame is 0.01 off the platform's along y: its cable's exit must be too
+    (XZ, same, lambda s: s.replace("2 0.03 -1", "2 0.02 -1"), "cable 3 .* leaves the XZ plane"),
+    (XY, lambda s: s.replace('type="R_Z"', 'type="R_Y"'), same, "R_Y joint turns about"),
+]
+
+
+@pytest.mark.parametrize(("bodies", "edit_bodies", "edit_cables", "message"), PLANAR_REFUSED)
+def test_planar_refusals(tmp_path: Path, bodies: Path, edit_bodies, edit_cables, message: str) -> None:  # noqa: ANN001
+    with pytest.raises(UnsupportedRobotError, match=message):
+        load_robot(edited(tmp_path, bodies, edit_bodies, edit_cables))
+
+
 # ---- writing ------------------------------------------------------------------------------
 
 
@@ -454,7 +561,7 @@ def assert_same_robot(back: Robot, robot: Robot, poses: np.ndarray) -> None:
     assert [(b.name, b.parent) for b in back.platform.bodies] == [(b.name, b.parent) for b in robot.platform.bodies]
     for a, b in zip(back.platform.bodies, robot.platform.bodies):
         assert (a.joint.kind, a.joint.axis, a.joint.limits) == (b.joint.kind, b.joint.axis, b.joint.limits)
-        assert a.joint.origin == (b.joint.origin or (0.0, 0.0, 0.0))
+        assert a.joint.origin == (b.joint.origin or (0.0,) * robot.dimension)
         assert (a.mass, a.com, a.inertia) == (b.mass, b.com, b.inertia)
     assert [c.body for c in back.cables] == [c.body for c in robot.cables]
     np.testing.assert_array_equal(back.exits, robot.exits)
@@ -473,10 +580,11 @@ def assert_same_robot(back: Robot, robot: Robot, poses: np.ndarray) -> None:
 def random_poses(robot: Robot, centre: np.ndarray, n: int = 50) -> np.ndarray:
     rng = np.random.default_rng(3)
     lo, hi = np.maximum(robot.joint_limits[:, 0], -1.0), np.minimum(robot.joint_limits[:, 1], 1.0)
+    d = robot.dimension
     return np.concatenate(
         [
-            centre + rng.uniform(-0.3, 0.3, (n, 3)),
-            rng.uniform(-0.3, 0.3, (n, 3)),
+            centre + rng.uniform(-0.3, 0.3, (n, d)),
+            rng.uniform(-0.3, 0.3, (n, robot.wrench_dim - d)),
             lo + rng.uniform(0, 1, (n, robot.n_joints)) * (hi - lo),
         ],
         axis=1,
@@ -485,7 +593,14 @@ def random_poses(robot: Robot, centre: np.ndarray, n: int = 50) -> np.ndarray:
 
 @pytest.mark.parametrize(
     ("bodies", "cable_set", "centre"),
-    [(ARM, None, (0, 0, 1)), (CHAIN, None, (0, 0, 1)), (SPIDER, None, (1.1, 1.1, 1.0)), (SPIDER, "set_1", (0, 0, 0))],
+    [
+        (ARM, None, (0, 0, 1)),
+        (CHAIN, None, (0, 0, 1)),
+        (SPIDER, None, (1.1, 1.1, 1.0)),
+        (SPIDER, "set_1", (0, 0, 0)),
+        (XZ, None, (0, 1)),
+        (XY, None, (0, 0)),
+    ],
 )
 def test_round_trip_of_jointed_fixtures(tmp_path: Path, bodies: Path, cable_set: str | None, centre: tuple) -> None:
     robot = load_robot(bodies, cable_set=cable_set)

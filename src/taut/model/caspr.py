@@ -12,7 +12,7 @@ mass, centre of mass and inertia) in ``X_bodies.xml`` and by named cable sets in
   ``S_FIXED_XYZ`` (``R = Rz(γ) Ry(β) Rx(α)``: taut's ``xyz-fixed``) link, all cables on the
   second: one rigid body with pose ``x y z α β γ``.
 
-A spatial rigid platform (``SPATIAL_EULER_XYZ``, or the ``T_XYZ`` + ``S_*`` pair) may carry
+A rigid platform (``SPATIAL_EULER_XYZ``, the ``T_XYZ`` + ``S_*`` pair, ``PLANAR_*``) may carry
 further links: a jointed platform (``platform.bodies``, like the adjustable platform of
 Lieskovský 2020). Each further link hangs from the platform link or a later link by an
 actuated (``actuated="true"``) one-degree-of-freedom joint: ``R_X``, ``R_Y``, ``R_Z``, ``R_AXIS``
@@ -22,10 +22,13 @@ actuated (``actuated="true"``) one-degree-of-freedom joint: ``R_X``, ``R_Y``, ``
 pose coordinate taut accepts, so the same poses) and its ``mass``, ``com_location`` and
 inertia as the body's ``mass``, ``com`` and ``inertia``. taut's pose is CASPR's ``q``: the
 platform's coordinates, then the joint coordinates in link order. Cables attached to a
-further link get its name as ``body`` (``link k`` for an unnamed or repeated name). Passive
+further link get its name as ``body`` (``link k`` for an unnamed or repeated name). On a
+planar platform a revolute joint must turn about the plane's normal and a prismatic one move
+in the plane; the plane maps as below, and a joint turning against taut's planar angles
+(``R_Y`` in the XZ plane) gets the coordinate ``−q`` (stated in the description). Passive
 joints (taut's statics gives every joint an actuator force), other joints (universal,
 spherical, planar), links jointed to the ground or to the ``T_XYZ`` carrier, and further
-links on planar or point-mass platforms are refused.
+links on point-mass platforms are refused.
 
 Planes map onto taut's ``(x, y)`` so that CASPR's gravity (9.81 m/s² along −z) stays along
 taut's −y: ``PLANAR_XZ`` takes ``(x, y) = (X, Z)`` and ``θ = −θ_CASPR`` (CASPR rotates about
@@ -78,6 +81,7 @@ from __future__ import annotations
 import math
 import re
 import xml.etree.ElementTree as ET
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -490,9 +494,39 @@ def _joint_limits(link: _Link, kind: str, where: str) -> tuple[tuple[float, floa
     return clipped, clipped != (lo, hi)
 
 
-def _jointed_bodies(links: list[_Link], platform: _Link, spatial_rigid: bool, source: str) -> tuple[list[dict], bool]:
-    """``platform.bodies`` of taut for the links after the platform link, and whether a joint
-    was unbounded (see :data:`_UNBOUNDED`).
+@dataclass(frozen=True)
+class _Jointed:
+    """The further links of a CASPR model as taut's ``platform.bodies``."""
+
+    bodies: list[dict]
+    #: link number → its frame's offset along a planar model's normal (0 for the platform)
+    normal_offsets: dict[int, float]
+    unbounded: bool  #: a joint's infinite bound became ±``_UNBOUNDED``
+    negated: list[str]  #: joints whose taut coordinate is −q (CASPR's turns the other way)
+    massive: bool  #: a further link has a mass
+
+
+def _planar_joint(
+    kind: str, axis: tuple[float, float, float], plane: _Plane, where: str, joint: str
+) -> tuple[list[float], float]:
+    """taut's planar joint axis and the sign of its coordinate (−1: taut's ``q`` is −q_CASPR)."""
+    i, j = plane.axes
+    n = plane.normal
+    if kind == "prismatic":
+        if axis[n] != 0:
+            raise UnsupportedRobotError(f"{where}: its {joint} joint moves out of the plane (axis {list(axis)})")
+        return [axis[i], axis[j]], 1.0
+    if axis[i] != 0 or axis[j] != 0:
+        raise UnsupportedRobotError(
+            f"{where}: its {joint} joint turns about {list(axis)}; taut's planar joints turn about the plane's normal"
+        )
+    # taut's planar angles turn e_i towards e_j, i.e. about e_i × e_j
+    normal = float(np.cross(np.eye(3)[i], np.eye(3)[j])[n])
+    return [1.0], math.copysign(1.0, axis[n]) * normal
+
+
+def _jointed_bodies(links: list[_Link], platform: _Link, rigid: bool, plane: _Plane | None, source: str) -> _Jointed:
+    """``platform.bodies`` of taut for the links after the platform link.
 
     Each such link must hang from the platform link or a later link by an actuated
     one-degree-of-freedom joint of :data:`_ONE_DOF`: CASPR's ``R_X``/``R_Y``/``R_Z``/``R_AXIS``
@@ -500,7 +534,9 @@ def _jointed_bodies(links: list[_Link], platform: _Link, spatial_rigid: bool, so
     translate it by ``q·axis`` from there (``RevoluteAxis``, ``PrismaticAxis``; the link's
     frame is the parent's moved by ``location + r_rel(q)`` and rotated by ``R_pe(q)``,
     ``SystemModelBodies.update``), which are taut's ``revolute`` and ``prismatic`` joints with
-    ``origin = location``.
+    ``origin = location``.  On a planar platform a revolute joint must turn about the plane's
+    normal and a prismatic one move in the plane; the plane maps as the platform's does, so a
+    joint turning the other way round than taut's planar angles gets the coordinate −q.
 
     References
     ----------
@@ -510,15 +546,16 @@ def _jointed_bodies(links: list[_Link], platform: _Link, spatial_rigid: bool, so
        (docs/references.bib: lau2016)
     """
     rest = links[platform.num :]
-    if rest and not spatial_rigid:
+    if rest and not rigid:
         raise UnsupportedRobotError(
-            f"{source}: links {', '.join(str(k.num) for k in rest)} are jointed to a {platform.joint} platform; taut "
-            "reads jointed links on a spatial rigid platform (SPATIAL_EULER_XYZ, or T_XYZ carrying "
-            f"{' or '.join(_SPHERICAL)}) only"
+            f"{source}: links {', '.join(str(k.num) for k in rest)} are jointed to a {platform.joint} platform; a "
+            "point mass carries no jointed bodies in taut"
         )
     names = {platform.num: "platform"}
-    bodies = []
-    unbounded = False
+    offsets = {platform.num: 0.0}
+    bodies: list[dict] = []
+    negated: list[str] = []
+    unbounded = massive = False
     for link in rest:
         where = f"{source}: link {link.num} ({link.name!r})"
         if link.joint not in _ONE_DOF:
@@ -537,39 +574,52 @@ def _jointed_bodies(links: list[_Link], platform: _Link, spatial_rigid: bool, so
                 f'{where}: its {link.joint} joint is passive (no actuated="true"); taut\'s joint coordinates are '
                 "set by joint actuators"
             )
-        kind, axis = _ONE_DOF[link.joint]
-        if axis is None:
+        kind, unit = _ONE_DOF[link.joint]
+        if unit is None:
             if link.axis is None:
                 raise RobotFileError(f"{where}: a {link.joint} joint needs an axis attribute")
-            axis = (float(link.axis[0]), float(link.axis[1]), float(link.axis[2]))
-        limits, clipped = _joint_limits(link, kind, where)
-        unbounded = unbounded or clipped
+            unit = (float(link.axis[0]), float(link.axis[1]), float(link.axis[2]))
+        (lo, hi), clipped = _joint_limits(link, kind, where)
+        unbounded, massive = unbounded or clipped, massive or link.mass > 0
         name = link.name.strip() or f"link {link.num}"
         while name in names.values():
             name = f"{name} (link {link.num})"
         names[link.num] = name
+        axis, origin, com, sign = list(unit), link.location, link.com, 1.0
+        if plane is not None:
+            axis, sign = _planar_joint(kind, unit, plane, where, link.joint)
+            offsets[link.num] = offsets[link.parent] + float(link.location[plane.normal])
+            origin, com = origin[list(plane.axes)], com[list(plane.axes)]
+            if sign < 0:
+                lo, hi = -hi, -lo
+                negated.append(name)
+        limits = [lo, hi]
         body: dict[str, object] = {
             "name": name,
             "parent": names[link.parent],
-            "joint": {"kind": kind, "axis": list(axis), "origin": link.location.tolist(), "limits": list(limits)},
+            "joint": {"kind": kind, "axis": axis, "origin": origin.tolist(), "limits": limits},
         }
         if link.mass > 0:
             body["mass"] = link.mass
-            if np.any(link.com != 0):
-                body["com"] = link.com.tolist()
+            if np.any(com != 0):
+                body["com"] = com.tolist()
             if np.any(link.inertia != 0):
                 t = link.inertia
-                body["inertia"] = [t[0, 0], t[1, 1], t[2, 2], t[0, 1], t[0, 2], t[1, 2]]
+                body["inertia"] = (
+                    [t[0, 0], t[1, 1], t[2, 2], t[0, 1], t[0, 2], t[1, 2]]
+                    if plane is None
+                    else [t[plane.normal, plane.normal]]
+                )
         bodies.append(body)
-    return bodies, unbounded
+    return _Jointed(bodies, offsets, unbounded, negated, massive)
 
 
 def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) -> Robot:
     source = str(path)
     link, origin, (dim, rigid, plane_name, orientation) = _platform_link(links, source)
-    bodies, unbounded = _jointed_bodies(links, link, dim == 3 and rigid, source)
-    body_of = {link.num + k: b["name"] for k, b in enumerate(bodies, 1)}
     plane = _PLANES[plane_name] if plane_name is not None else None
+    jointed = _jointed_bodies(links, link, rigid, plane, source)
+    body_of = {link.num + k: b["name"] for k, b in enumerate(jointed.bodies, 1)}
     scale = max(1.0, float(np.abs(origin).max()))
     out = []
     shifted = False
@@ -589,7 +639,7 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
                 "pulleys on spatial robots only"
             )
         if plane is not None:
-            off = exit_[plane.normal] - anchor[plane.normal]
+            off = exit_[plane.normal] - anchor[plane.normal] - jointed.normal_offsets.get(c.link, 0.0)
             if abs(off) > 1e-9 * max(scale, float(np.abs(c.base).max())):
                 raise UnsupportedRobotError(
                     f"{source}: cable {i} ({c.name!r}) leaves the {plane_name} plane by {off:g} m; taut's planar robots keep cables in the plane"
@@ -606,8 +656,10 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
             cable["swivel"] = {"axis": c.swivel[0].tolist(), "radius": c.swivel[1]}
         out.append(cable)
     platform: dict[str, object] = {"kind": "rigid" if rigid else "point-mass"}
-    if bodies:
-        platform["bodies"] = bodies
+    if jointed.bodies:
+        platform["bodies"] = jointed.bodies
+    if jointed.massive and plane is not None and not plane.in_plane_gravity:
+        platform["gravity"] = [0.0, 0.0]
     if link.mass > 0:
         platform["mass"] = link.mass
         if plane is not None and not plane.in_plane_gravity:
@@ -630,8 +682,10 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
         notes.append(f"exits relative to the joint origin {origin.tolist()}")
     if shifted:
         notes.append("point-mass exits shifted by their attachments")
-    if unbounded:
+    if jointed.unbounded:
         notes.append(f"unbounded joints limited to +-{_UNBOUNDED:g} (the largest pose coordinate taut takes)")
+    if jointed.negated:
+        notes.append(f"joint coordinates negated (-q of CASPR): {', '.join(jointed.negated)}")
     data = {
         "name": stem,
         "description": "; ".join(notes),
@@ -656,7 +710,8 @@ def _refuse(robot: Robot, why: str) -> UnsupportedRobotError:
 def _horizontal(robot: Robot) -> bool:
     """Whether a planar robot's plane is horizontal: a mass without gravity in the plane."""
     gravity = robot.platform.gravity
-    return robot.dimension == 2 and robot.platform.mass is not None and gravity is not None and not any(gravity)
+    massive = robot.platform.mass is not None or any(b.mass is not None for b in robot.platform.bodies)
+    return robot.dimension == 2 and massive and gravity is not None and not any(gravity)
 
 
 def _weight(robot: Robot) -> tuple[float, np.ndarray]:
@@ -699,36 +754,53 @@ def _joint_type(kind: str, axis: tuple[float, ...]) -> str:
     return "R_AXIS" if kind == "revolute" else "P_AXIS"
 
 
-def _write_bodies(robot: Robot, links: ET.Element, platform_num: int) -> dict[str, str]:
+def _write_bodies(
+    robot: Robot, links: ET.Element, platform_num: int, lift: Callable[[np.ndarray], np.ndarray], horizontal: bool
+) -> dict[str, str]:
     """Append ``platform.bodies`` to ``links`` as actuated one-DOF links after the platform's
-    link ``platform_num`` (the inverse of :func:`_jointed_bodies`); return the CASPR link
+    link ``platform_num`` (the inverse of :func:`_jointed_bodies`; ``lift`` takes a planar
+    robot's vectors into its CASPR plane, ``horizontal`` the XY plane); return the CASPR link
     number of each body name (``platform`` included).  Joint names and collision capsules
     have no place in a CASPR model and are not written."""
     link_of = {"platform": str(platform_num)}
+    d = robot.dimension
+    down = -CASPR_GRAVITY * np.eye(d)[-1]
     masses = [b for b in robot.platform.bodies if b.mass is not None]
-    if masses and not np.allclose(robot.gravity, [0.0, 0.0, -CASPR_GRAVITY], rtol=0, atol=1e-12):
+    if masses and not horizontal and not np.allclose(robot.gravity, down, rtol=0, atol=1e-12):
         raise _refuse(robot, f"gravity {robot.gravity.tolist()}: CASPR's is {CASPR_GRAVITY} m/s² along -z")
     for k, b in enumerate(robot.platform.bodies, platform_num + 1):
         link_of[b.name] = str(k)
         j = b.joint
-        kind = _joint_type(j.kind, j.axis)
+        if d == 3:
+            axis = np.array(j.axis, dtype=float)
+        elif j.kind == "revolute":  # taut's planar angles turn x towards y: about +z (XY), -y (XZ)
+            axis = np.array([0.0, 0.0, 1.0]) if horizontal else np.array([0.0, -1.0, 0.0])
+        else:
+            axis = lift(np.array(j.axis, dtype=float))
+        kind = _joint_type(j.kind, tuple(axis))
         lo, hi = j.limits
         attrs = {"type": kind, "actuated": "true", "q_initial": repr(float(min(max(0.0, lo), hi)))}
         attrs |= {"q_min": repr(float(lo)), "q_max": repr(float(hi))}
         if kind in _AXIS_JOINTS:
-            attrs["axis"] = _fmt(j.axis)
+            attrs["axis"] = _fmt(axis)
+        inertia = np.zeros(6)
+        if b.inertia is not None:
+            if d == 3:
+                inertia = np.array(b.inertia)
+            else:  # the moment about the plane's normal: Izz (XY plane) or Iyy (XZ plane)
+                inertia[2 if horizontal else 1] = b.inertia[0]
         link = ET.SubElement(links, "link_rigid", num=str(k), name=b.name)
         ET.SubElement(link, "joint", attrs)
         phys = ET.SubElement(link, "physical")
         ET.SubElement(phys, "mass").text = repr(float(b.mass or 0.0))
-        ET.SubElement(phys, "com_location").text = _fmt(b.com or (0.0, 0.0, 0.0))
+        ET.SubElement(phys, "com_location").text = _fmt(lift(np.array(b.com or (0.0,) * d, dtype=float)))
         ET.SubElement(phys, "end_location").text = _fmt(np.zeros(3))
         inert = ET.SubElement(phys, "inertia", ref="com")
-        for tag, value in zip(_INERTIA, b.inertia or (0.0,) * 6):
+        for tag, value in zip(_INERTIA, inertia):
             ET.SubElement(inert, tag).text = repr(float(value))
         parent = ET.SubElement(link, "parent")
         ET.SubElement(parent, "num").text = link_of[b.parent]
-        ET.SubElement(parent, "location").text = _fmt(j.origin or (0.0, 0.0, 0.0))
+        ET.SubElement(parent, "location").text = _fmt(lift(np.array(j.origin or (0.0,) * d, dtype=float)))
     return link_of
 
 
@@ -739,22 +811,21 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
     ``T_XYZ`` link carrying a ``S_FIXED_XYZ`` one (``xyz-fixed``); a planar one a
     ``PLANAR_XZ`` link (taut's ``y`` is CASPR's ``z``, where its gravity acts), or ``PLANAR_XY``
     when it has a mass and no gravity in its plane; point masses ``T_XYZ``, ``P_XZ`` or ``P_XY``. A constant external wrench that is a downward force becomes the
-    mass whose weight it is. The jointed bodies of a spatial platform become actuated links
-    after the platform's (``R_X``/``R_Y``/``R_Z``/``P_X`` along a positive coordinate axis,
-    else ``R_AXIS``/``P_AXIS``) with their masses. Reference data, trajectories, joint names
+    mass whose weight it is. Jointed bodies become actuated links after the platform's
+    (``R_X``/``R_Y``/``R_Z``/``P_X`` along a positive coordinate axis, else
+    ``R_AXIS``/``P_AXIS``; a planar revolute joint ``R_Z`` in the XY plane, ``R_AXIS`` about −y
+    in the XZ plane, so that CASPR's ``q`` is taut's) with their masses. Reference data, trajectories, joint names
     and the collision shapes of the platform and its bodies are not part of a CASPR model and
     are not written.
 
     Raises
     ------
     UnsupportedRobotError
-        For what the format cannot hold: jointed bodies of planar robots, obstacles, exit pulleys, length bounds,
+        For what the format cannot hold: obstacles, exit pulleys, length bounds,
         cable radii, other wrenches and gravities, the ``tilt-torsion`` convention.
     """
     bodies = Path(bodies_path)
     cables = cables_path(bodies)
-    if robot.platform.bodies and robot.dimension != 3:
-        raise _refuse(robot, "the jointed bodies of a planar robot")
     if robot.obstacles or robot.installation_space is not None or robot.disallowed:
         raise _refuse(robot, "obstacles or an installation space")
     for i, c in enumerate(robot.cables, 1):
@@ -814,7 +885,7 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
         parent = ET.SubElement(link, "parent")
         ET.SubElement(parent, "num").text = str(k - 1)
         ET.SubElement(parent, "location").text = _fmt(np.zeros(3))
-    link_of = _write_bodies(robot, links, len(joints))
+    link_of = _write_bodies(robot, links, len(joints), lift, horizontal)
     croot = ET.Element("cables", default_cable_set="taut")
     cset = ET.SubElement(croot, "cable_set", id="taut")
     for i, c in enumerate(robot.cables, 1):
