@@ -695,3 +695,22 @@ def test_cli_convert_jointed(tmp_path: Path, taut_cli) -> None:  # noqa: ANN001
     refused = taut_cli("convert", "adjustable-8cable", str(tmp_path / "adjustable_bodies.xml"))
     assert refused.code == 2 and refused.err.count("\n") == 1
     assert "the radius of cable 1" in refused.err
+
+
+def test_cli_tensions_hold_the_links_and_yaml_keeps_their_masses(tmp_path: Path, taut_cli) -> None:  # noqa: ANN001
+    """``taut tensions`` on the real SpiderBot balances the weight of all seven links; the
+    link masses survive a conversion to taut YAML."""
+    cable_set = "set_IPAnema_inspired"
+    q = np.array([0.05, -0.1, 0.3, 0.05, -0.05, 0.1, 0.3, -0.4, 0.8, 0.2, -1.5708, 0.1])
+    run = taut_cli(
+        "tensions", str(SPIDER), "--cable-set", cable_set, "--pose=" + ",".join(repr(float(x)) for x in q), "--json"
+    )
+    data = run.json()
+    assert data["feasible"]
+    b = anchors(SPIDER, cable_set, q)
+    base = np.array([c["base"] for c in raw_cables(SPIDER, cable_set)])
+    u = (base - b) / np.linalg.norm(base - b, axis=1)[:, None]
+    np.testing.assert_allclose(np.array(data["tensions"]) @ u, [0.0, 0.0, G * 18.63], atol=1e-6)
+    out = tmp_path / "spider.yaml"
+    assert taut_cli("convert", str(SPIDER), str(out), "--json").code == 0
+    assert load_robot(out) == load_robot(SPIDER)
