@@ -714,3 +714,12 @@ def test_cli_tensions_hold_the_links_and_yaml_keeps_their_masses(tmp_path: Path,
     out = tmp_path / "spider.yaml"
     assert taut_cli("convert", str(SPIDER), str(out), "--json").code == 0
     assert load_robot(out) == load_robot(SPIDER)
+
+
+def test_default_wrench_set_is_sized_by_all_link_weights() -> None:
+    """The default box of wrench-feasibility is 10 % of the force of the external wrench: of
+    all seven SpiderBot links (18.63 kg), not of the platform's 10 kg."""
+    from taut.workspace.conditions import default_wrench_set
+
+    box = default_wrench_set(load_robot(SPIDER))
+    np.testing.assert_allclose(box.upper[:3], 0.1 * G * 18.63, rtol=1e-12)
