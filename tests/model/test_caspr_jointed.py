@@ -116,7 +116,8 @@ def raw_cables(bodies: Path, cable_set: str | None) -> list[dict]:
     return out
 
 
-DOFS = {"SPATIAL_EULER_XYZ": 6, "T_XYZ": 3, "S_EULER_XYZ": 3, "S_FIXED_XYZ": 3, "PLANAR_XY": 3, "PLANAR_XZ": 3}
+DOFS = {"SPATIAL_EULER_XYZ": 6, "T_XYZ": 3, "S_EULER_XYZ": 3, "S_FIXED_XYZ": 3}
+DOFS |= {"PLANAR_XY": 3, "PLANAR_XZ": 3, "PLANAR_YZ": 3}
 
 
 def frames(links: list[dict], q: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
@@ -142,6 +143,8 @@ def frames(links: list[dict], q: np.ndarray) -> list[tuple[np.ndarray, np.ndarra
             r_rel, R_pe = np.array([qk[0], qk[1], 0.0]), rz(qk[2])
         elif t == "PLANAR_XZ":
             r_rel, R_pe = np.array([qk[0], 0.0, qk[1]]), ry(qk[2])
+        elif t == "PLANAR_YZ":
+            r_rel, R_pe = np.array([0.0, qk[0], qk[1]]), rx(qk[2])
         elif t in ("R_X", "R_Y", "R_Z"):
             R_pe = {"R_X": rx, "R_Y": ry, "R_Z": rz}[t](qk[0])
         elif t == "R_AXIS":
@@ -455,11 +458,13 @@ def test_body_mass_properties_are_validated() -> None:
 
 XZ = FIXTURES / "jointed_planar_xz_bodies.xml"
 XY = FIXTURES / "jointed_planar_xy_bodies.xml"
+YZ = FIXTURES / "jointed_planar_yz_bodies.xml"
 #: plane axes, sign of each taut pose coordinate against CASPR's q (XZ: θ and the R_Y joint
 #: turn against taut's planar angles; R_AXIS about −y turns with them), platform centre
 PLANAR = {
     "xz": (XZ, (0, 2), np.array([1, 1, -1, -1, 1, 1]), np.array([0.0, 1.0])),
     "xy": (XY, (0, 1), np.ones(5), np.zeros(2)),
+    "yz": (YZ, (1, 2), np.ones(5), np.array([0.0, 1.0])),
 }
 
 
@@ -600,6 +605,7 @@ def random_poses(robot: Robot, centre: np.ndarray, n: int = 50) -> np.ndarray:
         (SPIDER, "set_1", (0, 0, 0)),
         (XZ, None, (0, 1)),
         (XY, None, (0, 0)),
+        (YZ, None, (0, 1)),
     ],
 )
 def test_round_trip_of_jointed_fixtures(tmp_path: Path, bodies: Path, cable_set: str | None, centre: tuple) -> None:
