@@ -21,7 +21,9 @@ any robot of taut (without bodies they reduce to the standard model).
   ``n`` columns are the platform structure matrix ``W = [u_i ; (b_i − p) × u_i]`` of
   Eq. 3.3.10 (``A = −W`` there: the source writes the wrench the cables exert as ``w``).
   A joint row gives the joint force (Eq. 3.3.12): ``ζ_j = −Σ τ_i u_i·∂b_i/∂q_j`` over the
-  cables beyond the joint, the external wrench acting on the platform body itself.
+  cables beyond the joint, minus the generalised force ``Σ_k F_k·∂c_k/∂q_j`` of the
+  weights ``F_k`` of the bodies beyond it at their centres of mass ``c_k`` (the platform's
+  own wrench acts on the platform body itself and does not enter the joint rows).
 
 References
 ----------
@@ -68,6 +70,12 @@ def _chains(robot: Robot) -> list[list[int]]:
 
 def _joint_derivatives(robot: Robot, arr: np.ndarray, b: np.ndarray) -> np.ndarray:
     """``∂b_i/∂q_j`` in the fixed frame, ``(N, n, n_joints, d)``."""
+    return _point_derivatives(robot, arr, b, robot.cable_bodies)
+
+
+def _point_derivatives(robot: Robot, arr: np.ndarray, b: np.ndarray, bodies: np.ndarray) -> np.ndarray:
+    """``∂b_i/∂q_j`` in the fixed frame of points ``b (N, n, d)`` fixed to the bodies
+    ``bodies (n,)`` (0 = platform), ``(N, n, n_joints, d)``."""
     N, n, d = b.shape
     out = np.zeros((N, n, robot.n_joints, d))
     if robot.n_joints == 0:
@@ -75,7 +83,7 @@ def _joint_derivatives(robot: Robot, arr: np.ndarray, b: np.ndarray) -> np.ndarr
     pos, rot = body_frames(robot, arr)
     index = {"platform": 0} | {bd.name: k for k, bd in enumerate(robot.platform.bodies, 1)}
     chains = _chains(robot)
-    for i, body in enumerate(robot.cable_bodies):
+    for i, body in enumerate(bodies):
         for k in chains[body]:
             joint = robot.platform.bodies[k - 1].joint
             parent = index[robot.platform.bodies[k - 1].parent]
@@ -135,8 +143,9 @@ def jointed_structure_matrix(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
 
 
 def joint_forces(robot: Robot, poses: npt.ArrayLike, tensions: npt.ArrayLike) -> np.ndarray:
-    """Joint actuator forces ``ζ`` (Eq. 3.3.12) balancing the cable tensions ``τ`` along the
-    joint coordinates, ``(N, n_joints)``: ``ζ = −A_joints,cables τ`` (positive ``ζ`` pushes the
+    """Joint actuator forces ``ζ`` (Eq. 3.3.12) balancing the cable tensions ``τ`` and the
+    weights of the bodies (``platform.bodies[].mass``) along the joint coordinates,
+    ``(N, n_joints)``: ``ζ = −A_joints,cables τ − Q_gravity`` (positive ``ζ`` pushes the
     child body along its joint axis; a revolute joint gets a torque about its axis).
 
     References
@@ -155,4 +164,17 @@ def joint_forces(robot: Robot, poses: npt.ArrayLike, tensions: npt.ArrayLike) ->
     tau = np.broadcast_to(tau, (arr.shape[0], robot.n_cables))
     m, n = robot.wrench_dim, robot.n_cables
     zeta = -np.einsum("kjc,kc->kj", A[:, m:, :n], tau)
+    if np.any(robot.body_weights != 0):
+        zeta -= _gravity_forces(robot, arr)
     return zeta[0] if single else zeta
+
+
+def _gravity_forces(robot: Robot, arr: np.ndarray) -> np.ndarray:
+    """The generalised forces of the bodies' weights along the joint coordinates,
+    ``Q_j = Σ_k F_k · ∂c_k/∂q_j`` over the bodies ``k`` beyond joint ``j`` (``c_k`` the centre
+    of mass in the fixed frame), ``(N, n_joints)``: the weight part of ``Q_ext`` in
+    ``A [τ; ζ] + Q_ext = 0``."""
+    pos, rot = body_frames(robot, arr)
+    coms = pos[:, 1:] + np.einsum("nkij,kj->nki", rot[:, 1:], robot.body_coms)
+    dc = _point_derivatives(robot, arr, coms, np.arange(1, robot.n_joints + 1))
+    return np.einsum("kd,nkjd->nj", robot.body_weights, dc)

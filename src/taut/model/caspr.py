@@ -12,6 +12,24 @@ mass, centre of mass and inertia) in ``X_bodies.xml`` and by named cable sets in
   ``S_FIXED_XYZ`` (``R = Rz(γ) Ry(β) Rx(α)``: taut's ``xyz-fixed``) link, all cables on the
   second: one rigid body with pose ``x y z α β γ``.
 
+A rigid platform (``SPATIAL_EULER_XYZ``, the ``T_XYZ`` + ``S_*`` pair, ``PLANAR_*``) may carry
+further links: a jointed platform (``platform.bodies``, like the adjustable platform of
+Lieskovský 2020). Each further link hangs from the platform link or a later link by an
+actuated (``actuated="true"``) one-degree-of-freedom joint: ``R_X``, ``R_Y``, ``R_Z``, ``R_AXIS``
+(taut's ``revolute`` about that axis) or ``P_X``, ``P_AXIS`` (``prismatic``), with
+``origin`` = its ``<parent><location>``, ``limits`` = ``q_min``/``q_max`` (CASPR's defaults
+±π for revolute joints when not given; an unbounded prismatic joint gets ±1e9, the largest
+pose coordinate taut accepts, so the same poses) and its ``mass``, ``com_location`` and
+inertia as the body's ``mass``, ``com`` and ``inertia``. taut's pose is CASPR's ``q``: the
+platform's coordinates, then the joint coordinates in link order. Cables attached to a
+further link get its name as ``body`` (``link k`` for an unnamed or repeated name). On a
+planar platform a revolute joint must turn about the plane's normal and a prismatic one move
+in the plane; the plane maps as below, and a joint turning against taut's planar angles
+(``R_Y`` in the XZ plane) gets the coordinate ``−q`` (stated in the description). Passive
+joints (taut's statics gives every joint an actuator force), other joints (universal,
+spherical, planar), links jointed to the ground or to the ``T_XYZ`` carrier, and further
+links on point-mass platforms are refused.
+
 Planes map onto taut's ``(x, y)`` so that CASPR's gravity (9.81 m/s² along −z) stays along
 taut's −y: ``PLANAR_XZ`` takes ``(x, y) = (X, Z)`` and ``θ = −θ_CASPR`` (CASPR rotates about
 +Y, which points out of the XZ plane's taut frame backwards); ``PLANAR_YZ`` takes
@@ -44,7 +62,8 @@ swivel back as a ``base_rotating_pulley``.
 Refused with :class:`UnsupportedRobotError`, never approximated: other pulley attachments
 (``screw_base_rotating_pulley``), swivelling pulleys of planar robots whose entry vector
 leaves the plane (in the plane, the pulley is taut's planar swivel), cables routed through
-more than two attachments, chains of links, actuated joints, other joint and cable types,
+more than two attachments (a cable through several links), chains of links from the ground,
+actuated platform joints, passive joints of further links, other joint and cable types,
 planar cables that leave the plane.
 
 References
@@ -53,6 +72,9 @@ References
    simulation platform for the research of cable-driven parallel robots", IEEE/RSJ
    International Conference on Intelligent Robots and Systems (IROS), 2016.
    (docs/references.bib: lau2016)
+.. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §3.1–3.3.
+   (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations
@@ -60,6 +82,7 @@ from __future__ import annotations
 import math
 import re
 import xml.etree.ElementTree as ET
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -104,6 +127,21 @@ _SINGLE = {
     "P_XZ": (2, False, "XZ", "xyz-fixed"),
 }
 _SPHERICAL = {"S_EULER_XYZ": "xyz-moving", "S_FIXED_XYZ": "xyz-fixed"}
+#: One-degree-of-freedom joints of further links: (taut joint kind, axis; None: the ``axis`` attribute).
+_ONE_DOF: dict[str, tuple[str, tuple[float, float, float] | None]] = {
+    "R_X": ("revolute", (1.0, 0.0, 0.0)),
+    "R_Y": ("revolute", (0.0, 1.0, 0.0)),
+    "R_Z": ("revolute", (0.0, 0.0, 1.0)),
+    "R_AXIS": ("revolute", None),
+    "P_X": ("prismatic", (1.0, 0.0, 0.0)),
+    "P_AXIS": ("prismatic", None),
+}
+_AXIS_JOINTS = ("R_AXIS", "P_AXIS")
+#: Bounds CASPR's joint classes give ``q`` when the file gives no ``q_min`` / ``q_max``.
+_DEFAULT_LIMITS = {"revolute": (-math.pi, math.pi), "prismatic": (-math.inf, math.inf)}
+#: taut refuses pose coordinates beyond this (``taut.kinematics.pose.as_poses``): an
+#: unbounded CASPR joint gets these limits, which admit the same poses.
+_UNBOUNDED = 1e9
 _CABLE_TYPES = ("cable_ideal", "cable_linear_spring")
 _INERTIA = ("Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz")
 
@@ -179,6 +217,10 @@ class _Link:
     mass: float
     com: np.ndarray
     inertia: np.ndarray  # about the centre of mass, 3x3
+    actuated: bool = False
+    q_min: str | None = None
+    q_max: str | None = None
+    axis: np.ndarray | None = None  #: ``R_AXIS`` / ``P_AXIS`` only
 
 
 def _read_link(elem: ET.Element, where: str) -> _Link:
@@ -189,9 +231,14 @@ def _read_link(elem: ET.Element, where: str) -> _Link:
         raise RobotFileError(f"{where}: attribute num must be a link number, got {num_text!r}")
     where = f"{where} (link {num_text})"
     joint = _one(elem, "joint", where)
-    _attrs(joint, ("type", "q_initial", "q_min", "q_max", "actuated"), f"{where} <joint>")
-    if joint.get("actuated", "false").strip().lower() == "true":
-        raise UnsupportedRobotError(f"{where}: actuated joints are not modelled by taut")
+    _attrs(joint, ("type", "q_initial", "q_min", "q_max", "actuated", "axis"), f"{where} <joint>")
+    axis = None
+    if joint.get("axis") is not None:
+        if joint.get("type") not in _AXIS_JOINTS:
+            raise RobotFileError(f"{where} <joint>: an axis is given for R_AXIS / P_AXIS joints only")
+        axis = np.array(_numbers(joint.get("axis"), 3, f"{where} <joint> axis"))
+        if not np.any(axis != 0):
+            raise RobotFileError(f"{where} <joint> axis: must be a non-zero vector")
     physical = _one(elem, "physical", where)
     _children(physical, ("mass", "com_location", "end_location", "inertia"), f"{where} <physical>")
     mass = _number(physical, "mass", f"{where} <physical>")
@@ -220,6 +267,10 @@ def _read_link(elem: ET.Element, where: str) -> _Link:
         mass=mass,
         com=com,
         inertia=tensor,
+        actuated=joint.get("actuated", "false").strip().lower() == "true",
+        q_min=joint.get("q_min"),
+        q_max=joint.get("q_max"),
+        axis=axis,
     )
 
 
@@ -396,41 +447,189 @@ def parse_caspr(path: Path, text: str, cable_set: str | None = None) -> Robot:
 
 
 def _platform_link(links: list[_Link], source: str) -> tuple[_Link, np.ndarray, tuple[int, bool, str | None, str]]:
-    """The link cables pull on, the offset of its joint origin from the base's, and how it maps."""
-    if len(links) == 1:
-        link = links[0]
-        if link.joint not in _SINGLE:
-            raise UnsupportedRobotError(
-                f"{source}: link 1 has a {link.joint or '(missing)'} joint; taut reads {', '.join(_SINGLE)}, "
-                f"or T_XYZ carrying {' or '.join(_SPHERICAL)}"
-            )
-        return link, link.location, _SINGLE[link.joint]
-    if len(links) == 2 and links[0].joint == "T_XYZ" and links[1].joint in _SPHERICAL and links[1].parent == 1:
-        carrier, body = links
+    """The platform link (the one with the free joint to the ground), the offset of its joint
+    origin from the base's, and how it maps; the links after it are its jointed bodies
+    (:func:`_jointed_bodies`)."""
+    mapping: tuple[int, bool, str | None, str]
+    if len(links) >= 2 and links[0].joint == "T_XYZ" and links[1].joint in _SPHERICAL and links[1].parent == 1:
+        carrier, link = links[0], links[1]
         if carrier.mass != 0:
             raise UnsupportedRobotError(
                 f"{source}: link 1 (T_XYZ) carries a mass of {carrier.mass}; taut's platform is one rigid body"
             )
-        return body, carrier.location + body.location, (3, True, None, _SPHERICAL[body.joint])
-    joints = ", ".join(f"{k.num}:{k.joint}" for k in links)
-    raise UnsupportedRobotError(
-        f"{source}: a chain of {len(links)} links ({joints}) is a multi-link robot; taut models one platform body"
-    )
+        origin, mapping = carrier.location + link.location, (3, True, None, _SPHERICAL[link.joint])
+    else:
+        link = links[0]
+        if link.joint not in _SINGLE:
+            if len(links) > 1 and link.parent == 0:
+                joints = ", ".join(f"{k.num}:{k.joint}" for k in links)
+                raise UnsupportedRobotError(
+                    f"{source}: a chain of {len(links)} links ({joints}) jointed to the ground by {link.joint} is a "
+                    "multi-link robot; taut models a platform with a free joint (SPATIAL_EULER_XYZ, or T_XYZ carrying "
+                    f"{' or '.join(_SPHERICAL)}) and bodies jointed to it"
+                )
+            raise UnsupportedRobotError(
+                f"{source}: link 1 has a {link.joint or '(missing)'} joint; taut reads {', '.join(_SINGLE)}, "
+                f"or T_XYZ carrying {' or '.join(_SPHERICAL)}"
+            )
+        origin, mapping = link.location, _SINGLE[link.joint]
+    for k in links[: link.num]:
+        if k.actuated:
+            raise UnsupportedRobotError(
+                f"{source}: link {k.num}: the platform's {k.joint} joint is actuated; actuated platform joints are "
+                "not modelled by taut (its cables move the platform)"
+            )
+    return link, origin, mapping
+
+
+def _joint_limits(link: _Link, kind: str, where: str) -> tuple[tuple[float, float], bool]:
+    """``q_min`` / ``q_max`` of a one-DOF joint (CASPR's class bounds when not given), and
+    whether an infinite bound became ±``_UNBOUNDED``."""
+    bounds = []
+    for text, default in zip((link.q_min, link.q_max), _DEFAULT_LIMITS[kind]):
+        bounds.append(default if text is None else _numbers(text, 1, f"{where} q_min/q_max", allow_inf=True)[0])
+    lo, hi = bounds
+    if lo > hi:
+        raise RobotFileError(f"{where}: q_min {lo:g} > q_max {hi:g}")
+    clipped = (max(lo, -_UNBOUNDED), min(hi, _UNBOUNDED))
+    return clipped, clipped != (lo, hi)
+
+
+@dataclass(frozen=True)
+class _Jointed:
+    """The further links of a CASPR model as taut's ``platform.bodies``."""
+
+    bodies: list[dict]
+    #: link number → its frame's offset along a planar model's normal (0 for the platform)
+    normal_offsets: dict[int, float]
+    unbounded: bool  #: a joint's infinite bound became ±``_UNBOUNDED``
+    negated: list[str]  #: joints whose taut coordinate is −q (CASPR's turns the other way)
+    massive: bool  #: a further link has a mass
+
+
+def _planar_joint(
+    kind: str, axis: tuple[float, float, float], plane: _Plane, where: str, joint: str
+) -> tuple[list[float], float]:
+    """taut's planar joint axis and the sign of its coordinate (−1: taut's ``q`` is −q_CASPR)."""
+    i, j = plane.axes
+    n = plane.normal
+    if kind == "prismatic":
+        if axis[n] != 0:
+            raise UnsupportedRobotError(f"{where}: its {joint} joint moves out of the plane (axis {list(axis)})")
+        return [axis[i], axis[j]], 1.0
+    if axis[i] != 0 or axis[j] != 0:
+        raise UnsupportedRobotError(
+            f"{where}: its {joint} joint turns about {list(axis)}; taut's planar joints turn about the plane's normal"
+        )
+    # taut's planar angles turn e_i towards e_j, i.e. about e_i × e_j
+    normal = float(np.cross(np.eye(3)[i], np.eye(3)[j])[n])
+    return [1.0], math.copysign(1.0, axis[n]) * normal
+
+
+def _jointed_bodies(links: list[_Link], platform: _Link, rigid: bool, plane: _Plane | None, source: str) -> _Jointed:
+    """``platform.bodies`` of taut for the links after the platform link.
+
+    Each such link must hang from the platform link or a later link by an actuated
+    one-degree-of-freedom joint of :data:`_ONE_DOF`: CASPR's ``R_X``/``R_Y``/``R_Z``/``R_AXIS``
+    rotate the link about the axis through its ``<parent><location>`` and ``P_X``/``P_AXIS``
+    translate it by ``q·axis`` from there (``RevoluteAxis``, ``PrismaticAxis``; the link's
+    frame is the parent's moved by ``location + r_rel(q)`` and rotated by ``R_pe(q)``,
+    ``SystemModelBodies.update``), which are taut's ``revolute`` and ``prismatic`` joints with
+    ``origin = location``.  On a planar platform a revolute joint must turn about the plane's
+    normal and a prismatic one move in the plane; the plane maps as the platform's does, so a
+    joint turning the other way round than taut's planar angles gets the coordinate −q.
+
+    References
+    ----------
+    .. [1] D. Lau, J. Eden, Y. Tan, D. Oetomo, "CASPR: A comprehensive cable-robot analysis and
+       simulation platform for the research of cable-driven parallel robots", IEEE/RSJ
+       International Conference on Intelligent Robots and Systems (IROS), 2016.
+       (docs/references.bib: lau2016)
+    """
+    rest = links[platform.num :]
+    if rest and not rigid:
+        raise UnsupportedRobotError(
+            f"{source}: links {', '.join(str(k.num) for k in rest)} are jointed to a {platform.joint} platform; a "
+            "point mass carries no jointed bodies in taut"
+        )
+    names = {platform.num: "platform"}
+    offsets = {platform.num: 0.0}
+    bodies: list[dict] = []
+    negated: list[str] = []
+    unbounded = massive = False
+    for link in rest:
+        where = f"{source}: link {link.num} ({link.name!r})"
+        if link.joint not in _ONE_DOF:
+            raise UnsupportedRobotError(
+                f"{where} has a {link.joint or '(missing)'} joint; taut's jointed bodies have the one-DOF joints "
+                f"{', '.join(_ONE_DOF)}"
+            )
+        if link.parent not in names:
+            to = "the ground (link 0)" if link.parent == 0 else f"link {link.parent} ({links[link.parent - 1].joint})"
+            raise UnsupportedRobotError(
+                f"{where} is jointed to {to}; taut's bodies are jointed to the platform (link {platform.num}) or to "
+                "other bodies"
+            )
+        if not link.actuated:
+            raise UnsupportedRobotError(
+                f'{where}: its {link.joint} joint is passive (no actuated="true"); taut\'s joint coordinates are '
+                "set by joint actuators"
+            )
+        kind, unit = _ONE_DOF[link.joint]
+        if unit is None:
+            if link.axis is None:
+                raise RobotFileError(f"{where}: a {link.joint} joint needs an axis attribute")
+            unit = (float(link.axis[0]), float(link.axis[1]), float(link.axis[2]))
+        (lo, hi), clipped = _joint_limits(link, kind, where)
+        unbounded, massive = unbounded or clipped, massive or link.mass > 0
+        name = link.name.strip() or f"link {link.num}"
+        while name in names.values():
+            name = f"{name} (link {link.num})"
+        names[link.num] = name
+        axis, origin, com, sign = list(unit), link.location, link.com, 1.0
+        if plane is not None:
+            axis, sign = _planar_joint(kind, unit, plane, where, link.joint)
+            offsets[link.num] = offsets[link.parent] + float(link.location[plane.normal])
+            origin, com = origin[list(plane.axes)], com[list(plane.axes)]
+            if sign < 0:
+                lo, hi = -hi, -lo
+                negated.append(name)
+        limits = [lo, hi]
+        body: dict[str, object] = {
+            "name": name,
+            "parent": names[link.parent],
+            "joint": {"kind": kind, "axis": axis, "origin": origin.tolist(), "limits": limits},
+        }
+        if link.mass > 0:
+            body["mass"] = link.mass
+            if np.any(com != 0):
+                body["com"] = com.tolist()
+            if np.any(link.inertia != 0):
+                t = link.inertia
+                body["inertia"] = (
+                    [t[0, 0], t[1, 1], t[2, 2], t[0, 1], t[0, 2], t[1, 2]]
+                    if plane is None
+                    else [t[plane.normal, plane.normal]]
+                )
+        bodies.append(body)
+    return _Jointed(bodies, offsets, unbounded, negated, massive)
 
 
 def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) -> Robot:
     source = str(path)
     link, origin, (dim, rigid, plane_name, orientation) = _platform_link(links, source)
     plane = _PLANES[plane_name] if plane_name is not None else None
+    jointed = _jointed_bodies(links, link, rigid, plane, source)
+    body_of = {link.num + k: b["name"] for k, b in enumerate(jointed.bodies, 1)}
     scale = max(1.0, float(np.abs(origin).max()))
     out = []
     shifted = False
     for i, c in enumerate(cables, 1):
-        if c.link != link.num:
+        if c.link != link.num and c.link not in body_of:
             raise UnsupportedRobotError(
                 f"{source}: cable {i} ({c.name!r}) is attached to link {c.link}, which carries no cables in taut's model"
             )
-        anchor = c.location + link.com if c.reference == "com" else c.location
+        anchor = c.location + links[c.link - 1].com if c.reference == "com" else c.location
         exit_ = c.base - origin
         if not rigid:
             shifted = shifted or bool(np.any(anchor != 0))
@@ -445,13 +644,15 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
                 )
             swivel_axis = swivel_axis[list(plane.axes)]
         if plane is not None:
-            off = exit_[plane.normal] - anchor[plane.normal]
+            off = exit_[plane.normal] - anchor[plane.normal] - jointed.normal_offsets.get(c.link, 0.0)
             if abs(off) > 1e-9 * max(scale, float(np.abs(c.base).max())):
                 raise UnsupportedRobotError(
                     f"{source}: cable {i} ({c.name!r}) leaves the {plane_name} plane by {off:g} m; taut's planar robots keep cables in the plane"
                 )
             exit_, anchor = exit_[list(plane.axes)], anchor[list(plane.axes)]
         cable: dict[str, object] = {"name": c.name or None, "exit": exit_.tolist(), "tension": list(c.force)}
+        if c.link in body_of:
+            cable["body"] = body_of[c.link]
         if rigid:
             cable["anchor"] = anchor.tolist()
         if c.stiffness is not None:
@@ -460,6 +661,10 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
             cable["swivel"] = {"axis": swivel_axis.tolist(), "radius": c.swivel[1]}
         out.append(cable)
     platform: dict[str, object] = {"kind": "rigid" if rigid else "point-mass"}
+    if jointed.bodies:
+        platform["bodies"] = jointed.bodies
+    if jointed.massive and plane is not None and not plane.in_plane_gravity:
+        platform["gravity"] = [0.0, 0.0]
     if link.mass > 0:
         platform["mass"] = link.mass
         if plane is not None and not plane.in_plane_gravity:
@@ -482,6 +687,10 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
         notes.append(f"exits relative to the joint origin {origin.tolist()}")
     if shifted:
         notes.append("point-mass exits shifted by their attachments")
+    if jointed.unbounded:
+        notes.append(f"unbounded joints limited to +-{_UNBOUNDED:g} (the largest pose coordinate taut takes)")
+    if jointed.negated:
+        notes.append(f"joint coordinates negated (-q of CASPR): {', '.join(jointed.negated)}")
     data = {
         "name": stem,
         "description": "; ".join(notes),
@@ -506,7 +715,8 @@ def _refuse(robot: Robot, why: str) -> UnsupportedRobotError:
 def _horizontal(robot: Robot) -> bool:
     """Whether a planar robot's plane is horizontal: a mass without gravity in the plane."""
     gravity = robot.platform.gravity
-    return robot.dimension == 2 and robot.platform.mass is not None and gravity is not None and not any(gravity)
+    massive = robot.platform.mass is not None or any(b.mass is not None for b in robot.platform.bodies)
+    return robot.dimension == 2 and massive and gravity is not None and not any(gravity)
 
 
 def _weight(robot: Robot) -> tuple[float, np.ndarray]:
@@ -532,8 +742,71 @@ def _weight(robot: Robot) -> tuple[float, np.ndarray]:
     return float(plat.mass), point
 
 
-def _fmt(values: np.ndarray | list[float]) -> str:
+def _fmt(values: np.ndarray | list[float] | tuple[float, ...]) -> str:
     return " ".join(repr(float(v)) for v in values)
+
+
+def _joint_type(kind: str, axis: tuple[float, ...]) -> str:
+    """CASPR's joint type for a taut joint: ``R_X``/``R_Y``/``R_Z``/``P_X`` along a positive
+    coordinate axis, else ``R_AXIS``/``P_AXIS`` with the axis given."""
+    for name, (k, unit) in _ONE_DOF.items():
+        if (
+            k == kind
+            and unit is not None
+            and all((a > 0) == (u > 0) and (a == 0) == (u == 0) for a, u in zip(axis, unit))
+        ):
+            return name
+    return "R_AXIS" if kind == "revolute" else "P_AXIS"
+
+
+def _write_bodies(
+    robot: Robot, links: ET.Element, platform_num: int, lift: Callable[[np.ndarray], np.ndarray], horizontal: bool
+) -> dict[str, str]:
+    """Append ``platform.bodies`` to ``links`` as actuated one-DOF links after the platform's
+    link ``platform_num`` (the inverse of :func:`_jointed_bodies`; ``lift`` takes a planar
+    robot's vectors into its CASPR plane, ``horizontal`` the XY plane); return the CASPR link
+    number of each body name (``platform`` included).  Joint names and collision capsules
+    have no place in a CASPR model and are not written."""
+    link_of = {"platform": str(platform_num)}
+    d = robot.dimension
+    down = -CASPR_GRAVITY * np.eye(d)[-1]
+    masses = [b for b in robot.platform.bodies if b.mass is not None]
+    if masses and not horizontal and not np.allclose(robot.gravity, down, rtol=0, atol=1e-12):
+        raise _refuse(robot, f"gravity {robot.gravity.tolist()}: CASPR's is {CASPR_GRAVITY} m/s² along -z")
+    for k, b in enumerate(robot.platform.bodies, platform_num + 1):
+        link_of[b.name] = str(k)
+        j = b.joint
+        if d == 3:
+            axis = np.array(j.axis, dtype=float)
+        elif j.kind == "revolute":  # taut's planar angles turn x towards y: about +z (XY), -y (XZ)
+            axis = np.array([0.0, 0.0, 1.0]) if horizontal else np.array([0.0, -1.0, 0.0])
+        else:
+            axis = lift(np.array(j.axis, dtype=float))
+        kind = _joint_type(j.kind, tuple(axis))
+        lo, hi = j.limits
+        attrs = {"type": kind, "actuated": "true", "q_initial": repr(float(min(max(0.0, lo), hi)))}
+        attrs |= {"q_min": repr(float(lo)), "q_max": repr(float(hi))}
+        if kind in _AXIS_JOINTS:
+            attrs["axis"] = _fmt(axis)
+        inertia = np.zeros(6)
+        if b.inertia is not None:
+            if d == 3:
+                inertia = np.array(b.inertia)
+            else:  # the moment about the plane's normal: Izz (XY plane) or Iyy (XZ plane)
+                inertia[2 if horizontal else 1] = b.inertia[0]
+        link = ET.SubElement(links, "link_rigid", num=str(k), name=b.name)
+        ET.SubElement(link, "joint", attrs)
+        phys = ET.SubElement(link, "physical")
+        ET.SubElement(phys, "mass").text = repr(float(b.mass or 0.0))
+        ET.SubElement(phys, "com_location").text = _fmt(lift(np.array(b.com or (0.0,) * d, dtype=float)))
+        ET.SubElement(phys, "end_location").text = _fmt(np.zeros(3))
+        inert = ET.SubElement(phys, "inertia", ref="com")
+        for tag, value in zip(_INERTIA, inertia):
+            ET.SubElement(inert, tag).text = repr(float(value))
+        parent = ET.SubElement(link, "parent")
+        ET.SubElement(parent, "num").text = link_of[b.parent]
+        ET.SubElement(parent, "location").text = _fmt(lift(np.array(j.origin or (0.0,) * d, dtype=float)))
+    return link_of
 
 
 def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
@@ -543,19 +816,21 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
     ``T_XYZ`` link carrying a ``S_FIXED_XYZ`` one (``xyz-fixed``); a planar one a
     ``PLANAR_XZ`` link (taut's ``y`` is CASPR's ``z``, where its gravity acts), or ``PLANAR_XY``
     when it has a mass and no gravity in its plane; point masses ``T_XYZ``, ``P_XZ`` or ``P_XY``. A constant external wrench that is a downward force becomes the
-    mass whose weight it is. Reference data and trajectories are not part of a CASPR model
-    and are not written.
+    mass whose weight it is. Jointed bodies become actuated links after the platform's
+    (``R_X``/``R_Y``/``R_Z``/``P_X`` along a positive coordinate axis, else
+    ``R_AXIS``/``P_AXIS``; a planar revolute joint ``R_Z`` in the XY plane, ``R_AXIS`` about −y
+    in the XZ plane, so that CASPR's ``q`` is taut's) with their masses. Reference data, trajectories, joint names
+    and the collision shapes of the platform and its bodies are not part of a CASPR model and
+    are not written.
 
     Raises
     ------
     UnsupportedRobotError
-        For what the format cannot hold: jointed bodies, obstacles, exit pulleys, length bounds,
+        For what the format cannot hold: obstacles, exit pulleys, length bounds,
         cable radii, other wrenches and gravities, the ``tilt-torsion`` convention.
     """
     bodies = Path(bodies_path)
     cables = cables_path(bodies)
-    if robot.platform.bodies:
-        raise _refuse(robot, "jointed platform bodies (a chain of links is not read back as one platform)")
     if robot.obstacles or robot.installation_space is not None or robot.disallowed:
         raise _refuse(robot, "obstacles or an installation space")
     for i, c in enumerate(robot.cables, 1):
@@ -615,7 +890,7 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
         parent = ET.SubElement(link, "parent")
         ET.SubElement(parent, "num").text = str(k - 1)
         ET.SubElement(parent, "location").text = _fmt(np.zeros(3))
-    body_link = str(len(joints))
+    link_of = _write_bodies(robot, links, len(joints), lift, horizontal)
     croot = ET.Element("cables", default_cable_set="taut")
     cset = ET.SubElement(croot, "cable_set", id="taut")
     for i, c in enumerate(robot.cables, 1):
@@ -632,7 +907,7 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
             ET.SubElement(pulley, "fixed_location").text = _fmt(exits[i - 1])
             ET.SubElement(pulley, "pulley_radius").text = repr(float(c.swivel.radius))
             ET.SubElement(pulley, "cable_entry_vector").text = _fmt(lift(np.array(c.swivel.axis)))
-        for link_num, point in (("0", exits[i - 1]), (body_link, lift(robot.anchors[i - 1]))):
+        for link_num, point in (("0", exits[i - 1]), (link_of[c.body or "platform"], lift(robot.anchors[i - 1]))):
             if link_num == "0" and c.swivel is not None:
                 continue
             att = ET.SubElement(atts, "attachment")

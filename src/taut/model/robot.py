@@ -89,6 +89,17 @@ def _inertia_matrix(values: tuple[float, ...]) -> np.ndarray:
     return np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]], dtype=float)
 
 
+def _check_inertia(values: tuple[float, ...], d: int, where: str) -> None:
+    """Raise ``ValueError`` unless ``values`` is an inertia of a ``d``-dimensional body: one
+    ``Izz`` (planar) or six numbers (spatial) of a positive semi-definite tensor."""
+    if len(values) != (1 if d == 2 else 6):
+        raise ValueError(f"{where}.inertia: expected {1 if d == 2 else 6} numbers, got {len(values)}")
+    tensor = _inertia_matrix(values)
+    # rounding leaves a singular tensor (a rod, a point) slightly negative
+    if np.linalg.eigvalsh(tensor).min() < -1e-12 * max(1.0, float(np.abs(tensor).max())):
+        raise ValueError(f"{where}.inertia: not a positive semi-definite inertia tensor, got {list(values)}")
+
+
 def _check_bounds(v: tuple[float, float], what: str) -> tuple[float, float]:
     lo, hi = v
     if math.isnan(lo) or math.isnan(hi):
@@ -219,12 +230,25 @@ class Capsule(_Strict):
 
 
 class Body(_Strict):
-    """An extra platform body attached to ``parent`` (``platform`` or another body) by a joint."""
+    """An extra platform body attached to ``parent`` (``platform`` or another body) by a joint.
+
+    With a ``mass``, its weight ``mass·g`` (``g`` the robot's gravity, see
+    :attr:`Robot.gravity`) acts at ``com``: the statics count it in the platform's external
+    wrench and in the joint forces."""
 
     name: str
     parent: str = "platform"
     joint: Joint
     capsules: tuple[Capsule, ...] = ()
+    mass: Finite | None = Field(default=None, gt=0, description="mass of the body [kg]")
+    com: tuple[Coordinate, ...] | None = Field(
+        default=None, description="centre of mass in the body frame [m] (the origin when not given)"
+    )
+    inertia: tuple[Finite, ...] | None = Field(
+        default=None,
+        description="rotational inertia about the centre of mass in the body frame [kg m²]: "
+        "Izz (planar), or Ixx, Iyy, Izz, Ixy, Ixz, Iyz (spatial)",
+    )
 
 
 class Shape(_Strict):
@@ -372,15 +396,9 @@ class Robot(_Strict):
                 raise ValueError("platform.inertia: a point-mass platform has no rotational inertia")
             if p.mass is None:
                 raise ValueError("platform.inertia is given without platform.mass")
-            need(p.inertia, 1 if d == 2 else 6, "platform.inertia")
-            tensor = _inertia_matrix(p.inertia)
-            # rounding leaves a singular tensor (a rod, a point) slightly negative
-            if np.linalg.eigvalsh(tensor).min() < -1e-12 * max(1.0, float(np.abs(tensor).max())):
-                raise ValueError(
-                    f"platform.inertia: not a positive semi-definite inertia tensor, got {list(p.inertia)}"
-                )
-        if p.gravity is not None and p.mass is None:
-            raise ValueError("platform.gravity is given without platform.mass")
+            _check_inertia(p.inertia, d, "platform")
+        if p.gravity is not None and p.mass is None and not any(b.mass is not None for b in p.bodies):
+            raise ValueError("platform.gravity is given without platform.mass (or a mass of platform.bodies)")
         if pm and p.bodies:
             raise ValueError("platform.bodies: a point-mass platform cannot carry jointed bodies")
         seen = {"platform"}
@@ -392,6 +410,11 @@ class Robot(_Strict):
             seen.add(b.name)
             need(b.joint.axis, d if d == 3 or b.joint.kind == "prismatic" else 1, f"platform.bodies[{j}].joint.axis")
             need(b.joint.origin, d, f"platform.bodies[{j}].joint.origin")
+            need(b.com, d, f"platform.bodies[{j}].com")
+            if b.mass is None and (b.com is not None or b.inertia is not None):
+                raise ValueError(f"platform.bodies[{j}]: com or inertia is given without mass")
+            if b.inertia is not None:
+                _check_inertia(b.inertia, d, f"platform.bodies[{j}]")
         for k, o in enumerate(self.obstacles, 1):
             pts = [o.center] if isinstance(o, Circle) else o.vertices
             for pt in pts:
@@ -532,13 +555,36 @@ class Robot(_Strict):
         ``platform.mass``."""
 
         def build() -> np.ndarray:
-            plat, d = self.platform, self.dimension
-            if plat.mass is None:
-                return np.zeros(d)
-            g = np.array(plat.gravity, dtype=float) if plat.gravity is not None else -STANDARD_GRAVITY * np.eye(d)[-1]
-            return plat.mass * g
+            mass = self.platform.mass
+            return np.zeros(self.dimension) if mass is None else mass * self.gravity
 
         return self._derived("weight", build)
+
+    @property
+    def gravity(self) -> np.ndarray:
+        """The gravitational acceleration [m/s²] on the platform and its bodies, shape ``(d,)``:
+        ``platform.gravity``, by default ``STANDARD_GRAVITY`` downwards along the last axis."""
+        g = self.platform.gravity
+        d = self.dimension
+        return self._derived(
+            "gravity", lambda: np.array(g, dtype=float) if g is not None else -STANDARD_GRAVITY * np.eye(d)[-1]
+        )
+
+    @property
+    def body_weights(self) -> np.ndarray:
+        """Weights ``mass·g`` [N] of ``platform.bodies`` (zero for a body without a mass),
+        shape ``(n_joints, d)``; each acts at the body's ``com``."""
+        masses = np.array([b.mass or 0.0 for b in self.platform.bodies], dtype=float)
+        return self._derived("body_weights", lambda: masses[:, None] * self.gravity[None, :])
+
+    @property
+    def body_coms(self) -> np.ndarray:
+        """Centres of mass of ``platform.bodies`` in their body frames, shape ``(n_joints, d)``."""
+        zero = (0.0,) * self.dimension
+        return self._derived(
+            "body_coms",
+            lambda: np.array([b.com or zero for b in self.platform.bodies], dtype=float).reshape(-1, self.dimension),
+        )
 
     @property
     def body_capsules(self) -> list[tuple[int, Capsule]]:

@@ -3,7 +3,8 @@
 The external wrench on the platform (Rushton 2022, Eq. 2.11 writes
 equilibrium as ``W τ = −w_ext``) is the robot's constant wrench plus its weight, both
 applied at ``platform.wrench_point``, with moments taken about the platform reference
-point ``p``.
+point ``p``, plus the weights of the jointed bodies at their centres of mass (Lieskovský
+2020, Eqs. 3.3.7–3.3.10: the platform rows of the jointed equilibrium).
 
 A wrench set is described by its support function ``h(n) = max_{w ∈ set} n·w``; every
 convex set below (a single wrench, a box, a polytope given by its vertices, and the
@@ -17,6 +18,9 @@ References
 .. [2] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
    Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
    Machine Science 12, Springer, 2013, §2. (docs/references.bib: bohigas2013)
+.. [3] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §3.3, Eqs. 3.3.7–3.3.12.
+   (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations
@@ -29,7 +33,7 @@ import numpy.typing as npt
 
 from taut.errors import TautError
 from taut.geometry.vectors import cross
-from taut.kinematics.pose import as_poses, platform_frame
+from taut.kinematics.pose import as_poses, body_frames, platform_frame
 from taut.model.robot import Robot
 
 
@@ -48,7 +52,26 @@ def external_wrench(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
         arm = R @ np.asarray(plat.wrench_point, float)
         moment = cross(arm, out[:, :d])
         out[:, d:] += moment[:, None] if moment.ndim == 1 else moment
+    if np.any(robot.body_weights != 0):
+        out += _body_weights(robot, arr)
     return out[0] if single else out
+
+
+def _body_weights(robot: Robot, poses: np.ndarray) -> np.ndarray:
+    """The weights of the jointed bodies as a wrench on the platform ``(N, m)``: with the
+    joints held by their actuators the bodies move with the platform, so each weight ``F_k``
+    adds its force and its moment ``(c_k − p) × F_k`` about the reference point ``p``, ``c_k``
+    the body's centre of mass in the fixed frame (the rows of ``A`` for the platform twist,
+    Lieskovský 2020, Eqs. 3.3.7–3.3.10)."""
+    pos, rot = body_frames(robot, poses)
+    d = robot.dimension
+    out = np.zeros((poses.shape[0], robot.wrench_dim))
+    for k, (force, com) in enumerate(zip(robot.body_weights, robot.body_coms), 1):
+        arm = pos[:, k] - pos[:, 0] + rot[:, k] @ com
+        out[:, :d] += force
+        moment = cross(arm, np.broadcast_to(force, arm.shape))
+        out[:, d:] += moment[:, None] if moment.ndim == 1 else moment
+    return out
 
 
 class WrenchSet(ABC):

@@ -106,7 +106,7 @@ class WrenchClosure(WrenchCondition):
 def default_wrench_set(robot: Robot) -> BoxWrenchSet:
     """The default required set of ``wrench-feasible``, relative to the external wrench: a
     box centred at 0 with force half-widths ``f = max(10 % of |F|, 1 N)``, ``F`` the force
-    of the robot's external wrench (weight plus constant wrench), and moment half-widths
+    of the robot's external wrench (weights plus constant wrench), and moment half-widths
     ``max(10 % of M, f·ρ)``, where ``M = |constant moment| + |F|·|wrench point|`` bounds the
     external moment over all orientations and ``ρ`` is the platform radius (largest anchor
     distance to the reference point) — the moment of the force uncertainty applied at the
@@ -116,7 +116,7 @@ def default_wrench_set(robot: Robot) -> BoxWrenchSet:
     force = np.zeros(d)
     if plat.wrench is not None:
         force += np.asarray(plat.wrench[:d], float)
-    force += robot.weight
+    force += robot.weight + robot.body_weights.sum(axis=0)
     F = float(np.linalg.norm(force))
     f = max(DEFAULT_FRACTION * F, MIN_FORCE)
     half = np.full(m, f)
