@@ -1,0 +1,101 @@
+"""No silent gap: a search stopped by its box budget is incomplete, and every solution it
+does not list lies in one of the undecided boxes it reports — checked against the full
+search, through the boxes' named unknowns alone."""
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from taut.dgp import solve_dgp, solve_igp
+from taut.dgp.undecided import CAUSES
+from taut.errors import TautError
+from taut.geometry.rotation import rotation_matrix
+from taut.model import load_robot
+
+ROBOT = load_robot("suspended-3cable")
+#: Table 4.3's lengths leave six equilibria; the three-cable sub-problem needs ~58 000 boxes
+DGP_BUDGET = 10_000
+#: four solutions, in ~4 500 boxes
+IGP_TAUT, IGP_FIX, IGP_BUDGET = (2, 0, 1), {"x": 2.7505, "y": 3.9798, "z": 5.5061}, 2_000
+#: slack for rounding in recomputing a certified solution's unknowns from its pose
+TOL = 1e-9
+
+
+def _same(a, b) -> bool:
+    return a.taut == b.taut and np.allclose(
+        np.r_[a.position, a.orientation], np.r_[b.position, b.orientation], atol=1e-7
+    )
+
+
+def _inside(box, values: dict[str, float], tensions: np.ndarray) -> bool:
+    named = all(lo - TOL <= values[v] <= hi + TOL for v, lo, hi in zip(box.variables, box.lo, box.hi))
+    taut = all(lo - TOL <= t <= hi + TOL for t, lo, hi in zip(tensions, box.tension_lo, box.tension_hi))
+    return named and taut
+
+
+def _dgp_unknowns(box, solution) -> dict[str, float]:
+    """The reference points' coordinates and their plane's normal at the solution's pose,
+    from the body-frame points the box names."""
+    R = rotation_matrix(solution.orientation, ROBOT.orientation)
+    q = solution.position + np.array(box.points) @ R.T
+    n = np.cross(q[1] - q[0], q[2] - q[0])
+    values = {f"q{i + 1}_{c}": float(q[i, k]) for i in range(3) for k, c in enumerate("xyz")}
+    return values | {f"n_{c}": float(n[k]) for k, c in enumerate("xyz")}
+
+
+def _igp_unknowns(solution) -> dict[str, float]:
+    names = ROBOT.pose_names
+    pose = np.r_[solution.position, solution.orientation]
+    values = {names[k]: float(pose[k]) for k in range(3)}
+    for k in range(3, 6):
+        values |= {f"cos({names[k]})": float(np.cos(pose[k])), f"sin({names[k]})": float(np.sin(pose[k]))}
+    return values
+
+
+@pytest.fixture(scope="module")
+def dgp_runs():
+    return solve_dgp(ROBOT), solve_dgp(ROBOT, max_boxes=DGP_BUDGET)
+
+
+def test_a_dgp_search_cut_by_its_budget_lists_every_missing_equilibrium_in_an_undecided_box(dgp_runs):
+    full, cut = dgp_runs
+    assert full.complete and full.undecided_enclosures == () and len(full.solutions) == 6
+    assert not cut.complete and cut.undecided == len(cut.undecided_enclosures) > 0
+    assert {b.cause for b in cut.undecided_enclosures} == {"budget"}
+    # what the cut search certified is right, and it found some but not all
+    assert all(any(_same(s, f) for f in full.solutions) for s in cut.solutions)
+    missing = [f for f in full.solutions if not any(_same(s, f) for s in cut.solutions)]
+    assert 0 < len(missing) < len(full.solutions)
+    for f in missing:
+        boxes = [b for b in cut.undecided_enclosures if b.taut == f.taut]
+        assert any(_inside(b, _dgp_unknowns(b, f), f.tensions[list(f.taut)]) for b in boxes), f
+
+
+def test_an_undecided_dgp_box_is_immutable_and_names_its_unknowns(dgp_runs):
+    _, cut = dgp_runs
+    box = cut.undecided_enclosures[0]
+    assert box.variables[:9] == tuple(f"q{i}_{c}" for i in (1, 2, 3) for c in "xyz")
+    assert len(box.lo) == len(box.hi) == len(box.variables) and len(box.tension_lo) == len(box.taut)
+    assert all(lo <= hi for lo, hi in zip(box.lo, box.hi)) and box.cause in CAUSES
+    d = box.as_dict()
+    assert d["taut"] == list(box.taut) and list(d["enclosure"]) == list(box.variables)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        box.cause = "narrow"  # type: ignore[misc]
+
+
+def test_an_igp_search_cut_by_its_budget_lists_every_missing_solution_in_an_undecided_box():
+    full = solve_igp(ROBOT, IGP_TAUT, IGP_FIX)
+    cut = solve_igp(ROBOT, IGP_TAUT, IGP_FIX, max_boxes=IGP_BUDGET)
+    assert full.complete and len(full.solutions) == 4
+    assert not cut.complete and cut.exhausted and cut.undecided == len(cut.undecided_enclosures) > 0
+    missing = [f for f in full.solutions if not any(_same(s, f) for s in cut.solutions)]
+    assert 0 < len(missing) < len(full.solutions)
+    taut = sorted(IGP_TAUT)
+    for f in missing:
+        assert any(_inside(b, _igp_unknowns(f), f.tensions[taut]) for b in cut.undecided_enclosures), f
+
+
+def test_a_budget_below_one_box_is_refused():
+    with pytest.raises(TautError, match="max_boxes"):
+        solve_dgp(ROBOT, max_boxes=0)
