@@ -34,10 +34,10 @@ def _inside(box, values: dict[str, float], tensions: np.ndarray) -> bool:
     return named and taut
 
 
-def _dgp_unknowns(box, solution) -> dict[str, float]:
+def _dgp_unknowns(box, solution, convention: str) -> dict[str, float]:
     """The reference points' coordinates and their plane's normal at the solution's pose,
     from the body-frame points the box names."""
-    R = rotation_matrix(solution.orientation, ROBOT.orientation)
+    R = rotation_matrix(solution.orientation, convention)
     q = solution.position + np.array(box.points) @ R.T
     n = np.cross(q[1] - q[0], q[2] - q[0])
     values = {f"q{i + 1}_{c}": float(q[i, k]) for i in range(3) for k, c in enumerate("xyz")}
@@ -53,6 +53,20 @@ def _igp_unknowns(solution) -> dict[str, float]:
     return values
 
 
+def _assert_no_silent_gap(robot, full, cut) -> None:
+    """``cut`` lists only equilibria of the complete ``full``, some but not all, and every
+    one it misses lies in one of its undecided boxes of the same taut set."""
+    assert full.complete and full.undecided_enclosures == ()
+    assert not cut.complete and cut.undecided == len(cut.undecided_enclosures) > 0
+    assert {b.cause for b in cut.undecided_enclosures} == {"budget"}
+    assert all(any(_same(s, f) for f in full.solutions) for s in cut.solutions)
+    missing = [f for f in full.solutions if not any(_same(s, f) for s in cut.solutions)]
+    assert 0 < len(missing) < len(full.solutions)
+    for f in missing:
+        boxes = [b for b in cut.undecided_enclosures if b.taut == f.taut]
+        assert any(_inside(b, _dgp_unknowns(b, f, robot.orientation), f.tensions[list(f.taut)]) for b in boxes), f
+
+
 @pytest.fixture(scope="module")
 def dgp_runs():
     return solve_dgp(ROBOT), solve_dgp(ROBOT, max_boxes=DGP_BUDGET)
@@ -60,16 +74,19 @@ def dgp_runs():
 
 def test_a_dgp_search_cut_by_its_budget_lists_every_missing_equilibrium_in_an_undecided_box(dgp_runs):
     full, cut = dgp_runs
-    assert full.complete and full.undecided_enclosures == () and len(full.solutions) == 6
-    assert not cut.complete and cut.undecided == len(cut.undecided_enclosures) > 0
-    assert {b.cause for b in cut.undecided_enclosures} == {"budget"}
-    # what the cut search certified is right, and it found some but not all
-    assert all(any(_same(s, f) for f in full.solutions) for s in cut.solutions)
-    missing = [f for f in full.solutions if not any(_same(s, f) for s in cut.solutions)]
-    assert 0 < len(missing) < len(full.solutions)
-    for f in missing:
-        boxes = [b for b in cut.undecided_enclosures if b.taut == f.taut]
-        assert any(_inside(b, _dgp_unknowns(b, f), f.tensions[list(f.taut)]) for b in boxes), f
+    assert len(full.solutions) == 6
+    _assert_no_silent_gap(ROBOT, full, cut)
+
+
+@pytest.mark.slow
+def test_no_silent_gap_with_three_to_six_taut_cables():
+    """Table 4.6's robot: 34 equilibria of 3 to 6 taut cables; at 500 boxes per sub-problem
+    29 are missed, among them one of six taut cables, whose box's tensions the statics
+    cannot enclose (unbounded)."""
+    robot = load_robot("teaching-prototype")
+    full, cut = solve_dgp(robot), solve_dgp(robot, max_boxes=500)
+    assert {len(s.taut) for s in full.solutions} == {3, 4, 5, 6}
+    _assert_no_silent_gap(robot, full, cut)
 
 
 def test_an_undecided_dgp_box_is_immutable_and_names_its_unknowns(dgp_runs):
