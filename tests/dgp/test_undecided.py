@@ -16,8 +16,12 @@ from taut.model import load_robot
 ROBOT = load_robot("suspended-3cable")
 #: Table 4.3's lengths leave six equilibria; the three-cable sub-problem needs ~58 000 boxes
 DGP_BUDGET = 10_000
-#: four solutions, in ~4 500 boxes
-IGP_TAUT, IGP_FIX, IGP_BUDGET = (2, 0, 1), {"x": 2.7505, "y": 3.9798, "z": 5.5061}, 2_000
+ROBOCRANE = load_robot("robocrane")
+#: (robot, taut, assigned, budget): four solutions each, in ~4 500 and ~3 500 boxes
+IGP_CASES = {
+    "xyz": (ROBOT, (2, 0, 1), {"x": 2.7505, "y": 3.9798, "z": 5.5061}, 2_000),
+    "tilt-torsion": (ROBOCRANE, (0, 2, 4), {"x": 0, "y": 0, "z": 2}, 1_000),
+}
 #: slack for rounding in recomputing a certified solution's unknowns from its pose
 TOL = 1e-9
 
@@ -44,13 +48,13 @@ def _dgp_unknowns(box, solution, convention: str) -> dict[str, float]:
     return values | {f"n_{c}": float(n[k]) for k, c in enumerate("xyz")}
 
 
-def _igp_unknowns(solution) -> dict[str, float]:
-    names = ROBOT.pose_names
-    pose = np.r_[solution.position, solution.orientation]
-    values = {names[k]: float(pose[k]) for k in range(3)}
-    for k in range(3, 6):
-        values |= {f"cos({names[k]})": float(np.cos(pose[k])), f"sin({names[k]})": float(np.sin(pose[k]))}
-    return values
+def _igp_unknowns(robot, solution) -> dict[str, float]:
+    """The free angles' cosines and sines at the solution (of ``σ − φ`` for tilt-and-torsion)."""
+    names = robot.pose_names
+    angles = dict(zip(names[3:6], solution.orientation.tolist()))
+    if robot.orientation == "tilt-torsion":
+        angles["sigma-phi"] = angles.pop("sigma") - angles["phi"]
+    return {f"{f}({k})": float(getattr(np, f)(v)) for k, v in angles.items() for f in ("cos", "sin")}
 
 
 def _assert_no_silent_gap(robot, full, cut) -> None:
@@ -101,16 +105,19 @@ def test_an_undecided_dgp_box_is_immutable_and_names_its_unknowns(dgp_runs):
         box.cause = "narrow"  # type: ignore[misc]
 
 
-def test_an_igp_search_cut_by_its_budget_lists_every_missing_solution_in_an_undecided_box():
-    full = solve_igp(ROBOT, IGP_TAUT, IGP_FIX)
-    cut = solve_igp(ROBOT, IGP_TAUT, IGP_FIX, max_boxes=IGP_BUDGET)
+@pytest.mark.parametrize("case", sorted(IGP_CASES))
+def test_an_igp_search_cut_by_its_budget_lists_every_missing_solution_in_an_undecided_box(case):
+    robot, taut, assigned, budget = IGP_CASES[case]
+    full = solve_igp(robot, taut, assigned)
+    cut = solve_igp(robot, taut, assigned, max_boxes=budget)
     assert full.complete and len(full.solutions) == 4
     assert not cut.complete and cut.exhausted and cut.undecided == len(cut.undecided_enclosures) > 0
+    assert {b.cause for b in cut.undecided_enclosures} == {"budget"}
     missing = [f for f in full.solutions if not any(_same(s, f) for s in cut.solutions)]
     assert 0 < len(missing) < len(full.solutions)
-    taut = sorted(IGP_TAUT)
+    idx = sorted(taut)
     for f in missing:
-        assert any(_inside(b, _igp_unknowns(f), f.tensions[taut]) for b in cut.undecided_enclosures), f
+        assert any(_inside(b, _igp_unknowns(robot, f), f.tensions[idx]) for b in cut.undecided_enclosures), f
 
 
 def test_a_budget_below_one_box_is_refused():

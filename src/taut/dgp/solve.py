@@ -312,8 +312,10 @@ def solve_dgp(
         split = SPLIT
     if not 0 <= split <= 10:
         raise TautError(f"split must be between 0 and 10 (up to 1024 pieces), got {split}")
-    if max_boxes is not None and max_boxes < 1:
-        raise TautError(f"max_boxes must be at least 1, got {max_boxes}")
+    if max_boxes is not None:
+        if int(max_boxes) < 1:
+            raise TautError(f"max_boxes must be at least 1, got {max_boxes}")
+        max_boxes = int(max_boxes)
     runner = as_executor(executor)
     t0 = time.perf_counter()
     subsets = [taut for m in range(top, 0, -1) for taut in combinations(range(n), m)]
