@@ -5,8 +5,12 @@ a complete answer has no warning and exits 0 under ``--strict``."""
 
 import json
 import re
+from itertools import combinations
 
 import pytest
+
+from taut.cli.incomplete import NAMED, warning
+from taut.dgp.undecided import UndecidedBox
 
 FK = ["fk", "suspended-3cable"]
 IGP = ["igp", "suspended-3cable", "--taut", "3,1,2", "--fix", "x=2.7505,y=3.9798,z=5.5061"]
@@ -78,3 +82,12 @@ def test_the_exit_statuses_are_in_the_help(taut_cli, command):
     assert run.code == 0
     text = " ".join(run.out.split())
     assert "Exit status: 0" in text and "2 bad input" in text and "3 the answer is incomplete and --strict" in text
+
+
+def test_the_warning_names_a_dozen_sub_problems_then_counts_the_rest():
+    """An 8-cable robot has 70 four-cable sub-problems: the line stays one readable line."""
+    boxes = [UndecidedBox(t, "narrow", (), (), (), (), ()) for t in combinations(range(8), 4)]
+    line = warning([*boxes, boxes[0]], "equilibria")
+    assert "\n" not in line and line.startswith("taut: warning: 71 boxes could not be certified (71 too narrow")
+    assert len(_named_subsets(line)) == NAMED and f"and {70 - NAMED} more" in line
+    assert _named_subsets(line) == {tuple(k + 1 for k in b.taut) for b in boxes[:NAMED]}

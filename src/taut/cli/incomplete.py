@@ -24,6 +24,10 @@ EXIT_STATUS = (
     f"{INCOMPLETE} the answer is incomplete and --strict was given (the JSON is printed all the same)."
 )
 
+#: The warning names at most this many sub-problems (a robot with many cables has hundreds),
+#: then says how many more; the JSON lists them all.
+NAMED = 12
+
 #: How the warning counts the boxes of each cause of :data:`taut.dgp.undecided.CAUSES`.
 CAUSE_TEXT = {
     "narrow": "too narrow to split",
@@ -47,9 +51,11 @@ def enclosures(boxes: Sequence[UndecidedBox]) -> list[dict]:
 
 def warning(boxes: Sequence[UndecidedBox], what: str) -> str:
     """The one warning line of an incomplete answer: how many boxes, why, and the taut sets
-    (1-based, in first-seen order) of the sub-problems they belong to."""
+    (1-based, in first-seen order, the first :data:`NAMED`) of the sub-problems they belong to."""
     subsets = list(dict.fromkeys(b.taut for b in boxes))
-    names = ", ".join("{" + ",".join(map(str, cable_numbers(t))) + "}" for t in subsets)
+    names = ", ".join("{" + ",".join(map(str, cable_numbers(t))) + "}" for t in subsets[:NAMED])
+    if len(subsets) > NAMED:
+        names += f" and {len(subsets) - NAMED} more"
     causes = dict.fromkeys(CAUSE_TEXT, 0)
     for b in boxes:
         causes[b.cause] += 1
