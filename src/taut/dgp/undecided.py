@@ -2,8 +2,9 @@
 solutions do not list.  A result with any of them is incomplete, and says where.
 
 Every box is an enclosure, in the solver's own unknowns, of the part of a sub-problem's
-domain the search gave up on: any solution of that sub-problem that the result does not
-list lies in one of its undecided boxes.  A box is left undecided for one of three causes
+domain the search gave up on: any solution of that sub-problem with positive tensions that
+the result does not list lies in one of its undecided boxes (one with a zero tension belongs
+to the sub-problem of the other taut cables, :mod:`taut.dgp.solve`).  A box is left undecided for one of three causes
 (:data:`CAUSES`): it became narrower than the bisection threshold without being discarded
 or certified (a singular or nearly double solution, one with a zero tension or on the
 domain's boundary); it was still waiting when the box budget ran out; or it holds a
