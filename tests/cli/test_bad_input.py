@@ -133,6 +133,7 @@ CASES += [
     ("lengths-huge-finite", ["fk", "suspended-3cable", "--lengths=1e13,1,1"], ("out of range",)),
     ("wrench-huge", ["tensions", "planar-4cable", "--wrench", "0,1e300,0"], ("--wrench",)),
     ("max-taut-0", ["fk", "suspended-3cable", "--max-taut", "0"], ("--max-taut",)),
+    ("fk-max-boxes-0", ["fk", "suspended-3cable", "--max-boxes", "0"], ("--max-boxes",)),
     (
         "igp-max-boxes-0",
         ["igp", "suspended-3cable", "--taut", "1,2,3", "--fix", "x=1,y=1,z=1", "--max-boxes", "0"],

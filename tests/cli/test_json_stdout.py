@@ -93,7 +93,11 @@ CASES: list[tuple[str, list[str], Check]] = [
         ["fk", "suspended-3cable", "--max-taut", "2"],
         # Table 4.3 of the thesis: no equilibrium with at most 2 taut cables, 6 sub-problems
         lambda d, tmp: (
-            d["complete"] is True and d["undecided_boxes"] == 0 and d["solutions"] == [] and d["subproblems"] == 6
+            d["complete"] is True
+            and d["undecided_boxes"] == 0
+            and d["undecided_enclosures"] == []
+            and d["solutions"] == []
+            and d["subproblems"] == 6
         ),
     ),
     (

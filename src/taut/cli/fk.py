@@ -1,4 +1,5 @@
-"""``taut fk ROBOT [--lengths L1,...,Ln] [--max-taut K] [--workers N] [--scheduler ADDRESS] [--plot FILE] [--json]``:
+"""``taut fk ROBOT [--lengths L1,...,Ln] [--max-taut K] [--max-boxes N] [--strict] [--workers N]
+[--scheduler ADDRESS] [--plot FILE] [--json]``:
 all equilibrium poses for given cable lengths (the direct geometrico-static problem,
 :func:`taut.dgp.solve_dgp`).  Without ``--lengths`` the robot's ``reference.lengths`` are
 used.  No equilibrium is an empty list, not an error."""
@@ -6,21 +7,29 @@ used.  No equilibrium is an empty list, not an error."""
 from __future__ import annotations
 
 import argparse
-import sys
 
 from taut.cli import args as A
 from taut.cli.cables import cable_numbers, numbered
+from taut.cli.incomplete import EXIT_STATUS, add_strict, enclosures, report
 from taut.cli.main import Command, console, emit, load, save_figure
 from taut.cli.progress import progress_bar, wanted
 from taut.errors import TautError
 
-HELP = """All equilibrium poses of the platform for given cable lengths, every one certified
-(interval branch-and-prune, Krawczyk).  A box too small to split that could be neither
-discarded nor certified (a near-singular solution) is counted in undecided_boxes: the list
-of equilibria is then possibly incomplete, JSON "complete" is false and a warning goes to
-stderr; the exit status stays 0, since the certified solutions are valid.
-JSON: {"robot", "solutions": [{"taut", "position", "orientation", "tensions", "stable", ...}],
-"complete", "subproblems", "undecided_boxes", "elapsed_s"}."""
+HELP = f"""All equilibrium poses of the platform for given cable lengths, every one certified
+(interval branch-and-prune, Krawczyk).  A box that could be neither discarded nor certified
+(too small to split: a near-singular solution; or left when the --max-boxes budget ran out)
+is undecided: the list of equilibria is then possibly incomplete, JSON "complete" is false,
+"undecided_enclosures" holds every such box (its sub-problem's taut cables, the cause, the
+enclosure of the unknowns: the fixed-frame coordinates q1_x ... q3_z of the platform's
+reference points, given in the body frame as "reference_points", and the normal n_x, n_y,
+n_z of their plane; and the taut cables' tensions, null for an unbounded side), and one
+warning line on stderr names the sub-problems.  Every equilibrium not listed lies in one of
+those boxes.
+{EXIT_STATUS}
+JSON: {{"robot", "solutions": [{{"taut", "position", "orientation", "tensions", "stable", ...}}],
+"complete", "subproblems", "undecided_boxes", "undecided_enclosures": [{{"taut", "cause",
+"enclosure": {{name: [lo, hi]}}, "tensions": [[lo, hi], ...], "reference_points"}}], "boxes",
+"elapsed_s"}}."""
 
 
 def cmd_fk(ns: argparse.Namespace) -> int:
@@ -32,29 +41,30 @@ def cmd_fk(ns: argparse.Namespace) -> int:
     lengths = A.vector(ns.lengths, "--lengths") if ns.lengths is not None else None
     if ns.max_taut is not None and ns.max_taut < 1:
         raise TautError(f"--max-taut must be at least 1, got {ns.max_taut}")
+    if ns.max_boxes is not None and ns.max_boxes < 1:
+        raise TautError(f"--max-boxes must be at least 1, got {ns.max_boxes}")
     with (
         get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor,
         progress_bar("fk", wanted(ns.json)) as progress,
     ):
-        res = solve_dgp(robot, lengths, max_taut=ns.max_taut, executor=executor, progress=progress)
+        res = solve_dgp(
+            robot, lengths, max_taut=ns.max_taut, executor=executor, max_boxes=ns.max_boxes, progress=progress
+        )
     data = {
         "robot": robot.name,
         "solutions": [numbered(s.as_dict()) for s in res.solutions],
         "subproblems": res.subproblems,
         "undecided_boxes": res.undecided,
-        "complete": res.undecided == 0,
+        "undecided_enclosures": enclosures(res.undecided_enclosures),
+        "complete": res.complete,
+        "boxes": res.boxes,
         "elapsed_s": res.elapsed_s,
     }
     if plot is not None:
         from taut.viz.dgp import plot_equilibria
 
         save_figure(plot_equilibria(robot, res.solutions), plot, data)
-    if res.undecided:
-        print(
-            f"taut: warning: {res.undecided} boxes could not be certified (near-singular solutions): "
-            "the list of equilibria may be incomplete",
-            file=sys.stderr,
-        )
+    status = report(res.undecided_enclosures, "equilibria", ns.strict)
 
     def human(d: dict) -> None:
         from rich.table import Table
@@ -64,6 +74,7 @@ def cmd_fk(ns: argparse.Namespace) -> int:
         con.width = max(con.width, 20 + 10 * (7 + robot.n_cables))
         t = Table(
             title=f"{robot.name}: {len(res.solutions)} equilibria ({res.subproblems} sub-problems, {res.elapsed_s:.2f} s)"
+            + ("" if res.complete else f", incomplete: {res.undecided} boxes undecided")
         )
         for h in ("taut", *robot.pose_names, *(f"τ{i + 1}" for i in range(robot.n_cables)), "stable"):
             t.add_column(h, justify="right")
@@ -78,7 +89,7 @@ def cmd_fk(ns: argparse.Namespace) -> int:
         con.print(t)
 
     emit(data, ns.json, human)
-    return 0
+    return status
 
 
 def register(command: Command) -> None:
@@ -89,6 +100,15 @@ def register(command: Command) -> None:
     c.add_argument(
         "--max-taut", type=int, default=None, metavar="K", help="largest number of taut cables (default min(n, 6))"
     )
+    c.add_argument(
+        "--max-boxes",
+        type=int,
+        default=None,
+        metavar="N",
+        help="box budget of every sub-problem; the boxes left when it runs out are undecided "
+        "(default: a guard of 2000000 boxes per piece of a sub-problem)",
+    )
+    add_strict(c)
     c.add_argument("--workers", type=A.worker_count, default=1, help="local worker processes")
     c.add_argument("--scheduler", default=None, metavar="ADDRESS", help="dask.distributed scheduler tcp://HOST:PORT")
     c.add_argument("--plot", metavar="FILE.png", help="the robot in every equilibrium found")

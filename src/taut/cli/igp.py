@@ -1,4 +1,4 @@
-"""``taut igp ROBOT --taut 1,2,3 --fix x=0.3,y=0.4,z=0.1 [--box ...] [--json]``: the inverse
+"""``taut igp ROBOT --taut 1,2,3 --fix x=0.3,y=0.4,z=0.1 [--box ...] [--max-boxes N] [--strict] [--json]``: the inverse
 geometrico-static problem (:func:`taut.dgp.solve_igp`).  No solution is an empty list, not
 an error.
 
@@ -14,6 +14,7 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING
 
+from taut.cli.incomplete import EXIT_STATUS, add_strict, enclosures, report
 from taut.errors import CableSetError, PoseError, TautError
 
 if TYPE_CHECKING:
@@ -22,20 +23,25 @@ if TYPE_CHECKING:
 
     from taut.cli.main import Command
 
-if TYPE_CHECKING:
-    from rich.console import Console
-
-HELP = """With the cables of --taut taut (m of them, 2 <= m <= 6) only m pose coordinates
+HELP = f"""With the cables of --taut taut (m of them, 2 <= m <= 6) only m pose coordinates
 can be assigned: give them with --fix (names x, y, z and the robot's angle names, e.g.
 a, b, c or phix, phiy, phiz for xyz conventions, phi, theta, sigma for tilt-torsion;
 angles in rad, or 30deg, pi/8).  Every equilibrium with tensions >= 0 is found and
 certified (Berti 2015, §4.1.2; interval branch-and-prune): the free
 coordinates, the tensions and the cable lengths to command.  A slack cable's length is
 its span (pay out at least that much); cables outside their length bounds are listed.
-JSON: {"robot", "taut", "assigned", "solutions": [{"taut", "position", "orientation",
+A box that could be neither discarded nor certified (too small to split: a zero-tension or
+singular solution; or left when the --max-boxes budget ran out) is undecided: the list is
+then possibly incomplete, JSON "complete" is false, "undecided_enclosures" holds every such
+box (the cause, the enclosure of the unknowns: the free position coordinates and the cosine
+and sine of every free angle, and the taut cables' tensions, null for an unbounded side)
+and one warning line goes to stderr.  Every solution not listed lies in one of those boxes.
+{EXIT_STATUS}
+JSON: {{"robot", "taut", "assigned", "solutions": [{{"taut", "position", "orientation",
 "tensions", "lengths", "slack", "length_violations", "stable", "certificate_width",
-"uniqueness_radius"}], "undecided_boxes", "boxes", "exhausted", "elapsed_s"}; the list is
-complete when undecided_boxes is 0."""
+"uniqueness_radius"}}], "complete", "undecided_boxes", "undecided_enclosures": [{{"taut",
+"cause", "enclosure": {{name: [lo, hi]}}, "tensions": [[lo, hi], ...]}}], "boxes",
+"exhausted", "elapsed_s"}}."""
 
 
 def _cables(text: str) -> list[int]:
@@ -90,7 +96,9 @@ def cmd_igp(ns: argparse.Namespace) -> int:
         "taut": sorted(cables),
         "assigned": res.assigned,
         "solutions": [numbered(s.as_dict()) for s in res.solutions],
+        "complete": res.complete,
         "undecided_boxes": res.undecided,
+        "undecided_enclosures": enclosures(res.undecided_enclosures),
         "boxes": res.boxes,
         "exhausted": res.exhausted,
         "elapsed_s": res.elapsed_s,
@@ -142,11 +150,10 @@ def cmd_igp(ns: argparse.Namespace) -> int:
                 f"[yellow]the budget of {ns.max_boxes} boxes ran out ({res.undecided} undecided): the list may be "
                 "incomplete — a continuum of solutions? (--max-boxes)[/]"
             )
-        elif res.undecided:
-            con.print(f"[yellow]{res.undecided} boxes could not be certified (zero-tension or singular solutions)[/]")
 
+    status = report(res.undecided_enclosures, "solutions", ns.strict)
     emit(data, ns.json, human)
-    return 0
+    return status
 
 
 def register(command: Command) -> None:
@@ -163,3 +170,4 @@ def register(command: Command) -> None:
         help="search box of the free position coordinates xmin,ymin,zmin,xmax,ymax,zmax "
         "(default: the taut cables' reach around their exit points)",
     )
+    add_strict(c)

@@ -67,6 +67,7 @@ import numpy.typing as npt
 
 from taut.dgp.formulation import load
 from taut.dgp.stability import is_stable
+from taut.dgp.undecided import UndecidedBox, cause_of, scaled
 from taut.errors import CableSetError, PoseError, TautError, UnsupportedRobotError
 from taut.geometry.rotation import rotation_matrix
 from taut.interval.branch_prune import branch_and_prune
@@ -118,18 +119,23 @@ class IGPSolution:
 class IGPResult:
     solutions: list[IGPSolution]
     assigned: dict[str, float]  #: the assigned coordinates, by the robot's pose names
-    #: boxes that could not be decided: of width < eps around a solution with a zero tension
-    #: (it belongs to a smaller taut set) or a singular one (a fold, a continuum), and those
-    #: left when the box budget ran out
-    undecided: int
+    #: boxes that could not be decided (:mod:`taut.dgp.undecided`): of width < eps around a
+    #: solution with a zero tension (it belongs to a smaller taut set) or a singular one (a
+    #: fold, a continuum), and those left when the box budget ran out
+    undecided_enclosures: tuple[UndecidedBox, ...]
     boxes: int
     exhausted: bool  #: the box budget ran out (typically on a continuum of solutions)
     elapsed_s: float
 
     @property
+    def undecided(self) -> int:
+        """How many boxes were left undecided."""
+        return len(self.undecided_enclosures)
+
+    @property
     def complete(self) -> bool:
-        """Every solution in the domain is in ``solutions`` (no box left undecided)."""
-        return self.undecided == 0
+        """Every solution in the domain is in ``solutions``: no box was left undecided."""
+        return not self.undecided_enclosures
 
 
 def _check_robot(robot: Robot) -> None:
@@ -427,7 +433,8 @@ def solve_igp(
     names = robot.pose_names[:6]
     t0 = time.perf_counter()
     solutions: list[IGPSolution] = []
-    undecided = boxes = 0
+    undecided: tuple[UndecidedBox, ...] = ()
+    boxes = 0
     exhausted = False
     if np.all(pos_lo < pos_hi):  # the taut cables' reach boxes can miss each other
         pb = _build(robot, idx, fixed, pos_lo, pos_hi)
@@ -444,7 +451,10 @@ def solve_igp(
         )
         solutions = [_solution(robot, idx, fixed, pb, c) for c in res.solutions]
         solutions.sort(key=lambda s: (not s.stable, *s.position, *s.orientation))
-        undecided, boxes, exhausted = len(res.undecided), min(res.boxes, max_boxes), res.boxes > max_boxes
+        undecided = tuple(
+            _undecided(robot, idx, fixed, pb, blo, bhi, cause_of(blo, bhi, eps)) for blo, bhi in res.undecided
+        )
+        boxes, exhausted = min(res.boxes, max_boxes), res.boxes > max_boxes
     elif progress is not None:
         progress(0, 0)
     return IGPResult(
@@ -465,6 +475,47 @@ def _within_budget(progress: Callable[[int, int | None], None], budget: int) -> 
         progress(min(done, budget), None if total is None else min(total, budget))
 
     return report
+
+
+def _unknown_names(robot: Robot, pb: _Problem) -> tuple[str, ...]:
+    """Names of the pose unknowns: the free position coordinates, then the cosine and sine
+    of every free angle (of ``σ − φ`` for a free ``σ`` of tilt-and-torsion)."""
+    names = robot.pose_names[:6]
+    angles = [names[3 + k] for k in pb.free_ang]
+    if robot.orientation == "tilt-torsion" and 2 in pb.free_ang:
+        angles[-1] = f"{names[5]}-{names[3]}"
+    return (*(names[k] for k in pb.free_pos), *(f"{f}({a})" for a in angles for f in ("cos", "sin")))
+
+
+def _undecided(
+    robot: Robot,
+    taut: tuple[int, ...],
+    fixed: dict[int, float],
+    pb: _Problem,
+    lo: np.ndarray,
+    hi: np.ndarray,
+    cause: str,
+) -> UndecidedBox:
+    """The undecided box ``[lo, hi]`` with the tensions ``τ_i = t_i ‖a_i − b_i‖`` enclosed
+    through the cable lengths over it: the anchor ``b_i = p + R r_i`` lies within ``‖r_i‖``
+    of the origin ``p``, which lies in the box's position range."""
+    k = lo.size - len(taut)
+    p_lo = np.array([fixed.get(c, 0.0) for c in range(3)])
+    p_hi = p_lo.copy()
+    p_lo[pb.free_pos], p_hi[pb.free_pos] = lo[: len(pb.free_pos)], hi[: len(pb.free_pos)]
+    a, r = robot.exits[list(taut)], robot.anchors[list(taut)]
+    near = np.linalg.norm(np.clip(a, p_lo, p_hi) - a, axis=1)
+    far = np.linalg.norm(np.maximum(np.abs(a - p_lo), np.abs(a - p_hi)), axis=1)
+    arm = np.linalg.norm(r, axis=1)
+    widen = 1.0 + 8.0 * np.finfo(float).eps  # covers the rounding of the norms and sums
+    length_lo = np.maximum(0.0, (near - arm) / widen)
+    length_hi = (far + arm) * widen
+    t_lo, t_hi = lo[k:], hi[k:]
+    tension_lo, _ = scaled(t_lo, t_lo, length_lo)
+    _, tension_hi = scaled(t_hi, t_hi, length_hi)
+    return UndecidedBox(
+        taut, cause, _unknown_names(robot, pb), tuple(lo[:k].tolist()), tuple(hi[:k].tolist()), tension_lo, tension_hi
+    )
 
 
 def _solution(

@@ -31,6 +31,7 @@ import numpy.typing as npt
 from taut.dgp.formulation import Subproblem, build_subproblem, load
 from taut.dgp.single_cable import single_cable_equilibria
 from taut.dgp.stability import is_stable
+from taut.dgp.undecided import UndecidedBox, cause_of, subproblem_box
 from taut.errors import TautError
 from taut.geometry.rotation import angles_from_matrix
 from taut.interval.branch_prune import Box, bisect, branch_and_prune, same_solution
@@ -77,14 +78,20 @@ class DGPResult:
 
     solutions: list[DGPSolution]
     subproblems: int  #: taut subsets solved
-    undecided: int  #: boxes of width < eps that could not be certified (should be 0)
+    #: the boxes no solution could be excluded from (:mod:`taut.dgp.undecided`), in job order
+    undecided_enclosures: tuple[UndecidedBox, ...]
     boxes: int  #: boxes processed by branch-and-prune over all sub-problems
     elapsed_s: float
 
     @property
+    def undecided(self) -> int:
+        """How many boxes were left undecided (should be 0)."""
+        return len(self.undecided_enclosures)
+
+    @property
     def complete(self) -> bool:
-        """Every equilibrium is in ``solutions`` (no box left undecided)."""
-        return self.undecided == 0
+        """Every equilibrium is in ``solutions``: no box was left undecided."""
+        return not self.undecided_enclosures
 
 
 def solution_key(solution: DGPSolution) -> tuple:
@@ -157,14 +164,20 @@ def _prepared(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: i
     return hit
 
 
-#: A job of :func:`solve_dgp`: robot, lengths, taut cables (0-based), eps, split, piece.
-Job = tuple[Robot, np.ndarray, tuple[int, ...], float, int, int]
+#: The box budget of one piece of a sub-problem when :func:`solve_dgp` is given none: a
+#: guard against a search that would never end (branch-and-prune's default).
+PIECE_BOXES = 2_000_000
+
+#: A job of :func:`solve_dgp`: robot, lengths, taut cables (0-based), eps, split, piece,
+#: box budget of the sub-problem (None: :data:`PIECE_BOXES` per piece).
+Job = tuple[Robot, np.ndarray, tuple[int, ...], float, int, int, int | None]
 
 
-def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], int, int]:
+def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], list[UndecidedBox], int]:
     """One job of :func:`solve_dgp`: the sub-problem of ``taut`` on piece ``k`` of
-    ``pieces`` of its domain.  Returns ``(solutions, certificates, undecided, boxes)``."""
-    robot, lengths, taut, eps, split, k = job
+    ``pieces`` of its domain, with an equal share of the sub-problem's box budget.
+    Returns ``(solutions, certificates, undecided boxes, boxes)``."""
+    robot, lengths, taut, eps, split, k, budget = job
     n = robot.n_cables
     a, r = robot.exits, robot.anchors
     _, _, gp = load(robot)
@@ -183,10 +196,10 @@ def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None],
                     s["continuum"],
                 )
             )
-        return out, [None] * len(out), 0, 0
+        return out, [None] * len(out), [], 0
     sp, pieces = _prepared(robot, lengths, taut, split)
     if k >= len(pieces):  # fewer pieces hold solutions than were asked for
-        return out, [], 0, 0
+        return out, [], [], 0
     lo, hi = pieces[k]
     width = certify_width(len(taut))
     # the statics filter on the boxes Krawczyk is tried on: on wider ones its interval Gauss
@@ -205,9 +218,10 @@ def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None],
         bisection="smear",
         tube=sp.geometry,
         filter_width=width,
+        max_boxes=PIECE_BOXES if budget is None else -(-budget // len(pieces)),
     )
     idx = list(taut)
-    undecided = len(res.undecided)
+    undecided = [subproblem_box(sp, lengths, blo, bhi, cause_of(blo, bhi, eps)) for blo, bhi in res.undecided]
     certs: list[Certificate | None] = []
     for c in res.solutions:
         if not sp.tension_unknowns:
@@ -215,7 +229,7 @@ def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None],
             # solution is infeasible or belongs to a smaller subset (a zero tension)
             enc = sp.statics.enclosure(c.lo, c.hi)
             if enc is None:
-                undecided += 1
+                undecided.append(subproblem_box(sp, lengths, c.lo, c.hi, "tension-sign"))
                 continue
             if not np.all(enc[0] > 0.0):
                 continue
@@ -230,10 +244,10 @@ def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None],
 
 
 def _solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple[list[DGPSolution], int, int]:
-    """The whole sub-problem of ``taut``: ``(solutions, undecided boxes, boxes)``."""
+    """The whole sub-problem of ``taut``: ``(solutions, number of undecided boxes, boxes)``."""
     robot, lengths, taut, eps = job
-    sols, _, undecided, boxes = _solve_piece((robot, lengths, taut, eps, 0, 0))
-    return sols, undecided, boxes
+    sols, _, undecided, boxes = _solve_piece((robot, lengths, taut, eps, 0, 0, None))
+    return sols, len(undecided), boxes
 
 
 #: Default ``split`` of :func:`solve_dgp`, whatever the executor, so that every executor
@@ -251,6 +265,7 @@ def solve_dgp(
     executor: Executor | Client | None = None,
     eps: float = 1e-7,
     split: int | None = None,
+    max_boxes: int | None = None,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> DGPResult:
     """All admissible equilibria (``τ ≥ 0``) for the cable lengths (default: the robot's
@@ -265,8 +280,14 @@ def solve_dgp(
     reported once (:func:`same_solution`), from the first piece in job order.  Each job is
     computed by the same code whatever the executor, so for a given ``split`` the solutions
     are bitwise identical on every executor; they are sorted by :func:`solution_key`.
+    ``max_boxes``: the box budget of every sub-problem, shared equally by its pieces (by
+    default :data:`PIECE_BOXES` per piece); the boxes left when it runs out are undecided.
     ``progress(done, total)`` is called with the number of jobs done (pieces of
     sub-problems) out of all of them, from 0 to the total.
+
+    The result is :attr:`~DGPResult.complete` when no box was left undecided; otherwise
+    every equilibrium it does not list lies in one of its
+    :attr:`~DGPResult.undecided_enclosures` (:mod:`taut.dgp.undecided`).
 
     References
     ----------
@@ -291,11 +312,15 @@ def solve_dgp(
         split = SPLIT
     if not 0 <= split <= 10:
         raise TautError(f"split must be between 0 and 10 (up to 1024 pieces), got {split}")
+    if max_boxes is not None:
+        if int(max_boxes) < 1:
+            raise TautError(f"max_boxes must be at least 1, got {max_boxes}")
+        max_boxes = int(max_boxes)
     runner = as_executor(executor)
     t0 = time.perf_counter()
     subsets = [taut for m in range(top, 0, -1) for taut in combinations(range(n), m)]
     jobs = [
-        (robot, checked, taut, eps, split if len(taut) >= 3 else 0, k)
+        (robot, checked, taut, eps, split if len(taut) >= 3 else 0, k, max_boxes)
         for taut in subsets
         for k in range(2**split if len(taut) >= 3 else 1)
     ]
@@ -316,7 +341,8 @@ def solve_dgp(
             runner.close()
     solutions: list[DGPSolution] = []
     kept: dict[tuple[int, ...], list] = {}
-    undecided = boxes = 0
+    undecided: list[UndecidedBox] = []
+    boxes = 0
     for sols, certs, und, count in parts:
         for sol, cert in zip(sols, certs):
             seen = kept.setdefault(sol.taut, [])
@@ -327,4 +353,4 @@ def solve_dgp(
         undecided += und
         boxes += count
     solutions.sort(key=solution_key)
-    return DGPResult(solutions, len(subsets), undecided, boxes, time.perf_counter() - t0)
+    return DGPResult(solutions, len(subsets), tuple(undecided), boxes, time.perf_counter() - t0)
