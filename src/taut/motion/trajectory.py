@@ -42,7 +42,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TrajectoryError
-from taut.geometry.rates import angular_acceleration, angular_velocity
+from taut.geometry.rates import rate_matrix, rate_matrix_derivative
 from taut.model.robot import Robot
 from taut.motion.laws import (
     DEGREE,
@@ -112,7 +112,11 @@ class Motion:
     """A timed trajectory of ``robot``: piecewise polynomials ``q(t) = Σ_j c_j (t − t_k)^j`` on
     ``[breaks[k], breaks[k+1]]`` with ``coefficients[k, j]`` (``(K, 6, pose_size)``), through
     ``waypoints`` ``(N, pose_size)`` (angles unwrapped) at ``times`` ``(N,)``, from 0 to
-    :attr:`duration`.  Build it with :func:`trajectory_from_waypoints`."""
+    :attr:`duration`, with the time ``law`` and the velocities at via points ``via`` (one of
+    :data:`~taut.motion.vias.VIAS`, or ``"given"`` when they were given).  At a break the
+    piece that ends there is evaluated (as CASPR samples a segment up to its end), which
+    matters only where the law's velocity or acceleration jumps.  Build it with
+    :func:`trajectory_from_waypoints`."""
 
     robot: Robot
     law: str
@@ -151,9 +155,12 @@ class Motion:
         q, qd, qdd = self._evaluate(t)
         cols = angle_columns(self.robot)
         if self.robot.dimension == 3 and not self.robot.is_point_mass:
-            conv = self.robot.orientation
-            w = angular_velocity(q[:, cols], qd[:, cols], conv)
-            a = angular_acceleration(q[:, cols], qd[:, cols], qdd[:, cols], conv)
+            # ω = E q̇, α = E q̈ + Ė q̇: E built once for both
+            angles, rates = q[:, cols], qd[:, cols]
+            E = rate_matrix(angles, self.robot.orientation)
+            Ed = rate_matrix_derivative(angles, rates, self.robot.orientation)
+            w = np.einsum("nij,nj->ni", E, rates)
+            a = np.einsum("nij,nj->ni", E, qdd[:, cols]) + np.einsum("nij,nj->ni", Ed, rates)
         else:
             w, a = qd[:, cols], qdd[:, cols]
         return MotionSamples(t, q, qd, qdd, w, a, tuple(self.robot.pose_names))
