@@ -229,6 +229,7 @@ def test_samples_and_immutability():
 
 BAD = [
     (dict(waypoints=[[0.3, 0.3, 0]], durations=1.0), "at least 2 waypoints, got 1"),
+    (dict(waypoints=[], durations=1.0), "at least 2 waypoints, got none"),
     (dict(waypoints=[[0.3, 0.3, 0, 1], [0.4, 0.3, 0, 1]], durations=1.0), "takes poses of 3 coordinates"),
     (dict(waypoints=[[0.3, 0.3, 0], [np.nan, 0.3, 0]], durations=1.0), "waypoint 2, coordinate x is not finite"),
     (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=0.0), "durations must be finite numbers > 0"),

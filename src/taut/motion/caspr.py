@@ -69,8 +69,10 @@ KINDS = {
 @dataclass(frozen=True)
 class CasprTrajectory:
     """One trajectory of a CASPR file: its ``id``, CASPR element ``kind``, the
-    :class:`Motion` and CASPR's sampling ``time_step`` [s] (``motion.sample(1 / time_step)``
-    gives CASPR's samples, and the end point)."""
+    :class:`Motion` and CASPR's sampling ``time_step`` [s].  ``motion.sample(1 / time_step)``
+    gives CASPR's samples when the points' times are whole multiples of ``time_step`` (CASPR
+    restarts its grid ``t_s : time_step : t_e`` at every point; taut's grid runs on from 0
+    and ends at the end point)."""
 
     id: str
     kind: str

@@ -41,6 +41,8 @@ def validate_waypoints(robot: Robot, waypoints: npt.ArrayLike, what: str = "wayp
         W = np.array(waypoints, dtype=float)
     except (TypeError, ValueError):
         raise TrajectoryError(f"{what}: expected lists of numbers, got {waypoints!r}") from None
+    if W.size == 0:
+        raise TrajectoryError(f"{what}: a trajectory needs at least 2 waypoints, got none")
     if W.ndim != 2 or W.shape[1] != robot.pose_size:
         raise TrajectoryError(
             f"{what}: {robot.name} takes poses of {robot.pose_size} coordinates ({', '.join(robot.pose_names)}), "
