@@ -245,6 +245,19 @@ def test_malformed_files(tmp_path, body, message):
     assert "\n" not in str(info.value)
 
 
+def test_unwrap_on_request(tmp_path):
+    body = (
+        "<linear_spline_trajectory id='turn' time_definition='relative' time_step='0.1'><points>"
+        "<point><q>0.3 0.5 3.0</q></point><point time='1'><q>0.3 0.5 -3.0</q></point>"
+        "</points></linear_spline_trajectory>"
+    )
+    path = _write(tmp_path, body)
+    as_caspr = read_caspr_trajectories(path, bodies=PLANAR_XZ)[1]["turn"].motion
+    assert as_caspr.waypoints[:, 2].tolist() == [-3.0, 3.0]  # θ = −θ_CASPR, the long way, as CASPR
+    short = read_caspr_trajectories(path, bodies=PLANAR_XZ, unwrap=True)[1]["turn"].motion
+    assert short.waypoints[:, 2] == pytest.approx([-3.0, -2 * np.pi + 3.0])
+
+
 def test_file_names_and_missing_model(tmp_path):
     path = tmp_path / "motion.xml"
     path.write_text("<trajectories/>")

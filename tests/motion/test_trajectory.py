@@ -178,6 +178,14 @@ def test_jointed_platform_joint_coordinates():
     assert np.allclose(s.pose[second, 6], 2.0 + 2.0 * (10 * tau**3 - 15 * tau**4 + 6 * tau**5), atol=1e-12)
 
 
+def test_robot_trajectory_steps_share_the_duration():
+    tr = JOINTED.trajectories["sim-a"].model_copy(update={"steps": (100, 300)})
+    robot = JOINTED.model_copy(update={"trajectories": {"uneven": tr}})
+    m = trajectory_from_robot(robot, "uneven", duration=4.0, law="cubic")
+    assert m.times.tolist() == [0.0, 1.0, 4.0]
+    assert np.allclose(m.at(m.times).pose, tr.waypoints)
+
+
 def test_a_spline_that_overshoots_a_joint_limit_is_refused():
     W = np.array(
         [[5, 5, 4.5, 0, 0, 0, 0.5], [5, 5, 4.0, 0, 0, 0, 4.4], [5, 5, 3.5, 0, 0, 0, 4.5], [5, 5, 3.0, 0, 0, 0, 0.5]]
