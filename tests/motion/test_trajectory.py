@@ -252,7 +252,10 @@ BAD = [
     (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, duration=1.0), "got durations, duration"),
     (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, law="septic"), "unknown time law 'septic'"),
     (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, via="magic"), "unknown via-point velocities"),
-    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, law="trapezoidal", via="average"), "stops at every"),
+    (
+        dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, law="trapezoidal", via="average"),
+        "fixes the velocities at the waypoints",
+    ),
     (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, law="quintic", via="spline"), "law='cubic'"),
     (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, law="trapezoidal", blend=0.6), "<= 0.5"),
     (dict(waypoints=[[0.3, 0.3, 0], [0.3, 0.3, 0]], duration=1.0), "coincide"),

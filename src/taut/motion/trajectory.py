@@ -321,7 +321,8 @@ def trajectory_from_waypoints(
 
     ``law`` is ``linear``, ``cubic``, ``quintic`` or ``trapezoidal`` (:mod:`taut.motion.laws`);
     ``via`` is ``stop``, ``average`` or ``spline`` (:mod:`taut.motion.vias`; ``spline`` is a
-    cubic spline, ``linear`` and ``trapezoidal`` stop at every waypoint).  ``velocities`` and
+    cubic spline; ``linear`` keeps each segment's constant velocity and ``trapezoidal`` stops at
+    every waypoint, so both take only ``stop``).  ``velocities`` and
     ``accelerations`` ``(N, pose_size)`` give the state at every waypoint instead (cubic:
     velocities; quintic: both, accelerations zero when not given), as CASPR's
     ``cubic_spline_trajectory`` and ``quintic_spline_trajectory`` do.  ``blend`` is the blend
@@ -350,7 +351,10 @@ def trajectory_from_waypoints(
             + (f"; got {', '.join(chosen)}" if chosen else "")
         )
     if law in ("linear", "trapezoidal") and via != "stop":
-        raise TrajectoryError(f"the {law} law stops at every waypoint: via={via!r} needs law cubic or quintic")
+        own = "each segment's constant velocity" if law == "linear" else "at rest"
+        raise TrajectoryError(
+            f"the {law} law fixes the velocities at the waypoints ({own}): via={via!r} needs law cubic or quintic"
+        )
     if via == "spline" and law != "cubic":
         raise TrajectoryError("via='spline' is the cubic spline: give law='cubic'")
     if velocities is not None and (law not in ("cubic", "quintic") or via != "stop"):
