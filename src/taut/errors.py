@@ -43,3 +43,9 @@ class TrackingLostError(TautError):
 class GridSizeError(TautError):
     """A grid of more poses than taut evaluates in memory, or an array of its poses larger
     than it materialises at once."""
+
+
+class TrajectoryError(TautError):
+    """A trajectory that cannot be built or sampled: fewer than two waypoints, waypoints of the
+    wrong size or not finite, non-increasing times, a non-positive duration or rate, an
+    unknown time law, a sample time outside the trajectory."""

@@ -1,0 +1,310 @@
+"""Trajectories: angular rates against rotation matrices, the short way between angles, via
+points, jointed platforms, robot-file trajectories, sampling and bad input."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy.interpolate import CubicSpline
+
+import taut
+from taut.errors import TautError, TrajectoryError
+from taut.geometry.rotation import rotation_matrix
+from taut.model import robot_from_dict
+from taut.model.robot import Trajectory
+from taut.motion import Motion, trajectory_from_robot, trajectory_from_waypoints, unwrap_angles
+
+SPATIAL = taut.example("spatial-8cable")  # xyz-fixed
+JOINTED = taut.example("adjustable-8cable")  # xyz-moving, prismatic joint s23
+ROBOCRANE = taut.example("robocrane")  # tilt-torsion
+PLANAR = taut.example("planar-4cable")
+AGRICULTURE = taut.example("vscr-agriculture")  # point mass, waypoints by position, speed and dwell
+ROBOTS = {r.orientation: r for r in (SPATIAL, JOINTED, ROBOCRANE)}
+
+angle = st.floats(-math.pi, math.pi)
+angles = st.tuples(angle, angle, angle)
+
+
+def _spatial_waypoints(robot, orientations):
+    W = np.zeros((len(orientations), robot.pose_size))
+    W[:, 3:6] = orientations
+    W[:, :3] = np.linspace([0.1, 0.2, 0.3], [0.4, 0.1, 0.5], len(orientations))
+    if robot.n_joints:
+        W[:, 6] = 2.0
+    return W
+
+
+def _skew(W):
+    return np.stack([W[..., 2, 1], W[..., 0, 2], W[..., 1, 0]], axis=-1)
+
+
+@pytest.mark.parametrize("convention", sorted(ROBOTS))
+@settings(max_examples=20, deadline=None)
+@given(orientations=st.lists(angles, min_size=2, max_size=4), law=st.sampled_from(["cubic", "quintic"]))
+def test_angular_velocity_and_acceleration_match_rotation_matrices(convention, orientations, law):
+    robot = ROBOTS[convention]
+    m = trajectory_from_waypoints(robot, _spatial_waypoints(robot, orientations), 1.0, law=law, via="average")
+    h = 1e-4
+    t = np.linspace(h, m.duration - h, 23)[1:-1]
+    t = t[np.min(np.abs(t[:, None] - m.breaks[None, :]), axis=1) > 2 * h]
+    s = m.at(t)
+
+    def R(times):
+        return rotation_matrix(m.at(times).pose[:, 3:6], convention)
+
+    R0, Rp, Rm = R(t), R(t + h), R(t - h)
+    Rd = (Rp - Rm) / (2 * h)
+    Rdd = (Rp - 2 * R0 + Rm) / h**2
+    omega = Rd @ np.swapaxes(R0, 1, 2)  # [ω]× = Ṙ Rᵀ
+    assert np.allclose(omega, -np.swapaxes(omega, 1, 2), atol=1e-5)
+    assert np.allclose(s.angular_velocity, _skew(omega), atol=1e-5 * (1 + np.abs(s.angular_velocity).max()))
+    # [α]× = d/dt(Ṙ Rᵀ) = R̈ Rᵀ + Ṙ Ṙᵀ
+    alpha = Rdd @ np.swapaxes(R0, 1, 2) + Rd @ np.swapaxes(Rd, 1, 2)
+    scale = 1 + np.abs(s.angular_acceleration).max()
+    assert np.allclose(s.angular_acceleration, _skew(alpha), atol=1e-3 * scale)
+
+
+def test_planar_and_point_mass_angular_rates():
+    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, -0.2], [0.6, 0.5, 0.4]], 2.0)
+    s = m.sample(50)
+    assert s.angular_velocity.shape == (len(s.time), 1)
+    assert np.array_equal(s.angular_velocity[:, 0], s.velocity[:, 2])  # ω = θ̇
+    assert np.array_equal(s.angular_acceleration[:, 0], s.acceleration[:, 2])
+    point = trajectory_from_waypoints(AGRICULTURE, [[0, 0.3], [0.1, 0.5]], 1.0).sample(10)
+    assert point.angular_velocity.shape == (11, 0)
+
+
+@pytest.mark.parametrize("convention", sorted(ROBOTS))
+def test_angles_take_the_short_way_across_pi(convention):
+    robot = ROBOTS[convention]
+    start, end = [3.0, 0.3, -3.1], [-3.0, 0.2, 3.05]
+    W = _spatial_waypoints(robot, [start, end])
+    m = trajectory_from_waypoints(robot, W, 1.0)
+    s = m.sample(200)
+    # each angle moves by less than π: 3.0 → 2π − 3.0 (0.283 rad), −3.1 → 3.05 − 2π (0.133 rad)
+    travel = np.abs(s.pose[-1, 3:6] - s.pose[0, 3:6])
+    assert travel == pytest.approx([2 * math.pi - 6.0, 0.1, 2 * math.pi - 6.15])
+    assert np.all(np.abs(np.diff(s.pose[:, 3:6], axis=0)) < 0.01)
+    # the end is the waypoint's rotation
+    assert np.allclose(rotation_matrix(s.pose[-1, 3:6], convention), rotation_matrix(end, convention), atol=1e-12)
+    # without unwrapping the long way is kept (a deliberate turn)
+    long = trajectory_from_waypoints(robot, W, 1.0, unwrap=False).sample(200)
+    assert np.abs(long.pose[-1, 3] - long.pose[0, 3]) == pytest.approx(6.0)
+
+
+@settings(max_examples=60, deadline=None)
+@given(orientations=st.lists(st.tuples(*[st.floats(-20, 20)] * 3), min_size=2, max_size=5))
+def test_unwrap_keeps_each_rotation_and_steps_at_most_pi(orientations):
+    for convention, robot in ROBOTS.items():
+        W = _spatial_waypoints(robot, orientations)
+        U = unwrap_angles(robot, W)
+        assert np.all(np.abs(np.diff(U[:, 3:6], axis=0)) <= math.pi + 1e-9)
+        assert np.allclose(rotation_matrix(U[:, 3:6], convention), rotation_matrix(W[:, 3:6], convention), atol=1e-9)
+        assert np.array_equal(U[0], W[0]) and np.array_equal(U[:, :3], W[:, :3])
+        assert np.allclose((U[:, 3:6] - W[:, 3:6]) / (2 * math.pi), np.round((U[:, 3:6] - W[:, 3:6]) / (2 * math.pi)))
+
+
+def test_planar_angle_unwraps_too():
+    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 3.1], [0.3, 0.3, -3.1]], 1.0)
+    assert m.waypoints[1, 2] == pytest.approx(2 * math.pi - 3.1)
+
+
+def test_gimbal_lock_waypoint_gives_finite_exact_rates():
+    # b = π/2 (xyz-fixed) and tilt θ = 0 (tilt-torsion): E(q) is singular there, but ω = E q̇
+    # needs no inverse: the rates stay finite and match R(q(t))
+    for robot, locked in ((SPATIAL, [0.2, math.pi / 2, -0.4]), (ROBOCRANE, [0.7, 0.0, 0.3])):
+        W = _spatial_waypoints(robot, [[0.0, 0.3, 0.0], locked, [0.3, 0.2, 0.1]])
+        m = trajectory_from_waypoints(robot, W, 1.0, law="cubic", via="spline")
+        h = 1e-6
+        s = m.at([1.0])
+        Rd = (
+            rotation_matrix(m.at([1 + h]).pose[:, 3:6], robot.orientation)
+            - rotation_matrix(m.at([1 - h]).pose[:, 3:6], robot.orientation)
+        ) / (2 * h)
+        omega = Rd @ np.swapaxes(rotation_matrix(s.pose[:, 3:6], robot.orientation), 1, 2)
+        assert np.all(np.isfinite(s.angular_velocity))
+        assert np.allclose(s.angular_velocity, _skew(omega), atol=1e-6)
+
+
+def test_via_points_continuity_and_independent_spline():
+    W = np.array(
+        [[0.1, 0.1, 0.1, 0, 0, 0], [0.4, 0.2, 0.3, 0.2, 0, 0], [0.2, 0.5, 0.2, 0.1, 0.3, 0], [0.5, 0.5, 0.5, 0, 0, 0.4]]
+    )
+    d = [1.0, 0.7, 1.5]
+    t = np.concatenate([[0], np.cumsum(d)])
+    eps = 1e-9
+    for law, via in (("cubic", "average"), ("quintic", "average"), ("cubic", "spline"), ("quintic", "stop")):
+        m = trajectory_from_waypoints(SPATIAL, W, d, law=law, via=via)
+        left, right = m.at(t[1:-1] - eps), m.at(t[1:-1] + eps)
+        assert np.allclose(left.pose, W[1:-1], atol=1e-8)
+        assert np.allclose(left.pose, right.pose, atol=1e-8)
+        assert np.allclose(left.velocity, right.velocity, atol=1e-6)
+        if law == "quintic" or via == "spline":
+            assert np.allclose(left.acceleration, right.acceleration, atol=1e-6)
+        if via == "stop":
+            assert np.allclose(left.velocity, 0, atol=1e-6)
+        if via == "average":
+            slopes = np.diff(W, axis=0) / np.array(d)[:, None]
+            assert np.allclose(left.velocity, (slopes[:-1] + slopes[1:]) / 2, atol=1e-6)
+    # the spline against scipy's clamped cubic spline
+    m = trajectory_from_waypoints(SPATIAL, W, d, law="cubic", via="spline")
+    ref = CubicSpline(t, W, bc_type="clamped")
+    tt = np.linspace(0, t[-1], 157)
+    s = m.at(tt)
+    assert np.allclose(s.pose, ref(tt), atol=1e-12)
+    assert np.allclose(s.velocity, ref(tt, 1), atol=1e-10)
+    assert np.allclose(s.acceleration, ref(tt, 2), atol=1e-9)
+    # a cubic with average velocities has an acceleration jump at the via points
+    m = trajectory_from_waypoints(SPATIAL, W, d, law="cubic", via="average")
+    assert not np.allclose(m.at(t[1:-1] - eps).acceleration, m.at(t[1:-1] + eps).acceleration, atol=1e-3)
+
+
+def test_jointed_platform_joint_coordinates():
+    # simulation a of the adjustable platform: z descends, then z and s23 move together
+    m = trajectory_from_robot(JOINTED, "sim-a", duration=4.0)
+    assert list(m.times) == [0.0, 2.0, 4.0]  # steps [100, 100] share the duration equally
+    s = m.sample(100)
+    first, second = s.time <= 2.0, s.time >= 2.0
+    assert np.all(s.pose[first, 6] == 2.0) and np.all(s.velocity[first, 6] == 0.0)
+    # second move: a straight line in pose space, s23 rises as fast as z falls
+    assert np.allclose(s.pose[second, 6] - 2.0, -(s.pose[second, 2] - 2.5), atol=1e-12)
+    lo, hi = JOINTED.joint_limits[0]
+    assert s.pose[:, 6].min() >= lo and s.pose[:, 6].max() <= hi
+    tau = (s.time[second] - 2.0) / 2.0
+    assert np.allclose(s.pose[second, 6], 2.0 + 2.0 * (10 * tau**3 - 15 * tau**4 + 6 * tau**5), atol=1e-12)
+
+
+def test_robot_trajectory_steps_share_the_duration():
+    tr = JOINTED.trajectories["sim-a"].model_copy(update={"steps": (100, 300)})
+    robot = JOINTED.model_copy(update={"trajectories": {"uneven": tr}})
+    m = trajectory_from_robot(robot, "uneven", duration=4.0, law="cubic")
+    assert m.times.tolist() == [0.0, 1.0, 4.0]
+    assert np.allclose(m.at(m.times).pose, tr.waypoints)
+
+
+def test_a_spline_that_overshoots_a_joint_limit_is_refused():
+    W = np.array(
+        [[5, 5, 4.5, 0, 0, 0, 0.5], [5, 5, 4.0, 0, 0, 0, 4.4], [5, 5, 3.5, 0, 0, 0, 4.5], [5, 5, 3.0, 0, 0, 0, 0.5]]
+    )
+    with pytest.raises(TrajectoryError, match=r"joint s23 reaches .* outside its limits \[0.4, 4.5\]"):
+        trajectory_from_waypoints(JOINTED, W, [1.0, 0.2, 1.0], law="cubic", via="spline")
+    trajectory_from_waypoints(JOINTED, W, [1.0, 0.2, 1.0], law="cubic")  # stopping at each: inside
+
+
+def test_robot_trajectory_with_speed_and_dwell():
+    tr = Trajectory(waypoints=((0, 0.991), (0, 0.229), (0.279, 0.991)), speed=0.2, dwell=0.5)
+    robot = AGRICULTURE.model_copy(update={"trajectories": {"timed": tr}})
+    m = trajectory_from_robot(robot, "timed", law="trapezoidal")
+    P = np.array(tr.waypoints)
+    moves = np.linalg.norm(np.diff(P, axis=0), axis=1) / tr.speed
+    assert m.duration == pytest.approx(len(P) * tr.dwell + moves.sum())
+    # held at each waypoint for the dwell, at rest
+    for k, start in enumerate(np.concatenate([[0], np.cumsum(moves + tr.dwell)])):
+        s = m.at(np.linspace(start, start + tr.dwell, 7))
+        assert np.allclose(s.pose, P[k]) and np.allclose(s.velocity, 0)
+    with pytest.raises(TrajectoryError, match="dwells at its waypoints"):
+        trajectory_from_robot(robot, "timed", law="cubic", via="average")
+    # the agriculture robot's own trajectory gives a dwell but no speed
+    with pytest.raises(TrajectoryError, match="gives no speed: give its duration"):
+        trajectory_from_robot(AGRICULTURE, "table-6.2")
+    m = trajectory_from_robot(AGRICULTURE, "table-6.2", duration=10.0)
+    assert m.duration == pytest.approx(10.0) and len(m.times) == len(AGRICULTURE.trajectories["table-6.2"].waypoints)
+    with pytest.raises(TrajectoryError, match="no trajectory 'nope'"):
+        trajectory_from_robot(JOINTED, "nope", duration=1.0)
+
+
+def test_samples_and_immutability():
+    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0], [0.6, 0.5, 0.4], [0.4, 0.6, 0.0]], [1.0, 0.75])
+    s = m.sample(4)
+    assert np.allclose(s.time, [0, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75])
+    s = m.sample(3)  # 1.75 s is not a whole number of steps: the end is added
+    assert np.allclose(s.time, [0, 1 / 3, 2 / 3, 1.0, 4 / 3, 5 / 3, 1.75])
+    assert np.allclose(s.pose[-1], m.waypoints[-1])
+    shuffled = m.at([1.2, 0.1, 0.5])
+    assert np.allclose(shuffled.pose, m.at([1.2]).pose.tolist() + m.at([0.1]).pose.tolist() + m.at([0.5]).pose.tolist())
+    assert s.pose_names == ("x", "y", "theta")
+    for a in (s.pose, s.velocity, s.angular_velocity, m.coefficients, m.waypoints, m.times):
+        with pytest.raises(ValueError):
+            a[0] = 1.0
+    with pytest.raises(AttributeError):
+        m.law = "cubic"  # type: ignore[misc]
+    assert isinstance(m, Motion) and m.duration == 1.75
+
+
+BAD = [
+    (dict(waypoints=[[0.3, 0.3, 0]], durations=1.0), "at least 2 waypoints, got 1"),
+    (dict(waypoints=[], durations=1.0), "at least 2 waypoints, got none"),
+    (dict(waypoints=[[0.3, 0.3, 0, 1], [0.4, 0.3, 0, 1]], durations=1.0), "takes poses of 3 coordinates"),
+    (dict(waypoints=[[0.3, 0.3, 0], [np.nan, 0.3, 0]], durations=1.0), "waypoint 2, coordinate x is not finite"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=0.0), "durations must be finite numbers > 0"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=-1.0), "durations must be finite numbers > 0"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=np.inf), "durations must be finite numbers > 0"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], duration=np.nan), "duration must be finite numbers > 0"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0], [0.5, 0.3, 0]], times=[0, 1, 1]), "times must increase"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0], [0.5, 0.3, 0]], times=[0, 2, 1]), "times must increase"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], times=[1, 2]), "times must start at 0"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=[1.0, 2.0]), "expected one number or 1"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]]), "give exactly one of durations"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, duration=1.0), "got durations, duration"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, law="septic"), "unknown time law 'septic'"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, via="magic"), "unknown via-point velocities"),
+    (
+        dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, law="trapezoidal", via="average"),
+        "fixes the velocities at the waypoints",
+    ),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, law="quintic", via="spline"), "law='cubic'"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, law="trapezoidal", blend=0.6), "<= 0.5"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.3, 0.3, 0]], duration=1.0), "coincide"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.3, 0.3, 0]], max_velocity=1.0, max_acceleration=1.0), "coincide"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], max_velocity=1.0), "needs max_velocity and max_acceleration"),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], max_velocity=-1.0, max_acceleration=1.0), "max_velocity must be"),
+    (
+        dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0, law="cubic", velocities=[[0, 0, 0]]),
+        "one per waypoint",
+    ),
+    (dict(waypoints=[[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1e-300), "too short for its change of pose"),
+    (dict(waypoints="abc", durations=1.0), "lists of numbers"),
+]
+
+
+@pytest.mark.parametrize(("kwargs", "message"), BAD, ids=[m for _, m in BAD])
+def test_bad_input_raises_one_clear_typed_error(kwargs, message):
+    kwargs = dict(kwargs)
+    waypoints = kwargs.pop("waypoints")
+    with pytest.raises(TrajectoryError, match=message.replace("(", r"\(").replace("[", r"\[")) as info:
+        trajectory_from_waypoints(PLANAR, waypoints, **kwargs)
+    assert isinstance(info.value, TautError) and "\n" not in str(info.value)
+
+
+def test_bad_samples():
+    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0], [0.4, 0.3, 0]], 1.0)
+    for rate in (0, -1, np.nan, np.inf, "10"):
+        with pytest.raises(TrajectoryError, match="sampling rate must be a finite number > 0"):
+            m.sample(rate)  # type: ignore[arg-type]
+    with pytest.raises(TrajectoryError, match=r"outside the trajectory's \[0, 1\] s"):
+        m.at([0.5, 1.5])
+    with pytest.raises(TrajectoryError, match="must be finite"):
+        m.at([np.nan])
+    with pytest.raises(TrajectoryError, match="at most"):
+        m.sample(1e9)
+
+
+def test_joint_limits_of_waypoints_and_position_only_waypoints():
+    with pytest.raises(TrajectoryError, match=r"waypoint 2: joint s23 = 5 is outside its limits"):
+        trajectory_from_waypoints(JOINTED, [[5, 5, 4, 0, 0, 0, 2], [5, 5, 4, 0, 0, 0, 5]], 1.0)
+    # positions are completed from the first reference pose
+    m = trajectory_from_waypoints(JOINTED, [[5, 5, 4], [5, 5, 3]], 1.0)
+    assert np.allclose(m.waypoints[:, 3:], [[0, 0, 0, 2], [0, 0, 0, 2]])
+    bare = robot_from_dict(
+        {
+            "name": "bare",
+            "dimension": 2,
+            "platform": {"kind": "rigid"},
+            "cables": [{"exit": [0, 0], "anchor": [0, 0]}, {"exit": [1, 0], "anchor": [0, 0]}],
+        }
+    )
+    assert np.allclose(trajectory_from_waypoints(bare, [[0, 1], [1, 1]], 1.0).waypoints[:, 2], 0.0)
