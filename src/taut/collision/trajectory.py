@@ -45,6 +45,7 @@ from taut.kinematics.inverse import OK, ik_status
 from taut.kinematics.jointed import actuator_jacobian
 from taut.kinematics.pose import as_poses
 from taut.model.robot import Robot
+from taut.motion.waypoints import complete_waypoints
 
 __all__ = ["CheckResult", "check_poses", "load_trajectory", "sample_waypoints", "trajectory_poses"]
 
@@ -60,13 +61,7 @@ def _fill(robot: Robot, waypoints: np.ndarray, what: str) -> np.ndarray:
             f"{what}: {robot.name} takes poses of {size} coordinates ({', '.join(robot.pose_names)}) "
             f"or positions of {d}, got {width}"
         )
-    if waypoints.shape[1] == size:
-        return waypoints
-    if robot.reference is not None and robot.reference.poses:
-        rest = np.asarray(next(iter(robot.reference.poses.values())), float)[d:]
-    else:
-        rest = np.concatenate([np.zeros(robot.wrench_dim - d), robot.joint_limits.mean(axis=1)])
-    return np.concatenate([waypoints, np.broadcast_to(rest, (len(waypoints), size - d))], axis=1)
+    return complete_waypoints(robot, waypoints, what)
 
 
 def sample_waypoints(
