@@ -23,7 +23,7 @@ def with_inertia(name, **platform):
         (taut.example("adjustable-8cable"), "platform.bodies"),
         (taut.example("vscr-four-cable"), "obstacles"),
         (taut.example("cogiro"), "no platform.mass"),
-        (taut.example("spatial-8cable"), "no platform.inertia"),
+        (with_inertia("spatial-8cable", inertia=None), "no platform.inertia"),
         (with_inertia("cogiro", mass=1.0, inertia=(1, 1, 1, 0, 0, 0)), "platform.wrench"),
         (with_inertia("spatial-8cable", inertia=(1, 1, 3, 0, 0, 0)), "A + B >= C"),
         (with_inertia("spatial-8cable", inertia=(1, 1, 0, 0, 0, 0)), "singular"),
