@@ -44,15 +44,22 @@ def test_exit_pulleys_are_refused():
         mjcf_text(robot_from_dict(data))
 
 
-def test_swivelling_pulleys_are_refused():
+def test_a_swivelling_pulley_is_a_hinged_body_the_tendon_wraps():
     data = robot_to_dict(with_inertia("spatial-8cable", mass=2.0, inertia=(1, 1, 1, 0, 0, 0)))
     data["cables"][4]["swivel"] = {"axis": [0, 0, 1], "radius": 0.05}
-    with pytest.raises(
-        UnsupportedRobotError, match="cable 5 has a swivelling pulley of radius 0.05; the tendon would run straight"
-    ):
-        mjcf_text(robot_from_dict(data))
-    del data["cables"][4]["swivel"]
-    assert "<tendon" in mjcf_text(robot_from_dict(data))
+    root = ET.fromstring(mjcf_text(robot_from_dict(data)))
+    body = root.find("./worldbody/body[@name='pulley5']")
+    assert body is not None and body.find("joint").get("type") == "hinge"
+    assert body.find("geom").get("type") == "cylinder"
+    assert [s.get("name") for s in body.findall("site")] == ["exit5", "side5"]
+    assert root.find("./worldbody/site[@name='exit5']") is None
+    tendon = root.find("./tendon/spatial[@name='cable5']")
+    assert [(e.tag, e.get("site") or e.get("geom"), e.get("sidesite")) for e in tendon] == [
+        ("site", "exit5", None),
+        ("geom", "wheel5", "side5"),
+        ("site", "anchor5", None),
+    ]
+    assert len(root.findall("./worldbody/body")) == 2  # the platform and one pulley
 
 
 def test_bad_poses_are_refused():
