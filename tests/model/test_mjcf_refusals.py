@@ -62,6 +62,13 @@ def test_a_swivelling_pulley_is_a_hinged_body_the_tendon_wraps():
     assert len(root.findall("./worldbody/body")) == 2  # the platform and one pulley
 
 
+def test_a_swivelling_pulley_too_small_for_mujoco_sites_is_refused():
+    data = robot_to_dict(with_inertia("spatial-8cable", inertia=(1, 1, 1, 0, 0, 0)))
+    data["cables"][1]["swivel"] = {"axis": [0, 0, 1], "radius": 1e-6}
+    with pytest.raises(UnsupportedRobotError, match="cable 2 has a swivelling pulley of radius 1e-06 m, below 1e-05 m"):
+        mjcf_text(robot_from_dict(data))
+
+
 def test_bad_poses_are_refused():
     robot = with_inertia("planar-4cable", inertia=(0.01,))
     with pytest.raises(PoseError, match="3 coordinates"):

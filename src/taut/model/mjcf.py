@@ -75,7 +75,8 @@ A robot this description cannot hold raises :class:`~taut.errors.UnsupportedRobo
 naming the construct: no ``platform.mass``, a rigid platform without a positive-definite
 ``platform.inertia``, a constant ``platform.wrench`` (MJCF has no constant applied wrench),
 jointed bodies (the robot file gives them no mass), exit pulleys of non-zero radius and
-obstacles (the tendons run straight from exit to anchor, or over swivelling pulleys).
+obstacles (the tendons run straight from exit to anchor, or over swivelling pulleys), and
+swivelling pulleys smaller than :data:`MIN_PULLEY_RADIUS`.
 
 References
 ----------
@@ -109,6 +110,9 @@ EXIT_SITE_OFFSET = 1e-8
 SIDE_SITE_ANGLE = math.radians(10.0)
 #: Relative margin kept from the boundaries of the poses where MuJoCo wraps taut's way.
 WRAP_MARGIN = 1e-9
+#: Smallest swivelling pulley radius [m] written: MuJoCo moves a site nearer than about
+#: 10⁻⁶ m to its body's origin onto the origin, and a pulley's sites are ``r`` from it.
+MIN_PULLEY_RADIUS = 1e-5
 
 
 def _number(x: float) -> str:
@@ -163,6 +167,12 @@ def check_mjcf(robot: Robot) -> None:
             raise _refuse(
                 robot,
                 f"cable {i} leaves an exit pulley of radius {cable.pulley.radius:g}; the tendon would run straight from its exit point",
+            )
+        if cable.swivel is not None and cable.swivel.radius < MIN_PULLEY_RADIUS:
+            raise _refuse(
+                robot,
+                f"cable {i} has a swivelling pulley of radius {cable.swivel.radius:g} m, below {MIN_PULLEY_RADIUS:g} m, "
+                "too small for MuJoCo's sites on it",
             )
     if plat.mass is None:
         raise _refuse(robot, "no platform.mass (a MuJoCo body needs one; add platform.mass and platform.gravity)")
@@ -226,9 +236,9 @@ def swivel_frames(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.
 def _pulley(robot: Robot, world: ET.Element, i: int, k: np.ndarray, e0: np.ndarray, r: float) -> None:
     """The body, hinge, wrapping cylinder and sites of cable ``i``'s (1-based) swivelling pulley.
 
-    The body's origin is the pulley centre, not the exit point: MuJoCo merges a site within
-    about a nanometre of its body's origin into the origin, which would put the exit site
-    back on the rim."""
+    The body's origin is the pulley centre, not the exit point: MuJoCo puts a site nearer
+    than about 10⁻⁶ to its body's origin at the origin (``site_sameframe``), which would put
+    an exit site :data:`EXIT_SITE_OFFSET` ``r`` from the exit point back on the rim."""
     frame = np.column_stack([e0, np.cross(k, e0)])
     body = ET.SubElement(
         world,
