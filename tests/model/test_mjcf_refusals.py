@@ -2,6 +2,7 @@
 (no MuJoCo needed: these run without the optional extra)."""
 
 import math
+import re
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -66,6 +67,25 @@ def test_a_swivelling_pulley_too_small_for_mujoco_sites_is_refused():
     data = robot_to_dict(with_inertia("spatial-8cable", inertia=(1, 1, 1, 0, 0, 0)))
     data["cables"][1]["swivel"] = {"axis": [0, 0, 1], "radius": 1e-6}
     with pytest.raises(UnsupportedRobotError, match="cable 2 has a swivelling pulley of radius 1e-06 m, below 1e-05 m"):
+        mjcf_text(robot_from_dict(data))
+
+
+@pytest.mark.parametrize(
+    "field, value, words",
+    [
+        ("anchor", [5e-7, -5e-7, 0.0], "the anchor of cable 1 [5e-07, -5e-07, 0.0] is within 1e-06"),
+        ("exit", [0.0, 9e-7, 0.0], "the exit point of cable 1 [0.0, 9e-07, 0.0] is within 1e-06"),
+    ],
+)
+def test_a_point_mujoco_would_move_onto_its_body_origin_is_refused(field, value, words):
+    data = robot_to_dict(with_inertia("spatial-8cable", inertia=(1, 1, 1, 0, 0, 0)))
+    data["cables"][0][field] = value
+    with pytest.raises(UnsupportedRobotError, match=re.escape(words)):
+        mjcf_text(robot_from_dict(data))
+    data["cables"][0][field] = [0.0, 0.0, 0.0]
+    assert "<tendon" in mjcf_text(robot_from_dict(data))
+    data["platform"]["wrench_point"] = [0.0, 0.0, 1e-7]
+    with pytest.raises(UnsupportedRobotError, match=re.escape("platform.wrench_point [0.0, 0.0, 1e-07]")):
         mjcf_text(robot_from_dict(data))
 
 

@@ -75,8 +75,10 @@ A robot this description cannot hold raises :class:`~taut.errors.UnsupportedRobo
 naming the construct: no ``platform.mass``, a rigid platform without a positive-definite
 ``platform.inertia``, a constant ``platform.wrench`` (MJCF has no constant applied wrench),
 jointed bodies (the robot file gives them no mass), exit pulleys of non-zero radius and
-obstacles (the tendons run straight from exit to anchor, or over swivelling pulleys), and
-swivelling pulleys smaller than :data:`MIN_PULLEY_RADIUS`.
+obstacles (the tendons run straight from exit to anchor, or over swivelling pulleys),
+swivelling pulleys smaller than :data:`MIN_PULLEY_RADIUS`, and an exit point, anchor or
+centre of mass off its body's origin by less than :data:`SAME_FRAME` in every coordinate
+(MuJoCo would move it onto the origin).
 
 References
 ----------
@@ -110,8 +112,12 @@ EXIT_SITE_OFFSET = 1e-8
 SIDE_SITE_ANGLE = math.radians(10.0)
 #: Relative margin kept from the boundaries of the poses where MuJoCo wraps taut's way.
 WRAP_MARGIN = 1e-9
-#: Smallest swivelling pulley radius [m] written: MuJoCo moves a site nearer than about
-#: 10⁻⁶ m to its body's origin onto the origin, and a pulley's sites are ``r`` from it.
+#: MuJoCo moves a site or centre of mass whose coordinates are all smaller than this [m] in
+#: its body's frame onto the body's origin (``site_sameframe``, ``body_sameframe``; measured
+#: with MuJoCo 4.0.0).
+SAME_FRAME = 1e-6
+#: Smallest swivelling pulley radius [m] written: a pulley's sites lie ``r`` from its
+#: body's origin, well beyond :data:`SAME_FRAME`.
 MIN_PULLEY_RADIUS = 1e-5
 
 
@@ -173,6 +179,16 @@ def check_mjcf(robot: Robot) -> None:
                 robot,
                 f"cable {i} has a swivelling pulley of radius {cable.swivel.radius:g} m, below {MIN_PULLEY_RADIUS:g} m, "
                 "too small for MuJoCo's sites on it",
+            )
+    points = [(f"the exit point of cable {i}", c.exit) for i, c in enumerate(robot.cables, 1) if c.swivel is None]
+    points += [(f"the anchor of cable {i}", c.anchor) for i, c in enumerate(robot.cables, 1) if c.anchor is not None]
+    points += [("platform.wrench_point", plat.wrench_point)] if plat.wrench_point is not None else []
+    for what, point in points:
+        if 0 < np.abs(point).max() < SAME_FRAME:
+            raise _refuse(
+                robot,
+                f"{what} {list(point)} is within {SAME_FRAME:g} of its body's origin but not on it; "
+                "MuJoCo would move it onto the origin",
             )
     if plat.mass is None:
         raise _refuse(robot, "no platform.mass (a MuJoCo body needs one; add platform.mass and platform.gravity)")
