@@ -8,6 +8,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 import taut
 from taut.errors import InfeasiblePoseError
@@ -274,3 +276,30 @@ def test_an_anchor_inside_the_pulley_circle_is_refused():
     assert not swivel_wraps_agree(robot, anchor)
     with pytest.raises(InfeasiblePoseError, match="at pose 2 the anchor of cable 1"):
         pose_to_qpos(robot, np.stack([anchor + [0, 0, 1], anchor]))
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    st.lists(st.floats(-1.0, 1.0), min_size=3, max_size=3).filter(lambda v: np.linalg.norm(v) > 0.1),
+    st.floats(1e-3, 1.0),
+    # half the draws near the refused wedge, just below -e
+    st.one_of(st.floats(-math.pi, math.pi), st.floats(-math.pi, -math.pi + 2 * SIDE_SITE_ANGLE)),
+    st.one_of(st.floats(1e-6, 100.0), st.floats(1e-6, 0.05)),
+)
+def test_mujoco_wraps_as_taut_exactly_where_swivel_wraps_agree_says(axis, r, phi, gap):
+    """Any axis, radius and anchor in the pulley plane (the anchor at ``r (1 + gap)`` from the
+    pulley centre, at the angle ``φ`` from ``e`` towards ``k``): where ``swivel_wraps_agree``
+    holds MuJoCo's tendon has taut's length; where it does not, MuJoCo's length is far off."""
+    robot = one_cable(axis, r)
+    _, k, e0, _ = swivel_frames(robot)
+    rho = r * (1 + gap)
+    assume(rho * math.cos(phi) > -r * (1 - 1e-6))  # the anchor on the pulley centre's side of the axis
+    anchor = r * e0[0] + rho * (math.cos(phi) * e0[0] + math.sin(phi) * k[0])
+    expected = inverse_kinematics(robot, anchor).lengths[0]
+    m, data = model_of(robot)
+    data.qpos[:] = np.append(anchor, 0.0)
+    mujoco.mj_fwdPosition(m, data)
+    if swivel_wraps_agree(robot, anchor):
+        assert abs(data.ten_length[0] - expected) < 1e-9
+    else:
+        assert abs(data.ten_length[0] - expected) > 1e-3 * r

@@ -51,7 +51,10 @@ holds the anchor (:func:`pose_to_qpos` sets it).  Two of MuJoCo's rules shape th
   MuJoCo 4.0.0 (a scan of side-site and anchor directions, and the tests): with the
   circle's centre as origin, it takes the way that starts over the side of ``+k`` exactly
   when the side site's direction lies counter-clockwise (about ``e × k``) between the
-  directions opposite the exit site (``+e``) and opposite the anchor.  taut's way is that
+  directions opposite the exit site (``+e``) and opposite the anchor.  (The rule of an
+  earlier MuJoCo's source, the pair of tangent points whose chord midpoint lies nearest the
+  side site, differs and would take the other way for many anchors: the ``mujoco`` extra
+  asks for MuJoCo 4.)  taut's way is that
   one, so MuJoCo follows it unless the anchor's direction from the pulley centre lies
   within ``ψ`` below ``−e``: behind the exit point (``k·(b − a_i) < 0``), nearer the axis
   than the pulley centre and within ``r (1/cos ψ − 1)`` (1.5 % of ``r``) of the rim.  There,
