@@ -227,6 +227,22 @@ def test_the_model_holds_the_pulleys_numbers():
         assert np.linalg.norm(data.site(f"exit{c}").xpos - robot.exits[i]) < 1e-8 * radii[j] + 1e-15
 
 
+def test_convert_writes_the_swivelling_pulleys(taut_cli, tmp_path):
+    """``taut convert`` of CASPR's pulley model, as a user runs it: MuJoCo loads the file and,
+    at the qpos of a pose, its tendon lengths are those ``taut ik`` prints."""
+    out = tmp_path / "pulley.mjcf.xml"
+    source = str(FIXTURES / "caspr" / "pulley_bodies.xml")
+    assert taut_cli("convert", source, str(out), "--json").json()["format"] == "mujoco"
+    m = mujoco.MjModel.from_xml_path(str(out))
+    assert (m.nbody, m.njnt, m.ntendon, m.nu) == (10, 9, 8, 8)
+    pose = np.array([0.1, -0.2, 1.1, 0.2, -0.1, 0.3])
+    data = mujoco.MjData(m)
+    data.qpos[:] = pose_to_qpos(load_robot(source), pose)
+    mujoco.mj_fwdPosition(m, data)
+    ik = taut_cli("ik", source, "--pose", ",".join(map(str, pose)), "--json").json()
+    np.testing.assert_allclose(data.ten_length, ik["lengths"], rtol=0, atol=1e-9)
+
+
 def one_cable(axis, radius=0.1):
     """A point mass on one cable over a swivelling pulley at the origin."""
     return robot_from_dict(
