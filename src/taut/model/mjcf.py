@@ -255,9 +255,9 @@ def swivel_frames(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.
 def _pulley(robot: Robot, world: ET.Element, i: int, k: np.ndarray, e0: np.ndarray, r: float) -> None:
     """The body, hinge, wrapping cylinder and sites of cable ``i``'s (1-based) swivelling pulley.
 
-    The body's origin is the pulley centre, not the exit point: MuJoCo puts a site nearer
-    than about 10⁻⁶ to its body's origin at the origin (``site_sameframe``), which would put
-    an exit site :data:`EXIT_SITE_OFFSET` ``r`` from the exit point back on the rim."""
+    The body's origin is the pulley centre, not the exit point: MuJoCo puts a site within
+    :data:`SAME_FRAME` of its body's origin at the origin, which would put an exit site
+    :data:`EXIT_SITE_OFFSET` ``r`` from the exit point back on the rim."""
     frame = np.column_stack([e0, np.cross(k, e0)])
     body = ET.SubElement(
         world,
