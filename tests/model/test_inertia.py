@@ -55,4 +55,13 @@ def test_point_mass_has_no_rotational_inertia():
 
 
 def test_no_inertia_without_the_field():
-    assert taut.example("spatial-8cable").inertia is None
+    assert taut.example("cogiro").inertia is None
+    assert robot_from_dict(with_platform(inertia=None)).inertia is None
+
+
+def test_the_examples_inertia_is_the_box_their_files_state():
+    """spatial-8cable: a 5 kg box of 0.3 m x 0.2 m x 0.1 m; planar-4cable: a 1 kg plate of
+    0.2 m x 0.1 m (both about their centres, as the YAML comments say)."""
+    box = 5.0 / 12 * np.array([0.2**2 + 0.1**2, 0.3**2 + 0.1**2, 0.3**2 + 0.2**2])
+    assert np.allclose(taut.example("spatial-8cable").inertia, np.diag(box), rtol=1e-15, atol=0)
+    assert np.allclose(taut.example("planar-4cable").inertia, [[1.0 / 12 * (0.2**2 + 0.1**2)]], rtol=1e-15)

@@ -2,6 +2,7 @@
 (no MuJoCo needed: these run without the optional extra)."""
 
 import math
+import re
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -23,7 +24,7 @@ def with_inertia(name, **platform):
         (taut.example("adjustable-8cable"), "platform.bodies"),
         (taut.example("vscr-four-cable"), "obstacles"),
         (taut.example("cogiro"), "no platform.mass"),
-        (taut.example("spatial-8cable"), "no platform.inertia"),
+        (with_inertia("spatial-8cable", inertia=None), "no platform.inertia"),
         (with_inertia("cogiro", mass=1.0, inertia=(1, 1, 1, 0, 0, 0)), "platform.wrench"),
         (with_inertia("spatial-8cable", inertia=(1, 1, 3, 0, 0, 0)), "A + B >= C"),
         (with_inertia("spatial-8cable", inertia=(1, 1, 0, 0, 0, 0)), "singular"),
@@ -44,15 +45,48 @@ def test_exit_pulleys_are_refused():
         mjcf_text(robot_from_dict(data))
 
 
-def test_swivelling_pulleys_are_refused():
+def test_a_swivelling_pulley_is_a_hinged_body_the_tendon_wraps():
     data = robot_to_dict(with_inertia("spatial-8cable", mass=2.0, inertia=(1, 1, 1, 0, 0, 0)))
     data["cables"][4]["swivel"] = {"axis": [0, 0, 1], "radius": 0.05}
-    with pytest.raises(
-        UnsupportedRobotError, match="cable 5 has a swivelling pulley of radius 0.05; the tendon would run straight"
-    ):
+    root = ET.fromstring(mjcf_text(robot_from_dict(data)))
+    body = root.find("./worldbody/body[@name='pulley5']")
+    assert body is not None and body.find("joint").get("type") == "hinge"
+    assert body.find("geom").get("type") == "cylinder"
+    assert [s.get("name") for s in body.findall("site")] == ["exit5", "side5"]
+    assert root.find("./worldbody/site[@name='exit5']") is None
+    tendon = root.find("./tendon/spatial[@name='cable5']")
+    assert [(e.tag, e.get("site") or e.get("geom"), e.get("sidesite")) for e in tendon] == [
+        ("site", "exit5", None),
+        ("geom", "wheel5", "side5"),
+        ("site", "anchor5", None),
+    ]
+    assert len(root.findall("./worldbody/body")) == 2  # the platform and one pulley
+
+
+def test_a_swivelling_pulley_too_small_for_mujoco_sites_is_refused():
+    data = robot_to_dict(with_inertia("spatial-8cable", inertia=(1, 1, 1, 0, 0, 0)))
+    data["cables"][1]["swivel"] = {"axis": [0, 0, 1], "radius": 1e-6}
+    with pytest.raises(UnsupportedRobotError, match="cable 2 has a swivelling pulley of radius 1e-06 m, below 1e-05 m"):
         mjcf_text(robot_from_dict(data))
-    del data["cables"][4]["swivel"]
+
+
+@pytest.mark.parametrize(
+    "field, value, words",
+    [
+        ("anchor", [5e-7, -5e-7, 0.0], "the anchor of cable 1 [5e-07, -5e-07, 0.0] is within 1e-06"),
+        ("exit", [0.0, 9e-7, 0.0], "the exit point of cable 1 [0.0, 9e-07, 0.0] is within 1e-06"),
+    ],
+)
+def test_a_point_mujoco_would_move_onto_its_body_origin_is_refused(field, value, words):
+    data = robot_to_dict(with_inertia("spatial-8cable", inertia=(1, 1, 1, 0, 0, 0)))
+    data["cables"][0][field] = value
+    with pytest.raises(UnsupportedRobotError, match=re.escape(words)):
+        mjcf_text(robot_from_dict(data))
+    data["cables"][0][field] = [0.0, 0.0, 0.0]
     assert "<tendon" in mjcf_text(robot_from_dict(data))
+    data["platform"]["wrench_point"] = [0.0, 0.0, 1e-7]
+    with pytest.raises(UnsupportedRobotError, match=re.escape("platform.wrench_point [0.0, 0.0, 1e-07]")):
+        mjcf_text(robot_from_dict(data))
 
 
 def test_bad_poses_are_refused():

@@ -18,7 +18,7 @@ feels, because MuJoCo refuses moving bodies without one.  ``option gravity`` is 
 
 Cable *i* is the spatial tendon ``cable{i}`` through the site ``exit{i}`` (world body, at
 ``a_i``) and the site ``anchor{i}`` (platform body, at ``r_i``), so that MuJoCo's tendon length
-is ``‖a_i − b_i‖``; its length bounds, where the robot gives them, are the tendon's ``range``.
+is ``‖a_i − b_i‖`` (a cable over a swivelling pulley wraps it, below); its length bounds, where the robot gives them, are the tendon's ``range``.
 The actuator ``tension{i}`` is a force actuator on that tendon with ``gear = −1``: its control
 is the cable tension ``τ_i`` [N] pulling the platform towards the exit point, its
 ``ctrlrange`` the tension bounds.  Cables are ideal (massless, inextensible): their
@@ -29,11 +29,59 @@ moment about ``p``, as :mod:`taut.statics` writes them) is ``(f, Rᵀ m)`` for t
 whose angular velocity is expressed in the body frame, and ``(f_x, f_y, m_z)`` or ``f`` for the
 planar and point-mass joints: ``mj_inverse`` at rest returns that of ``−w_ext``.
 
+A cable *i* that leaves through a swivelling pulley (``Cable.swivel``, axis ``k``, radius
+``r``; :mod:`taut.kinematics.swivel`) runs over a body ``pulley{i}`` on the hinge joint
+``swivel{i}`` about ``k`` through the exit point ``a_i``.  Its frame has ``x = e``, ``y = k × e``
+and ``z = k``, where at the hinge angle ``q`` the pulley plane's ``e = cos q e_0 + sin q (k ×
+e_0)`` turns from ``e_0``, a fixed unit normal of ``k`` (:func:`swivel_frames`); the plane
+holds ``k`` and ``e``, and the body's origin is the pulley centre ``a_i + r e``.  The body
+carries the wrapping cylinder ``wheel{i}`` (radius ``r``, axis normal to the pulley plane,
+no contacts), the site ``exit{i}`` just outside the rim at ``a_i`` and the side site
+``side{i}`` at ``a_i + r e + 2 r (cos ψ e + sin ψ k)``, ``ψ =`` :data:`SIDE_SITE_ANGLE`.  The
+tendon runs ``exit{i}`` → ``wheel{i}`` (with that side site) → ``anchor{i}``: from the point
+where the cable comes along the axis onto the pulley, around the arc, tangentially to the
+anchor, which is taut's path when ``q`` is taut's swivel angle, the one whose pulley plane
+holds the anchor (:func:`pose_to_qpos` sets it).  Two of MuJoCo's rules shape this:
+
+* a tendon end inside (or, by rounding, on) the wrapping circle does not wrap at all, so the
+  exit site sits :data:`EXIT_SITE_OFFSET` ``r`` outside the rim, radially; the cable then
+  meets the circle ``δ ≈ √(2·10⁻⁸)`` rad later than at ``a_i``, which lengthens the tendon by
+  ``r (tan δ − δ) ≈ 10⁻¹² r``;
+* MuJoCo chooses between the two ways round the circle by the side site.  Measured with
+  MuJoCo 4.0.0 (a scan of side-site and anchor directions, and the tests): with the
+  circle's centre as origin, it takes the way that starts over the side of ``+k`` exactly
+  when the side site's direction lies counter-clockwise (about ``e × k``) between the
+  directions opposite the exit site (``+e``) and opposite the anchor.  (The rule of an
+  earlier MuJoCo's source, the pair of tangent points whose chord midpoint lies nearest the
+  side site, differs and would take the other way for many anchors: the ``mujoco`` extra
+  asks for MuJoCo 4.)  taut's way is that
+  one, so MuJoCo follows it unless the anchor's direction from the pulley centre lies
+  within ``ψ`` below ``−e``: behind the exit point (``k·(b − a_i) < 0``), nearer the axis
+  than the pulley centre and within ``r (1/cos ψ − 1)`` (1.5 % of ``r``) of the rim.  There,
+  and for an anchor on or inside the pulley circle, :func:`swivel_wraps_agree` is false and
+  :func:`pose_to_qpos` refuses the pose.
+
+The pulley bodies' dynamics are MuJoCo's addition, not taut's (taut's pulleys are massless):
+each weighs :data:`PULLEY_MASS_RATIO` times the platform's mass, with its centre of mass on
+its swivel axis at ``a_i`` (so that its weight has no moment about the hinge) and the
+rotational inertia of a uniform sphere of radius ``r``.  At taut's swivel angle the tendon
+exerts no moment on the hinge either: the cable enters along the axis and leaves in the
+pulley plane, which holds the axis, so turning the pulley does not change the tendon's length
+to first order; the moment grows with the angle's error, which makes the hinge's generalised
+force a check of that angle.  That equilibrium is mostly unstable in MuJoCo's model, though:
+a wrapping cylinder is infinite and lets the tendon slide along its axis (a helix), so
+turning the pulley out of the anchor's plane usually shortens the tendon (for 91–98 % of the
+cables and poses sampled on three robots), and the tension turns it further.  A free simulation should
+therefore drive or damp the hinges, e.g. towards the angles of :func:`pose_to_qpos`.
+
 A robot this description cannot hold raises :class:`~taut.errors.UnsupportedRobotError`
 naming the construct: no ``platform.mass``, a rigid platform without a positive-definite
 ``platform.inertia``, a constant ``platform.wrench`` (MJCF has no constant applied wrench),
-jointed bodies (the robot file gives them no mass), exit pulleys of non-zero radius,
-swivelling pulleys and obstacles (the tendons run straight from exit to anchor).
+jointed bodies (the robot file gives them no mass), exit pulleys of non-zero radius and
+obstacles (the tendons run straight from exit to anchor, or over swivelling pulleys),
+swivelling pulleys smaller than :data:`MIN_PULLEY_RADIUS`, and an exit point, anchor or
+centre of mass off its body's origin by less than :data:`SAME_FRAME` in every coordinate
+(MuJoCo would move it onto the origin).
 
 References
 ----------
@@ -53,12 +101,27 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
-from taut.errors import PoseError, UnsupportedRobotError
+from taut.errors import InfeasiblePoseError, PoseError, UnsupportedRobotError
 from taut.geometry.rotation import rotation_matrix
 from taut.model.robot import Robot
 
 #: Radius [m] of the sphere whose rotational inertia a point-mass body is given.
 POINT_MASS_RADIUS = 1e-3
+#: Mass of each swivelling pulley's body as a fraction of the platform's mass.
+PULLEY_MASS_RATIO = 1e-3
+#: Distance, in pulley radii, of a swivelling cable's exit site outside the pulley rim.
+EXIT_SITE_OFFSET = 1e-8
+#: Angle [rad] of a swivelling pulley's side site from the pulley plane's ``e`` towards ``k``.
+SIDE_SITE_ANGLE = math.radians(10.0)
+#: Relative margin kept from the boundaries of the poses where MuJoCo wraps taut's way.
+WRAP_MARGIN = 1e-9
+#: MuJoCo moves a site or centre of mass whose coordinates are all smaller than this [m] in
+#: its body's frame onto the body's origin (``site_sameframe``, ``body_sameframe``; measured
+#: with MuJoCo 4.0.0).
+SAME_FRAME = 1e-6
+#: Smallest swivelling pulley radius [m] written: a pulley's sites lie ``r`` from its
+#: body's origin, well beyond :data:`SAME_FRAME`.
+MIN_PULLEY_RADIUS = 1e-5
 
 
 def _number(x: float) -> str:
@@ -114,10 +177,21 @@ def check_mjcf(robot: Robot) -> None:
                 robot,
                 f"cable {i} leaves an exit pulley of radius {cable.pulley.radius:g}; the tendon would run straight from its exit point",
             )
-        if cable.swivel is not None:
+        if cable.swivel is not None and cable.swivel.radius < MIN_PULLEY_RADIUS:
             raise _refuse(
                 robot,
-                f"cable {i} has a swivelling pulley of radius {cable.swivel.radius:g}; the tendon would run straight from its exit point",
+                f"cable {i} has a swivelling pulley of radius {cable.swivel.radius:g} m, below {MIN_PULLEY_RADIUS:g} m, "
+                "too small for MuJoCo's sites on it",
+            )
+    points = [(f"the exit point of cable {i}", c.exit) for i, c in enumerate(robot.cables, 1) if c.swivel is None]
+    points += [(f"the anchor of cable {i}", c.anchor) for i, c in enumerate(robot.cables, 1) if c.anchor is not None]
+    points += [("platform.wrench_point", plat.wrench_point)] if plat.wrench_point is not None else []
+    for what, point in points:
+        if 0 < np.abs(point).max() < SAME_FRAME:
+            raise _refuse(
+                robot,
+                f"{what} {list(point)} is within {SAME_FRAME:g} of its body's origin but not on it; "
+                "MuJoCo would move it onto the origin",
             )
     if plat.mass is None:
         raise _refuse(robot, "no platform.mass (a MuJoCo body needs one; add platform.mass and platform.gravity)")
@@ -164,6 +238,56 @@ def _joints(robot: Robot, body: ET.Element) -> None:
         ET.SubElement(body, "joint", name="theta", type="hinge", axis="0 0 1", limited="false")
 
 
+def swivel_frames(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """``(indices (s,), unit axes k (s, 3), zero directions e_0 (s, 3), radii (s,))`` of the
+    robot's swivelling pulleys: ``e_0`` is the unit normal of ``k`` nearest the fixed ``x``
+    axis (``y`` for an axis within 26° of ``x``), the direction of the hinge angle ``q = 0``."""
+    idx = np.array(robot.swivel_cables, dtype=int)
+    swivels = [s for s in (robot.cables[i].swivel for i in idx) if s is not None]
+    k = np.array([s.axis for s in swivels], dtype=float).reshape(-1, 3)
+    k /= np.linalg.norm(k, axis=1, keepdims=True)
+    helper = np.where(np.abs(k[:, :1]) < 0.9, np.array([[1.0, 0.0, 0.0]]), np.array([[0.0, 1.0, 0.0]]))
+    e0 = helper - np.einsum("si,si->s", helper, k)[:, None] * k
+    e0 /= np.linalg.norm(e0, axis=1, keepdims=True)
+    return idx, k, e0, np.array([s.radius for s in swivels], dtype=float)
+
+
+def _pulley(robot: Robot, world: ET.Element, i: int, k: np.ndarray, e0: np.ndarray, r: float) -> None:
+    """The body, hinge, wrapping cylinder and sites of cable ``i``'s (1-based) swivelling pulley.
+
+    The body's origin is the pulley centre, not the exit point: MuJoCo puts a site within
+    :data:`SAME_FRAME` of its body's origin at the origin, which would put an exit site
+    :data:`EXIT_SITE_OFFSET` ``r`` from the exit point back on the rim."""
+    frame = np.column_stack([e0, np.cross(k, e0)])
+    body = ET.SubElement(
+        world,
+        "body",
+        name=f"pulley{i}",
+        pos=_vector(robot.exits[i - 1] + r * e0),
+        quat=_vector(quaternions(np.column_stack([frame, k]))),
+    )
+    ET.SubElement(
+        body, "joint", name=f"swivel{i}", type="hinge", axis="0 0 1", pos=_vector([-r, 0.0, 0.0]), limited="false"
+    )
+    mass = PULLEY_MASS_RATIO * float(robot.platform.mass or 0.0)
+    sphere = 0.4 * mass * r * r
+    ET.SubElement(body, "inertial", pos=_vector([-r, 0.0, 0.0]), mass=_number(mass), diaginertia=_vector([sphere] * 3))
+    # the cylinder's local x, y are the pulley plane's e, k: its axis e × k is the plane's normal
+    ET.SubElement(
+        body,
+        "geom",
+        name=f"wheel{i}",
+        type="cylinder",
+        size=_vector([r, r / 4]),
+        xyaxes="1 0 0 0 0 1",
+        contype="0",
+        conaffinity="0",
+    )
+    ET.SubElement(body, "site", name=f"exit{i}", pos=_vector([-(1 + EXIT_SITE_OFFSET) * r, 0.0, 0.0]))
+    side = [2 * r * math.cos(SIDE_SITE_ANGLE), 0.0, 2 * r * math.sin(SIDE_SITE_ANGLE)]
+    ET.SubElement(body, "site", name=f"side{i}", pos=_vector(side))
+
+
 def mjcf_text(robot: Robot) -> str:
     """The MuJoCo model (MJCF XML) of ``robot``; see the module's docstring for what it holds.
 
@@ -187,13 +311,18 @@ def mjcf_text(robot: Robot) -> str:
     mass = float(robot.platform.mass or 0.0)
     ET.SubElement(root, "option", gravity=_vector(_in_space(robot.weight / mass, d)))
     world = ET.SubElement(root, "worldbody")
+    swivel = set(robot.swivel_cables)
     for i, exit_point in enumerate(robot.exits, 1):
-        ET.SubElement(world, "site", name=f"exit{i}", pos=_vector(_in_space(exit_point, d)))
+        if i - 1 not in swivel:
+            ET.SubElement(world, "site", name=f"exit{i}", pos=_vector(_in_space(exit_point, d)))
     platform = ET.SubElement(world, "body", name="platform", pos="0 0 0")
     _joints(robot, platform)
     ET.SubElement(platform, "inertial", _inertial(robot))
     for i, anchor in enumerate(robot.anchors, 1):
         ET.SubElement(platform, "site", name=f"anchor{i}", pos=_vector(_in_space(anchor, d)))
+    idx, axes, zeros, radii = swivel_frames(robot)
+    for j, i in enumerate(idx):
+        _pulley(robot, world, int(i) + 1, axes[j], zeros[j], float(radii[j]))
     tendons = ET.SubElement(root, "tendon")
     lmin, lmax = robot.length_bounds
     for i in range(1, robot.n_cables + 1):
@@ -202,6 +331,8 @@ def mjcf_text(robot: Robot) -> str:
             attrs |= {"limited": "true", "range": _vector([lmin[i - 1], lmax[i - 1]])}
         tendon = ET.SubElement(tendons, "spatial", attrs)
         ET.SubElement(tendon, "site", site=f"exit{i}")
+        if i - 1 in swivel:
+            ET.SubElement(tendon, "geom", geom=f"wheel{i}", sidesite=f"side{i}")
         ET.SubElement(tendon, "site", site=f"anchor{i}")
     actuators = ET.SubElement(root, "actuator")
     tmin, tmax = robot.tension_bounds
@@ -256,21 +387,7 @@ def quaternions(R: npt.ArrayLike) -> np.ndarray:
     return np.where(q[..., :1] < 0, -q, q)
 
 
-def pose_to_qpos(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
-    """MuJoCo's ``qpos`` of the model of :func:`mjcf_text` at taut poses: ``(N, nq)`` for
-    ``(N, pose_size)`` poses, ``(nq,)`` for one pose.
-
-    Spatial rigid platform: ``(x, y, z, w, qx, qy, qz)``, the quaternion of the rotation of the
-    pose's three angles in the robot's orientation convention (``docs/architecture.md`` §2.3);
-    planar rigid platform: ``(x, y, θ)``; point mass: its position.
-
-    Raises
-    ------
-    PoseError
-        For poses of the wrong size or with a non-finite coordinate.
-    UnsupportedRobotError
-        For a robot the model cannot hold (:func:`check_mjcf`).
-    """
+def _checked_poses(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, bool]:
     check_mjcf(robot)
     arr = np.asarray(poses, dtype=float)
     single = arr.ndim == 1
@@ -281,8 +398,87 @@ def pose_to_qpos(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
         )
     if not np.all(np.isfinite(arr)):
         raise PoseError(f"{robot.name}: a pose coordinate is not finite")
+    return arr, single
+
+
+def _swivels(robot: Robot, arr: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Hinge angles ``(N, s)`` of the swivelling pulleys at checked poses, and where MuJoCo's
+    wrap is taut's path ``(N, s)`` (see the module's docstring)."""
+    idx, k, e0, r = swivel_frames(robot)
+    if robot.is_point_mass:
+        b = np.broadcast_to(arr[:, None, :3], (len(arr), len(idx), 3))
+    else:
+        R = rotation_matrix(arr[:, 3:6], robot.orientation)
+        b = arr[:, None, :3] + np.einsum("nij,sj->nsi", R, robot.anchors[idx])
+    v = b - robot.exits[idx][None]
+    h = np.einsum("nsi,si->ns", v, k)
+    w = v - h[..., None] * k[None]
+    q = np.arctan2(np.einsum("nsi,si->ns", w, np.cross(k, e0)), np.einsum("nsi,si->ns", w, e0))
+    # the anchor about the pulley centre, along e and k
+    x = np.linalg.norm(w, axis=-1) - r
+    m = WRAP_MARGIN * r
+    wedge = (x < 0) & (h <= m) & (-h <= -x * math.tan(SIDE_SITE_ANGLE) + m)
+    return q, (np.hypot(x, h) > r + m) & ~wedge
+
+
+def swivel_wraps_agree(robot: Robot, poses: npt.ArrayLike) -> np.ndarray | bool:
+    """Whether MuJoCo wraps every swivelling pulley of the model of :func:`mjcf_text` as taut
+    does at ``poses``: ``(N,)`` booleans for ``(N, pose_size)`` poses, one boolean for one
+    pose (all true for a robot without swivelling pulleys).
+
+    MuJoCo picks the way round a wrapping cylinder by its side site, which is taut's way
+    unless the anchor lies on or inside the pulley circle or in a thin wedge just outside its
+    rim, behind the exit point and nearer the axis than the pulley centre (the module's
+    docstring).
+
+    Raises
+    ------
+    PoseError
+        For poses of the wrong size or with a non-finite coordinate.
+    UnsupportedRobotError
+        For a robot the model cannot hold (:func:`check_mjcf`).
+    """
+    arr, single = _checked_poses(robot, poses)
+    ok = np.ones(len(arr), dtype=bool)
+    if robot.swivel_cables:
+        ok = np.all(_swivels(robot, arr)[1], axis=1)
+    return bool(ok[0]) if single else ok
+
+
+def pose_to_qpos(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
+    """MuJoCo's ``qpos`` of the model of :func:`mjcf_text` at taut poses: ``(N, nq)`` for
+    ``(N, pose_size)`` poses, ``(nq,)`` for one pose.
+
+    Spatial rigid platform: ``(x, y, z, w, qx, qy, qz)``, the quaternion of the rotation of the
+    pose's three angles in the robot's orientation convention (``docs/architecture.md`` §2.3);
+    planar rigid platform: ``(x, y, θ)``; point mass: its position.  Then the hinge angle of
+    each swivelling pulley, in cable order: the angle about the swivel axis ``k`` from the
+    pulley's ``e_0`` (:func:`swivel_frames`) to the anchor's direction from the axis, so that
+    the pulley plane holds the anchor, as in :mod:`taut.kinematics.swivel`.
+
+    Raises
+    ------
+    PoseError
+        For poses of the wrong size or with a non-finite coordinate.
+    InfeasiblePoseError
+        For a pose at which MuJoCo would wrap a swivelling pulley another way than taut
+        (:func:`swivel_wraps_agree`).
+    UnsupportedRobotError
+        For a robot the model cannot hold (:func:`check_mjcf`).
+    """
+    arr, single = _checked_poses(robot, poses)
     if robot.dimension == 3 and not robot.is_point_mass:
         qpos = np.concatenate([arr[:, :3], quaternions(rotation_matrix(arr[:, 3:6], robot.orientation))], axis=1)
     else:
         qpos = arr.copy()
+    if robot.swivel_cables:
+        q, agree = _swivels(robot, arr)
+        if not agree.all():
+            n, j = np.argwhere(~agree)[0]
+            raise InfeasiblePoseError(
+                f"{robot.name}: at pose {n + 1} the anchor of cable {robot.swivel_cables[j] + 1} is on or inside "
+                "its swivelling pulley's circle, or just outside it behind the exit point, where MuJoCo's tendon "
+                "would not wrap the pulley as taut's cable does"
+            )
+        qpos = np.concatenate([qpos, q], axis=1)
     return qpos[0] if single else qpos
