@@ -15,6 +15,7 @@ import taut  # noqa: E402
 from taut.dynamics import inverse_dynamics, required_wrench  # noqa: E402
 from taut.errors import TautError, UnsupportedRobotError  # noqa: E402
 from taut.kinematics import structure_matrix  # noqa: E402
+from taut.statics.tension import solve_tensions  # noqa: E402
 from taut.viz.dynamics import plot_motion_tensions  # noqa: E402
 
 
@@ -116,3 +117,20 @@ def test_bad_input(spatial):
         inverse_dynamics(spatial, q, q, q, time=[0, 1])
     with pytest.raises(UnsupportedRobotError):
         inverse_dynamics(taut.example("spatial-8cable"), q, q, q)
+
+
+@pytest.mark.parametrize("name", ["spatial", "planar", "point_mass"])
+def test_compiled_closed_form_is_the_statics_closed_form(name, request):
+    """The compiled closed form (Cholesky of ``W Wᵀ``) gives the tensions of
+    ``solve_tensions(..., "closed-form")`` (SVD pseudo-inverse) on the same wrenches."""
+    robot = request.getfixturevalue(name)
+    amp = [0.1, 0.05, 0.1, 0.05, 0.05, 0.1][: robot.pose_size]
+    t, q, qd, qdd = sinusoid(robot, 30, amp, 3.0)
+    res = inverse_dynamics(robot, q, qd, qdd, method="closed-form", time=t)
+    ref = solve_tensions(
+        structure_matrix(robot, q), -required_wrench(robot, q, qd, qdd), *robot.tension_bounds, "closed-form"
+    )
+    np.testing.assert_array_equal(res.feasible, ref.feasible)
+    np.testing.assert_array_equal(res.status, ref.status)
+    assert res.feasible.any()
+    np.testing.assert_allclose(res.tensions, ref.tensions, rtol=1e-9, atol=1e-9)

@@ -68,7 +68,7 @@ class ForwardDynamicsResult:
 
 
 @dataclass(frozen=True)
-class _Model:
+class KernelModel:
     """The compiled kernels' arguments for one robot (straight cables, or none when the
     cable wrench is computed outside: swivelling pulleys)."""
 
@@ -78,10 +78,10 @@ class _Model:
     n: int
 
 
-_MODELS: dict[int, tuple[Robot, _Model]] = {}
+_MODELS: dict[int, tuple[Robot, KernelModel]] = {}
 
 
-def _model(robot: Robot) -> _Model:
+def kernel_model(robot: Robot) -> KernelModel:
     """The kernel arguments of ``robot``, built once per robot object (a control loop calls
     :func:`acceleration` thousands of times with the same robot)."""
     hit = _MODELS.get(id(robot))
@@ -111,7 +111,7 @@ def _model(robot: Robot) -> _Model:
     fp[FLOAT_LAYOUT["T"]] = Tm.ravel()
     fp[FLOAT_LAYOUT["Tinv"]] = np.linalg.inv(Tm).ravel()
     ip = np.array([pd.kind, *axes], dtype=np.int64)
-    model = _Model(pd, (ip, fp, cables), straight, robot.n_cables)
+    model = KernelModel(pd, (ip, fp, cables), straight, robot.n_cables)
     if len(_MODELS) >= 16:
         _MODELS.pop(next(iter(_MODELS)))
     _MODELS[id(robot)] = (robot, model)
@@ -131,27 +131,44 @@ def _status_error(robot: Robot, status: np.ndarray, where: str) -> TautError:
 def _inputs(
     robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike, u: npt.ArrayLike, w_ext: npt.ArrayLike | None, what: str
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, bool]:
-    """States, cable inputs and wrenches as C-contiguous ``(N, ·)`` arrays.  The common case
-    (right shapes, finite values) is checked in a few operations, because a control loop calls
-    this every step; anything else goes through the full checks, which name the problem."""
-    dof, n = robot.pose_size, robot.n_cables
+    """States, cable inputs and wrenches as C-contiguous ``(N, ·)`` arrays."""
+    dof = robot.pose_size
+    quick = quick_rows(robot, q, ((qd, dof), (u, robot.n_cables), (w_ext, dof)))
+    if quick is None:
+        return _checked_inputs(robot, q, qd, u, w_ext, what)
+    (arr, vel, cab, w), single = quick
+    return arr, vel, cab, w, single
+
+
+def quick_rows(
+    robot: Robot, q: npt.ArrayLike, others: tuple[tuple[npt.ArrayLike | None, int], ...]
+) -> tuple[list[np.ndarray], bool] | None:
+    """Poses ``q`` and per-pose arrays ``others`` (value, width; None for zeros) as
+    C-contiguous ``(N, ·)`` arrays, and whether ``q`` was one pose, when the shapes are right
+    and every value is finite (and the poses within 1e9, like
+    :func:`~taut.kinematics.pose.as_poses`) — checked in a few operations, because a control
+    loop calls this every step; None otherwise, and the caller's full checks name the problem.
+    Not for jointed platforms (no joint limits are checked)."""
     try:
-        arr, vel, cab = (np.asarray(x, dtype=float) for x in (q, qd, u))
-        w = np.zeros(dof) if w_ext is None else np.asarray(w_ext, dtype=float)
+        arr = np.asarray(q, dtype=float)
+        rest = [np.zeros(width) if x is None else np.asarray(x, dtype=float) for x, width in others]
     except (TypeError, ValueError):
-        arr = vel = cab = w = np.zeros(0)
+        return None
     single = arr.ndim == 1
     N = 1 if single else (arr.shape[0] if arr.ndim == 2 else 0)
-    shapes_ok = arr.shape[-1:] == (dof,) and N > 0
-    for x, width in ((vel, dof), (cab, n), (w, dof)):
-        shapes_ok = shapes_ok and x.shape in ((width,), (1, width), (N, width))
-    if shapes_ok:
-        a, b, c, e = arr.ravel(), vel.ravel(), cab.ravel(), w.ravel()
-        size = float(a @ a)
-        total = size + float(b @ b) + float(c @ c) + float(e @ e)
-    if not (shapes_ok and math.isfinite(total) and size <= 1e18):
-        return _checked_inputs(robot, q, qd, u, w_ext, what)
-    return _rows(arr, N), _rows(vel, N), _rows(cab, N), _rows(w, N), single
+    if arr.shape[-1:] != (robot.pose_size,) or N == 0 or robot.n_joints:
+        return None
+    total = 0.0
+    for x, (_, width) in zip(rest, others):
+        if x.shape not in ((width,), (1, width), (N, width)):
+            return None
+        flat = x.ravel()
+        total += float(flat @ flat)
+    flat = arr.ravel()
+    size = float(flat @ flat)
+    if not (math.isfinite(total + size) and size <= 1e18):
+        return None
+    return [_rows(arr, N)] + [_rows(x, N) for x in rest], single
 
 
 def _rows(x: np.ndarray, N: int) -> np.ndarray:
@@ -201,7 +218,7 @@ def _cable_wrench(robot: Robot, q: np.ndarray, u: np.ndarray, elastic: bool) -> 
 
 
 def _accelerate(
-    robot: Robot, model: _Model, q: np.ndarray, qd: np.ndarray, u: np.ndarray, w: np.ndarray, elastic: bool
+    robot: Robot, model: KernelModel, q: np.ndarray, qd: np.ndarray, u: np.ndarray, w: np.ndarray, elastic: bool
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``(q̈, τ, status)`` of ``N`` validated states."""
     from taut.dynamics.kernels import accelerations
@@ -247,7 +264,7 @@ def acceleration(
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
        and Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
     """
-    model = _model(robot)
+    model = kernel_model(robot)
     arr, vel, tau, w, single = _inputs(robot, q, qd, tensions, w_ext, "tensions")
     qdd, _, status = _accelerate(robot, model, arr, vel, tau, w, False)
     if status.any():
@@ -300,14 +317,21 @@ def rk4_step(
     :func:`acceleration` when a stage reaches a singular configuration."""
     if not (np.isfinite(dt) and dt > 0):
         raise TautError(f"time step must be positive and finite, got {dt!r}")
-    model = _model(robot)
+    model = kernel_model(robot)
     arr, vel, tau, w, single = _inputs(robot, q, qd, tensions, w_ext, "tensions")
     qn, vn = _rk4(robot, model, arr, vel, tau, w, float(dt), False)
     return (qn[0], vn[0]) if single else (qn, vn)
 
 
 def _rk4(
-    robot: Robot, model: _Model, q: np.ndarray, qd: np.ndarray, u: np.ndarray, w: np.ndarray, dt: float, elastic: bool
+    robot: Robot,
+    model: KernelModel,
+    q: np.ndarray,
+    qd: np.ndarray,
+    u: np.ndarray,
+    w: np.ndarray,
+    dt: float,
+    elastic: bool,
 ) -> tuple[np.ndarray, np.ndarray]:
     status = np.zeros(q.shape[0], np.int64)
     if model.straight:
@@ -395,7 +419,7 @@ def forward_dynamics(
         raise TautError(f"duration must be positive and finite, got {duration!r}")
     if step is not None and not (np.isfinite(step) and step > 0):
         raise TautError(f"step must be positive and finite, got {step!r}")
-    model = _model(robot)
+    model = kernel_model(robot)
     elastic = lengths is not None
     if elastic:
         robot_stiffness(robot)
@@ -423,7 +447,7 @@ def forward_dynamics(
 
 def _fixed_steps(
     robot: Robot,
-    model: _Model,
+    model: KernelModel,
     q: np.ndarray,
     qd: np.ndarray,
     duration: float,
@@ -462,7 +486,7 @@ def _fixed_steps(
 
 def _adaptive(
     robot: Robot,
-    model: _Model,
+    model: KernelModel,
     q: np.ndarray,
     qd: np.ndarray,
     duration: float,

@@ -31,10 +31,9 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from taut.dynamics.platform import PLANAR, POINT_MASS, as_rates, frames, own_load, platform_dynamics
+from taut.dynamics.forward import KernelModel, kernel_model, quick_rows
+from taut.dynamics.platform import as_rates
 from taut.errors import TautError
-from taut.geometry.rates import angular_acceleration, angular_velocity
-from taut.geometry.vectors import cross
 from taut.kinematics.pose import as_poses
 from taut.model.robot import Robot
 
@@ -42,6 +41,11 @@ __all__ = ["InverseDynamicsResult", "required_wrench", "inverse_dynamics"]
 
 #: Samples solved per call of the tension distribution (and per progress report).
 CHUNK = 20_000
+
+#: The status of a sample: admissible tensions found, proved infeasible, the method gave up,
+#: or no structure matrix.
+STATUSES = ("optimal", "infeasible", "not-found", "undefined")
+_ORDER = np.argsort(STATUSES)
 
 _WHY = {
     "infeasible": "no tensions within the bounds give the required wrench (proved)",
@@ -60,12 +64,12 @@ class InverseDynamicsResult:
     #: ``(N,)`` ``"optimal"``, ``"infeasible"`` (proved), ``"not-found"`` (the method gave up)
     #: or ``"undefined"`` (no structure matrix: a cable of zero length)
     status: np.ndarray
-    reasons: tuple[str, ...]  #: ``N`` reasons, ``""`` where feasible
+    reasons: np.ndarray  #: ``(N,)`` str: why a sample has no admissible tensions, ``""`` where feasible
     method: str
 
     def failures(self) -> list[tuple[int, str]]:
         """``(index, reason)`` of every sample without admissible tensions (0-based)."""
-        return [(int(k), self.reasons[k]) for k in np.flatnonzero(~self.feasible)]
+        return [(int(k), str(self.reasons[k])) for k in np.flatnonzero(~self.feasible)]
 
     @property
     def first_failure(self) -> int | None:
@@ -77,6 +81,11 @@ class InverseDynamicsResult:
 def _motion(
     robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike, qdd: npt.ArrayLike
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
+    dof = robot.pose_size
+    quick = quick_rows(robot, q, ((qd, dof), (qdd, dof)))
+    if quick is not None:
+        (arr, vel, acc), single = quick
+        return arr, vel, acc, single
     arr, single = as_poses(robot, q)
     N = arr.shape[0]
     return arr, as_rates(robot, qd, N), as_rates(robot, qdd, N, "pose accelerations"), single
@@ -99,36 +108,61 @@ def required_wrench(
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
        and Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
     """
-    platform_dynamics(robot)
+    model = kernel_model(robot)
     arr, vel, acc, single = _motion(robot, q, qd, qdd)
-    w = _wrench(robot, arr, vel, acc)
-    if w_ext is not None:
-        w = w - as_rates(robot, w_ext, arr.shape[0], "external wrenches")
-    return w[0] if single else w
+    w = _ext(robot, w_ext, arr.shape[0])
+    wrench, _, _, _ = _samples(model, arr, vel, acc, w, robot.tension_bounds, closed_form=False, cables=False)
+    return wrench[0] if single else wrench
 
 
-def _wrench(robot: Robot, q: np.ndarray, qd: np.ndarray, qdd: np.ndarray) -> np.ndarray:
-    pd = platform_dynamics(robot)
-    d, m = pd.dimension, pd.mass
-    if pd.kind == POINT_MASS:
-        return m * qdd - own_load(pd, np.broadcast_to(np.eye(3), (q.shape[0], 3, 3)), np.zeros((q.shape[0], 3)))
-    R, r = frames(pd, q)
-    N = q.shape[0]
-    omega, alpha = np.zeros((N, 3)), np.zeros((N, 3))
-    if pd.kind == PLANAR:
-        omega[:, 2], alpha[:, 2] = qd[:, 2], qdd[:, 2]
-    else:
-        omega = angular_velocity(q[:, 3:6], qd[:, 3:6], pd.orientation)
-        alpha = angular_acceleration(q[:, 3:6], qd[:, 3:6], qdd[:, 3:6], pd.orientation)
-    pdd = np.zeros((N, 3))
-    pdd[:, :d] = qdd[:, :d]
-    ac = pdd + cross(alpha, r) + cross(omega, cross(omega, r))
-    F = m * ac
-    Ic = R @ pd.inertia @ np.swapaxes(R, 1, 2)
-    Ia, Iw = np.einsum("nij,nj->ni", Ic, alpha), np.einsum("nij,nj->ni", Ic, omega)
-    moment = Ia + cross(omega, Iw) + cross(r, F)
-    out = np.concatenate([F[:, :d], moment[:, 2:] if pd.kind == PLANAR else moment], axis=1)
-    return out - own_load(pd, R, r)
+def _ext(robot: Robot, w_ext: npt.ArrayLike | None, N: int) -> np.ndarray:
+    if w_ext is None:
+        return np.zeros((N, robot.pose_size))
+    return np.ascontiguousarray(as_rates(robot, w_ext, N, "external wrenches"))
+
+
+def _samples(
+    model: KernelModel,
+    q: np.ndarray,
+    qd: np.ndarray,
+    qdd: np.ndarray,
+    w: np.ndarray,
+    bounds: tuple[np.ndarray, np.ndarray],
+    closed_form: bool,
+    cables: bool = True,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Compiled wrenches ``(N, dof)``, structure matrices ``(N, dof, n)`` of straight cables,
+    closed-form tensions ``(N, n)`` and the kernel status ``(N,)`` (see
+    :func:`taut.dynamics.kernels.inverse_samples`)."""
+    from taut.dynamics.kernels import inverse_samples
+    from taut.statics.tension import EQUILIBRIUM_RTOL
+
+    N, dof = q.shape
+    ip, fp, cab = model.args
+    if not cables:
+        cab = cab[:0]
+    n = cab.shape[0]
+    wrench, W, tau = np.empty((N, dof)), np.zeros((N, dof, n)), np.zeros((N, n))
+    status = np.empty(N, np.int64)
+    c = np.ascontiguousarray
+    inverse_samples(
+        ip,
+        fp,
+        cab,
+        closed_form,
+        c(q),
+        c(qd),
+        c(qdd),
+        c(w),
+        bounds[0],
+        bounds[1],
+        EQUILIBRIUM_RTOL,
+        wrench,
+        W,
+        tau,
+        status,
+    )
+    return wrench, W, tau, status
 
 
 def inverse_dynamics(
@@ -142,13 +176,19 @@ def inverse_dynamics(
     time: npt.ArrayLike | None = None,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> InverseDynamicsResult:
-    """Cable tensions along a sampled motion ``(q, q̇, q̈)`` (each ``(N, dof)``, or one sample).
+    """Cable tensions along a sampled motion ``(q, q̇, q̈)`` (each ``(N, dof)``; one sample is
+    a motion of ``N = 1``).
 
     ``method`` is a tension distribution method of :data:`taut.statics.tension.METHODS`
     (``lp``, ``qp``, ``inf``, ``closed-form``, ``improved-closed-form``, ``barycentric``); the
     bounds are ``robot.tension_bounds``.  ``w_ext`` is an external wrench besides the robot's
     weight, ``time (N,)`` the sample times (kept in the result for plots).  Samples without an
     admissible distribution get zero tensions, ``feasible = False`` and a reason.
+
+    The wrenches, structure matrices and, for ``closed-form``, the tensions are computed by a
+    compiled kernel (:func:`taut.dynamics.kernels.inverse_samples`); the samples it does not
+    accept, and every sample of the other methods, go to
+    :func:`taut.statics.tension.solve_tensions`, so that ``feasible`` means what it means there.
 
     Raises
     ------
@@ -163,13 +203,14 @@ def inverse_dynamics(
        and Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
     .. [2] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
+    .. [3] A. Pott, T. Bruckmann, L. Mikelsons, "Closed-form force distribution for parallel
+       wire robots", Computational Kinematics, Springer, 2009. (docs/references.bib: pott2009)
     """
-    from taut.kinematics.batch import batch_structure_matrices
     from taut.statics.tension import METHODS, solve_tensions
 
     if method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
-    platform_dynamics(robot)
+    model = kernel_model(robot)
     arr, vel, acc, _ = _motion(robot, q, qd, qdd)
     N, n = arr.shape[0], robot.n_cables
     times = None
@@ -177,30 +218,43 @@ def inverse_dynamics(
         times = np.array(time, dtype=float)
         if times.shape != (N,) or not np.isfinite(times).all():
             raise TautError(f"sample times must be {N} finite numbers, got shape {times.shape}")
-    wrench = _wrench(robot, arr, vel, acc)
-    if w_ext is not None:
-        wrench = wrench - as_rates(robot, w_ext, N, "external wrenches")
-    tmin, tmax = robot.tension_bounds
-    tensions = np.zeros((N, n))
+    from taut.dynamics.kernels import ZERO_LENGTH
+
+    w = _ext(robot, w_ext, N)
+    bounds = robot.tension_bounds
+    wrench, tensions = np.empty((N, robot.pose_size)), np.zeros((N, n))
     feasible = np.zeros(N, dtype=bool)
-    status = np.full(N, "undefined", dtype=object)
+    code = np.full(N, STATUSES.index("undefined"), dtype=np.int64)
     for start in range(0, N, CHUNK):
         part = slice(start, min(start + CHUNK, N))
-        _, W, ok = batch_structure_matrices(robot, arr[part])
-        idx = np.flatnonzero(ok) + start
-        if idx.size:
-            res = solve_tensions(W[ok], -wrench[idx], tmin, tmax, method)
-            tensions[idx], feasible[idx], status[idx] = res.tensions, res.feasible, res.status
+        closed = method == "closed-form" and model.straight
+        wr, W, tau, st = _samples(model, arr[part], vel[part], acc[part], w[part], bounds, closed)
+        wrench[part] = wr
+        ok = st != ZERO_LENGTH
+        if not model.straight:
+            from taut.kinematics.batch import batch_structure_matrices
+
+            _, W, ok = batch_structure_matrices(robot, arr[part])
+        done = ok & (st == 0) if closed else np.zeros_like(ok)
+        tensions[part][done], feasible[part][done], code[part][done] = tau[done], True, STATUSES.index("optimal")
+        rest = np.flatnonzero(ok & ~done)
+        if rest.size:
+            res = solve_tensions(W[rest], -wr[rest], bounds[0], bounds[1], method)
+            idx = rest + start
+            tensions[idx], feasible[idx] = res.tensions, res.feasible
+            code[idx] = _ORDER[np.searchsorted(STATUSES, res.status, sorter=_ORDER)]
         if progress is not None:
             progress(part.stop, N)
-    reasons = tuple("" if s == "optimal" else _reason(str(s), method) for s in status)
-    labels = status.astype(str)
-    for a in [wrench, tensions, feasible, labels] + ([] if times is None else [times]):
+    labels = np.array(STATUSES)[code]
+    reasons = np.array([_reason(s, method) for s in STATUSES])[code]
+    for a in [wrench, tensions, feasible, labels, reasons] + ([] if times is None else [times]):
         a.setflags(write=False)
     return InverseDynamicsResult(times, wrench, tensions, feasible, labels, reasons, method)
 
 
 def _reason(status: str, method: str) -> str:
+    if status == "optimal":
+        return ""
     if status in _WHY:
         return _WHY[status]
     return f"method {method!r} found no admissible tensions (it may give up although some exist: try 'qp' or 'lp')"

@@ -303,3 +303,222 @@ def rk4_steps(
             else:
                 q_out[k, j] = q0[j]
                 qd_out[k, j] = v[j]
+
+
+@njit(cache=True, nogil=True)
+def wrench_one(
+    ip: np.ndarray,
+    fp: np.ndarray,
+    cables: np.ndarray,
+    q: np.ndarray,
+    qd: np.ndarray,
+    qdd: np.ndarray,
+    w_ext: np.ndarray,
+    wrench: np.ndarray,
+    W: np.ndarray,
+    vec: np.ndarray,
+    mat: np.ndarray,
+) -> int:
+    """The wrench ``W τ`` the cables must apply for the sample ``(q, q̇, q̈)`` into ``wrench``
+    (the rate of momentum about ``p`` minus the weight, the constant load and ``w_ext``;
+    Newton–Euler through the centre of mass) and the structure matrix of the straight cables
+    into ``W (dof, n)``; returns the status (:data:`ZERO_LENGTH` for a cable without direction)."""
+    kind = ip[0]
+    mass = fp[0]
+    com, force, moment = fp[1:4], fp[22:25], fp[25:28]
+    inertia = fp[4:13].reshape((3, 3))
+    T = fp[28:37].reshape((3, 3))
+    R, U, tmp = mat[0], mat[1], mat[2]
+    omega, alpha, p, rc, ac, wxr, cr, t, td, tdd, arm, b, v, mom, h, Ia = (
+        vec[0],
+        vec[1],
+        vec[2],
+        vec[3],
+        vec[4],
+        vec[5],
+        vec[6],
+        vec[7],
+        vec[8],
+        vec[9],
+        vec[10],
+        vec[11],
+        vec[12],
+        vec[13],
+        vec[14],
+        vec[15],
+    )
+    for i in range(3):
+        omega[i] = 0.0
+        alpha[i] = 0.0
+        p[i] = 0.0
+        ac[i] = 0.0
+        for j in range(3):
+            R[i, j] = 1.0 if i == j else 0.0
+    d = 2 if kind == 1 or (kind == 0 and q.shape[0] == 2) else 3
+    for i in range(d):
+        p[i] = q[i]
+        ac[i] = qdd[i]
+    if kind == 1:
+        c, s = np.cos(q[2]), np.sin(q[2])
+        R[0, 0], R[0, 1], R[1, 0], R[1, 1] = c, -s, s, c
+        omega[2], alpha[2] = qd[2], qdd[2]
+    elif kind == 2:
+        _matvec(T, q[3:6], t)
+        _matvec(T, qd[3:6], td)
+        _matvec(T, qdd[3:6], tdd)
+        for k in range(3):
+            ax = ip[1 + k]
+            for i in range(3):
+                U[i, k] = R[i, ax]
+            # α = Σ uₖ ẗₖ + (Σ_{j<k} uⱼ ṫⱼ) × uₖ ṫₖ
+            _cross(omega, U[:, k], cr)
+            for i in range(3):
+                alpha[i] += U[i, k] * tdd[k] + cr[i] * td[k]
+                omega[i] += U[i, k] * td[k]
+            _rotate_axis(ax, t[k], R, tmp)
+            R[:, :] = tmp
+    _matvec(R, com, rc)
+    if kind != 0:
+        _cross(alpha, rc, cr)
+        _cross(omega, rc, wxr)
+        _cross(omega, wxr, mom)
+        for i in range(3):
+            ac[i] += cr[i] + mom[i]
+    for i in range(d):
+        wrench[i] = mass * ac[i] - force[i] - w_ext[i]
+    if kind != 0:
+        # N = I_c α + ω × I_c ω + r × m a_c − r × f₀ − moment, with I_c = R I Rᵀ
+        _matTvec(R, omega, b)
+        _matvec(inertia, b, v)
+        _matvec(R, v, h)
+        _matTvec(R, alpha, b)
+        _matvec(inertia, b, v)
+        _matvec(R, v, Ia)
+        _cross(omega, h, cr)
+        for i in range(3):
+            v[i] = mass * ac[i] - force[i]
+        _cross(rc, v, mom)
+        if kind == 1:
+            wrench[2] = Ia[2] + cr[2] + mom[2] - moment[0] - w_ext[2]
+        else:
+            for i in range(3):
+                wrench[3 + i] = Ia[i] + cr[i] + mom[i] - moment[i] - w_ext[3 + i]
+    for i in range(cables.shape[0]):
+        _matvec(R, cables[i, 3:6], arm)
+        for j in range(3):
+            b[j] = p[j] + arm[j]
+            v[j] = cables[i, j] - b[j]
+        length = np.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+        if length < MIN_LENGTH:
+            return ZERO_LENGTH
+        for j in range(3):
+            v[j] /= length
+        for j in range(d):
+            W[j, i] = v[j]
+        if kind != 0:
+            _cross(arm, v, mom)
+            if kind == 1:
+                W[2, i] = mom[2]
+            else:
+                for j in range(3):
+                    W[3 + j, i] = mom[j]
+    return OK
+
+
+@njit(cache=True, nogil=True)
+def closed_form_one(
+    W: np.ndarray, wrench: np.ndarray, tmin: np.ndarray, tmax: np.ndarray, rtol: float, tau: np.ndarray, G: np.ndarray
+) -> bool:
+    """The closed-form distribution of Pott, Bruckmann and Mikelsons (2009): ``τ = τm + Wᵀ
+    (W Wᵀ)⁻¹ (wrench − W τm)``, ``τm`` the middle of the bounds (``τ_min`` without an upper
+    bound), by a Cholesky factorization of ``W Wᵀ`` (``G`` is work space ``(dof, dof)``).
+    True when ``W`` has full row rank and ``τ`` is within the bounds with ``‖W τ − wrench‖∞ ≤
+    rtol · max(‖wrench‖∞, max|W| ‖τ‖∞)`` (the acceptance test of :mod:`taut.statics.tension`)."""
+    m, n = W.shape
+    for i in range(n):
+        tau[i] = 0.5 * (tmin[i] + tmax[i]) if np.isfinite(tmax[i]) else tmin[i]
+    y = np.empty(m)
+    for r in range(m):
+        acc = wrench[r]
+        for i in range(n):
+            acc -= W[r, i] * tau[i]
+        y[r] = acc
+        for c in range(r + 1):
+            g = 0.0
+            for i in range(n):
+                g += W[r, i] * W[c, i]
+            G[r, c] = g
+    # Cholesky G = L Lᵀ in place (lower triangle), then L Lᵀ y = r
+    for j in range(m):
+        s = G[j, j]
+        for k in range(j):
+            s -= G[j, k] * G[j, k]
+        if not s > 1e-14 * (G[j, j] + 1e-300):
+            return False
+        G[j, j] = np.sqrt(s)
+        for i in range(j + 1, m):
+            s = G[i, j]
+            for k in range(j):
+                s -= G[i, k] * G[j, k]
+            G[i, j] = s / G[j, j]
+    for i in range(m):
+        s = y[i]
+        for k in range(i):
+            s -= G[i, k] * y[k]
+        y[i] = s / G[i, i]
+    for i in range(m - 1, -1, -1):
+        s = y[i]
+        for k in range(i + 1, m):
+            s -= G[k, i] * y[k]
+        y[i] = s / G[i, i]
+    wmax, tmaxabs, Wmax = 0.0, 0.0, 0.0
+    for i in range(n):
+        acc = 0.0
+        for r in range(m):
+            acc += W[r, i] * y[r]
+            Wmax = max(Wmax, abs(W[r, i]))
+        tau[i] += acc
+        if not (tau[i] >= tmin[i] and tau[i] <= tmax[i]):
+            return False
+        tmaxabs = max(tmaxabs, abs(tau[i]))
+    res = 0.0
+    for r in range(m):
+        acc = -wrench[r]
+        wmax = max(wmax, abs(wrench[r]))
+        for i in range(n):
+            acc += W[r, i] * tau[i]
+        res = max(res, abs(acc))
+    return res <= rtol * max(wmax, Wmax * tmaxabs)
+
+
+@njit(cache=True, nogil=True)
+def inverse_samples(
+    ip: np.ndarray,
+    fp: np.ndarray,
+    cables: np.ndarray,
+    closed_form: bool,
+    q: np.ndarray,
+    qd: np.ndarray,
+    qdd: np.ndarray,
+    w_ext: np.ndarray,
+    tmin: np.ndarray,
+    tmax: np.ndarray,
+    rtol: float,
+    wrench: np.ndarray,
+    W: np.ndarray,
+    tau: np.ndarray,
+    status: np.ndarray,
+) -> None:
+    """:func:`wrench_one` over ``N`` samples, and with ``closed_form`` :func:`closed_form_one`:
+    ``status`` 0 solved by the closed form, 1 not solved here (to the caller), :data:`ZERO_LENGTH`
+    no structure matrix."""
+    vec, mat = np.empty((VECTORS, 3)), np.empty((MATRICES, 3, 3))
+    G = np.empty((W.shape[1], W.shape[1]))
+    for k in range(q.shape[0]):
+        s = wrench_one(ip, fp, cables, q[k], qd[k], qdd[k], w_ext[k], wrench[k], W[k], vec, mat)
+        if s != OK:
+            status[k] = s
+        elif closed_form and closed_form_one(W[k], wrench[k], tmin, tmax, rtol, tau[k], G):
+            status[k] = 0
+        else:
+            status[k] = 1
