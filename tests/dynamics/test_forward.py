@@ -268,3 +268,38 @@ def test_bad_input(spatial):
         rk4_step(spatial, q, z, np.zeros(8), 0.0)
     with pytest.raises(TautError):
         acceleration(taut.example("spatial-8cable"), q, z, np.zeros(8))
+
+
+def test_swivelling_pulleys(spatial):
+    """Cables through swivelling pulleys take the NumPy path of the kinematics: the
+    acceleration solves the Lagrange form with their structure matrix, RK4 agrees with
+    DOP853, and inverse dynamics balances the required wrench."""
+    from taut.dynamics import bias_forces, generalized_forces, mass_matrix, required_wrench
+    from taut.kinematics import structure_matrix
+
+    robot = with_stiffness(
+        spatial.model_copy(
+            update={
+                "cables": tuple(
+                    c.model_copy(update={"swivel": {"axis": (0, 0, 1), "radius": 0.03}}) for c in spatial.cables
+                )
+            }
+        ),
+        2e4,
+    )
+    q = np.array([0.05, -0.02, 0.1, 0.02, -0.03, 0.05])
+    qd = np.array([0.1, 0.0, -0.1, 0.2, 0.1, 0.0])
+    tau = distribute_tensions(robot, q, method="qp").tensions + 1.0
+    W = structure_matrix(robot, q)
+    want = np.linalg.solve(mass_matrix(robot, q), generalized_forces(robot, q, W @ tau) - bias_forces(robot, q, qd))
+    np.testing.assert_allclose(acceleration(robot, q, qd, tau), want, rtol=1e-10, atol=1e-10)
+    res = forward_dynamics(robot, q, qd, 0.05, tensions=lambda t: tau, method="RK4", step=1e-3)
+    ref = forward_dynamics(robot, q, qd, 0.05, tensions=lambda t: tau, times=[0.05], **TIGHT)
+    np.testing.assert_allclose(res.pose[-1], ref.pose[-1], atol=1e-10)
+    l0 = cable_lengths(robot, q) * (1 - 1e-3)
+    np.testing.assert_allclose(cable_tensions(robot, q, l0), 2e4 * (1 / (1 - 1e-3) - 1), rtol=1e-9)
+    el = forward_dynamics(robot, q, qd, 0.01, lengths=lambda t: l0, method="RK4", step=1e-3)
+    assert np.isfinite(el.pose).all() and (el.tensions > 0).all()
+    ident = inverse_dynamics(robot, q, qd, np.zeros(6), method="qp")
+    assert ident.feasible.all()
+    np.testing.assert_allclose(W @ ident.tensions[0], required_wrench(robot, q, qd, np.zeros(6)), atol=1e-8)

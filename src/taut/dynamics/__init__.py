@@ -19,6 +19,7 @@ if TYPE_CHECKING:
         rk4_step,
     )
     from taut.dynamics.inverse import InverseDynamicsResult, inverse_dynamics, required_wrench
+    from taut.dynamics.loop import LoopModel, loop_model
     from taut.dynamics.platform import (
         bias_forces,
         coriolis_matrix,
@@ -41,6 +42,8 @@ _LAZY = {
     "InverseDynamicsResult": "taut.dynamics.inverse",
     "inverse_dynamics": "taut.dynamics.inverse",
     "required_wrench": "taut.dynamics.inverse",
+    "LoopModel": "taut.dynamics.loop",
+    "loop_model": "taut.dynamics.loop",
     "bias_forces": "taut.dynamics.platform",
     "coriolis_matrix": "taut.dynamics.platform",
     "generalized_forces": "taut.dynamics.platform",
@@ -61,6 +64,8 @@ __all__ = [
     "InverseDynamicsResult",
     "inverse_dynamics",
     "required_wrench",
+    "LoopModel",
+    "loop_model",
     "bias_forces",
     "coriolis_matrix",
     "generalized_forces",

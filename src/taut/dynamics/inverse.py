@@ -236,7 +236,8 @@ def inverse_dynamics(
 
             _, W, ok = batch_structure_matrices(robot, arr[part])
         done = ok & (st == 0) if closed else np.zeros_like(ok)
-        tensions[part][done], feasible[part][done], code[part][done] = tau[done], True, STATUSES.index("optimal")
+        if closed:
+            tensions[part][done], feasible[part][done], code[part][done] = tau[done], True, STATUSES.index("optimal")
         rest = np.flatnonzero(ok & ~done)
         if rest.size:
             res = solve_tensions(W[rest], -wr[rest], bounds[0], bounds[1], method)
