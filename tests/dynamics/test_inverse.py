@@ -134,3 +134,42 @@ def test_compiled_closed_form_is_the_statics_closed_form(name, request):
     np.testing.assert_array_equal(res.status, ref.status)
     assert res.feasible.any()
     np.testing.assert_allclose(res.tensions, ref.tensions, rtol=1e-9, atol=1e-9)
+
+
+def test_progress_and_forward_plot(spatial, monkeypatch):
+    """``progress(done, total)`` reaches the total; the plot of a simulated motion marks the
+    samples where an elastic cable is slack."""
+    import taut.dynamics.inverse as inverse_module
+    from taut.dynamics import forward_dynamics
+    from taut.kinematics import cable_lengths
+
+    monkeypatch.setattr(inverse_module, "CHUNK", 10)
+    calls = []
+    t, q, qd, qdd = sinusoid(spatial, 25, [0.1, 0.05, 0.1, 0.05, 0.05, 0.1], 2.0)
+    chunked = inverse_dynamics(spatial, q, qd, qdd, method="closed-form", progress=lambda d, n: calls.append((d, n)))
+    assert calls == [(10, 25), (20, 25), (25, 25)]
+    whole = inverse_dynamics(spatial, q, qd, qdd, method="closed-form")
+    np.testing.assert_array_equal(chunked.tensions, whole.tensions)
+
+    robot = spatial.model_copy(
+        update={"cables": tuple(c.model_copy(update={"stiffness": 2e4}) for c in spatial.cables)}
+    )
+    q0 = np.array([0.05, -0.02, 0.1, 0.02, -0.03, 0.05])
+    l0 = cable_lengths(robot, q0) * (1 - 1e-3)
+    l0[2] += 0.2
+    steps = []
+    res = forward_dynamics(
+        robot,
+        q0,
+        np.zeros(6),
+        0.02,
+        lengths=lambda t: l0,
+        method="RK4",
+        step=1e-3,
+        progress=lambda d, n: steps.append(d),
+    )
+    assert steps == list(range(1, 21))
+    ax = plot_motion_tensions(robot, res)
+    marks = next(line for line in ax.get_lines() if line.get_gid() == "infeasible")
+    np.testing.assert_allclose(marks.get_xdata(), res.time)  # cable 3 is slack throughout
+    assert "simulated motion" in ax.get_title()
