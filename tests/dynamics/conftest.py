@@ -28,6 +28,18 @@ def spatial_centred():
 
 
 @pytest.fixture(scope="session")
+def loaded():
+    """spatial-8cable with an inertia, an offset centre of mass and a constant external
+    wrench (``platform.wrench``: a force at the centre of mass and a moment)."""
+    return with_platform(
+        taut.example("spatial-8cable"),
+        inertia=SPATIAL_INERTIA,
+        wrench_point=(0.02, -0.01, 0.03),
+        wrench=(1.0, -2.0, 3.0, 0.1, 0.2, -0.3),
+    )
+
+
+@pytest.fixture(scope="session")
 def planar():
     """planar-4cable with Izz and the centre of mass off the reference point."""
     return with_platform(taut.example("planar-4cable"), inertia=(0.004,), wrench_point=(0.01, -0.02))
@@ -50,6 +62,19 @@ def point_mass():
             {"exit": [x, y, 1.0], "anchor": [0, 0, 0], "tension": [0, 200]}
             for x, y in ((-1, -1), (1, -1), (1, 1), (-1, 1))
         ],
+    }
+    return taut.model.robot_from_dict(data)
+
+
+@pytest.fixture(scope="session")
+def planar_point():
+    """A planar point mass on 3 cables, with a gravity that is not along an axis."""
+    data = {
+        "format": "taut/1",
+        "name": "planar point mass",
+        "dimension": 2,
+        "platform": {"kind": "point-mass", "mass": 0.5, "gravity": [1.0, -9.0]},
+        "cables": [{"exit": e, "tension": [0, 100]} for e in ([-1.0, 1.0], [1.0, 1.0], [0.0, -1.0])],
     }
     return taut.model.robot_from_dict(data)
 

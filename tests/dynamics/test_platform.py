@@ -113,7 +113,7 @@ def euler_lagrange(robot, q, qd, qdd, h=1e-3):
     return derivative(momentum, h) - dL
 
 
-ROBOTS = ["spatial", "planar", "point_mass", "spatial_centred"]
+ROBOTS = ["spatial", "planar", "point_mass", "spatial_centred", "planar_point"]
 
 
 @pytest.mark.parametrize("name", ROBOTS)
@@ -147,7 +147,7 @@ def test_every_orientation_convention(orientation, spatial, random_state):
     np.testing.assert_allclose(lhs, ref, rtol=0, atol=1e-6 * np.abs(ref).max())
 
 
-@pytest.mark.parametrize("name", ["spatial", "planar", "point_mass"])
+@pytest.mark.parametrize("name", ["spatial", "planar", "point_mass", "planar_point"])
 def test_cable_generalized_forces_by_virtual_work(name, request, random_state, rng):
     """``Jᵀ W τ = −(∂l/∂q)ᵀ τ``: the moment rows of ``W`` pair with ``ω``, not with the angle
     rates, and ``velocity_jacobian`` converts them."""
@@ -162,13 +162,16 @@ def test_cable_generalized_forces_by_virtual_work(name, request, random_state, r
     np.testing.assert_allclose(Q, J.T @ structure_matrix(robot, q) @ tau, rtol=1e-12)
 
 
-@pytest.mark.parametrize("name", ROBOTS)
+@pytest.mark.parametrize("name", [*ROBOTS, "loaded"])
 def test_gravity_is_the_statics_wrench(name, request, random_state):
-    """``g(q) = −Jᵀ w₀`` with ``w₀`` the external wrench of the statics, and ``∂V/∂q``."""
+    """``g(q) = −Jᵀ w₀`` with ``w₀`` the external wrench of the statics (weight and constant
+    ``platform.wrench``), and ``∂V/∂q`` without a constant wrench."""
     robot = request.getfixturevalue(name)
     q, _, _ = random_state(robot)
     g = gravity_forces(robot, q)
     np.testing.assert_allclose(g, -velocity_jacobian(robot, q).T @ external_wrench(robot, q), atol=1e-12)
+    if robot.platform.wrench is not None:
+        return
     n = robot.pose_size
     dV = np.array([derivative(lambda s, k=k: potential(robot, q + s * np.eye(n)[k]), 1e-4) for k in range(n)])
     np.testing.assert_allclose(g, dV, atol=1e-8)
@@ -207,7 +210,7 @@ def test_planar_skew_property(planar, random_state):
     np.testing.assert_allclose(S, -S.T, atol=1e-9)
 
 
-@pytest.mark.parametrize("name", ROBOTS)
+@pytest.mark.parametrize("name", [*ROBOTS, "loaded"])
 def test_acceleration_solves_the_lagrange_form(name, request, random_state, rng):
     """The compiled Newton–Euler solution equals ``M⁻¹ (Jᵀ (W τ + w_ext) − h)``, for one state
     and a batch."""
@@ -227,7 +230,7 @@ def test_acceleration_solves_the_lagrange_form(name, request, random_state, rng)
         np.testing.assert_allclose(acceleration(robot, Q[k], QD[k], tau[k], w[k]), A[k], rtol=1e-13, atol=1e-13)
 
 
-@pytest.mark.parametrize("name", ROBOTS)
+@pytest.mark.parametrize("name", [*ROBOTS, "loaded"])
 def test_required_wrench_is_the_inverse_of_acceleration(name, request, random_state):
     """Newton–Euler inverse dynamics: ``Jᵀ (required wrench) = M q̈ + h`` and at rest it is
     minus the statics' external wrench."""

@@ -119,8 +119,10 @@ def kernel_model(robot: Robot) -> KernelModel:
 
 
 def _status_error(robot: Robot, status: np.ndarray, where: str) -> TautError:
+    from taut.dynamics.kernels import GIMBAL_LOCK
+
     k = int(np.flatnonzero(status)[0])
-    if status[k] == 1:
+    if status[k] == GIMBAL_LOCK:
         return SingularConfigurationError(
             f"{robot.name}: {where} {k + 1}: the orientation is at the gimbal lock of the "
             f"{robot.orientation} convention (the angle rates are undefined)"
