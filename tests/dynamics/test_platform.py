@@ -279,3 +279,22 @@ def test_batches_match_single_poses(spatial, rng):
     for k in range(4):
         np.testing.assert_allclose(M[k], mass_matrix(spatial, Q[k]), rtol=1e-14)
         np.testing.assert_allclose(h[k], bias_forces(spatial, Q[k], QD[k]), rtol=1e-14)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    pose=st.lists(st.floats(-0.25, 0.25), min_size=6, max_size=6),
+    rates=st.lists(st.floats(-2, 2), min_size=6, max_size=6),
+    accelerations=st.lists(st.floats(-3, 3), min_size=6, max_size=6),
+)
+def test_inverse_then_forward_is_the_identity(pose, rates, accelerations):
+    """At any state, the tensions of the inverse dynamics for ``q̈`` give back ``q̈`` through
+    the forward dynamics (when they are admissible)."""
+    from taut.dynamics import inverse_dynamics
+
+    q, qd, qdd = np.array(pose), np.array(rates), np.array(accelerations)
+    res = inverse_dynamics(_SPATIAL, q, qd, qdd, method="qp")
+    if res.feasible[0]:
+        np.testing.assert_allclose(acceleration(_SPATIAL, q, qd, res.tensions[0]), qdd, atol=1e-7)
+    else:
+        assert res.status[0] == "infeasible"
