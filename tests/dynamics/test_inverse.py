@@ -173,3 +173,16 @@ def test_progress_and_forward_plot(spatial, monkeypatch):
     marks = next(line for line in ax.get_lines() if line.get_gid() == "infeasible")
     np.testing.assert_allclose(marks.get_xdata(), res.time)  # cable 3 is slack throughout
     assert "simulated motion" in ax.get_title()
+
+
+def test_one_sample_has_no_batch_axis(spatial):
+    q, qd, qdd = np.full(6, 0.05), np.full(6, 0.1), np.full(6, -0.2)
+    one = inverse_dynamics(spatial, q, qd, qdd, method="qp", time=0.5)
+    batch = inverse_dynamics(spatial, q[None], qd[None], qdd[None], method="qp", time=[0.5])
+    assert one.tensions.shape == (8,) and one.wrench.shape == (6,) and one.feasible.shape == ()
+    assert bool(one.feasible) and str(one.status) == "optimal" and str(one.reasons) == "" and float(one.time) == 0.5
+    np.testing.assert_array_equal(one.tensions, batch.tensions[0])
+    assert one.failures() == [] and one.first_failure is None
+    fast = np.array([0.0, 0.0, 400.0, 0.0, 0.0, 0.0])
+    bad = inverse_dynamics(spatial, q, qd, fast, method="qp")
+    assert bad.first_failure == 0 and bad.failures()[0][0] == 0 and "bounds" in bad.failures()[0][1]

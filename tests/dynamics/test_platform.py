@@ -294,7 +294,7 @@ def test_inverse_then_forward_is_the_identity(pose, rates, accelerations):
 
     q, qd, qdd = np.array(pose), np.array(rates), np.array(accelerations)
     res = inverse_dynamics(_SPATIAL, q, qd, qdd, method="qp")
-    if res.feasible[0]:
-        np.testing.assert_allclose(acceleration(_SPATIAL, q, qd, res.tensions[0]), qdd, atol=1e-7)
+    if res.feasible:
+        np.testing.assert_allclose(acceleration(_SPATIAL, q, qd, res.tensions), qdd, atol=1e-7)
     else:
-        assert res.status[0] == "infeasible"
+        assert res.status == "infeasible"

@@ -55,7 +55,11 @@ _WHY = {
 
 @dataclass(frozen=True)
 class InverseDynamicsResult:
-    """Tensions along ``N`` samples of a motion of a robot with ``n`` cables."""
+    """Tensions along ``N`` samples of a motion of a robot with ``n`` cables.
+
+    For a single sample the array fields have no batch axis (``docs/architecture.md`` §2.1):
+    ``tensions (n,)``, ``wrench (dof,)``, and ``feasible``, ``status``, ``reasons`` and
+    ``time`` are 0-d arrays."""
 
     time: np.ndarray | None  #: ``(N,)`` sample times, when given
     wrench: np.ndarray  #: ``(N, dof)`` the wrench ``W τ`` the cables must apply
@@ -69,12 +73,13 @@ class InverseDynamicsResult:
 
     def failures(self) -> list[tuple[int, str]]:
         """``(index, reason)`` of every sample without admissible tensions (0-based)."""
-        return [(int(k), str(self.reasons[k])) for k in np.flatnonzero(~self.feasible)]
+        reasons = np.atleast_1d(self.reasons)
+        return [(int(k), str(reasons[k])) for k in np.flatnonzero(~np.atleast_1d(self.feasible))]
 
     @property
     def first_failure(self) -> int | None:
         """Index of the first sample without admissible tensions, or None."""
-        bad = np.flatnonzero(~self.feasible)
+        bad = np.flatnonzero(~np.atleast_1d(self.feasible))
         return int(bad[0]) if bad.size else None
 
 
@@ -176,8 +181,8 @@ def inverse_dynamics(
     time: npt.ArrayLike | None = None,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> InverseDynamicsResult:
-    """Cable tensions along a sampled motion ``(q, q̇, q̈)`` (each ``(N, dof)``; one sample is
-    a motion of ``N = 1``).
+    """Cable tensions along a sampled motion ``(q, q̇, q̈)`` (each ``(N, dof)``, or one sample
+    ``(dof,)``: a result without the batch axis).
 
     ``method`` is a tension distribution method of :data:`taut.statics.tension.METHODS`
     (``lp``, ``qp``, ``inf``, ``closed-form``, ``improved-closed-form``, ``barycentric``); the
@@ -211,11 +216,11 @@ def inverse_dynamics(
     if method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
     model = kernel_model(robot)
-    arr, vel, acc, _ = _motion(robot, q, qd, qdd)
+    arr, vel, acc, single = _motion(robot, q, qd, qdd)
     N, n = arr.shape[0], robot.n_cables
     times = None
     if time is not None:
-        times = np.array(time, dtype=float)
+        times = np.array(time, dtype=float).reshape(-1) if single else np.array(time, dtype=float)
         if times.shape != (N,) or not np.isfinite(times).all():
             raise TautError(f"sample times must be {N} finite numbers, got shape {times.shape}")
     from taut.dynamics.kernels import ZERO_LENGTH
@@ -248,9 +253,13 @@ def inverse_dynamics(
             progress(part.stop, N)
     labels = np.array(STATUSES)[code]
     reasons = np.array([_reason(s, method) for s in STATUSES])[code]
-    for a in [wrench, tensions, feasible, labels, reasons] + ([] if times is None else [times]):
+    arrays = [wrench, tensions, feasible, labels, reasons] + ([] if times is None else [times])
+    if single:
+        arrays = [np.array(a[0]) for a in arrays]
+    for a in arrays:
         a.setflags(write=False)
-    return InverseDynamicsResult(times, wrench, tensions, feasible, labels, reasons, method)
+    w_, tau, ok, st, why = arrays[:5]
+    return InverseDynamicsResult(None if times is None else arrays[5], w_, tau, ok, st, why, method)
 
 
 def _reason(status: str, method: str) -> str:
