@@ -17,15 +17,15 @@ with ``w₀`` the robot's own load (its weight ``Robot.weight`` at the centre of
 constant ``platform.wrench``: :func:`taut.statics.wrench.external_wrench`).  The moment rows of
 ``W`` are moments, not generalized forces of the angles: by virtual work the generalized force
 of a wrench ``w`` is ``Jᵀ w`` (``Eᵀ n`` for the angles).  Premultiplying by ``Jᵀ`` gives the
-Lagrange form in the pose coordinates (Siciliano et al. 2009, §7.1–7.3)
+Lagrange form in the pose coordinates (Siciliano et al. 2009, §7.1–7.2)
 
     ``M(q) q̈ + C(q, q̇) q̇ + g(q) = Jᵀ (W τ + w_ext)``,
     ``M = Jᵀ M_ν J``,  ``C = Jᵀ (M_ν J̇ + C_ν J)``,  ``g = −Jᵀ w₀``,
 
 where ``C_ν ν = b_ν`` is the factorization ``C_ν = [[0, −m [ω]×[r]×], [m [ω]×[r]×,
 [ω]× I_p + m [r × ṗ]×]]`` (planar: ``C_ν = [[0, −m ω r], [0, 0]]``) for which ``Ṁ_ν − 2 C_ν``
-and hence ``Ṁ − 2 C`` are skew-symmetric (Siciliano et al. 2009, §7.2, Eq. 7.49).  ``M`` is
-symmetric positive definite wherever ``E`` is regular (away from the gimbal lock of the
+and hence ``Ṁ − 2 C`` are skew-symmetric (Siciliano et al. 2009, §7.2.1, where the inertia
+matrix is called ``B``).  ``M`` is symmetric positive definite wherever ``E`` is regular (away from the gimbal lock of the
 orientation convention).
 
 Jointed platforms are refused (:class:`~taut.errors.UnsupportedRobotError`): their bodies have
@@ -34,8 +34,8 @@ no masses in the robot file.
 References
 ----------
 .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning and
-   Control", Springer, 2009, §3.6 (Eq. 3.64), §7.1–7.3 (Lagrange formulation, Eq. 7.49) and
-   §7.5 (Newton–Euler formulation). (docs/references.bib: siciliano2009)
+   Control", Springer, 2009, §3.6 (Eq. 3.64), §7.1–7.2 (Lagrange formulation; §7.2.1 the
+   skew-symmetry of Ḃ − 2C) and §7.5 (Newton–Euler formulation). (docs/references.bib: siciliano2009)
 .. [2] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
    Waterloo, 2022, §2.1.1, Eqs. 2.8, 2.10 and 2.11. (docs/references.bib: rushton2022)
 """
@@ -49,7 +49,7 @@ import numpy.typing as npt
 
 from taut.errors import UnsupportedRobotError
 from taut.geometry.rates import rate_matrix, rate_matrix_derivative
-from taut.geometry.rotation import CONVENTIONS, planar_rotation, rotation_matrix
+from taut.geometry.rotation import planar_rotation, rotation_matrix
 from taut.geometry.vectors import cross
 from taut.kinematics.pose import as_poses
 from taut.model.robot import Robot
@@ -139,7 +139,7 @@ def platform_dynamics(robot: Robot) -> PlatformDynamics:
         inertia=inertia,
         force=robot.weight + load[:d],
         moment=load[d:],
-        orientation=robot.orientation if robot.orientation in CONVENTIONS else "xyz-fixed",
+        orientation=robot.orientation,
     )
 
 
@@ -289,7 +289,7 @@ def coriolis_matrix(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.nda
     References
     ----------
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
-       and Control", Springer, 2009, §7.2, Eq. 7.49. (docs/references.bib: siciliano2009)
+       and Control", Springer, 2009, §7.2.1. (docs/references.bib: siciliano2009)
     """
     pd = platform_dynamics(robot)
     arr, single = _poses(robot, q)
@@ -320,7 +320,7 @@ def bias_forces(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.ndarray
     References
     ----------
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
-       and Control", Springer, 2009, §7.2, Eq. 7.42. (docs/references.bib: siciliano2009)
+       and Control", Springer, 2009, §7.2. (docs/references.bib: siciliano2009)
     """
     pd = platform_dynamics(robot)
     arr, single = _poses(robot, q)
