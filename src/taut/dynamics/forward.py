@@ -17,7 +17,7 @@ References
 .. [2] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
    Waterloo, 2022, §2.1.6, Eq. 2.15. (docs/references.bib: rushton2022)
 .. [3] E. Hairer, S. P. Nørsett, G. Wanner, "Solving Ordinary Differential Equations I: Nonstiff
-   Problems", 2nd ed., Springer, 1993, §II.10 (DOP853). (docs/references.bib: hairer1993)
+   Problems", 2nd ed., Springer, 1993 (the DOP853 code). (docs/references.bib: hairer1993)
 """
 
 from __future__ import annotations
@@ -411,7 +411,7 @@ def forward_dynamics(
     .. [2] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, Eq. 2.15. (docs/references.bib: rushton2022)
     .. [3] E. Hairer, S. P. Nørsett, G. Wanner, "Solving Ordinary Differential Equations I",
-       2nd ed., Springer, 1993, §II.10. (docs/references.bib: hairer1993)
+       2nd ed., Springer, 1993 (the DOP853 code). (docs/references.bib: hairer1993)
     """
     if (tensions is None) == (lengths is None):
         raise TautError("forward dynamics needs exactly one of tensions(t) and lengths(t)")
