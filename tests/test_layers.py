@@ -22,6 +22,7 @@ LAYERS = {
     "wrapping": 4,
     "dgp": 4,
     "planning": 4,
+    "dynamics": 4,
     "workspace": 5,
     "atlas": 6,
     "viz": 7,
