@@ -8,6 +8,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import taut
 from taut.geometry.rotation import rotation_matrix
@@ -307,3 +309,84 @@ def test_pose_to_qpos_puts_each_joint_coordinate_at_its_joint():
     qpos = pose_to_qpos(robot, pose)
     for k in range(1, 4):
         assert qpos[m.jnt_qposadr[m.joint(f"joint{k}").id]] == pose[5 + k]
+
+
+@st.composite
+def body_trees(draw):
+    """spatial-8cable with 1–4 random bodies: each on the platform or an earlier body, on a
+    prismatic or revolute joint with a random axis, origin and limits, with a random mass,
+    centre of mass and physical inertia; each cable hangs from a random body."""
+    data = robot_to_dict(taut.example("spatial-8cable"))
+    data.pop("reference", None)
+    data["platform"] |= {"inertia": [0.2, 0.3, 0.4, 0.01, 0.0, -0.02], "wrench_point": [0.01, 0.02, -0.03]}
+    rng = np.random.default_rng(draw(st.integers(0, 2**32 - 1)))
+    bodies = []
+    for k in range(draw(st.integers(1, 4))):
+        lo = rng.uniform(-2, 0)
+        bodies.append(
+            {
+                "name": f"b{k}",
+                "parent": "platform" if k == 0 else str(rng.choice(["platform"] + [b["name"] for b in bodies])),
+                "joint": {
+                    "kind": str(rng.choice(["prismatic", "revolute"])),
+                    "axis": rng.normal(size=3).tolist(),
+                    "origin": rng.uniform(-0.3, 0.3, 3).tolist(),
+                    "limits": [lo, lo + rng.uniform(0.5, 3)],
+                },
+                "mass": float(rng.uniform(0.1, 3)),
+                "com": rng.uniform(-0.2, 0.2, 3).tolist(),
+                "inertia": list(random_tensor(rng)),
+            }
+        )
+    data["platform"]["bodies"] = bodies
+    for cable in data["cables"]:
+        k = int(rng.integers(-1, len(bodies)))
+        if k >= 0:
+            cable["body"] = bodies[k]["name"]
+    return robot_from_dict(data), rng
+
+
+def random_tensor(rng):
+    """The inertia of a solid box of random sides, turned by a random rotation."""
+    a, b, c = rng.uniform(0.05, 0.6, 3)
+    Q, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+    I = Q @ np.diag([b * b + c * c, a * a + c * c, a * a + b * b]) @ Q.T
+    return I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]
+
+
+@settings(max_examples=100, deadline=None)
+@given(body_trees())
+def test_any_body_tree_is_taut_s_kinematics_and_statics(tree):
+    """For 100 random trees of bodies, at 20 random poses each: MuJoCo's body frames are taut's
+    ``body_frames`` (1e-12), its tendon lengths taut's IK (1e-9 m), and ``mj_inverse`` at rest
+    less the tendons' force is ``−(W τ + w_ext)`` on the platform and ``ζ`` on the joints
+    (1e-12 relative)."""
+    robot, rng = tree
+    poses = random_poses(robot, 20, rng, tilt=1.0)
+    tmin, tmax = robot.tension_bounds  # MuJoCo clamps a control to its range
+    tau = rng.uniform(tmin, np.minimum(tmax, tmin + 50.0), (len(poses), robot.n_cables))
+    ik = inverse_kinematics(robot, poses)
+    w = external_wrench(robot, poses)
+    zeta = joint_forces(robot, poses, tau)
+    pos, rot = body_frames(robot, poses)
+    m, data = model_of(robot)
+    platform, joints = dofs(robot, m)
+    ids = [m.body(f"body{k}").id for k in range(1, robot.n_joints + 1)]
+    n = robot.n_cables
+    for k, qpos in enumerate(pose_to_qpos(robot, poses)):
+        data.qpos[:] = qpos
+        data.qvel[:] = 0
+        data.ctrl[:] = 0
+        data.ctrl[:n] = tau[k]
+        mujoco.mj_forward(m, data)
+        assert np.abs(data.xpos[ids] - pos[k, 1:]).max() < 1e-12
+        assert np.abs(data.xmat[ids].reshape(-1, 3, 3) - rot[k, 1:]).max() < 1e-12
+        assert np.abs(data.ten_length - ik.lengths[k]).max() < 1e-9
+        tendons = data.qfrc_actuator.copy()
+        data.qacc[:] = 0
+        mujoco.mj_inverse(m, data)
+        rest = data.qfrc_inverse - tendons
+        scale = np.abs(tau[k]).sum() + np.abs(w[k]).max()
+        expected = generalised(robot, -(ik.structure_matrix[k] @ tau[k] + w[k]), poses[k])
+        assert np.allclose(rest[platform], expected, rtol=0, atol=1e-12 * scale)
+        assert np.allclose(rest[joints], zeta[k], rtol=0, atol=1e-12 * scale)
