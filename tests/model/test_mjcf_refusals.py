@@ -42,6 +42,10 @@ MASSIVE = {"mass": 8.0, "inertia": [3.0, 5.0, 7.0, 0.0, 0.0, 0.0]}
         (adjustable(mass=8.0, inertia=[1, 0, 1, 0, 0, 0]), "singular"),
         (adjustable(mass=8.0, com=[0, 0, 5e-7], inertia=[1, 1, 1, 0, 0, 0]), "the com of platform.bodies[0] (upper)"),
         (
+            adjustable(joint={"kind": "prismatic", "axis": [0, 0, 1], "limits": [2.0, 2.0]}, **MASSIVE),
+            "platform.bodies[0] (upper) joint limits [2, 2] are equal",
+        ),
+        (
             adjustable({5: {"swivel": {"axis": [0, 0, 1], "radius": 0.05}}}, **MASSIVE),
             "cable 6 has a swivelling pulley and is anchored on the jointed body upper",
         ),
@@ -60,6 +64,7 @@ MASSIVE = {"mass": 8.0, "inertia": [3.0, 5.0, 7.0, 0.0, 0.0, 0.0]}
         "body triangle",
         "body singular",
         "body com",
+        "equal joint limits",
         "swivel on a body",
         "obstacles",
         "no mass",

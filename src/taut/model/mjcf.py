@@ -101,12 +101,13 @@ A robot this description cannot hold raises :class:`~taut.errors.UnsupportedRobo
 naming the construct: no ``platform.mass``, a rigid platform without a positive-definite
 ``platform.inertia``, a constant ``platform.wrench`` (MJCF has no constant applied wrench),
 a jointed body without a ``mass`` or an ``inertia`` (MuJoCo moves no body without them, and
-a made-up mass would change the statics taut computes), exit pulleys of non-zero radius and
-obstacles (the tendons run straight from exit to anchor, or over swivelling pulleys),
-swivelling pulleys smaller than :data:`MIN_PULLEY_RADIUS` or on a cable anchored on a jointed
-body (the pulley's angle is computed from the platform's frame), and an exit point, anchor or
-centre of mass off its body's origin by less than :data:`SAME_FRAME` in every coordinate
-(MuJoCo would move it onto the origin).  The bodies' and platform's collision capsules are not
+a made-up mass would change the statics taut computes) or whose joint limits are equal
+(MuJoCo refuses an empty ``range``), exit pulleys of non-zero radius and obstacles (the
+tendons run straight from exit to anchor, or over swivelling pulleys), swivelling pulleys
+smaller than :data:`MIN_PULLEY_RADIUS` or on a cable anchored on a jointed body (the
+pulley's angle is computed from the platform's frame), and an exit point, anchor or centre
+of mass off its body's origin by less than :data:`SAME_FRAME` in every coordinate (MuJoCo
+would move it onto the origin).  The platform's and bodies' collision capsules are not
 written.
 
 References
@@ -208,6 +209,9 @@ def _check_bodies(robot: Robot) -> None:
         if body.inertia is None:
             raise _refuse(robot, f"{what} has no inertia (a moving MuJoCo body needs its inertia tensor)")
         _check_inertia(robot, f"{what} inertia", body.inertia)
+        lo, hi = body.joint.limits
+        if lo == hi:
+            raise _refuse(robot, f"{what} joint limits [{lo:g}, {hi:g}] are equal; MuJoCo needs a joint range of width")
     for i, cable in enumerate(robot.cables, 1):
         if cable.swivel is not None and cable.body is not None:
             raise _refuse(
