@@ -147,6 +147,7 @@ def test_convert_a_jointed_caspr_model_to_mujoco(taut_cli: Callable[..., Any], t
     ("argv", "message"),
     [
         (["convert", "cogiro", "cogiro.mjcf.xml"], "no platform.mass"),
+        (["convert", "adjustable-8cable", "adjustable.mjcf.xml"], "no platform.mass"),
         (["ik", str(FIXTURES / "multilink_bodies.xml")], "multi-link"),
         (["ik", str(COGIRO), "--cable-set", "nope"], "no cable set 'nope'"),
         (["ik", "planar-4cable", "--cable-set", "x"], "--cable-set"),
@@ -167,3 +168,17 @@ def test_missing_cables_file(taut_cli: Callable[..., Any], tmp_path: Path) -> No
     bodies.write_text(COGIRO.read_text())
     run = taut_cli("workspace", str(bodies), "--condition", "wrench-closure", "--grid", "3")
     assert run.code == 2 and "alone_cables.xml is missing" in run.err and run.err.count("\n") == 1
+
+
+def test_a_jointed_body_without_a_mass_is_refused_by_name(taut_cli: Callable[..., Any], tmp_path: Path) -> None:
+    """adjustable-8cable given a platform mass and inertia still has a massless body: one line
+    naming it, exit 2, no file written."""
+    taut_cli("convert", "adjustable-8cable", str(tmp_path / "r.yaml"), "--json")
+    data = yaml.safe_load((tmp_path / "r.yaml").read_text())
+    data["platform"] |= {"mass": 20.0, "inertia": [9.0, 4.0, 12.0, 0.0, 0.0, 0.0]}
+    (tmp_path / "r.yaml").write_text(yaml.safe_dump(data))
+    out = tmp_path / "r.mjcf.xml"
+    run = taut_cli("convert", str(tmp_path / "r.yaml"), str(out))
+    assert run.code == 2 and run.err.count("\n") == 1 and run.out == ""
+    assert "platform.bodies[1] (upper) has no mass" in run.err
+    assert not out.exists()

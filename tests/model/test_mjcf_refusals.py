@@ -36,14 +36,14 @@ MASSIVE = {"mass": 8.0, "inertia": [3.0, 5.0, 7.0, 0.0, 0.0, 0.0]}
     "robot, words",
     [
         (taut.example("adjustable-8cable"), "no platform.mass"),
-        (adjustable(), "platform.bodies[0] (upper) has no mass"),
-        (adjustable(mass=8.0), "platform.bodies[0] (upper) has no inertia"),
-        (adjustable(mass=8.0, inertia=[1, 1, 3, 0, 0, 0]), "platform.bodies[0] (upper) inertia [1.0, 1.0, 3.0"),
+        (adjustable(), "platform.bodies[1] (upper) has no mass"),
+        (adjustable(mass=8.0), "platform.bodies[1] (upper) has no inertia"),
+        (adjustable(mass=8.0, inertia=[1, 1, 3, 0, 0, 0]), "platform.bodies[1] (upper) inertia [1.0, 1.0, 3.0"),
         (adjustable(mass=8.0, inertia=[1, 0, 1, 0, 0, 0]), "singular"),
-        (adjustable(mass=8.0, com=[0, 0, 5e-7], inertia=[1, 1, 1, 0, 0, 0]), "the com of platform.bodies[0] (upper)"),
+        (adjustable(mass=8.0, com=[0, 0, 5e-7], inertia=[1, 1, 1, 0, 0, 0]), "the com of platform.bodies[1] (upper)"),
         (
             adjustable(joint={"kind": "prismatic", "axis": [0, 0, 1], "limits": [2.0, 2.0]}, **MASSIVE),
-            "platform.bodies[0] (upper) joint limits [2, 2] are equal",
+            "platform.bodies[1] (upper) joint limits [2, 2] are equal",
         ),
         (
             adjustable({5: {"swivel": {"axis": [0, 0, 1], "radius": 0.05}}}, **MASSIVE),

@@ -200,9 +200,10 @@ def _check_inertia(robot: Robot, what: str, values: tuple[float, ...]) -> None:
 
 
 def _check_bodies(robot: Robot) -> None:
-    """Every jointed body needs a mass and an inertia (MuJoCo moves no massless body, and
-    taut's statics know no other mass), and a cable on one runs straight to it."""
-    for k, body in enumerate(robot.platform.bodies):
+    """Every jointed body needs a mass, an inertia (MuJoCo moves no massless body, and taut's
+    statics know no other mass) and a joint range, and a cable anchored on one has no
+    swivelling pulley.  Bodies are numbered from 1 in messages, as the robot file's checks do."""
+    for k, body in enumerate(robot.platform.bodies, 1):
         what = f"platform.bodies[{k}] ({body.name})"
         if body.mass is None:
             raise _refuse(robot, f"{what} has no mass (a moving MuJoCo body needs one; add its mass, com and inertia)")
@@ -243,7 +244,7 @@ def check_mjcf(robot: Robot) -> None:
     points = [(f"the exit point of cable {i}", c.exit) for i, c in enumerate(robot.cables, 1) if c.swivel is None]
     points += [(f"the anchor of cable {i}", c.anchor) for i, c in enumerate(robot.cables, 1) if c.anchor is not None]
     points += [("platform.wrench_point", plat.wrench_point)] if plat.wrench_point is not None else []
-    points += [(f"the com of platform.bodies[{k}] ({b.name})", b.com) for k, b in enumerate(plat.bodies) if b.com]
+    points += [(f"the com of platform.bodies[{k}] ({b.name})", b.com) for k, b in enumerate(plat.bodies, 1) if b.com]
     for what, point in points:
         if 0 < np.abs(point).max() < SAME_FRAME:
             raise _refuse(
