@@ -17,6 +17,7 @@ import yaml
 FIXTURES = Path(__file__).resolve().parents[1] / "model" / "fixtures" / "caspr"
 COGIRO = FIXTURES / "real" / "CoGiRo_bodies.xml"
 KNTU = FIXTURES / "real" / "KNTU_planar_bodies.xml"
+SPIDERBOT = FIXTURES / "real" / "SpiderBot_UR3_bodies.xml"
 
 
 def rot(axis: int, t: float) -> np.ndarray:
@@ -111,10 +112,42 @@ def test_convert_to_mujoco(taut_cli: Callable[..., Any], tmp_path: Path) -> None
     np.testing.assert_allclose(sim.ten_length, ik["lengths"], atol=1e-12)
 
 
+def test_convert_a_jointed_caspr_model_to_mujoco(taut_cli: Callable[..., Any], tmp_path: Path) -> None:
+    """CASPR's SpiderBot (a platform on 8 cables over swivelling pulleys, carrying a 6-joint
+    UR3 arm) becomes an MJCF model MuJoCo loads: the arm's links are hinged bodies with
+    CASPR's masses and a drive each; at a pose its tendon lengths are ``taut ik``'s, and at
+    rest without tensions the arm's drives must hold the links' weights, taut's joint forces."""
+    mujoco = pytest.importorskip("mujoco")
+    from taut.kinematics.jointed import joint_forces
+    from taut.model import load_robot
+    from taut.model.mjcf import pose_to_qpos
+
+    out = tmp_path / "spiderbot.mjcf.xml"
+    assert taut_cli("convert", str(SPIDERBOT), str(out), "--json").json()["format"] == "mujoco"
+    model = mujoco.MjModel.from_xml_path(str(out))
+    assert (model.ntendon, model.nu, model.njnt) == (8, 8 + 6, 1 + 6 + 8)
+    assert [model.jnt_type[model.joint(f"joint{k}").id] for k in range(1, 7)] == [mujoco.mjtJoint.mjJNT_HINGE] * 6
+    np.testing.assert_allclose(
+        [model.body(f"body{k}").mass[0] for k in range(1, 7)], [2.0, 3.42, 1.26, 0.8, 0.8, 0.35], rtol=1e-15
+    )
+    pose = [1.1, 1.0, 0.9, 0.1, -0.2, 0.3, 0.5, -1.0, 1.2, 0.3, -0.4, 2.0]
+    robot = load_robot(SPIDERBOT)
+    sim = mujoco.MjData(model)
+    sim.qpos[:] = pose_to_qpos(robot, pose)
+    mujoco.mj_inverse(model, sim)
+    ik = taut_cli("ik", str(SPIDERBOT), "--pose", ",".join(map(str, pose)), "--json").json()
+    np.testing.assert_allclose(sim.ten_length, ik["lengths"], atol=1e-12)
+    arm = [model.jnt_dofadr[model.joint(f"joint{k}").id] for k in range(1, 7)]
+    zeta = joint_forces(robot, pose, np.zeros(8))
+    assert np.abs(zeta).max() > 1
+    np.testing.assert_allclose(sim.qfrc_inverse[arm], zeta, rtol=0, atol=1e-12 * np.abs(zeta).max())
+
+
 @pytest.mark.parametrize(
     ("argv", "message"),
     [
         (["convert", "cogiro", "cogiro.mjcf.xml"], "no platform.mass"),
+        (["convert", "adjustable-8cable", "adjustable.mjcf.xml"], "no platform.mass"),
         (["ik", str(FIXTURES / "multilink_bodies.xml")], "multi-link"),
         (["ik", str(COGIRO), "--cable-set", "nope"], "no cable set 'nope'"),
         (["ik", "planar-4cable", "--cable-set", "x"], "--cable-set"),
@@ -135,3 +168,17 @@ def test_missing_cables_file(taut_cli: Callable[..., Any], tmp_path: Path) -> No
     bodies.write_text(COGIRO.read_text())
     run = taut_cli("workspace", str(bodies), "--condition", "wrench-closure", "--grid", "3")
     assert run.code == 2 and "alone_cables.xml is missing" in run.err and run.err.count("\n") == 1
+
+
+def test_a_jointed_body_without_a_mass_is_refused_by_name(taut_cli: Callable[..., Any], tmp_path: Path) -> None:
+    """adjustable-8cable given a platform mass and inertia still has a massless body: one line
+    naming it, exit 2, no file written."""
+    taut_cli("convert", "adjustable-8cable", str(tmp_path / "r.yaml"), "--json")
+    data = yaml.safe_load((tmp_path / "r.yaml").read_text())
+    data["platform"] |= {"mass": 20.0, "inertia": [9.0, 4.0, 12.0, 0.0, 0.0, 0.0]}
+    (tmp_path / "r.yaml").write_text(yaml.safe_dump(data))
+    out = tmp_path / "r.mjcf.xml"
+    run = taut_cli("convert", str(tmp_path / "r.yaml"), str(out))
+    assert run.code == 2 and run.err.count("\n") == 1 and run.out == ""
+    assert "platform.bodies[1] (upper) has no mass" in run.err
+    assert not out.exists()

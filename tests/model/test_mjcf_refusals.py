@@ -18,10 +18,37 @@ def with_inertia(name, **platform):
     return robot.model_copy(update={"platform": robot.platform.model_copy(update=platform)})
 
 
+def adjustable(cables=None, **upper):
+    """adjustable-8cable with a platform mass and inertia, its body ``upper`` updated by
+    ``upper``, and its cables' dicts updated by ``cables`` ({index: fields})."""
+    data = robot_to_dict(with_inertia("adjustable-8cable", mass=20.0, inertia=(9, 4, 12, 0, 0, 0)))
+    data.pop("trajectories")
+    data["platform"]["bodies"][0] |= upper
+    for i, fields in (cables or {}).items():
+        data["cables"][i] |= fields
+    return robot_from_dict(data)
+
+
+MASSIVE = {"mass": 8.0, "inertia": [3.0, 5.0, 7.0, 0.0, 0.0, 0.0]}
+
+
 @pytest.mark.parametrize(
     "robot, words",
     [
-        (taut.example("adjustable-8cable"), "platform.bodies"),
+        (taut.example("adjustable-8cable"), "no platform.mass"),
+        (adjustable(), "platform.bodies[1] (upper) has no mass"),
+        (adjustable(mass=8.0), "platform.bodies[1] (upper) has no inertia"),
+        (adjustable(mass=8.0, inertia=[1, 1, 3, 0, 0, 0]), "platform.bodies[1] (upper) inertia [1.0, 1.0, 3.0"),
+        (adjustable(mass=8.0, inertia=[1, 0, 1, 0, 0, 0]), "singular"),
+        (adjustable(mass=8.0, com=[0, 0, 5e-7], inertia=[1, 1, 1, 0, 0, 0]), "the com of platform.bodies[1] (upper)"),
+        (
+            adjustable(joint={"kind": "prismatic", "axis": [0, 0, 1], "limits": [2.0, 2.0]}, **MASSIVE),
+            "platform.bodies[1] (upper) joint limits [2, 2] are equal",
+        ),
+        (
+            adjustable({5: {"swivel": {"axis": [0, 0, 1], "radius": 0.05}}}, **MASSIVE),
+            "cable 6 has a swivelling pulley and is anchored on the jointed body upper",
+        ),
         (taut.example("vscr-four-cable"), "obstacles"),
         (taut.example("cogiro"), "no platform.mass"),
         (with_inertia("spatial-8cable", inertia=None), "no platform.inertia"),
@@ -30,7 +57,23 @@ def with_inertia(name, **platform):
         (with_inertia("spatial-8cable", inertia=(1, 1, 0, 0, 0, 0)), "singular"),
         (with_inertia("planar-4cable", inertia=(0.0,)), "Izz"),
     ],
-    ids=["jointed", "obstacles", "no mass", "no inertia", "wrench", "triangle", "singular", "planar zero"],
+    ids=[
+        "jointed, no masses",
+        "body without mass",
+        "body without inertia",
+        "body triangle",
+        "body singular",
+        "body com",
+        "equal joint limits",
+        "swivel on a body",
+        "obstacles",
+        "no mass",
+        "no inertia",
+        "wrench",
+        "triangle",
+        "singular",
+        "planar zero",
+    ],
 )
 def test_unsupported_robots_are_refused_by_name(robot, words):
     with pytest.raises(UnsupportedRobotError, match="cannot be written as a MuJoCo model") as err:
@@ -109,3 +152,11 @@ def test_planar_pose_is_qpos_and_the_text_names_every_cable():
     assert root.find("./worldbody/body/inertial").get("diaginertia") == "0.005 0.005 0.01"
     assert root.find("./option").get("gravity") == "0.0 -9.81 0.0"
     assert math.isclose(float(root.find("./worldbody/body/inertial").get("mass")), 1.0)
+
+
+def test_a_joint_coordinate_outside_its_limits_is_refused():
+    """MuJoCo's joint limit would push there: the pose is refused, naming the joint."""
+    robot = adjustable(**MASSIVE)
+    assert pose_to_qpos(robot, [5, 5, 3, 0, 0, 0, 4.5])[7] == 4.5
+    with pytest.raises(PoseError, match=re.escape("pose 2: joint s23 = 4.6 is outside its limits [0.4, 4.5]")):
+        pose_to_qpos(robot, [[5, 5, 3, 0, 0, 0, 2.0], [5, 5, 3, 0, 0, 0, 4.6]])

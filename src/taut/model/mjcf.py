@@ -17,8 +17,9 @@ feels, because MuJoCo refuses moving bodies without one.  ``option gravity`` is 
 ``Robot.weight / mass``.
 
 Cable *i* is the spatial tendon ``cable{i}`` through the site ``exit{i}`` (world body, at
-``a_i``) and the site ``anchor{i}`` (platform body, at ``r_i``), so that MuJoCo's tendon length
-is ``‖a_i − b_i‖`` (a cable over a swivelling pulley wraps it, below); its length bounds, where the robot gives them, are the tendon's ``range``.
+``a_i``) and the site ``anchor{i}`` (platform body, or the jointed body it hangs from, at
+``r_i``), so that MuJoCo's tendon length is ``‖a_i − b_i‖`` (a cable over a swivelling pulley
+wraps it, below); its length bounds, where the robot gives them, are the tendon's ``range``.
 The actuator ``tension{i}`` is a force actuator on that tendon with ``gear = −1``: its control
 is the cable tension ``τ_i`` [N] pulling the platform towards the exit point, its
 ``ctrlrange`` the tension bounds.  Cables are ideal (massless, inextensible): their
@@ -28,6 +29,28 @@ In MuJoCo's generalised coordinates a platform wrench ``(f, m)`` (force in the f
 moment about ``p``, as :mod:`taut.statics` writes them) is ``(f, Rᵀ m)`` for the freejoint,
 whose angular velocity is expressed in the body frame, and ``(f_x, f_y, m_z)`` or ``f`` for the
 planar and point-mass joints: ``mj_inverse`` at rest returns that of ``−w_ext``.
+
+A rigid platform's jointed bodies (``platform.bodies``, :mod:`taut.kinematics.jointed`) are
+MuJoCo bodies inside their parents': ``platform.bodies[k − 1]`` is ``body<k>`` at its joint's
+``origin`` in the parent's frame, with the parent's orientation at joint coordinate 0, on the
+joint ``joint<k>``: a ``slide`` along the unit ``axis`` for a prismatic joint, a ``hinge``
+about ``axis`` through the body's origin for a revolute one (about ``+z`` on a planar robot,
+as taut turns a planar body whatever its one-number axis), with ``range`` the joint's
+``limits``.  This is taut's frame (:func:`taut.kinematics.pose.body_frames`: the parent's
+frame translated by ``origin + q·axis``, or by ``origin`` and turned by ``q`` about
+``axis``), so the joint's ``qpos`` is taut's joint coordinate ``q``, in MuJoCo's depth-first
+order of the body tree (:func:`joint_order`).  Its ``inertial`` holds the body's ``mass`` at
+its ``com`` and its ``inertia`` about the ``com`` (``fullinertia``; a planar body's ``Izz``
+as the platform's), and the anchor sites of its cables are in it.  The motor ``drive<k>``
+(``gear = 1``, no control range: taut gives no joint force bounds; the drives follow the
+tension actuators, so that ``ctrl = (τ, ζ)``) acts on ``joint<k>``: its control is taut's
+joint force ``ζ_k`` of :func:`taut.kinematics.jointed.joint_forces`, the force along
+``+axis`` or the torque about ``+axis`` that the joint's actuator exerts on the child body,
+which is MuJoCo's generalised force of that joint (the reaction on the parent is MuJoCo's, as
+it is taut's).  Measured with MuJoCo 4.0.0 (``tests/model/test_mjcf_jointed.py``): at rest,
+``mj_inverse`` asks for ``−w_ext`` on the platform's freedoms (the bodies' weights included)
+and, beyond the tendons' generalised force at tensions ``τ``, for taut's ``ζ`` on the
+joints, to 10⁻¹⁵ relative.
 
 A cable *i* that leaves through a swivelling pulley (``Cable.swivel``, axis ``k``, radius
 ``r``; :mod:`taut.kinematics.swivel`) runs over a body ``pulley{i}`` on the hinge joint
@@ -77,11 +100,15 @@ therefore drive or damp the hinges, e.g. towards the angles of :func:`pose_to_qp
 A robot this description cannot hold raises :class:`~taut.errors.UnsupportedRobotError`
 naming the construct: no ``platform.mass``, a rigid platform without a positive-definite
 ``platform.inertia``, a constant ``platform.wrench`` (MJCF has no constant applied wrench),
-jointed bodies (the robot file gives them no mass), exit pulleys of non-zero radius and
-obstacles (the tendons run straight from exit to anchor, or over swivelling pulleys),
-swivelling pulleys smaller than :data:`MIN_PULLEY_RADIUS`, and an exit point, anchor or
-centre of mass off its body's origin by less than :data:`SAME_FRAME` in every coordinate
-(MuJoCo would move it onto the origin).
+a jointed body without a ``mass`` or an ``inertia`` (MuJoCo moves no body without them, and
+a made-up mass would change the statics taut computes) or whose joint limits are equal
+(MuJoCo refuses an empty ``range``), exit pulleys of non-zero radius and obstacles (the
+tendons run straight from exit to anchor, or over swivelling pulleys), swivelling pulleys
+smaller than :data:`MIN_PULLEY_RADIUS` or on a cable anchored on a jointed body (the
+pulley's angle is computed from the platform's frame), and an exit point, anchor or centre
+of mass off its body's origin by less than :data:`SAME_FRAME` in every coordinate (MuJoCo
+would move it onto the origin).  The platform's and bodies' collision capsules are not
+written.
 
 References
 ----------
@@ -90,6 +117,9 @@ References
    (docs/references.bib: todorov2012)
 .. [2] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
    Waterloo, 2022, §2.1.1, Eq. 2.1. (docs/references.bib: rushton2022)
+.. [3] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §3.3, Eq. 3.3.12.
+   (docs/references.bib: lieskovsky2020)
 """
 
 from __future__ import annotations
@@ -143,22 +173,53 @@ def _refuse(robot: Robot, construct: str) -> UnsupportedRobotError:
     return UnsupportedRobotError(f"{robot.name}: cannot be written as a MuJoCo model: {construct}")
 
 
-def _check_physical(robot: Robot, tensor: np.ndarray) -> None:
-    """MuJoCo accepts a rigid body's tensor only if it is positive definite and its principal
-    moments satisfy the triangle inequality ``A + B ≥ C`` of every physical body."""
-    moments = np.linalg.eigvalsh(tensor)
+def _tensor(values: tuple[float, ...]) -> np.ndarray:
+    """The symmetric 3×3 tensor of ``(Ixx, Iyy, Izz, Ixy, Ixz, Iyz)``."""
+    xx, yy, zz, xy, xz, yz = values
+    return np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]], dtype=float)
+
+
+def _check_inertia(robot: Robot, what: str, values: tuple[float, ...]) -> None:
+    """MuJoCo accepts a moving body's inertia only if it is positive (planar: ``Izz``) or, in
+    space, positive definite with principal moments satisfying the triangle inequality
+    ``A + B ≥ C`` of every physical body."""
+    if robot.dimension == 2:
+        if values[0] <= 0:
+            raise _refuse(robot, f"{what} Izz is {values[0]:g}; MuJoCo needs it positive")
+        return
+    moments = np.linalg.eigvalsh(_tensor(values))
     scale = max(1.0, float(moments.max()))
     if moments.min() <= 0:
-        raise _refuse(
-            robot,
-            f"platform.inertia {list(robot.platform.inertia or ())} is singular; MuJoCo needs it positive definite",
-        )
+        raise _refuse(robot, f"{what} {list(values)} is singular; MuJoCo needs it positive definite")
     if moments[0] + moments[1] < moments[2] - 1e-12 * scale:
         raise _refuse(
             robot,
-            f"platform.inertia {list(robot.platform.inertia or ())} has principal moments "
-            f"{moments.tolist()} that break A + B >= C: no rigid body has this tensor",
+            f"{what} {list(values)} has principal moments {moments.tolist()} that break A + B >= C: "
+            "no rigid body has this tensor",
         )
+
+
+def _check_bodies(robot: Robot) -> None:
+    """Every jointed body needs a mass, an inertia (MuJoCo moves no massless body, and taut's
+    statics know no other mass) and a joint range, and a cable anchored on one has no
+    swivelling pulley.  Bodies are numbered from 1 in messages, as the robot file's checks do."""
+    for k, body in enumerate(robot.platform.bodies, 1):
+        what = f"platform.bodies[{k}] ({body.name})"
+        if body.mass is None:
+            raise _refuse(robot, f"{what} has no mass (a moving MuJoCo body needs one; add its mass, com and inertia)")
+        if body.inertia is None:
+            raise _refuse(robot, f"{what} has no inertia (a moving MuJoCo body needs its inertia tensor)")
+        _check_inertia(robot, f"{what} inertia", body.inertia)
+        lo, hi = body.joint.limits
+        if lo == hi:
+            raise _refuse(robot, f"{what} joint limits [{lo:g}, {hi:g}] are equal; MuJoCo needs a joint range of width")
+    for i, cable in enumerate(robot.cables, 1):
+        if cable.swivel is not None and cable.body is not None:
+            raise _refuse(
+                robot,
+                f"cable {i} has a swivelling pulley and is anchored on the jointed body {cable.body}; "
+                "the pulley's angle is written for cables on the platform only",
+            )
 
 
 def check_mjcf(robot: Robot) -> None:
@@ -166,9 +227,6 @@ def check_mjcf(robot: Robot) -> None:
     ``robot`` that the MuJoCo model of this module cannot hold exactly (see the module's
     docstring)."""
     plat = robot.platform
-    if plat.bodies:
-        names = ", ".join(b.name for b in plat.bodies)
-        raise _refuse(robot, f"platform.bodies ({names}): the robot file gives jointed bodies no mass or inertia")
     if robot.obstacles:
         raise _refuse(robot, f"obstacles ({len(robot.obstacles)}): MuJoCo tendons here do not wrap around obstacles")
     for i, cable in enumerate(robot.cables, 1):
@@ -186,6 +244,7 @@ def check_mjcf(robot: Robot) -> None:
     points = [(f"the exit point of cable {i}", c.exit) for i, c in enumerate(robot.cables, 1) if c.swivel is None]
     points += [(f"the anchor of cable {i}", c.anchor) for i, c in enumerate(robot.cables, 1) if c.anchor is not None]
     points += [("platform.wrench_point", plat.wrench_point)] if plat.wrench_point is not None else []
+    points += [(f"the com of platform.bodies[{k}] ({b.name})", b.com) for k, b in enumerate(plat.bodies, 1) if b.com]
     for what, point in points:
         if 0 < np.abs(point).max() < SAME_FRAME:
             raise _refuse(
@@ -201,14 +260,10 @@ def check_mjcf(robot: Robot) -> None:
             f"platform.wrench {list(plat.wrench)}: MJCF has no constant applied wrench (give the load as platform.mass and platform.gravity)",
         )
     if not robot.is_point_mass:
-        tensor = robot.inertia
-        if tensor is None:
+        if plat.inertia is None:
             raise _refuse(robot, "no platform.inertia (a rigid MuJoCo body needs its inertia tensor)")
-        if robot.dimension == 2:
-            if tensor[0, 0] <= 0:
-                raise _refuse(robot, "platform.inertia Izz is 0; MuJoCo needs it positive")
-        else:
-            _check_physical(robot, tensor)
+        _check_inertia(robot, "platform.inertia", plat.inertia)
+    _check_bodies(robot)
 
 
 def _inertial(robot: Robot) -> dict[str, str]:
@@ -236,6 +291,60 @@ def _joints(robot: Robot, body: ET.Element) -> None:
         ET.SubElement(body, "joint", name=name, type="slide", axis=_vector(axis), limited="false")
     if not robot.is_point_mass:
         ET.SubElement(body, "joint", name="theta", type="hinge", axis="0 0 1", limited="false")
+
+
+def _body_inertial(robot: Robot, k: int) -> dict[str, str]:
+    """The ``inertial`` of ``platform.bodies[k]``: its mass at its ``com``, its tensor about
+    the ``com`` (a planar body's ``Izz`` as the platform's, a thin plate)."""
+    body, d = robot.platform.bodies[k], robot.dimension
+    values = body.inertia or ()
+    attrs = {"pos": _vector(_in_space(robot.body_coms[k], d)), "mass": _number(float(body.mass or 0.0))}
+    if d == 2:
+        return attrs | {"diaginertia": _vector([values[0] / 2, values[0] / 2, values[0]])}
+    return attrs | {"fullinertia": _vector(values)}
+
+
+def _jointed_bodies(robot: Robot, platform: ET.Element) -> dict[str, ET.Element]:
+    """The MuJoCo body of each of ``platform.bodies`` inside its parent's, by taut name (with
+    ``platform``): ``body<k>`` at the joint's origin, on ``joint<k>`` (see the module's
+    docstring)."""
+    d = robot.dimension
+    elements = {"platform": platform}
+    for k, body in enumerate(robot.platform.bodies, 1):
+        joint = body.joint
+        origin = _in_space(joint.origin if joint.origin is not None else np.zeros(d), d)
+        element = ET.SubElement(elements[body.parent], "body", name=f"body{k}", pos=_vector(origin))
+        if joint.kind == "prismatic":
+            axis = _in_space(joint.axis, d)
+            attrs = {"type": "slide", "axis": _vector(axis / np.linalg.norm(axis))}
+        elif d == 2:
+            # taut turns a planar body about +z whatever the sign of its one-number axis
+            attrs = {"type": "hinge", "axis": "0 0 1"}
+        else:
+            axis = np.asarray(joint.axis, dtype=float)
+            attrs = {"type": "hinge", "axis": _vector(axis / np.linalg.norm(axis))}
+        ET.SubElement(
+            element, "joint", {"name": f"joint{k}", **attrs, "limited": "true", "range": _vector(joint.limits)}
+        )
+        ET.SubElement(element, "inertial", _body_inertial(robot, k - 1))
+        elements[body.name] = element
+    return elements
+
+
+def joint_order(robot: Robot) -> np.ndarray:
+    """The 0-based indices of ``platform.bodies`` in MuJoCo's order of their joints in
+    ``qpos`` and ``qvel``: depth first through the body tree, children in file order (taut's
+    order for a chain)."""
+    children: dict[str, list[int]] = {}
+    for k, body in enumerate(robot.platform.bodies):
+        children.setdefault(body.parent, []).append(k)
+    order: list[int] = []
+    stack = list(reversed(children.get("platform", [])))
+    while stack:
+        k = stack.pop()
+        order.append(k)
+        stack += reversed(children.get(robot.platform.bodies[k].name, []))
+    return np.array(order, dtype=int)
 
 
 def swivel_frames(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -318,8 +427,9 @@ def mjcf_text(robot: Robot) -> str:
     platform = ET.SubElement(world, "body", name="platform", pos="0 0 0")
     _joints(robot, platform)
     ET.SubElement(platform, "inertial", _inertial(robot))
-    for i, anchor in enumerate(robot.anchors, 1):
-        ET.SubElement(platform, "site", name=f"anchor{i}", pos=_vector(_in_space(anchor, d)))
+    bodies = _jointed_bodies(robot, platform)
+    for i, (anchor, cable) in enumerate(zip(robot.anchors, robot.cables), 1):
+        ET.SubElement(bodies[cable.body or "platform"], "site", name=f"anchor{i}", pos=_vector(_in_space(anchor, d)))
     idx, axes, zeros, radii = swivel_frames(robot)
     for j, i in enumerate(idx):
         _pulley(robot, world, int(i) + 1, axes[j], zeros[j], float(radii[j]))
@@ -346,6 +456,8 @@ def mjcf_text(robot: Robot) -> str:
             ctrllimited="true",
             ctrlrange=_vector([tmin[i - 1], tmax[i - 1]]),
         )
+    for k in range(1, robot.n_joints + 1):
+        ET.SubElement(actuators, "general", name=f"drive{k}", joint=f"joint{k}", gear="1", ctrllimited="false")
     ET.indent(root)
     return ET.tostring(root, encoding="unicode") + "\n"
 
@@ -398,6 +510,14 @@ def _checked_poses(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, bool
         )
     if not np.all(np.isfinite(arr)):
         raise PoseError(f"{robot.name}: a pose coordinate is not finite")
+    q, limits = arr[:, robot.wrench_dim :], robot.joint_limits
+    outside = (q < limits[:, 0]) | (q > limits[:, 1])
+    if outside.any():
+        n, j = np.argwhere(outside)[0]
+        raise PoseError(
+            f"{robot.name}: pose {n + 1}: joint {robot.pose_names[robot.wrench_dim + j]} = {q[n, j]:g} is outside "
+            f"its limits [{limits[j, 0]:g}, {limits[j, 1]:g}], where MuJoCo's joint limit would push"
+        )
     return arr, single
 
 
@@ -451,7 +571,8 @@ def pose_to_qpos(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
 
     Spatial rigid platform: ``(x, y, z, w, qx, qy, qz)``, the quaternion of the rotation of the
     pose's three angles in the robot's orientation convention (``docs/architecture.md`` §2.3);
-    planar rigid platform: ``(x, y, θ)``; point mass: its position.  Then the hinge angle of
+    planar rigid platform: ``(x, y, θ)``; point mass: its position.  Then the joint
+    coordinates of the jointed bodies in MuJoCo's order (:func:`joint_order`).  Then the hinge angle of
     each swivelling pulley, in cable order: the angle about the swivel axis ``k`` from the
     pulley's ``e_0`` (:func:`swivel_frames`) to the anchor's direction from the axis, so that
     the pulley plane holds the anchor, as in :mod:`taut.kinematics.swivel`.
@@ -459,7 +580,8 @@ def pose_to_qpos(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     Raises
     ------
     PoseError
-        For poses of the wrong size or with a non-finite coordinate.
+        For poses of the wrong size, with a non-finite coordinate or a joint coordinate
+        outside its limits (where MuJoCo's joint limit would push).
     InfeasiblePoseError
         For a pose at which MuJoCo would wrap a swivelling pulley another way than taut
         (:func:`swivel_wraps_agree`).
@@ -467,10 +589,12 @@ def pose_to_qpos(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
         For a robot the model cannot hold (:func:`check_mjcf`).
     """
     arr, single = _checked_poses(robot, poses)
+    m = robot.wrench_dim
     if robot.dimension == 3 and not robot.is_point_mass:
         qpos = np.concatenate([arr[:, :3], quaternions(rotation_matrix(arr[:, 3:6], robot.orientation))], axis=1)
     else:
-        qpos = arr.copy()
+        qpos = arr[:, :m].copy()
+    qpos = np.concatenate([qpos, arr[:, m + joint_order(robot)]], axis=1)
     if robot.swivel_cables:
         q, agree = _swivels(robot, arr)
         if not agree.all():

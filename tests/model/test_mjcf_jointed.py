@@ -1,0 +1,392 @@
+"""Jointed platforms in MuJoCo, checked by MuJoCo itself: each of ``platform.bodies`` is a
+child body on a hinge or slide joint, its frame at every pose is taut's, its tendon lengths
+are taut's inverse kinematics, and MuJoCo's inverse dynamics at rest is taut's jointed
+statics: the platform rows of ``W τ + w_ext = 0`` and the joint forces ``ζ``
+(Lieskovský 2020, Eq. 3.3.12), each joint's generalised force along ``+axis``."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import taut
+from taut.geometry.rotation import rotation_matrix
+from taut.kinematics import inverse_kinematics
+from taut.kinematics.jointed import joint_forces
+from taut.kinematics.pose import body_frames
+from taut.model import load_robot, robot_from_dict, robot_to_dict
+from taut.model.mjcf import joint_order, mjcf_text, pose_to_qpos, swivel_wraps_agree
+from taut.statics import distribute_tensions
+from taut.statics.wrench import external_wrench
+
+mujoco = pytest.importorskip("mujoco")
+
+SPIDERBOT = Path(__file__).parent / "fixtures" / "caspr" / "real" / "SpiderBot_UR3_bodies.xml"
+
+
+def adjustable():
+    """adjustable-8cable with assumed masses (Lieskovský 2020 gives none): a 20 kg lower body
+    and an 8 kg upper body, their centres of mass off the joint axis, with products of inertia."""
+    robot = taut.example("adjustable-8cable")
+    upper = robot.platform.bodies[0].model_copy(
+        update={"mass": 8.0, "com": (0.1, -0.05, 0.2), "inertia": (3.0, 5.0, 7.0, 0.2, -0.1, 0.3)}
+    )
+    platform = robot.platform.model_copy(
+        update={"mass": 20.0, "inertia": (9.0, 4.0, 12.0, -0.5, 0.4, 0.2), "wrench_point": (0.05, 0.1, 0.6)}
+    )
+    platform = platform.model_copy(update={"bodies": (upper,)})
+    return robot.model_copy(update={"platform": platform})
+
+
+def branching():
+    """adjustable() with two more bodies, so that the body tree branches and MuJoCo's joint
+    order (depth first) differs from taut's: ``side`` turns on the platform about a tilted
+    axis, ``tip`` slides along a tilted axis on ``upper``; cables 7 and 8 hang from them."""
+    data = robot_to_dict(adjustable())
+    data.pop("trajectories")
+    data.pop("reference")
+    data["platform"]["bodies"] += [
+        {
+            "name": "side",
+            "joint": {"kind": "revolute", "axis": [1, 2, 2], "origin": [0.3, -0.2, 0.5], "limits": [-1.2, 2.0]},
+            "mass": 3.0,
+            "com": [0.4, 0.1, -0.2],
+            "inertia": [0.5, 0.6, 0.7, 0.01, 0.02, -0.03],
+        },
+        {
+            "name": "tip",
+            "parent": "upper",
+            "joint": {"kind": "prismatic", "axis": [0.2, -0.1, 1], "origin": [0.1, 0.0, 0.3], "limits": [-0.5, 0.8]},
+            "mass": 1.5,
+            "com": [0.0, 0.2, 0.1],
+            "inertia": [0.2, 0.2, 0.3, 0.0, 0.0, 0.0],
+        },
+    ]
+    data["cables"][6]["body"] = "side"
+    data["cables"][7]["body"] = "tip"
+    return robot_from_dict(data)
+
+
+def planar():
+    """planar-4cable carrying a slider and, on it, an arm turning in the plane; cables 3 and 4
+    pull them."""
+    data = robot_to_dict(taut.example("planar-4cable"))
+    data.pop("reference")
+    data["platform"]["bodies"] = [
+        {
+            "name": "slider",
+            "joint": {"kind": "prismatic", "axis": [1, 1], "origin": [0.05, 0.0], "limits": [-0.1, 0.1]},
+            "mass": 0.4,
+            "com": [0.02, 0.01],
+            "inertia": [0.002],
+        },
+        {
+            "name": "arm",
+            "parent": "slider",
+            "joint": {"kind": "revolute", "axis": [1], "origin": [0.0, 0.04], "limits": [-2.5, 2.5]},
+            "mass": 0.3,
+            "com": [0.05, 0.0],
+            "inertia": [0.001],
+        },
+    ]
+    data["cables"][2]["body"] = "slider"
+    data["cables"][3]["body"] = "arm"
+    return robot_from_dict(data)
+
+
+ROBOTS = {
+    "adjustable-8cable": adjustable,
+    "SpiderBot_UR3": lambda: load_robot(SPIDERBOT),
+    "branching tree": branching,
+    "planar slider and arm": planar,
+}
+
+
+def random_poses(robot, n, rng, spread=0.5, tilt=0.4):
+    """Platform poses around the centre of the exit points (positions within ``spread`` of
+    the half-extent of the frame, angles within ``tilt``), joint coordinates uniform strictly
+    inside their limits (where MuJoCo's joint limits do not push)."""
+    lo, hi = robot.exits.min(0), robot.exits.max(0)
+    centre, half = (lo + hi) / 2, (hi - lo) / 2
+    d = robot.dimension
+    pos = centre + spread * half * rng.uniform(-1, 1, (n, d))
+    ang = rng.uniform(-tilt, tilt, (n, robot.wrench_dim - d))
+    limits = robot.joint_limits
+    q = limits[:, 0] + (limits[:, 1] - limits[:, 0]) * rng.uniform(1e-6, 1 - 1e-6, (n, robot.n_joints))
+    poses = np.concatenate([pos, ang, q], axis=1)
+    return poses[np.asarray(swivel_wraps_agree(robot, poses))]
+
+
+def model_of(robot):
+    m = mujoco.MjModel.from_xml_string(mjcf_text(robot))
+    return m, mujoco.MjData(m)
+
+
+def dofs(robot, m):
+    """MuJoCo's velocity addresses of the platform's freedoms and of taut's joints, in taut's order."""
+    joints = [m.jnt_dofadr[m.joint(f"joint{k}").id] for k in range(1, robot.n_joints + 1)]
+    return np.arange(robot.wrench_dim), np.array(joints)
+
+
+def generalised(robot, wrench, pose):
+    """A platform wrench (force in the fixed frame, moment about ``p``) as MuJoCo's platform
+    generalised force: the freejoint takes the moment in the body frame."""
+    if robot.dimension == 2:
+        return wrench
+    R = rotation_matrix(pose[3:6], robot.orientation)
+    return np.concatenate([wrench[:3], R.T @ wrench[3:]])
+
+
+def mass_matrix(m, data):
+    M = np.zeros((m.nv, m.nv))
+    column = np.zeros(m.nv)
+    for j, e in enumerate(np.eye(m.nv)):
+        mujoco.mj_mulM(m, data, column, e)
+        M[:, j] = column
+    return M
+
+
+@pytest.mark.parametrize("name", list(ROBOTS))
+def test_body_frames_and_tendon_lengths_are_taut_s(name):
+    """At 1,000 random poses every body's frame in MuJoCo (from ``pose_to_qpos``) is taut's
+    ``body_frames`` to 1e-12 and the tendon lengths are taut's IK lengths to 1e-9 m."""
+    robot = ROBOTS[name]()
+    poses = random_poses(robot, 1000, np.random.default_rng(31), spread=0.8, tilt=1.0)
+    assert len(poses) == 1000
+    expected = inverse_kinematics(robot, poses).lengths
+    pos, rot = body_frames(robot, poses)
+    d = robot.dimension
+    m, data = model_of(robot)
+    ids = [m.body(f"body{k}").id for k in range(1, robot.n_joints + 1)]
+    got = np.empty_like(expected)
+    frames = 0.0
+    for k, qpos in enumerate(pose_to_qpos(robot, poses)):
+        data.qpos[:] = qpos
+        mujoco.mj_fwdPosition(m, data)
+        got[k] = data.ten_length
+        xpos = data.xpos[ids][:, :d]
+        xmat = data.xmat[ids].reshape(-1, 3, 3)[:, :d, :d]
+        frames = max(frames, np.abs(xpos - pos[k, 1:]).max(), np.abs(xmat - rot[k, 1:]).max())
+    assert frames < 1e-12
+    assert np.abs(got - expected).max() < 1e-9
+
+
+@pytest.mark.parametrize("name", list(ROBOTS))
+def test_inverse_dynamics_at_rest_is_jointed_statics(name):
+    """At 1,000 random poses with random tensions ``τ`` within the bounds, the generalised
+    force ``mj_inverse`` asks for at rest, less the tendons' (MuJoCo's own tendon Jacobian),
+    is taut's: ``−(W τ + w_ext)`` on the platform's freedoms (the bodies' weights included)
+    and the joint forces ``ζ`` of :func:`joint_forces` on the joints, to 1e-12 relative."""
+    robot = ROBOTS[name]()
+    rng = np.random.default_rng(32)
+    poses = random_poses(robot, 1000, rng, tilt=1.0)
+    tmin, tmax = robot.tension_bounds
+    tau = rng.uniform(tmin, np.minimum(tmax, tmin + 100.0), (len(poses), robot.n_cables))
+    W = inverse_kinematics(robot, poses).structure_matrix
+    w = external_wrench(robot, poses)
+    zeta = joint_forces(robot, poses, tau)
+    m, data = model_of(robot)
+    platform, joints = dofs(robot, m)
+    n = robot.n_cables
+    for k, qpos in enumerate(pose_to_qpos(robot, poses)):
+        data.qpos[:] = qpos
+        data.qvel[:] = 0
+        data.ctrl[:] = 0
+        data.ctrl[:n] = tau[k]
+        mujoco.mj_forward(m, data)
+        tendons = data.qfrc_actuator.copy()
+        data.qacc[:] = 0
+        mujoco.mj_inverse(m, data)
+        rest = data.qfrc_inverse - tendons
+        scale = np.abs(tau[k]).sum() + np.abs(w[k]).max()
+        expected = generalised(robot, -(W[k] @ tau[k] + w[k]), poses[k])
+        assert np.allclose(rest[platform], expected, rtol=0, atol=1e-12 * scale)
+        assert np.allclose(rest[joints], zeta[k], rtol=0, atol=1e-12 * scale)
+
+
+def hanging_poses(robot, n, rng):
+    """Level poses low in the frame with the joints in the middle half of their range, where
+    suspended robots hold their weight."""
+    poses = random_poses(robot, n, rng, spread=0.3, tilt=0.1)
+    lo, hi = robot.exits.min(0), robot.exits.max(0)
+    d = robot.dimension
+    poses[:, d - 1] = lo[d - 1] + (hi[d - 1] - lo[d - 1]) * rng.uniform(0.1, 0.4, len(poses))
+    limits = robot.joint_limits
+    middle = (limits[:, 0] + limits[:, 1]) / 2
+    poses[:, robot.wrench_dim :] = middle + (poses[:, robot.wrench_dim :] - middle) / 2
+    return poses[np.asarray(swivel_wraps_agree(robot, poses))]
+
+
+@pytest.mark.parametrize("name", list(ROBOTS))
+def test_distributed_tensions_and_joint_forces_hold_the_robot_still(name):
+    """At the wrench-feasible poses among random ones, taut's tension distribution on the
+    tendons and its joint forces ``ζ`` on the drives: ``mj_inverse`` at rest finds nothing
+    left to apply on the platform's freedoms (at most 1e-9 relative, the bound of a feasible
+    distribution) and exactly ``ζ`` on the joints, and ``mj_forward`` leaves the robot at rest."""
+    robot = ROBOTS[name]()
+    rng = np.random.default_rng(33)
+    poses = np.concatenate([random_poses(robot, 300, rng, spread=0.3, tilt=0.2), hanging_poses(robot, 300, rng)])
+    result = distribute_tensions(robot, poses)
+    feasible = np.asarray(result.feasible)
+    assert feasible.sum() >= 20, f"only {feasible.sum()} wrench-feasible poses"
+    poses, tau = poses[feasible], result.tensions[feasible]
+    zeta = joint_forces(robot, poses, tau)
+    w = external_wrench(robot, poses)
+    m, data = model_of(robot)
+    platform, joints = dofs(robot, m)
+    n = robot.n_cables
+    for k, qpos in enumerate(pose_to_qpos(robot, poses)):
+        data.qpos[:] = qpos
+        data.qvel[:] = 0
+        data.ctrl[:n] = tau[k]
+        data.ctrl[n:] = 0
+        mujoco.mj_forward(m, data)
+        tendons = data.qfrc_actuator.copy()
+        data.qacc[:] = 0
+        mujoco.mj_inverse(m, data)
+        rest = data.qfrc_inverse - tendons
+        scale = np.abs(tau[k]).sum() + np.abs(w[k]).max()
+        assert np.abs(rest[platform]).max() <= 1e-9 * scale
+        assert np.allclose(rest[joints], zeta[k], rtol=0, atol=1e-12 * scale)
+        data.ctrl[n:] = zeta[k]
+        mujoco.mj_forward(m, data)
+        assert np.allclose(data.qfrc_actuator[joints] - tendons[joints], zeta[k], rtol=0, atol=1e-12 * scale)
+        assert np.abs(mass_matrix(m, data) @ data.qacc).max() <= 1e-9 * scale
+
+
+def test_a_missing_joint_force_moves_the_arm():
+    """The rest test above can fail: without the joint forces the bodies accelerate."""
+    robot = ROBOTS["SpiderBot_UR3"]()
+    poses = hanging_poses(robot, 100, np.random.default_rng(34))
+    result = distribute_tensions(robot, poses)
+    k = int(np.argmax(result.feasible))
+    assert result.feasible[k]
+    zeta = joint_forces(robot, poses[k], result.tensions[k])
+    m, data = model_of(robot)
+    data.qpos[:] = pose_to_qpos(robot, poses[k])
+    data.ctrl[: robot.n_cables] = result.tensions[k]
+    mujoco.mj_forward(m, data)
+    assert np.abs(zeta).max() > 1
+    assert np.abs(data.qacc[dofs(robot, m)[1]]).max() > 0.1
+
+
+def test_the_model_holds_the_bodies_numbers():
+    robot = ROBOTS["branching tree"]()
+    m, _ = model_of(robot)
+    assert (m.nq, m.nv, m.nu, m.ntendon) == (7 + 3, 6 + 3, 8 + 3, 8)
+    names = {"platform": "platform"} | {b.name: f"body{k}" for k, b in enumerate(robot.platform.bodies, 1)}
+    for k, body in enumerate(robot.platform.bodies, 1):
+        b = m.body(f"body{k}")
+        parent = names[body.parent]
+        assert m.body(b.parentid[0]).name == parent
+        assert b.mass[0] == body.mass
+        R = np.zeros(9)
+        mujoco.mju_quat2Mat(R, b.iquat)
+        R = R.reshape(3, 3)
+        xx, yy, zz, xy, xz, yz = body.inertia
+        tensor = np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
+        assert np.allclose(R @ np.diag(b.inertia) @ R.T, tensor, atol=1e-12)
+        assert np.allclose(b.ipos, body.com)
+        j = m.joint(f"joint{k}")
+        assert j.type[0] == (
+            mujoco.mjtJoint.mjJNT_SLIDE if body.joint.kind == "prismatic" else mujoco.mjtJoint.mjJNT_HINGE
+        )
+        assert j.limited[0] == 1 and j.range.tolist() == list(body.joint.limits)
+        drive = m.actuator(f"drive{k}")
+        assert drive.trnid[0] == j.id and drive.gear[0] == 1 and drive.ctrllimited[0] == 0
+    # cable 8 hangs from tip (body 3), a child of upper: MuJoCo's joints run upper, tip, side
+    assert m.site_bodyid[m.site("anchor8").id] == m.body("body3").id
+    assert joint_order(robot).tolist() == [0, 2, 1]
+    assert [m.jnt_qposadr[m.joint(f"joint{k}").id] for k in (1, 2, 3)] == [7, 9, 8]
+
+
+def test_pose_to_qpos_puts_each_joint_coordinate_at_its_joint():
+    robot = ROBOTS["branching tree"]()
+    m, _ = model_of(robot)
+    pose = np.array([5.0, 5.0, 3.0, 0.1, 0.2, 0.3, 2.5, 0.7, -0.3])
+    qpos = pose_to_qpos(robot, pose)
+    for k in range(1, 4):
+        assert qpos[m.jnt_qposadr[m.joint(f"joint{k}").id]] == pose[5 + k]
+
+
+@st.composite
+def body_trees(draw):
+    """spatial-8cable with 1–4 random bodies: each on the platform or an earlier body, on a
+    prismatic or revolute joint with a random axis, origin and limits, with a random mass,
+    centre of mass and physical inertia; each cable hangs from a random body."""
+    data = robot_to_dict(taut.example("spatial-8cable"))
+    data.pop("reference", None)
+    data["platform"] |= {"inertia": [0.2, 0.3, 0.4, 0.01, 0.0, -0.02], "wrench_point": [0.01, 0.02, -0.03]}
+    rng = np.random.default_rng(draw(st.integers(0, 2**32 - 1)))
+    bodies = []
+    for k in range(draw(st.integers(1, 4))):
+        lo = rng.uniform(-2, 0)
+        bodies.append(
+            {
+                "name": f"b{k}",
+                "parent": "platform" if k == 0 else str(rng.choice(["platform"] + [b["name"] for b in bodies])),
+                "joint": {
+                    "kind": str(rng.choice(["prismatic", "revolute"])),
+                    "axis": rng.normal(size=3).tolist(),
+                    "origin": rng.uniform(-0.3, 0.3, 3).tolist(),
+                    "limits": [lo, lo + rng.uniform(0.5, 3)],
+                },
+                "mass": float(rng.uniform(0.1, 3)),
+                "com": rng.uniform(-0.2, 0.2, 3).tolist(),
+                "inertia": list(random_tensor(rng)),
+            }
+        )
+    data["platform"]["bodies"] = bodies
+    for cable in data["cables"]:
+        k = int(rng.integers(-1, len(bodies)))
+        if k >= 0:
+            cable["body"] = bodies[k]["name"]
+    return robot_from_dict(data), rng
+
+
+def random_tensor(rng):
+    """The inertia of a solid box of random sides, turned by a random rotation."""
+    a, b, c = rng.uniform(0.05, 0.6, 3)
+    Q, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+    I = Q @ np.diag([b * b + c * c, a * a + c * c, a * a + b * b]) @ Q.T
+    return I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]
+
+
+@settings(max_examples=100, deadline=None)
+@given(body_trees())
+def test_any_body_tree_is_taut_s_kinematics_and_statics(tree):
+    """For 100 random trees of bodies, at 20 random poses each: MuJoCo's body frames are taut's
+    ``body_frames`` (1e-12), its tendon lengths taut's IK (1e-9 m), and ``mj_inverse`` at rest
+    less the tendons' force is ``−(W τ + w_ext)`` on the platform and ``ζ`` on the joints
+    (1e-12 relative)."""
+    robot, rng = tree
+    poses = random_poses(robot, 20, rng, tilt=1.0)
+    tmin, tmax = robot.tension_bounds  # MuJoCo clamps a control to its range
+    tau = rng.uniform(tmin, np.minimum(tmax, tmin + 50.0), (len(poses), robot.n_cables))
+    ik = inverse_kinematics(robot, poses)
+    w = external_wrench(robot, poses)
+    zeta = joint_forces(robot, poses, tau)
+    pos, rot = body_frames(robot, poses)
+    m, data = model_of(robot)
+    platform, joints = dofs(robot, m)
+    ids = [m.body(f"body{k}").id for k in range(1, robot.n_joints + 1)]
+    n = robot.n_cables
+    for k, qpos in enumerate(pose_to_qpos(robot, poses)):
+        data.qpos[:] = qpos
+        data.qvel[:] = 0
+        data.ctrl[:] = 0
+        data.ctrl[:n] = tau[k]
+        mujoco.mj_forward(m, data)
+        assert np.abs(data.xpos[ids] - pos[k, 1:]).max() < 1e-12
+        assert np.abs(data.xmat[ids].reshape(-1, 3, 3) - rot[k, 1:]).max() < 1e-12
+        assert np.abs(data.ten_length - ik.lengths[k]).max() < 1e-9
+        tendons = data.qfrc_actuator.copy()
+        data.qacc[:] = 0
+        mujoco.mj_inverse(m, data)
+        rest = data.qfrc_inverse - tendons
+        scale = np.abs(tau[k]).sum() + np.abs(w[k]).max()
+        expected = generalised(robot, -(ik.structure_matrix[k] @ tau[k] + w[k]), poses[k])
+        assert np.allclose(rest[platform], expected, rtol=0, atol=1e-12 * scale)
+        assert np.allclose(rest[joints], zeta[k], rtol=0, atol=1e-12 * scale)
