@@ -120,3 +120,32 @@ def test_progress_counts_the_charts_expanded():
     res = plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], 0.2, progress=lambda done, total: calls.append((done, total)))
     assert res.found and res.expanded > 1
     assert calls == [(k, None) for k in range(1, res.expanded + 1)] + [(res.expanded, res.expanded)]
+
+
+def test_symmetry_images_are_equivalent_and_nearest():
+    """The half-turn ``(φ, θ) → (φ + π, −θ)`` and 2π periods: every image found is in the
+    same class (same canonical form), no image is nearer the reference, and the canonical
+    form lies in its window."""
+    from taut.planning.continuation import Symmetry
+
+    sym = Symmetry(((0, 2 * np.pi, -np.pi), (1, 2 * np.pi, -np.pi)), flip=(0, 1))
+    rng = np.random.default_rng(3)
+    X = rng.uniform(-12, 12, (200, 3))
+    ref = np.array([3.0, -0.2, 5.0])
+    near, flipped = sym.nearest(X, ref)
+    np.testing.assert_allclose(near[:, 2], X[:, 2])  # not a periodic coordinate
+    for x, y, f in zip(X, near, flipped):
+        cx, _ = sym.canonical(x)
+        cy, _ = sym.canonical(y)
+        assert -np.pi <= cx[0] < np.pi and 0 <= cx[1] <= np.pi
+        np.testing.assert_allclose(cx, cy, atol=1e-9)
+        # brute force over the group: no image is nearer ref in the periodic coordinates
+        best = min(
+            np.hypot(x[0] + h * np.pi + 2 * np.pi * i - ref[0], (-1) ** h * x[1] + 2 * np.pi * j - ref[1])
+            for h in (0, 1)
+            for i in range(-4, 5)
+            for j in range(-4, 5)
+        )
+        assert np.hypot(*(y - ref)[:2]) <= best + 1e-9
+        # tangent vectors follow the flip: the θ component changes sign
+        assert sym.tangent(np.eye(3), bool(f))[1, 1] == (-1.0 if f else 1.0)
