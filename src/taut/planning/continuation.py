@@ -157,6 +157,7 @@ def project(
     tol: float = 1e-10,
     max_iter: int = 25,
     max_step: float = np.inf,
+    newton_fallback: bool = True,
 ) -> np.ndarray | None:
     """Newton on ``[F(x); Ψᵀ (x − guess)] = 0`` from ``guess``; ``None`` if it fails.
 
@@ -167,7 +168,7 @@ def project(
     """
     if manifold.graph is not None and manifold.graph_index is not None:
         x = project_graph(manifold.graph, manifold.graph_index, guess, basis, tol, max_iter, max_step)
-        if x is not None:
+        if x is not None or not newton_fallback:
             return x
     x = np.array(guess, dtype=float)
     n = x.size
@@ -244,6 +245,12 @@ class Polytope:
         # cube face of dimension d: lower = 2d, upper = 2d + 1; cutting planes get ids ≥ 2k
         self.active = [frozenset(2 * d + int(c[d] > 0) for d in range(k)) for c in corners]
         self.scale = half_side
+        self.normals = np.empty((0, k))  #: the cutting planes ``normals @ u ≤ offsets``
+        self.offsets = np.empty(0)
+
+    def contains(self, u: np.ndarray) -> bool:
+        """Whether the point ``u`` lies in the polytope (the cube and every cutting plane)."""
+        return bool(np.all(np.abs(u) <= self.scale) and np.all(self.normals @ u <= self.offsets))
 
     def cut(self, normal: np.ndarray, offset: float, ident: int) -> bool:
         """Keep ``{u : normal·u ≤ offset}``; ``True`` if some vertex was removed."""
@@ -259,6 +266,8 @@ class Polytope:
         out = s > 0
         if not out.any():
             return False
+        self.normals = np.vstack([self.normals, a])
+        self.offsets = np.append(self.offsets, b)
         edges: dict[frozenset, list[int]] = {}
         for v, act in enumerate(self.active):
             for c in act:
@@ -459,11 +468,16 @@ class Atlas:
     def centres(self) -> np.ndarray:
         return self._centres
 
-    def chart_map(self, i: int, u: np.ndarray) -> np.ndarray | None:
-        """The manifold point of tangent coordinates ``u`` in chart ``i``."""
+    def chart_map(self, i: int, u: np.ndarray, newton_fallback: bool = True) -> np.ndarray | None:
+        """The manifold point of tangent coordinates ``u`` in chart ``i`` (see :func:`project`
+        for ``newton_fallback``)."""
         c = self.charts[i]
         return project(
-            self.manifold, c.centre + c.basis @ u, c.basis, max_step=max(self.epsilon, 2 * float(np.linalg.norm(u)))
+            self.manifold,
+            c.centre + c.basis @ u,
+            c.basis,
+            max_step=max(self.epsilon, 2 * float(np.linalg.norm(u))),
+            newton_fallback=newton_fallback,
         )
 
     def reaches(self, i: int, x: np.ndarray, tol: float = 1e-6) -> bool:
