@@ -134,7 +134,9 @@ class _Walker:
                 return pts, charts, True
             u_j = u_n + (delta / dist) * d
             ch = atlas.charts[c]
-            x_j = atlas.chart_map(c, u_j, newton_fallback=False)
+            # with a graph the node lies on the manifold exactly and the tolerance only
+            # bounds how closely it sits over u_j: looser than A*'s is enough
+            x_j = atlas.chart_map(c, u_j, newton_fallback=False, tol=1e-8)
             if x_j is None or not atlas.manifold.in_box(x_j):
                 return pts, charts, False  # blocked: the boundary of the manifold's box
             x_n = atlas.local(c, x)

@@ -468,14 +468,15 @@ class Atlas:
     def centres(self) -> np.ndarray:
         return self._centres
 
-    def chart_map(self, i: int, u: np.ndarray, newton_fallback: bool = True) -> np.ndarray | None:
+    def chart_map(self, i: int, u: np.ndarray, newton_fallback: bool = True, tol: float = 1e-10) -> np.ndarray | None:
         """The manifold point of tangent coordinates ``u`` in chart ``i`` (see :func:`project`
-        for ``newton_fallback``)."""
+        for ``newton_fallback`` and ``tol``)."""
         c = self.charts[i]
         return project(
             self.manifold,
             c.centre + c.basis @ u,
             c.basis,
+            tol=tol,
             max_step=max(self.epsilon, 2 * float(np.linalg.norm(u))),
             newton_fallback=newton_fallback,
         )

@@ -102,6 +102,24 @@ def rotation_derivatives(tau: np.ndarray | Sequence[float]) -> tuple[np.ndarray,
     return R, np.array([dA @ Bm @ C - A @ Bm @ dC, A @ dB @ C, A @ Bm @ dC])
 
 
+def _cross_rows(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Row-wise ``a × b`` of ``(m, 3)`` arrays (``np.cross`` costs more than the arithmetic here)."""
+    return np.stack(
+        [
+            a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1],
+            a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2],
+            a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0],
+        ],
+        axis=1,
+    )
+
+
+def _rotation(tau: np.ndarray) -> np.ndarray:
+    """``R = Rz(φ) Ry(θ) Rz(σ − φ)`` of Eq. (1) alone."""
+    phi, theta, sigma = tau
+    return _rz(phi)[0] @ _ry(theta)[0] @ _rz(sigma - phi)[0]
+
+
 def _skew(v: np.ndarray) -> np.ndarray:
     return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
 
@@ -146,6 +164,9 @@ class WrenchFeasibleManifold:
         self.c = self.b - np.asarray(self.wrench_point, float)
         self.w0 = np.asarray(self.w0, float).reshape(6)
         self.E = np.asarray(self.E, float).reshape(6, 6)
+        if not (np.allclose(self.E, self.E.T) and np.all(np.linalg.eigvalsh(self.E) > 0)):
+            raise TautError("the wrench ellipsoid matrix E must be symmetric positive definite")
+        self._E_inv = np.linalg.inv(self.E)
         for name in ("f_min", "f_max", "rho_min", "rho_max"):
             setattr(self, name, np.broadcast_to(np.asarray(getattr(self, name), float), (6,)).copy())
         bad = set(self.fixed) - set(POSE_NAMES)
@@ -210,7 +231,7 @@ class WrenchFeasibleManifold:
     def _screw(self, R: np.ndarray, u: np.ndarray, rho: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         Rc = self.c @ R.T  # (6, 3): R c_i
         d = u / rho[:, None]
-        return np.vstack([d.T, np.cross(Rc, d).T]), Rc, d
+        return np.vstack([d.T, _cross_rows(Rc, d).T]), Rc, d
 
     def full_function(self, x: np.ndarray) -> np.ndarray:
         p, tau = x[_P], x[_TAU]
@@ -449,15 +470,16 @@ class WrenchFeasibleManifold:
         or ``None`` where ``J`` is singular.  The tension range of cable ``i`` over the
         ellipsoid is ``f_0,i ± v_i,i``."""
         q = np.asarray(pose, float)
-        R, _ = rotation_derivatives(q[3:])
+        R = _rotation(q[3:])
         u = q[:3] + self.b @ R.T - self.a
-        rho = np.linalg.norm(u, axis=1)
+        rho = np.sqrt(np.einsum("ij,ij->i", u, u))
         J, _, _ = self._screw(R, u, rho)
         try:
-            f0 = np.linalg.solve(J, self.w0)
-            Binv = np.linalg.inv(J.T @ self.E @ J)
+            Jinv = np.linalg.inv(J)
         except np.linalg.LinAlgError:
             return None
+        f0 = Jinv @ self.w0
+        Binv = Jinv @ self._E_inv @ Jinv.T  # (Jᵀ E J)⁻¹
         d = np.diag(Binv)
         if not (np.all(np.isfinite(d)) and np.all(d > 0)):
             return None  # J numerically singular
