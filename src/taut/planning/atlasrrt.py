@@ -93,6 +93,8 @@ class _Walker:
         self.max_charts = max_charts
         self.cos_alpha = 1.0 - atlas.epsilon
         self.charts_full = False
+        # a graph puts every node on the manifold exactly, whatever the tangential tolerance
+        self.tol = 1e-4 if atlas.manifold.graph is not None else 1e-10
 
     def _chart_at(self, x: np.ndarray, chart: int) -> int | None:
         """A new chart centred at ``x``, a neighbour of ``chart``; ``None`` at the chart limit."""
@@ -134,11 +136,10 @@ class _Walker:
                 return pts, charts, True
             u_j = u_n + (delta / dist) * d
             ch = atlas.charts[c]
-            # with a graph the node lies on the manifold exactly and the tolerance only
-            # bounds how closely it sits over u_j: looser than A*'s is enough
-            x_j = atlas.chart_map(c, u_j, newton_fallback=False, tol=1e-8)
+            x_j = atlas.chart_map(c, u_j, newton_fallback=False, tol=self.tol)
             if x_j is None or not atlas.manifold.in_box(x_j):
                 return pts, charts, False  # blocked: the boundary of the manifold's box
+            u_j = ch.basis.T @ (x_j - ch.centre)
             x_n = atlas.local(c, x)
             step = float(np.linalg.norm(x_j - x_n))
             valid = (

@@ -30,7 +30,8 @@ Bohigas et al. (2013); §4 of that paper):
   its coordinates (``ImplicitManifold.graph``), the projection of a tangent point solves
   only for those coordinates (a quasi-Newton iteration started from the chart's tangent
   space); the solution is the same point as Newton's on the full system, found with a few
-  evaluations of the map instead of Jacobians of ``F``.
+  evaluations of the map instead of Jacobians of ``F``; the tangent space of a new chart is
+  spanned by the graph's derivatives (central differences), also without ``F_x``.
 
 The polytopes are kept as vertex lists with, for each vertex, the set of its ``k``
 active constraints (cube faces and cutting planes); two vertices share an edge when
@@ -56,7 +57,17 @@ import numpy.typing as npt
 
 from taut.errors import TautError
 
-__all__ = ["Atlas", "Chart", "ImplicitManifold", "Polytope", "Symmetry", "project", "tangent_basis"]
+__all__ = [
+    "Atlas",
+    "Chart",
+    "ImplicitManifold",
+    "Polytope",
+    "Symmetry",
+    "graph_tangent",
+    "project",
+    "project_graph",
+    "tangent_basis",
+]
 
 
 @dataclass(frozen=True)
@@ -192,6 +203,24 @@ def project(
     if x.size != n or np.linalg.norm(x - guess) > max_step:
         return None
     return x
+
+
+def graph_tangent(
+    graph: Callable[[np.ndarray], np.ndarray | None], index: np.ndarray, x: np.ndarray, h: float = 1e-6
+) -> np.ndarray | None:
+    """Tangent vectors ``∂x/∂q_d`` ``(n, k)`` of the graph at ``x`` by central differences of
+    step ``h`` in each coordinate ``q = x[index]`` (``None`` where the graph ends within ``h``):
+    the span of the null space of ``F_x`` without forming ``F_x``."""
+    q = np.asarray(x, float)[index]
+    cols = []
+    for d in range(q.size):
+        e = np.zeros(q.size)
+        e[d] = h
+        xp, xm = graph(q + e), graph(q - e)
+        if xp is None or xm is None:
+            return None
+        cols.append((xp - xm) / (2 * h))
+    return np.array(cols).T
 
 
 def project_graph(
@@ -352,7 +381,12 @@ class Atlas:
     # -- construction ---------------------------------------------------------------
 
     def _basis(self, x: np.ndarray) -> np.ndarray:
-        return tangent_basis(self.manifold.jacobian(x), self.manifold.dim)
+        m = self.manifold
+        if m.graph is not None and m.graph_index is not None:
+            T = graph_tangent(m.graph, m.graph_index, x)
+            if T is not None:
+                return np.linalg.qr(T)[0]
+        return tangent_basis(m.jacobian(x), m.dim)
 
     def near(self, X: npt.ArrayLike, ref: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The images of the points ``X`` ``(m, n)`` under the manifold's symmetry nearest
