@@ -97,3 +97,16 @@ def test_bad_arguments_are_refused():
         atlas_rrt(SPHERE, a, b, 0.3, step=0.5)
     with pytest.raises(TautError, match="max_nodes"):
         atlas_rrt(SPHERE, a, b, 0.3, max_nodes=1)
+
+
+def test_q5_to_q6_on_the_3d_slice_x_y_0():
+    # experiment 2 of Bohigas et al. (Fig. 7), which A* needs tens of seconds for
+    fixed = dict(x=0.0, y=0.0, sigma=SIGMA)
+    M3 = WrenchFeasibleManifold.from_robot(ROBOT, fixed=fixed)
+    res = atlas_rrt(M3.implicit(), M3.lift(POSES["q5"]), M3.lift(POSES["q6"]), 0.4, metric=M3.pose_metric, seed=0)
+    assert res.found and res.atlas.manifold.dim == 3
+    poses = M3.pose(res.path)
+    np.testing.assert_allclose(poses[0], POSES["q5"], atol=1e-9)
+    assert same_pose(poses[-1], POSES["q6"])
+    np.testing.assert_allclose(poses[:, [0, 1, 5]], np.broadcast_to([0, 0, SIGMA], (len(poses), 3)), atol=1e-9)
+    assert verify_path(ROBOT, poses, subdivide=10).all_feasible
