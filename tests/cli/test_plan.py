@@ -96,6 +96,21 @@ def test_plan_atlasrrt_q3_q4_across_phi_pi(cli, extra):
     assert verify_path(ROBOT, path, subdivide=20).all_feasible
 
 
+@pytest.mark.parametrize(
+    "start", ["0,0,2,-0.5,0.9,35deg", "0,0,2,5.783185307179586,0.9,35deg", "0,0,2,2.641592653589793,-0.9,35deg"]
+)
+def test_plan_path_begins_at_the_start_as_written(cli, start):
+    # q1, q1 with φ + 2π, q1 as (φ + π, −θ): the same pose, planned from its canonical lift
+    assert cli.main(["plan", "robocrane", f"--start={start}", "--goal", "q2", "--fix", SLICE, "--json"]) == 0
+    d = json.loads(cli.readouterr().out)
+    path = np.array(d["path"])
+    s = [float(v) for v in start.split(",")[:5]]
+    np.testing.assert_allclose(path[0, :5], s, atol=1e-12)
+    assert same_pose(path[0], ROBOT.reference.poses["q1"]) and same_pose(path[-1], ROBOT.reference.poses["q2"])
+    assert np.abs(np.diff(path, axis=0)).max() < 0.2 and d["verified"]
+    assert verify_path(ROBOT, path, subdivide=20).all_feasible
+
+
 def test_plan_atlasrrt_budget_runs_out_and_auto_then_proves_no_path(cli):
     islands = ["--start", "0,0,2,-1.3,2.2,35deg", "--goal", "0,0,2,0.6,2.4,35deg", "--fix", SLICE, "--radius", "0.3"]
     assert cli.main(["plan", "robocrane", *islands, "--planner", "atlasrrt", "--max-nodes", "60", "--json"]) == 0

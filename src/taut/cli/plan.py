@@ -200,7 +200,7 @@ def cmd_plan(ns: argparse.Namespace) -> int:
     }
     table = None  # the path's poses and extreme tensions, one row per pose
     if res.found:
-        poses = M.pose(res.path)
+        poses = M.align(M.pose(res.path), start)  # begins at --start as written
         lo, hi = M.tension_range(res.path)
         margin = np.minimum(lo - M.f_min, M.f_max - hi).min()
         check = verify_path(robot, poses, E=M.E, subdivide=ns.subdivide)

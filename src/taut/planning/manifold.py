@@ -389,6 +389,27 @@ class WrenchFeasibleManifold:
         q[..., 3] = lo + np.mod(q[..., 3] - lo, 2 * np.pi)
         return q
 
+    def align(self, poses: npt.ArrayLike, pose: npt.ArrayLike) -> np.ndarray:
+        """The path ``poses`` ``(N, 6)`` moved by the symmetry (half-turn, 2π shifts of the
+        angles) that takes its first pose to ``pose``, another writing of the same pose: a
+        path from the canonical lift of a start then begins at the start as the user wrote it.
+        Unchanged when no such symmetry exists."""
+        q = np.array(poses, float)
+        target = np.asarray(pose, float)
+        for flip in (False, True):
+            c = q.copy()
+            if flip:
+                c[:, 3] += np.pi
+                c[:, 4] = -c[:, 4]
+            k = np.round((target[3:] - c[0, 3:]) / (2 * np.pi))
+            if np.allclose(c[0, :3], target[:3], atol=1e-9) and np.allclose(
+                c[0, 3:] + 2 * np.pi * k, target[3:], atol=1e-9
+            ):
+                c[:, 3:] += 2 * np.pi * k
+                c[0] = target
+                return c
+        return q
+
     @property
     def pose_metric(self) -> np.ndarray:
         """Indices of the free pose coordinates inside the free vector (for A* costs)."""
