@@ -22,12 +22,13 @@ its motions checked every ``--resolution`` rad, within ``--ompl-time`` s.  Every
 planners is checked by ``verify_path`` every ``--resolution`` rad; lengths are in (φ, θ).
 Printed: both time and length distributions (min / median / max), the ratios of the medians,
 and the paper's times with our ratio to them.  The straight line start → goal is checked too.
-Last, q5 → q6 without a slice (all six pose coordinates free) by AtlasRRT.
+``--simplify`` shortens both planners' paths inside the timing (AtlasRRT's random shortcuts
+on the manifold, OMPL's simplifySolution).  Last, q5 → q6 without a slice (all six pose coordinates free) by AtlasRRT.
 
     python benchmarks/bench_plan.py [--radius 0.2] [--repeat 3] [--max-charts 20000] [--no-astar]
                                     [--seeds 10] [--rrt-radius 0.4] [--rrt-step 0.1]
                                     [--no-peers] [--resolution 0.01] [--ompl-time 30]
-                                    [--ompl-checker manifold|independent]
+                                    [--ompl-checker manifold|independent] [--simplify]
 """
 
 import argparse
@@ -65,10 +66,10 @@ def straight_line(robot, start, goal, step):
 _SEEDED = []
 
 
-def ompl_rrtconnect(valid_pose, start, goal, step, budget):
-    """One RRTConnect trial in SO(2) × [0, π] with the state validity test ``valid_pose(pose)``;
-    ``None`` when OMPL is absent, else ``(solved, seconds, validity calls, poses)`` with φ
-    unwrapped along the path."""
+def ompl_rrtconnect(valid_pose, start, goal, step, budget, simplify=False):
+    """One RRTConnect trial in SO(2) × [0, π] with the state validity test ``valid_pose(pose)``
+    (then OMPL's path simplification when ``simplify``, timed with it); ``None`` when OMPL is
+    absent, else ``(solved, seconds, validity calls, poses)`` with φ unwrapped along the path."""
     try:
         from ompl import base as ob
         from ompl import geometric as og
@@ -109,6 +110,8 @@ def ompl_rrtconnect(valid_pose, start, goal, step, budget):
     ss.setStartAndGoalStates(a, b)
     t = time.perf_counter()
     solved = bool(ss.solve(budget))
+    if solved and simplify:
+        ss.simplifySolution()
     dt = time.perf_counter() - t
     exact = solved and ss.haveExactSolutionPath()
     poses = None
@@ -148,6 +151,11 @@ def main():
     )
     ap.add_argument("--ompl-time", type=float, default=30.0, help="OMPL time budget per trial, s")
     ap.add_argument("--ompl-checker", choices=("manifold", "independent"), default="manifold")
+    ap.add_argument(
+        "--simplify",
+        action="store_true",
+        help="shorten both planners' paths (AtlasRRT shorten=True, OMPL simplifySolution), inside the timing",
+    )
     ns = ap.parse_args()
     robot = taut.load_robot("robocrane")
     P = {k: np.array(v) for k, v in robot.reference.poses.items()}
@@ -211,7 +219,9 @@ def main():
         have_ompl = ns.peers
         for seed in range(ns.seeds):
             t = time.perf_counter()
-            r = atlas_rrt(mf, y1, y2, ns.rrt_radius, step=ns.rrt_step, metric=M.pose_metric, seed=seed)
+            r = atlas_rrt(
+                mf, y1, y2, ns.rrt_radius, step=ns.rrt_step, metric=M.pose_metric, seed=seed, shorten=ns.simplify
+            )
             dt = time.perf_counter() - t
             if r.found:
                 ck = verify_path(robot, densify(M.pose(r.path), ns.resolution), subdivide=1)
@@ -220,7 +230,7 @@ def main():
                 rrt["ok"].append(ck.all_feasible)
             if not have_ompl:
                 continue
-            run = ompl_rrtconnect(valid_pose, P[a], P[b], ns.resolution, ns.ompl_time)
+            run = ompl_rrtconnect(valid_pose, P[a], P[b], ns.resolution, ns.ompl_time, ns.simplify)
             if run is None:
                 have_ompl = False
                 print("  OMPL not installed (optional peer: pip install ompl)")
@@ -233,7 +243,8 @@ def main():
                 peer["ok"].append(ck.all_feasible)
                 peer["calls"].append(calls)
         print(
-            f"  AtlasRRT (bidirectional, radius {ns.rrt_radius}, step {ns.rrt_step}; {ns.seeds} seeds): "
+            f"  AtlasRRT (bidirectional, radius {ns.rrt_radius}, step {ns.rrt_step}"
+            f"{', shortened' if ns.simplify else ''}; {ns.seeds} seeds): "
             f"solved {len(rrt['t'])}, paths valid by the independent check at {ns.resolution} rad: "
             f"{sum(rrt['ok'])} of {len(rrt['ok'])}; all feasible {all(rrt['ok']) and len(rrt['ok']) == ns.seeds}"
         )
@@ -244,7 +255,8 @@ def main():
             print(f"  paper (C): {paper_s:.0f} s; ratio paper / taut AtlasRRT median: {paper_s / med:.0f}x")
         if have_ompl and ns.seeds:
             print(
-                f"  OMPL RRTConnect ({ns.ompl_checker} validity checker, motions every {ns.resolution} rad, "
+                f"  OMPL RRTConnect{' + simplifySolution' if ns.simplify else ''} ({ns.ompl_checker} validity "
+                f"checker, motions every {ns.resolution} rad, "
                 f"budget {ns.ompl_time:.0f} s; {ns.seeds} trials): solved {len(peer['t'])}, paths valid "
                 f"{sum(peer['ok'])} of {len(peer['ok'])}, validity checks median "
                 f"{np.median(peer['calls']) if peer['calls'] else float('nan'):.0f}"
