@@ -149,3 +149,26 @@ def test_symmetry_images_are_equivalent_and_nearest():
         assert np.hypot(*(y - ref)[:2]) <= best + 1e-9
         # tangent vectors follow the flip: the θ component changes sign
         assert sym.tangent(np.eye(3), bool(f))[1, 1] == (-1.0 if f else 1.0)
+
+
+def test_polytope_membership_by_planes_matches_the_hull_of_its_vertices():
+    """``contains`` (cube and cutting planes) agrees with the convex hull of the vertices the
+    cuts produce, and a plane-only polytope (AtlasRRT's) answers the same."""
+    from scipy.spatial import Delaunay
+
+    rng = np.random.default_rng(5)
+    P, Q = Polytope(3, 1.0), Polytope(3, 1.0, vertices=False)
+    for ident in range(6, 16):
+        n = rng.normal(size=3)
+        off = rng.uniform(0.4, 1.2)
+        P.cut(n, off, ident)
+        Q.cut(n, off, ident)
+    hull = Delaunay(P.vertices)
+    U = rng.uniform(-1.1, 1.1, (2000, 3))
+    inside = hull.find_simplex(U) >= 0
+    near_face = np.abs(U).max(axis=1) > 0.999  # avoid ties on the cube faces
+    by_planes = np.array([P.contains(u) for u in U])
+    assert np.array_equal(by_planes[~near_face], inside[~near_face]) and inside.sum() > 50
+    assert np.array_equal(by_planes, [Q.contains(u) for u in U])
+    with pytest.raises(TautError, match="no vertices"):
+        Q.exterior(0.5)

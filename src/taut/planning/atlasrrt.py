@@ -265,7 +265,7 @@ def atlas_rrt(
     if np.linalg.norm(manifold.function(goal)) > 1e-6 * (1 + np.linalg.norm(goal)):
         raise TautError("the goal point is not on the manifold (|F(goal)| too large)")
     rng = np.random.default_rng(seed)
-    atlas = Atlas(manifold, start, radius, epsilon, metric=metric)
+    atlas = Atlas(manifold, start, radius, epsilon, metric=metric, vertices=False)
     goal_chart = atlas.add_chart(goal)
     trees = [Tree(atlas.local(0, start), 0), Tree(atlas.local(goal_chart, goal), goal_chart)]
     walker = _Walker(atlas, delta, max_charts)

@@ -265,14 +265,21 @@ def project_graph(
 
 
 class Polytope:
-    """A convex polytope of ``R^k`` by its vertices and their active constraints."""
+    """A convex polytope of ``R^k`` by its vertices and their active constraints, and by its
+    cutting planes.
 
-    def __init__(self, k: int, half_side: float):
+    With ``vertices=False`` only the planes are kept (enough for :meth:`contains`, all that
+    AtlasRRT asks of a polytope): the vertex lists, which a 6-D polytope makes long, are
+    never enumerated, and :meth:`cut` reports whether the plane crosses the cube.
+    """
+
+    def __init__(self, k: int, half_side: float, vertices: bool = True):
         corners = np.array(np.meshgrid(*[[-1.0, 1.0]] * k, indexing="ij")).reshape(k, -1).T
         self.k = k
-        self.vertices = corners * half_side
+        self.has_vertices = vertices
+        self.vertices = corners * half_side if vertices else np.empty((0, k))
         # cube face of dimension d: lower = 2d, upper = 2d + 1; cutting planes get ids ≥ 2k
-        self.active = [frozenset(2 * d + int(c[d] > 0) for d in range(k)) for c in corners]
+        self.active = [frozenset(2 * d + int(c[d] > 0) for d in range(k)) for c in corners] if vertices else []
         self.scale = half_side
         self.normals = np.empty((0, k))  #: the cutting planes ``normals @ u ≤ offsets``
         self.offsets = np.empty(0)
@@ -287,6 +294,12 @@ class Polytope:
         if nn == 0.0:
             return False
         a, b = normal / nn, offset / nn
+        if not self.has_vertices:
+            if b >= self.scale * np.abs(a).sum():  # the whole cube is kept
+                return False
+            self.normals = np.vstack([self.normals, a])
+            self.offsets = np.append(self.offsets, b)
+            return True
         s = self.vertices @ a - b
         tol = 1e-10 * self.scale
         while np.any(np.abs(s) <= tol):  # keep the polytope simple: nudge the plane outwards
@@ -316,6 +329,8 @@ class Polytope:
 
     def exterior(self, radius: float) -> np.ndarray:
         """Indices of the vertices outside the ball of ``radius``, farthest first."""
+        if not self.has_vertices:
+            raise TautError("this polytope keeps no vertices (Polytope(..., vertices=False))")
         d = np.linalg.norm(self.vertices, axis=1)
         idx = np.flatnonzero(d > radius * (1 + 1e-9))
         return idx[np.argsort(-d[idx])]
@@ -343,7 +358,9 @@ class Atlas:
     the tangent-space change ``1 − σ_min(Ψ_iᵀ Ψ_j)`` between a chart and its child;
     ``min_step`` is the fraction of ``radius`` below which a direction is abandoned
     (the chart becomes a frontier chart).  ``metric`` selects the coordinates in which
-    edge costs are measured (all of them by default).
+    edge costs are measured (all of them by default).  ``vertices=False`` keeps the chart
+    polytopes as planes only (:class:`Polytope`): charts can then be tested for membership
+    but not expanded (:meth:`grow`), as AtlasRRT uses them.
 
     References
     ----------
@@ -363,6 +380,7 @@ class Atlas:
         epsilon: float = 0.1,
         min_step: float = 0.05,
         metric: np.ndarray | None = None,
+        vertices: bool = True,
     ) -> None:
         x0 = np.asarray(x0, dtype=float)
         if radius <= 0 or not 0 < epsilon < 1:
@@ -371,6 +389,7 @@ class Atlas:
         self.radius = float(radius)
         self.epsilon = float(epsilon)
         self.min_step = float(min_step)
+        self.vertices = vertices
         self.metric = np.arange(x0.size) if metric is None else np.asarray(metric)
         self.charts: list[Chart] = []
         self._centres = np.empty((0, x0.size))
@@ -418,7 +437,9 @@ class Atlas:
             basis = self.manifold.symmetry.tangent(basis, flipped)
         k = self.manifold.dim
         # the cube strictly encloses the ball, also for k = 1
-        chart = Chart(x, basis, self.radius, Polytope(k, 1.05 * self.radius), frontier=not self.manifold.in_box(x))
+        chart = Chart(
+            x, basis, self.radius, Polytope(k, 1.05 * self.radius, self.vertices), frontier=not self.manifold.in_box(x)
+        )
         j = len(self.charts)
         if j:
             near, _ = self.near(self._centres, x)
