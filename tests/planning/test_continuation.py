@@ -149,6 +149,10 @@ def test_symmetry_images_are_equivalent_and_nearest():
         assert np.hypot(*(y - ref)[:2]) <= best + 1e-9
         # tangent vectors follow the flip: the θ component changes sign
         assert sym.tangent(np.eye(3), bool(f))[1, 1] == (-1.0 if f else 1.0)
+    with pytest.raises(TautError, match="flip"):
+        Symmetry(((0, 2 * np.pi, -np.pi),), flip=(0, 1))
+    with pytest.raises(TautError, match="positive"):
+        Symmetry(((0, 0.0, 0.0),))
 
 
 def test_polytope_membership_by_planes_matches_the_hull_of_its_vertices():

@@ -84,15 +84,24 @@ class Symmetry:
     periods: tuple[tuple[int, float, float], ...]
     flip: tuple[int, int] | None = None
 
+    def __post_init__(self) -> None:
+        idx = [i for i, _, _ in self.periods]
+        if any(p <= 0 for _, p, _ in self.periods) or len(set(idx)) != len(idx):
+            raise TautError(f"symmetry periods must be positive, one per coordinate: {self.periods}")
+        if self.flip is not None and not set(self.flip) <= set(idx):
+            raise TautError(f"the flip {self.flip} needs both of its coordinates periodic: {self.periods}")
+
     def _wrap(self, X: np.ndarray, ref: np.ndarray) -> np.ndarray:
         for i, p, _ in self.periods:
             X[:, i] -= p * np.round((X[:, i] - ref[..., i]) / p)
         return X
 
-    def _flipped(self, X: np.ndarray) -> np.ndarray:
-        a, b = self.flip  # type: ignore[misc]  # only called when flip is set
+    def _period(self, i: int) -> float:
+        return next(p for j, p, _ in self.periods if j == i)
+
+    def _flipped(self, X: np.ndarray, a: int, b: int) -> np.ndarray:
         Y = X.copy()
-        Y[:, a] += 0.5 * dict((i, p) for i, p, _ in self.periods)[a]
+        Y[:, a] += 0.5 * self._period(a)
         Y[:, b] = -Y[:, b]
         return Y
 
@@ -103,7 +112,7 @@ class Symmetry:
         near = self._wrap(X.copy(), ref)
         flipped = np.zeros(len(X), bool)
         if self.flip is not None:
-            alt = self._wrap(self._flipped(X), ref)
+            alt = self._wrap(self._flipped(X, *self.flip), ref)
             idx = [i for i, _, _ in self.periods]
             flipped = np.linalg.norm((alt - ref)[:, idx], axis=1) < np.linalg.norm((near - ref)[:, idx], axis=1)
             near[flipped] = alt[flipped]
@@ -123,9 +132,9 @@ class Symmetry:
         flipped = False
         if self.flip is not None:
             b = self.flip[1]
-            pb = dict((i, p) for i, p, _ in self.periods)[b]
+            pb = self._period(b)
             if np.mod(X[0, b], pb) > 0.5 * pb:  # x[b] ∈ (−p/2, 0) modulo p: flip it into [0, p/2]
-                X, flipped = self._flipped(X), True
+                X, flipped = self._flipped(X, *self.flip), True
         for i, p, low in self.periods:
             X[:, i] = low + np.mod(X[:, i] - low, p)
         return X[0], flipped
