@@ -2,9 +2,11 @@
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from taut.errors import TautError
-from taut.planning import Atlas, ImplicitManifold, Polytope, plan_path, tangent_basis
+from taut.planning import Atlas, ImplicitManifold, Polytope, Symmetry, plan_path, tangent_basis
 
 CIRCLE = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 1)
 SPHERE = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
@@ -122,33 +124,50 @@ def test_progress_counts_the_charts_expanded():
     assert calls == [(k, None) for k in range(1, res.expanded + 1)] + [(res.expanded, res.expanded)]
 
 
-def test_symmetry_images_are_equivalent_and_nearest():
-    """The half-turn ``(φ, θ) → (φ + π, −θ)`` and 2π periods: every image found is in the
-    same class (same canonical form), no image is nearer the reference, and the canonical
-    form lies in its window."""
-    from taut.planning.continuation import Symmetry
+_angle = st.floats(-12, 12, allow_nan=False, allow_subnormal=False)
 
-    sym = Symmetry(((0, 2 * np.pi, -np.pi), (1, 2 * np.pi, -np.pi)), flip=(0, 1))
-    rng = np.random.default_rng(3)
-    X = rng.uniform(-12, 12, (200, 3))
-    ref = np.array([3.0, -0.2, 5.0])
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(_angle, _angle, _angle), min_size=1, max_size=20), st.tuples(_angle, _angle, _angle))
+def test_symmetry_images_are_equivalent_and_nearest(points, reference):
+    """The half-turn ``(φ, θ) → (φ + π, −θ)`` and 2π periods: the image found is an image
+    (by brute force over the group), no image is nearer the reference, and the canonical
+    form is an image inside its window."""
+    sym = Symmetry(((0, 2 * np.pi, -np.pi), (1, 2 * np.pi, -np.pi / 2)), flip=(0, 1))
+    X = np.array(points)
+    ref = np.array(reference)
     near, flipped = sym.nearest(X, ref)
     np.testing.assert_allclose(near[:, 2], X[:, 2])  # not a periodic coordinate
     for x, y, f in zip(X, near, flipped):
-        cx, _ = sym.canonical(x)
-        cy, _ = sym.canonical(y)
-        assert -np.pi <= cx[0] < np.pi and 0 <= cx[1] <= np.pi
-        np.testing.assert_allclose(cx, cy, atol=1e-9)
-        # brute force over the group: no image is nearer ref in the periodic coordinates
-        best = min(
-            np.hypot(x[0] + h * np.pi + 2 * np.pi * i - ref[0], (-1) ** h * x[1] + 2 * np.pi * j - ref[1])
-            for h in (0, 1)
-            for i in range(-4, 5)
-            for j in range(-4, 5)
+        images = np.array(
+            [
+                (x[0] + h * np.pi + 2 * np.pi * i, (-1) ** h * x[1] + 2 * np.pi * j)
+                for h in (0, 1)
+                for i in range(-5, 6)
+                for j in range(-5, 6)
+            ]
         )
-        assert np.hypot(*(y - ref)[:2]) <= best + 1e-9
+        assert np.linalg.norm(images - y[:2], axis=1).min() < 1e-9  # y is an image of x
+        assert np.linalg.norm(y[:2] - ref[:2]) <= np.linalg.norm(images - ref[:2], axis=1).min() + 1e-9
+        cx, _ = sym.canonical(x)
+        assert -np.pi <= cx[0] < np.pi and 0 <= cx[1] <= np.pi
+        assert np.linalg.norm(images - cx[:2], axis=1).min() < 1e-9
         # tangent vectors follow the flip: the θ component changes sign
         assert sym.tangent(np.eye(3), bool(f))[1, 1] == (-1.0 if f else 1.0)
+
+
+def test_symmetry_canonical_form_is_unique_and_arguments_checked():
+    sym = Symmetry(((0, 2 * np.pi, -np.pi), (1, 2 * np.pi, -np.pi / 2)), flip=(0, 1))
+    # images of one point, also on the lines θ = 0 and θ = π that the half-turn keeps
+    for phi, theta in ((2.0, 0.7), (2.0, 0.0), (-0.5, np.pi), (3.0, 2.5)):
+        forms = [
+            sym.canonical(np.array([phi + h * np.pi + 2 * np.pi * i, (-1) ** h * theta + 2 * np.pi * j, 0.0]))[0]
+            for h in (0, 1)
+            for i in (-1, 0, 1)
+            for j in (-1, 0, 1)
+        ]
+        np.testing.assert_allclose(forms, np.broadcast_to(forms[0], (len(forms), 3)), atol=1e-9)
+        assert -np.pi <= forms[0][0] < np.pi and 0 <= forms[0][1] <= np.pi
     with pytest.raises(TautError, match="flip"):
         Symmetry(((0, 2 * np.pi, -np.pi),), flip=(0, 1))
     with pytest.raises(TautError, match="positive"):

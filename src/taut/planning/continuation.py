@@ -131,10 +131,15 @@ class Symmetry:
         X = np.array(x, float, ndmin=2)
         flipped = False
         if self.flip is not None:
-            b = self.flip[1]
-            pb = self._period(b)
-            if np.mod(X[0, b], pb) > 0.5 * pb:  # x[b] ∈ (−p/2, 0) modulo p: flip it into [0, p/2]
-                X, flipped = self._flipped(X, *self.flip), True
+            a, b = self.flip
+            pb, pa = self._period(b), self._period(a)
+            la = next(low for j, _, low in self.periods if j == a)
+            r = np.mod(X[0, b], pb)
+            # x[b] ∈ (−p/2, 0) modulo p: flip it into [0, p/2]; on the lines x[b] ∈ {0, p/2}
+            # that the flip maps to themselves, x[a] in the first half of its window decides
+            on_line = r == 0.0 or r == 0.5 * pb
+            if r > 0.5 * pb or (on_line and np.mod(X[0, a] - la, pa) >= 0.5 * pa):
+                X, flipped = self._flipped(X, a, b), True
         for i, p, low in self.periods:
             X[:, i] = low + np.mod(X[:, i] - low, p)
         return X[0], flipped

@@ -363,7 +363,8 @@ class WrenchFeasibleManifold:
         """The periodicity of the free angles in the free vector (module doc), ``None`` when
         every angle is fixed; the half-turn when both ``φ`` and ``θ`` are free."""
         pos = {int(v): i for i, v in enumerate(self.free) if v < 6}
-        lows = {3: self.phi_window[0], 4: -np.pi, 5: -np.pi}
+        # θ's window [−π/2, 3π/2) holds the canonical θ ∈ [0, π] that the half-turn selects
+        lows = {3: self.phi_window[0], 4: -np.pi / 2, 5: -np.pi}
         periods = tuple((pos[v], 2 * np.pi * self._w[pos[v]], lows[v] * self._w[pos[v]]) for v in (3, 4, 5) if v in pos)
         if not periods:
             return None
