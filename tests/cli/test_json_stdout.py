@@ -132,6 +132,14 @@ CASES: list[tuple[str, list[str], Check]] = [
         + ["--out", "{tmp}/p.csv", "--plot", "{tmp}/p.png"],
         lambda d, tmp: d["found"] and d["verified"] and (tmp / "p.csv").is_file() and (tmp / "p.png").is_file(),
     ),
+    *(
+        (
+            f"plan-{p}",
+            ["plan", "robocrane", "--start", "q1", "--goal", "q2", "--fix", "x=0,y=0,z=2,sigma=35deg", "--planner", p],
+            lambda d, tmp, p=p: d["found"] and d["verified"] and d["planner"] == p and not d["exhausted"],
+        )
+        for p in ("atlasrrt", "astar")
+    ),
     (
         "convert",
         ["convert", "cogiro", "{tmp}/c_bodies.xml"],
@@ -170,6 +178,7 @@ QUICK = {
     "atlas-wrench-feasible",
     "check-lp",
     "plan",
+    "plan-atlasrrt",
     "convert",
 }
 

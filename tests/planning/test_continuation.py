@@ -2,9 +2,11 @@
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from taut.errors import TautError
-from taut.planning import Atlas, ImplicitManifold, Polytope, plan_path, tangent_basis
+from taut.planning import Atlas, ImplicitManifold, Polytope, Symmetry, plan_path, tangent_basis
 
 CIRCLE = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 1)
 SPHERE = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
@@ -120,3 +122,76 @@ def test_progress_counts_the_charts_expanded():
     res = plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], 0.2, progress=lambda done, total: calls.append((done, total)))
     assert res.found and res.expanded > 1
     assert calls == [(k, None) for k in range(1, res.expanded + 1)] + [(res.expanded, res.expanded)]
+
+
+_angle = st.floats(-12, 12, allow_nan=False, allow_subnormal=False)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(_angle, _angle, _angle), min_size=1, max_size=20), st.tuples(_angle, _angle, _angle))
+def test_symmetry_images_are_equivalent_and_nearest(points, reference):
+    """The half-turn ``(φ, θ) → (φ + π, −θ)`` and 2π periods: the image found is an image
+    (by brute force over the group), no image is nearer the reference, and the canonical
+    form is an image inside its window."""
+    sym = Symmetry(((0, 2 * np.pi, -np.pi), (1, 2 * np.pi, -np.pi / 2)), flip=(0, 1))
+    X = np.array(points)
+    ref = np.array(reference)
+    near, flipped = sym.nearest(X, ref)
+    np.testing.assert_allclose(near[:, 2], X[:, 2])  # not a periodic coordinate
+    for x, y, f in zip(X, near, flipped):
+        images = np.array(
+            [
+                (x[0] + h * np.pi + 2 * np.pi * i, (-1) ** h * x[1] + 2 * np.pi * j)
+                for h in (0, 1)
+                for i in range(-5, 6)
+                for j in range(-5, 6)
+            ]
+        )
+        assert np.linalg.norm(images - y[:2], axis=1).min() < 1e-9  # y is an image of x
+        assert np.linalg.norm(y[:2] - ref[:2]) <= np.linalg.norm(images - ref[:2], axis=1).min() + 1e-9
+        cx, _ = sym.canonical(x)
+        assert -np.pi <= cx[0] < np.pi and 0 <= cx[1] <= np.pi
+        assert np.linalg.norm(images - cx[:2], axis=1).min() < 1e-9
+        # tangent vectors follow the flip: the θ component changes sign
+        assert sym.tangent(np.eye(3), bool(f))[1, 1] == (-1.0 if f else 1.0)
+
+
+def test_symmetry_canonical_form_is_unique_and_arguments_checked():
+    sym = Symmetry(((0, 2 * np.pi, -np.pi), (1, 2 * np.pi, -np.pi / 2)), flip=(0, 1))
+    # images of one point, also on the lines θ = 0 and θ = π that the half-turn keeps
+    for phi, theta in ((2.0, 0.7), (2.0, 0.0), (-0.5, np.pi), (3.0, 2.5)):
+        forms = [
+            sym.canonical(np.array([phi + h * np.pi + 2 * np.pi * i, (-1) ** h * theta + 2 * np.pi * j, 0.0]))[0]
+            for h in (0, 1)
+            for i in (-1, 0, 1)
+            for j in (-1, 0, 1)
+        ]
+        np.testing.assert_allclose(forms, np.broadcast_to(forms[0], (len(forms), 3)), atol=1e-9)
+        assert -np.pi <= forms[0][0] < np.pi and 0 <= forms[0][1] <= np.pi
+    with pytest.raises(TautError, match="flip"):
+        Symmetry(((0, 2 * np.pi, -np.pi),), flip=(0, 1))
+    with pytest.raises(TautError, match="positive"):
+        Symmetry(((0, 0.0, 0.0),))
+
+
+def test_polytope_membership_by_planes_matches_the_hull_of_its_vertices():
+    """``contains`` (cube and cutting planes) agrees with the convex hull of the vertices the
+    cuts produce, and a plane-only polytope (AtlasRRT's) answers the same."""
+    from scipy.spatial import Delaunay
+
+    rng = np.random.default_rng(5)
+    P, Q = Polytope(3, 1.0), Polytope(3, 1.0, vertices=False)
+    for ident in range(6, 16):
+        n = rng.normal(size=3)
+        off = rng.uniform(0.4, 1.2)
+        P.cut(n, off, ident)
+        Q.cut(n, off, ident)
+    hull = Delaunay(P.vertices)
+    U = rng.uniform(-1.1, 1.1, (2000, 3))
+    inside = hull.find_simplex(U) >= 0
+    near_face = np.abs(U).max(axis=1) > 0.999  # avoid ties on the cube faces
+    by_planes = np.array([P.contains(u) for u in U])
+    assert np.array_equal(by_planes[~near_face], inside[~near_face]) and inside.sum() > 50
+    assert np.array_equal(by_planes, [Q.contains(u) for u in U])
+    with pytest.raises(TautError, match="no vertices"):
+        Q.exterior(0.5)

@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 from taut.errors import InfeasiblePoseError, PoseError
+from taut.kinematics.pose import platform_frame
 from taut.model import load_robot
 from taut.planning import plan_path, tangent_basis
 from taut.planning.manifold import WrenchFeasibleManifold
@@ -14,6 +15,12 @@ ROBOT = load_robot("robocrane")
 POSES = {k: np.array(v) for k, v in ROBOT.reference.poses.items()}
 SIGMA = 7 * np.pi / 36
 SLICE = dict(x=0.0, y=0.0, z=2.0, sigma=SIGMA)
+
+
+def same_pose(robot, a, b) -> bool:
+    """Same platform position and rotation (the robot's own orientation convention)."""
+    (pa, Ra), (pb, Rb) = (platform_frame(robot, np.asarray(q, float)[None]) for q in (a, b))
+    return bool(np.allclose(pa, pb, atol=1e-9) and np.allclose(Ra, Rb, atol=1e-9))
 
 
 def test_lift_solves_the_equations_and_jacobian_matches_finite_differences():
@@ -86,7 +93,8 @@ def test_robocrane_q1_q2_path_is_wrench_feasible_where_the_straight_line_is_not(
     res = plan_path(M.implicit(), M.lift(POSES["q1"]), M.lift(POSES["q2"]), 0.2, metric=M.pose_metric)
     assert res.found and res.charts < 1000
     q = M.pose(res.path)
-    assert np.allclose(q[0], POSES["q1"]) and np.allclose(q[-1], POSES["q2"])
+    # the path may end at other angles of the same orientation (here through θ = 0)
+    assert np.allclose(q[0], POSES["q1"]) and same_pose(ROBOT, q[-1], POSES["q2"])
     assert np.allclose(q[:, [0, 1, 2, 5]], [0, 0, 2, SIGMA])
     assert np.abs(np.diff(q, axis=0)).max() < 0.1
     chk = verify_path(ROBOT, q, subdivide=10)

@@ -1,11 +1,15 @@
 """``taut plan ROBOT --start POSE --goal POSE``: a wrench-feasible path between two
-configurations of a cable-driven hexapod (Bohigas et al. 2013; :mod:`taut.planning`).
+configurations of a cable-driven hexapod (Bohigas et al. 2013; :mod:`taut.planning`), by
+A* over a growing atlas (complete), AtlasRRT (Jaillet & Porta 2013), or both in turn.
 
 References
 ----------
 .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
    Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
    Machine Science 12, Springer, 2013, §4–5. (docs/references.bib: bohigas2013)
+.. [2] L. Jaillet, J. M. Porta, "Path planning under kinematic constraints by rapidly
+   exploring manifolds", IEEE Transactions on Robotics 29(1), 2013.
+   (docs/references.bib: jaillet2013)
 """
 
 from __future__ import annotations
@@ -20,20 +24,37 @@ if TYPE_CHECKING:
 
     from taut.cli.main import Command
     from taut.model.robot import Robot
+    from taut.planning.manifold import WrenchFeasibleManifold
+    from taut.planning.search import PathResult
 
 #: Smallest chart radius: the number of charts grows as radius^-k on a k-dimensional slice,
 #: and below this even a 2-D slice needs more charts than a search can visit.
 MIN_RADIUS = 1e-3
 
+#: Chart radius of each planner when --radius is not given.
+DEFAULT_RADIUS = {"astar": 0.2, "atlasrrt": 0.4}
+#: AtlasRRT tree nodes when --max-nodes is not given: alone, and as the first stage of auto.
+DEFAULT_NODES = {"atlasrrt": 5000, "auto": 500}
+
 HELP = """Plan a path along which the cables balance every wrench of the ellipsoid
-(w - w0)^T E (w - w0) <= 1 with tensions and lengths strictly inside their bounds
-(higher-dimensional continuation + A*, Bohigas et al. 2013, §4), or report that the
-connected component of the start does not reach the goal at the chart radius.
+(w - w0)^T E (w - w0) <= 1 with tensions and lengths strictly inside their bounds.
+Planners (--planner):
+  astar     higher-dimensional continuation + A* (Bohigas et al. 2013, §4): complete, it
+            proves that no path exists when the start's component is exhausted at the
+            chart radius (--radius, default 0.2);
+  atlasrrt  AtlasRRT (Jaillet & Porta 2013), bidirectional unless --unidirectional: random
+            trees grown on an atlas of the same manifold (--radius, default 0.4; --step,
+            default radius/4; --seed), fast, but it cannot prove that no path exists;
+  auto      (default) AtlasRRT within --max-nodes (default 500), then A*.
+--shorten shortens an AtlasRRT path by random shortcuts on the manifold.
+Angles are periodic: a path may cross phi = +-pi or theta = 0, so its last pose is the goal
+or the same orientation written with other angles (phi +- 2pi, or phi + pi with -theta).
 POSE is x,y,z,phi,theta,sigma (tilt-and-torsion; 35deg, pi/8 accepted) or the name of a
 reference pose of the robot (e.g. q1).  The path is checked independently at --subdivide
-interpolated points per step (taut.statics.feasibility).
-JSON: {"found", "path": [[x,y,z,phi,theta,sigma], ...], "charts", "elapsed_s",
-"min_tension_margin", "expanded", "exhausted", "length", "verified"}."""
+interpolated points per step (taut.statics.feasibility).  No path is an answer (exit 0):
+"found": false, with "exhausted": true for a proof (A*), false when a budget ran out.
+JSON: {"planner", "method", "found", "path": [[x,y,z,phi,theta,sigma], ...], "charts",
+"nodes", "elapsed_s", "min_tension_margin", "expanded", "exhausted", "length", "verified"}."""
 
 
 def _pose(robot: Robot, text: str, what: str) -> np.ndarray:
@@ -86,23 +107,70 @@ def _ellipsoid(text: str | None) -> np.ndarray:
     return E
 
 
+def _run(ns: argparse.Namespace, M: WrenchFeasibleManifold, y0: np.ndarray, y1: np.ndarray) -> tuple[str, PathResult]:
+    """The planner's answer: the method that gave it and its result."""
+    from taut.cli.progress import progress_bar, wanted
+    from taut.planning import atlas_rrt, plan_path
+
+    if ns.planner in ("atlasrrt", "auto"):
+        radius = ns.radius or DEFAULT_RADIUS["atlasrrt"]
+        with progress_bar("plan (AtlasRRT nodes)", wanted(ns.json)) as progress:
+            res = atlas_rrt(
+                M.implicit(),
+                y0,
+                y1,
+                radius,
+                step=ns.step,
+                metric=M.pose_metric,
+                seed=ns.seed,
+                bidirectional=not ns.unidirectional,
+                max_nodes=ns.max_nodes or DEFAULT_NODES[ns.planner],
+                max_charts=ns.max_charts,
+                shorten=ns.shorten,
+                progress=progress,
+            )
+        if res.found or ns.planner == "atlasrrt":
+            return "atlasrrt", res
+    with progress_bar("plan (charts expanded)", wanted(ns.json)) as progress:
+        res = plan_path(
+            M.implicit(),
+            y0,
+            y1,
+            ns.radius or DEFAULT_RADIUS["astar"],
+            metric=M.pose_metric,
+            max_charts=ns.max_charts,
+            progress=progress,
+        )
+    return "astar", res
+
+
 def cmd_plan(ns: argparse.Namespace) -> int:
+    import time
+
     import numpy as np
 
     from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
-    from taut.cli.progress import progress_bar, wanted
-    from taut.planning import plan_path
     from taut.planning.manifold import POSE_NAMES, WrenchFeasibleManifold
     from taut.planning.verify import verify_path
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)
-    A.positive(ns.radius, "--radius")
-    if ns.radius < MIN_RADIUS:
-        raise TautError(f"--radius {ns.radius:g} is below {MIN_RADIUS:g}: the search could not cover the space")
-    if ns.max_charts < 1 or ns.subdivide < 1:
-        raise TautError("--max-charts and --subdivide must be at least 1")
+    if ns.radius is not None:
+        A.positive(ns.radius, "--radius")
+        if ns.radius < MIN_RADIUS:
+            raise TautError(f"--radius {ns.radius:g} is below {MIN_RADIUS:g}: the search could not cover the space")
+    if ns.max_charts < 2 or ns.subdivide < 1:
+        raise TautError("--max-charts must be at least 2 and --subdivide at least 1")
+    if ns.max_nodes is not None and ns.max_nodes < 2:
+        raise TautError(f"--max-nodes must be at least 2, got {ns.max_nodes}")
+    if ns.step is not None:
+        A.positive(ns.step, "--step")
+        radius = ns.radius or DEFAULT_RADIUS["atlasrrt"]
+        if ns.step > radius:
+            raise TautError(f"--step {ns.step:g} exceeds the chart radius {radius:g}")
+    if ns.planner == "astar" and (ns.shorten or ns.unidirectional or ns.step is not None or ns.max_nodes):
+        raise TautError("--shorten, --unidirectional, --step and --max-nodes apply to --planner atlasrrt or auto")
     robot = load(ns.robot, ns.cable_set)
     start, goal = _pose(robot, ns.start, "--start"), _pose(robot, ns.goal, "--goal")
     fixed = _fixed(ns.fix, start)
@@ -111,18 +179,20 @@ def cmd_plan(ns: argparse.Namespace) -> int:
         raise TautError("--plot draws a map of two free coordinates: fix at most four")
     M = WrenchFeasibleManifold.from_robot(robot, E=_ellipsoid(ns.wrench_ellipsoid), fixed=fixed)
     y0, y1 = M.lift(start), M.lift(goal)
-    with progress_bar("plan (charts expanded)", wanted(ns.json)) as progress:
-        res = plan_path(
-            M.implicit(), y0, y1, ns.radius, metric=M.pose_metric, max_charts=ns.max_charts, progress=progress
-        )
+    t0 = time.perf_counter()
+    method, res = _run(ns, M, y0, y1)
+    elapsed = time.perf_counter() - t0
     data = {
         "robot": robot.name,
+        "planner": ns.planner,
+        "method": method,
         "found": res.found,
         "path": [],
         "charts": res.charts,
-        "elapsed_s": res.elapsed_s,
+        "nodes": res.expanded if method == "atlasrrt" else None,
+        "elapsed_s": elapsed,
         "min_tension_margin": None,
-        "expanded": res.expanded,
+        "expanded": res.expanded if method == "astar" else None,
         "exhausted": res.exhausted,
         "length": None,
         "verified": None,
@@ -130,7 +200,7 @@ def cmd_plan(ns: argparse.Namespace) -> int:
     }
     table = None  # the path's poses and extreme tensions, one row per pose
     if res.found:
-        poses = M.pose(res.path)
+        poses = M.align(M.pose(res.path), start)  # begins at --start as written
         lo, hi = M.tension_range(res.path)
         margin = np.minimum(lo - M.f_min, M.f_max - hi).min()
         check = verify_path(robot, poses, E=M.E, subdivide=ns.subdivide)
@@ -144,14 +214,19 @@ def cmd_plan(ns: argparse.Namespace) -> int:
         if d["found"]:
             con.print(
                 f"[bold]{robot.name}[/]: path of {len(d['path'])} poses, length {d['length']:.4g} "
-                f"(pose coordinates), {d['charts']} charts, {d['elapsed_s']:.3g} s"
+                f"(pose coordinates), {d['method']}, {d['charts']} charts, {d['elapsed_s']:.3g} s"
             )
             con.print(
                 f"min tension margin {d['min_tension_margin']:.4g}; independent check: "
                 f"{'feasible' if d['verified'] else 'NOT feasible'} at every interpolated pose"
             )
         else:
-            why = "the start's component is exhausted" if d["exhausted"] else "the chart limit was reached"
+            if d["exhausted"]:
+                why = "proved: the start's component is exhausted at the chart radius"
+            elif d["method"] == "atlasrrt":
+                why = f"not a proof: AtlasRRT's budget of {d['nodes']} nodes ran out"
+            else:
+                why = "not a proof: the chart limit was reached"
             con.print(f"[bold]{robot.name}[/]: no path ({why}; {d['charts']} charts explored, {d['elapsed_s']:.3g} s)")
 
     if out is not None and table is not None:
@@ -182,8 +257,21 @@ def register(command: Command) -> None:
         "--wrench-ellipsoid", help="E of (w-w0)^T E (w-w0) <= 1: e (E = e*I), 6 diagonal or 36 entries (default 1e4)"
     )
     c.add_argument(
-        "--radius", type=float, default=0.2, help="chart radius, the resolution of a 'no path' answer (default 0.2)"
+        "--planner",
+        choices=("auto", "atlasrrt", "astar"),
+        default="auto",
+        help="auto (default): AtlasRRT, then A* if it found nothing; atlasrrt; astar (complete)",
     )
+    c.add_argument(
+        "--radius",
+        type=float,
+        help="chart radius; for astar the resolution of a 'no path' answer (default 0.2 astar, 0.4 atlasrrt)",
+    )
+    c.add_argument("--step", type=float, help="AtlasRRT step in the tangent spaces (default radius/4)")
+    c.add_argument("--seed", type=int, default=0, help="AtlasRRT random seed (default 0)")
+    c.add_argument("--max-nodes", type=int, help="AtlasRRT tree nodes (default 5000 atlasrrt, 500 auto)")
+    c.add_argument("--unidirectional", action="store_true", help="AtlasRRT: one tree from the start")
+    c.add_argument("--shorten", action="store_true", help="AtlasRRT: shorten the path on the manifold")
     c.add_argument(
         "--max-charts", type=int, default=20000, help="stop the search after this many charts (default 20000)"
     )

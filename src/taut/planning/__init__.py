@@ -1,14 +1,19 @@
 """Wrench-feasible path planning (Bohigas et al. 2013): higher-dimensional
-continuation (:mod:`.continuation`) and A* over its charts (:mod:`.search`).
+continuation (:mod:`.continuation`), A* over its charts (:mod:`.search`, complete), and
+AtlasRRT (Jaillet & Porta 2013, :mod:`.atlasrrt`, randomised).
 
 References
 ----------
 .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
    Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
    Machine Science 12, Springer, 2013, §2–5. (docs/references.bib: bohigas2013)
+.. [2] L. Jaillet, J. M. Porta, "Path planning under kinematic constraints by rapidly
+   exploring manifolds", IEEE Transactions on Robotics 29(1), 2013.
+   (docs/references.bib: jaillet2013)
 """
 
-from taut.planning.continuation import Atlas, Chart, ImplicitManifold, Polytope, project, tangent_basis
+from taut.planning.atlasrrt import atlas_rrt, shorten_path
+from taut.planning.continuation import Atlas, Chart, ImplicitManifold, Polytope, Symmetry, project, tangent_basis
 from taut.planning.search import PathResult, plan_path, refine_path
 
 __all__ = [
@@ -17,8 +22,11 @@ __all__ = [
     "ImplicitManifold",
     "PathResult",
     "Polytope",
+    "Symmetry",
+    "atlas_rrt",
     "plan_path",
     "project",
     "refine_path",
+    "shorten_path",
     "tangent_basis",
 ]

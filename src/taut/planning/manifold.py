@@ -21,9 +21,14 @@ the wrench ``ŵ`` applied to the platform.  Moments are taken about the point ``
 nominal wrench (``c_i = b_i − P_m`` in the platform frame), where §5 states
 ``ŵ_0 = [0, 0, m, 0, 0, 0]`` is constant; in taut's convention ``W = −J`` about ``P_m``.
 
-Angles: ``θ ∈ [0, π]`` and ``φ`` in a ``2π`` window (``phi_window``) are box bounds of the
-slice (charts beyond them are frontier charts), so that the atlas of a slice is finite and
-can complete — the no-path proof of §4; poses are lifted with canonical angles.
+Angles are periodic: the slice is invariant under ``φ → φ + 2π``, ``θ → θ + 2π``,
+``σ → σ + 2π`` and the half-turn ``(φ, θ) → (φ + π, −θ)`` (the same ``R`` of Eq. 1), and its
+:class:`~taut.planning.continuation.Symmetry` makes an atlas cover the quotient: a path may
+cross ``φ = ±π`` or ``θ = 0``, and since the angles of the quotient are bounded, the atlas
+of a slice is finite and can complete — the no-path proof of §4.  Poses are lifted with
+canonical angles (``θ ∈ [0, π]``, ``φ`` in ``phi_window``).  The slice is also the graph of
+the closed-form solution of Eqs. (1)–(8) over its free pose coordinates (:meth:`graph`),
+which makes projections onto it cheap.
 
 The positivity of ``v_i,i``, ``s_i``, ``t_i``, ``g_i`` is implicit on each connected component
 (Appendix A), so only upper bounds on ``s``, ``t``, ``g`` are imposed, to keep atlases finite.
@@ -48,7 +53,7 @@ import numpy.typing as npt
 
 from taut.errors import InfeasiblePoseError, PoseError, TautError
 from taut.kinematics.swivel import refuse_swivels
-from taut.planning.continuation import ImplicitManifold
+from taut.planning.continuation import ImplicitManifold, Symmetry
 
 if TYPE_CHECKING:
     from taut.model.robot import Robot
@@ -97,6 +102,24 @@ def rotation_derivatives(tau: np.ndarray | Sequence[float]) -> tuple[np.ndarray,
     return R, np.array([dA @ Bm @ C - A @ Bm @ dC, A @ dB @ C, A @ Bm @ dC])
 
 
+def _cross_rows(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Row-wise ``a × b`` of ``(m, 3)`` arrays (``np.cross`` costs more than the arithmetic here)."""
+    return np.stack(
+        [
+            a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1],
+            a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2],
+            a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0],
+        ],
+        axis=1,
+    )
+
+
+def _rotation(tau: np.ndarray) -> np.ndarray:
+    """``R = Rz(φ) Ry(θ) Rz(σ − φ)`` of Eq. (1) alone."""
+    phi, theta, sigma = tau
+    return _rz(phi)[0] @ _ry(theta)[0] @ _rz(sigma - phi)[0]
+
+
 def _skew(v: np.ndarray) -> np.ndarray:
     return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
 
@@ -131,10 +154,8 @@ class WrenchFeasibleManifold:
     #: :meth:`implicit`: a linear change of variables that keeps chart steps in pose space
     #: of the order of the chart radius (the slacks vary like 1/margin near the boundary)
     weights: tuple[float, ...] = (1.0, 1.0, 0.1, 0.1, 0.1, 0.01, 1.0, 10.0, 0.01, 0.01)
-    #: window of the torsion-free tilt azimuth φ (length 2π): with θ ∈ [0, π] every rotation
-    #: has tilt-and-torsion angles in ``[φ_lo, φ_lo + 2π] × [0, π]``, so an atlas of a slice
-    #: that frees φ or θ stays bounded and can complete (charts whose centre leaves the
-    #: window are frontier charts, like those beyond ``slack_max``)
+    #: canonical window of the tilt azimuth φ (length 2π): with θ ∈ [0, π] every rotation
+    #: has tilt-and-torsion angles in ``[φ_lo, φ_lo + 2π) × [0, π]``
     phi_window: tuple[float, float] = (-np.pi, np.pi)
 
     def __post_init__(self) -> None:
@@ -143,6 +164,9 @@ class WrenchFeasibleManifold:
         self.c = self.b - np.asarray(self.wrench_point, float)
         self.w0 = np.asarray(self.w0, float).reshape(6)
         self.E = np.asarray(self.E, float).reshape(6, 6)
+        if not (np.allclose(self.E, self.E.T) and np.all(np.linalg.eigvalsh(self.E) > 0)):
+            raise TautError("the wrench ellipsoid matrix E must be symmetric positive definite")
+        self._E_inv = np.linalg.inv(self.E)
         for name in ("f_min", "f_max", "rho_min", "rho_max"):
             setattr(self, name, np.broadcast_to(np.asarray(getattr(self, name), float), (6,)).copy())
         bad = set(self.fixed) - set(POSE_NAMES)
@@ -207,7 +231,7 @@ class WrenchFeasibleManifold:
     def _screw(self, R: np.ndarray, u: np.ndarray, rho: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         Rc = self.c @ R.T  # (6, 3): R c_i
         d = u / rho[:, None]
-        return np.vstack([d.T, np.cross(Rc, d).T]), Rc, d
+        return np.vstack([d.T, _cross_rows(Rc, d).T]), Rc, d
 
     def full_function(self, x: np.ndarray) -> np.ndarray:
         p, tau = x[_P], x[_TAU]
@@ -324,15 +348,34 @@ class WrenchFeasibleManifold:
         ``y = w · x_free``, with the box ``s_i, t_i, g_i ≤ slack_max``."""
         lo, hi = np.full(N_VARS, -np.inf), np.full(N_VARS, np.inf)
         hi[_G] = hi[_S] = hi[_T] = self.slack_max
-        lo[3], hi[3] = self.phi_window  # φ
-        lo[4], hi[4] = 0.0, np.pi  # θ
         return ImplicitManifold(
             lambda y: self.full_function(self.full(y)),
             lambda y: self.full_jacobian(self.full(y))[:, self.free] / self._w,
             self.dim,
             lower=lo[self.free] * self._w,
             upper=hi[self.free] * self._w,
+            symmetry=self.symmetry(),
+            graph=self.graph,
+            graph_index=self.pose_metric,
         )
+
+    def symmetry(self) -> Symmetry | None:
+        """The periodicity of the free angles in the free vector (module doc), ``None`` when
+        every angle is fixed; the half-turn when both ``φ`` and ``θ`` are free."""
+        pos = {int(v): i for i, v in enumerate(self.free) if v < 6}
+        # θ's window [−π/2, 3π/2) holds the canonical θ ∈ [0, π] that the half-turn selects
+        lows = {3: self.phi_window[0], 4: -np.pi / 2, 5: -np.pi}
+        periods = tuple((pos[v], 2 * np.pi * self._w[pos[v]], lows[v] * self._w[pos[v]]) for v in (3, 4, 5) if v in pos)
+        if not periods:
+            return None
+        return Symmetry(periods, (pos[3], pos[4]) if 3 in pos and 4 in pos else None)
+
+    def graph(self, q: np.ndarray) -> np.ndarray | None:
+        """The free vector of the point of the slice over its free pose coordinates ``q``
+        (weighted, as in the free vector; angles taken as they are), ``None`` where that
+        pose is not strictly wrench-feasible (Eqs. 6–8) or ``J`` is singular."""
+        pose = self.pose(q)
+        return None if not np.all(np.isfinite(pose)) else self._solve(pose)
 
     def canonical(self, pose: npt.ArrayLike) -> np.ndarray:
         """The same pose(s) ``(..., 6)`` with ``θ ∈ [0, π]`` and ``φ`` in :attr:`phi_window`:
@@ -345,6 +388,27 @@ class WrenchFeasibleManifold:
         q[..., 3] = q[..., 3] + np.where(neg, np.pi, 0.0)
         lo = self.phi_window[0]
         q[..., 3] = lo + np.mod(q[..., 3] - lo, 2 * np.pi)
+        return q
+
+    def align(self, poses: npt.ArrayLike, pose: npt.ArrayLike) -> np.ndarray:
+        """The path ``poses`` ``(N, 6)`` moved by the symmetry (half-turn, 2π shifts of the
+        angles) that takes its first pose to ``pose``, another writing of the same pose: a
+        path from the canonical lift of a start then begins at the start as the user wrote it.
+        Unchanged when no such symmetry exists."""
+        q = np.array(poses, float)
+        target = np.asarray(pose, float)
+        for flip in (False, True):
+            c = q.copy()
+            if flip:
+                c[:, 3] += np.pi
+                c[:, 4] = -c[:, 4]
+            k = np.round((target[3:] - c[0, 3:]) / (2 * np.pi))
+            if np.allclose(c[0, :3], target[:3], atol=1e-9) and np.allclose(
+                c[0, 3:] + 2 * np.pi * k, target[3:], atol=1e-9
+            ):
+                c[:, 3:] += 2 * np.pi * k
+                c[0] = target
+                return c
         return q
 
     @property
@@ -373,21 +437,38 @@ class WrenchFeasibleManifold:
         for n, v in self.fixed.items():
             if not np.isclose(q[POSE_NAMES.index(n)], v, atol=1e-9):
                 raise PoseError(f"pose {q.tolist()} is not on the slice {n} = {v}")
+        y = self._solve(q)
+        if y is not None:
+            return y
         ext = self.extreme_tensions(q)
         if ext is None:
             raise InfeasiblePoseError(f"pose {q.tolist()}: the screw Jacobian is singular")
-        R, u, rho, f0, V = ext
+        _, _, rho, f0, V = ext
         lo, hi = f0 - np.diag(V), f0 + np.diag(V)
         if not (np.all(rho > self.rho_min) and np.all(rho < self.rho_max)):
             raise InfeasiblePoseError(
                 f"pose {q.tolist()}: cable lengths {np.round(rho, 4).tolist()} "
                 f"outside ({self.rho_min.min()}, {self.rho_max.max()})"
             )
-        if not (np.all(lo > self.f_min) and np.all(hi < self.f_max)):
-            raise InfeasiblePoseError(
-                f"pose {q.tolist()} is not wrench-feasible: extreme tensions "
-                f"{np.round(lo, 4).tolist()} .. {np.round(hi, 4).tolist()}"
-            )
+        raise InfeasiblePoseError(
+            f"pose {q.tolist()} is not wrench-feasible: extreme tensions "
+            f"{np.round(lo, 4).tolist()} .. {np.round(hi, 4).tolist()}"
+        )
+
+    def _solve(self, q: np.ndarray) -> np.ndarray | None:
+        """Eqs. (1)–(8) solved in closed form at the pose ``q`` (free vector), or ``None``."""
+        ext = self.extreme_tensions(q)
+        if ext is None:
+            return None
+        R, u, rho, f0, V = ext
+        lo, hi = f0 - np.diag(V), f0 + np.diag(V)
+        if not (
+            np.all(rho > self.rho_min)
+            and np.all(rho < self.rho_max)
+            and np.all(lo > self.f_min)
+            and np.all(hi < self.f_max)
+        ):
+            return None
         x = np.concatenate(
             [
                 q[:3],
@@ -411,15 +492,16 @@ class WrenchFeasibleManifold:
         or ``None`` where ``J`` is singular.  The tension range of cable ``i`` over the
         ellipsoid is ``f_0,i ± v_i,i``."""
         q = np.asarray(pose, float)
-        R, _ = rotation_derivatives(q[3:])
+        R = _rotation(q[3:])
         u = q[:3] + self.b @ R.T - self.a
-        rho = np.linalg.norm(u, axis=1)
+        rho = np.sqrt(np.einsum("ij,ij->i", u, u))
         J, _, _ = self._screw(R, u, rho)
         try:
-            f0 = np.linalg.solve(J, self.w0)
-            Binv = np.linalg.inv(J.T @ self.E @ J)
+            Jinv = np.linalg.inv(J)
         except np.linalg.LinAlgError:
             return None
+        f0 = Jinv @ self.w0
+        Binv = Jinv @ self._E_inv @ Jinv.T  # (Jᵀ E J)⁻¹
         d = np.diag(Binv)
         if not (np.all(np.isfinite(d)) and np.all(d > 0)):
             return None  # J numerically singular

@@ -33,7 +33,7 @@ import numpy.typing as npt
 from taut.errors import TautError
 from taut.planning.continuation import Atlas, ImplicitManifold
 
-__all__ = ["PathResult", "plan_path", "refine_path"]
+__all__ = ["PathResult", "continuous", "plan_path", "refine_path"]
 
 
 @dataclass(frozen=True)
@@ -64,14 +64,22 @@ def refine_path(atlas: Atlas, charts: list[int], goal: np.ndarray, spacing: floa
     centre), ending at ``goal`` reached through the last chart."""
     pts = [atlas.charts[charts[0]].centre]
     for a, b in zip(charts[:-1], charts[1:]):
-        ca, cb = atlas.charts[a], atlas.charts[b]
-        ub = ca.coordinates(cb.centre)
+        ub = atlas.coordinates(a, atlas.charts[b].centre)
         pts += _segment(atlas, a, np.zeros_like(ub), 0.5 * ub, spacing)
-        pts += _segment(atlas, b, cb.coordinates(pts[-1]), np.zeros_like(ub), spacing)
-    last = atlas.charts[charts[-1]]
-    pts += _segment(atlas, charts[-1], np.zeros(last.basis.shape[1]), last.coordinates(goal), spacing)
+        pts += _segment(atlas, b, atlas.coordinates(b, pts[-1]), np.zeros_like(ub), spacing)
+    k = atlas.manifold.dim
+    pts += _segment(atlas, charts[-1], np.zeros(k), atlas.coordinates(charts[-1], goal), spacing)
     pts[-1] = np.asarray(goal, float)
-    return np.array(pts)
+    return continuous(atlas, np.array(pts))
+
+
+def continuous(atlas: Atlas, pts: np.ndarray) -> np.ndarray:
+    """The images of the points ``pts`` ``(N, n)`` (a path on the manifold modulo its
+    symmetry) that make it continuous: each point is the image nearest its predecessor."""
+    out = np.array(pts, float)
+    for m in range(1, len(out)):
+        out[m] = atlas.near(out[m], out[m - 1])[0][0]
+    return out
 
 
 def plan_path(

@@ -160,9 +160,14 @@ def plot_plan(
     )
     if result.found:
         path = manifold.pose(result.path)
-        ax.plot(path[:, idx[0]], path[:, idx[1]], color="red", lw=2, label="path", gid="path")
-        ax.plot(*path[0, idx], "o", color="black", ms=6)
-        ax.plot(*path[-1, idx], "*", color="black", ms=10)
+        # drawn in the canonical angles of the map, broken where it crosses the seam of the
+        # φ window or θ = 0 (there the half-turn rewrites (φ, −θ) as (φ + π, θ))
+        drawn = manifold.canonical(path)[:, idx]
+        seam = np.flatnonzero(np.any(np.abs(np.diff(drawn, axis=0)) > np.pi / 2, axis=1)) + 1
+        drawn = np.insert(drawn, seam, np.nan, axis=0)
+        ax.plot(drawn[:, 0], drawn[:, 1], color="red", lw=2, label="path", gid="path")
+        ax.plot(*drawn[0], "o", color="black", ms=6)
+        ax.plot(*drawn[-1], "*", color="black", ms=10)
     ax.set_xlabel(axes[0])
     ax.set_ylabel(axes[1])
     ax.set_xlim(u[0], u[-1])
