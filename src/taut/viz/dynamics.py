@@ -1,4 +1,5 @@
-"""Tensions of a motion against time: :func:`plot_motion_tensions`.
+"""Tensions of a motion against time: :func:`plot_motion_tensions`; a controlled motion's
+tensions and tracking error: :func:`plot_control`.
 
 The figure of CASPR's inverse-dynamics workflow: one curve per cable over the trajectory's
 time, the tension bounds dashed, and the samples without an admissible distribution shaded
@@ -12,6 +13,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from taut.dynamics.control import ControlResult
 from taut.dynamics.forward import ForwardDynamicsResult
 from taut.dynamics.inverse import InverseDynamicsResult
 from taut.model.robot import Robot
@@ -19,8 +21,9 @@ from taut.viz.tensions import plot_tensions
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
 
-__all__ = ["plot_motion_tensions"]
+__all__ = ["plot_motion_tensions", "plot_control"]
 
 
 def plot_motion_tensions(
@@ -40,3 +43,39 @@ def plot_motion_tensions(
     ok = int(np.count_nonzero(result.feasible if isinstance(result, InverseDynamicsResult) else taut_all))
     ax.set_title(f"{robot.name}: {what}, {ok} of {len(result.tensions)} samples admissible", fontsize=10)
     return ax
+
+
+def plot_control(robot: Robot, result: ControlResult) -> Figure:
+    """A new figure of a controlled motion (:func:`taut.dynamics.control.simulate_control`):
+    the commanded tensions against time with their bounds, the updates where the distribution
+    failed (the last admissible tensions held) marked; below, the tracking error of each pose
+    coordinate (positions in mm, angles in mrad)."""
+    import matplotlib.pyplot as plt
+
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    plot_tensions(
+        result.time,
+        result.tensions,
+        result.tension_min,
+        result.tension_max,
+        result.admissible,
+        top,
+        mask_infeasible=False,
+    )
+    top.set_xlabel("")
+    held = f", {result.failures} held" if result.failures else ""
+    top.set_title(
+        f"{robot.name}: computed-torque control at {result.rate_hz:g} Hz, min. tension margin "
+        f"{result.min_tension_margin:.3g} N{held}",
+        fontsize=10,
+    )
+    d = robot.dimension
+    for j, name in enumerate(result.pose_names):
+        unit = "mm" if j < d else "mrad"
+        bottom.plot(result.time, 1e3 * result.error[:, j], label=f"{name} [{unit}]", lw=1.2)
+    bottom.axhline(0.0, color="0.6", lw=0.8)
+    bottom.set_xlabel("time [s]")
+    bottom.set_ylabel("tracking error q_ref − q")
+    bottom.legend(fontsize=8, ncol=min(6, len(result.pose_names)), loc="best")
+    fig.tight_layout()
+    return fig
