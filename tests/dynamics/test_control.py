@@ -133,6 +133,22 @@ def test_result_is_immutable_and_reports_per_coordinate(robot, motion):
     np.testing.assert_allclose(res.tracking_error_max, np.abs(res.reference - res.pose).max(axis=0), atol=1e-12)
 
 
+def test_a_disturbance_callable_and_wrench_steps_act_alike(robot, motion):
+    """:class:`WrenchSteps` is tabulated at once; any callable is called at each RK4 step's
+    start: the same steps give the same motion, and the recorded disturbance is the step."""
+    short = trajectory_from_waypoints(robot, WAYPOINTS[:2], duration=1.5)
+    a = simulate_control(robot, short, disturbance=STEP, substeps=2)
+    b = simulate_control(
+        robot, short, disturbance=lambda t: [5.0 * (t >= 1), -3.0 * (t >= 1), 0, 0, 0.2 * (t >= 1), 0], substeps=2
+    )
+    np.testing.assert_array_equal(a.pose, b.pose)
+    np.testing.assert_array_equal(a.disturbance, b.disturbance)
+    np.testing.assert_array_equal(
+        a.disturbance[a.time >= 1.0], np.broadcast_to(STEP(1.0), (int((a.time >= 1).sum()), 6))
+    )
+    assert not a.disturbance[a.time < 1.0].any()
+
+
 def test_wrench_steps_and_mass_error(robot):
     w = WrenchSteps(((1.0, 2.0, (1.0, 0, 0, 0, 0, 0)), (1.5, math.inf, (0, 2.0, 0, 0, 0, 0))))
     np.testing.assert_array_equal(w(0.5), np.zeros(6))

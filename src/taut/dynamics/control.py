@@ -114,11 +114,15 @@ class WrenchSteps:
         return cls(((float(start), float(end), tuple(float(x) for x in np.ravel(wrench))),))
 
     def __call__(self, t: float) -> np.ndarray:
+        return self.at(np.array([t]))[0]
+
+    def at(self, times: npt.ArrayLike) -> np.ndarray:
+        """The wrench at each of ``times``: ``(N, dof)``."""
+        t = np.asarray(times, dtype=float).reshape(-1, 1)
         size = len(self.steps[0][2]) if self.steps else 0
-        out = np.zeros(size)
+        out = np.zeros((t.shape[0], size))
         for start, end, w in self.steps:
-            if start <= t < end:
-                out += w
+            out += ((start <= t) & (t < end)) * np.asarray(w)
         return out
 
 
@@ -243,6 +247,12 @@ def _tabulate(f: Callable[[float], npt.ArrayLike] | None, time: np.ndarray, subs
     D = np.zeros((K + 1, substeps, dof))
     if f is None:
         return D
+    if isinstance(f, WrenchSteps):
+        if f.steps and len(f.steps[0][2]) != dof:
+            raise TautError(f"disturbance: expected {dof} components, got {len(f.steps[0][2])}")
+        h = np.append(np.diff(time), 0.0) / substeps
+        starts = time[:, None] + np.arange(substeps)[None, :] * h[:, None]
+        return f.at(starts.ravel()).reshape(K + 1, substeps, dof) if f.steps else D
     for k in range(K + 1):
         h = (time[k + 1] - time[k]) / substeps if k < K else 0.0
         for s in range(substeps):
