@@ -6,6 +6,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import taut
 from taut.dynamics import (
@@ -120,6 +122,26 @@ def test_infeasible_demand_holds_the_last_admissible_tensions(robot):
     lo, hi = robot.tension_bounds
     assert (res.tensions >= lo - 1e-9).all() and (res.tensions <= hi + 1e-9).all()
     assert res.slack_events == int(np.count_nonzero((res.tensions <= lo + 1e-6 * np.maximum(1, lo)).any(axis=1)))
+
+
+@settings(max_examples=12, deadline=None)
+@given(
+    force=st.lists(st.floats(-8.0, 8.0), min_size=3, max_size=3),
+    moment=st.lists(st.floats(-0.3, 0.3), min_size=3, max_size=3),
+    kp=st.floats(100.0, 900.0),
+)
+def test_constant_disturbance_is_met_by_kp_e(force, moment, kp):
+    """Holding a pose against a constant wrench ``w`` from ``t = 0`` (exact model), the error
+    settles where ``K_p e = −M⁻¹ Jᵀ w`` (the error dynamics at rest), with ``M`` and ``J`` of
+    :mod:`taut.dynamics.platform` at the final pose: the half-period prediction keeps the
+    loop's static gain.  ``K_d = 2.2 √K_p`` (overdamped); 3 s are 20 time constants."""
+    robot = taut.example("spatial-8cable")
+    hold = trajectory_from_waypoints(robot, [[0.0] * 6, [0.0] * 6], durations=[3.0])
+    w = np.array(force + moment)
+    res = simulate_control(robot, hold, kp=kp, kd=2.2 * math.sqrt(kp), disturbance=WrenchSteps.step(0.0, w))
+    q = res.pose[-1]
+    expected = -np.linalg.solve(mass_matrix(robot, q), generalized_forces(robot, q, w)) / kp
+    np.testing.assert_allclose(res.error[-1], expected, rtol=1e-6, atol=1e-10)
 
 
 def test_result_is_immutable_and_reports_per_coordinate(robot, motion):

@@ -250,11 +250,11 @@ def _tabulate(f: Callable[[float], npt.ArrayLike] | None, time: np.ndarray, subs
     if isinstance(f, WrenchSteps):
         if f.steps and len(f.steps[0][2]) != dof:
             raise TautError(f"disturbance: expected {dof} components, got {len(f.steps[0][2])}")
-        h = np.append(np.diff(time), 0.0) / substeps
-        starts = time[:, None] + np.arange(substeps)[None, :] * h[:, None]
+        step = np.append(np.diff(time), 0.0) / substeps
+        starts = time[:, None] + np.arange(substeps)[None, :] * step[:, None]
         return f.at(starts.ravel()).reshape(K + 1, substeps, dof) if f.steps else D
     for k in range(K + 1):
-        h = (time[k + 1] - time[k]) / substeps if k < K else 0.0
+        h = float(time[k + 1] - time[k]) / substeps if k < K else 0.0
         for s in range(substeps):
             t = float(time[k] + s * h)
             try:

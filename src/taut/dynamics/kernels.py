@@ -560,7 +560,7 @@ def control_updates(
     plant.  ``ref`` ``(3, K + 1, dof)``, ``mid`` ``(3, K, dof)``: reference pose, velocity, acceleration at
     the updates and at the middle of each period; ``gains (2, dof)`` = ``K_p``, ``K_d``;
     ``angles`` the first and last + 1 angle columns; ``disturbance (K + 1, substeps, dof)``;
-    ``state (2, dof)`` = ``(q, q̇)``, advanced in place; ``last (n,)`` the tensions held.
+    ``state`` rows 0 and 1 = ``(q, q̇)``, advanced in place; ``last (n,)`` the tensions held.
     Fills row ``k`` of ``Q, V, E, A (K + 1, dof)`` and ``T (K + 1, n)``.  Returns ``stop``
     when done, else the update to redo outside (the state is that of its start)."""
     K = time.shape[0] - 1
