@@ -144,6 +144,19 @@ def test_constant_disturbance_is_met_by_kp_e(force, moment, kp):
     np.testing.assert_allclose(res.error[-1], expected, rtol=1e-6, atol=1e-10)
 
 
+def test_angle_errors_take_the_short_way(robot):
+    """Starting a full turn (less 0.01 rad) away in c, the same rotation up to 0.01 rad, the
+    controller corrects 0.01 rad, not 2π: the error stays 0.01 at most and the rotation error
+    vanishes with it."""
+    hold = trajectory_from_waypoints(robot, [[0.0, 0, 0, 0, 0, 3.1], [0.0, 0, 0, 0, 0, 3.1]], durations=[1.0])
+    q0 = np.array([0.0, 0, 0, 0, 0, 3.1 - 2 * math.pi + 0.01])
+    res = simulate_control(robot, hold, q0=q0, qd0=np.zeros(6))
+    assert res.error[0, 5] == pytest.approx(-0.01, abs=1e-12)
+    assert np.abs(res.error[:, 5]).max() <= 0.01 + 1e-12
+    assert res.rotation_error[0] == pytest.approx(0.01, abs=1e-9) and res.rotation_error[-1] < 1e-5
+    assert res.feasible
+
+
 def test_result_is_immutable_and_reports_per_coordinate(robot, motion):
     res = simulate_control(robot, motion, rate_hz=200)
     assert res.time.shape == (801,) and res.tensions.shape == (801, 8) and res.pose_names == tuple(robot.pose_names)
