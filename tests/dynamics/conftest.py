@@ -1,5 +1,6 @@
 """Robots with full inertial data for the dynamics tests (the built-in examples give a mass
-but no inertia), built with ``model_copy(update=...)`` so that they are validated."""
+and a diagonal inertia), and one without inertia, built with ``model_copy(update=...)`` so
+that they are validated."""
 
 import numpy as np
 import pytest
@@ -19,6 +20,12 @@ def with_platform(robot, **fields):
 def spatial():
     """spatial-8cable with an inertia tensor and the centre of mass off the reference point."""
     return with_platform(taut.example("spatial-8cable"), inertia=SPATIAL_INERTIA, wrench_point=(0.02, -0.01, 0.03))
+
+
+@pytest.fixture(scope="session")
+def no_inertia():
+    """spatial-8cable with a mass but no inertia tensor: the rigid-body dynamics refuses it."""
+    return with_platform(taut.example("spatial-8cable"), inertia=None)
 
 
 @pytest.fixture(scope="session")
