@@ -145,6 +145,15 @@ CASES: list[tuple[str, list[str], tuple[str, ...]]] = [
             ("kp-size", "spatial-8cable", "0,0,0;0.1,0,0", "1", ["--kp", "1,2"], ("--kp",)),
             ("law", "spatial-8cable", "0,0,0;0.1,0,0", "1", ["--law", "septic"], ("septic",)),
             ("rate-0", "spatial-8cable", "0,0,0;0.1,0,0", "1", ["--rate", "0"], ("--rate",)),
+            # feed-forward with a model 5 % heavy: the platform climbs out of the frame
+            (
+                "diverges",
+                "spatial-8cable",
+                "0,0,0;0.3,0.1,0.2",
+                "2",
+                ["--controller", "none", "--mass-error", "0.05"],
+                ("diverged",),
+            ),
         )
     ),
 ]

@@ -153,6 +153,17 @@ CASES: list[tuple[str, list[str], Check]] = [
         _simulate,
     ),
     (
+        "simulate-infeasible",
+        # 0.8 m out and back in 0.3 s: more than 8 cables of 500 N can give
+        ["simulate", "spatial-8cable", "--waypoints", "0,0,0;0.6,0.3,0.4;0,0,0", "--duration", "0.3"],
+        lambda d, tmp: (
+            d["feasible"] is False
+            and d["distribution_failures"] > 0
+            and 0 < d["first_failure_time"] < 0.3
+            and d["min_tension_margin"] >= 0
+        ),
+    ),
+    (
         "convert",
         ["convert", "cogiro", "{tmp}/c_bodies.xml"],
         lambda d, tmp: d["format"] == "caspr" and (tmp / "c_bodies.xml").is_file() and (tmp / "c_cables.xml").is_file(),

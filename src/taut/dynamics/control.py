@@ -322,7 +322,10 @@ def _update(
         except TautError as exc:
             raise IntegrationError(f"RK4 failed at t = {t + s * h:g} s: {exc}") from None
     if not (np.isfinite(q).all() and np.isfinite(qd).all()) or np.abs(q).max() > 1e9:
-        raise IntegrationError(f"the controlled motion diverged at t = {float(time[k + 1]):g} s")
+        raise IntegrationError(
+            f"the controlled motion diverged at t = {float(time[k + 1]):g} s from pose "
+            f"{np.round(state[0], 6).tolist()} (an RK4 step of {h:g} s too large for the dynamics there?)"
+        )
     state[0], state[1] = q, qd
     return bool(ok)
 
