@@ -226,7 +226,8 @@ def register(command: Command) -> None:
         "--waypoints",
         required=True,
         metavar="P0;P1;...",
-        help="waypoints separated by ';', each a pose (x,y,z,a,b,c; angles in rad, 30deg or pi/8) or a position",
+        help="waypoints separated by ';', each a pose (x,y,z,a,b,c; angles in rad, 30deg or pi/8) or a position; "
+        "write --waypoints=-0.1,0,0;... for a leading minus",
     )
     c.add_argument("--duration", type=float, required=True, help="total duration [s], shared out by segment length")
     c.add_argument(
