@@ -144,6 +144,22 @@ def test_constant_disturbance_is_met_by_kp_e(force, moment, kp):
     np.testing.assert_allclose(res.error[-1], expected, rtol=1e-6, atol=1e-10)
 
 
+@pytest.mark.parametrize(
+    ("name", "waypoints"),
+    [("planar", [[0.0, 0, 0], [0.2, 0.1, 0.1]]), ("point_mass", [[0.0, 0, 0.2], [0.1, 0.1, 0.1]])],
+)
+def test_planar_and_point_mass_platforms(name, waypoints, request):
+    """The same loop on a planar rigid platform (an offset centre of mass) and a suspended
+    point mass: exact model, 2 kHz, the error is second order in the period (< 1e-6)."""
+    robot = request.getfixturevalue(name)
+    motion = trajectory_from_waypoints(robot, waypoints, duration=2.0)
+    res = simulate_control(robot, motion, rate_hz=2000)
+    assert res.feasible and res.tracking_error_max.max() < 1e-6
+    assert res.rotation_error.shape == (4001,)
+    if name == "point_mass":
+        assert not res.rotation_error.any()
+
+
 def test_angle_errors_take_the_short_way(robot):
     """Starting a full turn (less 0.01 rad) away in c, the same rotation up to 0.01 rad, the
     controller corrects 0.01 rad, not 2π: the error stays 0.01 at most and the rotation error
