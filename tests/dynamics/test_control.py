@@ -73,9 +73,9 @@ def test_mass_error_and_step_disturbance_stay_within_the_derived_bound(robot, mo
     bound = np.abs(d).max(axis=0) / ((1 + eps) * DEFAULT_KP) + hold
     err = res.tracking_error_max
     assert (err <= bound).all(), (err, bound)
-    # the bound is not loose: the step and the weight error drive x, z and the rotation about
-    # y close to it
-    assert (err[[0, 2, 4]] >= 0.5 * bound[[0, 2, 4]]).all(), (err, bound)
+    # the bound is not loose: the step and the weight error hold every coordinate's error near
+    # its steady value (measured: 0.88 of the bound for c, 0.97 and more elsewhere)
+    assert (err >= 0.8 * bound).all(), (err, bound)
     # every tension within its limits (the held tensions are admissible), computed here
     lo, hi = robot.tension_bounds
     assert res.feasible and res.failures == 0 and res.first_failure_time is None
