@@ -12,8 +12,9 @@
   held as controls, no controller) in the same run.  Target: >= 50x real time.
 
   How close taut comes, and why.  On the 2-core development machine shared with other jobs,
-  taut ran 52-73x real time and MuJoCo's ``mj_step`` 45-48x, so the whole controlled
-  simulation runs 1.1-1.5x as fast as MuJoCo stepping alone.  A control update costs about
+  taut ran 52-115x real time and MuJoCo's ``mj_step`` 45-90x (the load varied between runs;
+  within a run the ratio is what counts), so the whole controlled simulation runs 1.1-1.5x as
+  fast as MuJoCo stepping alone.  A control update costs about
   7 us in taut's compiled loop (:func:`taut.dynamics.kernels.control_updates`: the
   Newton-Euler wrench of the controller's model, a 6x6 Cholesky for the closed-form
   distribution, and four straight-cable acceleration evaluations of the plant, without
