@@ -19,6 +19,7 @@ from taut.viz import Report
 from taut.viz.atlas import atlas_section
 from taut.viz.check import check_section
 from taut.viz.dgp import dgp_section
+from taut.viz.dynamics import control_section
 from taut.viz.plan import plan_section
 from taut.viz.trajectory import trajectory_section
 
@@ -102,6 +103,7 @@ SECTIONS: list[Callable[[Report], object]] = [
     atlas_section,
     check_section,
     plan_section,
+    control_section,
 ]
 
 

@@ -123,6 +123,39 @@ CASES: list[tuple[str, list[str], tuple[str, ...]]] = [
     ("fk-plot-proc", ["fk", "suspended-3cable", "--plot", "/proc/f.png"], ("--plot",)),
     ("igp-cables", ["igp", "suspended-3cable", "--taut", "1,x", "--fix", "x=1"], ("--taut",)),
     ("demo-out-file", ["demo", "--out", "/dev/null"], ("--out",)),
+    *(
+        (f"simulate-{name}", ["simulate", robot, "--waypoints", w, "--duration", t, *more], words)
+        for name, robot, w, t, more, words in (
+            ("pose-size", "spatial-8cable", "0,0,0;0,0,0,0", "1", [], ("--waypoints", "waypoint 2")),
+            ("one-waypoint", "spatial-8cable", "0,0,0", "1", [], ("--waypoints", "two")),
+            ("duration-0", "spatial-8cable", "0,0,0;0.1,0,0", "0", [], ("--duration",)),
+            ("duration-negative", "spatial-8cable", "0,0,0;0.1,0,0", "-1", [], ("--duration",)),
+            ("disturbance-syntax", "spatial-8cable", "0,0,0;0.1,0,0", "1", ["--disturbance", "5,0,0"], ("T0:W",)),
+            ("disturbance-size", "spatial-8cable", "0,0,0;0.1,0,0", "1", ["--disturbance", "0:5,0"], ("6 components",)),
+            (
+                "disturbance-times",
+                "spatial-8cable",
+                "0,0,0;0.1,0,0",
+                "1",
+                ["--disturbance", "2:1:1,0,0,0,0,0"],
+                ("T0",),
+            ),
+            ("no-mass", "robocrane", "0,0,2;0.1,0,2", "1", [], ("mass",)),
+            ("mass-error", "spatial-8cable", "0,0,0;0.1,0,0", "1", ["--mass-error", "-1"], ("--mass-error",)),
+            ("kp-size", "spatial-8cable", "0,0,0;0.1,0,0", "1", ["--kp", "1,2"], ("--kp",)),
+            ("law", "spatial-8cable", "0,0,0;0.1,0,0", "1", ["--law", "septic"], ("septic",)),
+            ("rate-0", "spatial-8cable", "0,0,0;0.1,0,0", "1", ["--rate", "0"], ("--rate",)),
+            # feed-forward with a model 5 % heavy: the platform climbs out of the frame
+            (
+                "diverges",
+                "spatial-8cable",
+                "0,0,0;0.3,0.1,0.2",
+                "2",
+                ["--controller", "none", "--mass-error", "0.05"],
+                ("diverged",),
+            ),
+        )
+    ),
 ]
 
 CASES += [
@@ -165,6 +198,9 @@ QUICK = {
     "dt-1e-7",
     "plot-directory",
     "plan-fix-commas",
+    "simulate-pose-size",
+    "simulate-disturbance-syntax",
+    "simulate-no-mass",
 }
 
 

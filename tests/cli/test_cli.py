@@ -178,3 +178,4 @@ def test_demo_writes_report(tmp_path, taut_cli):
     assert len(pngs) >= 6 and all(f'src="{p}"' in html for p in pngs)
     assert "wrench-feasible" in html
     assert {"dgp-equilibria.png", "dgp-tracking.png"} <= set(pngs)  # taut fk and tracking
+    assert "spatial-8cable-control.png" in pngs  # computed-torque control

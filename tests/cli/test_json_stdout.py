@@ -50,6 +50,20 @@ def _trajectory(d: dict, tmp: Path) -> None:
     assert (tmp / "t.png").stat().st_size > 1000
 
 
+def _simulate(d: dict, tmp: Path) -> None:
+    """A 1 s move of spatial-8cable with a 10 % mass error and a 5 N step along x at 0.5 s:
+    the error of x stays below the bound of the error dynamics, 5 N / (5 kg · 1.1 · 400/s²)
+    plus the weight error's share (z: 0.1 · 9.81 / (1.1 · 400) m), see
+    tests/dynamics/test_control.py."""
+    assert d["robot"] == "spatial 8-cable robot" and d["feasible"] is True and d["distribution_failures"] == 0
+    assert len(d["time"]) == len(d["pose"]) == len(d["tensions"]) == d["samples"] == 101
+    assert np.array(d["tensions"]).shape == (101, 8) and d["min_tension_margin"] > 0
+    assert 0 < d["tracking_error_max"][2] <= 1.05 * 0.1 * 9.81 / (1.1 * 400)
+    assert isinstance(d["slack_events"], int) and d["first_failure_time"] is None
+    assert (tmp / "s.csv").read_text().startswith("time,x,y,z,a,b,c,ref_x")
+    assert (tmp / "s.png").stat().st_size > 1000
+
+
 def _ik(d: dict, tmp: Path) -> None:
     u = np.array(d["directions"])
     np.testing.assert_allclose(np.linalg.norm(u, axis=1), 1.0)
@@ -141,6 +155,23 @@ CASES: list[tuple[str, list[str], Check]] = [
         for p in ("atlasrrt", "astar")
     ),
     (
+        "simulate",
+        ["simulate", "spatial-8cable", "--waypoints", "0,0,0;0.2,0.1,0.1", "--duration", "1", "--mass-error", "0.1"]
+        + ["--disturbance", "0.5:5,0,0,0,0,0", "--out", "{tmp}/s.csv", "--plot", "{tmp}/s.png"],
+        _simulate,
+    ),
+    (
+        "simulate-infeasible",
+        # 0.8 m out and back in 0.3 s: more than 8 cables of 500 N can give
+        ["simulate", "spatial-8cable", "--waypoints", "0,0,0;0.6,0.3,0.4;0,0,0", "--duration", "0.3"],
+        lambda d, tmp: (
+            d["feasible"] is False
+            and d["distribution_failures"] > 0
+            and 0 < d["first_failure_time"] < 0.3
+            and d["min_tension_margin"] >= 0
+        ),
+    ),
+    (
         "convert",
         ["convert", "cogiro", "{tmp}/c_bodies.xml"],
         lambda d, tmp: d["format"] == "caspr" and (tmp / "c_bodies.xml").is_file() and (tmp / "c_cables.xml").is_file(),
@@ -179,6 +210,7 @@ QUICK = {
     "check-lp",
     "plan",
     "plan-atlasrrt",
+    "simulate",
     "convert",
 }
 

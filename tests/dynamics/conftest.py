@@ -1,6 +1,6 @@
-"""Robots with full inertial data for the dynamics tests (an inertia with products of inertia
-and an offset centre of mass, which the built-in examples' box inertias lack), built with
-``model_copy(update=...)`` so that they are validated."""
+"""Robots with full inertial data for the dynamics tests (the built-in examples give a mass
+and a diagonal inertia), and one without inertia, built with ``model_copy(update=...)`` so
+that they are validated."""
 
 import numpy as np
 import pytest
@@ -24,7 +24,7 @@ def spatial():
 
 @pytest.fixture(scope="session")
 def no_inertia():
-    """spatial-8cable with its mass but without an inertia tensor."""
+    """spatial-8cable with a mass but no inertia tensor: the rigid-body dynamics refuses it."""
     return with_platform(taut.example("spatial-8cable"), inertia=None)
 
 

@@ -1,6 +1,7 @@
 """Dynamics of the platform: equations of motion in the pose coordinates, inverse dynamics
 along a sampled motion (wrenches and tension distributions) and forward dynamics (solve_ivp
-or fixed-step RK4, given tensions or elastic cables with commanded lengths)."""
+or fixed-step RK4, given tensions or elastic cables with commanded lengths), and closed-loop
+computed-torque control with the tension distribution in the loop."""
 
 from __future__ import annotations
 
@@ -9,6 +10,14 @@ from typing import TYPE_CHECKING
 from taut.lazy import lazy_exports
 
 if TYPE_CHECKING:
+    from taut.dynamics.control import (
+        DEFAULT_KD,
+        DEFAULT_KP,
+        ControlResult,
+        WrenchSteps,
+        simulate_control,
+        with_mass_error,
+    )
     from taut.dynamics.forward import (
         INTEGRATORS,
         ForwardDynamicsResult,
@@ -32,6 +41,12 @@ if TYPE_CHECKING:
 
 #: Every name is imported on first use (PEP 562): the forward dynamics loads Numba and SciPy.
 _LAZY = {
+    "DEFAULT_KD": "taut.dynamics.control",
+    "DEFAULT_KP": "taut.dynamics.control",
+    "ControlResult": "taut.dynamics.control",
+    "WrenchSteps": "taut.dynamics.control",
+    "simulate_control": "taut.dynamics.control",
+    "with_mass_error": "taut.dynamics.control",
     "INTEGRATORS": "taut.dynamics.forward",
     "ForwardDynamicsResult": "taut.dynamics.forward",
     "IntegrationError": "taut.dynamics.forward",
@@ -54,6 +69,12 @@ _LAZY = {
 }
 
 __all__ = [
+    "DEFAULT_KD",
+    "DEFAULT_KP",
+    "ControlResult",
+    "WrenchSteps",
+    "simulate_control",
+    "with_mass_error",
     "INTEGRATORS",
     "ForwardDynamicsResult",
     "IntegrationError",

@@ -522,3 +522,108 @@ def inverse_samples(
             status[k] = 0
         else:
             status[k] = 1
+
+
+@njit(cache=True, nogil=True)
+def control_updates(
+    ip_plant: np.ndarray,
+    fp_plant: np.ndarray,
+    ip_model: np.ndarray,
+    fp_model: np.ndarray,
+    cables: np.ndarray,
+    start: int,
+    stop: int,
+    time: np.ndarray,
+    ref: np.ndarray,
+    mid: np.ndarray,
+    gains: np.ndarray,
+    angles: np.ndarray,
+    predict: bool,
+    disturbance: np.ndarray,
+    tmin: np.ndarray,
+    tmax: np.ndarray,
+    rtol: float,
+    state: np.ndarray,
+    last: np.ndarray,
+    Q: np.ndarray,
+    V: np.ndarray,
+    E: np.ndarray,
+    A: np.ndarray,
+    T: np.ndarray,
+) -> int:
+    """Control updates ``start, start + 1, …, stop − 1`` of :func:`taut.dynamics.control.simulate_control`
+    while the closed-form distribution (:func:`closed_form_one`) succeeds: the law
+    ``q̈_cmd = q̈_r + K_d ė + K_p e`` (angle errors wrapped into ``[−π, π)``; with ``predict``
+    evaluated at the state predicted half a period ahead with the acceleration measured over the
+    last period), the controller model's wrench
+    (:func:`wrench_one`), its tensions held over ``disturbance.shape[1]`` RK4 steps of the
+    plant.  ``ref`` ``(3, K + 1, dof)``, ``mid`` ``(3, K, dof)``: reference pose, velocity, acceleration at
+    the updates and at the middle of each period; ``gains (2, dof)`` = ``K_p``, ``K_d``;
+    ``angles`` the first and last + 1 angle columns; ``disturbance (K + 1, substeps, dof)``;
+    ``state`` rows 0 and 1 = ``(q, q̇)``, advanced in place; ``last (n,)`` the tensions held.
+    Fills row ``k`` of ``Q, V, E, A (K + 1, dof)`` and ``T (K + 1, n)``.  Returns ``stop``
+    when done, else the update to redo outside (the state is that of its start)."""
+    K = time.shape[0] - 1
+    dof, n = state.shape[1], cables.shape[0]
+    vec, mat = np.empty((VECTORS, 3)), np.empty((MATRICES, 3, 3))
+    G = np.empty((dof, dof))
+    W = np.empty((dof, n))
+    wrench, tau = np.empty(dof), np.empty(n)
+    qc, qdc, cmdc, zero = np.empty(dof), np.empty(dof), np.empty(dof), np.zeros(dof)
+    q2, qd2, u2, w2 = np.empty((1, dof)), np.empty((1, dof)), np.empty((1, n)), np.empty((1, dof))
+    qn, qdn, status = np.empty((1, dof)), np.empty((1, dof)), np.zeros(1, np.int64)
+    two_pi = 2.0 * np.pi
+    for k in range(start, stop):
+        q, qd = state[0], state[1]
+        for j in range(dof):
+            e = ref[0, k, j] - q[j]
+            if angles[0] <= j < angles[1]:
+                e = (e + np.pi) % two_pi - np.pi
+            E[k, j] = e
+            A[k, j] = ref[2, k, j] + gains[1, j] * (ref[1, k, j] - qd[j]) + gains[0, j] * e
+            qc[j], qdc[j], cmdc[j] = q[j], qd[j], A[k, j]
+        if predict and k < K:
+            h2 = 0.5 * (time[k + 1] - time[k])
+            for j in range(dof):
+                # the acceleration of the last period, measured (the commanded one at the start)
+                a = A[k, j] if k == 0 else (qd[j] - V[k - 1, j]) / (time[k] - time[k - 1])
+                qc[j] = q[j] + h2 * qd[j] + 0.5 * h2 * h2 * a
+                qdc[j] = qd[j] + h2 * a
+                e = mid[0, k, j] - qc[j]
+                if angles[0] <= j < angles[1]:
+                    e = (e + np.pi) % two_pi - np.pi
+                cmdc[j] = mid[2, k, j] + gains[1, j] * (mid[1, k, j] - qdc[j]) + gains[0, j] * e
+        if wrench_one(ip_model, fp_model, cables, qc, qdc, cmdc, zero, wrench, W, vec, mat) != OK:
+            return k
+        if not closed_form_one(W, wrench, tmin, tmax, rtol, tau, G):
+            return k
+        for j in range(dof):
+            Q[k, j], V[k, j] = q[j], qd[j]
+        for i in range(n):
+            T[k, i] = tau[i]
+        if k == K:
+            for i in range(n):
+                last[i] = tau[i]
+            return stop
+        substeps = disturbance.shape[1]
+        h = (time[k + 1] - time[k]) / substeps
+        for j in range(dof):
+            q2[0, j], qd2[0, j] = q[j], qd[j]
+        for i in range(n):
+            u2[0, i] = tau[i]
+        for s in range(substeps):
+            for j in range(dof):
+                w2[0, j] = disturbance[k, s, j]
+            rk4_steps(ip_plant, fp_plant, cables, False, q2, qd2, u2, w2, h, qn, qdn, status)
+            if status[0] != OK:
+                return k
+            for j in range(dof):
+                q2[0, j], qd2[0, j] = qn[0, j], qdn[0, j]
+        for j in range(dof):
+            if not (np.isfinite(q2[0, j]) and np.isfinite(qd2[0, j]) and abs(q2[0, j]) <= 1e9):
+                return k
+        for j in range(dof):
+            state[0, j], state[1, j] = q2[0, j], qd2[0, j]
+        for i in range(n):
+            last[i] = tau[i]
+    return stop
