@@ -28,8 +28,13 @@ and hence ``Ṁ − 2 C`` are skew-symmetric (Siciliano et al. 2009, §7.2.1, wh
 matrix is called ``B``).  ``M`` is symmetric positive definite wherever ``E`` is regular (away from the gimbal lock of the
 orientation convention).
 
-Jointed platforms are refused (:class:`~taut.errors.UnsupportedRobotError`): their bodies have
-no masses in the robot file.
+A platform carrying jointed bodies (``platform.bodies``) has the pose ``q = (p, φ, q_J)`` with
+the joint coordinates: :func:`mass_matrix`, :func:`bias_forces`, :func:`gravity_forces`,
+:func:`velocity_jacobian` (``T = diag(1, E, 1)``) and :func:`generalized_forces` (of the rows
+of :func:`taut.kinematics.jointed.jointed_structure_matrix`: a wrench about ``p``, then joint
+forces) take it to :mod:`taut.dynamics.jointed` when every body has a mass and an inertia;
+:func:`coriolis_matrix` and :func:`platform_dynamics` (hence forward and inverse dynamics)
+refuse it (:class:`~taut.errors.UnsupportedRobotError`).
 
 References
 ----------
@@ -47,6 +52,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut.dynamics.jointed import jointed_bias_forces, jointed_gravity_forces, jointed_mass_matrix, twist_jacobian
 from taut.errors import UnsupportedRobotError
 from taut.geometry.rates import rate_matrix, rate_matrix_derivative
 from taut.geometry.rotation import planar_rotation, rotation_matrix
@@ -104,8 +110,8 @@ def platform_dynamics(robot: Robot) -> PlatformDynamics:
     if robot.n_joints:
         names = ", ".join(b.name for b in plat.bodies)
         raise UnsupportedRobotError(
-            f"{robot.name}: the dynamics of jointed platforms (bodies {names}) is not supported: "
-            "the robot file gives no masses for the bodies"
+            f"{robot.name}: forward and inverse dynamics and the Coriolis matrix of jointed platforms "
+            f"(bodies {names}) are not supported; mass_matrix and bias_forces are"
         )
     if plat.mass is None:
         raise UnsupportedRobotError(f"{robot.name}: the dynamics needs the platform's mass (platform.mass)")
@@ -214,10 +220,11 @@ def twist_inertia(pd: PlatformDynamics, R: np.ndarray, r: np.ndarray) -> np.ndar
 def velocity_jacobian(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
     """``J (N, dof, dof)`` with the twist ``(ṗ, ω) = J q̇``: ``diag(1, E(φ))`` for a spatial
     platform (:func:`taut.geometry.rates.rate_matrix`), the identity otherwise.  The
-    generalized force of a wrench ``w`` (taut's convention: moments about ``p``) is ``Jᵀ w``."""
-    pd = platform_dynamics(robot)
+    generalized force of a wrench ``w`` (taut's convention: moments about ``p``) is ``Jᵀ w``.
+    A jointed platform's ``J = diag(1, E(φ), 1)`` also maps the joint rates (``(P, P)``,
+    ``P = pose_size``)."""
     arr, single = _poses(robot, q)
-    J = _jacobian(pd, arr)
+    J = twist_jacobian(robot, arr) if robot.n_joints else _jacobian(platform_dynamics(robot), arr)
     return J[0] if single else J
 
 
@@ -275,8 +282,11 @@ def mass_matrix(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
        and Control", Springer, 2009, §7.1–7.2. (docs/references.bib: siciliano2009)
     """
-    pd = platform_dynamics(robot)
     arr, single = _poses(robot, q)
+    if robot.n_joints:
+        M = jointed_mass_matrix(robot, arr)
+        return M[0] if single else M
+    pd = platform_dynamics(robot)
     R, r = frames(pd, arr)
     J = _jacobian(pd, arr)
     M = np.swapaxes(J, 1, 2) @ twist_inertia(pd, R, r) @ J
@@ -306,9 +316,13 @@ def coriolis_matrix(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.nda
 def gravity_forces(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
     """``g(q) = −Jᵀ w₀`` ``(N, dof)``: the generalized forces of the robot's weight (and of a
     constant ``platform.wrench``), so that a platform at rest is in equilibrium when
-    ``g = Jᵀ W τ`` — the statics of :func:`taut.statics.wrench.external_wrench`."""
-    pd = platform_dynamics(robot)
+    ``g = Jᵀ W τ`` — the statics of :func:`taut.statics.wrench.external_wrench` (jointed
+    platforms: also the bodies' weights, and the joint rows of :func:`taut.kinematics.jointed.joint_forces`)."""
     arr, single = _poses(robot, q)
+    if robot.n_joints:
+        g = jointed_gravity_forces(robot, arr)
+        return g[0] if single else g
+    pd = platform_dynamics(robot)
     R, r = frames(pd, arr)
     g = -np.einsum("nji,nj->ni", _jacobian(pd, arr), own_load(pd, R, r))
     return g[0] if single else g
@@ -322,9 +336,12 @@ def bias_forces(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.ndarray
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
        and Control", Springer, 2009, §7.2. (docs/references.bib: siciliano2009)
     """
-    pd = platform_dynamics(robot)
     arr, single = _poses(robot, q)
     qdot = as_rates(robot, qd, arr.shape[0])
+    if robot.n_joints:
+        h = jointed_bias_forces(robot, arr, qdot)
+        return h[0] if single else h
+    pd = platform_dynamics(robot)
     R, r = frames(pd, arr)
     J = _jacobian(pd, arr)
     nu = np.einsum("nij,nj->ni", J, qdot)
@@ -337,9 +354,12 @@ def bias_forces(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.ndarray
 
 def generalized_forces(robot: Robot, q: npt.ArrayLike, wrench: npt.ArrayLike) -> np.ndarray:
     """``Jᵀ w`` ``(N, dof)``: the generalized forces of wrenches ``w`` in taut's convention
-    (forces, then moments about ``p`` in the fixed frame, like ``W τ``)."""
-    pd = platform_dynamics(robot)
+    (forces, then moments about ``p`` in the fixed frame, like ``W τ``).  On a jointed platform
+    ``w`` also holds the joint forces (along, or torques about, the joint axes), as the rows of
+    :func:`taut.kinematics.jointed.jointed_structure_matrix`: the cables' generalized forces
+    are ``Jᵀ A[:, :n] τ``."""
     arr, single = _poses(robot, q)
     w = as_rates(robot, wrench, arr.shape[0], "wrenches")
-    Q = np.einsum("nji,nj->ni", _jacobian(pd, arr), w)
+    J = twist_jacobian(robot, arr) if robot.n_joints else _jacobian(platform_dynamics(robot), arr)
+    Q = np.einsum("nji,nj->ni", J, w)
     return Q[0] if single else Q
