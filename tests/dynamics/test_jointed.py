@@ -293,11 +293,28 @@ def test_bodies_without_mass_or_inertia_are_refused_by_name():
             bias_forces(bare, q, np.zeros(q.size))
 
 
-def test_what_jointed_platforms_do_not_have_is_refused():
-    """The Coriolis matrix and forward dynamics of jointed platforms are refused, naming them."""
+@pytest.mark.parametrize("name", ["adjustable-8cable", "branching tree", "planar slider and arm"])
+def test_coriolis_matrix_factorizes_the_bias_with_a_skew_symmetric_remainder(name):
+    """``C q̇ + g = h`` (``h`` checked against MuJoCo above), ``C`` is linear in ``q̇``, and
+    ``Ṁ − 2 C`` is skew-symmetric with ``Ṁ`` by central differences of ``M`` along ``q̇``
+    (measured: 3e-16 relative for ``C q̇ + g − h``, 7e-10 for the symmetric part)."""
+    robot = ROBOTS[name]()
+    rng = np.random.default_rng(45)
+    step = 1e-5
+    for q in random_poses(robot, 5, rng, tilt=0.6):
+        qd, other = rng.normal(0, 1, (2, q.size))
+        C = coriolis_matrix(robot, q, qd)
+        h = bias_forces(robot, q, qd)
+        assert np.abs(C @ qd + gravity_forces(robot, q) - h).max() < 1e-12 * np.abs(h).max()
+        both = coriolis_matrix(robot, q, qd + 2 * other)
+        assert np.abs(both - C - 2 * coriolis_matrix(robot, q, other)).max() < 1e-12 * np.abs(both).max()
+        Mdot = (mass_matrix(robot, q + step * qd) - mass_matrix(robot, q - step * qd)) / (2 * step)
+        N = Mdot - 2 * C
+        assert np.abs(N + N.T).max() < 1e-8 * np.abs(N).max()
+
+
+def test_forward_dynamics_of_jointed_platforms_is_refused():
     robot = adjustable()
     q = random_poses(robot, 1, np.random.default_rng(44))[0]
-    with pytest.raises(UnsupportedRobotError, match="jointed"):
-        coriolis_matrix(robot, q, np.zeros(q.size))
     with pytest.raises(UnsupportedRobotError, match="jointed"):
         forward_dynamics(robot, q, np.zeros(q.size), 0.01, tensions=np.full(robot.n_cables, 50.0))

@@ -32,7 +32,11 @@ platform's constant moment.  In the pose coordinates, with ``Ẋ = T q̈ + Ṫ q
 
     ``M(q) q̈ + h(q, q̇) = Tᵀ Q_X``,  ``M = Tᵀ M_X T``,  ``h = Tᵀ (h_X + M_X Ṫ q̇)``,
 
-where ``Q_X`` are generalized forces in twist coordinates — the rows of the jointed structure
+and ``h = C q̇ + g`` with ``C = Tᵀ (M_X Ṫ + C_X T)``,
+``C_X = Σ_b J_bᵀ (m_b J̇_v, I_b^w J̇_ω + [ω_b]× I_b^w J_ω)`` (``J_b = (J_v, J_ω)``), for which
+``Ṁ − 2 C`` is skew-symmetric (Siciliano et al. 2009, §7.2.1); ``J̇_b`` differentiates the
+columns above (``ė_j = ω_P × e_j``, and the velocities of ``c_b`` and ``o_j``).  Here
+``Q_X`` are generalized forces in twist coordinates — the rows of the jointed structure
 matrix ``A`` times ``(τ, ζ)`` (:func:`taut.kinematics.jointed.jointed_structure_matrix`: its
 platform rows are ``W τ``, a wrench about ``p``, its joint rows forces along and torques
 about the joint axes), plus an external wrench on the platform.  At rest ``h = g`` and
@@ -66,6 +70,7 @@ __all__ = [
     "body_jacobians",
     "body_motion",
     "jointed_bias_forces",
+    "jointed_coriolis_matrix",
     "jointed_gravity_forces",
     "jointed_mass_matrix",
     "twist_jacobian",
@@ -157,6 +162,7 @@ class BodyMotion:
     rotations: np.ndarray  #: ``(N, B, 3, 3)``
     omegas: np.ndarray  #: ``(N, B, 3)`` angular velocities (zero without a velocity)
     accelerations: np.ndarray  #: ``(N, B, 6)`` ``J̇_b X``: ``(a_b, α_b)`` (zero without a velocity)
+    rates: np.ndarray  #: ``(N, B, 6, P)`` ``J̇_b`` (zero without a velocity)
 
 
 def _frames(robot: Robot, arr: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -207,10 +213,11 @@ def body_motion(robot: Robot, arr: np.ndarray, X: np.ndarray | None = None) -> B
                 J[:, k, 3:, col] = axes[:, j - 1]
             else:
                 J[:, k, :3, col] = axes[:, j - 1]
-    omegas, acc = np.zeros((N, B, 3)), np.zeros((N, B, 6))
+    omegas, acc, rates = np.zeros((N, B, 3)), np.zeros((N, B, 6)), np.zeros_like(J)
     if X is not None:
         omegas[:, 0] = X[:, d:m] @ rot_axes
-        alphas, origin_acc = np.zeros((N, B, 3)), np.zeros((N, B, 3))
+        alphas, origin_acc, origin_vel = np.zeros((N, B, 3)), np.zeros((N, B, 3)), np.zeros((N, B, 3))
+        origin_vel[:, 0, :d] = X[:, :d]
         for k in range(1, B):
             P, e, qd = parents[k - 1], axes[:, k - 1], X[:, m + k - 1 : m + k]
             arm = pos[:, k] - pos[:, P]
@@ -225,10 +232,25 @@ def body_motion(robot: Robot, arr: np.ndarray, X: np.ndarray | None = None) -> B
                 arm_rate = arm_rate + e * qd
                 origin_acc[:, k] = origin_acc[:, k] + e_rate * qd
             origin_acc[:, k] = origin_acc[:, k] + np.cross(omegas[:, P], arm_rate)
+            origin_vel[:, k] = origin_vel[:, P] + arm_rate
         rho = coms - pos
         acc[..., :3] = origin_acc + np.cross(alphas, rho) + np.cross(omegas, np.cross(omegas, rho))
         acc[..., 3:] = alphas
-    return BodyMotion(jacobians=J, rotations=R, omegas=omegas, accelerations=acc)
+        com_vel = origin_vel + np.cross(omegas, rho)
+        for c, a in enumerate(rot_axes):
+            rates[:, :, :3, d + c] = np.cross(a, com_vel - origin_vel[:, :1])
+        for k in range(1, B):
+            for j in chains[k]:
+                col, e = m + j - 1, axes[:, j - 1]
+                e_rate = np.cross(omegas[:, parents[j - 1]], e)
+                if revolute[j - 1]:
+                    rates[:, k, :3, col] = np.cross(e_rate, coms[:, k] - pos[:, j]) + np.cross(
+                        e, com_vel[:, k] - origin_vel[:, j]
+                    )
+                    rates[:, k, 3:, col] = e_rate
+                else:
+                    rates[:, k, :3, col] = e_rate
+    return BodyMotion(jacobians=J, rotations=R, omegas=omegas, accelerations=acc, rates=rates)
 
 
 def twist_jacobian(robot: Robot, arr: np.ndarray) -> np.ndarray:
@@ -303,3 +325,22 @@ def jointed_bias_forces(robot: Robot, arr: np.ndarray, qd: np.ndarray) -> np.nda
     hX += np.einsum("npq,nq->np", M, np.einsum("npq,nq->np", twist_jacobian_rate(robot, arr, qd), qd))
     hX -= _load(robot, motion)
     return np.einsum("npq,np->nq", T, hX)
+
+
+def jointed_coriolis_matrix(robot: Robot, arr: np.ndarray, qd: np.ndarray) -> np.ndarray:
+    """``C = Tᵀ (M_X Ṫ + C_X T)`` ``(N, P, P)`` at validated poses ``arr`` and rates ``qd``,
+    with ``C_X = Σ_b J_bᵀ (m_b J̇_v, I_b^w J̇_ω + [ω_b]× I_b^w J_ω)`` (``J_b = (J_v, J_ω)``),
+    so that ``C q̇ = h − g`` and ``Ṁ − 2 C`` is skew-symmetric: ``Ṁ_X − 2 C_X`` is, its
+    rotational part ``−([ω]× I + I [ω]×)`` being skew."""
+    inertia = body_inertia(robot)
+    T = twist_jacobian(robot, arr)
+    motion = body_motion(robot, arr, np.einsum("npq,nq->np", T, qd))
+    M, Iw = _twist_inertias(robot, motion)
+    J, Jd, w = motion.jacobians, motion.rates, motion.omegas
+    spin = np.zeros(w.shape + (3,))
+    spin[..., 0, 1], spin[..., 0, 2], spin[..., 1, 2] = -w[..., 2], w[..., 1], -w[..., 0]
+    spin -= np.swapaxes(spin, -1, -2)
+    CX = np.einsum("b,nbip,nbiq->npq", inertia.masses, J[:, :, :3], Jd[:, :, :3])
+    CX += np.einsum("nbip,nbij,nbjq->npq", J[:, :, 3:], Iw, Jd[:, :, 3:])
+    CX += np.einsum("nbip,nbij,nbjq->npq", J[:, :, 3:], spin @ Iw, J[:, :, 3:])
+    return np.swapaxes(T, 1, 2) @ (M @ twist_jacobian_rate(robot, arr, qd) + CX @ T)

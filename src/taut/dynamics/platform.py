@@ -32,9 +32,9 @@ A platform carrying jointed bodies (``platform.bodies``) has the pose ``q = (p, 
 the joint coordinates: :func:`mass_matrix`, :func:`bias_forces`, :func:`gravity_forces`,
 :func:`velocity_jacobian` (``T = diag(1, E, 1)``) and :func:`generalized_forces` (of the rows
 of :func:`taut.kinematics.jointed.jointed_structure_matrix`: a wrench about ``p``, then joint
-forces) take it to :mod:`taut.dynamics.jointed` when every body has a mass and an inertia;
-:func:`coriolis_matrix` and :func:`platform_dynamics` (hence forward and inverse dynamics)
-refuse it (:class:`~taut.errors.UnsupportedRobotError`).
+forces) and :func:`coriolis_matrix` take it to :mod:`taut.dynamics.jointed` when every body
+has a mass and an inertia; :func:`platform_dynamics` (hence forward and inverse dynamics)
+refuses it (:class:`~taut.errors.UnsupportedRobotError`).
 
 References
 ----------
@@ -52,7 +52,13 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from taut.dynamics.jointed import jointed_bias_forces, jointed_gravity_forces, jointed_mass_matrix, twist_jacobian
+from taut.dynamics.jointed import (
+    jointed_bias_forces,
+    jointed_coriolis_matrix,
+    jointed_gravity_forces,
+    jointed_mass_matrix,
+    twist_jacobian,
+)
 from taut.errors import UnsupportedRobotError
 from taut.geometry.rates import rate_matrix, rate_matrix_derivative
 from taut.geometry.rotation import planar_rotation, rotation_matrix
@@ -110,8 +116,8 @@ def platform_dynamics(robot: Robot) -> PlatformDynamics:
     if robot.n_joints:
         names = ", ".join(b.name for b in plat.bodies)
         raise UnsupportedRobotError(
-            f"{robot.name}: forward and inverse dynamics and the Coriolis matrix of jointed platforms "
-            f"(bodies {names}) are not supported; mass_matrix and bias_forces are"
+            f"{robot.name}: forward and inverse dynamics of jointed platforms (bodies {names}) are not "
+            "supported; their equations of motion are (mass_matrix, coriolis_matrix, bias_forces)"
         )
     if plat.mass is None:
         raise UnsupportedRobotError(f"{robot.name}: the dynamics needs the platform's mass (platform.mass)")
@@ -301,9 +307,12 @@ def coriolis_matrix(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.nda
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
        and Control", Springer, 2009, §7.2.1. (docs/references.bib: siciliano2009)
     """
-    pd = platform_dynamics(robot)
     arr, single = _poses(robot, q)
     qdot = as_rates(robot, qd, arr.shape[0])
+    if robot.n_joints:
+        C = jointed_coriolis_matrix(robot, arr, qdot)
+        return C[0] if single else C
+    pd = platform_dynamics(robot)
     R, r = frames(pd, arr)
     J = _jacobian(pd, arr)
     nu = np.einsum("nij,nj->ni", J, qdot)
