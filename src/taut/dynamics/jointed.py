@@ -39,8 +39,9 @@ columns above (``ė_j = ω_P × e_j``, and the velocities of ``c_b`` and ``o_j``
 ``Q_X`` are generalized forces in twist coordinates — the rows of the jointed structure
 matrix ``A`` times ``(τ, ζ)`` (:func:`taut.kinematics.jointed.jointed_structure_matrix`: its
 platform rows are ``W τ``, a wrench about ``p``, its joint rows forces along and torques
-about the joint axes), plus an external wrench on the platform.  At rest ``h = g`` and
-``g = 0 + Tᵀ (A (τ, ζ))`` is the jointed statics of :func:`taut.kinematics.jointed.joint_forces`.
+about the joint axes), plus an external wrench on the platform.  At rest (``q̇ = q̈ = 0``,
+``h = g``) and with ``T`` regular the equations are the jointed statics
+``A (τ, ζ) + Q_ext = 0`` of :func:`taut.kinematics.jointed.joint_forces`, ``g = −Tᵀ Q_ext``.
 
 References
 ----------
