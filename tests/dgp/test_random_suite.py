@@ -109,3 +109,30 @@ def test_random_robot_geometry(seed, n, coplanar):
 def test_random_robot_refuses_bad_arguments(n, perturbation):
     with pytest.raises(TautError):
         random_suspended_robot(0, n, perturbation=perturbation)
+
+
+@pytest.mark.parametrize("ulps", [-1, 0, 1])
+def test_equilibrium_on_the_border_of_two_subsets_reported_once(ulps):
+    """Seed 1, 3 cables: its equilibria hang on cables 2 and 3 (0-based 1, 2).  With cable 1's
+    length set to its reach at one of them (give or take an ulp) that equilibrium has a zero
+    tension in the 3-taut subset and cable 1 exactly at its length in the 2-taut one: both
+    sub-problems certified it in a box straddling their bound and dropped it, or left a box
+    undecided.  It is now reported once, naming both subsets."""
+    robot, lengths = random_suspended_robot(1, 3)
+    before = solve_dgp(robot, lengths)
+    target = before.solutions[0]
+    R = rotation_matrix(target.orientation, robot.orientation)
+    reach = np.linalg.norm(robot.exits[0] - (target.position + R @ robot.anchors[0]))
+    edited = lengths.copy()
+    edited[0] = reach
+    for _ in range(abs(ulps)):
+        edited[0] = np.nextafter(edited[0], np.sign(ulps) * np.inf)
+    res = solve_dgp(robot, edited)
+    assert res.undecided == 0
+    assert len(res.solutions) == len(before.solutions)
+    border = [s for s in res.solutions if np.allclose(s.position, target.position, atol=1e-6)]
+    assert len(border) == 1
+    (sol,) = border
+    assert sol.boundary == (0, 1, 2) and sol.taut == (1, 2) and sol.tensions[0] == 0.0
+    assert sol.as_dict()["boundary"] == [0, 1, 2]
+    check_equilibrium(robot, edited, sol)

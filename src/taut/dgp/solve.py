@@ -54,6 +54,9 @@ class DGPSolution:
     certificate_width: float  #: width of the Krawczyk box proven to hold this solution
     uniqueness_radius: float  #: half-width of the inflated box with no other solution
     continuum: tuple[float, float] | None = None  #: spin arc of a one-cable family
+    #: a border equilibrium: the cables of ``boundary`` not in ``taut`` are at their lengths
+    #: with zero tension, to within the certificate — it solves ``taut`` or ``boundary``
+    boundary: tuple[int, ...] | None = None
 
     def as_dict(self) -> dict:
         d = {
@@ -67,6 +70,8 @@ class DGPSolution:
         }
         if self.continuum is not None:
             d["continuum"] = list(self.continuum)
+        if self.boundary is not None:
+            d["boundary"] = list(self.boundary)
         return d
 
 
@@ -206,27 +211,49 @@ def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None],
         tube=sp.geometry,
         filter_width=width,
     )
-    idx = list(taut)
     undecided = len(res.undecided)
     certs: list[Certificate | None] = []
-    for c in res.solutions:
-        if not sp.tension_unknowns:
+    for c, border in [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]:
+        if sp.tension_unknowns:
+            t_lo, t_hi = c.lo[sp.pose_unknowns :], c.hi[sp.pose_unknowns :]
+        else:
             # the sign of the tensions over the certified box: all positive, or the
-            # solution is infeasible or belongs to a smaller subset (a zero tension)
+            # solution is infeasible or on the border of a smaller subset (a zero tension)
             enc = sp.statics.enclosure(c.lo, c.hi)
             if enc is None:
                 undecided += 1
                 continue
-            if not np.all(enc[0] > 0.0):
-                continue
+            t_lo, t_hi = enc
+        if np.any(t_hi < 0.0):
+            continue
         p, ang, R = sp.pose(c.x, robot.orientation)
-        tau = sp.tensions(c.x, lengths, n)
         b = p + r @ R.T
+        zero = [i for i, lo_i in zip(taut, t_lo) if lo_i <= 0.0]
+        # slack cables at their lengths: within the certificate's width, widened
+        near = [k for k in range(n) if k not in taut and abs(np.linalg.norm(b[k] - a[k]) - lengths[k]) <= _reach(c)]
+        if not (border or zero):
+            near = []
+        elif not (zero or near):
+            undecided += 1  # on the border of the search domain, not of a taut subset
+            continue
+        tau = sp.tensions(c.x, lengths, n)
+        tau[zero] = 0.0
+        smaller = tuple(i for i in taut if i not in zero)
+        idx = list(smaller)
         g = p + R @ gp
-        stable = is_stable(a[idx], b[idx], g, tau[idx], lengths[idx])
-        out.append(DGPSolution(tuple(taut), p, ang, tau, stable, c.width, c.radius))
-        certs.append(c)
+        stable = is_stable(a[idx], b[idx], g, tau[idx], lengths[idx]) if idx else False
+        boundary = tuple(sorted(set(taut) | set(near))) if zero or near else None
+        out.append(DGPSolution(smaller, p, ang, tau, stable, c.width, c.radius, boundary=boundary))
+        certs.append(None if boundary else c)
     return out, certs, undecided, res.boxes
+
+
+def _reach(c: Certificate) -> float:
+    """How far a slack cable's reach may be from its length for the solution certified by
+    ``c`` to count as on the border of that cable's taut subset: the certificate box's
+    width times a safety factor of 100 (the reach is 1-Lipschitz in the anchor's position,
+    which the pose unknowns move by at most about their width), at least 1e-9 m."""
+    return max(1e-9, 100.0 * c.width)
 
 
 def _solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple[list[DGPSolution], int, int]:
@@ -234,6 +261,23 @@ def _solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tupl
     robot, lengths, taut, eps = job
     sols, _, undecided, boxes = _solve_piece((robot, lengths, taut, eps, 0, 0))
     return sols, undecided, boxes
+
+
+def _same_border(border: DGPSolution, other: DGPSolution) -> bool:
+    """``other`` is the equilibrium ``border`` (a border one): it solves a taut subset between
+    ``border.taut`` and ``border.boundary`` at the same pose, to within :data:`BORDER_TOL`."""
+    assert border.boundary is not None
+    subset = set(border.taut) <= set(other.taut) <= set(border.boundary)
+    return bool(
+        subset
+        and np.allclose(other.position, border.position, rtol=0.0, atol=BORDER_TOL)
+        and np.allclose(other.orientation, border.orientation, rtol=0.0, atol=BORDER_TOL)
+    )
+
+
+#: Distance (metres, radians) under which two border equilibria are the same: the
+#: certificates are ~1e-10 wide, distinct equilibria of a robot are centimetres apart.
+BORDER_TOL = 1e-6
 
 
 #: Default ``split`` of :func:`solve_dgp`, whatever the executor, so that every executor
@@ -317,8 +361,12 @@ def solve_dgp(
     solutions: list[DGPSolution] = []
     kept: dict[tuple[int, ...], list] = {}
     undecided = boxes = 0
+    borders: list[DGPSolution] = []
     for sols, certs, und, count in parts:
         for sol, cert in zip(sols, certs):
+            if sol.boundary is not None:
+                borders.append(sol)
+                continue
             seen = kept.setdefault(sol.taut, [])
             if cert is not None and any(same_solution(c, cert) or same_solution(cert, c) for c in seen):
                 continue
@@ -326,5 +374,10 @@ def solve_dgp(
             solutions.append(sol)
         undecided += und
         boxes += count
+    # a border equilibrium is found by both subsets it borders, or beside a regular
+    # solution of one of them: reported once
+    for sol in borders:
+        if not any(_same_border(sol, other) for other in solutions):
+            solutions.append(sol)
     solutions.sort(key=solution_key)
     return DGPResult(solutions, len(subsets), undecided, boxes, time.perf_counter() - t0)

@@ -61,6 +61,9 @@ from taut.interval.slope import points_for, slope_kernel, slopes
 class BranchAndPruneResult:
     solutions: list[Certificate] = field(default_factory=list)
     undecided: list[tuple[np.ndarray, np.ndarray]] = field(default_factory=list)
+    #: solutions proven unique whose box straddles a bound of the domain or of a redundant
+    #: inequality (e.g. a zero tension): neither inside nor outside at this precision
+    boundary: list[Certificate] = field(default_factory=list)
     boxes: int = 0  #: boxes processed
     stats: dict = field(default_factory=dict)  #: boxes discarded by each operator (compiled loop only)
 
@@ -283,7 +286,7 @@ def branch_and_prune(
             continue
         if _primary_width(lo, hi, primary) < filter_width and not all(f(lo, hi) for f in filters):
             continue
-        if any(c.covers(lo, hi) for c in out.solutions):
+        if any(c.covers(lo, hi) for c in out.solutions + out.boundary):
             continue
         if tube:
             vl, vh = slopes(system, lo, hi, tube_points)
@@ -306,7 +309,7 @@ def branch_and_prune(
                 continue
         width = hi - lo
         if _primary_width(lo, hi, primary) < certify_width and np.all(np.isfinite(width)):
-            klo, khi = _pad(lo, hi, lo0, hi0)
+            klo, khi = _pad(lo, hi)
             res = krawczyk(system, klo, khi, krawczyk_points)
             if res.status == "empty":
                 continue
@@ -314,10 +317,7 @@ def branch_and_prune(
             if unique or np.max(width) < newton_width:
                 cert = certify(system, 0.5 * res.lo + 0.5 * res.hi)
                 if cert is not None and np.all(cert.x >= klo) and np.all(cert.x <= khi):
-                    if _admissible(system, cert, lo0, hi0) and not any(
-                        np.all(np.abs(cert.x - c.x) <= max(c.radius, 1e-9)) for c in out.solutions
-                    ):
-                        out.solutions.append(cert)
+                    _file(system, cert, lo0, hi0, out)
                     if unique:
                         continue
                     if cert.covers(lo, hi):
@@ -349,14 +349,17 @@ def _primary_width(lo: np.ndarray, hi: np.ndarray, primary: np.ndarray) -> float
 
 
 @njit(cache=True, fastmath=False)
-def _pad(lo: np.ndarray, hi: np.ndarray, lo0: np.ndarray, hi0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The box widened by 0.1 % of its widths (at least ~1e-10 relative), within the
-    domain: Krawczyk cannot prove ``K(X) ⊂ int X`` on a box HC4 shrank to a few ulps."""
+def _pad(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The box widened by 0.1 % of its widths (at least ~1e-10 relative): Krawczyk cannot
+    prove ``K(X) ⊂ int X`` on a box HC4 shrank to a few ulps.  Not clipped to the search
+    domain: a solution on the domain's border (a zero tension) is then proven unique in the
+    padded box and filed by :func:`_file` as inside, outside or on the boundary, instead of
+    being left undecided at ``eps``."""
     klo, khi = np.empty(lo.size), np.empty(lo.size)
     for i in range(lo.size):
         pad = max(1e-3 * (hi[i] - lo[i]), 1e-10 * (1.0 + abs(lo[i]) + abs(hi[i])))
-        klo[i] = max(lo[i] - pad, lo0[i])
-        khi[i] = min(hi[i] + pad, hi0[i])
+        klo[i] = lo[i] - pad
+        khi[i] = hi[i] + pad
     return klo, khi
 
 
@@ -405,7 +408,6 @@ def _drive(
     sol_r: np.ndarray,
     nsol: int,
     lo0: np.ndarray,
-    hi0: np.ndarray,
     primary: np.ndarray,
     eps: float,
     certify_width: float,
@@ -493,7 +495,7 @@ def _drive(
                 elif wp < certify_width and finite:
                     # over the padded box, the Jacobian also serves Krawczyk on the padded
                     # contracted box (clipped to this one): one evaluation for both
-                    jlo, jhi = _pad(lo, hi, lo0, hi0)
+                    jlo, jhi = _pad(lo, hi)
                     evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, jlo, jhi, jl, jh)
                     padded = True
                 else:
@@ -517,7 +519,7 @@ def _drive(
                 if narrowed:
                     continue
                 break
-            klo, khi = _pad(lo, hi, lo0, hi0)
+            klo, khi = _pad(lo, hi)
             if padded:
                 klo, khi = np.maximum(klo, jlo), np.minimum(khi, jhi)
             elif krawczyk_points > 0:
@@ -692,9 +694,8 @@ def _branch_and_prune_numba(
             sp,
             sol_x,
             sol_r,
-            len(out.solutions),
+            len(sol_r),
             lo0,
-            hi0,
             primary,
             float(eps),
             float(certify_width),
@@ -737,12 +738,10 @@ def _branch_and_prune_numba(
         klo, khi, rl, rh = buf[2].copy(), buf[3].copy(), buf[4].copy(), buf[5].copy()
         cert = certify(system, 0.5 * rl + 0.5 * rh)
         if cert is not None and np.all(cert.x >= klo) and np.all(cert.x <= khi):
-            if _admissible(system, cert, lo0, hi0) and not any(
-                np.all(np.abs(cert.x - c.x) <= max(c.radius, 1e-9)) for c in out.solutions
-            ):
-                out.solutions.append(cert)
-                sol_x = np.array([c.x for c in out.solutions])
-                sol_r = np.array([c.radius for c in out.solutions])
+            if _file(system, cert, lo0, hi0, out):
+                known = out.solutions + out.boundary
+                sol_x = np.array([c.x for c in known])
+                sol_r = np.array([c.radius for c in known])
             if unique:
                 continue
             if cert.covers(blo, bhi):
@@ -771,23 +770,33 @@ def _branch_and_prune_numba(
 
 
 def _drop_covered(out: BranchAndPruneResult) -> BranchAndPruneResult:
-    """Undecided boxes inside the uniqueness box ``x ± radius`` of a solution hold no other
+    """Undecided boxes inside the uniqueness box ``x ± radius`` of a solution (or a boundary
+    one) hold no other
     one: a box that reached ``eps`` beside a solution before that solution was certified
     (depth first, its neighbour may come later) is decided after all."""
-    out.undecided = [(lo, hi) for lo, hi in out.undecided if not any(c.covers(lo, hi) for c in out.solutions)]
+    known = out.solutions + out.boundary
+    out.undecided = [(lo, hi) for lo, hi in out.undecided if not any(c.covers(lo, hi) for c in known)]
     return out
 
 
-def _admissible(system: System, cert: Certificate, lo0: np.ndarray, hi0: np.ndarray) -> bool:
-    """The certified box lies in the search domain and satisfies the redundant constraints
-    (a solution whose enclosure straddles a bound — e.g. a zero tension — is rejected: it
-    belongs to the boundary, see :mod:`taut.dgp`)."""
-    if np.any(cert.lo < lo0) or np.any(cert.hi > hi0):
+def _file(system: System, cert: Certificate, lo0: np.ndarray, hi0: np.ndarray, out: BranchAndPruneResult) -> bool:
+    """Add a new certified solution to ``out.solutions`` when its box lies in the search
+    domain and satisfies the redundant constraints, to ``out.boundary`` when it straddles a
+    bound of either (e.g. a zero tension: it may belong to a smaller subset, see
+    :mod:`taut.dgp`); a box proven outside one of them holds no solution.  True when added."""
+    if any(np.all(np.abs(cert.x - c.x) <= max(c.radius, 1e-9)) for c in out.solutions + out.boundary):
+        return False
+    if np.any(cert.hi < lo0) or np.any(cert.lo > hi0):
         return False
     vl, vh = evaluate(system.tape, cert.lo, cert.hi)
     t, h = system.tape, system.n_equations
     vl, vh, bl, bh = vl[h:], vh[h:], t.blo[h:], t.bhi[h:]
     equality = bl == bh  # redundant equations: the solution satisfies them, the enclosure meets them
-    inside = (vl >= bl) & (vh <= bh)
-    meets = (vl <= bl) & (vh >= bh)
-    return bool(np.all(np.where(equality, meets, inside)))
+    if np.any(np.where(equality, (vl > bl) | (vh < bh), (vl > bh) | (vh < bl))):
+        return False
+    inside = bool(np.all(np.where(equality, True, (vl >= bl) & (vh <= bh))))
+    if inside and np.all(cert.lo >= lo0) and np.all(cert.hi <= hi0):
+        out.solutions.append(cert)
+    else:
+        out.boundary.append(cert)
+    return True
