@@ -22,6 +22,11 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
         ("bench_atlas.py", ["--queries", "2000", "--naive", "10", "--repeat", "1"], "same lengths at 100 %"),
         ("bench_tracking.py", ["--repeat", "1"], "back to start within"),
         ("bench_cli.py", ["--runs", "1"], "targets met:"),
+        (
+            "bench_dgp_random.py",
+            ["--first", "1", "--three", "2", "--four", "0", "--six", "1", "--eight", "0"],
+            "undecided boxes over the suite: 0",
+        ),
         pytest.param("bench_dgp.py", [], "6 solutions (1 stable)", marks=pytest.mark.slow),
         pytest.param(
             "bench_dgp.py",
