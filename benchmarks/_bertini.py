@@ -37,13 +37,12 @@ def _cross(u, v):
     return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
 
 
-def bertini_system(bertini, robot, lengths, taut, groups=1):
+def bertini_system(bertini, robot, lengths, taut):
     """The equations of ``build_subproblem(robot, lengths, taut)`` as a ``bertini.System``:
     unknowns ``q_1, q_2, q_3`` (fixed-frame reference points) then the scaled tensions
     ``t_i = τ_i/ρ_i``; 3 rigidity relations, ``m`` cable lengths, 3 forces and 3 moments about
     the exit point of the first taut cable.  Every coefficient is the exact value of taut's
-    double, so both tools solve the same system.  ``groups=2``: the reference points and the
-    tensions are two variable groups (a 2-homogeneous start system, fewer paths)."""
+    double, so both tools solve the same system."""
 
     def c(x):
         return bertini.coefficient(Fraction(float(x)))
@@ -86,19 +85,18 @@ def bertini_system(bertini, robot, lengths, taut, groups=1):
             acc = acc + t[i] * ((b[i][k1] - c(pole[k1])) * c(arm[k2]) - (b[i][k2] - c(pole[k2])) * c(arm[k1]))
         eqs.append(acc)
     system = bertini.System()
-    for group in [qv + tv] if groups == 1 else [qv, tv]:
-        system.add_variable_group(bertini.VariableGroup(group))
+    system.add_variable_group(bertini.VariableGroup(qv + tv))
     for e in eqs:
         system.add_function(e)
     return system
 
 
-def run_bertini(bertini, robot, lengths, mptype, taut=ALL_TAUT, groups=1):
+def run_bertini(bertini, robot, lengths, mptype, taut=ALL_TAUT):
     """``(seconds, admissible endpoints (k, 9 + m) real, finite endpoints, paths)`` of the
-    sub-problem of the taut cables ``taut`` (``groups``: see :func:`bertini_system`)."""
+    sub-problem of the taut cables ``taut``."""
     bertini.recording(False)  # no records directory written into the working directory
     bertini.random.set_random_seed(SEED)
-    system = bertini_system(bertini, robot, lengths, taut, groups)
+    system = bertini_system(bertini, robot, lengths, taut)
     solver = bertini.nag_algorithm.ZeroDimSolver(system, mptype=mptype, num_threads=1)
     t0 = time.perf_counter()
     finite = solver.solve(show_progress=False)
