@@ -7,8 +7,11 @@ geometrico-static problem (Berti 2015, Ch. 2–3).
 :mod:`taut.dgp.formulation` (for ``3 ≤ m ≤ 5`` every box is also contracted onto the pose
 manifold of the rigidity and length equations, its ``geometry``) — through a
 :mod:`taut.parallel` executor, and classifies every solution by the reduced Hessian
-(:mod:`taut.dgp.stability`).  A solution with a zero tension is not reported by the larger
-subset (its tension enclosure straddles 0), it belongs to the smaller one.
+(:mod:`taut.dgp.stability`).  An equilibrium on the border of two taut subsets — a
+cable at its length with zero tension, so that its certified box straddles the bound of
+one subset's tension or of the other's slack-cable inequality — is reported once, with the
+smaller subset as ``taut`` and the larger as ``boundary``: at the certificate's precision it
+solves one of the two.
 
 References
 ----------
