@@ -27,6 +27,11 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
             ["--samples", "2000", "--loop", "20", "--seconds", "0.05"],
             "same tensions as the statics path: True",
         ),
+        (
+            "bench_dgp_random.py",
+            ["--first", "1", "--three", "2", "--four", "0", "--six", "1", "--eight", "0"],
+            "undecided boxes over the suite: 0",
+        ),
         pytest.param("bench_dgp.py", [], "6 solutions (1 stable)", marks=pytest.mark.slow),
         pytest.param(
             "bench_dgp.py",

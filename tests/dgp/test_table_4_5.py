@@ -12,7 +12,7 @@ from taut.dgp import solve_dgp
 from taut.dgp.formulation import build_subproblem
 from taut.dgp.solve import _solve_subset
 from taut.geometry.rotation import rotation_matrix
-from taut.interval.branch_prune import _admissible
+from taut.interval.branch_prune import BranchAndPruneResult, _file
 from taut.interval.krawczyk import certify
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
@@ -107,4 +107,6 @@ def test_table_4_5_conf_4_stretches_its_slack_cable():
     assert np.allclose(np.r_[p, ang], pose, atol=2e-3)
     span = inverse_kinematics(ROBOT, np.r_[p, ang]).lengths
     assert span[3] - LENGTHS[3] == pytest.approx(1.26e-3, abs=1e-5)
-    assert not _admissible(sp.system, cert, sp.lo, sp.hi)
+    filed = BranchAndPruneResult()
+    assert not _file(sp.system, cert, sp.lo, sp.hi, filed)
+    assert filed.solutions == [] and filed.boundary == []

@@ -321,7 +321,7 @@ def test_relative_smears_share_out_each_equation(case, shrink):
     Jl, Jh = jacobian(system, lo, hi)
     rows = np.sum(np.any(np.maximum(np.abs(Jl), np.abs(Jh)) * (hi - lo) * primary > 0, axis=1))
     assert np.isclose(score.sum(), rows)
-    j = _bisect_index(hi - lo, primary, 1e-7, score)
+    j = _bisect_index(hi - lo, primary, 1e-7, score, np.inf)
     assert primary[j] and score[j] == score.max()
 
 

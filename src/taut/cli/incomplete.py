@@ -33,6 +33,7 @@ CAUSE_TEXT = {
     "narrow": "too narrow to split",
     "budget": "left when the box budget ran out",
     "tension-sign": "of a solution whose tension signs are undecided",
+    "domain-border": "of a solution on the search domain's bound",
 }
 
 

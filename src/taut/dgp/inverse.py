@@ -451,9 +451,11 @@ def solve_igp(
         )
         solutions = [_solution(robot, idx, fixed, pb, c) for c in res.solutions]
         solutions.sort(key=lambda s: (not s.stable, *s.position, *s.orientation))
+        # a certified solution straddling a bound (a zero tension, a domain edge) may or may
+        # not be an answer: it is reported as undecided, never dropped
         undecided = tuple(
             _undecided(robot, idx, fixed, pb, blo, bhi, cause_of(blo, bhi, eps)) for blo, bhi in res.undecided
-        )
+        ) + tuple(_undecided(robot, idx, fixed, pb, c.lo, c.hi, "domain-border") for c in res.boundary)
         boxes, exhausted = min(res.boxes, max_boxes), res.boxes > max_boxes
     elif progress is not None:
         progress(0, 0)

@@ -7,8 +7,11 @@ geometrico-static problem (Berti 2015, Ch. 2–3).
 :mod:`taut.dgp.formulation` (for ``3 ≤ m ≤ 5`` every box is also contracted onto the pose
 manifold of the rigidity and length equations, its ``geometry``) — through a
 :mod:`taut.parallel` executor, and classifies every solution by the reduced Hessian
-(:mod:`taut.dgp.stability`).  A solution with a zero tension is not reported by the larger
-subset (its tension enclosure straddles 0), it belongs to the smaller one.
+(:mod:`taut.dgp.stability`).  An equilibrium on the border of two taut subsets — a
+cable at its length with zero tension, so that its certified box straddles the bound of
+one subset's tension or of the other's slack-cable inequality — is reported once, with the
+smaller subset as ``taut`` and the larger as ``boundary``: at the certificate's precision it
+solves one of the two.
 
 References
 ----------
@@ -55,6 +58,9 @@ class DGPSolution:
     certificate_width: float  #: width of the Krawczyk box proven to hold this solution
     uniqueness_radius: float  #: half-width of the inflated box with no other solution
     continuum: tuple[float, float] | None = None  #: spin arc of a one-cable family
+    #: a border equilibrium: the cables of ``boundary`` not in ``taut`` are at their lengths
+    #: with zero tension, to within the certificate — it solves ``taut`` or ``boundary``
+    boundary: tuple[int, ...] | None = None
 
     def as_dict(self) -> dict:
         d = {
@@ -68,6 +74,8 @@ class DGPSolution:
         }
         if self.continuum is not None:
             d["continuum"] = list(self.continuum)
+        if self.boundary is not None:
+            d["boundary"] = list(self.boundary)
         return d
 
 
@@ -145,6 +153,13 @@ def certify_width(m: int) -> float:
     return 0.3 if 4 <= m <= 5 else 1.0
 
 
+#: The bisection cuts the widest reference-point coordinate when it is this many times wider
+#: than the smear's pick (:func:`~taut.interval.branch_prune.branch_and_prune`): seed 58 of
+#: the random 3-cable suite, cables 1 and 3, 1.34 M boxes → 553; the same boxes on
+#: Table 4.3, 87 661 instead of 88 231 on Table 4.6.
+STARVE = 10.0
+
+
 #: Per process, the sub-problems last built and their pieces, keyed by the job's data:
 #: a worker running several pieces of one sub-problem builds it once (a build takes
 #: ~20 ms, as long as solving many pieces).
@@ -219,28 +234,51 @@ def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None],
         tube=sp.geometry,
         filter_width=width,
         max_boxes=PIECE_BOXES if budget is None else -(-budget // len(pieces)),
+        starve=STARVE,
     )
-    idx = list(taut)
     undecided = [subproblem_box(sp, lengths, blo, bhi, cause_of(blo, bhi, eps)) for blo, bhi in res.undecided]
     certs: list[Certificate | None] = []
-    for c in res.solutions:
-        if not sp.tension_unknowns:
+    for c, border in [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]:
+        if sp.tension_unknowns:
+            t_lo, t_hi = c.lo[sp.pose_unknowns :], c.hi[sp.pose_unknowns :]
+        else:
             # the sign of the tensions over the certified box: all positive, or the
-            # solution is infeasible or belongs to a smaller subset (a zero tension)
+            # solution is infeasible or on the border of a smaller subset (a zero tension)
             enc = sp.statics.enclosure(c.lo, c.hi)
             if enc is None:
                 undecided.append(subproblem_box(sp, lengths, c.lo, c.hi, "tension-sign"))
                 continue
-            if not np.all(enc[0] > 0.0):
-                continue
+            t_lo, t_hi = enc
+        if np.any(t_hi < 0.0):
+            continue
         p, ang, R = sp.pose(c.x, robot.orientation)
-        tau = sp.tensions(c.x, lengths, n)
         b = p + r @ R.T
+        zero = [i for i, lo_i in zip(taut, t_lo) if lo_i <= 0.0]
+        # slack cables at their lengths: within the certificate's width, widened
+        near = [k for k in range(n) if k not in taut and abs(np.linalg.norm(b[k] - a[k]) - lengths[k]) <= _reach(c)]
+        if not (border or zero):
+            near = []
+        elif not (zero or near):
+            undecided.append(subproblem_box(sp, lengths, c.lo, c.hi, "domain-border"))
+            continue
+        tau = sp.tensions(c.x, lengths, n)
+        tau[zero] = 0.0
+        smaller = tuple(i for i in taut if i not in zero)
+        idx = list(smaller)
         g = p + R @ gp
-        stable = is_stable(a[idx], b[idx], g, tau[idx], lengths[idx])
-        out.append(DGPSolution(tuple(taut), p, ang, tau, stable, c.width, c.radius))
-        certs.append(c)
+        stable = is_stable(a[idx], b[idx], g, tau[idx], lengths[idx]) if idx else False
+        boundary = tuple(sorted(set(taut) | set(near))) if zero or near else None
+        out.append(DGPSolution(smaller, p, ang, tau, stable, c.width, c.radius, boundary=boundary))
+        certs.append(None if boundary else c)
     return out, certs, undecided, res.boxes
+
+
+def _reach(c: Certificate) -> float:
+    """How far a slack cable's reach may be from its length for the solution certified by
+    ``c`` to count as on the border of that cable's taut subset: the certificate box's
+    width times a safety factor of 100 (the reach is 1-Lipschitz in the anchor's position,
+    which the pose unknowns move by at most about their width), at least 1e-9 m."""
+    return max(1e-9, 100.0 * c.width)
 
 
 def _solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple[list[DGPSolution], int, int]:
@@ -248,6 +286,23 @@ def _solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tupl
     robot, lengths, taut, eps = job
     sols, _, undecided, boxes = _solve_piece((robot, lengths, taut, eps, 0, 0, None))
     return sols, len(undecided), boxes
+
+
+def _same_border(border: DGPSolution, other: DGPSolution) -> bool:
+    """``other`` is the equilibrium ``border`` (a border one): it solves a taut subset between
+    ``border.taut`` and ``border.boundary`` at the same pose, to within :data:`BORDER_TOL`."""
+    assert border.boundary is not None
+    subset = set(border.taut) <= set(other.taut) <= set(border.boundary)
+    return bool(
+        subset
+        and np.allclose(other.position, border.position, rtol=0.0, atol=BORDER_TOL)
+        and np.allclose(other.orientation, border.orientation, rtol=0.0, atol=BORDER_TOL)
+    )
+
+
+#: Distance (metres, radians) under which two border equilibria are the same: the
+#: certificates are ~1e-10 wide, distinct equilibria of a robot are centimetres apart.
+BORDER_TOL = 1e-6
 
 
 #: Default ``split`` of :func:`solve_dgp`, whatever the executor, so that every executor
@@ -343,8 +398,12 @@ def solve_dgp(
     kept: dict[tuple[int, ...], list] = {}
     undecided: list[UndecidedBox] = []
     boxes = 0
+    borders: list[DGPSolution] = []
     for sols, certs, und, count in parts:
         for sol, cert in zip(sols, certs):
+            if sol.boundary is not None:
+                borders.append(sol)
+                continue
             seen = kept.setdefault(sol.taut, [])
             if cert is not None and any(same_solution(c, cert) or same_solution(cert, c) for c in seen):
                 continue
@@ -352,5 +411,10 @@ def solve_dgp(
             solutions.append(sol)
         undecided += und
         boxes += count
+    # a border equilibrium is found by both subsets it borders, or beside a regular
+    # solution of one of them: reported once
+    for sol in borders:
+        if not any(_same_border(sol, other) for other in solutions):
+            solutions.append(sol)
     solutions.sort(key=solution_key)
     return DGPResult(solutions, len(subsets), tuple(undecided), boxes, time.perf_counter() - t0)

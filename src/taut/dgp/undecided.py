@@ -4,11 +4,12 @@ solutions do not list.  A result with any of them is incomplete, and says where.
 Every box is an enclosure, in the solver's own unknowns, of the part of a sub-problem's
 domain the search gave up on: any solution of that sub-problem with positive tensions that
 the result does not list lies in one of its undecided boxes (one with a zero tension belongs
-to the sub-problem of the other taut cables, :mod:`taut.dgp.solve`).  A box is left undecided for one of three causes
+to the sub-problem of the other taut cables, :mod:`taut.dgp.solve`).  A box is left undecided for one of four causes
 (:data:`CAUSES`): it became narrower than the bisection threshold without being discarded
-or certified (a singular or nearly double solution, one with a zero tension or on the
-domain's boundary); it was still waiting when the box budget ran out; or it holds a
-certified solution whose tensions' signs could not be decided.
+or certified (a singular or nearly double solution); it was still waiting when the box
+budget ran out; it holds a certified solution whose tensions' signs could not be decided;
+or it holds a certified solution on the search domain's bound that borders no other taut
+subset.
 
 References
 ----------
@@ -30,8 +31,10 @@ if TYPE_CHECKING:
 
 #: Why a box is undecided: ``"narrow"`` — below the bisection threshold, neither discarded
 #: nor certified; ``"budget"`` — not yet processed when the box budget ran out;
-#: ``"tension-sign"`` — a certified solution whose tensions' signs are not decided.
-CAUSES = ("narrow", "budget", "tension-sign")
+#: ``"tension-sign"`` — a certified solution whose tensions' signs are not decided;
+#: ``"domain-border"`` — a certified solution straddling the search domain's bound where no
+#: cable is slack at its length (not the border of two taut subsets).
+CAUSES = ("narrow", "budget", "tension-sign", "domain-border")
 
 #: Names of the reference-point unknowns of :mod:`taut.dgp.formulation`: the fixed-frame
 #: coordinates of the three reference points, then the normal of their plane.

@@ -214,19 +214,75 @@ def enclosure_kernel(
             Am[i, j] = 0.5 * Al[i, j] + 0.5 * Ah[i, j]
             if not np.isfinite(Am[i, j]):
                 return False, none, none
-    ok, Kp = _generalised_inverse(Am)
-    if not ok:
-        return False, none, none
-    for i in range(Kp.shape[0]):
-        for j in range(Kp.shape[1]):
-            if not np.isfinite(Kp[i, j]):
-                return False, none, none
-    Cl, Ch = precondition(Kp, Al, Ah)
     bl, bh = np.empty((r, 1)), np.empty((r, 1))
     for i in range(r):
         bl[i, 0], bh[i, 0] = vl[k + i], vh[k + i]
+    ok, Kp = _generalised_inverse(Am)
+    if ok:
+        ok, tl, th = _preconditioned_gauss(Kp, Al, Ah, bl, bh)
+        if ok or r == m:
+            return ok, tl, th
+    # over-determined: Wᵀ mid A, symmetric indefinite, is singular on a surface of poses
+    # where mid A has full rank (a random suspended robot, seed 4, 3 cables: the filter
+    # failed on 4 M boxes whose tensions ran to 1e308); the scaled least-squares inverse
+    # has full rank with mid A
+    ok, Kp = _least_squares_inverse(Am)
+    if not ok:
+        return False, none, none
+    return _preconditioned_gauss(Kp, Al, Ah, bl, bh)
+
+
+@njit(cache=True, fastmath=False)
+def _preconditioned_gauss(
+    Kp: np.ndarray, Al: np.ndarray, Ah: np.ndarray, bl: np.ndarray, bh: np.ndarray
+) -> tuple[bool, np.ndarray, np.ndarray]:
+    """Interval Gauss on ``K[A] t = K[b]`` (``b`` a column); not ok for a non-finite ``K``."""
+    for i in range(Kp.shape[0]):
+        for j in range(Kp.shape[1]):
+            if not np.isfinite(Kp[i, j]):
+                return False, np.empty(0), np.empty(0)
+    Cl, Ch = precondition(Kp, Al, Ah)
     rl, rh = precondition(Kp, bl, bh)
     return _gauss(Cl, Ch, rl[:, 0].copy(), rh[:, 0].copy())
+
+
+@njit(cache=True, fastmath=False)
+def _least_squares_inverse(J: np.ndarray) -> tuple[bool, np.ndarray]:
+    """``K = (Jᵀ D² J)⁻¹ Jᵀ D²`` for a ``2h × m`` wrench matrix ``J``: the least-squares
+    inverse with the lower (moment) half of the rows divided by ``ℓ``, the ratio of the
+    halves' norms (units: a length), so that neither half dominates.  Any float ``K``
+    gives a sound enclosure (Neumaier 1990, Ch. 4); this one is invertible whenever ``J``
+    has full column rank.
+
+    References
+    ----------
+    .. [1] A. Neumaier, "Interval Methods for Systems of Equations", Cambridge University
+       Press, 1990, Ch. 4. (docs/references.bib: neumaier1990)
+    """
+    r, m = J.shape
+    half = r // 2
+    top, bottom = 0.0, 0.0
+    for i in range(r):
+        for j in range(m):
+            if i < half:
+                top += J[i, j] * J[i, j]
+            else:
+                bottom += J[i, j] * J[i, j]
+    w2 = np.ones(r)
+    if top > 0.0 and bottom > 0.0:
+        w2[half:] = top / bottom
+    A = np.zeros((m, m))
+    for i in range(m):
+        for j in range(m):
+            for k in range(r):
+                A[i, j] += J[k, i] * w2[k] * J[k, j]
+    ok, Ainv = float_inverse(A)
+    Kp = np.zeros((m, r))
+    for i in range(m):
+        for j in range(r):
+            for k in range(m):
+                Kp[i, j] += Ainv[i, k] * J[j, k] * w2[j]
+    return ok, Kp
 
 
 @njit(cache=True, fastmath=False)

@@ -1,0 +1,121 @@
+"""The complete DGP (``taut.dgp.solve_dgp``) on a suite of seeded random suspended robots
+(``taut.model.random_robots.random_suspended_robot``) that nobody tuned the solver to: per
+robot the equilibria, the undecided boxes and the time; per cable count the median, 90th
+percentile and worst time; for the 3-cable suite the worst/median ratio (target ≤ 5).
+
+By default 20 robots of 3 cables (seeds 0–19) and 10 of 4 cables (seeds 0–9), every taut
+subset, and 2 of 6 and 2 of 8 cables with sub-problems of at most ``--max-taut`` (default 2)
+taut cables.  With ``--peer``, the sub-problem with all three cables taut of every 3-cable
+robot is also solved by ``bertini2`` (see ``_bertini.py``; 4096 paths, 10–20 minutes per robot
+on a shared core: pick a few robots, e.g. ``--three 3 --four 0 --six 0 --eight 0 --peer``):
+both counts of real equilibria with non-negative tensions are printed, and any disagreement.
+
+    python benchmarks/bench_dgp_random.py [--three N] [--four N] [--six N] [--eight N]
+                                          [--max-taut K] [--first SEED] [--peer]
+"""
+
+import argparse
+import time
+
+import _common  # noqa: F401  (pins the thread pools to one core)
+import numpy as np
+from _bertini import ALL_TAUT, import_bertini, matching, run_bertini
+
+from taut.dgp import solve_dgp
+from taut.dgp.solve import _solve_subset
+from taut.model.random_robots import random_suspended_robot
+
+EPS = 1e-7  # solve_dgp's default box width
+RATIO_TARGET = 5.0  # worst / median time of the 3-cable suite (issue 21)
+
+
+def suite(ns):
+    """``(cables, seed, max_taut)`` of every robot of the run."""
+    first = ns.first
+    cases = [(3, s, None) for s in range(first, first + ns.three)]
+    cases += [(4, s, None) for s in range(first, first + ns.four)]
+    cases += [(6, s, ns.max_taut) for s in range(first, first + ns.six)]
+    cases += [(8, s, ns.max_taut) for s in range(first, first + ns.eight)]
+    return cases
+
+
+def summary(label, times):
+    t = np.asarray(times)
+    med = float(np.median(t))
+    print(
+        f"{label}: {t.size} robots   median {med:.2f} s   90th percentile {np.percentile(t, 90):.2f} s   "
+        f"worst {t.max():.2f} s   worst/median {t.max() / med:.1f}x"
+    )
+    return float(t.max() / med)
+
+
+def peer(cases, mptype):
+    bertini = import_bertini()
+    if bertini is None:
+        return
+    disagreements = 0
+    for n, seed, _ in cases:
+        if n != 3:
+            continue
+        robot, lengths = random_suspended_robot(seed, n)
+        sols, undecided, _ = _solve_subset((robot, lengths, ALL_TAUT, EPS))
+        t_peer, endpoints, n_finite, n_paths = run_bertini(bertini, robot, lengths, mptype)
+        found = matching(robot, lengths, sols, endpoints)
+        agree = len(endpoints) == len(sols) == found and undecided == 0
+        disagreements += not agree
+        print(
+            f"  3 cables seed {seed}: taut {len(sols)}  bertini2 {len(endpoints)} (of {n_finite} finite endpoints, "
+            f"{n_paths} paths, {t_peer:.0f} s)  taut's found by bertini2: {found}, taut undecided: {undecided}"
+            + ("" if agree else "  DISAGREE")
+        )
+    print(f"bertini2 {bertini.__version__} ({mptype} precision): {disagreements} disagreement(s)")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--three", type=int, default=20, help="3-cable robots")
+    ap.add_argument("--four", type=int, default=10, help="4-cable robots")
+    ap.add_argument("--six", type=int, default=2, help="6-cable robots (with --max-taut)")
+    ap.add_argument("--eight", type=int, default=2, help="8-cable robots (with --max-taut)")
+    ap.add_argument("--max-taut", type=int, default=2, help="largest taut subset of the 6- and 8-cable robots")
+    ap.add_argument("--first", type=int, default=0, help="first seed")
+    ap.add_argument("--peer", action="store_true", help="also bertini2 on each 3-cable all-taut sub-problem")
+    ap.add_argument("--peer-mptype", choices=("double", "adaptive"), default="double")
+    ns = ap.parse_args()
+    cases = suite(ns)
+    # load the Numba kernels outside the timing
+    solve_dgp(*random_suspended_robot(0, 3), max_taut=2)
+    times: dict[int, list[float]] = {}
+    total_undecided = 0
+    for n, seed, max_taut in cases:
+        robot, lengths = random_suspended_robot(seed, n)
+        t0 = time.perf_counter()
+        res = solve_dgp(robot, lengths, max_taut=max_taut)
+        t = time.perf_counter() - t0
+        times.setdefault(n, []).append(t)
+        total_undecided += res.undecided
+        per_m = {}
+        for s in res.solutions:
+            per_m[len(s.taut)] = per_m.get(len(s.taut), 0) + 1
+        print(
+            f"{n} cables seed {seed:3d}{'' if max_taut is None else f' (max taut {max_taut})'}: "
+            f"{len(res.solutions)} equilibria {dict(sorted(per_m.items(), reverse=True))}, "
+            f"{res.undecided} undecided, {res.boxes} boxes, {t:.2f} s",
+            flush=True,
+        )
+    ratio = None
+    for n in sorted(times):
+        r = summary(f"{n} cables", times[n])
+        if n == 3:
+            ratio = r
+    print(f"undecided boxes over the suite: {total_undecided}")
+    if ratio is not None:
+        print(f"3-cable worst/median: {ratio:.1f}x (target <= {RATIO_TARGET:g}x)")
+    if ns.peer:
+        peer(cases, ns.peer_mptype)
+
+
+if __name__ == "__main__":
+    started = time.perf_counter()
+    main()
+    print(f"suite time: {time.perf_counter() - started:.1f} s")

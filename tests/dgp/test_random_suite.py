@@ -1,0 +1,162 @@
+"""The DGP on seeded random suspended robots (the small version of
+benchmarks/bench_dgp_random.py): no undecided box, and every reported equilibrium checked
+here from the robot's data — the taut cables reach their anchors, the slack ones do not, the
+tensions are non-negative and balance the weight, forces and moments."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from taut.dgp import solve_dgp
+from taut.dgp.solve import _solve_subset
+from taut.errors import TautError
+from taut.geometry.rotation import rotation_matrix
+from taut.interval.branch_prune import bisect
+from taut.interval.expression import compile_tape, const
+from taut.interval.linear import LinearFilter
+from taut.model.io import load_robot, save_robot
+from taut.model.random_robots import random_suspended_robot
+
+#: (cables, seed): quick robots of the benchmark suite, coplanar and not, with equilibria on
+#: two and three taut cables
+SUITE = [(3, 1), (3, 7), (3, 16), (3, 23), (4, 1)]
+
+
+def check_equilibrium(robot, lengths, sol):
+    """Residuals of one reported equilibrium, computed from the robot's data alone."""
+    R = rotation_matrix(sol.orientation, robot.orientation)
+    b = sol.position + robot.anchors @ R.T
+    reach = np.linalg.norm(robot.exits - b, axis=1)
+    taut = list(sol.taut)
+    slack = [i for i in range(robot.n_cables) if i not in taut]
+    assert np.allclose(reach[taut], lengths[taut], rtol=0, atol=1e-7)
+    assert np.all(reach[slack] <= lengths[slack] + 1e-9)
+    assert np.all(sol.tensions[taut] > 0.0) and np.all(sol.tensions[slack] == 0.0)
+    u = (robot.exits - b) / reach[:, None]
+    force = sol.tensions @ u + robot.weight
+    g = sol.position + R @ np.asarray(robot.platform.wrench_point)
+    moment = np.cross(b, sol.tensions[:, None] * u).sum(axis=0) + np.cross(g, robot.weight)
+    scale = np.linalg.norm(robot.weight) * (1.0 + np.abs(sol.position).max())
+    assert np.abs(force).max() <= 1e-6 * np.linalg.norm(robot.weight)
+    assert np.abs(moment).max() <= 1e-6 * scale
+
+
+@pytest.mark.parametrize("n, seed", SUITE)
+def test_every_equilibrium_certified_and_checked(n, seed):
+    robot, lengths = random_suspended_robot(seed, n)
+    res = solve_dgp(robot, lengths)
+    assert res.undecided == 0 and res.complete
+    assert res.solutions
+    for sol in res.solutions:
+        check_equilibrium(robot, lengths, sol)
+
+
+def test_singular_generalised_inverse_does_not_stall():
+    """Seed 4, 3 cables: near the pose where the three cables are almost horizontal, the
+    preconditioner of Berti's Eq. 3.12, (Wᵀ J)⁻¹ Wᵀ, is singular although J has full rank;
+    the statics filter then proved nothing, and the tensions of 4 M boxes ran to 1e308
+    (undecided).  With the least-squares preconditioner the filter bounds them."""
+    robot, lengths = random_suspended_robot(4, 3)
+    res = solve_dgp(robot, lengths, max_taut=3)
+    assert res.undecided == 0 and len([s for s in res.solutions if len(s.taut) == 3]) == 2
+
+
+def test_least_squares_preconditioner_encloses_the_solution():
+    """An over-determined point system whose Eq. 3.12 preconditioner is exactly singular: the
+    enclosure holds the exact solution (the filter's contract), from the least-squares one."""
+    F = np.array([[1.0, 0.0, 1.0], [0.0, 1.0, 1.0], [1.0, 1.0, 0.0]])
+    # Wᵀ J = Fᵀ M + Mᵀ F is singular for M = F S with S skew-symmetric
+    S = np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
+    J = np.vstack([F, F @ S])
+    t = np.array([1.0, 2.0, 3.0])
+    W = np.vstack([J[3:], J[:3]])
+    assert abs(np.linalg.det(W.T @ J)) < 1e-12 and np.linalg.matrix_rank(J) == 3
+    tape = compile_tape([const(float(v)) for v in [*J.ravel(), *(J @ t)]], [(-np.inf, np.inf)] * 24)
+    lo, hi = np.array([-10.0, -10.0, -10.0]), np.array([10.0, 10.0, 10.0])
+    enc = LinearFilter(tape, 3).enclosure(lo, hi)
+    assert enc is not None
+    assert np.all(enc[0] <= t) and np.all(t <= enc[1]) and np.all(enc[1] - enc[0] < 1e-9)
+
+
+@pytest.mark.parametrize("n", range(3, 9))
+def test_random_robot_file_round_trip(n, tmp_path):
+    robot, lengths = random_suspended_robot(n, n)
+    path = tmp_path / "random.yaml"
+    save_robot(robot, path)
+    again = load_robot(str(path))
+    assert again == robot
+    assert robot.n_cables == n and np.array_equal(np.asarray(robot.reference.lengths), lengths)
+
+
+@settings(max_examples=25, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), n=st.integers(3, 8), coplanar=st.booleans())
+def test_random_robot_geometry(seed, n, coplanar):
+    robot, lengths = random_suspended_robot(seed, n, coplanar=coplanar)
+    a, r = robot.exits, robot.anchors
+    g = np.asarray(robot.platform.wrench_point)
+    assert np.all(lengths > 0) and robot.weight[2] < 0
+    # exits above the platform's drawn pose, anchors coplanar or not, load point off their plane
+    centred = r - r.mean(axis=0)
+    normal = np.linalg.svd(centred)[2][-1]
+    flat = np.abs(centred @ normal).max()
+    assert (flat < 1e-12) if coplanar else (flat > 0)
+    assert abs((g - r.mean(axis=0)) @ normal) > 1e-3
+    assert np.ptp(a[:, 0]) > 1.0 and np.ptp(a[:, 1]) > 1.0
+    same = random_suspended_robot(seed, n, coplanar=coplanar)
+    assert same[0] == robot and np.array_equal(same[1], lengths)
+
+
+@pytest.mark.parametrize("n, perturbation", [(2, 0.02), (9, 0.02), (3, -0.1), (3, float("nan"))])
+def test_random_robot_refuses_bad_arguments(n, perturbation):
+    with pytest.raises(TautError):
+        random_suspended_robot(0, n, perturbation=perturbation)
+
+
+@pytest.mark.parametrize("ulps", [-1, 0, 1])
+def test_equilibrium_on_the_border_of_two_subsets_reported_once(ulps):
+    """Seed 1, 3 cables: its equilibria hang on cables 2 and 3 (0-based 1, 2).  With cable 1's
+    length set to its reach at one of them (give or take an ulp) that equilibrium has a zero
+    tension in the 3-taut subset and cable 1 exactly at its length in the 2-taut one: both
+    sub-problems certified it in a box straddling their bound and dropped it, or left a box
+    undecided.  It is now reported once, naming both subsets."""
+    robot, lengths = random_suspended_robot(1, 3)
+    before = solve_dgp(robot, lengths)
+    target = before.solutions[0]
+    R = rotation_matrix(target.orientation, robot.orientation)
+    reach = np.linalg.norm(robot.exits[0] - (target.position + R @ robot.anchors[0]))
+    edited = lengths.copy()
+    edited[0] = reach
+    for _ in range(abs(ulps)):
+        edited[0] = np.nextafter(edited[0], np.sign(ulps) * np.inf)
+    res = solve_dgp(robot, edited)
+    assert res.undecided == 0
+    assert len(res.solutions) == len(before.solutions)
+    border = [s for s in res.solutions if np.allclose(s.position, target.position, atol=1e-6)]
+    assert len(border) == 1
+    (sol,) = border
+    assert sol.boundary == (0, 1, 2) and sol.taut == (1, 2) and sol.tensions[0] == 0.0
+    assert sol.as_dict()["boundary"] == [0, 1, 2]
+    check_equilibrium(robot, edited, sol)
+
+
+def test_smear_bisection_does_not_starve_a_reference_point():
+    """Seed 58, 3 cables, cables 1 and 3 taut: the smear rule kept bisecting the two taut
+    anchors (widths down to 5e-4 m) while the third reference point stayed 0.4 m wide, and
+    HC4 emptied one half of every cut: 1.34 M boxes, 55 s.  The widest primary variable is
+    now cut when it is ten times wider than the smear's pick: a few hundred boxes."""
+    robot, lengths = random_suspended_robot(58, 3)
+    sols, undecided, boxes = _solve_subset((robot, lengths, (0, 2), 1e-7))
+    assert undecided == 0 and len(sols) == 3 and boxes < 20_000
+    for sol in sols:
+        check_equilibrium(robot, lengths, sol)
+
+
+def test_bisect_cuts_the_widest_when_the_smear_pick_starves():
+    lo, hi = np.zeros(3), np.array([1.0, 0.05, 0.2])
+    (_, a_hi), _ = bisect(lo, hi, score=[0.0, 1.0, 0.5], starve=10.0)
+    assert a_hi.tolist() == [0.5, 0.05, 0.2]
+    (_, a_hi), _ = bisect(lo, hi, score=[0.0, 1.0, 0.5])
+    assert a_hi.tolist() == [1.0, 0.025, 0.2]
+    (_, a_hi), _ = bisect(lo, np.array([0.3, 0.05, 0.2]), score=[0.0, 1.0, 0.5], starve=10.0)
+    assert a_hi.tolist() == [0.3, 0.025, 0.2]
