@@ -4,8 +4,6 @@ are taut's inverse kinematics, and MuJoCo's inverse dynamics at rest is taut's j
 statics: the platform rows of ``W τ + w_ext = 0`` and the joint forces ``ζ``
 (Lieskovský 2020, Eq. 3.3.12), each joint's generalised force along ``+axis``."""
 
-from pathlib import Path
-
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -16,92 +14,14 @@ from taut.geometry.rotation import rotation_matrix
 from taut.kinematics import inverse_kinematics
 from taut.kinematics.jointed import joint_forces
 from taut.kinematics.pose import body_frames
-from taut.model import load_robot, robot_from_dict, robot_to_dict
+from taut.model import robot_from_dict, robot_to_dict
 from taut.model.mjcf import joint_order, mjcf_text, pose_to_qpos, swivel_wraps_agree
 from taut.statics import distribute_tensions
 from taut.statics.wrench import external_wrench
 
 mujoco = pytest.importorskip("mujoco")
 
-SPIDERBOT = Path(__file__).parent / "fixtures" / "caspr" / "real" / "SpiderBot_UR3_bodies.xml"
-
-
-def adjustable():
-    """adjustable-8cable with assumed masses (Lieskovský 2020 gives none): a 20 kg lower body
-    and an 8 kg upper body, their centres of mass off the joint axis, with products of inertia."""
-    robot = taut.example("adjustable-8cable")
-    upper = robot.platform.bodies[0].model_copy(
-        update={"mass": 8.0, "com": (0.1, -0.05, 0.2), "inertia": (3.0, 5.0, 7.0, 0.2, -0.1, 0.3)}
-    )
-    platform = robot.platform.model_copy(
-        update={"mass": 20.0, "inertia": (9.0, 4.0, 12.0, -0.5, 0.4, 0.2), "wrench_point": (0.05, 0.1, 0.6)}
-    )
-    platform = platform.model_copy(update={"bodies": (upper,)})
-    return robot.model_copy(update={"platform": platform})
-
-
-def branching():
-    """adjustable() with two more bodies, so that the body tree branches and MuJoCo's joint
-    order (depth first) differs from taut's: ``side`` turns on the platform about a tilted
-    axis, ``tip`` slides along a tilted axis on ``upper``; cables 7 and 8 hang from them."""
-    data = robot_to_dict(adjustable())
-    data.pop("trajectories")
-    data.pop("reference")
-    data["platform"]["bodies"] += [
-        {
-            "name": "side",
-            "joint": {"kind": "revolute", "axis": [1, 2, 2], "origin": [0.3, -0.2, 0.5], "limits": [-1.2, 2.0]},
-            "mass": 3.0,
-            "com": [0.4, 0.1, -0.2],
-            "inertia": [0.5, 0.6, 0.7, 0.01, 0.02, -0.03],
-        },
-        {
-            "name": "tip",
-            "parent": "upper",
-            "joint": {"kind": "prismatic", "axis": [0.2, -0.1, 1], "origin": [0.1, 0.0, 0.3], "limits": [-0.5, 0.8]},
-            "mass": 1.5,
-            "com": [0.0, 0.2, 0.1],
-            "inertia": [0.2, 0.2, 0.3, 0.0, 0.0, 0.0],
-        },
-    ]
-    data["cables"][6]["body"] = "side"
-    data["cables"][7]["body"] = "tip"
-    return robot_from_dict(data)
-
-
-def planar():
-    """planar-4cable carrying a slider and, on it, an arm turning in the plane; cables 3 and 4
-    pull them."""
-    data = robot_to_dict(taut.example("planar-4cable"))
-    data.pop("reference")
-    data["platform"]["bodies"] = [
-        {
-            "name": "slider",
-            "joint": {"kind": "prismatic", "axis": [1, 1], "origin": [0.05, 0.0], "limits": [-0.1, 0.1]},
-            "mass": 0.4,
-            "com": [0.02, 0.01],
-            "inertia": [0.002],
-        },
-        {
-            "name": "arm",
-            "parent": "slider",
-            "joint": {"kind": "revolute", "axis": [1], "origin": [0.0, 0.04], "limits": [-2.5, 2.5]},
-            "mass": 0.3,
-            "com": [0.05, 0.0],
-            "inertia": [0.001],
-        },
-    ]
-    data["cables"][2]["body"] = "slider"
-    data["cables"][3]["body"] = "arm"
-    return robot_from_dict(data)
-
-
-ROBOTS = {
-    "adjustable-8cable": adjustable,
-    "SpiderBot_UR3": lambda: load_robot(SPIDERBOT),
-    "branching tree": branching,
-    "planar slider and arm": planar,
-}
+from jointed_robots import ROBOTS  # noqa: E402
 
 
 def random_poses(robot, n, rng, spread=0.5, tilt=0.4):
