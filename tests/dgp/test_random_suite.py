@@ -160,3 +160,23 @@ def test_bisect_cuts_the_widest_when_the_smear_pick_starves():
     assert a_hi.tolist() == [1.0, 0.025, 0.2]
     (_, a_hi), _ = bisect(lo, np.array([0.3, 0.05, 0.2]), score=[0.0, 1.0, 0.5], starve=10.0)
     assert a_hi.tolist() == [0.3, 0.025, 0.2]
+
+
+def test_border_equilibrium_through_the_cli_names_cables_from_1(taut_cli, tmp_path):
+    """The same border equilibrium from ``taut fk --json`` on the saved robot: the JSON names
+    the cables 1-based, as every cable field of the CLI does (docs/architecture.md §2.6)."""
+    robot, lengths = random_suspended_robot(1, 3)
+    target = solve_dgp(robot, lengths).solutions[0]
+    R = rotation_matrix(target.orientation, robot.orientation)
+    edited = lengths.copy()
+    edited[0] = np.linalg.norm(robot.exits[0] - (target.position + R @ robot.anchors[0]))
+    path = tmp_path / "seed1.yaml"
+    save_robot(robot, path)
+    run = taut_cli("fk", str(path), "--lengths", ",".join(repr(float(x)) for x in edited), "--json")
+    assert run.code == 0, run.err
+    data = run.json()
+    assert data["complete"] is True
+    border = [s for s in data["solutions"] if "boundary" in s]
+    assert len(border) == 1
+    assert border[0]["boundary"] == [1, 2, 3] and border[0]["taut"] == [2, 3]
+    assert border[0]["tensions"][0] == 0.0

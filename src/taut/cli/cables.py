@@ -9,7 +9,7 @@ from typing import Any
 from taut.errors import CableSetError
 
 #: Fields of the library's result dictionaries that hold cable indices.
-CABLE_FIELDS = ("taut", "slack", "length_violations")
+CABLE_FIELDS = ("taut", "slack", "length_violations", "boundary")
 
 
 def cable_indices(numbers: Iterable[int], n_cables: int, option: str) -> list[int]:

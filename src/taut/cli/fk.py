@@ -24,9 +24,11 @@ enclosure of the unknowns: the fixed-frame coordinates q1_x ... q3_z of the plat
 reference points, given in the body frame as "reference_points", and the normal n_x, n_y,
 n_z of their plane; and the taut cables' tensions, null for an unbounded side), and one
 warning line on stderr names the sub-problems.  Every equilibrium not listed lies in one of
-those boxes.
+those boxes.  An equilibrium on the border of two taut sets (a taut cable at zero tension,
+or a slack one exactly at its length) is listed once, under the smaller set, with "boundary"
+naming the larger one.
 {EXIT_STATUS}
-JSON: {{"robot", "solutions": [{{"taut", "position", "orientation", "tensions", "stable", ...}}],
+JSON: {{"robot", "solutions": [{{"taut", "position", "orientation", "tensions", "stable", "boundary"?, ...}}],
 "complete", "subproblems", "undecided_boxes", "undecided_enclosures": [{{"taut", "cause",
 "enclosure": {{name: [lo, hi]}}, "tensions": [[lo, hi], ...], "reference_points"}}], "boxes",
 "elapsed_s"}}."""
