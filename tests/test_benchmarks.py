@@ -24,7 +24,7 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
         ("bench_cli.py", ["--runs", "1"], "targets met:"),
         (
             "bench_dynamics.py",
-            ["--samples", "2000", "--loop", "20", "--seconds", "0.05"],
+            ["--samples", "2000", "--loop", "20", "--seconds", "0.5"],
             "same tensions as the statics path: True",
         ),
         (
