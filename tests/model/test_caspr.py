@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from axis_rotations import rx, ry, rz
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
@@ -23,21 +24,6 @@ from taut.statics.wrench import external_wrench
 
 FIXTURES = Path(__file__).parent / "fixtures" / "caspr"
 REAL = FIXTURES / "real"
-
-
-def rx(t: float) -> np.ndarray:
-    c, s = math.cos(t), math.sin(t)
-    return np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
-
-
-def ry(t: float) -> np.ndarray:
-    c, s = math.cos(t), math.sin(t)
-    return np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
-
-
-def rz(t: float) -> np.ndarray:
-    c, s = math.cos(t), math.sin(t)
-    return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
 
 
 def vec(el: ET.Element, path: str) -> np.ndarray:

@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from axis_rotations import rx, ry, rz
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -41,21 +42,6 @@ MODELS = {
 
 
 # ---- an independent model of CASPR's multi-link kinematics, from the raw XML -------------
-
-
-def rx(t: float) -> np.ndarray:
-    c, s = math.cos(t), math.sin(t)
-    return np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
-
-
-def ry(t: float) -> np.ndarray:
-    c, s = math.cos(t), math.sin(t)
-    return np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
-
-
-def rz(t: float) -> np.ndarray:
-    c, s = math.cos(t), math.sin(t)
-    return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
 
 
 def about(axis: np.ndarray, t: float) -> np.ndarray:
