@@ -5,12 +5,16 @@ a complete answer has no warning and exits 0 under ``--strict``."""
 
 import json
 import re
+import subprocess
+import sys
 from itertools import combinations
 
 import pytest
+from fold_robot import fold_robot
 
 from taut.cli.incomplete import NAMED, warning
 from taut.dgp.undecided import UndecidedBox
+from taut.model.io import save_robot
 
 FK = ["fk", "suspended-3cable"]
 IGP = ["igp", "suspended-3cable", "--taut", "3,1,2", "--fix", "x=2.7505,y=3.9798,z=5.5061"]
@@ -91,3 +95,37 @@ def test_the_warning_names_a_dozen_sub_problems_then_counts_the_rest():
     assert "\n" not in line and line.startswith("taut: warning: 71 boxes could not be certified (71 too narrow")
     assert len(_named_subsets(line)) == NAMED and f"and {70 - NAMED} more" in line
     assert _named_subsets(line) == {tuple(k + 1 for k in b.taut) for b in boxes[:NAMED]}
+
+
+def _fold_robot(tmp_path):
+    """``taut fk`` on the suite robot at a fold (tests/fold_robot.py), saved to a file."""
+    robot, lengths, _ = fold_robot()
+    path = tmp_path / "seed0.yaml"
+    save_robot(robot, path)
+    return ["fk", str(path), "--lengths", ",".join(repr(float(x)) for x in lengths), "--max-taut", "3"]
+
+
+def test_nearly_double_equilibria_are_certified_through_the_cli(taut_cli, tmp_path):
+    pytest.importorskip("flint")
+    run = taut_cli(*_fold_robot(tmp_path), "--json", "--strict", timeout=300)
+    assert run.code == 0 and not run.err.strip(), run.err
+    d = json.loads(run.out)
+    assert d["complete"] is True and d["undecided_enclosures"] == []
+    assert sum(s["taut"] == [1, 2, 3] for s in d["solutions"]) == 6
+
+
+def test_without_python_flint_the_warning_says_how_to_search_narrow_boxes_again(tmp_path):
+    """The same command where python-flint cannot be imported (as without the extra): the
+    narrow boxes stay undecided, and the one warning line says how to install it."""
+    hide = "import runpy, sys; sys.modules['flint'] = None; sys.argv[0] = 'taut'; runpy.run_module('taut', run_name='__main__')"
+    proc = subprocess.run(
+        [sys.executable, "-c", hide, *_fold_robot(tmp_path), "--json", "--strict"],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert proc.returncode == 3, proc.stderr
+    line = _warning(proc.stderr)
+    assert "too narrow to split" in line and "pip install 'taut[precise]'" in line
+    d = json.loads(proc.stdout)
+    assert d["complete"] is False and {b["cause"] for b in d["undecided_enclosures"]} == {"narrow"}

@@ -75,6 +75,6 @@ def test_a_box_that_reached_eps_beside_a_solution_certified_later_is_not_undecid
     solution (1.5e-8 from it, not holding it) reaches eps before the solution is certified;
     it lies in the solution's uniqueness box, so it holds no other solution."""
     robot = load_robot("teaching-prototype")
-    job = (robot, np.array(robot.reference.lengths), (1, 4, 5), 1e-7, 4, 14, None)
+    job = (robot, np.array(robot.reference.lengths), (1, 4, 5), 1e-7, 4, 14, None, True)
     sols, certs, undecided, boxes = _solve_piece(job)
     assert undecided == [] and len(certs) <= 1 and boxes > 0

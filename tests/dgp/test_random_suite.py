@@ -5,6 +5,7 @@ tensions are non-negative and balance the weight, forces and moments."""
 
 import numpy as np
 import pytest
+from fold_robot import fold_robot
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -180,3 +181,55 @@ def test_border_equilibrium_through_the_cli_names_cables_from_1(taut_cli, tmp_pa
     assert len(border) == 1
     assert border[0]["boundary"] == [1, 2, 3] and border[0]["taut"] == [2, 3]
     assert border[0]["tensions"][0] == 0.0
+
+
+def reference_unknowns(robot, sol, points):
+    """The fixed-frame coordinates of an undecided box's reference points at ``sol``."""
+    R = rotation_matrix(sol.orientation, robot.orientation)
+    return (sol.position + np.asarray(points) @ R.T).ravel()
+
+
+def test_nearly_double_equilibria_are_resolved_in_multiprecision():
+    """Two equilibria 1e-4 apart (metres and radians: a near-double root): the double-precision search leaves
+    boxes too narrow to split around them, and certifies neither; searched again in 256-bit arb balls with the
+    system's exact rational constants, both are certified and the result is complete.
+
+    Independent check: 1e-6 further from the fold (relative), where the pair is 3e-2 apart,
+    the double search alone is complete; the equilibria move continuously and none appears
+    or vanishes in between, so the two lists pair up one to one, within 0.05."""
+    pytest.importorskip("flint")
+    robot, lengths, base = fold_robot()
+    double = solve_dgp(robot, lengths, max_taut=3, multiprecision=False)
+    res = solve_dgp(robot, lengths, max_taut=3)
+    assert not double.complete and {u.cause for u in double.undecided_enclosures} == {"narrow"}
+    assert res.complete
+    for sol in res.solutions:
+        check_equilibrium(robot, lengths, sol)
+    full = np.array([np.r_[s.position, s.orientation] for s in res.solutions if len(s.taut) == 3])
+    gaps = np.linalg.norm(full[:, None] - full[None], axis=-1) + np.diag(np.full(len(full), np.inf))
+    assert len(full) == 6 and gaps.min() < 1e-3
+
+    farther = base.copy()
+    farther[0] = lengths[0] * (1 + 1e-6)
+    ref = solve_dgp(robot, farther, max_taut=3, multiprecision=False)
+    assert ref.complete and len(ref.solutions) == len(res.solutions)
+    near = np.array([np.r_[s.position, s.orientation] for s in res.solutions])
+    far = np.array([np.r_[s.position, s.orientation] for s in ref.solutions])
+    dist = np.linalg.norm(near[:, None] - far[None], axis=-1)
+    assert sorted(dist.argmin(axis=1).tolist()) == list(range(len(far))) and dist.min(axis=1).max() < 0.05
+
+    # what the double search missed (the pair) lies in its undecided boxes
+    missed = 0
+    for sol in res.solutions:
+        if any(
+            np.allclose(np.r_[sol.position, sol.orientation], np.r_[d.position, d.orientation], atol=1e-9)
+            for d in double.solutions
+        ):
+            continue
+        missed += 1
+        boxes = [u for u in double.undecided_enclosures if u.taut == sol.taut]
+        q = [reference_unknowns(robot, sol, u.points) for u in boxes]
+        assert any(
+            np.all(x >= np.array(u.lo) - 1e-12) and np.all(x <= np.array(u.hi) + 1e-12) for x, u in zip(q, boxes)
+        )
+    assert missed == 6 - len([s for s in double.solutions if len(s.taut) == 3]) > 0

@@ -16,9 +16,11 @@ from taut.cli.progress import progress_bar, wanted
 from taut.errors import TautError
 
 HELP = f"""All equilibrium poses of the platform for given cable lengths, every one certified
-(interval branch-and-prune, Krawczyk).  A box that could be neither discarded nor certified
-(too small to split: a near-singular solution; or left when the --max-boxes budget ran out)
-is undecided: the list of equilibria is then possibly incomplete, JSON "complete" is false,
+(interval branch-and-prune, Krawczyk).  A box double precision leaves too small to split
+(a double or nearly double solution) is searched again in 256-bit balls when python-flint is
+installed (pip install 'taut[precise]').  A box that could be neither discarded nor
+certified (too small to split even so; or left when the --max-boxes budget ran out) is
+undecided: the list of equilibria is then possibly incomplete, JSON "complete" is false,
 "undecided_enclosures" holds every such box (its sub-problem's taut cables, the cause, the
 enclosure of the unknowns: the fixed-frame coordinates q1_x ... q3_z of the platform's
 reference points, given in the body frame as "reference_points", and the normal n_x, n_y,
@@ -66,7 +68,7 @@ def cmd_fk(ns: argparse.Namespace) -> int:
         from taut.viz.dgp import plot_equilibria
 
         save_figure(plot_equilibria(robot, res.solutions), plot, data)
-    status = report(res.undecided_enclosures, "equilibria", ns.strict)
+    status = report(res.undecided_enclosures, "equilibria", ns.strict, multiprecision_hint=True)
 
     def human(d: dict) -> None:
         from rich.table import Table

@@ -50,9 +50,11 @@ def enclosures(boxes: Sequence[UndecidedBox]) -> list[dict]:
     return [numbered(b.as_dict()) for b in boxes]
 
 
-def warning(boxes: Sequence[UndecidedBox], what: str) -> str:
+def warning(boxes: Sequence[UndecidedBox], what: str, multiprecision_hint: bool = False) -> str:
     """The one warning line of an incomplete answer: how many boxes, why, and the taut sets
-    (1-based, in first-seen order, the first :data:`NAMED`) of the sub-problems they belong to."""
+    (1-based, in first-seen order, the first :data:`NAMED`) of the sub-problems they belong to.
+    ``multiprecision_hint``: the search would try narrow boxes again with python-flint, so
+    say how to install it when it is missing."""
     subsets = list(dict.fromkeys(b.taut for b in boxes))
     names = ", ".join("{" + ",".join(map(str, cable_numbers(t))) + "}" for t in subsets[:NAMED])
     if len(subsets) > NAMED:
@@ -61,6 +63,11 @@ def warning(boxes: Sequence[UndecidedBox], what: str) -> str:
     for b in boxes:
         causes[b.cause] += 1
     why = ", ".join(f"{k} {CAUSE_TEXT[c]}" for c, k in causes.items() if k)
+    if causes["narrow"] and multiprecision_hint:
+        from taut.interval.precise import available
+
+        if not available():
+            why += "; pip install 'taut[precise]' searches them again in multi-precision"
     noun = "box" if len(boxes) == 1 else "boxes"
     where = "sub-problem" if len(subsets) == 1 else "sub-problems"
     return (
@@ -69,10 +76,10 @@ def warning(boxes: Sequence[UndecidedBox], what: str) -> str:
     )
 
 
-def report(boxes: Sequence[UndecidedBox], what: str, strict: bool) -> int:
+def report(boxes: Sequence[UndecidedBox], what: str, strict: bool, multiprecision_hint: bool = False) -> int:
     """Print the warning of an incomplete answer (nothing when ``boxes`` is empty) and
     return the exit status."""
     if not boxes:
         return 0
-    print(warning(boxes, what), file=sys.stderr)
+    print(warning(boxes, what, multiprecision_hint), file=sys.stderr)
     return INCOMPLETE if strict else 0

@@ -223,11 +223,12 @@ def _reference_choice(robot: Robot, taut: tuple[int, ...], gp: np.ndarray) -> tu
 
 
 def _enclose(x: Fraction) -> Expr:
-    """The constant ``x`` (exact rational) as the tightest float interval holding it."""
+    """The constant ``x`` (exact rational) as the tightest float interval holding it; the
+    rational rides along for :mod:`taut.interval.precise`."""
     f = float(x)  # correctly rounded
     if Fraction(f) == x:
         return const(f)
-    return const(float(np.nextafter(f, -np.inf)), float(np.nextafter(f, np.inf)))
+    return const(float(np.nextafter(f, -np.inf)), float(np.nextafter(f, np.inf)), exact=x)
 
 
 def _exact(v: npt.ArrayLike) -> list[Fraction]:

@@ -37,6 +37,7 @@ from taut.dgp.stability import is_stable
 from taut.dgp.undecided import UndecidedBox, cause_of, subproblem_box
 from taut.errors import TautError
 from taut.geometry.rotation import angles_from_matrix
+from taut.interval import precise
 from taut.interval.branch_prune import Box, bisect, branch_and_prune, same_solution
 from taut.interval.hc4 import contract
 from taut.interval.krawczyk import Certificate
@@ -185,14 +186,14 @@ PIECE_BOXES = 2_000_000
 
 #: A job of :func:`solve_dgp`: robot, lengths, taut cables (0-based), eps, split, piece,
 #: box budget of the sub-problem (None: :data:`PIECE_BOXES` per piece).
-Job = tuple[Robot, np.ndarray, tuple[int, ...], float, int, int, int | None]
+Job = tuple[Robot, np.ndarray, tuple[int, ...], float, int, int, int | None, bool]
 
 
 def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], list[UndecidedBox], int]:
     """One job of :func:`solve_dgp`: the sub-problem of ``taut`` on piece ``k`` of
     ``pieces`` of its domain, with an equal share of the sub-problem's box budget.
     Returns ``(solutions, certificates, undecided boxes, boxes)``."""
-    robot, lengths, taut, eps, split, k, budget = job
+    robot, lengths, taut, eps, split, k, budget, multiprecision = job
     n = robot.n_cables
     a, r = robot.exits, robot.anchors
     _, _, gp = load(robot)
@@ -236,9 +237,13 @@ def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None],
         max_boxes=PIECE_BOXES if budget is None else -(-budget // len(pieces)),
         starve=STARVE,
     )
-    undecided = [subproblem_box(sp, lengths, blo, bhi, cause_of(blo, bhi, eps)) for blo, bhi in res.undecided]
+    found = [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]
+    left = [(blo, bhi, cause_of(blo, bhi, eps)) for blo, bhi in res.undecided]
+    if multiprecision and any(cause == "narrow" for *_, cause in left) and precise.available():
+        found, left = _resolve_narrow(sp, found, left)
+    undecided = [subproblem_box(sp, lengths, blo, bhi, cause) for blo, bhi, cause in left]
     certs: list[Certificate | None] = []
-    for c, border in [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]:
+    for c, border in found:
         if sp.tension_unknowns:
             t_lo, t_hi = c.lo[sp.pose_unknowns :], c.hi[sp.pose_unknowns :]
         else:
@@ -273,6 +278,34 @@ def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None],
     return out, certs, undecided, res.boxes
 
 
+def _resolve_narrow(
+    sp: Subproblem, found: list[tuple[Certificate, bool]], left: list[tuple[np.ndarray, np.ndarray, str]]
+) -> tuple[list[tuple[Certificate, bool]], list[tuple[np.ndarray, np.ndarray, str]]]:
+    """The boxes double precision left too narrow to bisect (a singular or nearly double
+    solution), searched again in multi-precision balls (:mod:`taut.interval.precise`).
+    Each is widened by :data:`NARROW_PAD` of its width, so that a root on a face two of them
+    share is inside one; a root the margin takes from a decided neighbour is one this
+    piece certified already, reported once by :func:`solve_dgp`.  Returns the certificates
+    and the boxes still undecided."""
+    found = list(found)
+    still = []
+    for blo, bhi, cause in left:
+        if cause != "narrow":
+            still.append((blo, bhi, cause))
+            continue
+        pad = NARROW_PAD * (bhi - blo)
+        res = precise.solve_precise(
+            sp.system, np.nextafter(blo - pad, -np.inf), np.nextafter(bhi + pad, np.inf), domain=(sp.lo, sp.hi)
+        )
+        found += [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]
+        still += [(ulo, uhi, "narrow") for ulo, uhi in res.undecided]
+    return found, still
+
+
+#: Relative margin by which :func:`_resolve_narrow` widens a narrow box.
+NARROW_PAD = 0.01
+
+
 def _reach(c: Certificate) -> float:
     """How far a slack cable's reach may be from its length for the solution certified by
     ``c`` to count as on the border of that cable's taut subset: the certificate box's
@@ -284,7 +317,7 @@ def _reach(c: Certificate) -> float:
 def _solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple[list[DGPSolution], int, int]:
     """The whole sub-problem of ``taut``: ``(solutions, number of undecided boxes, boxes)``."""
     robot, lengths, taut, eps = job
-    sols, _, undecided, boxes = _solve_piece((robot, lengths, taut, eps, 0, 0, None))
+    sols, _, undecided, boxes = _solve_piece((robot, lengths, taut, eps, 0, 0, None, True))
     return sols, len(undecided), boxes
 
 
@@ -322,6 +355,7 @@ def solve_dgp(
     split: int | None = None,
     max_boxes: int | None = None,
     progress: Callable[[int, int | None], None] | None = None,
+    multiprecision: bool = True,
 ) -> DGPResult:
     """All admissible equilibria (``τ ≥ 0``) for the cable lengths (default: the robot's
     ``reference.lengths``), each with its stability flag and certificate.
@@ -338,7 +372,10 @@ def solve_dgp(
     ``max_boxes``: the box budget of every sub-problem, shared equally by its pieces (by
     default :data:`PIECE_BOXES` per piece); the boxes left when it runs out are undecided.
     ``progress(done, total)`` is called with the number of jobs done (pieces of
-    sub-problems) out of all of them, from 0 to the total.
+    sub-problems) out of all of them, from 0 to the total.  ``multiprecision``: the boxes
+    double precision leaves too narrow to bisect (a singular or nearly double solution) are
+    searched again in multi-precision balls when python-flint is installed
+    (:mod:`taut.interval.precise`); without it, or with ``False``, they stay undecided.
 
     The result is :attr:`~DGPResult.complete` when no box was left undecided; otherwise
     every equilibrium it does not list lies in one of its
@@ -375,7 +412,7 @@ def solve_dgp(
     t0 = time.perf_counter()
     subsets = [taut for m in range(top, 0, -1) for taut in combinations(range(n), m)]
     jobs = [
-        (robot, checked, taut, eps, split if len(taut) >= 3 else 0, k, max_boxes)
+        (robot, checked, taut, eps, split if len(taut) >= 3 else 0, k, max_boxes, multiprecision)
         for taut in subsets
         for k in range(2**split if len(taut) >= 3 else 1)
     ]

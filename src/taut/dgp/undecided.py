@@ -6,7 +6,8 @@ domain the search gave up on: any solution of that sub-problem with positive ten
 the result does not list lies in one of its undecided boxes (one with a zero tension belongs
 to the sub-problem of the other taut cables, :mod:`taut.dgp.solve`).  A box is left undecided for one of four causes
 (:data:`CAUSES`): it became narrower than the bisection threshold without being discarded
-or certified (a singular or nearly double solution); it was still waiting when the box
+or certified (a singular or nearly double solution; the direct problem searches such boxes
+again in multi-precision, :mod:`taut.interval.precise`, and keeps what that cannot decide); it was still waiting when the box
 budget ran out; it holds a certified solution whose tensions' signs could not be decided;
 or it holds a certified solution on the search domain's bound that borders no other taut
 subset.
@@ -30,7 +31,8 @@ if TYPE_CHECKING:
     from taut.dgp.formulation import Subproblem
 
 #: Why a box is undecided: ``"narrow"`` — below the bisection threshold, neither discarded
-#: nor certified; ``"budget"`` — not yet processed when the box budget ran out;
+#: nor certified, in double precision and then (for the direct problem, with python-flint) in
+#: multi-precision balls: a double root, or roots closer than those can separate; ``"budget"`` — not yet processed when the box budget ran out;
 #: ``"tension-sign"`` — a certified solution whose tensions' signs are not decided;
 #: ``"domain-border"`` — a certified solution straddling the search domain's bound where no
 #: cable is slack at its length (not the border of two taut subsets).

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from fractions import Fraction
 
 import numpy as np
 
@@ -35,11 +36,20 @@ VAR, CONST, ADD, SUB, MUL, NEG, SQR, POW, SQRT, DIV = range(10)
 class Expr:
     """A node of a polynomial expression; build with :func:`variables` and :func:`const`."""
 
-    __slots__ = ("op", "args", "index", "lo", "hi")
+    __slots__ = ("op", "args", "index", "lo", "hi", "exact")
     __array_priority__ = 1000
 
-    def __init__(self, op: int, args: Iterable[Expr] = (), index: int = 0, lo: float = 0.0, hi: float = 0.0) -> None:
+    def __init__(
+        self,
+        op: int,
+        args: Iterable[Expr] = (),
+        index: int = 0,
+        lo: float = 0.0,
+        hi: float = 0.0,
+        exact: Fraction | None = None,
+    ) -> None:
         self.op, self.args, self.index, self.lo, self.hi = op, tuple(args), int(index), float(lo), float(hi)
+        self.exact = exact
 
     def is_const(self, value: float | None = None) -> bool:
         return self.op == CONST and (value is None or (self.lo == value and self.hi == value))
@@ -84,7 +94,7 @@ class Expr:
 
     def __neg__(self) -> Expr:
         if self.op == CONST:
-            return Expr(CONST, lo=-self.hi, hi=-self.lo)
+            return Expr(CONST, lo=-self.hi, hi=-self.lo, exact=None if self.exact is None else -self.exact)
         return Expr(NEG, (self,))
 
     def __pow__(self, n: int) -> Expr:
@@ -110,9 +120,11 @@ class Expr:
         return f"{fn}({self.args[0]!r})"
 
 
-def const(lo: float, hi: float | None = None) -> Expr:
-    """The constant interval ``[lo, hi]`` (``[lo, lo]`` for a float)."""
-    return Expr(CONST, lo=lo, hi=lo if hi is None else hi)
+def const(lo: float, hi: float | None = None, exact: Fraction | None = None) -> Expr:
+    """The constant interval ``[lo, hi]`` (``[lo, lo]`` for a float); ``exact``: the rational
+    it encloses, when it is known (the multi-precision solver of :mod:`taut.interval.precise`
+    evaluates it, not the float interval)."""
+    return Expr(CONST, lo=lo, hi=lo if hi is None else hi, exact=exact)
 
 
 def _coerce(x: Expr | float) -> Expr:
@@ -225,6 +237,9 @@ class Tape:
     end: np.ndarray
     blo: np.ndarray  #: (constraints,) bounds on the constraint value
     bhi: np.ndarray
+    #: (nodes,) the exact rational of a CONST node whose float interval only encloses it,
+    #: else None
+    exact: tuple[Fraction | None, ...] = ()
 
     @property
     def arrays(
@@ -255,6 +270,7 @@ def compile_tape(exprs: Iterable[Expr | float], bounds: Sequence[tuple[float, ..
     products many times over)."""
     op: list[int]
     op, a, b, clo, chi, start, end = [], [], [], [], [], [], []
+    exact: list[Fraction | None] = []
     index: dict = {}
     keep: list[Expr] = []  # an id is a key only while its object lives
     for e in exprs:
@@ -267,7 +283,7 @@ def compile_tape(exprs: Iterable[Expr | float], bounds: Sequence[tuple[float, ..
                 return index[k]
             kids = [emit(c) for c in node.args]
             keep.append(node)
-            form = (node.op, tuple(kids), node.index, node.lo, node.hi)
+            form = (node.op, tuple(kids), node.index, node.lo, node.hi, node.exact)
             if form in index:
                 index[k] = index[form]
                 return index[k]
@@ -283,6 +299,7 @@ def compile_tape(exprs: Iterable[Expr | float], bounds: Sequence[tuple[float, ..
                 b.append(kids[1] if len(kids) > 1 else 0)
             clo.append(node.lo)
             chi.append(node.hi)
+            exact.append(node.exact)
             index[k] = index[form] = len(op) - 1
             return index[k]
 
@@ -294,6 +311,7 @@ def compile_tape(exprs: Iterable[Expr | float], bounds: Sequence[tuple[float, ..
             b.extend([0, 0])
             clo.extend([0.0, 0.0])
             chi.extend([0.0, 0.0])
+            exact.extend([None, None])
         end.append(len(op))
     bl = np.array([lo for lo, _ in bounds], dtype=np.float64)
     bh = np.array([hi for _, hi in bounds], dtype=np.float64)
@@ -307,6 +325,7 @@ def compile_tape(exprs: Iterable[Expr | float], bounds: Sequence[tuple[float, ..
         np.array(end, np.int64),
         bl,
         bh,
+        tuple(exact),
     )
 
 
