@@ -10,8 +10,13 @@ robot is also solved by ``bertini2`` (see ``_bertini.py``; 4096 paths, 10–20 m
 on a shared core: pick a few robots, e.g. ``--three 3 --four 0 --six 0 --eight 0 --peer``):
 both counts of real equilibria with non-negative tensions are printed, and any disagreement.
 
+With ``--fold``, a suite robot at a fold (seed 0, 3 cables, cable 1 lengthened by
+:data:`FOLD_SIDE`, 7e-11 past the length where two equilibria appear): solved in double
+precision alone, which leaves boxes too narrow to split around the nearly double pair, and
+with the boxes searched again in multi-precision (python-flint, ``taut[precise]``).
+
     python benchmarks/bench_dgp_random.py [--three N] [--four N] [--six N] [--eight N]
-                                          [--max-taut K] [--first SEED] [--peer]
+                                          [--max-taut K] [--first SEED] [--peer] [--fold]
 """
 
 import argparse
@@ -27,6 +32,7 @@ from taut.model.random_robots import random_suspended_robot
 
 EPS = 1e-7  # solve_dgp's default box width
 RATIO_TARGET = 5.0  # worst / median time of the 3-cable suite (issue 21)
+FOLD_SIDE = 1.0353778044866666  # the factor of tests/fold_robot.py
 
 
 def suite(ns):
@@ -71,6 +77,21 @@ def peer(cases, mptype):
     print(f"bertini2 {bertini.__version__} ({mptype} precision): {disagreements} disagreement(s)")
 
 
+def fold():
+    robot, lengths = random_suspended_robot(0, 3)
+    lengths = lengths.copy()
+    lengths[0] *= FOLD_SIDE
+    for label, multiprecision in (("double precision alone", False), ("with multi-precision", True)):
+        t0 = time.perf_counter()
+        res = solve_dgp(robot, lengths, max_taut=3, multiprecision=multiprecision)
+        t = time.perf_counter() - t0
+        full = sum(len(s.taut) == 3 for s in res.solutions)
+        print(
+            f"fold robot, {label}: {full} all-taut equilibria of {len(res.solutions)}, "
+            f"{res.undecided} undecided ({'complete' if res.complete else 'incomplete'}), {t:.2f} s"
+        )
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--three", type=int, default=20, help="3-cable robots")
@@ -81,6 +102,9 @@ def main():
     ap.add_argument("--first", type=int, default=0, help="first seed")
     ap.add_argument("--peer", action="store_true", help="also bertini2 on each 3-cable all-taut sub-problem")
     ap.add_argument("--peer-mptype", choices=("double", "adaptive"), default="double")
+    ap.add_argument(
+        "--fold", action="store_true", help="also the suite robot at a fold, with and without multi-precision"
+    )
     ns = ap.parse_args()
     cases = suite(ns)
     # load the Numba kernels outside the timing
@@ -113,6 +137,8 @@ def main():
         print(f"3-cable worst/median: {ratio:.1f}x (target <= {RATIO_TARGET:g}x)")
     if ns.peer:
         peer(cases, ns.peer_mptype)
+    if ns.fold:
+        fold()
 
 
 if __name__ == "__main__":

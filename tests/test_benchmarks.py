@@ -32,6 +32,12 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
             ["--first", "1", "--three", "2", "--four", "0", "--six", "1", "--eight", "0"],
             "undecided boxes over the suite: 0",
         ),
+        pytest.param(
+            "bench_dgp_random.py",
+            ["--three", "0", "--four", "0", "--six", "0", "--eight", "0", "--fold"],
+            "fold robot, with multi-precision: 6 all-taut equilibria",
+            marks=pytest.mark.slow,
+        ),
         pytest.param("bench_dgp.py", [], "6 solutions (1 stable)", marks=pytest.mark.slow),
         pytest.param(
             "bench_dgp.py",
