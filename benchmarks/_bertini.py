@@ -10,7 +10,7 @@ from fractions import Fraction
 import _common  # noqa: F401  (first: it pins the thread pools to one core)
 import numpy as np
 
-from taut.dgp.formulation import _reference_choice, load
+from taut.dgp.formulation import load, reference_choice
 from taut.geometry.rotation import rotation_matrix
 
 ALL_TAUT = (0, 1, 2)
@@ -49,7 +49,7 @@ def bertini_system(bertini, robot, lengths, taut):
 
     a, r = robot.exits, robot.anchors
     f, mext, gp = load(robot)
-    labels, refs = _reference_choice(robot, taut, gp)
+    labels, refs = reference_choice(robot, taut, gp)
     qv = [bertini.Variable(f"q{s}{k}") for s in range(3) for k in range(3)]
     tv = [bertini.Variable(f"t{i}") for i in taut]
     q = [qv[0:3], qv[3:6], qv[6:9]]
@@ -111,7 +111,7 @@ def matching(robot, lengths, taut_solutions, endpoints, taut=ALL_TAUT):
     """How many of taut's solutions one of the peer's endpoints reproduces (reference points
     and scaled tensions within ``MATCH_TOL``)."""
     _, _, gp = load(robot)
-    _, refs = _reference_choice(robot, taut, gp)
+    _, refs = reference_choice(robot, taut, gp)
     idx = list(taut)
     xs = [
         np.concatenate(

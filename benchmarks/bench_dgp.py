@@ -23,7 +23,7 @@ from _bertini import ALL_TAUT, import_bertini, matching, run_bertini
 from _common import best_of  # pins the thread pools to one core
 
 from taut.dgp import solve_dgp
-from taut.dgp.solve import _solve_subset
+from taut.dgp.solve import solve_subset
 from taut.model import load_robot
 from taut.parallel import get_executor
 
@@ -42,7 +42,7 @@ def peer(robot, repeat, mptype):
     if bertini is None:
         return
     lengths = np.asarray(robot.reference.lengths, float)
-    t_taut, (sols, _, _) = best_of(lambda: _solve_subset((robot, lengths, ALL_TAUT, EPS)), repeat)
+    t_taut, (sols, _, _) = best_of(lambda: solve_subset((robot, lengths, ALL_TAUT, EPS)), repeat)
     t_peer, endpoints, n_finite, n_paths = run_bertini(bertini, robot, lengths, mptype)
     print(
         f"bertini2: {len(endpoints)} real solutions with non-negative tensions (of {n_finite} finite endpoints; "

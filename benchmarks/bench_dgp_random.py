@@ -27,7 +27,7 @@ import numpy as np
 from _bertini import ALL_TAUT, import_bertini, matching, run_bertini
 
 from taut.dgp import solve_dgp
-from taut.dgp.solve import _solve_subset
+from taut.dgp.solve import solve_subset
 from taut.model.random_robots import random_suspended_robot
 
 EPS = 1e-7  # solve_dgp's default box width
@@ -64,7 +64,7 @@ def peer(cases, mptype):
         if n != 3:
             continue
         robot, lengths = random_suspended_robot(seed, n)
-        sols, undecided, _ = _solve_subset((robot, lengths, ALL_TAUT, EPS))
+        sols, undecided, _ = solve_subset((robot, lengths, ALL_TAUT, EPS))
         t_peer, endpoints, n_finite, n_paths = run_bertini(bertini, robot, lengths, mptype)
         found = matching(robot, lengths, sols, endpoints)
         agree = len(endpoints) == len(sols) == found and undecided == 0

@@ -120,3 +120,14 @@ def test_private_use_is_detected():
         ("taut.interval.kernels", "_y"),
         ("taut.geometry.rotation", "_z"),
     ]
+
+
+ROOT = SRC.parents[1]
+USERS = sorted([*(ROOT / "tests").rglob("*.py"), *(ROOT / "benchmarks").glob("*.py")])
+
+
+@pytest.mark.parametrize("path", USERS, ids=[str(p.relative_to(ROOT)) for p in USERS])
+def test_tests_and_benchmarks_use_no_private_name(path):
+    """Tests and benchmarks use taut as its users do: through public names only."""
+    used = sorted({f"{m}.{n}" for m, n in _private_uses("", path.read_text())})
+    assert not used, f"{path.relative_to(ROOT)} uses private names of taut: {used}"

@@ -5,7 +5,7 @@ from itertools import combinations
 import numpy as np
 import pytest
 
-from taut.dgp.solve import _solve_subset
+from taut.dgp.solve import solve_subset
 from taut.parallel import get_executor
 
 
@@ -18,7 +18,7 @@ def solve_subsets():
         lengths = np.array(robot.reference.lengths)
         subsets = list(combinations(range(robot.n_cables), m))
         with get_executor(workers=workers) as ex:
-            parts = ex.map(_solve_subset, [(robot, lengths, taut, 1e-7) for taut in subsets])
+            parts = ex.map(solve_subset, [(robot, lengths, taut, 1e-7) for taut in subsets])
         return {taut: (sols, und) for taut, (sols, und, _) in zip(subsets, parts)}
 
     return run

@@ -7,7 +7,7 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from taut.dgp.formulation import _coordinates, _enclose, _exact_cross, build_subproblem
+from taut.dgp.formulation import build_subproblem, exact_cross, rational_constant, secondary_coordinates
 from taut.geometry.rotation import rotation_matrix
 from taut.interval.expression import CONST
 from taut.interval.hc4 import evaluate_point
@@ -20,7 +20,7 @@ point = st.tuples(coord, coord, coord)
 @settings(max_examples=200, deadline=None)
 @given(st.fractions(min_value=-1e6, max_value=1e6, max_denominator=10**12))
 def test_enclosure_holds_the_rational_and_is_at_most_two_ulps(x):
-    e = _enclose(x)
+    e = rational_constant(x)
     assert e.op == CONST
     assert Fraction(e.lo) <= x <= Fraction(e.hi)
     assert e.hi <= np.nextafter(np.nextafter(e.lo, np.inf), np.inf)
@@ -33,11 +33,11 @@ def test_secondary_point_coordinates_are_exact(r0, r1, r2, body):
     e1, e2 = refs[1] - refs[0], refs[2] - refs[0]
     if np.linalg.norm(np.cross(e1, e2)) < 1e-3:
         return  # collinear reference points are refused before this is called
-    beta = _coordinates(refs, np.array(body))
+    beta = secondary_coordinates(refs, np.array(body))
     R = [[Fraction(float(c)) for c in p] for p in (r0, r1, r2)]
     c1 = [R[1][k] - R[0][k] for k in range(3)]
     c2 = [R[2][k] - R[0][k] for k in range(3)]
-    c3 = _exact_cross(c1, c2)
+    c3 = exact_cross(c1, c2)
     rebuilt = [R[0][k] + beta[0] * c1[k] + beta[1] * c2[k] + beta[2] * c3[k] for k in range(3)]
     assert rebuilt == [Fraction(float(c)) for c in body]
 
@@ -46,7 +46,7 @@ def test_coplanar_anchors_have_no_normal_component():
     robot = load_robot("teaching-prototype")  # all platform anchors at z' = 0.025
     refs = robot.anchors[:3]
     for body in robot.anchors[3:]:
-        assert _coordinates(refs, body)[2] == 0
+        assert secondary_coordinates(refs, body)[2] == 0
 
 
 def test_every_constant_node_encloses_a_float_or_two_neighbours():

@@ -7,7 +7,7 @@ import pytest
 
 from taut.dgp import solve_dgp
 from taut.dgp.formulation import build_subproblem
-from taut.dgp.solve import _PREPARED_SIZE, _pieces, _prepared, _solve_piece
+from taut.dgp.solve import PREPARED_SIZE, domain_pieces, prepared_subproblem, solve_piece
 from taut.errors import TautError
 from taut.geometry.rotation import rotation_matrix
 from taut.interval.branch_prune import same_solution
@@ -28,7 +28,7 @@ TABLE_4_3 = [  # poses and tensions of Conf. 1-6 (see test_table_4_3.py)
 
 def test_pieces_hold_every_solution_and_do_not_overlap():
     sp = build_subproblem(ROBOT, LENGTHS, (0, 1, 2))
-    pieces = _pieces(sp, 3)
+    pieces = domain_pieces(sp, 3)
     assert len(pieces) == 8
     for i, (alo, ahi) in enumerate(pieces):
         assert np.all(alo >= sp.lo) and np.all(ahi <= sp.hi)
@@ -42,18 +42,18 @@ def test_pieces_hold_every_solution_and_do_not_overlap():
 
 def test_lengths_no_pose_fits_give_no_piece():
     sp = build_subproblem(ROBOT, np.array([1.0, 1.0, 1.0]), (0, 1, 2))  # exits 10 m apart
-    assert _pieces(sp, 3) == []
+    assert domain_pieces(sp, 3) == []
 
 
 def test_a_process_builds_each_sub_problem_once_for_all_its_pieces():
-    sp, pieces = _prepared(ROBOT, LENGTHS, (0, 1, 2), 3)
-    assert _prepared(ROBOT, LENGTHS, (0, 1, 2), 3)[0] is sp
+    sp, pieces = prepared_subproblem(ROBOT, LENGTHS, (0, 1, 2), 3)
+    assert prepared_subproblem(ROBOT, LENGTHS, (0, 1, 2), 3)[0] is sp
     assert len(pieces) == 8
-    other = _prepared(ROBOT, LENGTHS * 1.01, (0, 1, 2), 3)[0]  # other lengths: another system
+    other = prepared_subproblem(ROBOT, LENGTHS * 1.01, (0, 1, 2), 3)[0]  # other lengths: another system
     assert other is not sp and not np.array_equal(other.system.tape.bhi, sp.system.tape.bhi)
-    for k in range(_PREPARED_SIZE):  # the cache stays bounded: the oldest entries go
-        _prepared(ROBOT, LENGTHS * (1.0 + 1e-3 * k), (0, 1), 0)
-    assert _prepared(ROBOT, LENGTHS, (0, 1, 2), 3)[0] is not sp
+    for k in range(PREPARED_SIZE):  # the cache stays bounded: the oldest entries go
+        prepared_subproblem(ROBOT, LENGTHS * (1.0 + 1e-3 * k), (0, 1), 0)
+    assert prepared_subproblem(ROBOT, LENGTHS, (0, 1, 2), 3)[0] is not sp
 
 
 def test_same_solution_by_certified_box_or_uniqueness_radius():
@@ -76,5 +76,5 @@ def test_a_box_that_reached_eps_beside_a_solution_certified_later_is_not_undecid
     it lies in the solution's uniqueness box, so it holds no other solution."""
     robot = load_robot("teaching-prototype")
     job = (robot, np.array(robot.reference.lengths), (1, 4, 5), 1e-7, 4, 14, None, True)
-    sols, certs, undecided, boxes = _solve_piece(job)
+    sols, certs, undecided, boxes = solve_piece(job)
     assert undecided == [] and len(certs) <= 1 and boxes > 0

@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from taut.dgp import solve_dgp
-from taut.dgp.solve import _solve_subset
+from taut.dgp.solve import solve_subset
 from taut.errors import TautError
 from taut.geometry.rotation import rotation_matrix
 from taut.interval.branch_prune import bisect
@@ -147,7 +147,7 @@ def test_smear_bisection_does_not_starve_a_reference_point():
     HC4 emptied one half of every cut: 1.34 M boxes, 55 s.  The widest primary variable is
     now cut when it is ten times wider than the smear's pick: a few hundred boxes."""
     robot, lengths = random_suspended_robot(58, 3)
-    sols, undecided, boxes = _solve_subset((robot, lengths, (0, 2), 1e-7))
+    sols, undecided, boxes = solve_subset((robot, lengths, (0, 2), 1e-7))
     assert undecided == 0 and len(sols) == 3 and boxes < 20_000
     for sol in sols:
         check_equilibrium(robot, lengths, sol)

@@ -10,9 +10,9 @@ import pytest
 
 from taut.dgp import solve_dgp
 from taut.dgp.formulation import build_subproblem
-from taut.dgp.solve import _solve_subset
+from taut.dgp.solve import solve_subset
 from taut.geometry.rotation import rotation_matrix
-from taut.interval.branch_prune import BranchAndPruneResult, _file
+from taut.interval.branch_prune import BranchAndPruneResult, file_certificate
 from taut.interval.krawczyk import certify
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
@@ -33,7 +33,7 @@ def _close(values, printed, atol):
 
 @pytest.mark.slow
 def test_table_4_5_six_taut_cables():
-    sols, undecided, boxes = _solve_subset((ROBOT, LENGTHS, tuple(range(6)), 1e-7))
+    sols, undecided, boxes = solve_subset((ROBOT, LENGTHS, tuple(range(6)), 1e-7))
     assert undecided == 0 and boxes > 0 and len(sols) == 3
     for pose, tensions in TABLE:
         match = [s for s in sols if _close(np.r_[s.position, s.orientation], pose, 2e-3)]
@@ -108,5 +108,5 @@ def test_table_4_5_conf_4_stretches_its_slack_cable():
     span = inverse_kinematics(ROBOT, np.r_[p, ang]).lengths
     assert span[3] - LENGTHS[3] == pytest.approx(1.26e-3, abs=1e-5)
     filed = BranchAndPruneResult()
-    assert not _file(sp.system, cert, sp.lo, sp.hi, filed)
+    assert not file_certificate(sp.system, cert, sp.lo, sp.hi, filed)
     assert filed.solutions == [] and filed.boundary == []

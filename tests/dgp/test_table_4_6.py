@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from taut.dgp import solve_dgp
-from taut.dgp.solve import _solve_subset
+from taut.dgp.solve import solve_subset
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
 
@@ -27,7 +27,7 @@ TABLE = [  # Conf. 1-2 (m = 6): pose, tensions
 
 @pytest.mark.slow
 def test_table_4_6_six_taut_cables():
-    sols, undecided, boxes = _solve_subset((ROBOT, LENGTHS, tuple(range(6)), 1e-7))
+    sols, undecided, boxes = solve_subset((ROBOT, LENGTHS, tuple(range(6)), 1e-7))
     assert undecided == 0 and boxes > 0 and len(sols) == 2
     for pose, tensions in TABLE:
         match = [s for s in sols if np.allclose(s.position, pose[:3], atol=3e-3)]

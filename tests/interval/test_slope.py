@@ -116,10 +116,10 @@ def test_slopes_let_krawczyk_prove_a_box_empty_that_the_jacobian_cannot():
 def test_the_two_nodes_are_upper_bounds_of_the_exact_ones():
     """``θ₁,₂ = (3 ∓ √3)/6``: ``θ⁺ ≥ θ₁ ⟺ 3 − 6θ⁺ ≤ √3`` and ``θ⁺ ≥ θ₂ ⟺ 6θ⁺ − 3 ≥ √3``, in
     exact rationals; and within 1e-14 of them."""
-    from taut.interval.slope import _NODES_2
+    from taut.interval.slope import NODES_2
 
-    t1, t2 = (Fraction(float(t)) for t in _NODES_2)
+    t1, t2 = (Fraction(float(t)) for t in NODES_2)
     assert 3 - 6 * t1 <= 0 or (3 - 6 * t1) ** 2 <= 3
     assert 6 * t2 - 3 > 0 and (6 * t2 - 3) ** 2 >= 3
-    assert abs(float(_NODES_2[0]) - (3 - np.sqrt(3)) / 6) < 1e-14
-    assert abs(float(_NODES_2[1]) - (3 + np.sqrt(3)) / 6) < 1e-14
+    assert abs(float(NODES_2[0]) - (3 - np.sqrt(3)) / 6) < 1e-14
+    assert abs(float(NODES_2[1]) - (3 + np.sqrt(3)) / 6) < 1e-14

@@ -18,7 +18,7 @@ from taut.interval import (
     preconditioned_solve,
     variables,
 )
-from taut.interval.branch_prune import _bisect_index, _smear
+from taut.interval.branch_prune import bisect_index, smear_scores
 from taut.interval.expression import compile_tape
 from taut.interval.hc4 import evaluate, evaluate_point
 from taut.interval.krawczyk import jacobian
@@ -127,7 +127,7 @@ def test_midpoint_radius_krawczyk_encloses_the_exact_operator(case):
     """The float midpoint-radius evaluation of K(X) holds the exact interval-arithmetic
     K(X) of the same data (C, f(y), J(X)): its error bounds are not too small."""
     from taut.interval.hc4 import evaluate
-    from taut.interval.krawczyk import _krawczyk, jacobian
+    from taut.interval.krawczyk import jacobian, krawczyk_image
 
     system, _, lo, hi = case
     Jl, Jh = jacobian(system, lo, hi)
@@ -136,7 +136,7 @@ def test_midpoint_radius_krawczyk_encloses_the_exact_operator(case):
     assume(np.all(np.isfinite(C)))  # a subnormal pivot overflows the inverse
     y = 0.5 * lo + 0.5 * hi
     fl, fh = evaluate(system.tape, y, y)
-    kl, kh = _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)
+    kl, kh = krawczyk_image(C, y, fl, fh, Jl, Jh, lo, hi)
     for i, (elo, ehi) in enumerate(_exact_krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)):
         assert _below(kl[i], elo) and _below(ehi, kh[i])
 
@@ -146,7 +146,7 @@ def test_midpoint_radius_krawczyk_encloses_the_exact_operator(case):
 def test_parametric_krawczyk_encloses_the_exact_operator(case, data):
     """The first ``h < n`` equations solved for ``h`` of the variables, the others
     parameters: the float operator holds the exact one of the same data."""
-    from taut.interval.krawczyk import _krawczyk_rows, jacobian
+    from taut.interval.krawczyk import jacobian, krawczyk_rows
 
     system, _, lo, hi = case
     n = lo.size
@@ -159,7 +159,7 @@ def test_parametric_krawczyk_encloses_the_exact_operator(case, data):
     assume(np.all(np.isfinite(C)))  # a subnormal pivot overflows the inverse
     y = 0.5 * lo + 0.5 * hi
     fl, fh = (f[:h] for f in evaluate(system.tape, y, y))
-    kl, kh = _krawczyk_rows(C, sel, y, fl, fh, Jl, Jh, lo, hi)
+    kl, kh = krawczyk_rows(C, sel, y, fl, fh, Jl, Jh, lo, hi)
     for i, (elo, ehi) in enumerate(_exact_krawczyk(C, y, fl, fh, Jl, Jh, lo, hi, sel)):
         assert _below(kl[i], elo) and _below(ehi, kh[i])
 
@@ -167,13 +167,13 @@ def test_parametric_krawczyk_encloses_the_exact_operator(case, data):
 def _tube(system, h, lo, hi, points=0, primary=None):
     """The tube step with the Jacobian over the box (``points=0``) or the slopes; the
     variables not ``primary`` are solved for first."""
-    from taut.interval.branch_prune import _tube_vars
+    from taut.interval.branch_prune import tube_variables
     from taut.interval.krawczyk import tube_kernel
     from taut.interval.slope import slopes
 
     vl, vh = slopes(system, lo, hi, points)
     primary = np.ones(lo.size, bool) if primary is None else primary
-    gvars, dependent = _tube_vars(system, h, primary)
+    gvars, dependent = tube_variables(system, h, primary)
     return tube_kernel(
         *system.tape.arrays[:5], system.tape.end, h, gvars, dependent, system.rows, system.cols, vl, vh, lo, hi
     )
@@ -316,12 +316,12 @@ def test_relative_smears_share_out_each_equation(case, shrink):
     lo, hi = s - shrink * (s - lo) - 0.01, s + shrink * (hi - s) + 0.01
     n = lo.size
     primary = np.arange(n) != n - 1
-    score = _smear(*system.jacobian.arrays[:7], system.rows, system.cols, system.n_equations, lo, hi, primary)
+    score = smear_scores(*system.jacobian.arrays[:7], system.rows, system.cols, system.n_equations, lo, hi, primary)
     assert score[-1] == 0.0 and np.all(score >= 0.0)
     Jl, Jh = jacobian(system, lo, hi)
     rows = np.sum(np.any(np.maximum(np.abs(Jl), np.abs(Jh)) * (hi - lo) * primary > 0, axis=1))
     assert np.isclose(score.sum(), rows)
-    j = _bisect_index(hi - lo, primary, 1e-7, score, np.inf)
+    j = bisect_index(hi - lo, primary, 1e-7, score, np.inf)
     assert primary[j] and score[j] == score.max()
 
 

@@ -7,7 +7,7 @@ positions ``q_1, q_2, q_3`` of three non-collinear platform points, the normal
 the scaled tensions ``t_i = τ_i/ρ_i`` of the ``m`` taut cables — ``12 + m`` unknowns
 (``9 + m`` without the normal).  The reference points are
 the three platform points with the smallest secondary-point weights, taut anchors preferred
-(their length constraints are plain spheres, Eq. 2.26): :func:`_reference_choice`
+(their length constraints are plain spheres, Eq. 2.26): :func:`reference_choice`
 (§3.1.1, "Cable numbering").
 Every other platform point is a *secondary point* (Eqs. 2.21–2.23)
 
@@ -190,7 +190,7 @@ def frame_from_points(q: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndar
 NON_TAUT_REFERENCE = 0.5
 
 
-def _reference_choice(robot: Robot, taut: tuple[int, ...], gp: np.ndarray) -> tuple[list[int | str], np.ndarray]:
+def reference_choice(robot: Robot, taut: tuple[int, ...], gp: np.ndarray) -> tuple[list[int | str], np.ndarray]:
     """Reference points (§3.1.1, "Cable numbering"): the three non-collinear platform points
     — anchors or the load point G — whose secondary points have the smallest mean
     ``|weight|`` (the affine weights and ``β₄`` of Eqs. 2.23–2.24: the term ``I_α`` that
@@ -222,7 +222,7 @@ def _reference_choice(robot: Robot, taut: tuple[int, ...], gp: np.ndarray) -> tu
     return [c[0] for c in best], np.array([c[1] for c in best])
 
 
-def _enclose(x: Fraction) -> Expr:
+def rational_constant(x: Fraction) -> Expr:
     """The constant ``x`` (exact rational) as the tightest float interval holding it; the
     rational rides along for :mod:`taut.interval.precise`."""
     f = float(x)  # correctly rounded
@@ -235,7 +235,7 @@ def _exact(v: npt.ArrayLike) -> list[Fraction]:
     return [Fraction(float(c)) for c in np.ravel(v)]
 
 
-def _exact_cross(u: Sequence[Fraction], w: Sequence[Fraction]) -> list[Fraction]:
+def exact_cross(u: Sequence[Fraction], w: Sequence[Fraction]) -> list[Fraction]:
     return [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
 
 
@@ -248,16 +248,16 @@ def _exact_load(robot: Robot) -> tuple[list[Fraction], list[Fraction]]:
     return w[:3], w[3:]
 
 
-def _coordinates(refs: np.ndarray, body: np.ndarray) -> list[Fraction]:
+def secondary_coordinates(refs: np.ndarray, body: np.ndarray) -> list[Fraction]:
     """Exact ``β`` of Eq. 2.22: ``body − r₁ = β₂(r₂ − r₁) + β₃(r₃ − r₁) + β₄(r₂ − r₁)×(r₃ − r₁)``,
     by Cramer's rule on rationals (a zero ``β`` — coplanar points — is exactly zero)."""
     r0, r1, r2, pt = (_exact(x) for x in (refs[0], refs[1], refs[2], body))
     cols = [[r1[k] - r0[k] for k in range(3)], [r2[k] - r0[k] for k in range(3)]]
-    cols.append(_exact_cross(cols[0], cols[1]))
+    cols.append(exact_cross(cols[0], cols[1]))
     rhs = [pt[k] - r0[k] for k in range(3)]
 
     def det(c: list[list[Fraction]]) -> Fraction:
-        return sum((c[0][k] * _exact_cross(c[1], c[2])[k] for k in range(3)), Fraction(0))
+        return sum((c[0][k] * exact_cross(c[1], c[2])[k] for k in range(3)), Fraction(0))
 
     d = det(cols)
     return [det(cols[:j] + [rhs] + cols[j + 1 :]) / d for j in range(3)]
@@ -276,8 +276,8 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
     a, r = robot.exits, robot.anchors
     _, _, gp = load(robot)
     f, mext = _exact_load(robot)
-    labels, refs = _reference_choice(robot, taut, gp)
-    betas = {lab: _coordinates(refs, body) for lab, body in [*enumerate(r), ("G", gp)] if lab not in labels}
+    labels, refs = reference_choice(robot, taut, gp)
+    betas = {lab: secondary_coordinates(refs, body) for lab, body in [*enumerate(r), ("G", gp)] if lab not in labels}
     # off the plane, an anchor's length would be quartic (the load point enters linearly)
     normal = normal and any(betas[k][2] != 0 for k in range(n) if k in betas)
     pose = 12 if normal else 9
@@ -301,9 +301,9 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
         weights = (1 - beta[0] - beta[1], beta[0], beta[1])
         out = []
         for k in range(3):
-            terms = [qj[k] if c == 1 else _enclose(c) * qj[k] for c, qj in zip(weights, q) if c != 0]
+            terms = [qj[k] if c == 1 else rational_constant(c) * qj[k] for c, qj in zip(weights, q) if c != 0]
             if beta[2] != 0:
-                terms.append(_enclose(beta[2]) * n12[k])
+                terms.append(rational_constant(beta[2]) * n12[k])
             out.append(sum(terms[1:], terms[0]) if terms else const(0.0))
         return out
 
@@ -316,26 +316,28 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
     eqs: list[Expr] = []
     for i, j in ((0, 1), (0, 2), (1, 2)):
         d2 = sum(((x - y) ** 2 for x, y in zip(_exact(refs[i]), _exact(refs[j]))), Fraction(0))
-        eqs.append(sum(((q[i][k] - q[j][k]) ** 2 for k in range(3)), const(0.0)) - _enclose(d2))
+        eqs.append(sum(((q[i][k] - q[j][k]) ** 2 for k in range(3)), const(0.0)) - rational_constant(d2))
     for i in taut:
         eqs.append(dist2(b[i], a[i]) - const(float(lengths[i])) ** 2)
     if normal:
         eqs += [nk - ck for nk, ck in zip(n12, _cross(e1, e2))]
     if m < 6:
         for k in range(3):
-            eqs.append(sum((t[i] * (float(a[i][k]) - b[i][k]) for i in taut), const(0.0)) + _enclose(f[k]))
+            eqs.append(sum((t[i] * (float(a[i][k]) - b[i][k]) for i in taut), const(0.0)) + rational_constant(f[k]))
 
     def moment_arm(i: int, pole: np.ndarray, k: int) -> Expr:
         """``((b_i − pole) × (a_i − pole))_k``."""
         k1, k2 = (k + 1) % 3, (k + 2) % 3
         c = [x - y for x, y in zip(_exact(a[i]), _exact(pole))]
-        return (b[i][k1] - float(pole[k1])) * _enclose(c[k2]) - (b[i][k2] - float(pole[k2])) * _enclose(c[k1])
+        return (b[i][k1] - float(pole[k1])) * rational_constant(c[k2]) - (
+            b[i][k2] - float(pole[k2])
+        ) * rational_constant(c[k1])
 
     def load_moment(pole: np.ndarray, k: int) -> Expr:
         k1, k2 = (k + 1) % 3, (k + 2) % 3
-        return ((g[k1] - float(pole[k1])) * _enclose(f[k2]) - (g[k2] - float(pole[k2])) * _enclose(f[k1])) + _enclose(
-            mext[k]
-        )
+        return (
+            (g[k1] - float(pole[k1])) * rational_constant(f[k2]) - (g[k2] - float(pole[k2])) * rational_constant(f[k1])
+        ) + rational_constant(mext[k])
 
     def moments(pole: np.ndarray) -> list[Expr]:
         out = []
@@ -355,7 +357,7 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
         )
         dot = (d01 + d02 - d12) / 2
         area2 = d01 * d02 - dot * dot  # ‖e₁ × e₂‖² = ‖e₁‖²‖e₂‖² − (e₁·e₂)²
-        extra.append((sum((nk * nk for nk in n12), const(0.0)) - _enclose(area2), (0.0, 0.0)))
+        extra.append((sum((nk * nk for nk in n12), const(0.0)) - rational_constant(area2), (0.0, 0.0)))
         extra += [(sum((nk * ek for nk, ek in zip(n12, e)), const(0.0)), (0.0, 0.0)) for e in (e1, e2)]
     if m < 6:
         eqs += moments(a[taut[0]])
@@ -382,7 +384,7 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
     J = [[float(a[i][k]) - b[i][k] for i in taut] for k in range(3)] + [
         [moment_arm(i, pole, k) for i in taut] for k in range(3)
     ]
-    rhs = [-_enclose(f[k]) for k in range(3)] + [-load_moment(pole, k) for k in range(3)]
+    rhs = [-rational_constant(f[k]) for k in range(3)] + [-load_moment(pole, k) for k in range(3)]
     statics_tape = compile_tape([e for row in J for e in row] + rhs, [(-np.inf, np.inf)] * (6 * m + 6))
 
     lo = np.full(unknowns, -np.inf)

@@ -119,7 +119,7 @@ def check_lengths(robot: Robot, lengths: npt.ArrayLike) -> np.ndarray:
     return arr
 
 
-def _pieces(sp: Subproblem, split: int) -> list[Box]:
+def domain_pieces(sp: Subproblem, split: int) -> list[Box]:
     """The sub-problem's domain cut into up to ``2**split`` pieces that may hold solutions:
     breadth first, the widest piece is contracted (HC4, statics filter) and halved across
     its widest pose variable, empty pieces dropped — most of the initial box is empty, and
@@ -165,16 +165,18 @@ STARVE = 10.0
 #: a worker running several pieces of one sub-problem builds it once (a build takes
 #: ~20 ms, as long as solving many pieces).
 _PREPARED: dict[tuple[str, bytes, tuple[int, ...], int], tuple[Subproblem, list[Box]]] = {}
-_PREPARED_SIZE = 8
+PREPARED_SIZE = 8
 
 
-def _prepared(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: int) -> tuple[Subproblem, list[Box]]:
+def prepared_subproblem(
+    robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: int
+) -> tuple[Subproblem, list[Box]]:
     key = (robot.model_dump_json(), lengths.tobytes(), taut, split)
     hit = _PREPARED.get(key)
     if hit is None:
         sp = build_subproblem(robot, lengths, taut)
-        hit = (sp, _pieces(sp, split))
-        while len(_PREPARED) >= _PREPARED_SIZE:
+        hit = (sp, domain_pieces(sp, split))
+        while len(_PREPARED) >= PREPARED_SIZE:
             _PREPARED.pop(next(iter(_PREPARED)))
         _PREPARED[key] = hit
     return hit
@@ -189,7 +191,7 @@ PIECE_BOXES = 2_000_000
 Job = tuple[Robot, np.ndarray, tuple[int, ...], float, int, int, int | None, bool]
 
 
-def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], list[UndecidedBox], int]:
+def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], list[UndecidedBox], int]:
     """One job of :func:`solve_dgp`: the sub-problem of ``taut`` on piece ``k`` of
     ``pieces`` of its domain, with an equal share of the sub-problem's box budget.
     Returns ``(solutions, certificates, undecided boxes, boxes)``."""
@@ -213,7 +215,7 @@ def _solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None],
                 )
             )
         return out, [None] * len(out), [], 0
-    sp, pieces = _prepared(robot, lengths, taut, split)
+    sp, pieces = prepared_subproblem(robot, lengths, taut, split)
     if k >= len(pieces):  # fewer pieces hold solutions than were asked for
         return out, [], [], 0
     lo, hi = pieces[k]
@@ -314,10 +316,10 @@ def _reach(c: Certificate) -> float:
     return max(1e-9, 100.0 * c.width)
 
 
-def _solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple[list[DGPSolution], int, int]:
+def solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple[list[DGPSolution], int, int]:
     """The whole sub-problem of ``taut``: ``(solutions, number of undecided boxes, boxes)``."""
     robot, lengths, taut, eps = job
-    sols, _, undecided, boxes = _solve_piece((robot, lengths, taut, eps, 0, 0, None, True))
+    sols, _, undecided, boxes = solve_piece((robot, lengths, taut, eps, 0, 0, None, True))
     return sols, len(undecided), boxes
 
 
@@ -427,7 +429,7 @@ def solve_dgp(
     if progress is not None:
         progress(0, len(jobs))
     try:
-        parts = runner.map(_solve_piece, jobs, callback=callback if progress is not None else None)
+        parts = runner.map(solve_piece, jobs, callback=callback if progress is not None else None)
     finally:
         if runner is not executor:  # a client made here for a cluster object
             runner.close()

@@ -19,7 +19,7 @@ Each box popped from the list is
 3. *bisected*: one of the ``primary`` variables (the pose variables ``X``) while their
    largest width is at least ``eps``, then the widest variable of all (§3.1.4); the
    primary variable is the widest one, or with ``bisection="smear"`` the one of largest
-   relative smear (:func:`_smear`: the equations' sensitivity times the width), which the
+   relative smear (:func:`smear_scores`: the equations' sensitivity times the width), which the
    DGP uses because its reference points and tensions are scaled unevenly.
 
 Boxes narrower than ``eps`` in every variable that could not be certified are returned as
@@ -69,7 +69,7 @@ class BranchAndPruneResult:
 
 
 @njit(cache=True, fastmath=False)
-def _smear(
+def smear_scores(
     jop: np.ndarray,
     ja: np.ndarray,
     jb: np.ndarray,
@@ -105,7 +105,7 @@ def _smear_of(
     hi: np.ndarray,
     primary: np.ndarray,
 ) -> np.ndarray:
-    """:func:`_smear` from the Jacobian's nonzero entries ``[vl, vh]`` (at ``rows, cols``)."""
+    """:func:`smear_scores` from the Jacobian's nonzero entries ``[vl, vh]`` (at ``rows, cols``)."""
     n, nj = lo.size, rows.size
     sm = np.zeros(nj)
     total = np.zeros(h)
@@ -123,9 +123,9 @@ def _smear_of(
 
 
 @njit(cache=True, fastmath=False)
-def _bisect_index(width: np.ndarray, primary: np.ndarray, eps: float, score: np.ndarray, starve: float) -> int:
+def bisect_index(width: np.ndarray, primary: np.ndarray, eps: float, score: np.ndarray, starve: float) -> int:
     """The variable to bisect (§3.1.4): a primary one while the widest of them is at least
-    ``eps`` — the one of largest ``score`` (:func:`_smear`) when any is positive, else the
+    ``eps`` — the one of largest ``score`` (:func:`smear_scores`) when any is positive, else the
     widest, or the widest when it is ``starve`` times wider than the score's pick — then the
     widest variable of all."""
     j, best = -1, -1.0
@@ -173,7 +173,7 @@ def bisect(
     lo, hi = np.array(lo, float), np.array(hi, float)
     mask = np.ones(lo.size, bool) if primary is None else np.asarray(primary, bool)
     weights = np.zeros(lo.size) if score is None else np.asarray(score, float)
-    j = _bisect_index(hi - lo, mask, float(eps), weights, float(starve))
+    j = bisect_index(hi - lo, mask, float(eps), weights, float(starve))
     a, b = float(lo[j]), float(hi[j])
     if np.isfinite(a) and np.isfinite(b):
         m = 0.5 * a + 0.5 * b
@@ -222,7 +222,7 @@ def branch_and_prune(
     ``filter_width`` (an interval linear solve fails on wide boxes: its cost buys nothing
     there).  ``bisection``: ``"width"`` bisects the widest primary variable
     (§3.1.4), ``"smear"`` the primary variable of largest relative smear
-    (:func:`_smear`), which follows the variables the equations are most sensitive to
+    (:func:`smear_scores`), which follows the variables the equations are most sensitive to
     when they are scaled unevenly; ``starve``: the smear rule gives way to the widest
     primary variable when that is ``starve`` times wider than the smear's pick — for
     primary variables in one unit, where the smear can keep cutting a few of them while
@@ -281,7 +281,7 @@ def branch_and_prune(
     lo0, hi0 = _domain(lo, hi, domain)
     primary = np.ones(lo0.size, bool) if primary is None else np.asarray(primary, bool)
     jac = (*system.jacobian.arrays[:7], system.rows, system.cols, system.n_equations)
-    tube_vars, dependent = _tube_vars(system, tube, primary)
+    tube_vars, dependent = tube_variables(system, tube, primary)
     tube_points, krawczyk_points = _slope_points(system, tube), _slope_points(system, system.n_equations)
     out = BranchAndPruneResult()
     stack = [(np.array(lo, float), np.array(hi, float))]
@@ -329,7 +329,7 @@ def branch_and_prune(
             if unique or np.max(width) < newton_width:
                 cert = certify(system, 0.5 * res.lo + 0.5 * res.hi)
                 if cert is not None and np.all(cert.x >= klo) and np.all(cert.x <= khi):
-                    _file(system, cert, lo0, hi0, out)
+                    file_certificate(system, cert, lo0, hi0, out)
                     if unique:
                         continue
                     if cert.covers(lo, hi):
@@ -342,7 +342,7 @@ def branch_and_prune(
         if np.max(width) < eps:
             out.undecided.append((lo, hi))
             continue
-        score = _smear(*jac, lo, hi, primary) if smear else None
+        score = smear_scores(*jac, lo, hi, primary) if smear else None
         a, b = bisect(lo, hi, primary=primary, eps=eps, score=score, starve=starve)
         stack.append(b)
         stack.append(a)
@@ -365,7 +365,7 @@ def _pad(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The box widened by 0.1 % of its widths (at least ~1e-10 relative): Krawczyk cannot
     prove ``K(X) ⊂ int X`` on a box HC4 shrank to a few ulps.  Not clipped to the search
     domain: a solution on the domain's border (a zero tension) is then proven unique in the
-    padded box and filed by :func:`_file` as inside, outside or on the boundary, instead of
+    padded box and filed by :func:`file_certificate` as inside, outside or on the boundary, instead of
     being left undecided at ``eps``."""
     klo, khi = np.empty(lo.size), np.empty(lo.size)
     for i in range(lo.size):
@@ -580,10 +580,10 @@ def _drive(
         if smear and have_j:
             score = _smear_of(rows, cols, h, jl, jh, lo, hi, primary)
         elif smear:
-            score = _smear(jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, h, lo, hi, primary)
+            score = smear_scores(jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, h, lo, hi, primary)
         else:
             score = np.zeros(n)
-        j = _bisect_index(width, primary, eps, score, starve)
+        j = bisect_index(width, primary, eps, score, starve)
         m = 0.5 * lo[j] + 0.5 * hi[j]
         if not np.isfinite(m):
             if np.isfinite(lo[j]):
@@ -601,7 +601,7 @@ def _drive(
     return _DONE, sp, boxes, False
 
 
-def _tube_vars(system: System, tube: int, primary: np.ndarray) -> tuple[np.ndarray, int]:
+def tube_variables(system: System, tube: int, primary: np.ndarray) -> tuple[np.ndarray, int]:
     """The variables of the first ``tube`` equations (see :func:`branch_and_prune`), the
     non-primary ones first, and how many of them lead (the tube step solves for them: a
     variable that is not bisected is a function of the primary ones)."""
@@ -680,7 +680,7 @@ def _branch_and_prune_numba(
     sol_x, sol_r = np.zeros((0, n)), np.zeros(0)
     buf = np.empty((6, n))
     stats = np.zeros(8, np.int64)
-    tube_vars, dependent = _tube_vars(system, tube, primary)
+    tube_vars, dependent = tube_variables(system, tube, primary)
     tube_points, krawczyk_points = _slope_points(system, tube), _slope_points(system, system.n_equations)
     never = np.iinfo(np.int64).max
     pause_at = PROGRESS_BOXES if progress is not None else never
@@ -753,7 +753,7 @@ def _branch_and_prune_numba(
         klo, khi, rl, rh = buf[2].copy(), buf[3].copy(), buf[4].copy(), buf[5].copy()
         cert = certify(system, 0.5 * rl + 0.5 * rh)
         if cert is not None and np.all(cert.x >= klo) and np.all(cert.x <= khi):
-            if _file(system, cert, lo0, hi0, out):
+            if file_certificate(system, cert, lo0, hi0, out):
                 known = out.solutions + out.boundary
                 sol_x = np.array([c.x for c in known])
                 sol_r = np.array([c.radius for c in known])
@@ -768,7 +768,7 @@ def _branch_and_prune_numba(
         if np.max(width) < eps:
             out.undecided.append((blo, bhi))
             continue
-        score = _smear(*t_jac, blo, bhi, primary) if smear else None
+        score = smear_scores(*t_jac, blo, bhi, primary) if smear else None
         (alo, ahi), (b2lo, b2hi) = bisect(blo, bhi, primary=primary, eps=eps, score=score, starve=starve)
         push(b2lo, b2hi)
         push(alo, ahi)
@@ -794,7 +794,9 @@ def _drop_covered(out: BranchAndPruneResult) -> BranchAndPruneResult:
     return out
 
 
-def _file(system: System, cert: Certificate, lo0: np.ndarray, hi0: np.ndarray, out: BranchAndPruneResult) -> bool:
+def file_certificate(
+    system: System, cert: Certificate, lo0: np.ndarray, hi0: np.ndarray, out: BranchAndPruneResult
+) -> bool:
     """Add a new certified solution to ``out.solutions`` when its box lies in the search
     domain and satisfies the redundant constraints, to ``out.boundary`` when it straddles a
     bound of either (e.g. a zero tension: it may belong to a smaller subset, see

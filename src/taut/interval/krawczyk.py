@@ -93,7 +93,7 @@ def _mid_rad(lo: float, hi: float) -> tuple[float, float]:
 
 
 @njit(cache=True, fastmath=False)
-def _krawczyk(
+def krawczyk_image(
     C: np.ndarray,
     y: np.ndarray,
     fl: np.ndarray,
@@ -103,13 +103,13 @@ def _krawczyk(
     lo: np.ndarray,
     hi: np.ndarray,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """``K(X) = y − C f(y) + (I − C J(X))(X − y)`` for a square system: :func:`_krawczyk_rows`
+    """``K(X) = y − C f(y) + (I − C J(X))(X − y)`` for a square system: :func:`krawczyk_rows`
     with every variable solved for."""
-    return _krawczyk_rows(C, np.arange(C.shape[0]), y, fl, fh, Jl, Jh, lo, hi)
+    return krawczyk_rows(C, np.arange(C.shape[0]), y, fl, fh, Jl, Jh, lo, hi)
 
 
 @njit(cache=True, fastmath=False)
-def _krawczyk_rows(
+def krawczyk_rows(
     C: np.ndarray,
     sel: np.ndarray,
     y: np.ndarray,
@@ -251,7 +251,7 @@ def _krawczyk_step(system: System, lo: np.ndarray, hi: np.ndarray, Jl: np.ndarra
         return KrawczykResult("unknown", lo, hi)
     fl, fh = evaluate(system.tape, y, y)
     h = system.n_equations
-    kl, kh = _krawczyk(C, y, fl[:h], fh[:h], Jl, Jh, lo, hi)
+    kl, kh = krawczyk_image(C, y, fl[:h], fh[:h], Jl, Jh, lo, hi)
     nl, nh = np.maximum(kl, lo), np.minimum(kh, hi)
     if np.any(nl > nh):
         return KrawczykResult("empty", nl, nh)
@@ -331,7 +331,7 @@ def krawczyk_jacobian(
     forward_kernel(op, a, b, clo, chi, 0, end[h - 1], y, y, nodes, nodeh)  # the equations lead the tape
     for c in range(h):
         fl[c], fh[c] = nodes[end[c] - 1], nodeh[end[c] - 1]
-    kl, kh = _krawczyk(C, y, fl, fh, Jl, Jh, lo, hi)
+    kl, kh = krawczyk_image(C, y, fl, fh, Jl, Jh, lo, hi)
     nl, nh = np.maximum(kl, lo), np.minimum(kh, hi)
     inner = True
     for i in range(n):
@@ -364,7 +364,7 @@ def tube_kernel(
 ) -> int:
     """Contract the box ``[lo, hi]`` (in place) onto the manifold of the tape's first ``g``
     equations, which involve only the ``k > g`` variables ``gvars``: the parametric
-    Krawczyk operator (:func:`_krawczyk_rows`) solves for the ``g`` of them that column-
+    Krawczyk operator (:func:`krawczyk_rows`) solves for the ``g`` of them that column-
     pivoted Gram–Schmidt on the midpoint Jacobian finds best conditioned, the other
     ``k − g`` are its parameters.  The first ``dependent ≤ g`` of ``gvars`` are always
     solved for: an auxiliary unknown that is a function of the others, such as the DGP's
@@ -433,7 +433,7 @@ def tube_kernel(
     fl, fh = np.empty(g), np.empty(g)
     for c in range(g):
         fl[c], fh[c] = nodes[end[c] - 1], nodeh[end[c] - 1]
-    kl, kh = _krawczyk_rows(C, sel, y, fl, fh, Jl, Jh, glo, ghi)
+    kl, kh = krawczyk_rows(C, sel, y, fl, fh, Jl, Jh, glo, ghi)
     status = 0
     for i in range(g):
         v = gvars[sel[i]]

@@ -43,7 +43,7 @@ from taut.interval.hc4 import evaluate, evaluate_kernel
 #: Upper bounds of the two Gauss–Legendre nodes ``½ ∓ √3/6`` on [0, 1]: the rounded values
 #: plus 1e-15, far above their few ulps of rounding error (checked exactly in the tests);
 #: only upper bounds matter, ``c + θ (X − c)`` grows with ``θ``.
-_NODES_2 = 0.5 + np.array([-1.0, 1.0]) * np.sqrt(3.0) / 6.0 + 1e-15
+NODES_2 = 0.5 + np.array([-1.0, 1.0]) * np.sqrt(3.0) / 6.0 + 1e-15
 
 
 def slopes(system: System, lo: np.ndarray, hi: np.ndarray, points: int) -> tuple[np.ndarray, np.ndarray]:
@@ -98,10 +98,10 @@ def slope_kernel(
         zl, zh = _shrunk(lo, hi, 0.5)
         evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, zl, zh, out_lo, out_hi)
         return
-    zl, zh = _shrunk(lo, hi, _NODES_2[0])
+    zl, zh = _shrunk(lo, hi, NODES_2[0])
     evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, zl, zh, out_lo, out_hi)
     sl, sh = np.empty(out_lo.size), np.empty(out_lo.size)
-    zl, zh = _shrunk(lo, hi, _NODES_2[1])
+    zl, zh = _shrunk(lo, hi, NODES_2[1])
     evaluate_kernel(jop, ja, jb, jclo, jchi, jstart, jend, zl, zh, sl, sh)
     for k in range(out_lo.size):
         # ½ (a + b): the halving is exact unless the sum is subnormal, hence the rounding
