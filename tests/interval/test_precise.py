@@ -44,7 +44,7 @@ def holds(lo: float, hi: float, value_squared: Fraction, positive: bool) -> bool
 @given(exponent=st.integers(12, 60))
 def test_two_roots_closer_than_double_precision_separates_are_certified(exponent):
     delta = Fraction(1, 2**exponent) / 3  # not a float: only the exact rational separates the roots
-    res = solve_precise(circles(delta), LO, HI)
+    res = solve_precise(circles(delta), [(LO, HI)])
     assert len(res.solutions) == 2 and not res.undecided and not res.boundary
     x = 1 - delta / 2
     y2 = delta - delta**2 / 4
@@ -65,14 +65,14 @@ def test_double_precision_leaves_them_undecided():
 
 @pytest.mark.parametrize("exponent", [20, 50, 100])
 def test_circles_apart_by_less_than_an_ulp_have_no_root(exponent):
-    res = solve_precise(circles(-Fraction(1, 3 * 2**exponent)), LO, HI)
+    res = solve_precise(circles(-Fraction(1, 3 * 2**exponent)), [(LO, HI)])
     assert not res.solutions and not res.boundary and not res.undecided
 
 
 def test_a_double_root_stays_undecided_and_its_boxes_hold_it():
     """At the tangency the Jacobian is singular at the root: no Krawczyk box can prove it
     unique, so the search ends with undecided boxes around (1, 0), never a solution."""
-    res = solve_precise(circles(Fraction(0)), LO, HI, max_boxes=400)
+    res = solve_precise(circles(Fraction(0)), [(LO, HI)], max_boxes=400)
     assert not res.solutions and res.undecided and res.boxes <= 400
     assert any(lo[0] <= 1.0 <= hi[0] and lo[1] <= 0.0 <= hi[1] for lo, hi in res.undecided)
 
@@ -81,11 +81,11 @@ def test_a_root_on_the_domain_bound_is_boundary():
     """A domain of y ≥ 0 leaves the upper root alone, a solution; a domain ending at the
     root's own x (a float: ``1 − 2⁻²¹``) makes its box straddle the bound: boundary."""
     delta = Fraction(1, 3 * 2**40)
-    res = solve_precise(circles(delta), LO, HI, domain=(np.array([0.0, 0.0]), np.array([2.0, 2.0])))
+    res = solve_precise(circles(delta), [(LO, HI)], domain=(np.array([0.0, 0.0]), np.array([2.0, 2.0])))
     assert len(res.solutions) == 1 and res.solutions[0].lo[1] > 0.0 and not res.boundary
-    on = solve_precise(circles(Fraction(1, 2**20)), LO, HI, domain=(np.array([0.0, 0.0]), np.array([1.0, 2.0])))
+    on = solve_precise(circles(Fraction(1, 2**20)), [(LO, HI)], domain=(np.array([0.0, 0.0]), np.array([1.0, 2.0])))
     x = float(1 - Fraction(1, 2**21))
-    cut = solve_precise(circles(Fraction(1, 2**20)), LO, HI, domain=(np.array([0.0, 0.0]), np.array([x, 2.0])))
+    cut = solve_precise(circles(Fraction(1, 2**20)), [(LO, HI)], domain=(np.array([0.0, 0.0]), np.array([x, 2.0])))
     assert len(on.solutions) == 1 and len(cut.boundary) == 1 and not cut.solutions
 
 
@@ -96,3 +96,14 @@ def test_tape_keeps_exact_constants_apart():
     lo, hi = float(np.nextafter(1 / 3, 0)), float(np.nextafter(1 / 3, 1))
     tape = compile_tape([const(lo, hi, exact=a), const(lo, hi, exact=b)], [(0, 0), (0, 0)])
     assert tape.end.tolist() == [1, 2] and tape.exact == (a, b)
+
+
+def test_several_boxes_share_one_budget():
+    """Two start boxes, one root in each, found by one search; a budget too small for the
+    double root leaves boxes undecided, and what was not searched is among them."""
+    delta = Fraction(1, 3 * 2**30)
+    halves = [(LO, np.array([1.5, 0.0])), (np.array([0.5, 0.0]), HI)]
+    res = solve_precise(circles(delta), halves)
+    assert len(res.solutions) == 2 and not res.undecided
+    cut = solve_precise(circles(Fraction(0)), halves, max_boxes=30)
+    assert cut.boxes == 30 and cut.undecided and not cut.solutions

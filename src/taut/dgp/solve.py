@@ -287,21 +287,19 @@ def _resolve_narrow(
     solution), searched again in multi-precision balls (:mod:`taut.interval.precise`).
     Each is widened by :data:`NARROW_PAD` of its width, so that a root on a face two of them
     share is inside one; a root the margin takes from a decided neighbour is one this
-    piece certified already, reported once by :func:`solve_dgp`.  Returns the certificates
-    and the boxes still undecided."""
-    found = list(found)
-    still = []
-    for blo, bhi, cause in left:
-        if cause != "narrow":
-            still.append((blo, bhi, cause))
-            continue
-        pad = NARROW_PAD * (bhi - blo)
-        res = precise.solve_precise(
-            sp.system, np.nextafter(blo - pad, -np.inf), np.nextafter(bhi + pad, np.inf), domain=(sp.lo, sp.hi)
-        )
-        found += [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]
-        still += [(ulo, uhi, "narrow") for ulo, uhi in res.undecided]
-    return found, still
+    piece certified already, reported once by :func:`solve_dgp`.  They share one budget of
+    :data:`taut.interval.precise.MAX_BOXES`; the boxes left when it runs out stay undecided,
+    so a continuum of solutions (thousands of narrow boxes) costs seconds, not hours.
+    Returns the certificates and the boxes still undecided."""
+    pad = [(blo, bhi, NARROW_PAD * (bhi - blo)) for blo, bhi, cause in left if cause == "narrow"]
+    res = precise.solve_precise(
+        sp.system,
+        [(np.nextafter(blo - w, -np.inf), np.nextafter(bhi + w, np.inf)) for blo, bhi, w in pad],
+        domain=(sp.lo, sp.hi),
+    )
+    found = list(found) + [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]
+    still = [(blo, bhi, cause) for blo, bhi, cause in left if cause != "narrow"]
+    return found, still + [(ulo, uhi, "narrow") for ulo, uhi in res.undecided]
 
 
 #: Relative margin by which :func:`_resolve_narrow` widens a narrow box.
