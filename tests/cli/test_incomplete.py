@@ -12,8 +12,8 @@ from itertools import combinations
 import pytest
 from fold_robot import fold_robot
 
-from taut.cli.incomplete import NAMED, warning
-from taut.dgp.undecided import UndecidedBox
+from taut.cli.incomplete import CAUSE_TEXT, NAMED, warning
+from taut.dgp.undecided import CAUSES, UndecidedBox
 from taut.model.io import save_robot
 
 FK = ["fk", "suspended-3cable"]
@@ -95,6 +95,13 @@ def test_the_warning_names_a_dozen_sub_problems_then_counts_the_rest():
     assert "\n" not in line and line.startswith("taut: warning: 71 boxes could not be certified (71 too narrow")
     assert len(_named_subsets(line)) == NAMED and f"and {70 - NAMED} more" in line
     assert _named_subsets(line) == {tuple(k + 1 for k in b.taut) for b in boxes[:NAMED]}
+
+
+def test_the_warning_counts_every_cause():
+    boxes = [UndecidedBox((0, 1, 2), cause, (), (), (), (), ()) for cause in CAUSES for _ in range(2)]
+    line = warning(boxes, "equilibria")
+    assert line.startswith(f"taut: warning: {2 * len(CAUSES)} boxes could not be certified (")
+    assert all(f"2 {CAUSE_TEXT[c]}" in line for c in CAUSES) and set(CAUSE_TEXT) == set(CAUSES)
 
 
 def _fold_robot(tmp_path):

@@ -98,12 +98,28 @@ def test_tape_keeps_exact_constants_apart():
     assert tape.end.tolist() == [1, 2] and tape.exact == (a, b)
 
 
+HALF = (np.array([0.5, 0.0]), HI)
+
+
 def test_several_boxes_share_one_budget():
     """Two start boxes, one root in each, found by one search; a budget too small for the
-    double root leaves boxes undecided, and what was not searched is among them."""
+    double root leaves boxes unsearched, the second start box among them, exactly."""
     delta = Fraction(1, 3 * 2**30)
-    halves = [(LO, np.array([1.5, 0.0])), (np.array([0.5, 0.0]), HI)]
+    halves = [(LO, np.array([1.5, 0.0])), HALF]
     res = solve_precise(circles(delta), halves)
     assert len(res.solutions) == 2 and not res.undecided
     cut = solve_precise(circles(Fraction(0)), halves, max_boxes=30)
-    assert cut.boxes == 30 and cut.undecided and not cut.solutions
+    assert cut.boxes == 30 and cut.unsearched and not cut.solutions and not cut.undecided
+    assert any(np.array_equal(lo, HALF[0]) and np.array_equal(hi, HALF[1]) for lo, hi in cut.unsearched)
+
+
+def test_roots_on_a_bisection_face_are_certified():
+    """The box is centred on the roots' x = 1 − 2⁻²¹, a float: the first cut goes through
+    both roots, which then lie in no box's interior.  Newton's limit and a small box around it
+    certify them, once each."""
+    delta = Fraction(1, 2**20)
+    x = float(1 - delta / 2)
+    res = solve_precise(circles(delta), [(np.array([x - 0.5, -0.5]), np.array([x + 0.5, 0.5]))])
+    assert len(res.solutions) == 2 and not res.undecided and not res.unsearched
+    assert all(c.lo[0] <= x <= c.hi[0] for c in res.solutions)
+    assert sorted(np.sign([c.x[1] for c in res.solutions]).tolist()) == [-1.0, 1.0]

@@ -31,6 +31,7 @@ NAMED = 12
 #: How the warning counts the boxes of each cause of :data:`taut.dgp.undecided.CAUSES`.
 CAUSE_TEXT = {
     "narrow": "too narrow to split",
+    "singular": "around a singular solution, even in 256-bit balls",
     "budget": "left when the box budget ran out",
     "tension-sign": "of a solution whose tension signs are undecided",
     "domain-border": "of a solution on the search domain's bound",

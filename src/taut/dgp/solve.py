@@ -290,7 +290,8 @@ def _resolve_narrow(
     piece certified already, reported once by :func:`solve_dgp`.  They share one budget of
     :data:`taut.interval.precise.MAX_BOXES`; the boxes left when it runs out stay undecided,
     so a continuum of solutions (thousands of narrow boxes) costs seconds, not hours.
-    Returns the certificates and the boxes still undecided."""
+    Returns the certificates and the boxes still undecided: ``"singular"`` those the
+    multi-precision search shrank to its own limit, ``"narrow"`` those it did not reach."""
     pad = [(blo, bhi, NARROW_PAD * (bhi - blo)) for blo, bhi, cause in left if cause == "narrow"]
     res = precise.solve_precise(
         sp.system,
@@ -299,7 +300,7 @@ def _resolve_narrow(
     )
     found = list(found) + [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]
     still = [(blo, bhi, cause) for blo, bhi, cause in left if cause != "narrow"]
-    return found, still + [(ulo, uhi, "narrow") for ulo, uhi in res.undecided]
+    return found, still + [(u, v, "singular") for u, v in res.undecided] + [(u, v, "narrow") for u, v in res.unsearched]
 
 
 #: Relative margin by which :func:`_resolve_narrow` widens a narrow box.

@@ -4,13 +4,14 @@ solutions do not list.  A result with any of them is incomplete, and says where.
 Every box is an enclosure, in the solver's own unknowns, of the part of a sub-problem's
 domain the search gave up on: any solution of that sub-problem with positive tensions that
 the result does not list lies in one of its undecided boxes (one with a zero tension belongs
-to the sub-problem of the other taut cables, :mod:`taut.dgp.solve`).  A box is left undecided for one of four causes
-(:data:`CAUSES`): it became narrower than the bisection threshold without being discarded
-or certified (a singular or nearly double solution; the direct problem searches such boxes
-again in multi-precision, :mod:`taut.interval.precise`, and keeps what that cannot decide); it was still waiting when the box
-budget ran out; it holds a certified solution whose tensions' signs could not be decided;
-or it holds a certified solution on the search domain's bound that borders no other taut
-subset.
+to the sub-problem of the other taut cables, :mod:`taut.dgp.solve`).  A box is left
+undecided for one of five causes (:data:`CAUSES`): it became narrower than the bisection
+threshold without being discarded or certified (a singular or nearly double solution; the
+direct problem searches such boxes again in multi-precision, :mod:`taut.interval.precise`,
+when python-flint is installed); it shrank to the multi-precision search's own limit (a
+singular solution); it was still waiting when the box budget ran out; it holds a certified
+solution whose tensions' signs could not be decided; or it holds a certified solution on the
+search domain's bound that borders no other taut subset.
 
 References
 ----------
@@ -31,12 +32,14 @@ if TYPE_CHECKING:
     from taut.dgp.formulation import Subproblem
 
 #: Why a box is undecided: ``"narrow"`` — below the bisection threshold, neither discarded
-#: nor certified, in double precision and then (for the direct problem, with python-flint) in
-#: multi-precision balls: a double root, or roots closer than those can separate; ``"budget"`` — not yet processed when the box budget ran out;
-#: ``"tension-sign"`` — a certified solution whose tensions' signs are not decided;
+#: nor certified in double precision (and not reached by the multi-precision search, which
+#: needs python-flint and has a budget); ``"singular"`` — narrowed to ``2^-128`` (relative) in
+#: 256-bit balls, still neither discarded nor certified: around a singular (double) solution,
+#: or solutions closer than ``2^-64``; ``"budget"`` — not yet processed when the box budget
+#: ran out; ``"tension-sign"`` — a certified solution whose tensions' signs are not decided;
 #: ``"domain-border"`` — a certified solution straddling the search domain's bound where no
 #: cable is slack at its length (not the border of two taut subsets).
-CAUSES = ("narrow", "budget", "tension-sign", "domain-border")
+CAUSES = ("narrow", "singular", "budget", "tension-sign", "domain-border")
 
 #: Names of the reference-point unknowns of :mod:`taut.dgp.formulation`: the fixed-frame
 #: coordinates of the three reference points, then the normal of their plane.
