@@ -171,6 +171,8 @@ PREPARED_SIZE = 8
 def prepared_subproblem(
     robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: int
 ) -> tuple[Subproblem, list[Box]]:
+    """The sub-problem of ``taut`` at ``lengths`` and its :func:`domain_pieces`, built once
+    per process for the last :data:`PREPARED_SIZE` of them."""
     key = (robot.model_dump_json(), lengths.tobytes(), taut, split)
     hit = _PREPARED.get(key)
     if hit is None:
@@ -187,7 +189,7 @@ def prepared_subproblem(
 PIECE_BOXES = 2_000_000
 
 #: A job of :func:`solve_dgp`: robot, lengths, taut cables (0-based), eps, split, piece,
-#: box budget of the sub-problem (None: :data:`PIECE_BOXES` per piece).
+#: box budget of the sub-problem (None: :data:`PIECE_BOXES` per piece), multi-precision.
 Job = tuple[Robot, np.ndarray, tuple[int, ...], float, int, int, int | None, bool]
 
 
@@ -316,7 +318,9 @@ def _reach(c: Certificate) -> float:
 
 
 def solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple[list[DGPSolution], int, int]:
-    """The whole sub-problem of ``taut``: ``(solutions, number of undecided boxes, boxes)``."""
+    """The whole sub-problem of the taut cables of ``job = (robot, lengths, taut, eps)``, in
+    one piece, as a job an executor can map: ``(solutions, number of undecided boxes,
+    boxes)``."""
     robot, lengths, taut, eps = job
     sols, _, undecided, boxes = solve_piece((robot, lengths, taut, eps, 0, 0, None, True))
     return sols, len(undecided), boxes
