@@ -233,3 +233,14 @@ def test_nearly_double_equilibria_are_resolved_in_multiprecision():
             np.all(x >= np.array(u.lo) - 1e-12) and np.all(x <= np.array(u.hi) + 1e-12) for x, u in zip(q, boxes)
         )
     assert missed == 6 - len([s for s in double.solutions if len(s.taut) == 3]) > 0
+
+
+def test_a_root_found_again_in_a_narrow_boxs_margin_is_reported_once():
+    """The widened narrow boxes reach into neighbours whose roots double precision already
+    certified: in one piece (no :func:`solve_dgp` merging) the fold robot still has 6."""
+    pytest.importorskip("flint")
+    robot, lengths, _ = fold_robot()
+    sols, undecided, _ = solve_subset((robot, lengths, (0, 1, 2), 1e-7))
+    assert undecided == 0 and len(sols) == 6
+    poses = np.array([np.r_[s.position, s.orientation] for s in sols])
+    assert (np.linalg.norm(poses[:, None] - poses[None], axis=-1) + np.eye(6)).min() > 1e-6

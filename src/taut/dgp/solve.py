@@ -289,7 +289,8 @@ def _resolve_narrow(
     solution), searched again in multi-precision balls (:mod:`taut.interval.precise`).
     Each is widened by :data:`NARROW_PAD` of its width, so that a root on a face two of them
     share is inside one; a root the margin takes from a decided neighbour is one this
-    piece certified already, reported once by :func:`solve_dgp`.  They share one budget of
+    piece certified already, and is dropped (one certified by another piece is dropped by
+    :func:`solve_dgp`).  They share one budget of
     :data:`taut.interval.precise.MAX_BOXES`; the boxes left when it runs out stay undecided,
     so a continuum of solutions (thousands of narrow boxes) costs seconds, not hours.
     Returns the certificates and the boxes still undecided: ``"singular"`` those the
@@ -300,7 +301,11 @@ def _resolve_narrow(
         [(np.nextafter(blo - w, -np.inf), np.nextafter(bhi + w, np.inf)) for blo, bhi, w in pad],
         domain=(sp.lo, sp.hi),
     )
-    found = list(found) + [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]
+    new = [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]
+    # a root the margins took from a neighbour that double precision certified
+    found = list(found) + [
+        (c, border) for c, border in new if not any(same_solution(c, d) or same_solution(d, c) for d, _ in found)
+    ]
     still = [(blo, bhi, cause) for blo, bhi, cause in left if cause != "narrow"]
     return found, still + [(u, v, "singular") for u, v in res.undecided] + [(u, v, "narrow") for u, v in res.unsearched]
 
