@@ -11,7 +11,8 @@ manifold of the rigidity and length equations, its ``geometry``) — through a
 cable at its length with zero tension, so that its certified box straddles the bound of
 one subset's tension or of the other's slack-cable inequality — is reported once, with the
 smaller subset as ``taut`` and the larger as ``boundary``: at the certificate's precision it
-solves one of the two.
+solves one of the two.  Boxes double precision leaves too narrow to split (two equilibria
+about to merge) are searched again in 256-bit balls (:mod:`taut.interval.precise`).
 
 References
 ----------
