@@ -112,6 +112,7 @@ def _fold_robot(tmp_path):
     return ["fk", str(path), "--lengths", ",".join(repr(float(x)) for x in lengths), "--max-taut", "3"]
 
 
+@pytest.mark.slow
 def test_nearly_double_equilibria_are_certified_through_the_cli(taut_cli, tmp_path):
     pytest.importorskip("flint")
     run = taut_cli(*_fold_robot(tmp_path), "--json", "--strict", timeout=300)

@@ -189,6 +189,7 @@ def reference_unknowns(robot, sol, points):
     return (sol.position + np.asarray(points) @ R.T).ravel()
 
 
+@pytest.mark.slow
 def test_nearly_double_equilibria_are_resolved_in_multiprecision():
     """Two equilibria 1e-4 apart (metres and radians: a near-double root): the double-precision search leaves
     boxes too narrow to split around them, and certifies neither; searched again in 256-bit arb balls with the
