@@ -1,5 +1,6 @@
-"""Rotations about the coordinate axes, written out in the tests' independent models of other
-tools' kinematics (CASPR), so that they never go through taut's own rotation code."""
+"""Rotations about the coordinate axes, written out for the tests' independent models (CASPR's
+kinematics, taut's orientation conventions), so that they never go through taut's own
+rotation code."""
 
 import math
 

@@ -6,6 +6,7 @@ import sys
 
 import numpy as np
 import pytest
+from axis_rotations import rx, ry, rz
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.optimize import linprog
@@ -227,26 +228,11 @@ def test_jointed_robot_uses_the_numpy_path():
     assert res.inside.tolist() == [lp_closure(W[k]) for k in range(64)]
 
 
-def rot_x(t: float) -> np.ndarray:
-    c, s = np.cos(t), np.sin(t)
-    return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
-
-
-def rot_y(t: float) -> np.ndarray:
-    c, s = np.cos(t), np.sin(t)
-    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
-
-
-def rot_z(t: float) -> np.ndarray:
-    c, s = np.cos(t), np.sin(t)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
-
-
 #: The orientation conventions written out from elementary rotations (docs/architecture.md §2.3).
 ROTATIONS = {
-    "xyz-fixed": lambda a, b, c: rot_z(c) @ rot_y(b) @ rot_x(a),
-    "xyz-moving": lambda a, b, c: rot_x(a) @ rot_y(b) @ rot_z(c),
-    "tilt-torsion": lambda phi, theta, sigma: rot_z(phi) @ rot_y(theta) @ rot_z(sigma - phi),
+    "xyz-fixed": lambda a, b, c: rz(c) @ ry(b) @ rx(a),
+    "xyz-moving": lambda a, b, c: rx(a) @ ry(b) @ rz(c),
+    "tilt-torsion": lambda phi, theta, sigma: rz(phi) @ ry(theta) @ rz(sigma - phi),
 }
 
 
