@@ -187,13 +187,6 @@ def _float_ends(arb: Any, B: list) -> tuple[np.ndarray, np.ndarray]:
     return np.array([_float_down(arb, a) for a, _ in B]), np.array([_float_up(arb, b) for _, b in B])
 
 
-def _float_box(arb: Any, X: list) -> tuple[np.ndarray, np.ndarray]:
-    return (
-        np.array([_float_down(arb, x.lower()) for x in X]),
-        np.array([_float_up(arb, x.upper()) for x in X]),
-    )
-
-
 def solve_precise(
     system: System,
     boxes: Sequence[tuple[npt.ArrayLike, npt.ArrayLike]],
@@ -276,7 +269,7 @@ def solve_precise(
             return K
 
         def certificate(U: list, K: list) -> Certificate:
-            blo, bhi = _float_box(arb, K)
+            blo, bhi = _float_ends(arb, [(k.lower(), k.upper()) for k in K])
             x = np.array([float(k.mid()) for k in K])
             gap = min(min(arb(float(xi)) - a, b - arb(float(xi))) for xi, (a, b) in zip(x, U))
             return Certificate(x, blo, bhi, _float_down(arb, gap) if gap > 0 else 0.0)
