@@ -18,8 +18,8 @@ from scipy.optimize import linprog
 
 import taut
 from taut.collision import capsule_model, check_poses
-from taut.collision.capsules import capsule_segments
-from taut.kinematics.jointed import actuator_jacobian
+from taut.collision._capsules import capsule_segments
+from taut.kinematics._jointed import actuator_jacobian
 
 
 def naive_distance(p1, q1, p2, q2):

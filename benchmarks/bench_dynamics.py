@@ -4,7 +4,7 @@
 * Inverse dynamics of a sampled motion with the closed-form distribution
   (:func:`taut.dynamics.inverse_dynamics`, compiled kernel), against a per-sample loop of the
   same function and against the statics path (the required wrench, then
-  :func:`taut.statics.tension.solve_tensions`).  Target: >= 200,000 samples/s on one core.
+  :func:`taut.statics._tension.solve_tensions`).  Target: >= 200,000 samples/s on one core.
 * Computed-torque control at 1 kHz (:func:`taut.dynamics.simulate_control`: PD on the pose
   error plus feed-forward inverse dynamics with a controller model 10 % heavy, the
   closed-form distribution in the loop, a step disturbance, one RK4 step of the plant per
@@ -15,7 +15,7 @@
   taut ran 52-115x real time and MuJoCo's ``mj_step`` 45-90x (the load varied between runs;
   within a run the ratio is what counts), so the whole controlled simulation runs 1.1-1.5x as
   fast as MuJoCo stepping alone.  A control update costs about
-  7 us in taut's compiled loop (:func:`taut.dynamics.kernels.control_updates`: the
+  7 us in taut's compiled loop (:func:`taut.dynamics._kernels.control_updates`: the
   Newton-Euler wrench of the controller's model, a 6x6 Cholesky for the closed-form
   distribution, and four straight-cable acceleration evaluations of the plant, without
   forming a mass matrix); the rest of taut's time (about 40 %) is sampling the reference at
@@ -36,9 +36,9 @@ from _common import best_of  # first: it pins the thread pools to one core
 
 import taut
 from taut.dynamics import WrenchSteps, inverse_dynamics, loop_model, required_wrench, simulate_control, with_mass_error
-from taut.kinematics.batch import batch_structure_matrices
+from taut.kinematics._batch import batch_structure_matrices
 from taut.motion import trajectory_from_waypoints
-from taut.statics.tension import solve_tensions
+from taut.statics._tension import solve_tensions
 
 INERTIA = (0.12, 0.2, 0.15, 0.01, -0.02, 0.005)
 
@@ -107,7 +107,7 @@ def main():
     try:
         import mujoco
 
-        from taut.model.mjcf import mjcf_text, pose_to_qpos
+        from taut.model._mjcf import mjcf_text, pose_to_qpos
     except ImportError:
         print("  MuJoCo not installed: no comparison")
         return

@@ -1,5 +1,5 @@
 """Inverse kinematics + structure matrix of ``spatial-8cable`` over many poses: the Numba
-batch kernel (:mod:`taut.kinematics.batch`) and the full
+batch kernel (:mod:`taut.kinematics._batch`) and the full
 :func:`taut.kinematics.inverse_kinematics` (lengths, directions, anchors, W) against a
 straightforward per-pose NumPy loop written here as the baseline.
 
@@ -16,7 +16,7 @@ from _common import best_of  # first: it pins the thread pools to one core
 
 import taut
 from taut.kinematics import inverse_kinematics
-from taut.kinematics.batch import batch_structure_matrices
+from taut.kinematics._batch import batch_structure_matrices
 
 
 def naive_structure_matrix(robot, pose):

@@ -16,7 +16,7 @@ load of the machine falls on both.  Both use **the same validity checker**: a po
 when the closed-form solution of the manifold's equations exists there inside its box (tensions
 and lengths strictly inside their bounds with the box's margin: what AtlasRRT's projections
 require of each tree node; ``--ompl-checker independent`` gives OMPL the independent test of
-:mod:`taut.statics.feasibility` at one pose instead).  OMPL plans in SO(2) × [0, π] (φ
+:mod:`taut.statics._feasibility` at one pose instead).  OMPL plans in SO(2) × [0, π] (φ
 periodic, like the atlas; the half-turn identity (φ, θ) ≡ (φ + π, −θ) is not available to it),
 its motions checked every ``--resolution`` rad, within ``--ompl-time`` s.  Every path of both
 planners is checked by ``verify_path`` every ``--resolution`` rad; lengths are in (φ, θ).
@@ -40,8 +40,8 @@ from _common import best_of  # first: it pins the thread pools to one core
 
 import taut
 from taut.planning import Atlas, atlas_rrt, plan_path
-from taut.planning.manifold import WrenchFeasibleManifold
-from taut.planning.verify import verify_path
+from taut.planning._manifold import WrenchFeasibleManifold
+from taut.planning._verify import verify_path
 
 PAPER_S = {("q1", "q2"): 20.0, ("q3", "q4"): 280.0}
 FREE = (3, 4)  # φ, θ in a pose [x, y, z, φ, θ, σ]

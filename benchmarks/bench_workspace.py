@@ -1,5 +1,5 @@
 """Wrench-feasible workspace of ``spatial-8cable`` (box wrench set): hyperplane shifting
-(:mod:`taut.statics.feasibility`) against a loop of ``scipy.optimize.linprog(method="highs")``.
+(:mod:`taut.statics._feasibility`) against a loop of ``scipy.optimize.linprog(method="highs")``.
 
 Prints poses/s of the whole evaluation on one core (IK + external wrench + facet test,
 first JIT compile excluded; target >= 100 000 poses/s), the facet test alone, and the
@@ -19,9 +19,9 @@ from scipy.optimize import linprog
 
 import taut
 from taut.kinematics import structure_matrix
-from taut.kinematics.batch import batch_structure_matrices
-from taut.statics.feasibility import wrench_feasible
-from taut.statics.wrench import external_wrench
+from taut.kinematics._batch import batch_structure_matrices
+from taut.statics._feasibility import wrench_feasible
+from taut.statics._wrench import external_wrench
 from taut.workspace import default_wrench_set, evaluate_workspace
 
 

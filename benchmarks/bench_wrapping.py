@@ -1,4 +1,4 @@
-"""Cable-state updates per second (Alg. 4.4, ``taut.wrapping.update``) on the four-cable VSCR
+"""Cable-state updates per second (Alg. 4.4, ``taut.wrapping._update``) on the four-cable VSCR
 example (Eq. 4.13 driven back and forth), against a naive re-computation of every state
 from scratch (shortest taut admissible path at each sample, ``shortest_taut_state``).
 Target (issue 4): >= 100 000 updates per second per cable."""
@@ -9,9 +9,9 @@ import numpy as np
 from _common import best_of  # first: it pins the thread pools to one core
 
 from taut.model import example
-from taut.wrapping.ik import collidable_objects
-from taut.wrapping.tree import CableStateTree
-from taut.wrapping.update import track
+from taut.wrapping._ik import collidable_objects
+from taut.wrapping._tree import CableStateTree
+from taut.wrapping._update import track
 
 
 def main():

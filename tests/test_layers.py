@@ -109,16 +109,16 @@ def test_no_private_name_across_modules(path):
 
 def test_private_use_is_detected():
     source = (
-        "from taut.kinematics.inverse import _x, anchors_at\n"
-        "from taut.interval import kernels as K\n"
-        "import taut.geometry.rotation\n"
-        "from taut.statics.wrench import _own\n"
-        "K._y, K.add, K.__name__, taut.geometry.rotation._z\n"
+        "from taut.kinematics._inverse import _x, anchors_at\n"
+        "from taut.interval import _kernels as K\n"
+        "import taut.geometry._rotation\n"
+        "from taut.statics._wrench import _own\n"
+        "K._y, K.add, K.__name__, taut.geometry._rotation._z\n"
     )
-    assert list(_private_uses("taut.statics.wrench", source)) == [
-        ("taut.kinematics.inverse", "_x"),
-        ("taut.interval.kernels", "_y"),
-        ("taut.geometry.rotation", "_z"),
+    assert list(_private_uses("taut.statics._wrench", source)) == [
+        ("taut.kinematics._inverse", "_x"),
+        ("taut.interval._kernels", "_y"),
+        ("taut.geometry._rotation", "_z"),
     ]
 
 

@@ -16,7 +16,7 @@ from taut.errors import (
     TautError,
     UnreachableLengthsError,
 )
-from taut.lazy import lazy_exports
+from taut._lazy import lazy_exports
 
 if TYPE_CHECKING:
     from taut.model import Robot, example, example_names, load_robot, save_robot

@@ -14,10 +14,10 @@ from taut.atlas import (
     iterative_ik,
     platform_reachable_area,
 )
-from taut.atlas.platform import interior_cone, minkowski_sum, platform_outline
+from taut.atlas._platform import interior_cone, minkowski_sum, platform_outline
 from taut.errors import PoseError, TautError
 from taut.model import example
-from taut.model.io import robot_from_dict
+from taut.model._io import robot_from_dict
 from taut.wrapping import wrapped_inverse_kinematics
 
 START = [0.8128, -0.2032]

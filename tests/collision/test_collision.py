@@ -13,11 +13,11 @@ from taut.collision import (
     proximity,
     trajectory_poses,
 )
-from taut.collision.capsules import capsule_segments
+from taut.collision._capsules import capsule_segments
 from taut.errors import PoseError
-from taut.geometry.segments import segment_distance
+from taut.geometry._segments import segment_distance
 from taut.kinematics import inverse_kinematics
-from taut.model.io import robot_from_dict
+from taut.model._io import robot_from_dict
 from taut.workspace import CONDITIONS, evaluate_workspace
 
 ROBOT = taut.example("adjustable-8cable")

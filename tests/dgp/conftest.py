@@ -5,7 +5,7 @@ from itertools import combinations
 import numpy as np
 import pytest
 
-from taut.dgp.solve import solve_subset
+from taut.dgp._solve import solve_subset
 from taut.parallel import get_executor
 
 

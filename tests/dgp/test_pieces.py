@@ -1,4 +1,4 @@
-"""Cutting a sub-problem's domain into pieces for parallel jobs (taut.dgp.solve): the
+"""Cutting a sub-problem's domain into pieces for parallel jobs (taut.dgp._solve): the
 pieces lie in the domain, do not overlap, and every equilibrium of Table 4.3 of
 Berti (2015) lies in one of them."""
 
@@ -6,12 +6,12 @@ import numpy as np
 import pytest
 
 from taut.dgp import solve_dgp
-from taut.dgp.formulation import build_subproblem
-from taut.dgp.solve import PREPARED_SIZE, domain_pieces, prepared_subproblem, solve_piece
+from taut.dgp._formulation import build_subproblem
+from taut.dgp._solve import PREPARED_SIZE, domain_pieces, prepared_subproblem, solve_piece
 from taut.errors import TautError
-from taut.geometry.rotation import rotation_matrix
-from taut.interval.branch_prune import same_solution
-from taut.interval.krawczyk import Certificate, certify
+from taut.geometry._rotation import rotation_matrix
+from taut.interval._branch_prune import same_solution
+from taut.interval._krawczyk import Certificate, certify
 from taut.model import load_robot
 
 ROBOT = load_robot("suspended-3cable")

@@ -10,14 +10,14 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from taut.dgp import solve_dgp
-from taut.dgp.solve import solve_subset
+from taut.dgp._solve import solve_subset
 from taut.errors import TautError
-from taut.geometry.rotation import rotation_matrix
-from taut.interval.branch_prune import bisect
-from taut.interval.expression import compile_tape, const
-from taut.interval.linear import LinearFilter
-from taut.model.io import load_robot, save_robot
-from taut.model.random_robots import random_suspended_robot
+from taut.geometry._rotation import rotation_matrix
+from taut.interval._branch_prune import bisect
+from taut.interval._expression import compile_tape, const
+from taut.interval._linear import LinearFilter
+from taut.model._io import load_robot, save_robot
+from taut.model._random_robots import random_suspended_robot
 
 #: (cables, seed): quick robots of the benchmark suite, coplanar and not, with equilibria on
 #: two and three taut cables

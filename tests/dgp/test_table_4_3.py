@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 
 from taut.dgp import is_stable, solve_dgp
-from taut.dgp.formulation import build_subproblem
-from taut.geometry.rotation import rotation_matrix
-from taut.interval.krawczyk import certify
+from taut.dgp._formulation import build_subproblem
+from taut.geometry._rotation import rotation_matrix
+from taut.interval._krawczyk import certify
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
 from taut.parallel import get_executor

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from taut.dgp import solve_dgp
-from taut.dgp.solve import solve_subset
+from taut.dgp._solve import solve_subset
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
 

@@ -4,12 +4,12 @@ equilibrium of the suspended 3-cable robot: small length steps along a path and 
 import numpy as np
 import pytest
 
-from taut.dgp.formulation import build_subproblem, load
-from taut.dgp.solve import DGPSolution
-from taut.dgp.tracking import track, track_path
+from taut.dgp._formulation import build_subproblem, load
+from taut.dgp._solve import DGPSolution
+from taut.dgp._tracking import track, track_path
 from taut.errors import TautError, TrackingLostError
-from taut.geometry.rotation import rotation_matrix
-from taut.interval.krawczyk import certify
+from taut.geometry._rotation import rotation_matrix
+from taut.interval._krawczyk import certify
 from taut.model import load_robot
 
 ROBOT = load_robot("suspended-3cable")

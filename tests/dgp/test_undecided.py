@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 from taut.dgp import solve_dgp, solve_igp
-from taut.dgp.undecided import CAUSES
+from taut.dgp._undecided import CAUSES
 from taut.errors import TautError
-from taut.geometry.rotation import rotation_matrix
+from taut.geometry._rotation import rotation_matrix
 from taut.model import load_robot
 
 ROBOT = load_robot("suspended-3cable")

@@ -1,4 +1,4 @@
-"""Closed-loop computed-torque control (``taut.dynamics.control``) on spatial-8cable: the
+"""Closed-loop computed-torque control (``taut.dynamics._control``) on spatial-8cable: the
 tracking error against a bound derived from the closed-loop error dynamics, exact tracking
 with an exact model, and the last admissible tensions held where the distribution fails."""
 
@@ -54,7 +54,7 @@ def test_mass_error_and_step_disturbance_stay_within_the_derived_bound(robot, mo
 
         ``|e_i(t)| ≤ sup |d_i| / ((1 + ε) K_p)``.
 
-    ``d`` is evaluated here with :mod:`taut.dynamics.platform` (the Lagrange form; the loop
+    ``d`` is evaluated here with :mod:`taut.dynamics._platform` (the Lagrange form; the loop
     runs the compiled Newton–Euler kernels) at the simulated states.  The 1 kHz zero-order
     hold adds the error of the exact-model run of the same motion (< 1e-5, asserted), so the
     bound is ``sup |d_i| / ((1 + ε) K_p)`` plus that error."""
@@ -134,7 +134,7 @@ def test_infeasible_demand_holds_the_last_admissible_tensions(robot):
 def test_constant_disturbance_is_met_by_kp_e(force, moment, kp):
     """Holding a pose against a constant wrench ``w`` from ``t = 0`` (exact model), the error
     settles where ``K_p e = −M⁻¹ Jᵀ w`` (the error dynamics at rest), with ``M`` and ``J`` of
-    :mod:`taut.dynamics.platform` at the final pose: the half-period prediction keeps the
+    :mod:`taut.dynamics._platform` at the final pose: the half-period prediction keeps the
     loop's static gain.  ``K_d = 2.2 √K_p`` (overdamped): the slow pole is ``0.64 √K_p``, so
     3 s are at least 19 of its time constants and the transient left is ``e⁻¹⁹ ≈ 6e-9`` of the
     largest error.  ``M⁻¹`` couples the coordinates, so that residue reaches every component

@@ -1,4 +1,4 @@
-"""Forward dynamics (``taut.dynamics.forward``): conservation laws computed here from the
+"""Forward dynamics (``taut.dynamics._forward``): conservation laws computed here from the
 state (kinetic and potential energy, linear and angular momentum), the round trip of CASPR's
 example (inverse dynamics of a quintic motion drives the forward dynamics back along it),
 elastic cables (a slack cable pulls nothing, a static equilibrium stays put), the order of the
@@ -16,11 +16,11 @@ from taut.dynamics import (
     rk4_step,
 )
 from taut.errors import SingularConfigurationError, TautError
-from taut.geometry.rates import rate_matrix
-from taut.geometry.rotation import rotation_matrix
+from taut.geometry._rates import rate_matrix
+from taut.geometry._rotation import rotation_matrix
 from taut.kinematics import cable_lengths
-from taut.kinematics.elastic import unstretched_length
-from taut.statics.tension import distribute_tensions
+from taut.kinematics._elastic import unstretched_length
+from taut.statics._tension import distribute_tensions
 
 TIGHT = {"method": "DOP853", "rtol": 1e-11, "atol": 1e-13}
 

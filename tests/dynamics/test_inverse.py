@@ -1,4 +1,4 @@
-"""Inverse dynamics (``taut.dynamics.inverse``): tensions that produce the required wrench
+"""Inverse dynamics (``taut.dynamics._inverse``): tensions that produce the required wrench
 within bounds (checked with the structure matrix of the kinematics), infeasible samples
 reported with index and reason, the plot, and bad input."""
 
@@ -15,7 +15,7 @@ import taut  # noqa: E402
 from taut.dynamics import inverse_dynamics, required_wrench  # noqa: E402
 from taut.errors import TautError, UnsupportedRobotError  # noqa: E402
 from taut.kinematics import structure_matrix  # noqa: E402
-from taut.statics.tension import solve_tensions  # noqa: E402
+from taut.statics._tension import solve_tensions  # noqa: E402
 from taut.viz.dynamics import plot_motion_tensions  # noqa: E402
 
 
@@ -139,7 +139,7 @@ def test_compiled_closed_form_is_the_statics_closed_form(name, request):
 def test_progress_and_forward_plot(spatial, monkeypatch):
     """``progress(done, total)`` reaches the total; the plot of a simulated motion marks the
     samples where an elastic cable is slack."""
-    import taut.dynamics.inverse as inverse_module
+    import taut.dynamics._inverse as inverse_module
     from taut.dynamics import forward_dynamics
     from taut.kinematics import cable_lengths
 

@@ -1,4 +1,4 @@
-"""The control-loop model (``taut.dynamics.loop``): the same numbers as the checked functions
+"""The control-loop model (``taut.dynamics._loop``): the same numbers as the checked functions
 (``rk4_step``, ``inverse_dynamics``), the fallback where the closed form gives up, and errors."""
 
 import numpy as np

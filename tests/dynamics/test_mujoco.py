@@ -1,4 +1,4 @@
-"""MuJoCo as an independent engine: spatial-8cable exported to MJCF (``taut.model.mjcf``,
+"""MuJoCo as an independent engine: spatial-8cable exported to MJCF (``taut.model._mjcf``,
 cable tensions as tendon actuator controls) and driven by the same tension profile follows
 the same motion as ``taut.dynamics``.  Both integrate with RK4 at the same step, the tensions
 held over each step (MuJoCo applies a control that way); MuJoCo integrates a quaternion and
@@ -10,10 +10,10 @@ import pytest
 mujoco = pytest.importorskip("mujoco")
 
 from taut.dynamics import forward_dynamics  # noqa: E402
-from taut.geometry.rates import rate_matrix  # noqa: E402
-from taut.geometry.rotation import rotation_matrix  # noqa: E402
-from taut.model.mjcf import mjcf_text, pose_to_qpos  # noqa: E402
-from taut.statics.tension import distribute_tensions  # noqa: E402
+from taut.geometry._rates import rate_matrix  # noqa: E402
+from taut.geometry._rotation import rotation_matrix  # noqa: E402
+from taut.model._mjcf import mjcf_text, pose_to_qpos  # noqa: E402
+from taut.statics._tension import distribute_tensions  # noqa: E402
 
 DT = 1e-3
 

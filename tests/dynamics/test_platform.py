@@ -1,4 +1,4 @@
-"""Equations of motion (``taut.dynamics.platform``) against the Lagrangian computed here from
+"""Equations of motion (``taut.dynamics._platform``) against the Lagrangian computed here from
 first principles: ``T = ½ m |v_c|² + ½ ωᵀ R I Rᵀ ω`` with ``v_c`` and ``ω`` from finite
 differences of ``p_c(q(t))`` and ``R(q(t))``, ``V = −m gᵀ p_c``; the Euler–Lagrange
 equations by finite differences.  Cable forces through virtual work: the generalized force of
@@ -19,11 +19,11 @@ from taut.dynamics import (
     mass_matrix,
     velocity_jacobian,
 )
-from taut.dynamics.inverse import required_wrench
+from taut.dynamics._inverse import required_wrench
 from taut.errors import PoseError, UnsupportedRobotError
-from taut.geometry.rotation import planar_rotation, rotation_matrix
+from taut.geometry._rotation import planar_rotation, rotation_matrix
 from taut.kinematics import cable_lengths, structure_matrix
-from taut.statics.wrench import external_wrench
+from taut.statics._wrench import external_wrench
 
 #: 4th-order central difference weights at offsets −2, −1, 1, 2 (times 1/h).
 STENCIL = ((-2, 1 / 12), (-1, -8 / 12), (1, 8 / 12), (2, -1 / 12))

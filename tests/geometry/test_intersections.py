@@ -1,6 +1,6 @@
 import numpy as np
 
-from taut.geometry.intersections import (
+from taut.geometry._intersections import (
     circles_overlap,
     point_in_polygon,
     segment_circle_distance,

@@ -5,8 +5,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from taut.geometry.rates import angular_acceleration, angular_velocity, rate_matrix
-from taut.geometry.rotation import CONVENTIONS, rotation_matrix
+from taut.geometry._rates import angular_acceleration, angular_velocity, rate_matrix
+from taut.geometry._rotation import CONVENTIONS, rotation_matrix
 
 finite = st.floats(-3.0, 3.0)
 triple = st.tuples(finite, finite, finite)

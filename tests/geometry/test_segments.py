@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.optimize import lsq_linear
 
-from taut.geometry.segments import segment_distance
+from taut.geometry._segments import segment_distance
 
 
 def exact(a1, b1, a2, b2):

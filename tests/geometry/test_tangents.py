@@ -3,7 +3,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from taut.geometry.tangents import circle_circle_tangents, directed_tangent, point_circle_tangents, wrap_direction
+from taut.geometry._tangents import circle_circle_tangents, directed_tangent, point_circle_tangents, wrap_direction
 
 coord = st.floats(-5, 5)
 rad = st.floats(0, 1)

@@ -1,10 +1,10 @@
-"""taut.interval.branch_prune.bisect: the two halves of a box by the solver's bisection rule."""
+"""taut.interval._branch_prune.bisect: the two halves of a box by the solver's bisection rule."""
 
 import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from taut.interval.branch_prune import bisect
+from taut.interval._branch_prune import bisect
 
 boxes = st.integers(1, 6).flatmap(
     lambda n: st.tuples(

@@ -1,4 +1,4 @@
-"""Multi-precision branch-and-prune (taut.interval.precise) on two circles of radius 1 whose
+"""Multi-precision branch-and-prune (taut.interval._precise) on two circles of radius 1 whose
 centres are ``2 − δ`` apart, with ``δ`` an exact rational no float holds: two roots
 ``x = 1 − δ/2``, ``y = ±√(δ − δ²/4)`` for ``δ > 0``, none for ``δ < 0``, a double root at
 ``(1, 0)`` for ``δ = 0``.  The roots are checked in exact rational arithmetic, not with the
@@ -11,12 +11,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from taut.interval.branch_prune import branch_and_prune
-from taut.interval.expression import compile_system, compile_tape, const, variables
+from taut.interval._branch_prune import branch_and_prune
+from taut.interval._expression import compile_system, compile_tape, const, variables
 
 flint = pytest.importorskip("flint")
 
-from taut.interval.precise import solve_precise  # noqa: E402  (needs python-flint)
+from taut.interval._precise import solve_precise  # noqa: E402  (needs python-flint)
 
 
 def circles(delta: Fraction):

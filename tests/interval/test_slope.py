@@ -1,4 +1,4 @@
-"""Slope enclosures by Gauss–Legendre quadrature (taut.interval.slope) against exact
+"""Slope enclosures by Gauss–Legendre quadrature (taut.interval._slope) against exact
 rational arithmetic."""
 
 from fractions import Fraction
@@ -8,9 +8,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from taut.interval import compile_system, const, krawczyk, sqrt, variables
-from taut.interval.expression import NOT_POLYNOMIAL, degree
-from taut.interval.hc4 import evaluate
-from taut.interval.slope import points_for, slopes
+from taut.interval._expression import NOT_POLYNOMIAL, degree
+from taut.interval._hc4 import evaluate
+from taut.interval._slope import points_for, slopes
 
 
 @st.composite
@@ -116,7 +116,7 @@ def test_slopes_let_krawczyk_prove_a_box_empty_that_the_jacobian_cannot():
 def test_the_two_nodes_are_upper_bounds_of_the_exact_ones():
     """``θ₁,₂ = (3 ∓ √3)/6``: ``θ⁺ ≥ θ₁ ⟺ 3 − 6θ⁺ ≤ √3`` and ``θ⁺ ≥ θ₂ ⟺ 6θ⁺ − 3 ≥ √3``, in
     exact rationals; and within 1e-14 of them."""
-    from taut.interval.slope import NODES_2
+    from taut.interval._slope import NODES_2
 
     t1, t2 = (Fraction(float(t)) for t in NODES_2)
     assert 3 - 6 * t1 <= 0 or (3 - 6 * t1) ** 2 <= 3

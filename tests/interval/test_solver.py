@@ -18,11 +18,11 @@ from taut.interval import (
     preconditioned_solve,
     variables,
 )
-from taut.interval.branch_prune import bisect_index, smear_scores
-from taut.interval.expression import compile_tape
-from taut.interval.hc4 import evaluate, evaluate_point
-from taut.interval.krawczyk import jacobian
-from taut.interval.linear import LinearFilter, float_inverse
+from taut.interval._branch_prune import bisect_index, smear_scores
+from taut.interval._expression import compile_tape
+from taut.interval._hc4 import evaluate, evaluate_point
+from taut.interval._krawczyk import jacobian
+from taut.interval._linear import LinearFilter, float_inverse
 
 X, Y = variables(2)
 CIRCLES = compile_system(2, [X**2 + Y**2 - 1, (X - 1) ** 2 + Y**2 - 1])  # Example 1 of §3.2.1
@@ -126,8 +126,8 @@ def _exact_krawczyk(C, y, fl, fh, Jl, Jh, lo, hi, sel=None):
 def test_midpoint_radius_krawczyk_encloses_the_exact_operator(case):
     """The float midpoint-radius evaluation of K(X) holds the exact interval-arithmetic
     K(X) of the same data (C, f(y), J(X)): its error bounds are not too small."""
-    from taut.interval.hc4 import evaluate
-    from taut.interval.krawczyk import jacobian, krawczyk_image
+    from taut.interval._hc4 import evaluate
+    from taut.interval._krawczyk import jacobian, krawczyk_image
 
     system, _, lo, hi = case
     Jl, Jh = jacobian(system, lo, hi)
@@ -146,7 +146,7 @@ def test_midpoint_radius_krawczyk_encloses_the_exact_operator(case):
 def test_parametric_krawczyk_encloses_the_exact_operator(case, data):
     """The first ``h < n`` equations solved for ``h`` of the variables, the others
     parameters: the float operator holds the exact one of the same data."""
-    from taut.interval.krawczyk import jacobian, krawczyk_rows
+    from taut.interval._krawczyk import jacobian, krawczyk_rows
 
     system, _, lo, hi = case
     n = lo.size
@@ -167,9 +167,9 @@ def test_parametric_krawczyk_encloses_the_exact_operator(case, data):
 def _tube(system, h, lo, hi, points=0, primary=None):
     """The tube step with the Jacobian over the box (``points=0``) or the slopes; the
     variables not ``primary`` are solved for first."""
-    from taut.interval.branch_prune import tube_variables
-    from taut.interval.krawczyk import tube_kernel
-    from taut.interval.slope import slopes
+    from taut.interval._branch_prune import tube_variables
+    from taut.interval._krawczyk import tube_kernel
+    from taut.interval._slope import slopes
 
     vl, vh = slopes(system, lo, hi, points)
     primary = np.ones(lo.size, bool) if primary is None else primary

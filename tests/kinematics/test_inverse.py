@@ -136,8 +136,8 @@ RIGID = [n for n in taut.example_names() if taut.example(n).n_joints == 0]
 def test_few_poses_agree_with_the_batch_kernel(name, convention):
     """Fewer than BATCH_POSES poses go through NumPy, more through the Numba kernel: the two
     paths give the same lengths, directions, anchors and structure matrices."""
-    from taut.kinematics.forward import default_guess
-    from taut.kinematics.inverse import BATCH_POSES
+    from taut.kinematics._forward import default_guess
+    from taut.kinematics._inverse import BATCH_POSES
     from taut.model import robot_to_dict
 
     robot = taut.example(name)

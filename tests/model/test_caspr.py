@@ -17,10 +17,10 @@ from hypothesis import strategies as st
 
 from taut.errors import RobotFileError, UnsupportedRobotError
 from taut.kinematics import inverse_kinematics
-from taut.kinematics.jointed import jointed_structure_matrix
+from taut.kinematics._jointed import jointed_structure_matrix
 from taut.model import example, example_names, load_robot
-from taut.model.caspr import read_caspr, write_caspr
-from taut.statics.wrench import external_wrench
+from taut.model._caspr import read_caspr, write_caspr
+from taut.statics._wrench import external_wrench
 
 FIXTURES = Path(__file__).parent / "fixtures" / "caspr"
 REAL = FIXTURES / "real"

@@ -11,12 +11,12 @@ from hypothesis import strategies as st
 
 import taut
 from taut.errors import UnsupportedRobotError
-from taut.geometry.rotation import CONVENTIONS, rotation_matrix
+from taut.geometry._rotation import CONVENTIONS, rotation_matrix
 from taut.kinematics import inverse_kinematics
 from taut.model import example_names, robot_from_dict, robot_to_dict
-from taut.model.mjcf import check_mjcf, mjcf_text, pose_to_qpos, quaternions, write_mjcf
+from taut.model._mjcf import check_mjcf, mjcf_text, pose_to_qpos, quaternions, write_mjcf
 from taut.statics import distribute_tensions
-from taut.statics.wrench import external_wrench
+from taut.statics._wrench import external_wrench
 
 mujoco = pytest.importorskip("mujoco")
 

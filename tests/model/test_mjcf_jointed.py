@@ -10,14 +10,14 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import taut
-from taut.geometry.rotation import rotation_matrix
+from taut.geometry._rotation import rotation_matrix
 from taut.kinematics import inverse_kinematics
-from taut.kinematics.jointed import joint_forces
-from taut.kinematics.pose import body_frames
+from taut.kinematics._jointed import joint_forces
+from taut.kinematics._pose import body_frames
 from taut.model import robot_from_dict, robot_to_dict
-from taut.model.mjcf import joint_order, mjcf_text, pose_to_qpos, swivel_wraps_agree
+from taut.model._mjcf import joint_order, mjcf_text, pose_to_qpos, swivel_wraps_agree
 from taut.statics import distribute_tensions
-from taut.statics.wrench import external_wrench
+from taut.statics._wrench import external_wrench
 
 mujoco = pytest.importorskip("mujoco")
 

@@ -13,12 +13,12 @@ from hypothesis import strategies as st
 
 import taut
 from taut.errors import InfeasiblePoseError
-from taut.geometry.rotation import rotation_matrix
+from taut.geometry._rotation import rotation_matrix
 from taut.kinematics import inverse_kinematics
-from taut.kinematics.inverse import anchor_points
-from taut.kinematics.swivel import swivel_parameters, swivel_paths
+from taut.kinematics._inverse import anchor_points
+from taut.kinematics._swivel import swivel_parameters, swivel_paths
 from taut.model import load_robot, robot_from_dict, robot_to_dict
-from taut.model.mjcf import (
+from taut.model._mjcf import (
     PULLEY_MASS_RATIO,
     SIDE_SITE_ANGLE,
     mjcf_text,
@@ -27,7 +27,7 @@ from taut.model.mjcf import (
     swivel_wraps_agree,
 )
 from taut.statics import distribute_tensions
-from taut.statics.wrench import external_wrench
+from taut.statics._wrench import external_wrench
 
 mujoco = pytest.importorskip("mujoco")
 

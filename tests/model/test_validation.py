@@ -105,7 +105,7 @@ def test_json_round_trip_keeps_infinite_bounds(tmp_path):
 
 
 def test_shipped_schema_is_current():
-    from taut.model.schema import schema_text, shipped_schema_text
+    from taut.model._schema import schema_text, shipped_schema_text
 
     assert shipped_schema_text() == schema_text(), "run `taut schema > src/taut/schema/robot.schema.json`"
 

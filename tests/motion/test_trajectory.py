@@ -13,9 +13,9 @@ from scipy.interpolate import CubicSpline
 
 import taut
 from taut.errors import TautError, TrajectoryError
-from taut.geometry.rotation import rotation_matrix
+from taut.geometry._rotation import rotation_matrix
 from taut.model import robot_from_dict
-from taut.model.robot import Trajectory
+from taut.model._robot import Trajectory
 from taut.motion import Motion, trajectory_from_robot, trajectory_from_waypoints, unwrap_angles
 
 SPATIAL = taut.example("spatial-8cable")  # xyz-fixed

@@ -5,11 +5,11 @@ import numpy as np
 import pytest
 
 from taut.errors import TautError
-from taut.kinematics.pose import platform_frame
+from taut.kinematics._pose import platform_frame
 from taut.model import load_robot
 from taut.planning import ImplicitManifold, atlas_rrt, plan_path
-from taut.planning.manifold import WrenchFeasibleManifold
-from taut.planning.verify import verify_path
+from taut.planning._manifold import WrenchFeasibleManifold
+from taut.planning._verify import verify_path
 
 ROBOT = load_robot("robocrane")
 POSES = {k: np.array(v) for k, v in ROBOT.reference.poses.items()}

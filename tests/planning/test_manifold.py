@@ -1,15 +1,15 @@
 """The wrench-feasible manifold of Eqs. (1)–(8) of Bohigas et al. (2013) and the
-Robocrane query q1 → q2, verified independently by taut.statics.feasibility."""
+Robocrane query q1 → q2, verified independently by taut.statics._feasibility."""
 
 import numpy as np
 import pytest
 
 from taut.errors import InfeasiblePoseError, PoseError
-from taut.kinematics.pose import platform_frame
+from taut.kinematics._pose import platform_frame
 from taut.model import load_robot
 from taut.planning import plan_path, tangent_basis
-from taut.planning.manifold import WrenchFeasibleManifold
-from taut.planning.verify import verify_path
+from taut.planning._manifold import WrenchFeasibleManifold
+from taut.planning._verify import verify_path
 
 ROBOT = load_robot("robocrane")
 POSES = {k: np.array(v) for k, v in ROBOT.reference.poses.items()}
@@ -106,7 +106,7 @@ def test_robocrane_q1_q2_path_is_wrench_feasible_where_the_straight_line_is_not(
 def test_continuation_on_the_full_six_dimensional_c_space():
     """k = 6: the children of the first chart of the unsliced manifold lie on it, spread in
     all six pose coordinates, and are wrench-feasible by the independent check."""
-    from taut.planning.continuation import Atlas
+    from taut.planning._continuation import Atlas
 
     robot = load_robot("robocrane")
     M = WrenchFeasibleManifold.from_robot(robot)

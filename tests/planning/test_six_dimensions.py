@@ -8,12 +8,12 @@ import json
 import numpy as np
 import pytest
 
-from taut.kinematics.pose import platform_frame
+from taut.kinematics._pose import platform_frame
 from taut.model import load_robot
-from taut.model.io import save_robot
+from taut.model._io import save_robot
 from taut.planning import atlas_rrt
-from taut.planning.manifold import WrenchFeasibleManifold
-from taut.planning.verify import verify_path
+from taut.planning._manifold import WrenchFeasibleManifold
+from taut.planning._verify import verify_path
 
 ROBOCRANE = load_robot("robocrane")
 POSES = {k: np.array(v) for k, v in ROBOCRANE.reference.poses.items()}

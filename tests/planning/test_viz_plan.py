@@ -11,7 +11,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from taut.model import load_robot  # noqa: E402
-from taut.planning.manifold import WrenchFeasibleManifold  # noqa: E402
+from taut.planning._manifold import WrenchFeasibleManifold  # noqa: E402
 from taut.viz.plan import FEASIBLE, LENGTH_OUT, plan_section, plot_plan, slice_map  # noqa: E402
 from taut.viz.report import Report  # noqa: E402
 

@@ -7,8 +7,8 @@ from hypothesis import strategies as st
 from scipy.optimize import linprog
 
 from taut.errors import TautError
-from taut.statics.feasibility import facet_normals, static_equilibrium, wrench_closure, wrench_feasible
-from taut.statics.wrench import BoxWrenchSet, EllipsoidWrenchSet, PolytopeWrenchSet, SingleWrench, WrenchSet
+from taut.statics._feasibility import facet_normals, static_equilibrium, wrench_closure, wrench_feasible
+from taut.statics._wrench import BoxWrenchSet, EllipsoidWrenchSet, PolytopeWrenchSet, SingleWrench, WrenchSet
 
 
 def lp_equilibrium(W, tmin, tmax, w) -> bool:

@@ -1,4 +1,4 @@
-"""Tension distribution (``taut.statics.tension``): equilibrium and bounds of every method
+"""Tension distribution (``taut.statics._tension``): equilibrium and bounds of every method
 on the built-in robots, agreement of the exact methods with ``scipy.optimize.linprog`` on
 random problems, known solutions, infeasible poses, shapes and bad input."""
 
@@ -12,7 +12,7 @@ import taut
 from taut.errors import TautError
 from taut.kinematics import structure_matrix
 from taut.model import robot_from_dict
-from taut.statics.tension import METHODS, TensionResult, distribute_tensions, solve_tensions
+from taut.statics._tension import METHODS, TensionResult, distribute_tensions, solve_tensions
 
 EXACT = ["lp", "qp", "inf", "barycentric"]
 CLOSED = ["closed-form", "improved-closed-form"]

@@ -14,9 +14,9 @@ from scipy.optimize import linprog
 import taut
 from taut.errors import GridSizeError, PoseError, TautError
 from taut.kinematics import structure_matrix
-from taut.kinematics.batch import batch_structure_matrices
+from taut.kinematics._batch import batch_structure_matrices
 from taut.model import robot_from_dict
-from taut.statics.wrench import BoxWrenchSet, external_wrench
+from taut.statics._wrench import BoxWrenchSet, external_wrench
 from taut.workspace import (
     CONDITIONS,
     WorkspaceCondition,
@@ -28,7 +28,7 @@ from taut.workspace import (
     pose_grid,
     position_grid,
 )
-from taut.workspace import evaluate as evaluate_module
+from taut.workspace import _evaluate as evaluate_module
 
 PLANAR = taut.example("planar-4cable")
 SPATIAL = taut.example("spatial-8cable")

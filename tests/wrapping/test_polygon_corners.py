@@ -9,9 +9,9 @@ round-off): ``[unwrap A ccw, wrap A cw]``, a cable bent away from the obstacle."
 import numpy as np
 import pytest
 
-from taut.geometry.intersections import segment_enters_polygon
-from taut.wrapping.tree import DIR, EX, EY, OBJ, PARENT, UX, UY, CableStateTree
-from taut.wrapping.update import track
+from taut.geometry._intersections import segment_enters_polygon
+from taut.wrapping._tree import DIR, EX, EY, OBJ, PARENT, UX, UY, CableStateTree
+from taut.wrapping._update import track
 
 SQUARE = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]])  # A, B, C, D (ccw)
 A, B = 0, 1

@@ -6,12 +6,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from taut.errors import TautError
-from taut.geometry.intersections import segment_enters_polygon, segment_meets_circle
+from taut.geometry._intersections import segment_enters_polygon, segment_meets_circle
 from taut.model import example
-from taut.wrapping.state import CableState, rebuild_path
-from taut.wrapping.trajectory import builtin_trajectory, run_trajectory
-from taut.wrapping.tree import CableStateTree
-from taut.wrapping.update import track, update_state
+from taut.wrapping._state import CableState, rebuild_path
+from taut.wrapping._trajectory import builtin_trajectory, run_trajectory
+from taut.wrapping._tree import CableStateTree
+from taut.wrapping._update import track, update_state
 
 VSCR = ["vscr-single-cable", "vscr-four-cable", "vscr-agriculture", "vscr-rehabilitation", "vscr-t-shaped"]
 

@@ -9,12 +9,12 @@ References
    Waterloo, 2022, Ch. 5 (§5.1–5.3, Algs. 5.1–5.4). (docs/references.bib: rushton2022)
 """
 
-from taut.atlas.atlas import Edge, StructureAtlas, build_atlas
-from taut.atlas.chart import Chart, chart_lengths, structure_reachable_area
-from taut.atlas.ik import AtlasIK, direct_ik, iterative_ik, iterative_step, locate
-from taut.atlas.platform import platform_outline, platform_reachable_area
-from taut.atlas.reachable import cable_reachable_area
-from taut.atlas.workspace import AtlasWorkspace, atlas_workspace
+from taut.atlas._atlas import Edge, StructureAtlas, build_atlas
+from taut.atlas._chart import Chart, chart_lengths, structure_reachable_area
+from taut.atlas._ik import AtlasIK, direct_ik, iterative_ik, iterative_step, locate
+from taut.atlas._platform import platform_outline, platform_reachable_area
+from taut.atlas._reachable import cable_reachable_area
+from taut.atlas._workspace import AtlasWorkspace, atlas_workspace
 
 __all__ = [
     "AtlasIK",

@@ -1,5 +1,5 @@
 """``taut convert IN OUT``: write a robot in the format the name of OUT selects
-(:mod:`taut.model.formats`: taut YAML/JSON, a CASPR ``X_bodies.xml`` pair, ...)."""
+(:mod:`taut.model._formats`: taut YAML/JSON, a CASPR ``X_bodies.xml`` pair, ...)."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ from taut.cli.main import Command, console, emit, load
 
 
 def cmd_convert(ns: argparse.Namespace) -> int:
-    from taut.model.formats import format_of, write_robot
+    from taut.model._formats import format_of, write_robot
 
     format_of(ns.out, "write")  # an unknown OUT is refused before IN is read
     robot = load(ns.robot, ns.cable_set)

@@ -1,5 +1,5 @@
 """Incomplete answers at the command line: a certified search that left boxes undecided
-(:mod:`taut.dgp.undecided`) still prints its result, with ``"complete": false`` and the
+(:mod:`taut.dgp._undecided`) still prints its result, with ``"complete": false`` and the
 undecided boxes' enclosures in the JSON and one warning line on stderr naming the
 sub-problems concerned; under ``--strict`` the exit status is then :data:`INCOMPLETE`."""
 
@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 from taut.cli.cables import cable_numbers, numbered
 
 if TYPE_CHECKING:
-    from taut.dgp.undecided import UndecidedBox
+    from taut.dgp._undecided import UndecidedBox
 
 #: Exit status of a ``--strict`` command whose answer is incomplete.
 INCOMPLETE = 3
@@ -28,7 +28,7 @@ EXIT_STATUS = (
 #: then says how many more; the JSON lists them all.
 NAMED = 12
 
-#: How the warning counts the boxes of each cause of :data:`taut.dgp.undecided.CAUSES`.
+#: How the warning counts the boxes of each cause of :data:`taut.dgp._undecided.CAUSES`.
 CAUSE_TEXT = {
     "narrow": "too narrow to split",
     "singular": "around a singular solution, even in 256-bit balls",
@@ -65,7 +65,7 @@ def warning(boxes: Sequence[UndecidedBox], what: str, multiprecision_hint: bool 
         causes[b.cause] += 1
     why = ", ".join(f"{k} {CAUSE_TEXT[c]}" for c, k in causes.items() if k)
     if causes["narrow"] and multiprecision_hint:
-        from taut.interval.precise import available
+        from taut.interval._precise import available
 
         if not available():
             why += "; pip install 'taut[precise]' searches them again in multi-precision"

@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     from rich.console import Console
     from rich.table import Table
 
-    from taut.model.robot import Robot
+    from taut.model._robot import Robot
 
 #: ``command(name, help, fn, robot=True)``: adds a sub-command (see :func:`build_parser`).
 Command = Callable[..., argparse.ArgumentParser]
@@ -43,7 +43,7 @@ class _Parser(argparse.ArgumentParser):
 
 
 def load(spec: str, cable_set: str | None = None) -> Robot:
-    """The robot of a command: a file in any format :mod:`taut.model.formats` reads, or a
+    """The robot of a command: a file in any format :mod:`taut.model._formats` reads, or a
     built-in example; ``cable_set`` is the ``--cable-set`` of a CASPR model."""
     from taut.model import load_robot
 
@@ -111,7 +111,7 @@ def cmd_examples(ns: argparse.Namespace) -> int:
 
 
 def cmd_schema(ns: argparse.Namespace) -> int:
-    from taut.model.schema import schema_text
+    from taut.model._schema import schema_text
 
     sys.stdout.write(schema_text())
     return 0
@@ -157,7 +157,7 @@ def cmd_ik(ns: argparse.Namespace) -> int:
 
 
 def cmd_tensions(ns: argparse.Namespace) -> int:
-    from taut.statics.tension import distribute_tensions
+    from taut.statics._tension import distribute_tensions
 
     robot = load(ns.robot, ns.cable_set)
     pose = A.pose(robot, ns.pose) if ns.pose is not None else A.default_pose(robot)
@@ -227,7 +227,7 @@ def cmd_workspace(ns: argparse.Namespace) -> int:
     import numpy as np
 
     from taut.parallel import get_executor
-    from taut.statics.wrench import BoxWrenchSet
+    from taut.statics._wrench import BoxWrenchSet
     from taut.workspace import evaluate_workspace
 
     out = A.output_file(ns.out, "--out", {".npz"})

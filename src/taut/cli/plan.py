@@ -23,9 +23,9 @@ if TYPE_CHECKING:
     import numpy as np
 
     from taut.cli.main import Command
-    from taut.model.robot import Robot
-    from taut.planning.manifold import WrenchFeasibleManifold
-    from taut.planning.search import PathResult
+    from taut.model._robot import Robot
+    from taut.planning._manifold import WrenchFeasibleManifold
+    from taut.planning._search import PathResult
 
 #: Smallest chart radius: the number of charts grows as radius^-k on a k-dimensional slice,
 #: and below this even a 2-D slice needs more charts than a search can visit.
@@ -51,7 +51,7 @@ Angles are periodic: a path may cross phi = +-pi or theta = 0, so its last pose 
 or the same orientation written with other angles (phi +- 2pi, or phi + pi with -theta).
 POSE is x,y,z,phi,theta,sigma (tilt-and-torsion; 35deg, pi/8 accepted) or the name of a
 reference pose of the robot (e.g. q1).  The path is checked independently at --subdivide
-interpolated points per step (taut.statics.feasibility).  No path is an answer (exit 0):
+interpolated points per step (taut.statics._feasibility).  No path is an answer (exit 0):
 "found": false, with "exhausted": true for a proof (A*), false when a budget ran out.
 JSON: {"planner", "method", "found", "path": [[x,y,z,phi,theta,sigma], ...], "charts",
 "nodes", "elapsed_s", "min_tension_margin", "expanded", "exhausted", "length", "verified"}."""
@@ -73,7 +73,7 @@ def _pose(robot: Robot, text: str, what: str) -> np.ndarray:
 
 def _fixed(text: str | None, start: np.ndarray) -> dict[str, float]:
     from taut.cli import args as A
-    from taut.planning.manifold import POSE_NAMES
+    from taut.planning._manifold import POSE_NAMES
 
     if text is None:
         return {}
@@ -151,8 +151,8 @@ def cmd_plan(ns: argparse.Namespace) -> int:
 
     from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
-    from taut.planning.manifold import POSE_NAMES, WrenchFeasibleManifold
-    from taut.planning.verify import verify_path
+    from taut.planning._manifold import POSE_NAMES, WrenchFeasibleManifold
+    from taut.planning._verify import verify_path
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)

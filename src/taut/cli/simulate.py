@@ -1,5 +1,5 @@
 """``taut simulate ROBOT``: a trajectory through waypoints, tracked under computed-torque
-control with the tension distribution in the loop (:mod:`taut.dynamics.control`).
+control with the tension distribution in the loop (:mod:`taut.dynamics._control`).
 
 References
 ----------
@@ -23,8 +23,8 @@ if TYPE_CHECKING:
     import numpy as np
 
     from taut.cli.main import Command
-    from taut.dynamics.control import WrenchSteps
-    from taut.model.robot import Robot
+    from taut.dynamics._control import WrenchSteps
+    from taut.model._robot import Robot
 
 DISTURBANCE_HELP = (
     "external wrench on the platform, unknown to the controller: T0:W (a step from T0 s on) or "
@@ -57,7 +57,7 @@ def waypoints(robot: Robot, text: str) -> np.ndarray:
 def disturbance(robot: Robot, text: str) -> WrenchSteps:
     """``--disturbance T0:W[;T0:T1:W...]`` (:data:`DISTURBANCE_HELP`)."""
     from taut.cli import args as A
-    from taut.dynamics.control import WrenchSteps
+    from taut.dynamics._control import WrenchSteps
 
     steps = []
     for part in text.split(";"):
@@ -96,9 +96,9 @@ def cmd_simulate(ns: argparse.Namespace) -> int:
     from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
     from taut.cli.progress import progress_bar, wanted
-    from taut.dynamics.control import DEFAULT_KD, DEFAULT_KP, simulate_control, with_mass_error
+    from taut.dynamics._control import DEFAULT_KD, DEFAULT_KP, simulate_control, with_mass_error
     from taut.motion import trajectory_from_waypoints
-    from taut.statics.tension import METHODS
+    from taut.statics._tension import METHODS
 
     out = A.output_file(ns.out, "--out", {".csv"})
     plot = A.plot_file(ns.plot)

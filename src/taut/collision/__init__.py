@@ -10,10 +10,10 @@ References
    (docs/references.bib: lieskovsky2020)
 """
 
-from taut.collision.capsules import CapsuleModel, capsule_model, capsule_segments
-from taut.collision.proximity import ProximityResult, proximity
-from taut.collision.singularity import force_closure_singular, jacobian_singular, positive_span_lp
-from taut.collision.trajectory import CheckResult, check_poses, load_trajectory, sample_waypoints, trajectory_poses
+from taut.collision._capsules import CapsuleModel, capsule_model, capsule_segments
+from taut.collision._proximity import ProximityResult, proximity
+from taut.collision._singularity import force_closure_singular, jacobian_singular, positive_span_lp
+from taut.collision._trajectory import CheckResult, check_poses, load_trajectory, sample_waypoints, trajectory_poses
 
 __all__ = [
     "CapsuleModel",

@@ -10,10 +10,10 @@ References
    di Bologna, 2015, Chs. 2–3 and §4.1.2. (docs/references.bib: berti2015)
 """
 
-from taut.dgp.inverse import IGPResult, IGPSolution, solve_igp
-from taut.dgp.solve import DGPResult, DGPSolution, solve_dgp
-from taut.dgp.stability import is_stable, reduced_hessian
-from taut.dgp.tracking import track, track_path
+from taut.dgp._inverse import IGPResult, IGPSolution, solve_igp
+from taut.dgp._solve import DGPResult, DGPSolution, solve_dgp
+from taut.dgp._stability import is_stable, reduced_hessian
+from taut.dgp._tracking import track, track_path
 
 __all__ = [
     "DGPResult",

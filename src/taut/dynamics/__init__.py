@@ -7,10 +7,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from taut.lazy import lazy_exports
+from taut._lazy import lazy_exports
 
 if TYPE_CHECKING:
-    from taut.dynamics.control import (
+    from taut.dynamics._control import (
         DEFAULT_KD,
         DEFAULT_KP,
         ControlResult,
@@ -18,7 +18,7 @@ if TYPE_CHECKING:
         simulate_control,
         with_mass_error,
     )
-    from taut.dynamics.forward import (
+    from taut.dynamics._forward import (
         INTEGRATORS,
         ForwardDynamicsResult,
         IntegrationError,
@@ -27,9 +27,9 @@ if TYPE_CHECKING:
         forward_dynamics,
         rk4_step,
     )
-    from taut.dynamics.inverse import InverseDynamicsResult, inverse_dynamics, required_wrench
-    from taut.dynamics.loop import LoopModel, loop_model
-    from taut.dynamics.platform import (
+    from taut.dynamics._inverse import InverseDynamicsResult, inverse_dynamics, required_wrench
+    from taut.dynamics._loop import LoopModel, loop_model
+    from taut.dynamics._platform import (
         bias_forces,
         coriolis_matrix,
         generalized_forces,
@@ -41,31 +41,31 @@ if TYPE_CHECKING:
 
 #: Every name is imported on first use (PEP 562): the forward dynamics loads Numba and SciPy.
 _LAZY = {
-    "DEFAULT_KD": "taut.dynamics.control",
-    "DEFAULT_KP": "taut.dynamics.control",
-    "ControlResult": "taut.dynamics.control",
-    "WrenchSteps": "taut.dynamics.control",
-    "simulate_control": "taut.dynamics.control",
-    "with_mass_error": "taut.dynamics.control",
-    "INTEGRATORS": "taut.dynamics.forward",
-    "ForwardDynamicsResult": "taut.dynamics.forward",
-    "IntegrationError": "taut.dynamics.forward",
-    "acceleration": "taut.dynamics.forward",
-    "cable_tensions": "taut.dynamics.forward",
-    "forward_dynamics": "taut.dynamics.forward",
-    "rk4_step": "taut.dynamics.forward",
-    "InverseDynamicsResult": "taut.dynamics.inverse",
-    "inverse_dynamics": "taut.dynamics.inverse",
-    "required_wrench": "taut.dynamics.inverse",
-    "LoopModel": "taut.dynamics.loop",
-    "loop_model": "taut.dynamics.loop",
-    "bias_forces": "taut.dynamics.platform",
-    "coriolis_matrix": "taut.dynamics.platform",
-    "generalized_forces": "taut.dynamics.platform",
-    "gravity_forces": "taut.dynamics.platform",
-    "mass_matrix": "taut.dynamics.platform",
-    "platform_dynamics": "taut.dynamics.platform",
-    "velocity_jacobian": "taut.dynamics.platform",
+    "DEFAULT_KD": "taut.dynamics._control",
+    "DEFAULT_KP": "taut.dynamics._control",
+    "ControlResult": "taut.dynamics._control",
+    "WrenchSteps": "taut.dynamics._control",
+    "simulate_control": "taut.dynamics._control",
+    "with_mass_error": "taut.dynamics._control",
+    "INTEGRATORS": "taut.dynamics._forward",
+    "ForwardDynamicsResult": "taut.dynamics._forward",
+    "IntegrationError": "taut.dynamics._forward",
+    "acceleration": "taut.dynamics._forward",
+    "cable_tensions": "taut.dynamics._forward",
+    "forward_dynamics": "taut.dynamics._forward",
+    "rk4_step": "taut.dynamics._forward",
+    "InverseDynamicsResult": "taut.dynamics._inverse",
+    "inverse_dynamics": "taut.dynamics._inverse",
+    "required_wrench": "taut.dynamics._inverse",
+    "LoopModel": "taut.dynamics._loop",
+    "loop_model": "taut.dynamics._loop",
+    "bias_forces": "taut.dynamics._platform",
+    "coriolis_matrix": "taut.dynamics._platform",
+    "generalized_forces": "taut.dynamics._platform",
+    "gravity_forces": "taut.dynamics._platform",
+    "mass_matrix": "taut.dynamics._platform",
+    "platform_dynamics": "taut.dynamics._platform",
+    "velocity_jacobian": "taut.dynamics._platform",
 }
 
 __all__ = [

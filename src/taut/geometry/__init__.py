@@ -1,6 +1,6 @@
 """Pure geometry, no robot: rotations and pose conventions."""
 
-from taut.geometry.rotation import (
+from taut.geometry._rotation import (
     CONVENTIONS,
     angles_from_matrix,
     planar_rotation,

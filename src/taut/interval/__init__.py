@@ -9,12 +9,12 @@ References
    di Bologna, 2015, §1.3 and Ch. 3. (docs/references.bib: berti2015)
 """
 
-from taut.interval.arithmetic import Interval, centred_form
-from taut.interval.branch_prune import BranchAndPruneResult, branch_and_prune
-from taut.interval.expression import System, compile_system, const, derivative, sqrt, variables
-from taut.interval.hc4 import contract, evaluate, evaluate_point
-from taut.interval.krawczyk import Certificate, certify, inflate, krawczyk, newton
-from taut.interval.linear import LinearFilter, interval_gauss, preconditioned_solve
+from taut.interval._arithmetic import Interval, centred_form
+from taut.interval._branch_prune import BranchAndPruneResult, branch_and_prune
+from taut.interval._expression import System, compile_system, const, derivative, sqrt, variables
+from taut.interval._hc4 import contract, evaluate, evaluate_point
+from taut.interval._krawczyk import Certificate, certify, inflate, krawczyk, newton
+from taut.interval._linear import LinearFilter, interval_gauss, preconditioned_solve
 
 __all__ = [
     "BranchAndPruneResult",

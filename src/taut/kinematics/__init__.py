@@ -1,10 +1,10 @@
 """Kinematics: poses and frames, inverse kinematics and structure matrix, elastic cables,
 forward kinematics of fully-constrained robots."""
 
-from taut.kinematics.elastic import robot_stiffness, tension_from_stretch, unstretched_length
-from taut.kinematics.forward import FKResult, forward_kinematics
-from taut.kinematics.inverse import IKResult, anchor_points, cable_lengths, inverse_kinematics, structure_matrix
-from taut.kinematics.pose import as_poses, body_frames, platform_frame
+from taut.kinematics._elastic import robot_stiffness, tension_from_stretch, unstretched_length
+from taut.kinematics._forward import FKResult, forward_kinematics
+from taut.kinematics._inverse import IKResult, anchor_points, cable_lengths, inverse_kinematics, structure_matrix
+from taut.kinematics._pose import as_poses, body_frames, platform_frame
 
 __all__ = [
     "FKResult",

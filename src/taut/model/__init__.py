@@ -4,13 +4,13 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from taut.lazy import lazy_exports
-from taut.model.examples import example, example_descriptions, example_names
+from taut._lazy import lazy_exports
+from taut.model._examples import example, example_descriptions, example_names
 
 if TYPE_CHECKING:
-    from taut.model.io import load_robot, parse_robot, robot_from_dict, robot_to_dict, save_robot
-    from taut.model.mjcf import mjcf_text, pose_to_qpos, write_mjcf
-    from taut.model.robot import (
+    from taut.model._io import load_robot, parse_robot, robot_from_dict, robot_to_dict, save_robot
+    from taut.model._mjcf import mjcf_text, pose_to_qpos, write_mjcf
+    from taut.model._robot import (
         Body,
         Cable,
         Capsule,
@@ -25,12 +25,12 @@ if TYPE_CHECKING:
         SwivelPulley,
         Trajectory,
     )
-    from taut.model.schema import robot_schema
+    from taut.model._schema import robot_schema
 
 #: Names re-exported from the modules that load pydantic and PyYAML: imported on first use
 #: (PEP 562), so that listing the examples does not build the pydantic models.
 _LAZY = {
-    **dict.fromkeys(["load_robot", "parse_robot", "robot_from_dict", "robot_to_dict", "save_robot"], "taut.model.io"),
+    **dict.fromkeys(["load_robot", "parse_robot", "robot_from_dict", "robot_to_dict", "save_robot"], "taut.model._io"),
     **dict.fromkeys(
         [
             "Body",
@@ -47,10 +47,10 @@ _LAZY = {
             "SwivelPulley",
             "Trajectory",
         ],
-        "taut.model.robot",
+        "taut.model._robot",
     ),
-    "robot_schema": "taut.model.schema",
-    **dict.fromkeys(["mjcf_text", "pose_to_qpos", "write_mjcf"], "taut.model.mjcf"),
+    "robot_schema": "taut.model._schema",
+    **dict.fromkeys(["mjcf_text", "pose_to_qpos", "write_mjcf"], "taut.model._mjcf"),
 }
 
 

@@ -12,9 +12,9 @@ References
    (docs/references.bib: jaillet2013)
 """
 
-from taut.planning.atlasrrt import atlas_rrt, shorten_path
-from taut.planning.continuation import Atlas, Chart, ImplicitManifold, Polytope, Symmetry, project, tangent_basis
-from taut.planning.search import PathResult, plan_path, refine_path
+from taut.planning._atlasrrt import atlas_rrt, shorten_path
+from taut.planning._continuation import Atlas, Chart, ImplicitManifold, Polytope, Symmetry, project, tangent_basis
+from taut.planning._search import PathResult, plan_path, refine_path
 
 __all__ = [
     "Atlas",

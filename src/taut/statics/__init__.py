@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from taut.lazy import lazy_exports
-from taut.statics.wrench import (
+from taut._lazy import lazy_exports
+from taut.statics._wrench import (
     BoxWrenchSet,
     EllipsoidWrenchSet,
     PolytopeWrenchSet,
@@ -16,19 +16,19 @@ from taut.statics.wrench import (
 )
 
 if TYPE_CHECKING:
-    from taut.statics.feasibility import static_equilibrium, wrench_closure, wrench_feasible
-    from taut.statics.tension import METHODS, TensionResult, distribute_tensions, solve_tensions
+    from taut.statics._feasibility import static_equilibrium, wrench_closure, wrench_feasible
+    from taut.statics._tension import METHODS, TensionResult, distribute_tensions, solve_tensions
 
 #: Names re-exported from modules that load Numba or HiGHS: imported on first use (PEP 562),
-#: so that ``import taut.statics.wrench`` does not pay for them.
+#: so that ``import taut.statics._wrench`` does not pay for them.
 _LAZY = {
-    "static_equilibrium": "taut.statics.feasibility",
-    "wrench_closure": "taut.statics.feasibility",
-    "wrench_feasible": "taut.statics.feasibility",
-    "METHODS": "taut.statics.tension",
-    "TensionResult": "taut.statics.tension",
-    "distribute_tensions": "taut.statics.tension",
-    "solve_tensions": "taut.statics.tension",
+    "static_equilibrium": "taut.statics._feasibility",
+    "wrench_closure": "taut.statics._feasibility",
+    "wrench_feasible": "taut.statics._feasibility",
+    "METHODS": "taut.statics._tension",
+    "TensionResult": "taut.statics._tension",
+    "distribute_tensions": "taut.statics._tension",
+    "solve_tensions": "taut.statics._tension",
 }
 
 

@@ -18,7 +18,7 @@ import numpy as np
 
 from taut.collision import CheckResult, capsule_segments, check_poses, trajectory_poses
 from taut.model import example
-from taut.model.robot import Robot
+from taut.model._robot import Robot
 from taut.viz._style import DISALLOWED, empty_figure
 from taut.viz.robot import draw_robot
 

@@ -8,7 +8,7 @@ References
    Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
 """
 
-from taut.workspace.conditions import (
+from taut.workspace._conditions import (
     CONDITIONS,
     StaticEquilibrium,
     WorkspaceCondition,
@@ -18,8 +18,8 @@ from taut.workspace.conditions import (
     default_wrench_set,
     make_condition,
 )
-from taut.workspace.evaluate import WorkspaceResult, evaluate_workspace
-from taut.workspace.grid import PoseGrid, default_bounds, make_grid, pose_grid, position_grid
+from taut.workspace._evaluate import WorkspaceResult, evaluate_workspace
+from taut.workspace._grid import PoseGrid, default_bounds, make_grid, pose_grid, position_grid
 
 __all__ = [
     "CONDITIONS",

@@ -7,11 +7,11 @@ References
    Waterloo, 2022, Chs. 3–4 (§4.1–4.3) and Ch. 6 (§6.2). (docs/references.bib: rushton2022)
 """
 
-from taut.wrapping.ik import WrappedIK, wrapped_inverse_kinematics
-from taut.wrapping.state import CablePath, CableState, rebuild_path
-from taut.wrapping.trajectory import TrajectoryResult, builtin_trajectory, run_trajectory
-from taut.wrapping.tree import CableStateTree
-from taut.wrapping.update import track, update_state
+from taut.wrapping._ik import WrappedIK, wrapped_inverse_kinematics
+from taut.wrapping._state import CablePath, CableState, rebuild_path
+from taut.wrapping._trajectory import TrajectoryResult, builtin_trajectory, run_trajectory
+from taut.wrapping._tree import CableStateTree
+from taut.wrapping._update import track, update_state
 
 __all__ = [
     "CablePath",

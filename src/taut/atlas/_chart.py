@@ -1,0 +1,129 @@
+"""Charts of a point-mass VSCR: structure, domain and length map (§5.1.1, Eqs. 5.1–5.6 of Rushton 2022).
+
+A *structure* ``S = {s_1, …, s_n}`` (Eq. 5.1) is one cable state per cable, here the
+nodes of the cables' state trees (:class:`taut.wrapping._tree.CableStateTree`).  Its
+*chart* ``C = {l_0, ν(p), A(p), Q}`` (Eq. 5.2) holds
+
+* ``l_0`` (Eq. 5.3): the length of each cable up to the point where it reaches its last
+  object — static segments and the arcs between them (``L_STATIC`` of the tree node);
+* ``ν(p)`` (Eq. 5.4): the arc wrapped about the last object, ``r φ(p)``;
+* ``A(p)`` (Eq. 5.5): where the active segment leaves the last object (the exit points of
+  the equivalent standard CDPR);
+* ``Q``: the component containing the seed point of the *structure-reachable area*
+  ``SRA^S = ∩_i CRA^{s_i}`` (Eq. 5.6), the cable-reachable areas of
+  :mod:`taut.atlas._reachable` — a shapely polygon.
+
+The cable length at ``p ∈ Q`` is Eq. (4.9): ``l_i = l_{0,i} + ν_i(p) + ‖a_i(p) − p‖``.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §5.1.1, Eqs. 5.1–5.6; Eq. 4.9. (docs/references.bib: rushton2022)
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+import numpy as np
+import numpy.typing as npt
+import shapely
+import shapely.affinity
+from shapely.geometry import MultiPolygon, Polygon
+
+from taut.atlas._reachable import close_cracks
+from taut.wrapping._tree import DIR, L_STATIC, OBJ, THETA_IN, CableStateTree
+
+if TYPE_CHECKING:
+    from shapely.geometry.base import BaseGeometry
+
+
+@dataclass
+class Chart:
+    """One chart of the structure atlas: ``nodes[i]`` is the CST node of cable ``i``."""
+
+    index: int
+    nodes: tuple[int, ...]  #: the structure S (Eq. 5.1) as CST nodes, one per cable
+    domain: Polygon  #: Q, the SRA component containing the seed
+    seed: np.ndarray  #: the point the chart was built from
+    states: tuple[tuple[tuple[int, int], ...], ...] = ()  #: per cable, the wrapped objects ``((object, ±1), ...)``
+    neighbours: dict[int, list[int]] = field(default_factory=dict)  #: adjacent chart index → transitions
+
+    @property
+    def area(self) -> float:
+        return float(self.domain.area)
+
+
+def chart_lengths(
+    trees: list[CableStateTree], nodes: Sequence[int], points: npt.ArrayLike, offsets: npt.ArrayLike | None = None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(l (N, n), l_0 + ν (N, n), A (N, n, 2))`` of structure ``nodes`` at reference
+    points ``points`` ``(N, 2)``: Eq. (4.9) with the chart elements of Eqs. (5.3)–(5.5),
+    vectorised.  Cable ``i`` is attached at ``points + offsets[i]`` (the anchor offsets
+    ``R(θ) r_i`` of a rigid platform at a fixed orientation; default 0).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Eqs. 4.9 and 5.3–5.5. (docs/references.bib: rushton2022)
+    """
+    P0 = np.atleast_2d(np.asarray(points, float))
+    n = len(trees)
+    off = np.zeros((n, 2)) if offsets is None else np.asarray(offsets, float).reshape(n, 2)
+    L_out = np.empty((len(P0), n))
+    wrapped = np.empty((len(P0), n))
+    A = np.empty((len(P0), n, 2))
+    for i, (tree, node) in enumerate(zip(trees, nodes)):
+        P = P0 + off[i]
+        k = int(tree.I[node, OBJ])
+        cx, cy, r = tree.circles[k]
+        d = tree.F[node, DIR]
+        Dx, Dy = P[:, 0] - cx, P[:, 1] - cy
+        L = np.sqrt(np.maximum(Dx * Dx + Dy * Dy - r * r, 0.0))
+        phi = np.arctan2(Dy, Dx) - np.arctan2(-d * r, L)
+        ux, uy = np.cos(phi), np.sin(phi)
+        theta = np.arctan2(-d * ux, d * uy)
+        low = -math.pi if node == 0 else -0.5 * math.pi
+        w = np.mod(d * (theta - tree.F[node, THETA_IN]) - low, 2 * math.pi) + low
+        wrapped[:, i] = tree.F[node, L_STATIC] + r * w
+        L_out[:, i] = wrapped[:, i] + L
+        A[:, i, 0] = cx + d * r * uy
+        A[:, i, 1] = cy - d * r * ux
+    return L_out, wrapped, A
+
+
+def structure_reachable_area(
+    cras: list[BaseGeometry], offsets: npt.ArrayLike | None = None, pra: BaseGeometry | None = None
+) -> Polygon | MultiPolygon:
+    """``SRA^S = ∩_i CRA^{s_i}`` (Eq. 5.6) of the cables' reachable areas; for a rigid
+    platform at orientation ``θ``, ``SRA^{S,θ} = (∩_i (CRA^{s_i} − R(θ) r_i)) ∩ PRA^{S,θ}``
+    (Eq. 5.15) with ``offsets[i] = R(θ) r_i`` and ``pra`` the platform-reachable area.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Eq. 5.6. (docs/references.bib: rushton2022)
+    """
+    if offsets is not None:
+        cras = [
+            shapely.affinity.translate(a, -float(o[0]), -float(o[1])) if (o[0] or o[1]) else a
+            for a, o in zip(cras, np.asarray(offsets, float))
+        ]
+    sra = shapely.intersection_all(cras)
+    if pra is not None:
+        sra = sra.intersection(pra)
+    return close_cracks(sra)
+
+
+def component_containing(area: BaseGeometry, point: npt.ArrayLike, tol: float = 1e-9) -> Polygon | None:
+    """The component of ``area`` that contains ``point`` (within ``tol``), or ``None``."""
+    parts = [g for g in getattr(area, "geoms", [area]) if isinstance(g, Polygon) and not g.is_empty]
+    if not parts:
+        return None
+    pt = shapely.Point(point)
+    dist = np.array([g.distance(pt) for g in parts])
+    j = int(np.argmin(dist))
+    return parts[j] if dist[j] <= tol else None

@@ -1,0 +1,147 @@
+"""Structure-atlas inverse kinematics of a planar VSCR (§5.3.2, Algs. 5.3 and 5.4 of Rushton 2022).
+
+*Direct* (Alg. 5.3): the active chart of a point is the first chart whose domain ``Q``
+contains it (a point-in-polygon test, here shapely's prepared ``contains_xy`` over all
+query points of a chart at once); the lengths follow from the chart's elements by
+Eq. (4.9), ``l_i = l_{0,i} + ν_i(b_i) + ‖a_i(b_i) − b_i‖`` with the anchor
+``b_i = p + R(θ) r_i`` of the atlas page (``b_i = p`` for a point mass;
+:func:`taut.atlas._chart.chart_lengths`).
+Several charts may contain a point (Fig. 5.1); Alg. 5.3 takes the first, and so does
+:func:`direct_ik` unless ``charts`` restricts the search (e.g. to the workspace).
+
+*Iterative* (Alg. 5.4): from the active chart and a move ``p_1 → p_2``, crossing a
+traversable edge of the active chart's domain switches to the adjacent chart; leaving
+the domain anywhere else is an invalid move; otherwise the chart stays.  Steps must be
+small against the charts (one switch per step, the earliest crossing along the move).
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §5.3.2, Algs. 5.3 and 5.4; Eq. 4.9. (docs/references.bib: rushton2022)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+import shapely
+
+from taut.atlas._atlas import StructureAtlas
+from taut.atlas._chart import chart_lengths
+from taut.errors import PoseError
+from taut.geometry._intersections import segments_intersect
+
+
+@dataclass(frozen=True)
+class AtlasIK:
+    """Inverse kinematics at ``N`` points."""
+
+    charts: np.ndarray  #: ``(N,)`` active chart (``-1`` where no chart contains the point)
+    lengths: np.ndarray  #: ``(N, n)`` cable lengths (NaN where no chart)
+    exit_points: np.ndarray  #: ``(N, n, 2)`` where each active segment leaves its last object
+
+    @property
+    def found(self) -> np.ndarray:
+        return self.charts >= 0
+
+
+def locate(atlas: StructureAtlas, points: npt.ArrayLike, charts: Iterable[int] | None = None) -> np.ndarray:
+    """``(N,)`` index of the first chart (of ``charts``, default all) containing each point."""
+    P = np.atleast_2d(np.asarray(points, float))
+    out = np.full(len(P), -1, dtype=np.int64)
+    todo = np.arange(len(P))
+    for c in range(len(atlas.charts)) if charts is None else charts:
+        if not len(todo):
+            break
+        dom = atlas.charts[c].domain
+        shapely.prepare(dom)
+        x0, y0, x1, y1 = dom.bounds
+        q = P[todo]
+        box = (q[:, 0] >= x0) & (q[:, 0] <= x1) & (q[:, 1] >= y0) & (q[:, 1] <= y1)
+        if not box.any():
+            continue
+        sel = todo[box]
+        hit = shapely.contains_xy(dom, P[sel, 0], P[sel, 1])
+        out[sel[hit]] = c
+        todo = np.setdiff1d(todo, sel[hit], assume_unique=True)
+    return out
+
+
+def _evaluate(atlas: StructureAtlas, P: np.ndarray, ch: np.ndarray) -> AtlasIK:
+    n = len(atlas.trees)
+    lengths = np.full((len(P), n), np.nan)
+    exits = np.full((len(P), n, 2), np.nan)
+    for c in np.unique(ch[ch >= 0]):
+        sel = ch == c
+        L, _, A = chart_lengths(atlas.trees, atlas.charts[c].nodes, P[sel], atlas.offsets)
+        lengths[sel], exits[sel] = L, A
+    return AtlasIK(ch, lengths, exits)
+
+
+def direct_ik(atlas: StructureAtlas, points: npt.ArrayLike, charts: Iterable[int] | None = None) -> AtlasIK:
+    """Alg. 5.3 at every point of ``points`` ``(N, 2)``.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.3.2, Alg. 5.3. (docs/references.bib: rushton2022)
+    """
+    P = np.atleast_2d(np.asarray(points, float))
+    return _evaluate(atlas, P, locate(atlas, P, charts))
+
+
+def _crossings(atlas: StructureAtlas, chart: int, p1: np.ndarray, d: np.ndarray) -> Iterator[tuple[float, int]]:
+    """``(t, neighbour)`` of the traversable edges of ``chart`` that ``p1 + t d`` crosses
+    towards the neighbour."""
+    for nb, idx in atlas.charts[chart].neighbours.items():
+        for k in idx:
+            a, b = atlas.edges[k].segment
+            if d @ atlas.edges[k].normal > 0 and segments_intersect(p1, p1 + d, a, b):
+                e = b - a
+                den = d[0] * e[1] - d[1] * e[0]
+                w = a - p1
+                yield ((w[0] * e[1] - w[1] * e[0]) / den if den != 0 else 0.0), nb
+
+
+def iterative_step(atlas: StructureAtlas, chart: int, p1: npt.ArrayLike, p2: npt.ArrayLike) -> int:
+    """Alg. 5.4: the active chart after the move ``p1 → p2`` from ``chart``.  The earliest
+    traversable edge crossed switches the chart; the rest of the move continues from the
+    new chart (several transitions at one point — e.g. two cables wrapping at a corner of
+    the domain — are taken one after the other).  Raises :class:`PoseError` if the move
+    leaves a chart through an edge that is not traversable."""
+    p1, p2 = np.asarray(p1, float), np.asarray(p2, float)
+    d = p2 - p1
+    t0, prev = 0.0, -1
+    for _ in range(4 * len(atlas.trees) + 4):
+        best, target = np.inf, chart
+        for t, nb in _crossings(atlas, chart, p1, d):
+            if t >= t0 - 1e-12 and t < best and not (nb == prev and t <= t0 + 1e-12):
+                best, target = t, nb
+        if target == chart:
+            rest = shapely.LineString([p1 + t0 * d, p2]) if t0 < 1 else shapely.Point(p2)
+            if not shapely.covers(atlas.charts[chart].domain.buffer(1e-9), rest):
+                raise PoseError(
+                    f"the move {p1.tolist()} → {p2.tolist()} leaves chart {chart} through an edge that is not traversable"
+                )
+            return chart
+        prev, chart, t0 = chart, target, max(t0, best)
+    raise PoseError(f"the move {p1.tolist()} → {p2.tolist()} does not settle in a chart")
+
+
+def iterative_ik(atlas: StructureAtlas, points: npt.ArrayLike, chart: int = 0) -> AtlasIK:
+    """Alg. 5.4 along the polyline ``points`` ``(T, 2)`` starting in chart ``chart``.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.3.2, Alg. 5.4. (docs/references.bib: rushton2022)
+    """
+    P = np.atleast_2d(np.asarray(points, float))
+    ch = np.empty(len(P), dtype=np.int64)
+    ch[0] = chart
+    for j in range(1, len(P)):
+        ch[j] = iterative_step(atlas, int(ch[j - 1]), P[j - 1], P[j])
+    return _evaluate(atlas, P, ch)

@@ -1,0 +1,153 @@
+"""Capsule collision model of a robot (§2.3.2, §3.1.2 and §3.4 of
+Lieskovský 2020).
+
+Every collidable element is a *capsule*: a segment swept by a sphere of radius ``ρ``
+(Fig. 2.1).  The model of a robot is
+
+* one capsule per cable, from its exit point ``a_i`` to its anchor ``b_i``, radius
+  ``cables[i].radius`` (§3.1.2: a taut cable is a single capsule);
+* the capsules of the platform (``platform.shape.capsules``, body 0) and of each extra
+  body (``platform.bodies[k].capsules``), in that order — e.g. the two rectangles and the
+  joint column of the adjustable platform (Fig. 3.3).
+
+Capsule ``c`` has the 0-based index ``c`` (cables first), so that the 1-based numbers shown
+to users follow the columns of ``D`` in Eq. 3.4.1.  The pairs checked are those of §3.4:
+
+* cable–cable, every pair (``D_I``, Eq. 3.4.2);
+* cable–body capsule (``D_II``, ``D_III``, Eqs. 3.4.3–3.4.4), except the capsules of the
+  cable's own body that contain its anchor (the zeros of ``D_II``: a cable cannot hit the
+  platform segment it is attached to without hitting the others first);
+* body–body pairs are not checked: the joint limits keep the bodies apart (§3.1.2).
+
+Cables that share an end point (all cables of a point-mass platform at their anchor,
+cables leaving one exit point) always touch there; such a pair is compared with the shared
+end cut back by ``c = (ρ_i + ρ_j) / sin(SHARED_END_ANGLE)`` (at least ``SHARED_END_MIN`` of
+the shorter cable): the two interfere iff their capsules meet farther than ``c`` from the
+common point — at an angle of about one degree or less, or by crossing elsewhere.
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.2, §3.1.2, §3.4, Eqs.
+   3.4.1–3.4.4, Figs. 2.1 and 3.3. (docs/references.bib: lieskovsky2020)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from taut.kinematics._inverse import anchors_at, cable_paths
+from taut.kinematics._pose import body_frames
+from taut.model._robot import Robot
+
+__all__ = ["CapsuleModel", "capsule_model", "capsule_segments"]
+
+#: Cables sharing an end point interfere iff their angle there is below about this [rad].
+SHARED_END_ANGLE = math.radians(1.0)
+#: Smallest cut at a shared end, as a fraction of the shorter cable (cables of radius 0).
+SHARED_END_MIN = 1e-6
+#: Anchors closer than this [m] to a capsule's segment are "on" it; end points closer than
+#: this coincide.
+ON_TOL = 1e-9
+
+
+@dataclass(frozen=True)
+class CapsuleModel:
+    """The capsules of a robot and the pairs to check.
+
+    ``pairs (P, 2)`` are 0-based capsule indices ``i < j`` (``i`` always a cable);
+    ``shared (P, 2)`` flags a common exit point / anchor of a cable–cable pair and
+    ``cut (P,)`` is the cut-back length ``c`` used there."""
+
+    names: tuple[str, ...]
+    radii: np.ndarray  #: ``(C,)``
+    body: np.ndarray  #: ``(C,)`` body index of body capsules, ``-1`` for cables
+    local: np.ndarray  #: ``(K, 2, 3)`` end points of the body capsules in their body frames
+    n_cables: int
+    pairs: np.ndarray
+    shared: np.ndarray
+    cut: np.ndarray
+
+    @property
+    def n_capsules(self) -> int:
+        return len(self.names)
+
+
+def _point_on_segment(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> bool:
+    v = b - a
+    vv = float(v @ v)
+    t = 0.0 if vv == 0 else min(1.0, max(0.0, float((p - a) @ v) / vv))
+    return float(np.linalg.norm(a + t * v - p)) <= ON_TOL
+
+
+def capsule_model(robot: Robot) -> CapsuleModel:
+    """The capsule model of ``robot``: capsules, radii and the pairs to check.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §3.1.2, §3.4.
+       (docs/references.bib: lieskovsky2020)
+    """
+    n = robot.n_cables
+    caps = robot.body_capsules
+    pad = np.zeros(3 - robot.dimension)
+    names = [f"cable {i + 1}" for i in range(n)] + [c.name or f"body {k} capsule" for k, c in caps]
+    radii = np.array([c.radius for c in robot.cables] + [c.radius for _, c in caps], float)
+    body = np.array([-1] * n + [k for k, _ in caps], int)
+    local = np.array([[np.r_[c.a, pad], np.r_[c.b, pad]] for _, c in caps], float).reshape(-1, 2, 3)
+    anchors = np.concatenate([robot.anchors, np.zeros((n, 3 - robot.dimension))], axis=1)
+    exits = robot.exits
+    pairs, shared, cut = [], [], []
+    for i in range(n):
+        for j in range(i + 1, n):
+            same_exit = np.linalg.norm(exits[i] - exits[j]) <= ON_TOL
+            same_anchor = (
+                robot.cable_bodies[i] == robot.cable_bodies[j] and np.linalg.norm(anchors[i] - anchors[j]) <= ON_TOL
+            )
+            pairs.append((i, j))
+            shared.append((bool(same_exit), bool(same_anchor)))
+            cut.append((radii[i] + radii[j]) / math.sin(SHARED_END_ANGLE))
+    for i in range(n):
+        for c, (k, _) in enumerate(caps):
+            if k == robot.cable_bodies[i] and _point_on_segment(anchors[i], local[c, 0], local[c, 1]):
+                continue
+            pairs.append((i, n + c))
+            shared.append((False, False))
+            cut.append(0.0)
+    return CapsuleModel(
+        tuple(names),
+        radii,
+        body,
+        local,
+        n,
+        np.array(pairs, int).reshape(-1, 2),
+        np.array(shared, bool).reshape(-1, 2),
+        np.array(cut, float),
+    )
+
+
+def capsule_segments(
+    robot: Robot, poses: np.ndarray, model: CapsuleModel | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """End points ``A, B`` of every capsule at each pose, ``(N, C, 3)`` each (planar robots
+    get ``z = 0``).  Cable capsules run from the exit point (``A``; the tangent point of a
+    swivelling pulley) to the anchor (``B``).
+    ``poses`` must already be validated (:func:`taut.kinematics.as_poses`)."""
+    model = capsule_model(robot) if model is None else model
+    N, n, d = poses.shape[0], robot.n_cables, robot.dimension
+    A = np.zeros((N, model.n_capsules, 3))
+    B = np.zeros((N, model.n_capsules, 3))
+    b = anchors_at(robot, poses)
+    A[:, :n, :d] = cable_paths(robot, b)[1] if robot.swivel_cables else robot.exits
+    B[:, :n, :d] = b
+    if model.n_capsules > n:
+        pos, rot = body_frames(robot, poses)
+        k = model.body[n:]
+        loc = model.local[..., :d]
+        A[:, n:, :d] = pos[:, k] + np.einsum("nkij,kj->nki", rot[:, k], loc[:, 0])
+        B[:, n:, :d] = pos[:, k] + np.einsum("nkij,kj->nki", rot[:, k], loc[:, 1])
+    return A, B

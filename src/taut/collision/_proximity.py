@@ -1,0 +1,129 @@
+"""Self-collision by capsule proximity: the matrices ``D`` and ``E`` of §3.4 of
+Lieskovský (2020) and the colliding pairs at each pose.
+
+For each pair of capsules ``(i, j)`` of :func:`taut.collision._capsules.capsule_model` the
+proximity ``δ_ij`` is the segment–segment distance of §3.5
+(:mod:`taut.geometry._segments`), and the clearance is ``ε_ij = δ_ij − (ρ_i + ρ_j)``
+(§2.3.2).  The pose is interference free iff every ``ε_ij > 0``; a pair with ``ε_ij ≤ 0``
+collides.  ``D`` (Eq. 3.4.1) has one row per cable and one column per capsule (cables
+first, then the body capsules); ``E`` holds the ``ε_ij`` in the same layout (the source
+prints it transposed).  Pairs that are not checked are ``NaN`` in both (the source writes 0
+in ``D`` and 1 in ``E``).  The distances of all poses and pairs are computed in one Numba
+kernel.
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.2, §3.4 (Eq. 3.4.1), §3.5.
+   (docs/references.bib: lieskovsky2020)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+from numba import njit
+
+from taut.collision._capsules import SHARED_END_MIN, CapsuleModel, capsule_model, capsule_segments
+from taut.geometry._segments import segment_distance_scalar
+from taut.kinematics._pose import as_poses
+from taut.model._robot import Robot
+
+__all__ = ["ProximityResult", "proximity"]
+
+
+@njit(cache=True)
+def _cut(P: np.ndarray, Q: np.ndarray, c: float) -> np.ndarray:
+    """``P`` moved towards ``Q`` by ``c`` (at most to ``Q``)."""
+    v = Q - P
+    L = np.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+    if L == 0.0:
+        return P.copy()
+    return P + v * (min(c, L) / L)
+
+
+@njit(cache=True)
+def _proximity_kernel(
+    A: np.ndarray, B: np.ndarray, pairs: np.ndarray, shared: np.ndarray, cut: np.ndarray, dist: np.ndarray
+) -> None:
+    N = A.shape[0]
+    for k in range(N):
+        for p in range(pairs.shape[0]):
+            i, j = pairs[p, 0], pairs[p, 1]
+            ai, bi, aj, bj = A[k, i], B[k, i], A[k, j], B[k, j]
+            if shared[p, 0] or shared[p, 1]:
+                li = np.sqrt(np.sum((bi - ai) ** 2))
+                lj = np.sqrt(np.sum((bj - aj) ** 2))
+                c = max(cut[p], SHARED_END_MIN * min(li, lj))
+                if shared[p, 0]:
+                    ai, aj = _cut(ai, bi, c), _cut(aj, bj, c)
+                if shared[p, 1]:
+                    bi, bj = _cut(bi, ai, c), _cut(bj, aj, c)
+            dist[k, p] = segment_distance_scalar(ai, bi, aj, bj)[0]
+
+
+@dataclass(frozen=True)
+class ProximityResult:
+    """Proximities of the capsule pairs of ``model`` at ``N`` poses."""
+
+    model: CapsuleModel
+    distances: np.ndarray  #: ``(N, P)`` proximities ``δ`` of ``model.pairs``
+    clearances: np.ndarray  #: ``(N, P)`` ``ε = δ − (ρ_i + ρ_j)``
+
+    @property
+    def colliding(self) -> np.ndarray:
+        """``(N, P)`` bool: ``ε ≤ 0``."""
+        return self.clearances <= 0.0
+
+    @property
+    def interference_free(self) -> np.ndarray:
+        """``(N,)`` bool: every checked ``ε > 0`` (§3.4)."""
+        return np.asarray(~self.colliding.any(axis=1))
+
+    @property
+    def min_clearance(self) -> np.ndarray:
+        """``(N,)`` smallest ``ε`` over the checked pairs (``inf`` when none is checked)."""
+        if self.clearances.shape[1] == 0:
+            return np.full(self.clearances.shape[0], np.inf)
+        return self.clearances.min(axis=1)
+
+    def collisions(self, k: int) -> list[tuple[int, int]]:
+        """Colliding pairs at pose ``k`` as 0-based capsule indices ``(i, j)``."""
+        return [(int(self.model.pairs[p, 0]), int(self.model.pairs[p, 1])) for p in np.flatnonzero(self.colliding[k])]
+
+    def _matrix(self, values: np.ndarray) -> np.ndarray:
+        N = values.shape[0]
+        out = np.full((N, self.model.n_cables, self.model.n_capsules), np.nan)
+        out[:, self.model.pairs[:, 0], self.model.pairs[:, 1]] = values
+        return out
+
+    @property
+    def D(self) -> np.ndarray:
+        """Proximity matrix ``D`` (Eq. 3.4.1), ``(N, n, C)``, ``NaN`` where not checked."""
+        return self._matrix(self.distances)
+
+    @property
+    def E(self) -> np.ndarray:
+        """Clearance matrix ``E`` (§3.4), ``(N, n, C)``, ``NaN`` where not checked."""
+        return self._matrix(self.clearances)
+
+
+def proximity(robot: Robot, poses: npt.ArrayLike, model: CapsuleModel | None = None) -> ProximityResult:
+    """Proximities and clearances of all checked capsule pairs at each pose (``(N, pose_size)``
+    or one pose).  Raises :class:`~taut.errors.PoseError` for invalid poses.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §3.4, Eq. 3.4.1.
+       (docs/references.bib: lieskovsky2020)
+    """
+    arr, _ = as_poses(robot, poses)
+    model = capsule_model(robot) if model is None else model
+    A, B = capsule_segments(robot, arr, model)
+    dist = np.empty((arr.shape[0], len(model.pairs)))
+    _proximity_kernel(A, B, model.pairs, model.shared, model.cut, dist)
+    rho = model.radii[model.pairs[:, 0]] + model.radii[model.pairs[:, 1]]
+    return ProximityResult(model, dist, dist - rho[None, :])

@@ -1,0 +1,145 @@
+"""Singular configurations (Lieskovský 2020, §2.3.1, after Diao & Ma 2007, 2008).
+
+* **Jacobian singularity**: the inverse-kinematics Jacobian ``J`` (Eq. 2.3.1; Eq. 3.2.12 for
+  the adjustable platform, :func:`taut.kinematics._jointed.actuator_jacobian`) loses rank.
+  Decided from its singular values: singular iff ``σ_min ≤ tol · σ_max`` (``JACOBIAN_TOL``),
+  which is also the case when ``J`` has fewer rows than columns (fewer actuators than
+  degrees of freedom: under-constrained robots are Jacobian-singular everywhere).
+* **Force-closure singularity**: the columns of the structure matrix ``W`` (Eq. 3.3.10) do
+  not positively span the wrench space (Eqs. 2.3.2–2.3.3), so that some wrench cannot be
+  resisted with positive tensions.  Two methods:
+
+  - ``"fast"`` — the vectorised hyperplane test :func:`taut.statics._feasibility.wrench_closure`
+    (a Numba kernel over all poses: ``rank W = m`` and every facet normal of ``W·[0,1]^n``
+    has columns strictly on both sides, relative margin ``1e-10``);
+  - ``"lp"`` — the reference: the columns (scaled to unit length, which does not change
+    positive spanning) positively span ``R^m`` iff ``rank W = m`` and some ``τ > 0`` has
+    ``W τ = 0`` (Goldman & Tucker); one linear program per pose (HiGHS) maximises the
+    smallest tension ``t`` subject to ``W τ = 0``, ``t ≤ τ_i ≤ 1``; closure iff
+    ``t* > LP_TOL`` and ``σ_min(W) > RANK_TOL σ_max(W)``.
+
+  Both count configurations on the boundary (a column exactly on a facet hyperplane, as at
+  step 126 of simulation b, where four cables lie in one plane) as singular; the margins
+  keep the verdicts stable under rounding.
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.1, Eqs. 2.3.1–2.3.3, Eqs.
+   3.2.12 and 3.3.10. (docs/references.bib: lieskovsky2020)
+.. [2] X. Diao, O. Ma, "A method of verifying force-closure condition for general cable
+   manipulators with seven cables", Mechanism and Machine Theory 42, 2007.
+   (docs/references.bib: diao2007)
+.. [3] X. Diao, O. Ma, Q. Lu, "Singularity analysis of planar cable-driven parallel robots",
+   2008. (docs/references.bib: diao2008)
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.errors import TautError
+from taut.statics._feasibility import wrench_closure
+
+__all__ = ["force_closure_singular", "jacobian_singular", "positive_span_lp"]
+
+#: ``σ_min(J) ≤ JACOBIAN_TOL · σ_max(J)``: Jacobian singular.
+JACOBIAN_TOL = 1e-8
+#: Smallest normalised tension of the LP below which the columns do not positively span.
+LP_TOL = 1e-9
+#: ``σ_min(W) ≤ RANK_TOL · σ_max(W)``: rank-deficient structure matrix.
+RANK_TOL = 1e-10
+
+
+def jacobian_singular(J: npt.ArrayLike, tol: float = JACOBIAN_TOL) -> tuple[np.ndarray, np.ndarray]:
+    """Jacobian singularity of ``J (N, rows, cols)``: ``(singular (N,), σ_min/σ_max (N,))``.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.1, Eq. 2.3.1.
+       (docs/references.bib: lieskovsky2020)
+    """
+    J = np.asarray(J, dtype=float)
+    if J.ndim == 2:
+        J = J[None]
+    rows, cols = J.shape[1:]
+    if rows < cols:
+        return np.ones(J.shape[0], bool), np.zeros(J.shape[0])
+    s = np.linalg.svd(J, compute_uv=False)
+    ratio = s[:, -1] / np.maximum(s[:, 0], np.finfo(float).tiny)
+    return ratio <= tol, ratio
+
+
+def positive_span_lp(W: npt.ArrayLike) -> np.ndarray:
+    """Reference positive-span test (one LP per matrix): ``(N,)`` bool, see the module
+    docstring."""
+    import highspy
+
+    W = np.asarray(W, dtype=float)
+    if W.ndim == 2:
+        W = W[None]
+    N, m, n = W.shape
+    out = np.zeros(N, bool)
+    from taut.statics._highs import QuietHighs
+
+    h = QuietHighs()
+    inf = highspy.kHighsInf
+    for k in range(N):
+        norms = np.linalg.norm(W[k], axis=0)
+        if n <= m or np.any(norms == 0):
+            continue  # m + 1 non-zero columns at least are needed
+        s = np.linalg.svd(W[k], compute_uv=False)
+        if s[-1] <= RANK_TOL * s[0] or len(s) < m:
+            continue
+        Wn = W[k] / norms
+        # variables τ_1..τ_n, t;  maximise t
+        lp = highspy.HighsLp()
+        lp.num_col_, lp.num_row_ = n + 1, m + n
+        lp.col_cost_ = np.r_[np.zeros(n), -1.0]
+        lp.col_lower_ = np.r_[np.zeros(n), -inf]
+        lp.col_upper_ = np.r_[np.ones(n), inf]
+        rows = np.zeros((m + n, n + 1))
+        rows[:m, :n] = Wn
+        rows[m:, :n] = np.eye(n)
+        rows[m:, n] = -1.0  # τ_i − t ≥ 0
+        lp.row_lower_ = np.r_[np.zeros(m), np.zeros(n)]
+        lp.row_upper_ = np.r_[np.zeros(m), np.full(n, inf)]
+        csc = rows.T  # column-wise storage
+        starts, index, value = [0], [], []
+        for col in csc:
+            nz = np.flatnonzero(col)
+            index += nz.tolist()
+            value += col[nz].tolist()
+            starts.append(len(index))
+        lp.a_matrix_.format_ = highspy.MatrixFormat.kColwise
+        lp.a_matrix_.start_ = starts
+        lp.a_matrix_.index_ = index
+        lp.a_matrix_.value_ = value
+        h.passModel(lp)
+        h.run()
+        if h.getModelStatus() == highspy.HighsModelStatus.kOptimal:
+            out[k] = -h.getInfo().objective_function_value > LP_TOL
+    return out
+
+
+def force_closure_singular(W: npt.ArrayLike, method: str = "fast") -> np.ndarray:
+    """Force-closure singularity of the structure matrices ``W (N, m, n)``: ``(N,)`` bool,
+    true where the columns do not positively span ``R^m``.  ``method``: ``"fast"``
+    (vectorised, for grids) or ``"lp"`` (reference).
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.1, Eqs. 2.3.2–2.3.3.
+       (docs/references.bib: lieskovsky2020)
+    .. [2] X. Diao, O. Ma, "A method of verifying force-closure condition for general cable
+       manipulators with seven cables", Mechanism and Machine Theory 42, 2007.
+       (docs/references.bib: diao2007)
+    """
+    if method == "fast":
+        return ~wrench_closure(W)
+    if method == "lp":
+        return ~positive_span_lp(W)
+    raise TautError(f"unknown force-closure method {method!r}; expected 'fast' or 'lp'")

@@ -1,0 +1,468 @@
+"""All equilibria of an under-constrained robot for given cable lengths — the direct
+geometrico-static problem (Berti 2015, Ch. 2–3).
+
+:func:`solve_dgp` enumerates the taut subsets of ``m = 1 … min(n, 6, max_taut)`` cables
+(Eq. 2.1), solves each one — ``m = 1`` in closed form (:mod:`taut.dgp._single_cable`),
+``m ≥ 2`` by certified branch-and-prune on the reference-point system of
+:mod:`taut.dgp._formulation` (for ``3 ≤ m ≤ 5`` every box is also contracted onto the pose
+manifold of the rigidity and length equations, its ``geometry``) — through a
+:mod:`taut.parallel` executor, and classifies every solution by the reduced Hessian
+(:mod:`taut.dgp._stability`).  An equilibrium on the border of two taut subsets — a
+cable at its length with zero tension, so that its certified box straddles the bound of
+one subset's tension or of the other's slack-cable inequality — is reported once, with the
+smaller subset as ``taut`` and the larger as ``boundary``: at the certificate's precision it
+solves one of the two.  Boxes double precision leaves too narrow to split (two equilibria
+about to merge) are searched again in 256-bit balls (:mod:`taut.interval._precise`).
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, Chs. 2–3 (Eq. 2.1), §4.2. (docs/references.bib: berti2015)
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from itertools import combinations
+from typing import TYPE_CHECKING
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.dgp._formulation import Subproblem, build_subproblem, load
+from taut.dgp._single_cable import single_cable_equilibria
+from taut.dgp._stability import is_stable
+from taut.dgp._undecided import UndecidedBox, cause_of, subproblem_box
+from taut.errors import TautError
+from taut.geometry._rotation import angles_from_matrix
+from taut.interval import _precise as precise
+from taut.interval._branch_prune import Box, bisect, branch_and_prune, same_solution
+from taut.interval._hc4 import contract
+from taut.interval._krawczyk import Certificate
+from taut.kinematics._swivel import refuse_swivels
+from taut.model._robot import Robot
+from taut.parallel import Executor, as_executor
+
+if TYPE_CHECKING:
+    from distributed import Client
+
+
+@dataclass(frozen=True)
+class DGPSolution:
+    taut: tuple[int, ...]  #: taut cables (0-based indices)
+    position: np.ndarray
+    orientation: np.ndarray  #: angles in the robot's convention (xyz-fixed by default)
+    tensions: np.ndarray  #: all n cables (0 for slack ones)
+    stable: bool
+    certificate_width: float  #: width of the Krawczyk box proven to hold this solution
+    uniqueness_radius: float  #: half-width of the inflated box with no other solution
+    continuum: tuple[float, float] | None = None  #: spin arc of a one-cable family
+    #: a border equilibrium: the cables of ``boundary`` not in ``taut`` are at their lengths
+    #: with zero tension, to within the certificate — it solves ``taut`` or ``boundary``
+    boundary: tuple[int, ...] | None = None
+
+    def as_dict(self) -> dict:
+        d = {
+            "taut": list(self.taut),
+            "position": self.position.tolist(),
+            "orientation": self.orientation.tolist(),
+            "tensions": self.tensions.tolist(),
+            "stable": bool(self.stable),
+            "certificate_width": self.certificate_width,
+            "uniqueness_radius": self.uniqueness_radius,
+        }
+        if self.continuum is not None:
+            d["continuum"] = list(self.continuum)
+        if self.boundary is not None:
+            d["boundary"] = list(self.boundary)
+        return d
+
+
+@dataclass(frozen=True)
+class DGPResult:
+    """All equilibria found, in canonical order (:func:`solution_key`), and the search's
+    bookkeeping."""
+
+    solutions: list[DGPSolution]
+    subproblems: int  #: taut subsets solved
+    #: the boxes no solution could be excluded from (:mod:`taut.dgp._undecided`), in job order
+    undecided_enclosures: tuple[UndecidedBox, ...]
+    boxes: int  #: boxes processed by branch-and-prune over all sub-problems
+    elapsed_s: float
+
+    @property
+    def undecided(self) -> int:
+        """How many boxes were left undecided (should be 0)."""
+        return len(self.undecided_enclosures)
+
+    @property
+    def complete(self) -> bool:
+        """Every equilibrium is in ``solutions``: no box was left undecided."""
+        return not self.undecided_enclosures
+
+
+def solution_key(solution: DGPSolution) -> tuple:
+    """The canonical order of solutions: by taut set, then position and orientation."""
+    return (solution.taut, *solution.position.tolist(), *solution.orientation.tolist())
+
+
+def check_lengths(robot: Robot, lengths: npt.ArrayLike) -> np.ndarray:
+    arr = np.asarray(lengths, dtype=float).ravel()
+    if arr.size != robot.n_cables:
+        raise TautError(f"{robot.name} has {robot.n_cables} cables, got {arr.size} lengths")
+    if not np.all(np.isfinite(arr)):
+        raise TautError(f"cable lengths must be finite, got {arr.tolist()}")
+    if np.any(arr <= 0):
+        raise TautError(f"cable lengths must be positive, got {arr.tolist()}")
+    return arr
+
+
+def domain_pieces(sp: Subproblem, split: int) -> list[Box]:
+    """The sub-problem's domain cut into up to ``2**split`` pieces that may hold solutions:
+    breadth first, the widest piece is contracted (HC4, statics filter) and halved across
+    its widest pose variable, empty pieces dropped — most of the initial box is empty, and
+    pieces of it would leave all the work to one job."""
+    target = 2**split
+    live = [(sp.lo.copy(), sp.hi.copy())]
+    for _ in range(8 * target):
+        if len(live) >= target:
+            break
+        widths = [np.max(np.where(sp.primary, hi - lo, -1.0)) for lo, hi in live]
+        lo, hi = live.pop(int(np.argmax(widths)))
+        for part in bisect(lo, hi, primary=sp.primary):
+            if contract(sp.system.tape, *part) and sp.statics(*part):
+                live.append(part)
+        if not live:
+            break
+    return live
+
+
+#: HC4 sweeps stop when no domain shrank by this fraction: on the four thesis robots fewer
+#: sweeps per box cost less than the 5–10 % more boxes they leave (0.05: 13.4 s, 0.1:
+#: 12.5 s, 0.2: 12.1 s on five sample sub-problems, with 5 %, 15 % more boxes).
+HC4_RATIO = 0.1
+
+
+def certify_width(m: int) -> float:
+    """Width (metres) of the pose variables below which the full Krawczyk operator is tried.
+    With four or five taut cables, whose pose manifolds of dimension 2 and 1 the tube
+    step already contracts boxes onto, it proves nothing more on wider boxes (0.3: 10 %
+    faster than 1.0 on four CoGiRo and MARIONET-VR sub-problems, the same boxes); with
+    three, 0.3 leaves 20 % more boxes on Table 4.3 than 1.0."""
+    return 0.3 if 4 <= m <= 5 else 1.0
+
+
+#: The bisection cuts the widest reference-point coordinate when it is this many times wider
+#: than the smear's pick (:func:`~taut.interval._branch_prune.branch_and_prune`): seed 58 of
+#: the random 3-cable suite, cables 1 and 3, 1.34 M boxes → 553; the same boxes on
+#: Table 4.3, 87 661 instead of 88 231 on Table 4.6.
+STARVE = 10.0
+
+
+#: Per process, the sub-problems last built and their pieces, keyed by the job's data:
+#: a worker running several pieces of one sub-problem builds it once (a build takes
+#: ~20 ms, as long as solving many pieces).
+_PREPARED: dict[tuple[str, bytes, tuple[int, ...], int], tuple[Subproblem, list[Box]]] = {}
+PREPARED_SIZE = 8
+
+
+def prepared_subproblem(
+    robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: int
+) -> tuple[Subproblem, list[Box]]:
+    """The sub-problem of ``taut`` at ``lengths`` and its :func:`domain_pieces`, built once
+    per process for the last :data:`PREPARED_SIZE` of them."""
+    key = (robot.model_dump_json(), lengths.tobytes(), taut, split)
+    hit = _PREPARED.get(key)
+    if hit is None:
+        sp = build_subproblem(robot, lengths, taut)
+        hit = (sp, domain_pieces(sp, split))
+        while len(_PREPARED) >= PREPARED_SIZE:
+            _PREPARED.pop(next(iter(_PREPARED)))
+        _PREPARED[key] = hit
+    return hit
+
+
+#: The box budget of one piece of a sub-problem when :func:`solve_dgp` is given none: a
+#: guard against a search that would never end (branch-and-prune's default).
+PIECE_BOXES = 2_000_000
+
+#: A job of :func:`solve_dgp`: robot, lengths, taut cables (0-based), eps, split, piece,
+#: box budget of the sub-problem (None: :data:`PIECE_BOXES` per piece), multi-precision.
+Job = tuple[Robot, np.ndarray, tuple[int, ...], float, int, int, int | None, bool]
+
+
+def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], list[UndecidedBox], int]:
+    """One job of :func:`solve_dgp`: the sub-problem of ``taut`` on piece ``k`` of
+    ``pieces`` of its domain, with an equal share of the sub-problem's box budget.
+    Returns ``(solutions, certificates, undecided boxes, boxes)``."""
+    robot, lengths, taut, eps, split, k, budget, multiprecision = job
+    n = robot.n_cables
+    a, r = robot.exits, robot.anchors
+    _, _, gp = load(robot)
+    out: list[DGPSolution] = []
+    if len(taut) == 1:
+        for s in single_cable_equilibria(robot, lengths, taut[0]):
+            out.append(
+                DGPSolution(
+                    (taut[0],),
+                    s["p"],
+                    angles_from_matrix(s["R"], robot.orientation),
+                    s["tensions"],
+                    s["stable"],
+                    0.0,
+                    0.0,
+                    s["continuum"],
+                )
+            )
+        return out, [None] * len(out), [], 0
+    sp, pieces = prepared_subproblem(robot, lengths, taut, split)
+    if k >= len(pieces):  # fewer pieces hold solutions than were asked for
+        return out, [], [], 0
+    lo, hi = pieces[k]
+    width = certify_width(len(taut))
+    # the statics filter on the boxes Krawczyk is tried on: on wider ones its interval Gauss
+    # elimination fails (95 % of CoGiRo's 2, 3, 6, 7 boxes) and it prunes nothing
+    res = branch_and_prune(
+        sp.system,
+        lo,
+        hi,
+        primary=sp.primary,
+        eps=eps,
+        filters=(sp.statics,),
+        certify_width=width,
+        passes=4,
+        ratio=HC4_RATIO,
+        domain=(sp.lo, sp.hi),
+        bisection="smear",
+        tube=sp.geometry,
+        filter_width=width,
+        max_boxes=PIECE_BOXES if budget is None else -(-budget // len(pieces)),
+        starve=STARVE,
+    )
+    found = [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]
+    left = [(blo, bhi, cause_of(blo, bhi, eps)) for blo, bhi in res.undecided]
+    if multiprecision and any(cause == "narrow" for *_, cause in left) and precise.available():
+        found, left = _resolve_narrow(sp, found, left)
+    undecided = [subproblem_box(sp, lengths, blo, bhi, cause) for blo, bhi, cause in left]
+    certs: list[Certificate | None] = []
+    for c, border in found:
+        if sp.tension_unknowns:
+            t_lo, t_hi = c.lo[sp.pose_unknowns :], c.hi[sp.pose_unknowns :]
+        else:
+            # the sign of the tensions over the certified box: all positive, or the
+            # solution is infeasible or on the border of a smaller subset (a zero tension)
+            enc = sp.statics.enclosure(c.lo, c.hi)
+            if enc is None:
+                undecided.append(subproblem_box(sp, lengths, c.lo, c.hi, "tension-sign"))
+                continue
+            t_lo, t_hi = enc
+        if np.any(t_hi < 0.0):
+            continue
+        p, ang, R = sp.pose(c.x, robot.orientation)
+        b = p + r @ R.T
+        zero = [i for i, lo_i in zip(taut, t_lo) if lo_i <= 0.0]
+        # slack cables at their lengths: within the certificate's width, widened
+        near = [k for k in range(n) if k not in taut and abs(np.linalg.norm(b[k] - a[k]) - lengths[k]) <= _reach(c)]
+        if not (border or zero):
+            near = []
+        elif not (zero or near):
+            undecided.append(subproblem_box(sp, lengths, c.lo, c.hi, "domain-border"))
+            continue
+        tau = sp.tensions(c.x, lengths, n)
+        tau[zero] = 0.0
+        smaller = tuple(i for i in taut if i not in zero)
+        idx = list(smaller)
+        g = p + R @ gp
+        stable = is_stable(a[idx], b[idx], g, tau[idx], lengths[idx]) if idx else False
+        boundary = tuple(sorted(set(taut) | set(near))) if zero or near else None
+        out.append(DGPSolution(smaller, p, ang, tau, stable, c.width, c.radius, boundary=boundary))
+        certs.append(None if boundary else c)
+    return out, certs, undecided, res.boxes
+
+
+def _resolve_narrow(
+    sp: Subproblem, found: list[tuple[Certificate, bool]], left: list[tuple[np.ndarray, np.ndarray, str]]
+) -> tuple[list[tuple[Certificate, bool]], list[tuple[np.ndarray, np.ndarray, str]]]:
+    """The boxes double precision left too narrow to bisect (a singular or nearly double
+    solution), searched again in multi-precision balls (:mod:`taut.interval._precise`).
+    Each is widened by :data:`NARROW_PAD` of its width, so that a root on a face two of them
+    share is inside one; a root the margin takes from a decided neighbour is one this
+    piece certified already, and is dropped (one certified by another piece is dropped by
+    :func:`solve_dgp`).  They share one budget of
+    :data:`taut.interval._precise.MAX_BOXES`; the boxes left when it runs out stay undecided,
+    so a continuum of solutions (thousands of narrow boxes) costs seconds, not hours.
+    Returns the certificates and the boxes still undecided: ``"singular"`` those the
+    multi-precision search shrank to its own limit, ``"narrow"`` those it did not reach."""
+    pad = [(blo, bhi, NARROW_PAD * (bhi - blo)) for blo, bhi, cause in left if cause == "narrow"]
+    res = precise.solve_precise(
+        sp.system,
+        [(np.nextafter(blo - w, -np.inf), np.nextafter(bhi + w, np.inf)) for blo, bhi, w in pad],
+        domain=(sp.lo, sp.hi),
+    )
+    new = [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]
+    # a root the margins took from a neighbour that double precision certified
+    found = list(found) + [
+        (c, border) for c, border in new if not any(same_solution(c, d) or same_solution(d, c) for d, _ in found)
+    ]
+    still = [(blo, bhi, cause) for blo, bhi, cause in left if cause != "narrow"]
+    return found, still + [(u, v, "singular") for u, v in res.undecided] + [(u, v, "narrow") for u, v in res.unsearched]
+
+
+#: Relative margin by which :func:`_resolve_narrow` widens a narrow box.
+NARROW_PAD = 0.01
+
+
+def _reach(c: Certificate) -> float:
+    """How far a slack cable's reach may be from its length for the solution certified by
+    ``c`` to count as on the border of that cable's taut subset: the certificate box's
+    width times a safety factor of 100 (the reach is 1-Lipschitz in the anchor's position,
+    which the pose unknowns move by at most about their width), at least 1e-9 m."""
+    return max(1e-9, 100.0 * c.width)
+
+
+def solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple[list[DGPSolution], int, int]:
+    """The whole sub-problem of the taut cables of ``job = (robot, lengths, taut, eps)``, in
+    one piece, as a job an executor can map: ``(solutions, number of undecided boxes,
+    boxes)``."""
+    robot, lengths, taut, eps = job
+    sols, _, undecided, boxes = solve_piece((robot, lengths, taut, eps, 0, 0, None, True))
+    return sols, len(undecided), boxes
+
+
+def _same_border(border: DGPSolution, other: DGPSolution) -> bool:
+    """``other`` is the equilibrium ``border`` (a border one): it solves a taut subset between
+    ``border.taut`` and ``border.boundary`` at the same pose, to within :data:`BORDER_TOL`."""
+    assert border.boundary is not None
+    subset = set(border.taut) <= set(other.taut) <= set(border.boundary)
+    return bool(
+        subset
+        and np.allclose(other.position, border.position, rtol=0.0, atol=BORDER_TOL)
+        and np.allclose(other.orientation, border.orientation, rtol=0.0, atol=BORDER_TOL)
+    )
+
+
+#: Distance (metres, radians) under which two border equilibria are the same: the
+#: certificates are ~1e-10 wide, distinct equilibria of a robot are centimetres apart.
+BORDER_TOL = 1e-6
+
+
+#: Default ``split`` of :func:`solve_dgp`, whatever the executor, so that every executor
+#: runs the same jobs and returns bitwise the same solutions.  The pieces cost nothing in
+#: serial (CPU time with 1 and 16 pieces per sub-problem: Table 4.3 1.37 s and 1.37 s,
+#: Table 4.6 3.83 s and 3.75 s, CoGiRo's Table 4.4 124 s and 115 s).
+SPLIT = 4
+
+
+def solve_dgp(
+    robot: Robot,
+    lengths: npt.ArrayLike | None = None,
+    *,
+    max_taut: int | None = None,
+    executor: Executor | Client | None = None,
+    eps: float = 1e-7,
+    split: int | None = None,
+    max_boxes: int | None = None,
+    progress: Callable[[int, int | None], None] | None = None,
+    multiprecision: bool = True,
+) -> DGPResult:
+    """All admissible equilibria (``τ ≥ 0``) for the cable lengths (default: the robot's
+    ``reference.lengths``), each with its stability flag and certificate.
+
+    ``executor``: where the jobs run, as for
+    :func:`~taut.workspace._evaluate.evaluate_workspace` — ``None`` (serial), an executor of
+    :func:`taut.parallel.get_executor`, or a ``distributed.Client``; it is not closed.
+    ``split``: the domain of every sub-problem with at least 3 taut cables is cut into
+    ``2**split`` pieces solved as separate jobs (default :data:`SPLIT`), so that one hard
+    sub-problem is shared by the workers; a solution found by two neighbouring pieces is
+    reported once (:func:`same_solution`), from the first piece in job order.  Each job is
+    computed by the same code whatever the executor, so for a given ``split`` the solutions
+    are bitwise identical on every executor; they are sorted by :func:`solution_key`.
+    ``max_boxes``: the box budget of every sub-problem, shared equally by its pieces (by
+    default :data:`PIECE_BOXES` per piece); the boxes left when it runs out are undecided.
+    ``progress(done, total)`` is called with the number of jobs done (pieces of
+    sub-problems) out of all of them, from 0 to the total.  ``multiprecision``: the boxes
+    double precision leaves too narrow to bisect (a singular or nearly double solution) are
+    searched again in multi-precision balls when python-flint is installed
+    (:mod:`taut.interval._precise`); without it, or with ``False``, they stay undecided.
+
+    The result is :attr:`~DGPResult.complete` when no box was left undecided; otherwise
+    every equilibrium it does not list lies in one of its
+    :attr:`~DGPResult.undecided_enclosures` (:mod:`taut.dgp._undecided`).
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, Chs. 2–3, §4.2 (Tables 4.3–4.6).
+       (docs/references.bib: berti2015)
+    """
+    refuse_swivels(robot, "the DGP solver")
+    if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
+        raise TautError("the DGP solver handles spatial rigid platforms without joints")
+    if lengths is None:
+        if robot.reference is None or robot.reference.lengths is None:
+            raise TautError(f"{robot.name} has no reference lengths: give the cable lengths")
+        lengths = robot.reference.lengths
+    checked = check_lengths(robot, lengths)
+    n = robot.n_cables
+    top = min(n, 6) if max_taut is None else min(n, 6, int(max_taut))
+    if top < 1:
+        raise TautError(f"--max-taut must be at least 1, got {max_taut}")
+    if split is None:
+        split = SPLIT
+    if not 0 <= split <= 10:
+        raise TautError(f"split must be between 0 and 10 (up to 1024 pieces), got {split}")
+    if max_boxes is not None:
+        if int(max_boxes) < 1:
+            raise TautError(f"max_boxes must be at least 1, got {max_boxes}")
+        max_boxes = int(max_boxes)
+    runner = as_executor(executor)
+    t0 = time.perf_counter()
+    subsets = [taut for m in range(top, 0, -1) for taut in combinations(range(n), m)]
+    jobs = [
+        (robot, checked, taut, eps, split if len(taut) >= 3 else 0, k, max_boxes, multiprecision)
+        for taut in subsets
+        for k in range(2**split if len(taut) >= 3 else 1)
+    ]
+    done = 0
+
+    def callback(_: int) -> None:
+        nonlocal done
+        done += 1
+        if progress is not None:
+            progress(done, len(jobs))
+
+    if progress is not None:
+        progress(0, len(jobs))
+    try:
+        parts = runner.map(solve_piece, jobs, callback=callback if progress is not None else None)
+    finally:
+        if runner is not executor:  # a client made here for a cluster object
+            runner.close()
+    solutions: list[DGPSolution] = []
+    kept: dict[tuple[int, ...], list] = {}
+    undecided: list[UndecidedBox] = []
+    boxes = 0
+    borders: list[DGPSolution] = []
+    for sols, certs, und, count in parts:
+        for sol, cert in zip(sols, certs):
+            if sol.boundary is not None:
+                borders.append(sol)
+                continue
+            seen = kept.setdefault(sol.taut, [])
+            if cert is not None and any(same_solution(c, cert) or same_solution(cert, c) for c in seen):
+                continue
+            seen.append(cert)
+            solutions.append(sol)
+        undecided += und
+        boxes += count
+    # a border equilibrium is found by both subsets it borders, or beside a regular
+    # solution of one of them: reported once
+    for sol in borders:
+        if not any(_same_border(sol, other) for other in solutions):
+            solutions.append(sol)
+    solutions.sort(key=solution_key)
+    return DGPResult(solutions, len(subsets), tuple(undecided), boxes, time.perf_counter() - t0)

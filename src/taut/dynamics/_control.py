@@ -1,0 +1,507 @@
+"""Closed-loop control of the platform: a computed-torque controller with the tension
+distribution in the loop, simulated against the robot's own dynamics.
+
+At each control update ``t_k = k / rate`` the controller reads the state ``(q, q̇)`` and the
+reference ``(q_r, q̇_r, q̈_r)`` of a :class:`~taut.motion.Motion` and commands
+
+    ``q̈_cmd = q̈_r + K_d ė + K_p e``,  ``e = q_r − q``,
+    ``W τ = M̂ q̈_cmd + Ĉ q̇ + ĝ`` (in generalized forces, ``Jᵀ W τ``),
+
+the inverse-dynamics (computed-torque) law of Siciliano et al. 2009, §8.5.2, with the
+pose as the generalized coordinates and ``M̂, Ĉ, ĝ`` the controller's model, which may differ
+from the plant (:func:`with_mass_error`).  The wrench is turned into tensions by a tension
+distribution (:meth:`taut.dynamics._loop.LoopModel.tensions`: the compiled closed form, and
+``method`` where it gives up).  The tensions are held over the control period (zero-order
+hold) while the plant, with its exact model and an optional external wrench ``w_d(t)``, is
+integrated by ``substeps`` RK4 steps (:meth:`~taut.dynamics._loop.LoopModel.step`).
+
+A hold delays the command by half a period on average, which leaves an error of first order
+in the period even with an exact model.  With ``predict`` (the default) the law is evaluated
+at the state predicted half a period ahead, ``q + (h/2) q̇ + (h²/8) a``, ``q̇ + (h/2) a``, with
+``a`` the acceleration measured over the last period (velocity difference; the commanded one
+at the start), against the reference at the middle of the period: the error becomes second
+order (about 4 times smaller at twice the rate).  Measuring ``a`` rather than assuming the
+commanded one keeps the loop's static gain: a constant disturbance is met by ``K_p e``
+exactly.
+
+Angle errors take the short way: the orientation components of ``e`` are wrapped into
+``[−π, π)``.  The error is thus measured in the pose coordinates the law is written in, so
+that with an exact model and no disturbance it obeys ``ë + K_d ė + K_p e = 0`` (up to the
+hold); the rotation error (the angle of ``R_rᵀ R``) is reported besides.
+
+When the distribution finds no admissible tensions at an update, the last admissible
+tensions are held and the update is counted (its time is reported), as CASPR's controllers
+do (Lau et al. 2016).  A start without admissible tensions has nothing to hold and raises.
+
+With the model scaled by ``1 + ε`` (``M̂ = (1 + ε) M``, ``ĥ = (1 + ε) h``: a mass and inertia
+error, with no constant ``platform.wrench``) and an exact distribution, the error obeys
+
+    ``ë + (1 + ε) K_d ė + (1 + ε) K_p e = −ε (q̈_r + M⁻¹ h) − M⁻¹ Jᵀ w_d``,
+
+so where the gains leave it critically damped or overdamped (an impulse response without
+sign change, of integral ``1 / ((1 + ε) K_p)``) each coordinate's error from rest is at
+most ``sup |right-hand side| / ((1 + ε) K_p)`` (``tests/dynamics/test_control.py`` checks
+this bound).
+
+References
+----------
+.. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning and
+   Control", Springer, 2009, §8.5.2 (inverse dynamics control). (docs/references.bib: siciliano2009)
+.. [2] D. Lau, J. Eden, Y. Tan, D. Oetomo, "CASPR: A comprehensive cable-robot analysis and
+   simulation platform for the research of cable-driven parallel robots", IEEE/RSJ
+   International Conference on Intelligent Robots and Systems (IROS), 2016.
+   (docs/references.bib: lau2016)
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.dynamics._forward import IntegrationError
+from taut.dynamics._loop import LoopModel, loop_model
+from taut.errors import InfeasiblePoseError, TautError
+from taut.model._robot import Robot
+from taut.motion._trajectory import Motion
+from taut.motion._waypoints import angle_columns
+
+__all__ = [
+    "DEFAULT_KP",
+    "DEFAULT_KD",
+    "ControlResult",
+    "WrenchSteps",
+    "simulate_control",
+    "with_mass_error",
+]
+
+#: Default proportional gain [1/s²]: a natural frequency of 20 rad/s.
+DEFAULT_KP = 400.0
+#: Default derivative gain [1/s]: damping ratio 1.1, overdamped even with a 10 % heavier model
+#: (``ζ = √(1 + ε) K_d / (2 √K_p)``).
+DEFAULT_KD = 44.0
+
+#: A commanded tension within this fraction (at least 1e-6 N) above its minimum counts as at
+#: the minimum: a slack event.
+SLACK_RTOL = 1e-6
+
+#: Control updates between progress reports.
+PROGRESS_EVERY = 2000
+
+
+@dataclass(frozen=True)
+class WrenchSteps:
+    """An external wrench made of steps: ``steps[k] = (start, end, wrench)`` adds ``wrench``
+    (taut's convention: forces, then moments about ``p``, fixed frame) for ``start ≤ t <
+    end`` (``end = inf``: from ``start`` on).  Callable: ``steps(t) -> (dof,)``."""
+
+    steps: tuple[tuple[float, float, tuple[float, ...]], ...]
+
+    def __post_init__(self) -> None:
+        sizes = {len(w) for _, _, w in self.steps}
+        if len(sizes) > 1:
+            raise TautError(f"every step of a wrench needs the same number of components, got {sorted(sizes)}")
+        for start, end, w in self.steps:
+            if not (math.isfinite(start) and start >= 0 and end > start) or not all(math.isfinite(x) for x in w):
+                raise TautError(f"a wrench step needs 0 <= start < end and a finite wrench, got {start}, {end}, {w}")
+
+    @classmethod
+    def step(cls, start: float, wrench: npt.ArrayLike, end: float = math.inf) -> WrenchSteps:
+        """One step of ``wrench`` from ``start`` (to ``end``)."""
+        return cls(((float(start), float(end), tuple(float(x) for x in np.ravel(wrench))),))
+
+    def __call__(self, t: float) -> np.ndarray:
+        return self.at(np.array([t]))[0]
+
+    def at(self, times: npt.ArrayLike) -> np.ndarray:
+        """The wrench at each of ``times``: ``(N, dof)``."""
+        t = np.asarray(times, dtype=float).reshape(-1, 1)
+        size = len(self.steps[0][2]) if self.steps else 0
+        out = np.zeros((t.shape[0], size))
+        for start, end, w in self.steps:
+            out += ((start <= t) & (t < end)) * np.asarray(w)
+        return out
+
+
+@dataclass(frozen=True)
+class ControlResult:
+    """A controlled motion sampled at the ``K + 1`` control updates ``time`` (read-only arrays).
+
+    At update ``k`` the controller saw ``pose[k]``, ``velocity[k]`` against ``reference[k]``,
+    commanded ``command[k]`` (``q̈_cmd``) and applied ``tensions[k]`` until the next update
+    (``admissible[k]`` False: the distribution failed and the last admissible tensions were
+    held)."""
+
+    time: np.ndarray  #: ``(K + 1,)``
+    reference: np.ndarray  #: ``(K + 1, dof)`` the reference pose
+    pose: np.ndarray  #: ``(K + 1, dof)``
+    velocity: np.ndarray  #: ``(K + 1, dof)``
+    error: np.ndarray  #: ``(K + 1, dof)`` ``q_r − q``, angles wrapped into ``[−π, π)``
+    position_error: np.ndarray  #: ``(K + 1,)`` ``‖p_r − p‖`` [m]
+    rotation_error: np.ndarray  #: ``(K + 1,)`` the angle of ``R_rᵀ R`` [rad] (zeros for a point mass)
+    command: np.ndarray  #: ``(K + 1, dof)`` the commanded pose accelerations ``q̈_cmd``
+    tensions: np.ndarray  #: ``(K + 1, n)`` the tensions applied from each update
+    admissible: np.ndarray  #: ``(K + 1,)`` bool: the distribution found admissible tensions
+    disturbance: np.ndarray  #: ``(K + 1, dof)`` the external wrench at each update
+    tension_min: np.ndarray  #: ``(n,)``
+    tension_max: np.ndarray  #: ``(n,)`` (``inf`` where a cable has no upper limit)
+    pose_names: tuple[str, ...]
+    kp: np.ndarray  #: ``(dof,)``
+    kd: np.ndarray  #: ``(dof,)``
+    rate_hz: float
+    substeps: int
+    method: str  #: the distribution used where the closed form gives up
+
+    @property
+    def tracking_error_max(self) -> np.ndarray:
+        """``(dof,)`` the largest ``|e|`` of each coordinate."""
+        return np.abs(self.error).max(axis=0)
+
+    @property
+    def tracking_error_rms(self) -> np.ndarray:
+        """``(dof,)`` the root mean square of ``e`` of each coordinate over the updates."""
+        return np.sqrt(np.mean(self.error**2, axis=0))
+
+    @property
+    def lower_margin(self) -> float:
+        """The smallest ``τ − τ_min`` over updates and cables [N]."""
+        return float((self.tensions - self.tension_min).min())
+
+    @property
+    def upper_margin(self) -> float:
+        """The smallest ``τ_max − τ`` [N] (``inf`` without upper limits)."""
+        return float((self.tension_max - self.tensions).min())
+
+    @property
+    def min_tension_margin(self) -> float:
+        """``min(lower_margin, upper_margin)``: how close the tensions came to a limit [N]."""
+        return min(self.lower_margin, self.upper_margin)
+
+    @property
+    def slack(self) -> np.ndarray:
+        """``(K + 1, n)`` bool: the commanded tension is at or below its minimum (the cable
+        has no margin left to stay taut; at a minimum of 0, it is slack)."""
+        tol = SLACK_RTOL * np.maximum(1.0, np.abs(self.tension_min))
+        return self.tensions <= self.tension_min + tol
+
+    @property
+    def slack_events(self) -> int:
+        """Updates at which some cable's commanded tension is at or below its minimum."""
+        return int(np.count_nonzero(self.slack.any(axis=1)))
+
+    @property
+    def failures(self) -> int:
+        """Updates at which the distribution failed (the last admissible tensions were held)."""
+        return int(np.count_nonzero(~self.admissible))
+
+    @property
+    def first_failure_time(self) -> float | None:
+        """Time of the first failed update [s], or None."""
+        bad = np.flatnonzero(~self.admissible)
+        return float(self.time[bad[0]]) if bad.size else None
+
+    @property
+    def feasible(self) -> bool:
+        """Every update found admissible tensions."""
+        return bool(self.admissible.all())
+
+
+def with_mass_error(robot: Robot, error: float) -> Robot:
+    """``robot`` with its platform's mass and inertia scaled by ``1 + error`` (``error =
+    0.1``: a model 10 % too heavy): a controller's model with a mass error.
+
+    Raises
+    ------
+    TautError
+        ``error`` not finite or ``<= −1``, or a robot without mass.
+    """
+    if not (math.isfinite(error) and error > -1):
+        raise TautError(f"the mass error must be a finite number > -1, got {error!r}")
+    plat = robot.platform
+    if plat.mass is None:
+        raise TautError(f"{robot.name}: no platform.mass to scale")
+    scale = 1.0 + float(error)
+    fields: dict[str, object] = {"mass": plat.mass * scale}
+    if plat.inertia is not None:
+        fields["inertia"] = tuple(x * scale for x in plat.inertia)
+    return robot.model_copy(update={"platform": plat.model_copy(update=fields)})
+
+
+def _gains(value: npt.ArrayLike, dof: int, what: str) -> np.ndarray:
+    try:
+        g = np.array(np.broadcast_to(np.asarray(value, dtype=float), (dof,)))
+    except (TypeError, ValueError):
+        raise TautError(f"{what}: expected one number or {dof}, got {value!r}") from None
+    if not (np.isfinite(g).all() and (g >= 0).all()):
+        raise TautError(f"{what} must be finite and >= 0, got {g.tolist()}")
+    return g
+
+
+def _tabulate(f: Callable[[float], npt.ArrayLike] | None, time: np.ndarray, substeps: int, dof: int) -> np.ndarray:
+    """The disturbance at the start of every RK4 step, ``(K + 1, substeps, dof)`` (the last
+    update's row: at its time)."""
+    K = time.size - 1
+    D = np.zeros((K + 1, substeps, dof))
+    if f is None:
+        return D
+    if isinstance(f, WrenchSteps):
+        if f.steps and len(f.steps[0][2]) != dof:
+            raise TautError(f"disturbance: expected {dof} components, got {len(f.steps[0][2])}")
+        step = np.append(np.diff(time), 0.0) / substeps
+        starts = time[:, None] + np.arange(substeps)[None, :] * step[:, None]
+        return f.at(starts.ravel()).reshape(K + 1, substeps, dof) if f.steps else D
+    for k in range(K + 1):
+        h = float(time[k + 1] - time[k]) / substeps if k < K else 0.0
+        for s in range(substeps):
+            t = float(time[k] + s * h)
+            try:
+                w = np.asarray(f(t), dtype=float)
+            except (TypeError, ValueError) as e:
+                raise TautError(f"disturbance at t = {t:g} s: not numbers ({e})") from None
+            if w.shape != (dof,) or not np.isfinite(w).all():
+                raise TautError(f"disturbance at t = {t:g} s: expected {dof} finite numbers, got {w.tolist()}")
+            D[k, s] = w
+    return D
+
+
+def _update(
+    robot: Robot,
+    models: tuple[LoopModel, LoopModel],
+    k: int,
+    time: np.ndarray,
+    refs: tuple[np.ndarray, np.ndarray],
+    gains: np.ndarray,
+    angles: slice,
+    predict: bool,
+    D: np.ndarray,
+    state: np.ndarray,
+    previous: np.ndarray,
+    last: np.ndarray,
+) -> bool:
+    """Update ``k`` as :func:`taut.dynamics._kernels.control_updates` does it, with the
+    controller's fallback distribution and the checked RK4 step: ``state[2:6]`` get ``q, q̇,
+    e, q̈_cmd`` at its start, ``state[:2]`` the state at the next update, ``last`` the held
+    tensions (``previous``: ``q̇`` at update ``k − 1``); returns whether the distribution found
+    admissible tensions."""
+    plant, ctrl = models
+    ref, ahead = refs
+    K = time.size - 1
+    t = float(time[k])
+    q, qd = state[0].copy(), state[1].copy()
+    e = ref[0, k] - q
+    e[angles] = (e[angles] + math.pi) % (2 * math.pi) - math.pi
+    cmd = ref[2, k] + gains[1] * (ref[1, k] - qd) + gains[0] * e
+    qc, qdc, cmdc = q, qd, cmd
+    if predict and k < K:
+        h2 = 0.5 * (float(time[k + 1]) - t)
+        a = cmd if k == 0 else (qd - previous) / (t - float(time[k - 1]))
+        qc, qdc = q + h2 * qd + 0.5 * h2 * h2 * a, qd + h2 * a
+        em = ahead[0, k] - qc
+        em[angles] = (em[angles] + math.pi) % (2 * math.pi) - math.pi
+        cmdc = ahead[2, k] + gains[1] * (ahead[1, k] - qdc) + gains[0] * em
+    try:
+        tau, ok = ctrl.tensions(qc, qdc, cmdc)
+    except TautError as exc:
+        raise IntegrationError(f"control update at t = {t:g} s: {exc}") from None
+    if ok:
+        last[:] = tau
+    elif np.isnan(last).any():
+        raise InfeasiblePoseError(
+            f"{robot.name}: no admissible tensions at the start (t = {t:g} s, pose {q.tolist()}): nothing to hold"
+        )
+    state[2], state[3], state[4], state[5] = q, qd, e, cmd
+    if k == K:
+        return bool(ok)
+    h = (float(time[k + 1]) - t) / D.shape[1]
+    for s in range(D.shape[1]):
+        try:
+            q, qd = plant.step(q, qd, last, h, D[k, s])
+        except TautError as exc:
+            raise IntegrationError(f"RK4 failed at t = {t + s * h:g} s: {exc}") from None
+    if not (np.isfinite(q).all() and np.isfinite(qd).all()) or np.abs(q).max() > 1e9:
+        raise IntegrationError(
+            f"the controlled motion diverged at t = {float(time[k + 1]):g} s from pose "
+            f"{np.round(state[0], 6).tolist()} (an RK4 step of {h:g} s too large for the dynamics there?)"
+        )
+    state[0], state[1] = q, qd
+    return bool(ok)
+
+
+def simulate_control(
+    robot: Robot,
+    motion: Motion,
+    *,
+    kp: npt.ArrayLike = DEFAULT_KP,
+    kd: npt.ArrayLike = DEFAULT_KD,
+    rate_hz: float = 1000.0,
+    substeps: int = 1,
+    model: Robot | None = None,
+    disturbance: Callable[[float], npt.ArrayLike] | None = None,
+    method: str = "qp",
+    predict: bool = True,
+    q0: npt.ArrayLike | None = None,
+    qd0: npt.ArrayLike | None = None,
+    progress: Callable[[int, int | None], None] | None = None,
+) -> ControlResult:
+    """Simulate ``robot`` tracking ``motion`` under computed-torque control with the tension
+    distribution in the loop, from ``t = 0`` to ``motion.duration``.
+
+    ``kp``, ``kd``: gains [1/s², 1/s], one number or one per pose coordinate (zero gains: pure
+    feed-forward).  ``rate_hz``: control updates per second (the tensions are held between
+    them); ``substeps``: RK4 steps of the plant per control period.  ``model``: the
+    controller's robot (default ``robot``: an exact model; :func:`with_mass_error` makes one
+    with a mass error), with the same cables.  ``disturbance(t) -> (dof,)``: an external
+    wrench on the plant, unknown to the controller (e.g. :class:`WrenchSteps`), held over each
+    RK4 step.  ``method``: the distribution where the closed form gives up (a method of
+    :data:`taut.statics._tension.METHODS`).  ``predict``: evaluate the law half a period ahead
+    (see the module's docstring; False: at the sampled state).  ``q0``, ``qd0``: the initial
+    state (default the reference's).  ``progress(done, total)`` is called with the updates
+    done.
+
+    Raises
+    ------
+    TautError
+        Bad gains, rate, model or disturbance.
+    UnsupportedRobotError
+        A robot without mass or inertia, a jointed platform, cables through swivelling pulleys.
+    InfeasiblePoseError
+        No admissible tensions at the start (nothing to hold).
+    IntegrationError
+        The motion reaches a singular configuration (gimbal lock, a zero-length cable) or
+        diverges.
+
+    References
+    ----------
+    .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
+       and Control", Springer, 2009, §8.5.2. (docs/references.bib: siciliano2009)
+    .. [2] D. Lau, J. Eden, Y. Tan, D. Oetomo, "CASPR: A comprehensive cable-robot analysis
+       and simulation platform for the research of cable-driven parallel robots", IROS, 2016.
+       (docs/references.bib: lau2016)
+    """
+    from taut.dynamics._kernels import control_updates
+    from taut.dynamics._platform import as_rates
+    from taut.geometry._rotation import rotation_matrix
+    from taut.kinematics._pose import as_poses
+    from taut.statics._tension import EQUILIBRIUM_RTOL
+
+    if motion.robot.pose_size != robot.pose_size or motion.robot.orientation != robot.orientation:
+        raise TautError(f"the motion is a trajectory of {motion.robot.name}, whose poses are not those of {robot.name}")
+    if not (math.isfinite(rate_hz) and rate_hz > 0):
+        raise TautError(f"the control rate must be a finite number > 0 Hz, got {rate_hz!r}")
+    if int(substeps) != substeps or substeps < 1:
+        raise TautError(f"substeps must be a whole number >= 1, got {substeps!r}")
+    dof, n = robot.pose_size, robot.n_cables
+    kp_, kd_ = _gains(kp, dof, "kp"), _gains(kd, dof, "kd")
+    plant = loop_model(robot, method)
+    if model is not None and (
+        model.pose_size != dof
+        or model.orientation != robot.orientation
+        or not np.array_equal(model.exits, robot.exits)
+        or not np.array_equal(model.anchors, robot.anchors)
+    ):
+        raise TautError(
+            f"the controller's model {model.name} must have the cables and pose coordinates of {robot.name}"
+        )
+    ctrl = plant if model is None else loop_model(model, method)
+    duration = motion.duration
+    K = max(1, math.ceil(duration * rate_hz - 1e-9))
+    if K > 100_000_000:
+        raise TautError(f"{K} control updates: at most 1e8 are simulated")
+    time = np.minimum(np.arange(K + 1) / rate_hz, duration)
+    samples = motion.at(time)
+    qr, qdr, qddr = samples.pose, samples.velocity, samples.acceleration
+    mid = motion.at(0.5 * (time[1:] + time[:-1]))
+    q = np.array(qr[0]) if q0 is None else np.array(as_poses(robot, q0)[0][0])
+    qd = np.array(qdr[0]) if qd0 is None else np.array(as_rates(robot, qd0, 1)[0])
+    angles = angle_columns(robot)
+    D = _tabulate(disturbance, time, int(substeps), dof)
+    Q, V, E, A = (np.zeros((K + 1, dof)) for _ in range(4))
+    T = np.zeros((K + 1, n))
+    ok_all = np.ones(K + 1, dtype=bool)
+    # q, q̇ (advanced in place), then q, q̇, e, q̈_cmd at the start of an update done here
+    state = np.array([q, qd, q, qd, q, q])
+    last = np.full(n, np.nan)
+    lo, hi = robot.tension_bounds
+    ref = np.array([qr, qdr, qddr])
+    ahead = np.array([mid.pose, mid.velocity, mid.acceleration])
+    gains = np.array([kp_, kd_])
+    columns = np.array([angles.start, angles.stop], np.int64)
+    k = 0
+    while k <= K:
+        stop = min(k + PROGRESS_EVERY, K + 1)
+        k = control_updates(
+            *plant.kernels.args[:2],
+            *ctrl.kernels.args,
+            k,
+            stop,
+            time,
+            ref,
+            ahead,
+            gains,
+            columns,
+            predict,
+            D,
+            lo,
+            hi,
+            EQUILIBRIUM_RTOL,
+            state,
+            last,
+            Q,
+            V,
+            E,
+            A,
+            T,
+        )
+        if progress is not None:
+            progress(k, K + 1)
+        if k == stop:
+            continue
+        # the closed form gave up, or a step failed: this update here, with the fallback
+        # distribution, and the checked step that names a failure
+        previous = V[k - 1] if k else V[0]
+        ok_all[k] = _update(
+            robot, (plant, ctrl), k, time, (ref, ahead), gains, angles, predict, D, state, previous, last
+        )
+        Q[k], V[k], T[k] = state[2], state[3], last
+        E[k], A[k] = state[4], state[5]
+        k += 1
+    d = robot.dimension
+    pos_err = np.linalg.norm(E[:, :d], axis=1)
+    rot_err = np.zeros(K + 1)
+    if angles.stop > angles.start:
+        if d == 2:
+            rot_err = np.abs(E[:, 2])
+        else:
+            Rr, R = rotation_matrix(qr[:, 3:6], robot.orientation), rotation_matrix(Q[:, 3:6], robot.orientation)
+            cos = (np.einsum("kij,kij->k", Rr, R) - 1.0) / 2.0
+            rot_err = np.arccos(np.clip(cos, -1.0, 1.0))
+    lo, hi = robot.tension_bounds
+    for a in (time, Q, V, E, pos_err, rot_err, A, T, ok_all, kp_, kd_):
+        a.setflags(write=False)
+    frozen = [np.array(a) for a in (qr, D[:, 0], lo, hi)]
+    for a in frozen:
+        a.setflags(write=False)
+    return ControlResult(
+        time=time,
+        reference=frozen[0],
+        pose=Q,
+        velocity=V,
+        error=E,
+        position_error=pos_err,
+        rotation_error=rot_err,
+        command=A,
+        tensions=T,
+        admissible=ok_all,
+        disturbance=frozen[1],
+        tension_min=frozen[2],
+        tension_max=frozen[3],
+        pose_names=tuple(robot.pose_names),
+        kp=kp_,
+        kd=kd_,
+        rate_hz=float(rate_hz),
+        substeps=int(substeps),
+        method=method,
+    )

@@ -1,0 +1,565 @@
+"""Forward dynamics: the platform's acceleration under given cable tensions, and its motion.
+
+:func:`acceleration` solves the equations of motion of :mod:`taut.dynamics._platform` for
+``q̈`` at one state or a batch (compiled, :mod:`taut.dynamics._kernels`); :func:`rk4_step`
+advances states by one classical Runge–Kutta step with the inputs held (the step of a control
+loop); :func:`forward_dynamics` integrates a motion with :func:`scipy.integrate.solve_ivp`
+(``RK45``, ``DOP853`` — the Dormand–Prince 8(5,3) pair of Hairer, Nørsett and Wanner —,
+``Radau``, ``BDF``, ``LSODA``, ``RK23``) or fixed RK4 steps.  The cables are driven either by
+tensions given as a function of time, or by commanded (unstretched) lengths ``l0(t)`` of
+elastic cables: ``τ = EA (l − l0)/l0`` while ``l > l0``, and a slack cable pulls nothing
+(Rushton 2022, Eq. 2.15; ``EA`` is each cable's ``stiffness``).
+
+References
+----------
+.. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning and
+   Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
+.. [2] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.6, Eq. 2.15. (docs/references.bib: rushton2022)
+.. [3] E. Hairer, S. P. Nørsett, G. Wanner, "Solving Ordinary Differential Equations I: Nonstiff
+   Problems", 2nd ed., Springer, 1993 (the DOP853 code). (docs/references.bib: hairer1993)
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.dynamics._platform import CONVENTION_FACTORS, SPATIAL, PlatformDynamics, as_rates, platform_dynamics
+from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError
+from taut.kinematics._elastic import robot_stiffness, tension_from_stretch
+from taut.kinematics._pose import as_poses
+from taut.model._robot import Robot
+
+__all__ = [
+    "IntegrationError",
+    "ForwardDynamicsResult",
+    "INTEGRATORS",
+    "acceleration",
+    "rk4_step",
+    "cable_tensions",
+    "forward_dynamics",
+]
+
+#: Methods of :func:`forward_dynamics`: those of :func:`scipy.integrate.solve_ivp` and fixed-step ``RK4``.
+INTEGRATORS = ("RK45", "DOP853", "RK23", "Radau", "BDF", "LSODA", "RK4")
+
+
+class IntegrationError(TautError):
+    """The integrator failed: a step size underflow, a singular configuration on the way
+    (gimbal lock, a zero-length cable), or a motion that leaves the representable range."""
+
+
+@dataclass(frozen=True)
+class ForwardDynamicsResult:
+    """A simulated motion at ``K`` times of a robot with ``n`` cables and ``dof`` coordinates."""
+
+    time: np.ndarray  #: ``(K,)``
+    pose: np.ndarray  #: ``(K, dof)``
+    velocity: np.ndarray  #: ``(K, dof)`` pose rates ``q̇``
+    tensions: np.ndarray  #: ``(K, n)`` the tensions that acted (elastic cables: from the stretch)
+    slack: np.ndarray  #: ``(K, n)`` bool: elastic cables not stretched (always False for given tensions)
+    method: str
+    evaluations: int  #: right-hand side evaluations
+
+
+@dataclass(frozen=True)
+class KernelModel:
+    """The compiled kernels' arguments for one robot (straight cables, or none when the
+    cable wrench is computed outside: swivelling pulleys)."""
+
+    pd: PlatformDynamics
+    args: tuple[np.ndarray, np.ndarray, np.ndarray]
+    straight: bool
+    n: int
+
+
+_MODELS: dict[int, tuple[Robot, KernelModel]] = {}
+
+
+def kernel_model(robot: Robot) -> KernelModel:
+    """The kernel arguments of ``robot``, built once per robot object (a control loop calls
+    :func:`acceleration` thousands of times with the same robot)."""
+    hit = _MODELS.get(id(robot))
+    if hit is not None and hit[0] is robot:
+        return hit[1]
+    from taut.dynamics._kernels import FLOAT_LAYOUT
+
+    pd = platform_dynamics(robot)
+    axes, T = CONVENTION_FACTORS[pd.orientation]
+    Tm = np.array(T, dtype=float)
+    straight = not robot.swivel_cables
+    n = robot.n_cables if straight else 0
+    cables = np.zeros((n, 7))
+    if straight:
+        d = pd.dimension
+        cables[:, :d], cables[:, 3 : 3 + d] = robot.exits, robot.anchors
+        if all(c.stiffness is not None for c in robot.cables):
+            cables[:, 6] = robot_stiffness(robot)
+    fp = np.zeros(46)
+    fp[FLOAT_LAYOUT["mass"]] = pd.mass
+    fp[FLOAT_LAYOUT["com"]][: pd.dimension] = pd.com
+    fp[FLOAT_LAYOUT["inertia"]] = pd.inertia.ravel()
+    if pd.kind == SPATIAL:
+        fp[FLOAT_LAYOUT["inertia_inv"]] = np.linalg.inv(pd.inertia).ravel()
+    fp[FLOAT_LAYOUT["force"]][: pd.dimension] = pd.force
+    fp[FLOAT_LAYOUT["moment"]][: pd.moment.size] = pd.moment
+    fp[FLOAT_LAYOUT["T"]] = Tm.ravel()
+    fp[FLOAT_LAYOUT["Tinv"]] = np.linalg.inv(Tm).ravel()
+    ip = np.array([pd.kind, *axes], dtype=np.int64)
+    model = KernelModel(pd, (ip, fp, cables), straight, robot.n_cables)
+    if len(_MODELS) >= 16:
+        _MODELS.pop(next(iter(_MODELS)))
+    _MODELS[id(robot)] = (robot, model)
+    return model
+
+
+def _status_error(robot: Robot, status: np.ndarray, where: str) -> TautError:
+    from taut.dynamics._kernels import GIMBAL_LOCK
+
+    k = int(np.flatnonzero(status)[0])
+    if status[k] == GIMBAL_LOCK:
+        return SingularConfigurationError(
+            f"{robot.name}: {where} {k + 1}: the orientation is at the gimbal lock of the "
+            f"{robot.orientation} convention (the angle rates are undefined)"
+        )
+    return InfeasiblePoseError(f"{robot.name}: {where} {k + 1}: a cable has zero length")
+
+
+def _inputs(
+    robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike, u: npt.ArrayLike, w_ext: npt.ArrayLike | None, what: str
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, bool]:
+    """States, cable inputs and wrenches as C-contiguous ``(N, ·)`` arrays."""
+    dof = robot.pose_size
+    quick = quick_rows(robot, q, ((qd, dof), (u, robot.n_cables), (w_ext, dof)))
+    if quick is None:
+        return _checked_inputs(robot, q, qd, u, w_ext, what)
+    (arr, vel, cab, w), single = quick
+    return arr, vel, cab, w, single
+
+
+def quick_rows(
+    robot: Robot, q: npt.ArrayLike, others: tuple[tuple[npt.ArrayLike | None, int], ...]
+) -> tuple[list[np.ndarray], bool] | None:
+    """Poses ``q`` and per-pose arrays ``others`` (value, width; None for zeros) as
+    C-contiguous ``(N, ·)`` arrays, and whether ``q`` was one pose, when the shapes are right
+    and every value is finite (and the poses within 1e9, like
+    :func:`~taut.kinematics._pose.as_poses`) — checked in a few operations, because a control
+    loop calls this every step; None otherwise, and the caller's full checks name the problem.
+    Not for jointed platforms (no joint limits are checked)."""
+    try:
+        arr = np.asarray(q, dtype=float)
+        rest = [np.zeros(width) if x is None else np.asarray(x, dtype=float) for x, width in others]
+    except (TypeError, ValueError):
+        return None
+    single = arr.ndim == 1
+    N = 1 if single else (arr.shape[0] if arr.ndim == 2 else 0)
+    if arr.shape[-1:] != (robot.pose_size,) or N == 0 or robot.n_joints:
+        return None
+    total = 0.0
+    for x, (_, width) in zip(rest, others):
+        if x.shape not in ((width,), (1, width), (N, width)):
+            return None
+        flat = x.ravel()
+        total += float(flat @ flat)
+    flat = arr.ravel()
+    size = float(flat @ flat)
+    if not (math.isfinite(total + size) and size <= 1e18):
+        return None
+    return [_rows(arr, N)] + [_rows(x, N) for x in rest], single
+
+
+def _rows(x: np.ndarray, N: int) -> np.ndarray:
+    """``x`` of shape ``(k,)``, ``(1, k)`` or ``(N, k)`` as a C-contiguous ``(N, k)`` array."""
+    if x.ndim == 1:
+        x = x.reshape(1, -1)
+    if x.shape[0] != N:
+        x = np.repeat(x, N, axis=0)
+    return np.ascontiguousarray(x)
+
+
+def _checked_inputs(
+    robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike, u: npt.ArrayLike, w_ext: npt.ArrayLike | None, what: str
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, bool]:
+    arr, single = as_poses(robot, q)
+    N = arr.shape[0]
+    vel = np.ascontiguousarray(as_rates(robot, qd, N))
+    try:
+        cab = np.asarray(u, dtype=float)
+    except (TypeError, ValueError):
+        raise TautError(f"{what} must be numbers") from None
+    if cab.shape[-1:] != (robot.n_cables,) or cab.ndim > 2 or (cab.ndim == 2 and cab.shape[0] not in (1, N)):
+        raise TautError(
+            f"{robot.name}: {what} must have shape ({robot.n_cables},) or ({N}, {robot.n_cables}), got {cab.shape}"
+        )
+    if not np.isfinite(cab).all():
+        raise TautError(f"{robot.name}: {what} are not finite")
+    cab = np.ascontiguousarray(np.broadcast_to(cab, (N, robot.n_cables)))
+    w = np.zeros((N, robot.pose_size)) if w_ext is None else np.array(as_rates(robot, w_ext, N, "external wrenches"))
+    return np.ascontiguousarray(arr), vel, cab, w, single
+
+
+def _cable_wrench(robot: Robot, q: np.ndarray, u: np.ndarray, elastic: bool) -> tuple[np.ndarray, np.ndarray]:
+    """``W τ (N, dof)`` and the tensions ``(N, n)`` through :func:`taut.kinematics._inverse.ik_status`
+    (cables through swivelling pulleys)."""
+    from taut.kinematics._inverse import OK, ik_status
+
+    ik, status = ik_status(robot, q)
+    bad = (status != OK).any(axis=1)
+    if bad.any():
+        k = int(np.flatnonzero(bad)[0])
+        raise InfeasiblePoseError(
+            f"{robot.name}: state {k + 1}: a cable has no direction (zero length or on its pulley)"
+        )
+    tau = tension_from_stretch(ik.lengths, u, robot_stiffness(robot)) if elastic else u
+    return np.einsum("kij,kj->ki", ik.structure_matrix, tau), tau
+
+
+def _accelerate(
+    robot: Robot, model: KernelModel, q: np.ndarray, qd: np.ndarray, u: np.ndarray, w: np.ndarray, elastic: bool
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(q̈, τ, status)`` of ``N`` validated states."""
+    from taut.dynamics._kernels import accelerations
+
+    N = q.shape[0]
+    qdd = np.empty((N, robot.pose_size))
+    status = np.empty(N, np.int64)
+    if model.straight:
+        tau = np.empty((N, model.n))
+        accelerations(*model.args, elastic, q, qd, u, w, qdd, tau, status)
+        return qdd, tau, status
+    wc, tau = _cable_wrench(robot, q, u, elastic)
+    none = np.zeros((N, 0))
+    accelerations(*model.args, False, q, qd, none, w + wc, qdd, none, status)
+    return qdd, np.asarray(tau, dtype=float), status
+
+
+def acceleration(
+    robot: Robot,
+    q: npt.ArrayLike,
+    qd: npt.ArrayLike,
+    tensions: npt.ArrayLike,
+    w_ext: npt.ArrayLike | None = None,
+) -> np.ndarray:
+    """``q̈`` ``(N, dof)`` (``(dof,)`` for one state) of the platform at poses ``q`` with pose
+    rates ``qd`` under cable tensions ``(N, n)`` or ``(n,)`` and an external wrench ``w_ext``
+    (taut's convention: forces, then moments about ``p``, fixed frame) besides the robot's own
+    weight: the solution of ``M q̈ + C q̇ + g = Jᵀ (W τ + w_ext)``.
+
+    Raises
+    ------
+    PoseError
+        Bad shapes or values.
+    SingularConfigurationError
+        At the gimbal lock of the orientation convention.
+    InfeasiblePoseError
+        Where a cable has zero length.
+    UnsupportedRobotError
+        For a robot without mass or inertia, or a jointed platform.
+
+    References
+    ----------
+    .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
+       and Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
+    """
+    model = kernel_model(robot)
+    arr, vel, tau, w, single = _inputs(robot, q, qd, tensions, w_ext, "tensions")
+    qdd, _, status = _accelerate(robot, model, arr, vel, tau, w, False)
+    if status.any():
+        raise _status_error(robot, status, "state")
+    return qdd[0] if single else qdd
+
+
+def cable_tensions(robot: Robot, q: npt.ArrayLike, unstretched: npt.ArrayLike) -> np.ndarray:
+    """Tensions ``(N, n)`` of elastic cables of unstretched lengths ``l0`` at poses ``q``:
+    ``EA (l − l0)/l0``, zero for a slack cable (Rushton 2022, Eq. 2.15).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Eq. 2.15. (docs/references.bib: rushton2022)
+    """
+    from taut.kinematics._inverse import lengths_at
+
+    arr, single = as_poses(robot, q)
+    l0 = _unstretched(robot, unstretched, arr.shape[0])
+    tau = tension_from_stretch(lengths_at(robot, arr), l0, robot_stiffness(robot))
+    return tau[0] if single else tau
+
+
+def _unstretched(robot: Robot, l0: npt.ArrayLike, N: int) -> np.ndarray:
+    try:
+        arr = np.asarray(l0, dtype=float)
+    except (TypeError, ValueError):
+        raise TautError("commanded cable lengths must be numbers") from None
+    if arr.shape[-1:] != (robot.n_cables,) or arr.ndim > 2:
+        raise TautError(
+            f"{robot.name}: commanded cable lengths must have {robot.n_cables} entries, got shape {arr.shape}"
+        )
+    if not np.isfinite(arr).all() or (arr <= 0).any():
+        raise TautError(f"{robot.name}: commanded cable lengths must be positive and finite, got {arr.tolist()}")
+    return np.ascontiguousarray(np.broadcast_to(arr, (N, robot.n_cables)))
+
+
+def rk4_step(
+    robot: Robot,
+    q: npt.ArrayLike,
+    qd: npt.ArrayLike,
+    tensions: npt.ArrayLike,
+    dt: float,
+    w_ext: npt.ArrayLike | None = None,
+) -> tuple[np.ndarray, np.ndarray]:
+    """One classical Runge–Kutta (RK4) step of ``dt`` seconds from each state ``(q, q̇)``
+    (``(N, dof)`` or one ``(dof,)``) with the tensions and ``w_ext`` held over the step (a
+    zero-order hold, as a controller applies them): the new ``(q, q̇)``.  Raises as
+    :func:`acceleration` when a stage reaches a singular configuration."""
+    if not (np.isfinite(dt) and dt > 0):
+        raise TautError(f"time step must be positive and finite, got {dt!r}")
+    model = kernel_model(robot)
+    arr, vel, tau, w, single = _inputs(robot, q, qd, tensions, w_ext, "tensions")
+    qn, vn = _rk4(robot, model, arr, vel, tau, w, float(dt), False)
+    return (qn[0], vn[0]) if single else (qn, vn)
+
+
+def _rk4(
+    robot: Robot,
+    model: KernelModel,
+    q: np.ndarray,
+    qd: np.ndarray,
+    u: np.ndarray,
+    w: np.ndarray,
+    dt: float,
+    elastic: bool,
+) -> tuple[np.ndarray, np.ndarray]:
+    status = np.zeros(q.shape[0], np.int64)
+    if model.straight:
+        from taut.dynamics._kernels import rk4_steps
+
+        qn, vn = np.empty_like(q), np.empty_like(qd)
+        rk4_steps(*model.args, elastic, q, qd, u, w, dt, qn, vn, status)
+    else:
+        a1, _, s1 = _accelerate(robot, model, q, qd, u, w, elastic)
+        v2 = qd + 0.5 * dt * a1
+        a2, _, s2 = _accelerate(robot, model, q + 0.5 * dt * qd, v2, u, w, elastic)
+        v3 = qd + 0.5 * dt * a2
+        a3, _, s3 = _accelerate(robot, model, q + 0.5 * dt * v2, v3, u, w, elastic)
+        v4 = qd + dt * a3
+        a4, _, s4 = _accelerate(robot, model, q + dt * v3, v4, u, w, elastic)
+        status = s1 | s2 | s3 | s4
+        qn = q + dt / 6 * (qd + 2 * v2 + 2 * v3 + v4)
+        vn = qd + dt / 6 * (a1 + 2 * a2 + 2 * a3 + a4)
+    if status.any():
+        raise _status_error(robot, status, "state")
+    return qn, vn
+
+
+def _call(f: Callable[[float], npt.ArrayLike], t: float, what: str, shape: tuple[int, ...]) -> np.ndarray:
+    try:
+        v = np.asarray(f(t), dtype=float)
+    except (TypeError, ValueError) as e:
+        raise TautError(f"{what} at t = {t:g} s: not numbers ({e})") from None
+    if v.shape != shape:
+        raise TautError(f"{what} at t = {t:g} s: expected shape {shape}, got {v.shape}")
+    if not np.isfinite(v).all():
+        raise TautError(f"{what} at t = {t:g} s: not finite")
+    return v
+
+
+def forward_dynamics(
+    robot: Robot,
+    q0: npt.ArrayLike,
+    qd0: npt.ArrayLike,
+    duration: float,
+    *,
+    tensions: Callable[[float], npt.ArrayLike] | None = None,
+    lengths: Callable[[float], npt.ArrayLike] | None = None,
+    w_ext: Callable[[float], npt.ArrayLike] | None = None,
+    method: str = "DOP853",
+    rtol: float = 1e-9,
+    atol: float = 1e-12,
+    step: float | None = None,
+    times: npt.ArrayLike | None = None,
+    progress: Callable[[int, int | None], None] | None = None,
+) -> ForwardDynamicsResult:
+    """The platform's motion from ``(q0, q̇0)`` at ``t = 0`` over ``duration`` seconds.
+
+    Exactly one input drives the cables: ``tensions(t) -> (n,)``, or ``lengths(t) -> (n,)``,
+    the commanded unstretched lengths of elastic cables (each cable's ``stiffness`` is its
+    ``EA``; a slack cable pulls nothing).  ``w_ext(t) -> (dof,)`` is an external wrench
+    besides the robot's weight.  ``method`` is one of :data:`INTEGRATORS`: a method of
+    :func:`scipy.integrate.solve_ivp` (adaptive, tolerances ``rtol``/``atol``, output at
+    ``times``, default the integrator's own steps; ``step`` caps the step size) or ``"RK4"``
+    (fixed steps of ``step`` seconds, inputs evaluated at each step's start and held over it;
+    output at every step).
+
+    Raises
+    ------
+    TautError
+        Bad input (no or two drives, an unknown method, a callable returning the wrong shape
+        or non-finite values).
+    IntegrationError
+        When the integrator fails or the motion reaches a singular configuration.
+
+    References
+    ----------
+    .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
+       and Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
+    .. [2] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Eq. 2.15. (docs/references.bib: rushton2022)
+    .. [3] E. Hairer, S. P. Nørsett, G. Wanner, "Solving Ordinary Differential Equations I",
+       2nd ed., Springer, 1993 (the DOP853 code). (docs/references.bib: hairer1993)
+    """
+    if (tensions is None) == (lengths is None):
+        raise TautError("forward dynamics needs exactly one of tensions(t) and lengths(t)")
+    if method not in INTEGRATORS:
+        raise TautError(f"unknown integrator {method!r}; valid methods: {', '.join(INTEGRATORS)}")
+    if not (np.isfinite(duration) and duration > 0):
+        raise TautError(f"duration must be positive and finite, got {duration!r}")
+    if step is not None and not (np.isfinite(step) and step > 0):
+        raise TautError(f"step must be positive and finite, got {step!r}")
+    model = kernel_model(robot)
+    elastic = lengths is not None
+    if elastic:
+        robot_stiffness(robot)
+    n, dof = robot.n_cables, robot.pose_size
+    drive = lengths if lengths is not None else tensions
+    assert drive is not None
+    what = "commanded cable lengths" if elastic else "tensions"
+
+    def inputs(t: float) -> tuple[np.ndarray, np.ndarray]:
+        u = _call(drive, t, what, (n,))
+        if elastic:
+            u = _unstretched(robot, u, 1)[0]
+        w = np.zeros(dof) if w_ext is None else _call(w_ext, t, "external wrench", (dof,))
+        return u[None], w[None]
+
+    x0, v0, _, _, _ = _inputs(robot, q0, qd0, np.zeros(n), None, "tensions")
+    if x0.shape[0] != 1:
+        raise TautError(f"{robot.name}: one initial pose, got {x0.shape[0]}")
+    if method == "RK4":
+        return _fixed_steps(robot, model, x0[0], v0[0], float(duration), step, inputs, elastic, progress)
+    return _adaptive(
+        robot, model, x0[0], v0[0], float(duration), inputs, elastic, method, rtol, atol, step, times, progress
+    )
+
+
+def _fixed_steps(
+    robot: Robot,
+    model: KernelModel,
+    q: np.ndarray,
+    qd: np.ndarray,
+    duration: float,
+    step: float | None,
+    inputs: Callable[[float], tuple[np.ndarray, np.ndarray]],
+    elastic: bool,
+    progress: Callable[[int, int | None], None] | None,
+) -> ForwardDynamicsResult:
+    if step is None:
+        raise TautError("method 'RK4' needs a step size (step=...)")
+    K = int(np.ceil(duration / step - 1e-9))
+    time = np.minimum(np.arange(K + 1) * step, duration)
+    Q, V = np.empty((K + 1, q.size)), np.empty((K + 1, q.size))
+    taus = np.zeros((K + 1, robot.n_cables))
+    Q[0], V[0] = q, qd
+    x, v = q[None], qd[None]
+    for k in range(K + 1):
+        u, w = inputs(float(time[k]))
+        if elastic:
+            taus[k] = cable_tensions(robot, x, u)[0]
+        else:
+            taus[k] = u[0]
+        if k == K:
+            break
+        try:
+            x, v = _rk4(robot, model, x, v, u, w, float(time[k + 1] - time[k]), elastic)
+        except TautError as e:
+            raise IntegrationError(f"RK4 failed at t = {time[k]:g} s: {e}") from None
+        if not (np.isfinite(x).all() and np.isfinite(v).all()) or np.abs(x).max() > 1e9:
+            raise IntegrationError(f"RK4 diverged at t = {time[k + 1]:g} s (step {step:g} s too large?)")
+        Q[k + 1], V[k + 1] = x[0], v[0]
+        if progress is not None:
+            progress(k + 1, K)
+    return _result(robot, time, Q, V, taus, elastic, "RK4", 4 * K)
+
+
+def _adaptive(
+    robot: Robot,
+    model: KernelModel,
+    q: np.ndarray,
+    qd: np.ndarray,
+    duration: float,
+    inputs: Callable[[float], tuple[np.ndarray, np.ndarray]],
+    elastic: bool,
+    method: str,
+    rtol: float,
+    atol: float,
+    step: float | None,
+    times: npt.ArrayLike | None,
+    progress: Callable[[int, int | None], None] | None,
+) -> ForwardDynamicsResult:
+    from scipy.integrate import solve_ivp
+
+    dof = q.size
+    t_eval = None
+    if times is not None:
+        t_eval = np.asarray(times, dtype=float)
+        if t_eval.ndim != 1 or not np.isfinite(t_eval).all() or (np.diff(t_eval) <= 0).any():
+            raise TautError("output times must be finite and increasing")
+        if t_eval.size and (t_eval[0] < 0 or t_eval[-1] > duration):
+            raise TautError(f"output times must lie in [0, {duration:g}] s")
+    failure: list[str] = []
+
+    def rhs(t: float, y: np.ndarray) -> np.ndarray:
+        x, v = y[None, :dof], y[None, dof:]
+        u, w = inputs(t)
+        if not (np.isfinite(y).all() and np.abs(x).max() <= 1e9):
+            failure.append(f"the motion left the representable range at t = {t:g} s")
+            return np.zeros_like(y)
+        try:
+            a, _, status = _accelerate(robot, model, np.ascontiguousarray(x), np.ascontiguousarray(v), u, w, elastic)
+        except TautError as e:
+            failure.append(f"at t = {t:g} s: {e}")
+            return np.zeros_like(y)
+        if status[0]:
+            failure.append(f"at t = {t:g} s: {_status_error(robot, status, 'state')}")
+            return np.zeros_like(y)
+        if progress is not None:
+            progress(min(int(t / duration * 1000), 1000), 1000)
+        return np.concatenate([v[0], a[0]])
+
+    kwargs: dict[str, object] = {"rtol": rtol, "atol": atol}
+    if step is not None:
+        kwargs["max_step"] = step
+    sol = solve_ivp(rhs, (0.0, duration), np.concatenate([q, qd]), method=method, t_eval=t_eval, **kwargs)
+    if failure:
+        raise IntegrationError(f"{method} failed: {failure[0]}")
+    if not sol.success:
+        raise IntegrationError(f"{method} failed: {sol.message}")
+    Y = sol.y.T
+    if not np.isfinite(Y).all():
+        raise IntegrationError(f"{method} failed: the solution is not finite")
+    taus = np.array([inputs(float(t))[0][0] for t in sol.t]).reshape(len(sol.t), robot.n_cables)
+    if elastic:
+        taus = cable_tensions(robot, Y[:, :dof], taus) if len(sol.t) else taus
+    return _result(robot, sol.t, Y[:, :dof], Y[:, dof:], taus, elastic, method, int(sol.nfev))
+
+
+def _result(
+    robot: Robot,
+    time: np.ndarray,
+    Q: np.ndarray,
+    V: np.ndarray,
+    taus: np.ndarray,
+    elastic: bool,
+    method: str,
+    nfev: int,
+) -> ForwardDynamicsResult:
+    slack = taus <= 0 if elastic else np.zeros(taus.shape, dtype=bool)
+    t, q, v, tau, sl = (np.array(a) for a in (time, Q, V, taus, slack))
+    for a in (t, q, v, tau, sl):
+        a.setflags(write=False)
+    return ForwardDynamicsResult(t, q, v, tau, sl, method=method, evaluations=nfev)

@@ -1,0 +1,270 @@
+"""Inverse dynamics: the wrench the cables must apply along a sampled motion, and tensions.
+
+At each sample ``(q, q̇, q̈)`` the platform's rate of momentum about ``p`` (Newton–Euler
+through the centre of mass, ``r = R c``, ``ω = E φ̇``, ``α = E φ̈ + Ė φ̇``)
+
+    ``F = m a_c``,  ``a_c = p̈ + α × r + ω × (ω × r)``,
+    ``N = I_c α + ω × I_c ω + r × F``,  ``I_c = R I Rᵀ``
+
+minus the applied loads (the robot's weight and constant wrench, and ``w_ext``) is the wrench
+``W τ`` the cables must supply (Siciliano et al. 2009, §7.5; the same equations as
+:mod:`taut.dynamics._platform`, in twist coordinates: no angle-rate inversion, so the gimbal
+lock does not matter here).  The tensions then come from any tension distribution method of
+:mod:`taut.statics._tension`, batched over the samples, with ``W τ + w = 0`` for
+``w = −(required wrench)`` (Rushton 2022, Eq. 2.11 with the inertial d'Alembert wrench in
+``w``).  A sample without admissible tensions is a result, not an error: its index and the
+reason are reported.
+
+References
+----------
+.. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning and
+   Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
+.. [2] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.dynamics._forward import KernelModel, kernel_model, quick_rows
+from taut.dynamics._platform import as_rates
+from taut.errors import TautError
+from taut.kinematics._pose import as_poses
+from taut.model._robot import Robot
+
+__all__ = ["InverseDynamicsResult", "required_wrench", "inverse_dynamics"]
+
+#: Samples solved per call of the tension distribution (and per progress report).
+CHUNK = 20_000
+
+#: The status of a sample: admissible tensions found, proved infeasible, the method gave up,
+#: or no structure matrix.
+STATUSES = ("optimal", "infeasible", "not-found", "undefined")
+_ORDER = np.argsort(STATUSES)
+
+_WHY = {
+    "infeasible": "no tensions within the bounds give the required wrench (proved)",
+    "undefined": "a cable has zero length or no tangent point on its pulley: the structure matrix does not exist",
+}
+
+
+@dataclass(frozen=True)
+class InverseDynamicsResult:
+    """Tensions along ``N`` samples of a motion of a robot with ``n`` cables.
+
+    For a single sample the array fields have no batch axis (``docs/architecture.md`` §2.1):
+    ``tensions (n,)``, ``wrench (dof,)``, and ``feasible``, ``status``, ``reasons`` and
+    ``time`` are 0-d arrays."""
+
+    time: np.ndarray | None  #: ``(N,)`` sample times, when given
+    wrench: np.ndarray  #: ``(N, dof)`` the wrench ``W τ`` the cables must apply
+    tensions: np.ndarray  #: ``(N, n)``; zeros where no admissible distribution was found
+    feasible: np.ndarray  #: ``(N,)`` bool
+    #: ``(N,)`` ``"optimal"``, ``"infeasible"`` (proved), ``"not-found"`` (the method gave up)
+    #: or ``"undefined"`` (no structure matrix: a cable of zero length)
+    status: np.ndarray
+    reasons: np.ndarray  #: ``(N,)`` str: why a sample has no admissible tensions, ``""`` where feasible
+    method: str
+
+    def failures(self) -> list[tuple[int, str]]:
+        """``(index, reason)`` of every sample without admissible tensions (0-based)."""
+        reasons = np.atleast_1d(self.reasons)
+        return [(int(k), str(reasons[k])) for k in np.flatnonzero(~np.atleast_1d(self.feasible))]
+
+    @property
+    def first_failure(self) -> int | None:
+        """Index of the first sample without admissible tensions, or None."""
+        bad = np.flatnonzero(~np.atleast_1d(self.feasible))
+        return int(bad[0]) if bad.size else None
+
+
+def _motion(
+    robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike, qdd: npt.ArrayLike
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
+    dof = robot.pose_size
+    quick = quick_rows(robot, q, ((qd, dof), (qdd, dof)))
+    if quick is not None:
+        (arr, vel, acc), single = quick
+        return arr, vel, acc, single
+    arr, single = as_poses(robot, q)
+    N = arr.shape[0]
+    return arr, as_rates(robot, qd, N), as_rates(robot, qdd, N, "pose accelerations"), single
+
+
+def required_wrench(
+    robot: Robot,
+    q: npt.ArrayLike,
+    qd: npt.ArrayLike,
+    qdd: npt.ArrayLike,
+    w_ext: npt.ArrayLike | None = None,
+) -> np.ndarray:
+    """The wrench ``W τ`` ``(N, dof)`` (``(dof,)`` for one sample) the cables must apply for
+    the pose accelerations ``qdd`` at poses ``q`` with rates ``qd``, given an external wrench
+    ``w_ext`` (``(dof,)`` or ``(N, dof)``) besides the robot's own weight; taut's wrench
+    convention (forces, then moments about ``p``, fixed frame).
+
+    References
+    ----------
+    .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
+       and Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
+    """
+    model = kernel_model(robot)
+    arr, vel, acc, single = _motion(robot, q, qd, qdd)
+    w = _ext(robot, w_ext, arr.shape[0])
+    wrench, _, _, _ = _samples(model, arr, vel, acc, w, robot.tension_bounds, closed_form=False, cables=False)
+    return wrench[0] if single else wrench
+
+
+def _ext(robot: Robot, w_ext: npt.ArrayLike | None, N: int) -> np.ndarray:
+    if w_ext is None:
+        return np.zeros((N, robot.pose_size))
+    return np.ascontiguousarray(as_rates(robot, w_ext, N, "external wrenches"))
+
+
+def _samples(
+    model: KernelModel,
+    q: np.ndarray,
+    qd: np.ndarray,
+    qdd: np.ndarray,
+    w: np.ndarray,
+    bounds: tuple[np.ndarray, np.ndarray],
+    closed_form: bool,
+    cables: bool = True,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Compiled wrenches ``(N, dof)``, structure matrices ``(N, dof, n)`` of straight cables,
+    closed-form tensions ``(N, n)`` and the kernel status ``(N,)`` (see
+    :func:`taut.dynamics._kernels.inverse_samples`)."""
+    from taut.dynamics._kernels import inverse_samples
+    from taut.statics._tension import EQUILIBRIUM_RTOL
+
+    N, dof = q.shape
+    ip, fp, cab = model.args
+    if not cables:
+        cab = cab[:0]
+    n = cab.shape[0]
+    wrench, W, tau = np.empty((N, dof)), np.zeros((N, dof, n)), np.zeros((N, n))
+    status = np.empty(N, np.int64)
+    c = np.ascontiguousarray
+    inverse_samples(
+        ip,
+        fp,
+        cab,
+        closed_form,
+        c(q),
+        c(qd),
+        c(qdd),
+        c(w),
+        bounds[0],
+        bounds[1],
+        EQUILIBRIUM_RTOL,
+        wrench,
+        W,
+        tau,
+        status,
+    )
+    return wrench, W, tau, status
+
+
+def inverse_dynamics(
+    robot: Robot,
+    q: npt.ArrayLike,
+    qd: npt.ArrayLike,
+    qdd: npt.ArrayLike,
+    *,
+    method: str = "improved-closed-form",
+    w_ext: npt.ArrayLike | None = None,
+    time: npt.ArrayLike | None = None,
+    progress: Callable[[int, int | None], None] | None = None,
+) -> InverseDynamicsResult:
+    """Cable tensions along a sampled motion ``(q, q̇, q̈)`` (each ``(N, dof)``, or one sample
+    ``(dof,)``: a result without the batch axis).
+
+    ``method`` is a tension distribution method of :data:`taut.statics._tension.METHODS`
+    (``lp``, ``qp``, ``inf``, ``closed-form``, ``improved-closed-form``, ``barycentric``); the
+    bounds are ``robot.tension_bounds``.  ``w_ext`` is an external wrench besides the robot's
+    weight, ``time (N,)`` the sample times (kept in the result for plots).  Samples without an
+    admissible distribution get zero tensions, ``feasible = False`` and a reason.
+
+    The wrenches, structure matrices and, for ``closed-form``, the tensions are computed by a
+    compiled kernel (:func:`taut.dynamics._kernels.inverse_samples`); the samples it does not
+    accept, and every sample of the other methods, go to
+    :func:`taut.statics._tension.solve_tensions`, so that ``feasible`` means what it means there.
+
+    Raises
+    ------
+    TautError
+        Bad shapes or values, an unknown method.
+    UnsupportedRobotError
+        A robot without mass (or inertia, for a rigid platform), or a jointed platform.
+
+    References
+    ----------
+    .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
+       and Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
+    .. [2] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
+    .. [3] A. Pott, T. Bruckmann, L. Mikelsons, "Closed-form force distribution for parallel
+       wire robots", Computational Kinematics, Springer, 2009. (docs/references.bib: pott2009)
+    """
+    from taut.statics._tension import METHODS, solve_tensions
+
+    if method not in METHODS:
+        raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
+    model = kernel_model(robot)
+    arr, vel, acc, single = _motion(robot, q, qd, qdd)
+    N, n = arr.shape[0], robot.n_cables
+    times = None
+    if time is not None:
+        times = np.array(time, dtype=float).reshape(-1) if single else np.array(time, dtype=float)
+        if times.shape != (N,) or not np.isfinite(times).all():
+            raise TautError(f"sample times must be {N} finite numbers, got shape {times.shape}")
+    from taut.dynamics._kernels import ZERO_LENGTH
+
+    w = _ext(robot, w_ext, N)
+    bounds = robot.tension_bounds
+    wrench, tensions = np.empty((N, robot.pose_size)), np.zeros((N, n))
+    feasible = np.zeros(N, dtype=bool)
+    code = np.full(N, STATUSES.index("undefined"), dtype=np.int64)
+    for start in range(0, N, CHUNK):
+        part = slice(start, min(start + CHUNK, N))
+        closed = method == "closed-form" and model.straight
+        wr, W, tau, st = _samples(model, arr[part], vel[part], acc[part], w[part], bounds, closed)
+        wrench[part] = wr
+        ok = st != ZERO_LENGTH
+        if not model.straight:
+            from taut.kinematics._batch import batch_structure_matrices
+
+            _, W, ok = batch_structure_matrices(robot, arr[part])
+        done = ok & (st == 0) if closed else np.zeros_like(ok)
+        if closed:
+            tensions[part][done], feasible[part][done], code[part][done] = tau[done], True, STATUSES.index("optimal")
+        rest = np.flatnonzero(ok & ~done)
+        if rest.size:
+            res = solve_tensions(W[rest], -wr[rest], bounds[0], bounds[1], method)
+            idx = rest + start
+            tensions[idx], feasible[idx] = res.tensions, res.feasible
+            code[idx] = _ORDER[np.searchsorted(STATUSES, res.status, sorter=_ORDER)]
+        if progress is not None:
+            progress(part.stop, N)
+    labels = np.array(STATUSES)[code]
+    reasons = np.array([_reason(s, method) for s in STATUSES])[code]
+    arrays = [wrench, tensions, feasible, labels, reasons] + ([] if times is None else [times])
+    if single:
+        arrays = [np.array(a[0]) for a in arrays]
+    for a in arrays:
+        a.setflags(write=False)
+    w_, tau, ok, st, why = arrays[:5]
+    return InverseDynamicsResult(None if times is None else arrays[5], w_, tau, ok, st, why, method)
+
+
+def _reason(status: str, method: str) -> str:
+    if status == "optimal":
+        return ""
+    if status in _WHY:
+        return _WHY[status]
+    return f"method {method!r} found no admissible tensions (it may give up although some exist: try 'qp' or 'lp')"

@@ -1,0 +1,142 @@
+"""The inner loop of a controller: one state at a time, as fast as the compiled kernels allow.
+
+:func:`taut.dynamics._forward.rk4_step` and :func:`taut.dynamics._inverse.inverse_dynamics`
+check their input and build immutable results, which costs several times the arithmetic of
+one state.  A control loop at 1 kHz calls them every millisecond with states it produced
+itself, so :class:`LoopModel` checks the robot once and then runs the kernels on
+preallocated buffers: :meth:`LoopModel.tensions` (the required wrench and a tension
+distribution: the compiled closed form of Pott et al. 2009, or any method of
+:mod:`taut.statics._tension` where it gives up) and :meth:`LoopModel.step` (one RK4 step with
+the tensions held).  A singular configuration still raises.
+
+References
+----------
+.. [1] A. Pott, T. Bruckmann, L. Mikelsons, "Closed-form force distribution for parallel wire
+   robots", Computational Kinematics, Springer, 2009. (docs/references.bib: pott2009)
+.. [2] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning and
+   Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.dynamics._forward import KernelModel, kernel_model
+from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError, UnsupportedRobotError
+from taut.model._robot import Robot
+
+__all__ = ["LoopModel", "loop_model"]
+
+
+@dataclass(frozen=True)
+class LoopModel:
+    """A robot prepared for a control loop (:func:`loop_model`).  The arrays it returns are
+    new; its buffers are its own."""
+
+    robot: Robot
+    method: str  #: fallback tension distribution method where the closed form gives up
+    kernels: KernelModel = field(repr=False)
+    buffers: dict[str, np.ndarray] = field(repr=False)
+
+    def tensions(
+        self, q: npt.ArrayLike, qd: npt.ArrayLike, qdd: npt.ArrayLike, w_ext: npt.ArrayLike | None = None
+    ) -> tuple[np.ndarray, bool]:
+        """Tensions ``(n,)`` for the pose accelerations ``qdd`` at the state ``(q, q̇)`` (each
+        ``(dof,)``) under ``w_ext`` besides the weight, and whether they are admissible (zeros
+        when not).  Raises :class:`~taut.errors.InfeasiblePoseError` where a cable has zero
+        length."""
+        from taut.dynamics._kernels import OK, ZERO_LENGTH, inverse_samples
+        from taut.statics._tension import EQUILIBRIUM_RTOL, solve_tensions
+
+        b = self.buffers
+        b["q"][0], b["qd"][0], b["qdd"][0] = q, qd, qdd
+        b["w"][0] = 0.0 if w_ext is None else w_ext
+        lo, hi = b["lo"], b["hi"]
+        ip, fp, cab = self.kernels.args
+        inverse_samples(
+            ip,
+            fp,
+            cab,
+            True,
+            b["q"],
+            b["qd"],
+            b["qdd"],
+            b["w"],
+            lo,
+            hi,
+            EQUILIBRIUM_RTOL,
+            b["wrench"],
+            b["W"],
+            b["tau"],
+            b["status"],
+        )
+        status = b["status"][0]
+        if status == ZERO_LENGTH:
+            raise InfeasiblePoseError(f"{self.robot.name}: a cable has zero length at {np.asarray(q).tolist()}")
+        if status == OK:
+            return b["tau"][0].copy(), True
+        res = solve_tensions(b["W"][0], -b["wrench"][0], lo, hi, self.method)
+        return np.array(res.tensions), bool(res.feasible)
+
+    def step(
+        self,
+        q: npt.ArrayLike,
+        qd: npt.ArrayLike,
+        tensions: npt.ArrayLike,
+        dt: float,
+        w_ext: npt.ArrayLike | None = None,
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """One RK4 step of ``dt`` from ``(q, q̇)`` (each ``(dof,)``) with ``tensions (n,)`` and
+        ``w_ext`` held: the new ``(q, q̇)``.  Raises :class:`~taut.errors.SingularConfigurationError`
+        at the gimbal lock and :class:`~taut.errors.InfeasiblePoseError` where a cable has zero
+        length."""
+        from taut.dynamics._kernels import GIMBAL_LOCK, OK, rk4_steps
+
+        b = self.buffers
+        b["q"][0], b["qd"][0], b["u"][0] = q, qd, tensions
+        b["w"][0] = 0.0 if w_ext is None else w_ext
+        ip, fp, cab = self.kernels.args
+        rk4_steps(ip, fp, cab, False, b["q"], b["qd"], b["u"], b["w"], dt, b["q_next"], b["qd_next"], b["status"])
+        status = b["status"][0]
+        if status == GIMBAL_LOCK:
+            raise SingularConfigurationError(
+                f"{self.robot.name}: the step from {np.asarray(q).tolist()} reaches the gimbal lock"
+            )
+        if status != OK:
+            raise InfeasiblePoseError(
+                f"{self.robot.name}: the step from {np.asarray(q).tolist()} reaches a zero-length cable"
+            )
+        return b["q_next"][0].copy(), b["qd_next"][0].copy()
+
+
+def loop_model(robot: Robot, method: str = "qp") -> LoopModel:
+    """``robot`` prepared for :meth:`LoopModel.tensions` and :meth:`LoopModel.step`;
+    ``method`` is the distribution used where the compiled closed form gives up.
+
+    Raises
+    ------
+    UnsupportedRobotError
+        Robots the dynamics does not handle, and robots with swivelling pulleys (their cables
+        are not straight; use the checked functions).
+    TautError
+        An unknown method.
+    """
+    from taut.statics._tension import METHODS
+
+    if method not in METHODS:
+        raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
+    kernels = kernel_model(robot)
+    if not kernels.straight:
+        raise UnsupportedRobotError(
+            f"{robot.name}: cables through swivelling pulleys are not in the compiled loop; use rk4_step and inverse_dynamics"
+        )
+    dof, n = robot.pose_size, robot.n_cables
+    rows = {"q": dof, "qd": dof, "qdd": dof, "w": dof, "u": n, "wrench": dof, "tau": n, "q_next": dof, "qd_next": dof}
+    buffers: dict[str, np.ndarray] = {name: np.zeros((1, width)) for name, width in rows.items()}
+    buffers["lo"], buffers["hi"] = robot.tension_bounds
+    buffers["W"] = np.zeros((1, dof, n))
+    buffers["status"] = np.zeros(1, np.int64)
+    return LoopModel(robot, method, kernels, buffers)

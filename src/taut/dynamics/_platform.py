@@ -1,0 +1,374 @@
+"""Equations of motion of a CDPR platform in the robot's pose coordinates.
+
+A rigid platform with mass ``m`` and inertia ``I`` (about its centre of mass ``c``, fixed in
+the platform: ``platform.wrench_point``) at the pose ``q = (p, φ)`` — the reference point ``p``
+and the orientation angles ``φ`` (``docs/architecture.md`` §2.2) — has the twist ``ν = (ṗ, ω)``
+with ``ω = E(φ) φ̇`` (:mod:`taut.geometry._rates`), i.e. ``ν = J(q) q̇`` with ``J = diag(1, E)``
+(planar: ``J = 1``, ``ω = θ̇``; point mass: ``J = 1``, no orientation).  With ``r = R c`` the
+arm from ``p`` to the centre of mass, the Newton–Euler equations about ``p``, in the fixed
+frame and in taut's wrench convention (forces, then moments about ``p``: the rows of the
+structure matrix ``W``, §2.4), read
+
+    ``M_ν ν̇ + b_ν = W τ + w₀ + w_ext``,
+    ``M_ν = [[m 1, −m [r]×], [m [r]×, I_p]]``,  ``I_p = R I Rᵀ − m [r]×²``,
+    ``b_ν = (m ω × (ω × r), ω × I_p ω)``,
+
+with ``w₀`` the robot's own load (its weight ``Robot.weight`` at the centre of mass and the
+constant ``platform.wrench``: :func:`taut.statics._wrench.external_wrench`).  The moment rows of
+``W`` are moments, not generalized forces of the angles: by virtual work the generalized force
+of a wrench ``w`` is ``Jᵀ w`` (``Eᵀ n`` for the angles).  Premultiplying by ``Jᵀ`` gives the
+Lagrange form in the pose coordinates (Siciliano et al. 2009, §7.1–7.2)
+
+    ``M(q) q̈ + C(q, q̇) q̇ + g(q) = Jᵀ (W τ + w_ext)``,
+    ``M = Jᵀ M_ν J``,  ``C = Jᵀ (M_ν J̇ + C_ν J)``,  ``g = −Jᵀ w₀``,
+
+where ``C_ν ν = b_ν`` is the factorization ``C_ν = [[0, −m [ω]×[r]×], [m [ω]×[r]×,
+[ω]× I_p + m [r × ṗ]×]]`` (planar: ``C_ν = [[0, −m ω r], [0, 0]]``) for which ``Ṁ_ν − 2 C_ν``
+and hence ``Ṁ − 2 C`` are skew-symmetric (Siciliano et al. 2009, §7.2.1, where the inertia
+matrix is called ``B``).  ``M`` is symmetric positive definite wherever ``E`` is regular (away from the gimbal lock of the
+orientation convention).
+
+A platform carrying jointed bodies (``platform.bodies``) has the pose ``q = (p, φ, q_J)`` with
+the joint coordinates: :func:`mass_matrix`, :func:`bias_forces`, :func:`gravity_forces`,
+:func:`velocity_jacobian` (``T = diag(1, E, 1)``) and :func:`generalized_forces` (of the rows
+of :func:`taut.kinematics._jointed.jointed_structure_matrix`: a wrench about ``p``, then joint
+forces) and :func:`coriolis_matrix` take it to :mod:`taut.dynamics._jointed` when every body
+has a mass and an inertia; :func:`platform_dynamics` (hence forward and inverse dynamics)
+refuses it (:class:`~taut.errors.UnsupportedRobotError`).
+
+References
+----------
+.. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning and
+   Control", Springer, 2009, §3.6 (Eq. 3.64), §7.1–7.2 (Lagrange formulation; §7.2.1 the
+   skew-symmetry of Ḃ − 2C) and §7.5 (Newton–Euler formulation). (docs/references.bib: siciliano2009)
+.. [2] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.1, Eqs. 2.8, 2.10 and 2.11. (docs/references.bib: rushton2022)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.dynamics._jointed import (
+    jointed_bias_forces,
+    jointed_coriolis_matrix,
+    jointed_gravity_forces,
+    jointed_mass_matrix,
+    twist_jacobian,
+)
+from taut.errors import UnsupportedRobotError
+from taut.geometry._rates import rate_matrix, rate_matrix_derivative
+from taut.geometry._rotation import planar_rotation, rotation_matrix
+from taut.geometry._vectors import cross
+from taut.kinematics._pose import as_poses
+from taut.model._robot import Robot
+
+__all__ = [
+    "PlatformDynamics",
+    "platform_dynamics",
+    "velocity_jacobian",
+    "mass_matrix",
+    "coriolis_matrix",
+    "gravity_forces",
+    "bias_forces",
+    "generalized_forces",
+    "own_load",
+]
+
+#: Per convention: the axis of each elementary rotation of ``R`` and ``T`` with ``t = T φ``
+#: (the factors of :mod:`taut.geometry._rates`), for the compiled kernels.
+CONVENTION_FACTORS: dict[str, tuple[tuple[int, int, int], tuple[tuple[float, ...], ...]]] = {
+    "xyz-fixed": ((2, 1, 0), ((0.0, 0, 1), (0, 1, 0), (1, 0, 0))),
+    "xyz-moving": ((0, 1, 2), ((1.0, 0, 0), (0, 1, 0), (0, 0, 1))),
+    "tilt-torsion": ((2, 1, 2), ((1.0, 0, 0), (0, 1, 0), (-1, 0, 1))),
+}
+
+POINT_MASS, PLANAR, SPATIAL = 0, 1, 2
+
+
+@dataclass(frozen=True)
+class PlatformDynamics:
+    """The inertial data of a robot's platform, checked once (:func:`platform_dynamics`)."""
+
+    kind: int  #: :data:`POINT_MASS`, :data:`PLANAR` (rigid) or :data:`SPATIAL` (rigid)
+    dimension: int  #: 2 or 3
+    dof: int  #: pose coordinates (= wrench components)
+    mass: float
+    com: np.ndarray  #: ``(d,)`` centre of mass in the platform frame (zero for a point mass)
+    inertia: np.ndarray  #: ``(3, 3)`` about the centre of mass, platform frame (planar: ``Izz`` at ``[2, 2]``)
+    force: np.ndarray  #: ``(d,)`` constant force at the centre of mass: weight and ``platform.wrench``
+    moment: np.ndarray  #: ``(dof − d,)`` constant moment of ``platform.wrench``
+    orientation: str
+
+
+def platform_dynamics(robot: Robot) -> PlatformDynamics:
+    """The platform's mass, centre of mass, inertia and constant load.
+
+    Raises
+    ------
+    UnsupportedRobotError
+        For a jointed platform, a platform without ``mass``, or a rigid platform without a
+        positive definite ``inertia``."""
+    plat, d = robot.platform, robot.dimension
+    if robot.n_joints:
+        names = ", ".join(b.name for b in plat.bodies)
+        raise UnsupportedRobotError(
+            f"{robot.name}: forward and inverse dynamics of jointed platforms (bodies {names}) are not "
+            "supported; their equations of motion are (mass_matrix, coriolis_matrix, bias_forces)"
+        )
+    if plat.mass is None:
+        raise UnsupportedRobotError(f"{robot.name}: the dynamics needs the platform's mass (platform.mass)")
+    kind = POINT_MASS if robot.is_point_mass else (PLANAR if d == 2 else SPATIAL)
+    inertia = np.zeros((3, 3))
+    if kind != POINT_MASS:
+        tensor = robot.inertia
+        if tensor is None:
+            raise UnsupportedRobotError(
+                f"{robot.name}: the dynamics of a rigid platform needs its inertia (platform.inertia, "
+                "about the centre of mass platform.wrench_point)"
+            )
+        if np.linalg.eigvalsh(tensor).min() <= 1e-12 * max(np.abs(tensor).max(), 1e-300):
+            raise UnsupportedRobotError(
+                f"{robot.name}: platform.inertia {list(plat.inertia or ())} is singular: a rigid platform "
+                "needs a positive definite inertia"
+            )
+        if kind == PLANAR:
+            inertia[2, 2] = tensor[0, 0]
+        else:
+            inertia = np.array(tensor, dtype=float)
+    m = robot.wrench_dim
+    load = np.zeros(m) if plat.wrench is None else np.asarray(plat.wrench, dtype=float)
+    com = np.zeros(d) if kind == POINT_MASS or plat.wrench_point is None else np.asarray(plat.wrench_point, float)
+    return PlatformDynamics(
+        kind=kind,
+        dimension=d,
+        dof=m,
+        mass=float(plat.mass),
+        com=com,
+        inertia=inertia,
+        force=robot.weight + load[:d],
+        moment=load[d:],
+        orientation=robot.orientation,
+    )
+
+
+def _poses(robot: Robot, q: npt.ArrayLike) -> tuple[np.ndarray, bool]:
+    return as_poses(robot, q)
+
+
+def as_rates(robot: Robot, qd: npt.ArrayLike, n: int, what: str = "pose velocities") -> np.ndarray:
+    """Validate pose rates ``(n, dof)`` (or one ``(dof,)`` broadcast to ``n``)."""
+    from taut.errors import PoseError
+
+    try:
+        arr = np.asarray(qd, dtype=float)
+    except (TypeError, ValueError):
+        raise PoseError(f"{what} must be numbers") from None
+    if arr.shape[-1:] != (robot.pose_size,) or arr.ndim > 2:
+        raise PoseError(f"{robot.name}: {what} have {robot.pose_size} components, got shape {arr.shape}")
+    arr = np.atleast_2d(arr)
+    if arr.shape[0] not in (1, n):
+        raise PoseError(f"{robot.name}: {n} poses but {arr.shape[0]} {what}")
+    if not np.isfinite(arr).all():
+        raise PoseError(f"{robot.name}: {what} are not finite")
+    return np.broadcast_to(arr, (n, robot.pose_size))
+
+
+def frames(pd: PlatformDynamics, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Rotations ``R (N, 3, 3)`` (planar and point mass: embedded in 3-D) and arms ``r = R c``
+    ``(N, 3)`` from ``p`` to the centre of mass, in the fixed frame."""
+    N = q.shape[0]
+    R = np.broadcast_to(np.eye(3), (N, 3, 3)).copy()
+    if pd.kind == PLANAR:
+        R[:, :2, :2] = planar_rotation(q[:, 2])
+    elif pd.kind == SPATIAL:
+        R = rotation_matrix(q[:, 3:6], pd.orientation)
+    c = np.zeros(3)
+    c[: pd.dimension] = pd.com
+    return R, R @ c
+
+
+def _skew(v: np.ndarray) -> np.ndarray:
+    """``[v]×`` ``(N, 3, 3)`` of vectors ``(N, 3)``."""
+    S = np.zeros(v.shape[:-1] + (3, 3))
+    S[..., 0, 1], S[..., 0, 2] = -v[..., 2], v[..., 1]
+    S[..., 1, 0], S[..., 1, 2] = v[..., 2], -v[..., 0]
+    S[..., 2, 0], S[..., 2, 1] = -v[..., 1], v[..., 0]
+    return S
+
+
+def twist_inertia(pd: PlatformDynamics, R: np.ndarray, r: np.ndarray) -> np.ndarray:
+    """``M_ν (N, dof, dof)``: the platform's inertia for twists ``(ṗ, ω)`` about ``p``."""
+    N, m, d = R.shape[0], pd.mass, pd.dimension
+    if pd.kind == POINT_MASS:
+        return np.broadcast_to(m * np.eye(d), (N, d, d)).copy()
+    Ic = R @ pd.inertia @ np.swapaxes(R, 1, 2)
+    S = _skew(r)
+    Ip = Ic - m * S @ S
+    if pd.kind == PLANAR:
+        out = np.zeros((N, 3, 3))
+        out[:, 0, 0] = out[:, 1, 1] = m
+        out[:, 0, 2] = out[:, 2, 0] = -m * r[:, 1]
+        out[:, 1, 2] = out[:, 2, 1] = m * r[:, 0]
+        out[:, 2, 2] = Ip[:, 2, 2]
+        return out
+    out = np.zeros((N, 6, 6))
+    out[:, :3, :3] = m * np.eye(3)
+    out[:, :3, 3:] = -m * S
+    out[:, 3:, :3] = m * S
+    out[:, 3:, 3:] = Ip
+    return out
+
+
+def velocity_jacobian(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
+    """``J (N, dof, dof)`` with the twist ``(ṗ, ω) = J q̇``: ``diag(1, E(φ))`` for a spatial
+    platform (:func:`taut.geometry._rates.rate_matrix`), the identity otherwise.  The
+    generalized force of a wrench ``w`` (taut's convention: moments about ``p``) is ``Jᵀ w``.
+    A jointed platform's ``J = diag(1, E(φ), 1)`` also maps the joint rates (``(P, P)``,
+    ``P = pose_size``)."""
+    arr, single = _poses(robot, q)
+    J = twist_jacobian(robot, arr) if robot.n_joints else _jacobian(platform_dynamics(robot), arr)
+    return J[0] if single else J
+
+
+def _jacobian(pd: PlatformDynamics, q: np.ndarray) -> np.ndarray:
+    J = np.broadcast_to(np.eye(pd.dof), (q.shape[0], pd.dof, pd.dof)).copy()
+    if pd.kind == SPATIAL:
+        J[:, 3:, 3:] = rate_matrix(q[:, 3:6], pd.orientation)
+    return J
+
+
+def _jacobian_rate(pd: PlatformDynamics, q: np.ndarray, qd: np.ndarray) -> np.ndarray:
+    Jd = np.zeros((q.shape[0], pd.dof, pd.dof))
+    if pd.kind == SPATIAL:
+        Jd[:, 3:, 3:] = rate_matrix_derivative(q[:, 3:6], qd[:, 3:6], pd.orientation)
+    return Jd
+
+
+def _twist_coriolis(pd: PlatformDynamics, R: np.ndarray, r: np.ndarray, nu: np.ndarray) -> np.ndarray:
+    """``C_ν (N, dof, dof)`` with ``C_ν ν = b_ν`` and ``Ṁ_ν − 2 C_ν`` skew-symmetric."""
+    N, m = R.shape[0], pd.mass
+    C = np.zeros((N, pd.dof, pd.dof))
+    if pd.kind == PLANAR:
+        C[:, 0, 2] = -m * nu[:, 2] * r[:, 0]
+        C[:, 1, 2] = -m * nu[:, 2] * r[:, 1]
+    elif pd.kind == SPATIAL:
+        v, w = nu[:, :3], nu[:, 3:]
+        Ic = R @ pd.inertia @ np.swapaxes(R, 1, 2)
+        Sr, Sw = _skew(r), _skew(w)
+        Ip = Ic - m * Sr @ Sr
+        C[:, :3, 3:] = -m * Sw @ Sr
+        C[:, 3:, :3] = m * Sw @ Sr
+        C[:, 3:, 3:] = Sw @ Ip + m * _skew(cross(r, v))
+    return C
+
+
+def own_load(pd: PlatformDynamics, R: np.ndarray, r: np.ndarray) -> np.ndarray:
+    """``w₀ (N, dof)``: the constant force at the centre of mass and the constant moment, as a
+    wrench about ``p`` in the fixed frame."""
+    d = pd.dimension
+    w = np.zeros((R.shape[0], pd.dof))
+    w[:, :d] = pd.force
+    if pd.kind != POINT_MASS:
+        f3 = np.zeros(3)
+        f3[:d] = pd.force
+        moment = cross(r, np.broadcast_to(f3, r.shape))
+        w[:, d:] = pd.moment + (moment[:, 2:] if pd.kind == PLANAR else moment)
+    return w
+
+
+def mass_matrix(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
+    """``M(q) = Jᵀ M_ν J`` ``(N, dof, dof)`` (``(dof, dof)`` for one pose).
+
+    References
+    ----------
+    .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
+       and Control", Springer, 2009, §7.1–7.2. (docs/references.bib: siciliano2009)
+    """
+    arr, single = _poses(robot, q)
+    if robot.n_joints:
+        M = jointed_mass_matrix(robot, arr)
+        return M[0] if single else M
+    pd = platform_dynamics(robot)
+    R, r = frames(pd, arr)
+    J = _jacobian(pd, arr)
+    M = np.swapaxes(J, 1, 2) @ twist_inertia(pd, R, r) @ J
+    return M[0] if single else M
+
+
+def coriolis_matrix(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.ndarray:
+    """``C(q, q̇) = Jᵀ (M_ν J̇ + C_ν J)`` ``(N, dof, dof)``, with ``Ṁ − 2 C`` skew-symmetric.
+
+    References
+    ----------
+    .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
+       and Control", Springer, 2009, §7.2.1. (docs/references.bib: siciliano2009)
+    """
+    arr, single = _poses(robot, q)
+    qdot = as_rates(robot, qd, arr.shape[0])
+    if robot.n_joints:
+        C = jointed_coriolis_matrix(robot, arr, qdot)
+        return C[0] if single else C
+    pd = platform_dynamics(robot)
+    R, r = frames(pd, arr)
+    J = _jacobian(pd, arr)
+    nu = np.einsum("nij,nj->ni", J, qdot)
+    C = np.swapaxes(J, 1, 2) @ (
+        twist_inertia(pd, R, r) @ _jacobian_rate(pd, arr, qdot) + _twist_coriolis(pd, R, r, nu) @ J
+    )
+    return C[0] if single else C
+
+
+def gravity_forces(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
+    """``g(q) = −Jᵀ w₀`` ``(N, dof)``: the generalized forces of the robot's weight (and of a
+    constant ``platform.wrench``), so that a platform at rest is in equilibrium when
+    ``g = Jᵀ W τ`` — the statics of :func:`taut.statics._wrench.external_wrench` (jointed
+    platforms: also the bodies' weights, and the joint rows of :func:`taut.kinematics._jointed.joint_forces`)."""
+    arr, single = _poses(robot, q)
+    if robot.n_joints:
+        g = jointed_gravity_forces(robot, arr)
+        return g[0] if single else g
+    pd = platform_dynamics(robot)
+    R, r = frames(pd, arr)
+    g = -np.einsum("nji,nj->ni", _jacobian(pd, arr), own_load(pd, R, r))
+    return g[0] if single else g
+
+
+def bias_forces(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.ndarray:
+    """``h(q, q̇) = C(q, q̇) q̇ + g(q)`` ``(N, dof)``.
+
+    References
+    ----------
+    .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
+       and Control", Springer, 2009, §7.2. (docs/references.bib: siciliano2009)
+    """
+    arr, single = _poses(robot, q)
+    qdot = as_rates(robot, qd, arr.shape[0])
+    if robot.n_joints:
+        h = jointed_bias_forces(robot, arr, qdot)
+        return h[0] if single else h
+    pd = platform_dynamics(robot)
+    R, r = frames(pd, arr)
+    J = _jacobian(pd, arr)
+    nu = np.einsum("nij,nj->ni", J, qdot)
+    Mnu = twist_inertia(pd, R, r)
+    inner = np.einsum("nij,nj->ni", Mnu @ _jacobian_rate(pd, arr, qdot), qdot)
+    inner += np.einsum("nij,nj->ni", _twist_coriolis(pd, R, r, nu), nu) - own_load(pd, R, r)
+    h = np.einsum("nji,nj->ni", J, inner)
+    return h[0] if single else h
+
+
+def generalized_forces(robot: Robot, q: npt.ArrayLike, wrench: npt.ArrayLike) -> np.ndarray:
+    """``Jᵀ w`` ``(N, dof)``: the generalized forces of wrenches ``w`` in taut's convention
+    (forces, then moments about ``p`` in the fixed frame, like ``W τ``).  On a jointed platform
+    ``w`` also holds the joint forces (along, or torques about, the joint axes), as the rows of
+    :func:`taut.kinematics._jointed.jointed_structure_matrix`: the cables' generalized forces
+    are ``Jᵀ A[:, :n] τ``."""
+    arr, single = _poses(robot, q)
+    w = as_rates(robot, wrench, arr.shape[0], "wrenches")
+    J = twist_jacobian(robot, arr) if robot.n_joints else _jacobian(platform_dynamics(robot), arr)
+    Q = np.einsum("nji,nj->ni", J, w)
+    return Q[0] if single else Q

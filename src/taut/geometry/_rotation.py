@@ -1,0 +1,84 @@
+"""Rotation matrices for the orientation conventions of ``docs/architecture.md`` §2.3.
+
+* ``xyz-fixed``: ``R = Rz(c) Ry(b) Rx(a)`` — rotations about the fixed x, y, z axes
+  (the convention of Tables 4.3–4.6 of Berti 2015).
+* ``xyz-moving``: ``R = Rx(a) Ry(b) Rz(c)`` — Eq. (3.1.1) of Lieskovský (2020).
+* ``tilt-torsion``: ``R = Rz(φ) Ry(θ) Rz(σ − φ)`` — Eq. (1) of Bohigas et al. (2013);
+  the angles are given in the order ``(φ, θ, σ)``.
+
+All functions work over arrays: angles of shape ``(..., 3)`` give matrices ``(..., 3, 3)``.
+
+References
+----------
+.. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+   interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
+   di Bologna, 2015, Tables 4.3–4.6. (docs/references.bib: berti2015)
+.. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, Eq. 3.1.1.
+   (docs/references.bib: lieskovsky2020)
+.. [3] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, Eq. 1. (docs/references.bib: bohigas2013)
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import numpy.typing as npt
+
+CONVENTIONS = ("xyz-fixed", "xyz-moving", "tilt-torsion")
+
+
+def planar_rotation(theta: npt.ArrayLike) -> np.ndarray:
+    """``R(θ)`` of shape ``(..., 2, 2)`` for angles of shape ``(...)``."""
+    theta = np.asarray(theta, dtype=float)
+    c, s = np.cos(theta), np.sin(theta)
+    return np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)
+
+
+def _axis(k: int, t: np.ndarray) -> np.ndarray:
+    """Rotations ``(..., 3, 3)`` by the angles ``t`` about axis ``k`` (0: x, 1: y, 2: z)."""
+    c, s = np.cos(t), np.sin(t)
+    M = np.zeros(t.shape + (3, 3))
+    i, j = (k + 1) % 3, (k + 2) % 3
+    M[..., k, k] = 1.0
+    M[..., i, i], M[..., i, j], M[..., j, i], M[..., j, j] = c, -s, s, c
+    return M
+
+
+def rotation_matrix(angles: npt.ArrayLike, convention: str = "xyz-fixed") -> np.ndarray:
+    """Rotation matrices ``(..., 3, 3)`` from three angles ``(..., 3)`` in ``convention``.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, Tables 4.3–4.6. (docs/references.bib: berti2015)
+    .. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, Eq. 3.1.1.
+       (docs/references.bib: lieskovsky2020)
+    .. [3] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, Eq. 1.
+       (docs/references.bib: bohigas2013)
+    """
+    if convention not in CONVENTIONS:
+        raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
+    a, b, c = np.moveaxis(np.asarray(angles, dtype=float), -1, 0)
+    if convention == "xyz-fixed":
+        return _axis(2, c) @ _axis(1, b) @ _axis(0, a)
+    if convention == "xyz-moving":
+        return _axis(0, a) @ _axis(1, b) @ _axis(2, c)
+    return _axis(2, a) @ _axis(1, b) @ _axis(2, c - a)
+
+
+def angles_from_matrix(R: npt.ArrayLike, convention: str = "xyz-fixed") -> np.ndarray:
+    """Inverse of :func:`rotation_matrix`: angles ``(..., 3)`` with the middle angle in
+    ``[-π/2, π/2]`` (``[0, π]`` for tilt-and-torsion)."""
+    if convention not in CONVENTIONS:
+        raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
+    R = np.asarray(R, dtype=float)
+    flat = np.ascontiguousarray(R.reshape(-1, 3, 3))
+    from taut.geometry._rotation_kernels import angles
+
+    return angles(flat, CONVENTIONS.index(convention)).reshape(R.shape[:-2] + (3,))

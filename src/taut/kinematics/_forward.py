@@ -1,0 +1,87 @@
+"""Forward kinematics of robots whose cables are all taut (``n ≥`` pose size).
+
+Damped Newton (Levenberg–Marquardt, ``scipy.optimize.least_squares(method="lm")``) on
+the residual ``l(x) − L`` of the inverse kinematics of :mod:`taut.kinematics._inverse`
+(lengths over swivelling pulleys included), from a guess.  Under-constrained robots, whose cables need not all be taut, are the
+direct geometrico-static problem (``taut.dgp``), not this.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.errors import PoseError, TautError, UnreachableLengthsError
+from taut.kinematics._inverse import lengths_at
+from taut.kinematics._pose import as_poses
+from taut.model._robot import Robot
+
+
+@dataclass(frozen=True)
+class FKResult:
+    pose: np.ndarray  #: the pose found, ``(pose_size,)``
+    residual: float  #: ``max |l_i(pose) − L_i|`` [m]
+    iterations: int  #: residual evaluations used
+
+
+def default_guess(robot: Robot) -> np.ndarray:
+    """Centroid of the exit points, zero orientation, joints at mid-range."""
+    pose = np.zeros(robot.pose_size)
+    pose[: robot.dimension] = robot.exits.mean(axis=0)
+    if robot.n_joints:
+        pose[robot.wrench_dim :] = robot.joint_limits.mean(axis=1)
+    return pose
+
+
+def forward_kinematics(
+    robot: Robot, lengths: npt.ArrayLike, guess: npt.ArrayLike | None = None, *, tol: float = 1e-9
+) -> FKResult:
+    """The pose at which the cables have ``lengths``, found from ``guess``.
+
+    Raises :class:`UnreachableLengthsError` when no pose near the guess fits the lengths
+    to ``tol`` (lengths that violate a triangle inequality, or a guess in another basin)."""
+    from scipy.optimize import least_squares
+
+    L = np.asarray(lengths, dtype=float)
+    if L.shape != (robot.n_cables,):
+        raise TautError(f"{robot.name}: expected {robot.n_cables} cable lengths, got {L.size}")
+    if not np.all(np.isfinite(L)) or np.any(L <= 0):
+        raise TautError(f"{robot.name}: cable lengths must be positive and finite, got {L.tolist()}")
+    if robot.n_cables < robot.pose_size:
+        raise TautError(
+            f"{robot.name}: {robot.n_cables} cables cannot fix {robot.pose_size} pose coordinates; "
+            "an under-constrained robot needs the geometrico-static solver (`taut fk`)"
+        )
+    x0 = default_guess(robot) if guess is None else as_poses(robot, guess)[0][0]
+    lo = np.full(robot.pose_size, -np.inf)
+    hi = np.full(robot.pose_size, np.inf)
+    if robot.n_joints:
+        lo[robot.wrench_dim :], hi[robot.wrench_dim :] = robot.joint_limits.T
+
+    def residual(x: np.ndarray) -> np.ndarray:
+        return lengths_at(robot, x[None, :])[0] - L
+
+    method = "trf" if robot.n_joints else "lm"
+    sol = least_squares(
+        residual,
+        x0,
+        method=method,
+        bounds=(lo, hi) if robot.n_joints else (-np.inf, np.inf),
+        xtol=1e-15,
+        ftol=1e-15,
+        gtol=1e-15,
+        max_nfev=2000,
+    )
+    err = float(np.max(np.abs(sol.fun)))
+    if not np.all(np.isfinite(sol.x)) or err > tol:
+        raise UnreachableLengthsError(
+            f"{robot.name}: no pose near the guess fits the lengths {np.round(L, 6).tolist()} "
+            f"(best residual {err:.3g} m)"
+        )
+    try:
+        as_poses(robot, sol.x)
+    except PoseError as exc:
+        raise UnreachableLengthsError(str(exc)) from None
+    return FKResult(sol.x, err, int(sol.nfev))

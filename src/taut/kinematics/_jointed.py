@@ -1,0 +1,180 @@
+"""Actuator positions, inverse-kinematics Jacobian and structure matrix of robots whose
+platform carries jointed bodies — §3.2–3.3 of Lieskovský (2020) — written for
+any robot of taut (without bodies they reduce to the standard model).
+
+* **Actuator positions** (Eqs. 3.2.3–3.2.4): ``q = [l_1 … l_n, q_{n+1} …]``, the cable
+  lengths followed by the joint coordinates (the joint actuators).
+* **Inverse-kinematics Jacobian** (Eqs. 3.2.6–3.2.12): ``q̇ = J Ẋ`` with the *twist*
+  ``Ẋ = [v, ω, q̇_joints]`` of the platform (velocity of its reference point ``p``,
+  angular velocity, joint rates).  Cable ``i`` on body ``k`` has the row
+  ``[−u_iᵀ, −((b_i − p) × u_i)ᵀ, −u_i·∂b_i/∂q_j …]`` where ``∂b_i/∂q_j`` is, for each joint
+  ``j`` between the platform and body ``k``, the joint axis ``e_j`` in the fixed frame
+  (prismatic, Eq. 3.2.7: ``ṡ_23 u_23``) or ``e_j × (b_i − o_j)`` about the joint origin
+  ``o_j`` (revolute; planar: ``(b_i − o_j)`` turned by 90°); each joint row is a unit row
+  (Eq. 3.2.8).  With ``u_i`` pointing from the platform to the exit point (``docs/architecture.md``
+  §2.4) ``l̇_i = −u_i · ḃ_i``: Eq. 3.2.12 prints the same rows with the opposite sign.  For the
+  adjustable platform ``J`` is 9×7.
+* **Structure matrix with joint forces** (Eqs. 3.3.7–3.3.12): by virtual work a cable
+  tension ``τ_i`` acts on the generalised coordinates as ``−τ_i ∂l_i/∂X`` and a joint force
+  ``ζ_j`` (pushing the child body along ``+e_j``) as ``+ζ_j ∂q_j/∂X``, so equilibrium reads
+  ``A [τ; ζ] + Q_ext = 0`` with ``A = [−J_cablesᵀ, J_jointsᵀ]``.  Its first ``m`` rows and
+  ``n`` columns are the platform structure matrix ``W = [u_i ; (b_i − p) × u_i]`` of
+  Eq. 3.3.10 (``A = −W`` there: the source writes the wrench the cables exert as ``w``).
+  A joint row gives the joint force (Eq. 3.3.12): ``ζ_j = −Σ τ_i u_i·∂b_i/∂q_j`` over the
+  cables beyond the joint, minus the generalised force ``Σ_k F_k·∂c_k/∂q_j`` of the
+  weights ``F_k`` of the bodies beyond it at their centres of mass ``c_k`` (the platform's
+  own wrench acts on the platform body itself and does not enter the joint rows).
+
+References
+----------
+.. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §3.2–3.3, Eqs. 3.2.3–3.2.12 and
+   3.3.7–3.3.12. (docs/references.bib: lieskovsky2020)
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.errors import TautError
+from taut.kinematics._inverse import inverse_kinematics, lengths_at
+from taut.kinematics._pose import as_poses, body_frames
+from taut.model._robot import Robot
+
+__all__ = ["actuator_jacobian", "actuator_positions", "joint_forces", "jointed_structure_matrix"]
+
+
+def actuator_positions(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
+    """``q`` of Eqs. 3.2.3–3.2.4: cable lengths then joint coordinates, ``(N, n + n_joints)``.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, Eqs. 3.2.3–3.2.4.
+       (docs/references.bib: lieskovsky2020)
+    """
+    arr, single = as_poses(robot, poses)
+    q = np.concatenate([lengths_at(robot, arr), arr[:, robot.wrench_dim :]], axis=1)
+    return q[0] if single else q
+
+
+def _chains(robot: Robot) -> list[list[int]]:
+    """For each body (0 = platform) the joints (1-based body indices) from it to the platform."""
+    index = {"platform": 0} | {b.name: k for k, b in enumerate(robot.platform.bodies, 1)}
+    chains: list[list[int]] = [[]]
+    for k, body in enumerate(robot.platform.bodies, 1):
+        chains.append([k] + chains[index[body.parent]])
+    return chains
+
+
+def _joint_derivatives(robot: Robot, arr: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``∂b_i/∂q_j`` in the fixed frame, ``(N, n, n_joints, d)``."""
+    return _point_derivatives(robot, arr, b, robot.cable_bodies)
+
+
+def _point_derivatives(robot: Robot, arr: np.ndarray, b: np.ndarray, bodies: np.ndarray) -> np.ndarray:
+    """``∂b_i/∂q_j`` in the fixed frame of points ``b (N, n, d)`` fixed to the bodies
+    ``bodies (n,)`` (0 = platform), ``(N, n, n_joints, d)``."""
+    N, n, d = b.shape
+    out = np.zeros((N, n, robot.n_joints, d))
+    if robot.n_joints == 0:
+        return out
+    pos, rot = body_frames(robot, arr)
+    index = {"platform": 0} | {bd.name: k for k, bd in enumerate(robot.platform.bodies, 1)}
+    chains = _chains(robot)
+    for i, body in enumerate(bodies):
+        for k in chains[body]:
+            joint = robot.platform.bodies[k - 1].joint
+            parent = index[robot.platform.bodies[k - 1].parent]
+            if joint.kind == "prismatic":
+                axis = np.asarray(joint.axis, float)
+                out[:, i, k - 1] = rot[:, parent] @ (axis / np.linalg.norm(axis))
+            elif d == 2:
+                r = b[:, i] - pos[:, k]
+                out[:, i, k - 1] = np.stack([-r[:, 1], r[:, 0]], -1)
+            else:
+                axis = np.asarray(joint.axis, float)
+                e = rot[:, parent] @ (axis / np.linalg.norm(axis))
+                out[:, i, k - 1] = np.cross(e, b[:, i] - pos[:, k])
+    return out
+
+
+def actuator_jacobian(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
+    """Inverse-kinematics Jacobian ``J`` (Eq. 3.2.12): ``q̇ = J [v, ω, q̇_joints]``, shape
+    ``(N, n + n_joints, m + n_joints)`` with ``m`` the platform wrench size (9×7 for the
+    adjustable platform).  Raises :class:`~taut.errors.InfeasiblePoseError` at a
+    zero-length cable.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §3.2.2, Eqs. 3.2.6–3.2.12.
+       (docs/references.bib: lieskovsky2020)
+    """
+    arr, single = as_poses(robot, poses)
+    ik = inverse_kinematics(robot, arr)
+    n, m, nj = robot.n_cables, robot.wrench_dim, robot.n_joints
+    J = np.zeros((arr.shape[0], n + nj, m + nj))
+    J[:, :n, :m] = -np.swapaxes(ik.structure_matrix, 1, 2)
+    if nj:
+        db = _joint_derivatives(robot, arr, ik.anchors)
+        J[:, :n, m:] = -np.einsum("nid,nijd->nij", ik.directions, db)
+        J[:, n:, m:] = np.eye(nj)
+    return J[0] if single else J
+
+
+def jointed_structure_matrix(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
+    """``A = [−J_cablesᵀ, J_jointsᵀ]`` of shape ``(N, m + n_joints, n + n_joints)``:
+    ``A [τ; ζ] + Q_ext = 0`` (Eqs. 3.3.7–3.3.12, sign convention in the module docstring).
+    Its top-left ``m × n`` block is the platform structure matrix ``W``.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §3.3, Eqs. 3.3.7–3.3.11.
+       (docs/references.bib: lieskovsky2020)
+    """
+    J = actuator_jacobian(robot, poses)
+    n = robot.n_cables
+    A = np.swapaxes(J, -1, -2).copy()
+    A[..., :n] *= -1.0
+    return A
+
+
+def joint_forces(robot: Robot, poses: npt.ArrayLike, tensions: npt.ArrayLike) -> np.ndarray:
+    """Joint actuator forces ``ζ`` (Eq. 3.3.12) balancing the cable tensions ``τ`` and the
+    weights of the bodies (``platform.bodies[].mass``) along the joint coordinates,
+    ``(N, n_joints)``: ``ζ = −A_joints,cables τ − Q_gravity`` (positive ``ζ`` pushes the
+    child body along its joint axis; a revolute joint gets a torque about its axis).
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §3.3.2, Eq. 3.3.12.
+       (docs/references.bib: lieskovsky2020)
+    """
+    arr, single = as_poses(robot, poses)
+    A = jointed_structure_matrix(robot, arr)
+    tau = np.asarray(tensions, dtype=float)
+    if tau.shape not in ((robot.n_cables,), (arr.shape[0], robot.n_cables)):
+        raise TautError(
+            f"{robot.name}: tensions must have shape ({robot.n_cables},) or ({arr.shape[0]}, {robot.n_cables}), got {tau.shape}"
+        )
+    tau = np.broadcast_to(tau, (arr.shape[0], robot.n_cables))
+    m, n = robot.wrench_dim, robot.n_cables
+    zeta = -np.einsum("kjc,kc->kj", A[:, m:, :n], tau)
+    if np.any(robot.body_weights != 0):
+        zeta -= _gravity_forces(robot, arr)
+    return zeta[0] if single else zeta
+
+
+def _gravity_forces(robot: Robot, arr: np.ndarray) -> np.ndarray:
+    """The generalised forces of the bodies' weights along the joint coordinates,
+    ``Q_j = Σ_k F_k · ∂c_k/∂q_j`` over the bodies ``k`` beyond joint ``j`` (``c_k`` the centre
+    of mass in the fixed frame), ``(N, n_joints)``: the weight part of ``Q_ext`` in
+    ``A [τ; ζ] + Q_ext = 0``."""
+    pos, rot = body_frames(robot, arr)
+    coms = pos[:, 1:] + np.einsum("nkij,kj->nki", rot[:, 1:], robot.body_coms)
+    dc = _point_derivatives(robot, arr, coms, np.arange(1, robot.n_joints + 1))
+    return np.einsum("kd,nkjd->nj", robot.body_weights, dc)

@@ -1,0 +1,189 @@
+"""Swivelling exit pulleys: the cable length with the arc wound on the pulley, and the
+tangent point where the straight part of the cable begins.
+
+The cable comes from its winch along the swivel axis (unit vector ``k``) and runs onto the
+pulley at the fixed point ``D`` on that axis.  The pulley turns about the axis until its
+plane contains the platform anchor ``b``: with ``w`` the part of ``b − D`` normal to the axis,
+``d = ‖w‖`` the anchor's distance from the axis and ``e = w/d``, the pulley centre is
+``M = D + r e``.  In the pulley plane, with coordinates along ``e`` and ``k`` about ``M``, the
+cable runs onto the circle at ``(−r, 0)`` heading along ``k`` and wraps around it through the
+angle ``β`` to the tangent point ``C = M + r(−cos β e + sin β k)``, where its direction
+``sin β e + cos β k`` points at the anchor.  With the anchor at ``(x, y) = (d − r, k·(b − D))``,
+``ρ = ‖(x, y)‖`` and the free length ``l_f = √(ρ² − r²)``, tangency gives
+``β = atan2(x, y) + atan2(r, l_f)`` taken in ``[0, 2π)``, and the cable length is
+``l = r β + l_f`` (Pott 2018; WireX's ``doInverseKinematicsPulleyEx``).  The two-``arccos``
+form of the wrap angle found in the literature is this one for ``d ≥ r``; the ``atan2`` form
+also holds for anchors closer to the axis than the pulley centre and for wraps beyond a
+half turn.
+
+Because ``C`` is the point of tangency, ``∂l/∂b = (b − C)/l_f``: the structure matrix uses
+``u = (C − b)/l_f`` in place of the direction to the fixed exit point.
+
+The geometry does not exist when the anchor is on the swivel axis (``d = 0``: the pulley's
+swivel angle is undefined) or on or inside the pulley circle (``ρ ≤ r``: no tangent).
+
+**Swivel angle.**  :func:`swivel_angles` gives the angle ``γ`` the pulley has turned about its
+axis, as WireX measures it (``doInverseKinematicsPulleyEx``: ``γ = atan2(b_y, b_x)`` of the
+anchor in the winch frame): from the x axis of the winch frame
+:func:`taut.model._wirex.winch_frame` whose z axis is the unit swivel axis (the frame taut
+writes into WireX files; the identity for the axis ``(0, 0, 1)``).
+
+**Planar robots.**  On a planar robot the swivel axis lies in the robot's plane, and so do
+the exit point and every anchor: ``w``, ``e`` and the pulley plane spanned by ``e`` and ``k``
+are the robot's plane, and the spatial model above is a planar one exactly.  The cable comes
+along the fixed in-plane direction ``k``, wraps the pulley whose centre ``D + r e`` lies on
+the anchor's side of the axis line, and leaves tangentially towards the anchor; when the
+anchor crosses the axis line the pulley turns half a turn and faces it from the other side
+(``γ`` jumps between 0 and π).  The length is continuous there, its direction is not
+(``d = 0`` is singular, as in space).  This is not the planar winch pulley ``cables[].pulley``
+of the wrapping model, whose centre is the fixed exit point and whose arc is counted from a
+calibration angle.
+
+References
+----------
+.. [1] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+   Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.errors import InfeasiblePoseError, UnsupportedRobotError
+from taut.model._robot import Robot
+from taut.model._wirex import winch_frame
+
+#: Relative tolerance of the singular configurations: an anchor nearer the swivel axis, or
+#: a free length shorter, than this times ``r + ‖b − D‖`` has no swivel angle or no tangent.
+SINGULAR_TOL = 1e-9
+
+
+@dataclass(frozen=True)
+class SwivelPaths:
+    """The cables through swivelling pulleys at ``N`` poses, ``s`` such cables."""
+
+    lengths: np.ndarray  #: ``(N, s)`` cable lengths ``r β + l_f``
+    tangent_points: np.ndarray  #: ``(N, s, 3)`` points ``C`` where the cables leave the pulleys
+    wrap: np.ndarray  #: ``(N, s)`` wrap angles ``β`` [rad]
+    on_axis: np.ndarray  #: ``(N, s)`` anchors on a swivel axis (no swivel angle)
+    on_pulley: np.ndarray  #: ``(N, s)`` anchors on or inside the pulley circle (no tangent)
+
+
+def swivel_parameters(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(indices (s,), unit axes (s, d), radii (s,))`` of the robot's swivelling pulleys."""
+    idx = np.array(robot.swivel_cables, dtype=int)
+    swivels = [robot.cables[i].swivel for i in robot.swivel_cables]
+    axes = np.array([s.axis for s in swivels if s is not None], dtype=float).reshape(-1, robot.dimension)
+    axes /= np.linalg.norm(axes, axis=1, keepdims=True)
+    radii = np.array([s.radius for s in swivels if s is not None], dtype=float)
+    return idx, axes, radii
+
+
+def normal_fallback(k: np.ndarray) -> np.ndarray:
+    """A unit vector normal to each axis ``k (s, 3)``: the pulley plane of an anchor on the
+    axis, where every plane gives the same length."""
+    helper = np.where(np.abs(k[:, :1]) < 0.9, np.array([[1.0, 0.0, 0.0]]), np.array([[0.0, 1.0, 0.0]]))
+    n = np.cross(k, helper)
+    return n / np.linalg.norm(n, axis=1, keepdims=True)
+
+
+def in_space(x: np.ndarray) -> np.ndarray:
+    """Points or vectors ``(..., 2)`` of a robot's plane as ``(..., 3)`` with z = 0; ``(..., 3)`` as given."""
+    if x.shape[-1] == 3:
+        return x
+    return np.concatenate([x, np.zeros((*x.shape[:-1], 1))], axis=-1)
+
+
+def swivel_paths(points: np.ndarray, axes: np.ndarray, radii: np.ndarray, anchors: np.ndarray) -> SwivelPaths:
+    """Lengths and tangent points of cables that run onto pulleys at ``points (s, d)`` along
+    the unit ``axes (s, d)``, pulleys of ``radii (s,)``, to the anchors ``(N, s, d)``; ``d``
+    is 3, or 2 for a planar robot (axes in its plane; tangent points ``(N, s, 2)``).
+
+    Every output is finite; poses flagged ``on_axis`` or ``on_pulley`` have a length (at
+    ``d = 0`` it does not depend on the pulley plane) but no meaningful tangent point."""
+    d = points.shape[-1]
+    if d == 2:
+        # an anchor on the axis line: the pulley plane is still the robot's plane
+        fallback = np.column_stack([-axes[:, 1], axes[:, 0], np.zeros(len(axes))])
+        points, axes, anchors = in_space(points), in_space(axes), in_space(anchors)
+    else:
+        fallback = normal_fallback(axes)
+    v = anchors - points[None]
+    h = np.einsum("nsi,si->ns", v, axes)
+    w = v - h[..., None] * axes[None]
+    dist = np.linalg.norm(w, axis=-1)
+    scale = radii[None] + np.linalg.norm(v, axis=-1)
+    on_axis = dist <= SINGULAR_TOL * scale
+    e = np.where(on_axis[..., None], fallback[None], w / np.where(on_axis, 1.0, dist)[..., None])
+    x = dist - radii[None]
+    rho2 = x * x + h * h
+    free = np.sqrt(np.maximum(rho2 - radii[None] ** 2, 0.0))
+    on_pulley = free <= SINGULAR_TOL * scale
+    wrap = np.arctan2(x, h) + np.arctan2(radii[None], free)
+    # atan2(x, h) lies in (−π, π]: a negative sum is a wrap of more than half a turn
+    wrap = np.where(wrap < 0.0, wrap + 2.0 * np.pi, wrap)
+    centre = points[None] + radii[None, :, None] * e
+    tangent = centre + radii[None, :, None] * (-np.cos(wrap)[..., None] * e + np.sin(wrap)[..., None] * axes[None])
+    return SwivelPaths(radii[None] * wrap + free, tangent[..., :d], wrap, on_axis, on_pulley)
+
+
+def swivel_angles(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
+    """The swivel angle ``γ`` [rad] of each swivelling pulley at each pose: ``(N, s)`` for
+    ``N`` poses (``(s,)`` for one), a column per cable of ``robot.swivel_cables`` in that order.
+
+    ``γ = atan2(w·y, w·x)`` in ``[−π, π]``, where ``w`` is the anchor's offset from the exit
+    point ``b − D`` and ``x``, ``y`` the first two axes of the winch frame
+    :func:`taut.model._wirex.winch_frame` of the unit swivel axis: the rotation of the pulley
+    about its axis as WireX measures it (``CKinematics::doInverseKinematicsPulleyEx``,
+    ``γ = atan2(b_y, b_x)`` in the winch frame), for a file whose winch frames are those
+    taut writes.  On a planar robot ``γ`` is 0 or π: the side of the axis line the pulley
+    faces.
+
+    Raises
+    ------
+    UnsupportedRobotError
+        The robot has no swivelling pulleys.
+    InfeasiblePoseError
+        An anchor on a swivel axis (the pulley's angle is undefined there).
+
+    References
+    ----------
+    .. [1] A. Pott, WireX, 2006–2019, ``WireLib/Kinematics.cpp``
+       (``CKinematics::doInverseKinematicsPulleyEx``). (docs/references.bib: wirex)
+    .. [2] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+       Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+    """
+    from taut.kinematics._inverse import anchors_at
+    from taut.kinematics._pose import as_poses
+
+    if not robot.swivel_cables:
+        raise UnsupportedRobotError(f"{robot.name}: no cable leaves through a swivelling pulley (cables[].swivel)")
+    arr, single = as_poses(robot, poses)
+    idx, axes, radii = swivel_parameters(robot)
+    anchors = anchors_at(robot, arr)[:, idx]
+    on_axis = swivel_paths(robot.exits[idx], axes, radii, anchors).on_axis
+    if on_axis.any():
+        k, j = np.argwhere(on_axis)[0]
+        raise InfeasiblePoseError(
+            f"{robot.name}: at pose {k + 1} cable {idx[j] + 1} has its anchor on the axis of its swivelling "
+            "pulley (the pulley's swivel angle is undefined)"
+        )
+    frames = np.array([winch_frame(k) for k in in_space(axes)])
+    w = in_space(anchors - robot.exits[idx][None])
+    local = np.einsum("sji,nsj->nsi", frames, w)
+    gamma = np.arctan2(local[..., 1], local[..., 0])
+    return gamma[0] if single else gamma
+
+
+def refuse_swivels(robot: Robot, analysis: str) -> None:
+    """Raise :class:`UnsupportedRobotError` if ``robot`` has swivelling pulleys, which
+    ``analysis`` does not model (it takes each cable's exit as a fixed point)."""
+    if robot.swivel_cables:
+        numbers = ", ".join(str(i + 1) for i in robot.swivel_cables)
+        raise UnsupportedRobotError(
+            f"{robot.name}: {analysis} models cable exits as fixed points; cable(s) {numbers} leave "
+            "through swivelling pulleys (cables[].swivel), which it does not handle yet"
+        )

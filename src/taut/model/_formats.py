@@ -1,0 +1,133 @@
+"""The robot file formats taut reads and writes, chosen by the file's name.
+
+Adding a format is one entry in :data:`FORMATS`: a name pattern, a reader (or None), a writer
+(or None). The most specific pattern is listed first (``*_bodies.xml`` before any ``*.xml``).
+"""
+
+from __future__ import annotations
+
+import fnmatch
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from taut.errors import RobotFileError
+
+if TYPE_CHECKING:
+    from taut.model._robot import Robot
+
+#: ``reader(path, text, cable_set)``: the text of the file (read with the size and
+#: regular-file limits of :func:`taut.model._io.load_robot`) to a validated robot.
+Reader = Callable[[Path, str, "str | None"], "Robot"]
+#: ``writer(robot, path)``: writes the file (and any companion files the format needs).
+Writer = Callable[["Robot", Path], None]
+
+
+@dataclass(frozen=True)
+class Format:
+    """One file format: its name, the file-name patterns that select it, how to read and write it."""
+
+    name: str
+    patterns: tuple[str, ...]
+    reader: Reader | None
+    writer: Writer | None
+    #: whether ``--cable-set`` means something for this format
+    cable_sets: bool = False
+
+
+def _read_taut(path: Path, text: str, cable_set: str | None) -> Robot:
+    from taut.model._io import parse_robot
+
+    if cable_set is not None:
+        raise RobotFileError(f"{path}: --cable-set selects a cable set of a CASPR model; a taut file has one set")
+    return parse_robot(text, str(path), json_text=path.name.lower().endswith(".json"))
+
+
+def _write_taut(robot: Robot, path: Path) -> None:
+    from taut.model._io import save_robot
+
+    save_robot(robot, path)
+
+
+def _read_caspr(path: Path, text: str, cable_set: str | None) -> Robot:
+    from taut.model._caspr import parse_caspr
+
+    return parse_caspr(path, text, cable_set)
+
+
+def _write_caspr(robot: Robot, path: Path) -> None:
+    from taut.model._caspr import write_caspr
+
+    write_caspr(robot, path)
+
+
+def _read_wirex(path: Path, text: str, cable_set: str | None) -> Robot:
+    from taut.model._wirex import parse_wirex, wirex_robot
+
+    if cable_set is not None:
+        raise RobotFileError(f"{path}: --cable-set selects a cable set of a CASPR model; a WireX file has one set")
+    return wirex_robot(parse_wirex(text.encode("utf-8"), str(path)), str(path))
+
+
+def _write_wirex(robot: Robot, path: Path) -> None:
+    from taut.model._wirex import write_wirex
+
+    write_wirex(robot, path)
+
+
+def _write_mjcf(robot: Robot, path: Path) -> None:
+    from taut.model._mjcf import write_mjcf
+
+    write_mjcf(robot, path)
+
+
+#: Every format, most specific pattern first.
+FORMATS: tuple[Format, ...] = (
+    Format("caspr", ("*_bodies.xml",), _read_caspr, _write_caspr, cable_sets=True),
+    Format("mujoco", ("*.mjcf.xml",), None, _write_mjcf),
+    Format("wirex", ("*.wcrfx",), _read_wirex, _write_wirex),
+    Format("taut", ("*.yaml", "*.yml", "*.json"), _read_taut, _write_taut),
+)
+
+
+def supported(kind: str) -> str:
+    """The patterns of the formats that can be read (``kind="read"``) or written (``"write"``)."""
+    pats = [p for f in FORMATS if (f.reader if kind == "read" else f.writer) is not None for p in f.patterns]
+    return ", ".join(pats)
+
+
+def format_of(path: str | Path, kind: str = "read") -> Format:
+    """The format whose pattern matches the file name of ``path`` (case-insensitive), able to
+    read (``kind="read"``) or write (``kind="write"``) it.
+
+    Raises
+    ------
+    RobotFileError
+        If no format matches, naming the supported ones.
+    """
+    name = Path(path).name.lower()
+    for fmt in FORMATS:
+        able = fmt.reader if kind == "read" else fmt.writer
+        if able is not None and any(fnmatch.fnmatchcase(name, p) for p in fmt.patterns):
+            return fmt
+    verb = "read" if kind == "read" else "write"
+    raise RobotFileError(f"{path}: taut cannot {verb} this kind of file; supported: {supported(kind)}")
+
+
+def read_robot(path: Path, text: str, cable_set: str | None = None) -> Robot:
+    """Read the text of the file ``path`` in the format its name selects."""
+    reader = format_of(path, "read").reader
+    assert reader is not None, "format_of returns a format able to read"
+    return reader(path, text, cable_set)
+
+
+def write_robot(robot: Robot, path: str | Path) -> str:
+    """Write ``robot`` to ``path`` in the format its name selects; return the format's name."""
+    fmt = format_of(path, "write")
+    assert fmt.writer is not None, "format_of returns a format able to write"
+    try:
+        fmt.writer(robot, Path(path))
+    except OSError as exc:
+        raise RobotFileError(f"{path}: cannot write the file: {exc}") from None
+    return fmt.name

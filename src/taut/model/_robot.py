@@ -1,0 +1,595 @@
+"""The robot description: typed, validated data and nothing else (``docs/architecture.md`` §3).
+
+A :class:`Robot` holds what every analysis of taut needs: the cables (exit point ``a_i``,
+platform anchor ``r_i`` in the frame of the body it is attached to, tension and length
+bounds, axial stiffness), the platform (point mass or rigid, extra bodies joined by
+joints, the external wrench), collidable obstacles and the installation space of
+variable-structure robots, reference data from the sources and named trajectories.
+Validation errors are raised by pydantic and turned into :class:`taut.RobotFileError`
+by :mod:`taut.model._io`.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §4.1, §6.2. (docs/references.bib: rushton2022)
+.. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.2, §4.2.
+   (docs/references.bib: lieskovsky2020)
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from typing import Annotated, Any, Literal, Self, TypeVar
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError, field_validator, model_validator
+
+from taut.errors import RobotFileError
+from taut.geometry._rotation import CONVENTIONS
+
+FORMAT: Literal["taut/1"] = "taut/1"
+
+#: Gravitational acceleration [m/s²] along the last axis (−y planar, −z spatial) when a
+#: platform has a mass but no ``gravity``.
+STANDARD_GRAVITY = 9.81
+
+Number = Annotated[float, Field(allow_inf_nan=True)]
+Finite = Annotated[float, Field(allow_inf_nan=False)]
+#: Coordinates [m]: beyond a million kilometres squares overflow, and no robot is that large.
+Coordinate = Annotated[float, Field(allow_inf_nan=False, ge=-1e9, le=1e9)]
+
+Derived = TypeVar("Derived", np.ndarray, tuple[np.ndarray, np.ndarray])
+
+
+class _Strict(BaseModel):
+    """Base of the description's models: unknown keys are errors and instances are immutable
+    (frozen, with tuples for sequences), so that arrays derived from them cannot go stale."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    def model_copy(self, *, update: Mapping[str, Any] | None = None, deep: bool = False) -> Self:
+        """A copy of this instance; with ``update``, a new instance validated from this one's
+        fields and the update (pydantic's own copy would take the update unchecked and keep
+        the arrays derived from the old fields).
+
+        Raises
+        ------
+        RobotFileError
+            If the updated fields do not validate.
+        """
+        if not update:
+            return super().model_copy(deep=deep)
+        fields = {name: getattr(self, name) for name in self.model_fields_set}
+        try:
+            return type(self).model_validate(fields | dict(update))
+        except ValidationError as exc:
+            from taut.model._io import validation_message
+
+            raise RobotFileError(validation_message(f"{type(self).__name__}.model_copy", exc)) from None
+
+
+class _DerivedArrays(dict[str, Any]):
+    """Arrays computed from a robot's fields on first use.  They are not part of the robot's
+    value: two robots with equal fields are equal whatever each has computed so far."""
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, _DerivedArrays)
+
+    __hash__ = None  # a mutable cache, like dict
+
+
+def _inertia_matrix(values: tuple[float, ...]) -> np.ndarray:
+    """The symmetric tensor of ``Izz`` or of ``Ixx, Iyy, Izz, Ixy, Ixz, Iyz`` (MuJoCo's
+    ``fullinertia`` order)."""
+    if len(values) == 1:
+        return np.array([[values[0]]], dtype=float)
+    xx, yy, zz, xy, xz, yz = values
+    return np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]], dtype=float)
+
+
+def _check_inertia(values: tuple[float, ...], d: int, where: str) -> None:
+    """Raise ``ValueError`` unless ``values`` is an inertia of a ``d``-dimensional body: one
+    ``Izz`` (planar) or six numbers (spatial) of a positive semi-definite tensor."""
+    if len(values) != (1 if d == 2 else 6):
+        raise ValueError(f"{where}.inertia: expected {1 if d == 2 else 6} numbers, got {len(values)}")
+    tensor = _inertia_matrix(values)
+    # rounding leaves a singular tensor (a rod, a point) slightly negative
+    if np.linalg.eigvalsh(tensor).min() < -1e-12 * max(1.0, float(np.abs(tensor).max())):
+        raise ValueError(f"{where}.inertia: not a positive semi-definite inertia tensor, got {list(values)}")
+
+
+def _check_bounds(v: tuple[float, float], what: str) -> tuple[float, float]:
+    lo, hi = v
+    if math.isnan(lo) or math.isnan(hi):
+        raise ValueError(f"{what} bounds must be numbers, got {list(v)}")
+    if lo < 0:
+        raise ValueError(f"{what} lower bound must be >= 0, got {lo}")
+    if lo > hi:
+        raise ValueError(f"{what} bounds are inverted: lower {lo} > upper {hi}")
+    if math.isinf(lo):
+        raise ValueError(f"{what} lower bound must be finite, got {lo}")
+    return (float(lo), float(hi))
+
+
+class Pulley(_Strict):
+    """Exit pulley of a winch: the cable leaves it tangentially (Rushton 2022, §4.1)."""
+
+    radius: Finite = Field(ge=0)
+    direction: Literal["ccw", "cw"] = "ccw"
+
+
+class SwivelPulley(_Strict):
+    """A swivelling exit pulley (CASPR's ``base_rotating_pulley``, the pulley of WireX's and
+    Pott's kinematic model).
+
+    The cable comes from its winch along the swivel axis and runs onto the pulley at the
+    cable's ``exit`` point, which lies on that axis.  The pulley turns about the axis so that
+    its plane contains the platform anchor; its centre lies ``radius`` away from the axis, on
+    the anchor's side, the cable wraps around it and leaves it tangentially towards the
+    anchor.  The wrap angle and the tangent point follow from the anchor's position
+    (``taut.kinematics._swivel``).  On a planar robot the axis lies in the robot's plane (two
+    numbers), and so does the pulley: the cable comes along the axis, wraps the pulley on the
+    anchor's side of the axis line and leaves towards the anchor.
+
+    References
+    ----------
+    .. [1] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+       Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+    """
+
+    axis: tuple[Finite, ...] = Field(
+        min_length=2,
+        max_length=3,
+        description="direction of the swivel axis in the fixed frame (x, y, z; x, y in a planar robot's plane): "
+        "the way the cable runs, coming from "
+        "its winch, onto the pulley at the cable's exit point (CASPR's cable_entry_vector, the z axis of "
+        "WireX's winch frame); any non-zero length, it is normalised. Its sign fixes the side the cable "
+        "leaves on: the pulley swivels to face the anchor (its centre on the anchor's side of the axis) "
+        "and the cable, running along this direction, wraps around it until it heads for the anchor",
+    )
+    radius: Finite = Field(gt=0, le=1e9, description="pulley radius [m] (to the cable's centre line in the groove)")
+
+    @field_validator("axis")
+    @classmethod
+    def _axis(cls, v: tuple[float, ...]) -> tuple[float, ...]:
+        if not math.hypot(*v) > 0:
+            raise ValueError(f"swivel axis must be a non-zero vector, got {list(v)}")
+        return v
+
+
+class Cable(_Strict):
+    """Cable *i*: from the fixed exit point ``a_i`` to the anchor ``r_i`` on a platform body.
+
+    With ``swivel``, ``a_i`` is the point where the cable runs onto its swivelling pulley."""
+
+    name: str | None = None
+    exit: tuple[Coordinate, ...]
+    anchor: tuple[Coordinate, ...] | None = None
+    body: str | None = None
+    tension: tuple[Number, Number] = (0.0, math.inf)
+    length: tuple[Number, Number] | None = None
+    stiffness: Finite | None = Field(default=None, gt=0, description="axial stiffness EA [N]")
+    radius: Finite = Field(default=0.0, ge=0, description="cable radius for interference checks [m]")
+    pulley: Pulley | None = None
+    swivel: SwivelPulley | None = Field(
+        default=None,
+        description="swivelling exit pulley: the cable runs onto it at `exit` and leaves "
+        "it tangentially towards the anchor (not to be confused with `pulley`, the exit pulley of a planar "
+        "winch that collidable cables wrap around)",
+    )
+
+    @field_validator("tension")
+    @classmethod
+    def _tension(cls, v: tuple[float, float]) -> tuple[float, float]:
+        return _check_bounds(v, "tension")
+
+    @field_validator("length")
+    @classmethod
+    def _length(cls, v: tuple[float, float] | None) -> tuple[float, float] | None:
+        return None if v is None else _check_bounds(v, "length")
+
+
+class Joint(_Strict):
+    """A one-degree-of-freedom joint between a body and its parent.
+
+    ``prismatic``: the child frame is the parent frame translated by ``origin + q·axis``.
+    ``revolute``: the child frame is the parent frame translated by ``origin`` and rotated
+    by ``q`` about ``axis``.  ``limits`` bound the joint coordinate ``q``.
+    """
+
+    kind: Literal["prismatic", "revolute"]
+    axis: tuple[Finite, ...]
+    origin: tuple[Coordinate, ...] | None = None
+    limits: tuple[Finite, Finite]
+    name: str | None = None
+
+    @field_validator("axis")
+    @classmethod
+    def _axis(cls, v: tuple[float, ...]) -> tuple[float, ...]:
+        if not any(abs(x) > 0 for x in v):
+            raise ValueError("joint axis must be a non-zero vector")
+        return v
+
+    @field_validator("limits")
+    @classmethod
+    def _limits(cls, v: tuple[float, float]) -> tuple[float, float]:
+        if v[0] > v[1]:
+            raise ValueError(f"joint limits are inverted: lower {v[0]} > upper {v[1]}")
+        return v
+
+
+class Capsule(_Strict):
+    """A segment swept by a sphere: the collision model of Lieskovský 2020, §2.3.2."""
+
+    a: tuple[Coordinate, ...]
+    b: tuple[Coordinate, ...]
+    radius: Finite = Field(ge=0)
+    name: str | None = None
+
+
+class Body(_Strict):
+    """An extra platform body attached to ``parent`` (``platform`` or another body) by a joint.
+
+    With a ``mass``, its weight ``mass·g`` (``g`` the robot's gravity, see
+    :attr:`Robot.gravity`) acts at ``com``: the statics count it in the platform's external
+    wrench and in the joint forces."""
+
+    name: str
+    parent: str = "platform"
+    joint: Joint
+    capsules: tuple[Capsule, ...] = ()
+    mass: Finite | None = Field(default=None, gt=0, description="mass of the body [kg]")
+    com: tuple[Coordinate, ...] | None = Field(
+        default=None, description="centre of mass in the body frame [m] (the origin when not given)"
+    )
+    inertia: tuple[Finite, ...] | None = Field(
+        default=None,
+        description="rotational inertia about the centre of mass in the body frame [kg m²]: "
+        "Izz (planar), or Ixx, Iyy, Izz, Ixy, Ixz, Iyz (spatial)",
+    )
+
+
+class Shape(_Strict):
+    """Platform outline in its body frame: a polygon (planar) and/or capsules (collision)."""
+
+    polygon: tuple[tuple[Coordinate, ...], ...] | None = None
+    capsules: tuple[Capsule, ...] = ()
+
+
+class Platform(_Strict):
+    """The moving platform.  The external wrench is ``wrench`` (constant, fixed frame) plus
+    the weight ``mass·gravity``; both act at ``wrench_point`` (body frame), which is also
+    the centre of mass that ``inertia`` is taken about."""
+
+    kind: Literal["rigid", "point-mass"] = "rigid"
+    wrench: tuple[Finite, ...] | None = None
+    mass: Finite | None = Field(default=None, gt=0)
+    inertia: tuple[Finite, ...] | None = Field(
+        default=None,
+        description="rotational inertia about the centre of mass in the body frame [kg m²]: "
+        "Izz (planar), or Ixx, Iyy, Izz, Ixy, Ixz, Iyz (spatial)",
+    )
+    gravity: tuple[Finite, ...] | None = None
+    wrench_point: tuple[Coordinate, ...] | None = None
+    shape: Shape | None = None
+    bodies: tuple[Body, ...] = ()
+
+
+class Circle(_Strict):
+    kind: Literal["circle"]
+    center: tuple[Coordinate, ...]
+    radius: Finite = Field(ge=0)
+    name: str | None = None
+
+
+class Polygon(_Strict):
+    kind: Literal["polygon"]
+    vertices: tuple[tuple[Coordinate, ...], ...]
+    name: str | None = None
+
+    @field_validator("vertices")
+    @classmethod
+    def _vertices(cls, v: tuple[tuple[float, ...], ...]) -> tuple[tuple[float, ...], ...]:
+        if len(v) < 3:
+            raise ValueError(f"a polygon needs at least 3 vertices, got {len(v)}")
+        return v
+
+
+Obstacle = Annotated[Circle | Polygon, Field(discriminator="kind")]
+
+
+class Reference(_Strict):
+    """Reference data quoted from a source document (cable lengths of a DGP table, ...)."""
+
+    source: str | None = None
+    lengths: tuple[Finite, ...] | None = None
+    poses: dict[str, tuple[Finite, ...]] = {}
+    notes: str | None = None
+
+
+class Trajectory(_Strict):
+    """A named trajectory: waypoints (positions or full poses) joined by straight moves.
+
+    ``steps`` gives the number of samples of each move (pose sequences, Lieskovský 2020, §4.2);
+    ``speed`` [m/s] and ``dwell`` [s] time a waypoint sequence (Rushton 2022, §6.2).
+    """
+
+    description: str | None = None
+    waypoints: tuple[tuple[Finite, ...], ...]
+    steps: tuple[int, ...] | None = None
+    speed: Finite | None = Field(default=None, gt=0)
+    dwell: Finite = Field(default=0.0, ge=0)
+
+
+class Robot(_Strict):
+    """A cable-driven parallel robot (see ``docs/architecture.md`` §2–3 for conventions)."""
+
+    format: Literal["taut/1"] = FORMAT
+    name: str
+    description: str | None = None
+    source: str | None = None
+    dimension: Literal[2, 3]
+    orientation: str = "xyz-fixed"
+    platform: Platform = Platform()
+    cables: tuple[Cable, ...] = Field(min_length=1)
+    obstacles: tuple[Obstacle, ...] = ()
+    installation_space: tuple[tuple[Coordinate, ...], ...] | None = None
+    disallowed: tuple[tuple[tuple[Coordinate, ...], ...], ...] = ()
+    reference: Reference | None = None
+    trajectories: dict[str, Trajectory] = {}
+
+    _arrays: _DerivedArrays = PrivateAttr(default_factory=_DerivedArrays)
+
+    @field_validator("orientation")
+    @classmethod
+    def _orientation(cls, v: str) -> str:
+        if v not in CONVENTIONS:
+            raise ValueError(f"unknown orientation convention {v!r}; expected one of {', '.join(CONVENTIONS)}")
+        return v
+
+    @model_validator(mode="after")
+    def _consistent(self) -> Self:
+        d = self.dimension
+        pm = self.platform.kind == "point-mass"
+        bodies = {"platform"} | {b.name for b in self.platform.bodies}
+
+        def need(vec: tuple[float, ...] | None, n: int, where: str) -> None:
+            if vec is not None and len(vec) != n:
+                raise ValueError(f"{where}: expected {n} numbers, got {len(vec)}")
+
+        for i, c in enumerate(self.cables, 1):
+            need(c.exit, d, f"cables[{i}].exit")
+            need(c.anchor, d, f"cables[{i}].anchor")
+            if pm and c.anchor is not None and any(x != 0 for x in c.anchor):
+                raise ValueError(
+                    f"cables[{i}].anchor: a point-mass platform has all anchors at its origin, got {c.anchor}"
+                )
+            if c.swivel is not None and len(c.swivel.axis) != d:
+                axis = list(c.swivel.axis)
+                if d == 3:
+                    raise ValueError(f"cables[{i}].swivel.axis: expected 3 numbers, got {axis}")
+                out = " points out of the robot's plane" if axis[2] != 0 else " gives a third (z) number"
+                raise ValueError(
+                    f"cables[{i}].swivel.axis {axis}{out}: a planar robot's swivelling pulley turns about an "
+                    "axis in its plane (give x, y), so that the pulley and the cable stay in the plane"
+                )
+            if c.swivel is not None and c.pulley is not None:
+                raise ValueError(
+                    f"cables[{i}]: give either swivel (swivelling pulley) or pulley (planar winch), not both"
+                )
+            if c.body is not None and c.body not in bodies:
+                raise ValueError(f"cables[{i}].body: unknown body {c.body!r}; expected one of {sorted(bodies)}")
+        keys: dict[tuple[tuple[float, ...], tuple[float, ...], str], int] = {}
+        for i, c in enumerate(self.cables, 1):
+            key = (tuple(c.exit), tuple(c.anchor or [0.0] * d), c.body or "platform")
+            if key in keys:
+                raise ValueError(f"cables[{i}]: same exit point and anchor as cables[{keys[key]}] (a duplicated cable)")
+            keys[key] = i
+        p = self.platform
+        need(p.wrench, self.wrench_dim, "platform.wrench")
+        need(p.gravity, d, "platform.gravity")
+        need(p.wrench_point, d, "platform.wrench_point")
+        if p.inertia is not None:
+            if pm:
+                raise ValueError("platform.inertia: a point-mass platform has no rotational inertia")
+            if p.mass is None:
+                raise ValueError("platform.inertia is given without platform.mass")
+            _check_inertia(p.inertia, d, "platform")
+        if p.gravity is not None and p.mass is None and not any(b.mass is not None for b in p.bodies):
+            raise ValueError("platform.gravity is given without platform.mass (or a mass of platform.bodies)")
+        if pm and p.bodies:
+            raise ValueError("platform.bodies: a point-mass platform cannot carry jointed bodies")
+        seen = {"platform"}
+        for j, b in enumerate(p.bodies, 1):
+            if b.name in seen:
+                raise ValueError(f"platform.bodies[{j}].name: duplicate body name {b.name!r}")
+            if b.parent not in seen:
+                raise ValueError(f"platform.bodies[{j}].parent: unknown or later body {b.parent!r}")
+            seen.add(b.name)
+            need(b.joint.axis, d if d == 3 or b.joint.kind == "prismatic" else 1, f"platform.bodies[{j}].joint.axis")
+            need(b.joint.origin, d, f"platform.bodies[{j}].joint.origin")
+            need(b.com, d, f"platform.bodies[{j}].com")
+            if b.mass is None and (b.com is not None or b.inertia is not None):
+                raise ValueError(f"platform.bodies[{j}]: com or inertia is given without mass")
+            if b.inertia is not None:
+                _check_inertia(b.inertia, d, f"platform.bodies[{j}]")
+        for k, o in enumerate(self.obstacles, 1):
+            pts = [o.center] if isinstance(o, Circle) else o.vertices
+            for pt in pts:
+                need(pt, d, f"obstacles[{k}]")
+        for name, t in self.trajectories.items():
+            width = len(t.waypoints[0]) if t.waypoints else 0
+            if width not in (d, self.pose_size):
+                raise ValueError(
+                    f"trajectories.{name}.waypoints: expected {d} (position) or {self.pose_size} (pose) coordinates, got {width}"
+                )
+            for w in t.waypoints:
+                need(w, width, f"trajectories.{name}.waypoints")
+            if t.steps is not None and len(t.steps) != len(t.waypoints) - 1:
+                raise ValueError(
+                    f"trajectories.{name}.steps: expected one count per move ({len(t.waypoints) - 1}), got {len(t.steps)}"
+                )
+        if self.reference is not None and self.reference.lengths is not None:
+            need(self.reference.lengths, self.n_cables, "reference.lengths")
+            if any(x <= 0 for x in self.reference.lengths):
+                raise ValueError("reference.lengths: cable lengths must be positive")
+        for name, pose in self.reference.poses.items() if self.reference else []:
+            need(pose, self.pose_size, f"reference.poses.{name}")
+        return self
+
+    # ---- derived sizes -------------------------------------------------------------
+    @property
+    def n_cables(self) -> int:
+        return len(self.cables)
+
+    @property
+    def swivel_cables(self) -> tuple[int, ...]:
+        """0-based indices of the cables that leave the frame through a swivelling pulley."""
+        return tuple(i for i, c in enumerate(self.cables) if c.swivel is not None)
+
+    @property
+    def is_point_mass(self) -> bool:
+        return self.platform.kind == "point-mass"
+
+    @property
+    def n_joints(self) -> int:
+        return len(self.platform.bodies)
+
+    @property
+    def wrench_dim(self) -> int:
+        """Size of a platform wrench: 2 / 3 (planar point / rigid), 3 / 6 (spatial)."""
+        if self.dimension == 2:
+            return 2 if self.is_point_mass else 3
+        return 3 if self.is_point_mass else 6
+
+    @property
+    def pose_size(self) -> int:
+        """Platform pose coordinates (position, orientation) followed by joint coordinates."""
+        return self.wrench_dim + self.n_joints
+
+    @property
+    def pose_names(self) -> list[str]:
+        pos = ["x", "y", "z"][: self.dimension]
+        if self.is_point_mass:
+            ang: list[str] = []
+        elif self.dimension == 2:
+            ang = ["theta"]
+        elif self.orientation == "tilt-torsion":
+            ang = ["phi", "theta", "sigma"]
+        else:
+            ang = ["a", "b", "c"]
+        return pos + ang + [b.joint.name or b.name for b in self.platform.bodies]
+
+    # ---- arrays (computed from the fields once per robot, read-only) -----------------
+    def _derived(self, name: str, build: Callable[[], Derived]) -> Derived:
+        value: Derived | None = self._arrays.get(name)
+        if value is None:
+            value = build()
+            self._arrays[name] = value
+        # Again on every use: a deep copy or an unpickled robot holds writeable copies.
+        for array in value if isinstance(value, tuple) else (value,):
+            array.setflags(write=False)
+        return value
+
+    @property
+    def exits(self) -> np.ndarray:
+        """Exit points ``a_i``, shape ``(n, d)``."""
+        return self._derived("exits", lambda: np.array([c.exit for c in self.cables], dtype=float))
+
+    @property
+    def anchors(self) -> np.ndarray:
+        """Anchors ``r_i`` in the frame of their body, shape ``(n, d)``."""
+        zero = (0.0,) * self.dimension
+        return self._derived("anchors", lambda: np.array([c.anchor or zero for c in self.cables], dtype=float))
+
+    @property
+    def cable_bodies(self) -> np.ndarray:
+        """Index of each cable's body: 0 for the platform, ``k`` for ``platform.bodies[k-1]``."""
+        index = {"platform": 0} | {b.name: k for k, b in enumerate(self.platform.bodies, 1)}
+        return self._derived("cable_bodies", lambda: np.array([index[c.body or "platform"] for c in self.cables]))
+
+    @property
+    def tension_bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """Lower and upper tension bounds [N], each of shape ``(n,)``."""
+
+        def build() -> tuple[np.ndarray, np.ndarray]:
+            t = np.array([c.tension for c in self.cables], dtype=float)
+            return t[:, 0], t[:, 1]
+
+        return self._derived("tension_bounds", build)
+
+    @property
+    def length_bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """Lower and upper length bounds [m], each of shape ``(n,)`` (``0`` and ``inf`` when not given)."""
+
+        def build() -> tuple[np.ndarray, np.ndarray]:
+            t = np.array([c.length or (0.0, math.inf) for c in self.cables], dtype=float)
+            return t[:, 0], t[:, 1]
+
+        return self._derived("length_bounds", build)
+
+    @property
+    def joint_limits(self) -> np.ndarray:
+        """Limits of the joint coordinates, shape ``(n_joints, 2)``."""
+        return self._derived(
+            "joint_limits",
+            lambda: np.array([b.joint.limits for b in self.platform.bodies], dtype=float).reshape(-1, 2),
+        )
+
+    @property
+    def inertia(self) -> np.ndarray | None:
+        """The platform's inertia tensor about its centre of mass in the body frame, ``(1, 1)``
+        planar or ``(3, 3)`` spatial [kg m²]; None when the file gives none."""
+        values = self.platform.inertia
+        if values is None:
+            return None
+        return self._derived("inertia", lambda: _inertia_matrix(values))
+
+    @property
+    def weight(self) -> np.ndarray:
+        """The platform's weight, the force ``mass·g`` [N] in the fixed frame, shape ``(d,)``:
+        ``g`` is ``platform.gravity``, by default ``STANDARD_GRAVITY`` = 9.81 m/s² downwards
+        along the last axis (``(0, −9.81)`` planar, ``(0, 0, −9.81)`` spatial); zero without a
+        ``platform.mass``."""
+
+        def build() -> np.ndarray:
+            mass = self.platform.mass
+            return np.zeros(self.dimension) if mass is None else mass * self.gravity
+
+        return self._derived("weight", build)
+
+    @property
+    def gravity(self) -> np.ndarray:
+        """The gravitational acceleration [m/s²] on the platform and its bodies, shape ``(d,)``:
+        ``platform.gravity``, by default ``STANDARD_GRAVITY`` downwards along the last axis."""
+        g = self.platform.gravity
+        d = self.dimension
+        return self._derived(
+            "gravity", lambda: np.array(g, dtype=float) if g is not None else -STANDARD_GRAVITY * np.eye(d)[-1]
+        )
+
+    @property
+    def body_weights(self) -> np.ndarray:
+        """Weights ``mass·g`` [N] of ``platform.bodies`` (zero for a body without a mass),
+        shape ``(n_joints, d)``; each acts at the body's ``com``."""
+        masses = np.array([b.mass or 0.0 for b in self.platform.bodies], dtype=float)
+        return self._derived("body_weights", lambda: masses[:, None] * self.gravity[None, :])
+
+    @property
+    def body_coms(self) -> np.ndarray:
+        """Centres of mass of ``platform.bodies`` in their body frames, shape ``(n_joints, d)``."""
+        zero = (0.0,) * self.dimension
+        return self._derived(
+            "body_coms",
+            lambda: np.array([b.com or zero for b in self.platform.bodies], dtype=float).reshape(-1, self.dimension),
+        )
+
+    @property
+    def body_capsules(self) -> list[tuple[int, Capsule]]:
+        """``(body index, capsule)`` for the platform shape (body 0) and every extra body."""
+        out = [(0, c) for c in self.platform.shape.capsules] if self.platform.shape is not None else []
+        for k, body in enumerate(self.platform.bodies, 1):
+            out += [(k, c) for c in body.capsules]
+        return out

@@ -1,0 +1,160 @@
+"""A* over the charts of a growing atlas, and the path refined on the manifold.
+
+§4 of Bohigas et al. (2013): the atlas of :mod:`taut.planning._continuation` is
+expanded in A* order (Russell & Norvig, ref. [25]) from the chart at the start point:
+the open chart of least ``g + h`` is closed next, where ``g`` is the length of the
+chart-centre path found so far and ``h`` the straight-line distance to the goal in the
+same coordinates (admissible: no path on the manifold is shorter).  The search stops as
+soon as a chart's map reaches the goal point; when no open chart is left the connected
+component of the start has been covered without reaching the goal — *no path exists at
+the resolution of the chart radius*.
+
+The returned path is refined on the manifold: between consecutive chart centres ``x_a``
+and ``x_b`` it follows chart ``a`` up to the middle of the tangent segment and chart ``b``
+from there, each half mapped by Newton projection at a spacing of at most ``spacing``.
+
+References
+----------
+.. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
+"""
+
+from __future__ import annotations
+
+import heapq
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.errors import TautError
+from taut.planning._continuation import Atlas, ImplicitManifold
+
+__all__ = ["PathResult", "continuous", "plan_path", "refine_path"]
+
+
+@dataclass(frozen=True)
+class PathResult:
+    found: bool
+    path: np.ndarray  #: ``(N, n)`` points on the manifold, start to goal (empty if not found)
+    charts: int  #: charts in the atlas when the search stopped
+    expanded: int  #: charts closed by the search
+    exhausted: bool  #: every chart closed (``found=False`` is then a proof at this resolution)
+    length: float  #: length of ``path`` in the atlas metric
+    elapsed_s: float
+    atlas: Atlas
+
+
+def _segment(atlas: Atlas, i: int, u0: np.ndarray, u1: np.ndarray, spacing: float) -> list[np.ndarray]:
+    n = max(1, int(np.ceil(np.linalg.norm(u1 - u0) / spacing)))
+    pts = []
+    for t in np.linspace(0.0, 1.0, n + 1)[1:]:
+        y = atlas.chart_map(i, u0 + t * (u1 - u0))
+        if y is None:
+            raise TautError(f"path refinement: the map of chart {i} failed")
+        pts.append(y)
+    return pts
+
+
+def refine_path(atlas: Atlas, charts: list[int], goal: np.ndarray, spacing: float) -> np.ndarray:
+    """Manifold points along the chart sequence ``charts`` (starting at the start chart's
+    centre), ending at ``goal`` reached through the last chart."""
+    pts = [atlas.charts[charts[0]].centre]
+    for a, b in zip(charts[:-1], charts[1:]):
+        ub = atlas.coordinates(a, atlas.charts[b].centre)
+        pts += _segment(atlas, a, np.zeros_like(ub), 0.5 * ub, spacing)
+        pts += _segment(atlas, b, atlas.coordinates(b, pts[-1]), np.zeros_like(ub), spacing)
+    k = atlas.manifold.dim
+    pts += _segment(atlas, charts[-1], np.zeros(k), atlas.coordinates(charts[-1], goal), spacing)
+    pts[-1] = np.asarray(goal, float)
+    return continuous(atlas, np.array(pts))
+
+
+def continuous(atlas: Atlas, pts: np.ndarray) -> np.ndarray:
+    """The images of the points ``pts`` ``(N, n)`` (a path on the manifold modulo its
+    symmetry) that make it continuous: each point is the image nearest its predecessor."""
+    out = np.array(pts, float)
+    for m in range(1, len(out)):
+        out[m] = atlas.near(out[m], out[m - 1])[0][0]
+    return out
+
+
+def plan_path(
+    manifold: ImplicitManifold,
+    start: npt.ArrayLike,
+    goal: npt.ArrayLike,
+    radius: float,
+    epsilon: float = 0.1,
+    metric: np.ndarray | None = None,
+    max_charts: int = 20_000,
+    spacing: float | None = None,
+    progress: Callable[[int, int | None], None] | None = None,
+) -> PathResult:
+    """A path on ``manifold`` from ``start`` to ``goal`` (both on it), or proof that the
+    connected component of ``start`` does not reach ``goal`` at resolution ``radius``.
+
+    ``progress(expanded, None)`` is called as charts are expanded (how many the search
+    needs is not known in advance) and ``progress(expanded, expanded)`` when it stops.
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
+    """
+    t0 = time.perf_counter()
+    start, goal = np.asarray(start, float), np.asarray(goal, float)
+    if np.linalg.norm(manifold.function(goal)) > 1e-6 * (1 + np.linalg.norm(goal)):
+        raise TautError("the goal point is not on the manifold (|F(goal)| too large)")
+    atlas = Atlas(manifold, start, radius, epsilon, metric=metric)
+    h = lambda i: atlas.cost(atlas.charts[i].centre, goal)  # noqa: E731
+    g = {0: 0.0}
+    parent = {0: -1}
+    heap = [(h(0), 0)]
+    done: set[int] = set()
+    found_at = None
+    expanded = 0
+    while heap:
+        f, i = heapq.heappop(heap)
+        if i in done:
+            continue
+        if atlas.reaches(i, goal):
+            found_at = i
+            break
+        done.add(i)
+        if len(atlas.charts) >= max_charts:
+            break
+        atlas.grow(i)
+        expanded += 1
+        if progress is not None:
+            progress(expanded, None)
+        for j, c in atlas.charts[i].neighbours.items():
+            if j in done:
+                continue
+            gj = g[i] + c
+            if gj < g.get(j, np.inf):
+                g[j], parent[j] = gj, i
+                heapq.heappush(heap, (gj + h(j), j))
+    exhausted = found_at is None and not heap
+    if progress is not None:
+        progress(expanded, expanded)
+    if found_at is None:
+        return PathResult(
+            False,
+            np.empty((0, start.size)),
+            len(atlas.charts),
+            expanded,
+            exhausted,
+            float("nan"),
+            time.perf_counter() - t0,
+            atlas,
+        )
+    seq = [found_at]
+    while parent[seq[-1]] >= 0:
+        seq.append(parent[seq[-1]])
+    seq.reverse()
+    path = refine_path(atlas, seq, goal, spacing or radius / 4)
+    length = float(np.sum(np.linalg.norm(np.diff(path[:, atlas.metric], axis=0), axis=1)))
+    return PathResult(True, path, len(atlas.charts), expanded, False, length, time.perf_counter() - t0, atlas)

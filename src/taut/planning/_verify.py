@@ -1,0 +1,78 @@
+"""Independent check of a planned path (Bohigas et al. 2013, §5, Fig. 6).
+
+The poses of a path are interpolated linearly (``subdivide`` points per segment) and each
+is tested with the general wrench-feasibility test of :mod:`taut.statics._feasibility`
+(hyperplane shifting, not the equations of the planner): the structure matrix of
+:mod:`taut.kinematics._inverse` with moments moved to the platform point ``P_m`` of the
+nominal wrench, the ellipsoid ``{ŵ : (ŵ − ŵ_0)ᵀ E (ŵ − ŵ_0) ≤ 1}`` as an
+:class:`~taut.statics._wrench.EllipsoidWrenchSet` of shape ``E⁻¹``, the cables' tension
+bounds, and their length bounds.
+
+References
+----------
+.. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §5, Fig. 6. (docs/references.bib: bohigas2013)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.kinematics._inverse import inverse_kinematics
+from taut.kinematics._pose import platform_frame
+from taut.model._robot import Robot
+from taut.statics._feasibility import wrench_feasible
+from taut.statics._wrench import EllipsoidWrenchSet
+
+__all__ = ["PathCheck", "interpolate_poses", "verify_path"]
+
+
+@dataclass(frozen=True)
+class PathCheck:
+    poses: np.ndarray  #: ``(N, 6)`` interpolated poses
+    feasible: np.ndarray  #: ``(N,)`` wrench-feasible and lengths inside their bounds
+    lengths: np.ndarray  #: ``(N, 6)``
+
+    @property
+    def all_feasible(self) -> bool:
+        return bool(self.feasible.all())
+
+
+def interpolate_poses(poses: npt.ArrayLike, subdivide: int) -> np.ndarray:
+    """``subdivide`` evenly spaced poses on each segment of ``poses`` ``(M, 6)``, ends included."""
+    poses = np.asarray(poses, float)
+    t = np.linspace(0.0, 1.0, subdivide, endpoint=False)
+    inner = poses[:-1, None, :] + t[None, :, None] * np.diff(poses, axis=0)[:, None, :]
+    return np.vstack([inner.reshape(-1, poses.shape[1]), poses[-1:]])
+
+
+def verify_path(robot: Robot, poses: npt.ArrayLike, E: npt.ArrayLike | None = None, subdivide: int = 10) -> PathCheck:
+    """Check every interpolated pose of ``poses`` for wrench feasibility (module doc).
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §5, Fig. 6.
+       (docs/references.bib: bohigas2013)
+    """
+    E = 1e4 * np.eye(6) if E is None else np.asarray(E, float)
+    q = interpolate_poses(poses, subdivide)
+    ik = inverse_kinematics(robot, q)
+    W = ik.structure_matrix.copy()
+    pm = np.zeros(3) if robot.platform.wrench_point is None else np.asarray(robot.platform.wrench_point, float)
+    _, R = platform_frame(robot, q)
+    arm = R @ pm  # moments about P_m: M_m = M_p − (R p_m) × F
+    W[:, 3:, :] -= np.cross(arm[:, None, :], W[:, :3, :].transpose(0, 2, 1)).transpose(0, 2, 1)
+    ws = EllipsoidWrenchSet(np.asarray(robot.platform.wrench, float), np.linalg.inv(E))
+    tmin = np.array([c.tension[0] for c in robot.cables], float)
+    tmax = np.array([c.tension[1] for c in robot.cables], float)
+    ok = wrench_feasible(W, tmin, tmax, ws)
+    lo = np.array([c.length[0] if c.length else 0.0 for c in robot.cables])
+    hi = np.array([c.length[1] if c.length else np.inf for c in robot.cables])
+    ok &= np.all((ik.lengths > lo) & (ik.lengths < hi), axis=1)
+    return PathCheck(q, ok, ik.lengths)

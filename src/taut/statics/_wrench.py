@@ -1,0 +1,184 @@
+"""External wrenches and wrench sets.
+
+The external wrench on the platform (Rushton 2022, Eq. 2.11 writes
+equilibrium as ``W τ = −w_ext``) is the robot's constant wrench plus its weight, both
+applied at ``platform.wrench_point``, with moments taken about the platform reference
+point ``p``, plus the weights of the jointed bodies at their centres of mass (Lieskovský
+2020, Eqs. 3.3.7–3.3.10: the platform rows of the jointed equilibrium).
+
+A wrench set is described by its support function ``h(n) = max_{w ∈ set} n·w``; every
+convex set below (a single wrench, a box, a polytope given by its vertices, and the
+ellipsoid ``{c + L v : ‖v‖ ≤ 1}`` of Bohigas et al. (2013), §2) provides it, which is
+all the wrench-feasibility tests of :mod:`taut.statics._feasibility` need.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, Eq. 2.11. (docs/references.bib: rushton2022)
+.. [2] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §2. (docs/references.bib: bohigas2013)
+.. [3] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+   Bachelor thesis, Czech Technical University in Prague, 2020, §3.3, Eqs. 3.3.7–3.3.12.
+   (docs/references.bib: lieskovsky2020)
+"""
+
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+from dataclasses import dataclass, field
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.errors import TautError
+from taut.geometry._vectors import cross
+from taut.kinematics._pose import as_poses, body_frames, platform_frame
+from taut.model._robot import Robot
+
+
+def external_wrench(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
+    """``w_ext`` at each pose, ``(N, m)`` (``(m,)`` for one pose)."""
+    arr, single = as_poses(robot, poses)
+    d, m = robot.dimension, robot.wrench_dim
+    plat = robot.platform
+    wrench = np.zeros(m)
+    if plat.wrench is not None:
+        wrench += np.asarray(plat.wrench, float)
+    wrench[:d] += robot.weight
+    out = np.broadcast_to(wrench, (arr.shape[0], m)).copy()
+    if not robot.is_point_mass and plat.wrench_point is not None:
+        _, R = platform_frame(robot, arr)
+        arm = R @ np.asarray(plat.wrench_point, float)
+        moment = cross(arm, out[:, :d])
+        out[:, d:] += moment[:, None] if moment.ndim == 1 else moment
+    if np.any(robot.body_weights != 0):
+        out += _body_weights(robot, arr)
+    return out[0] if single else out
+
+
+def _body_weights(robot: Robot, poses: np.ndarray) -> np.ndarray:
+    """The weights of the jointed bodies as a wrench on the platform ``(N, m)``: with the
+    joints held by their actuators the bodies move with the platform, so each weight ``F_k``
+    adds its force and its moment ``(c_k − p) × F_k`` about the reference point ``p``, ``c_k``
+    the body's centre of mass in the fixed frame (the rows of ``A`` for the platform twist,
+    Lieskovský 2020, Eqs. 3.3.7–3.3.10)."""
+    pos, rot = body_frames(robot, poses)
+    d = robot.dimension
+    out = np.zeros((poses.shape[0], robot.wrench_dim))
+    for k, (force, com) in enumerate(zip(robot.body_weights, robot.body_coms), 1):
+        arm = pos[:, k] - pos[:, 0] + rot[:, k] @ com
+        out[:, :d] += force
+        moment = cross(arm, np.broadcast_to(force, arm.shape))
+        out[:, d:] += moment[:, None] if moment.ndim == 1 else moment
+    return out
+
+
+class WrenchSet(ABC):
+    """A convex set of wrenches, known through its support function."""
+
+    dim: int  #: number of wrench components
+
+    @abstractmethod
+    def support(self, normals: np.ndarray) -> np.ndarray:
+        """``h(n) = max_{w ∈ set} n·w`` for normals ``(..., dim)``."""
+
+
+def _vector(x: npt.ArrayLike, what: str) -> np.ndarray:
+    arr = np.asarray(x, dtype=float)
+    if arr.ndim != 1 or arr.size == 0 or not np.all(np.isfinite(arr)):
+        raise TautError(f"{what} must be a finite vector, got {x!r}")
+    return arr
+
+
+@dataclass(frozen=True)
+class SingleWrench(WrenchSet):
+    """One wrench ``w``."""
+
+    wrench: np.ndarray
+    dim: int = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "wrench", _vector(self.wrench, "wrench"))
+        object.__setattr__(self, "dim", self.wrench.size)
+
+    def support(self, normals: npt.ArrayLike) -> np.ndarray:
+        return np.asarray(normals) @ self.wrench
+
+
+@dataclass(frozen=True)
+class BoxWrenchSet(WrenchSet):
+    """The box ``lower ≤ w ≤ upper`` (componentwise)."""
+
+    lower: np.ndarray
+    upper: np.ndarray
+    dim: int = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        lo, hi = _vector(self.lower, "box lower corner"), _vector(self.upper, "box upper corner")
+        if lo.shape != hi.shape:
+            raise TautError(f"box corners have different sizes: {lo.size} and {hi.size}")
+        if np.any(lo > hi):
+            raise TautError(f"box wrench set is inverted: lower {lo.tolist()} > upper {hi.tolist()}")
+        object.__setattr__(self, "lower", lo)
+        object.__setattr__(self, "upper", hi)
+        object.__setattr__(self, "dim", lo.size)
+
+    @classmethod
+    def around(cls, center: npt.ArrayLike, half_widths: npt.ArrayLike) -> BoxWrenchSet:
+        c, r = _vector(center, "box center"), np.abs(_vector(half_widths, "box half-widths"))
+        return cls(c - r, c + r)
+
+    def support(self, normals: npt.ArrayLike) -> np.ndarray:
+        n = np.asarray(normals)
+        c, r = (self.lower + self.upper) / 2, (self.upper - self.lower) / 2
+        return n @ c + np.abs(n) @ r
+
+    def vertices(self) -> np.ndarray:
+        """The ``2^dim`` corners."""
+        bits = (np.arange(2**self.dim)[:, None] >> np.arange(self.dim)) & 1
+        return np.where(bits, self.upper, self.lower)
+
+
+@dataclass(frozen=True)
+class PolytopeWrenchSet(WrenchSet):
+    """The convex hull of ``vertices`` ``(k, dim)``."""
+
+    vertices: np.ndarray
+    dim: int = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        v = np.asarray(self.vertices, dtype=float)
+        if v.ndim != 2 or v.shape[0] == 0 or not np.all(np.isfinite(v)):
+            raise TautError("a polytope wrench set needs a (k, dim) array of finite vertices")
+        object.__setattr__(self, "vertices", v)
+        object.__setattr__(self, "dim", v.shape[1])
+
+    def support(self, normals: npt.ArrayLike) -> np.ndarray:
+        return (np.asarray(normals) @ self.vertices.T).max(axis=-1)
+
+
+@dataclass(frozen=True)
+class EllipsoidWrenchSet(WrenchSet):
+    """The ellipsoid ``{c + L v : ‖v‖ ≤ 1}`` with ``shape = L Lᵀ`` positive semi-definite
+    (Bohigas et al. 2013, §2: the wrench uncertainty ``(w − w0)ᵀ E⁻¹ (w − w0) ≤ 1``, ``E = shape``)."""
+
+    center_wrench: np.ndarray
+    shape: np.ndarray
+    dim: int = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        c = _vector(self.center_wrench, "ellipsoid center")
+        S = np.asarray(self.shape, dtype=float)
+        if S.shape != (c.size, c.size) or not np.all(np.isfinite(S)):
+            raise TautError(f"ellipsoid shape must be a finite {c.size}x{c.size} matrix")
+        if not np.allclose(S, S.T) or np.linalg.eigvalsh(S).min() < -1e-12 * max(1.0, np.abs(S).max()):
+            raise TautError("ellipsoid shape must be symmetric positive semi-definite")
+        object.__setattr__(self, "center_wrench", c)
+        object.__setattr__(self, "shape", S)
+        object.__setattr__(self, "dim", c.size)
+
+    def support(self, normals: npt.ArrayLike) -> np.ndarray:
+        n = np.asarray(normals)
+        q = np.einsum("...i,ij,...j->...", n, self.shape, n)
+        return n @ self.center_wrench + np.sqrt(np.maximum(q, 0.0))

@@ -1,0 +1,287 @@
+"""Grid evaluation of a workspace condition (Rushton 2022, §2.1.4): the
+poses of a :class:`~taut.workspace._grid.PoseGrid` are split into chunks of flat indices,
+each chunk's poses are generated where it is evaluated (in one vectorised call of the
+condition), and the chunks are mapped over an executor of :mod:`taut.parallel` (serial,
+local processes or dask.distributed — the verdicts are identical whatever the executor
+and the chunk size).  Only the verdicts are kept, one byte per pose, so that the memory
+does not grow with the pose size: a grid of 64 M six-coordinate poses needs its 64 MB of
+verdicts, where the array of its poses would need 2.9 GiB.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.errors import GridSizeError, PoseError, TautError
+from taut.kinematics._pose import as_poses
+from taut.model._robot import Robot
+from taut.parallel import Executor, as_executor
+from taut.statics._wrench import WrenchSet
+from taut.workspace._conditions import WorkspaceCondition, make_condition
+from taut.workspace._grid import AxisSpec, PoseGrid, format_bytes, make_grid
+
+__all__ = ["DEFAULT_CHUNK", "MAX_POSE_ARRAY_BYTES", "WorkspaceResult", "evaluate_workspace"]
+
+#: Poses per chunk: large enough to amortise the per-call overhead, small enough to bound memory.
+DEFAULT_CHUNK = 16384
+#: Poses handed to the executor per call of its ``map``: the verdicts of one such batch are
+#: the only per-chunk results held at once before they are copied into the result.
+BATCH_POSES = 1 << 22
+#: Largest ``(N, pose_size)`` float array that :attr:`WorkspaceResult.poses` materialises.
+MAX_POSE_ARRAY_BYTES = 1 << 30
+#: Format tag of the files written by :meth:`WorkspaceResult.save`.
+FILE_FORMAT = "taut-workspace/2"
+
+
+@dataclass(frozen=True)
+class WorkspaceResult:
+    """Verdicts of a workspace condition over a grid of poses.
+
+    Only the verdicts ``inside`` (one byte per pose) are stored: the poses of a grid are
+    recomputed from ``grid`` on demand (:attr:`poses`, :meth:`poses_at`), so that a grid of
+    hundreds of millions of poses fits in memory.  ``explicit_poses`` holds the poses given
+    to :func:`evaluate_workspace` as an array (then ``grid`` is ``None``)."""
+
+    robot_name: str
+    condition: str
+    inside: np.ndarray  #: ``(N,)`` bool
+    axes: tuple[np.ndarray, ...]  #: grid coordinates per gridded axis (position axes first)
+    grid_shape: tuple[int, ...]  #: ``inside.reshape(grid_shape)`` in C order
+    elapsed_s: float
+    axis_names: tuple[str, ...] = field(default=())
+    grid: PoseGrid | None = None  #: the grid the poses come from
+    explicit_poses: np.ndarray | None = None  #: ``(N, pose_size)`` poses given as an array
+
+    @property
+    def size(self) -> int:
+        """Number of poses evaluated."""
+        return int(self.inside.size)
+
+    def poses_at(self, flat: npt.ArrayLike) -> np.ndarray:
+        """The poses ``(K, pose_size)`` of the flat indices ``flat`` (C order of the grid)."""
+        idx = np.asarray(flat, dtype=np.int64).ravel()
+        if idx.size and (idx.min() < 0 or idx.max() >= self.size):
+            raise TautError(f"pose indices must lie in [0, {self.size}), got {idx.min()} … {idx.max()}")
+        if self.explicit_poses is not None:
+            return self.explicit_poses[idx]
+        if self.grid is None:
+            raise TautError("this workspace result holds no poses (neither a grid nor an array of poses)")
+        return self.grid.poses_at(idx)
+
+    @property
+    def poses(self) -> np.ndarray:
+        """All poses ``(N, pose_size)``, computed from the grid at each access.  Raises
+        :class:`~taut.errors.GridSizeError` when the array would exceed
+        :data:`MAX_POSE_ARRAY_BYTES` (use :meth:`poses_at` on a selection instead)."""
+        if self.explicit_poses is not None:
+            return self.explicit_poses
+        width = self.grid.pose_size if self.grid is not None else 0
+        need = self.size * width * 8
+        if need > MAX_POSE_ARRAY_BYTES:
+            raise GridSizeError(
+                f"the {self.size:,} poses of this workspace would need {format_bytes(need)} as one array "
+                f"(at most {format_bytes(MAX_POSE_ARRAY_BYTES)}); select some with poses_at(indices)"
+            )
+        return self.poses_at(np.arange(self.size, dtype=np.int64))
+
+    @property
+    def count(self) -> int:
+        """Number of poses inside."""
+        return int(np.count_nonzero(self.inside))
+
+    @property
+    def fraction(self) -> float:
+        """Fraction of the poses inside (0 for an empty grid)."""
+        return self.count / self.inside.size if self.inside.size else 0.0
+
+    @property
+    def measure(self) -> float | None:
+        """Area (planar) or volume (spatial) of the workspace estimated as the count times
+        the grid cell (product of the spacings of the axes with more than one point; for
+        a full pose grid that includes the angular axes).  ``None`` without a grid."""
+        if not self.axes:
+            return None
+        cell = 1.0
+        for a in self.axes:
+            if len(a) > 1:
+                cell *= abs(float(a[-1] - a[0])) / (len(a) - 1)
+        return self.count * cell
+
+    def summary(self) -> dict[str, object]:
+        """JSON-ready summary: poses, inside, fraction, elapsed_s, measure, grid_shape."""
+        return {
+            "poses": int(self.inside.size),
+            "inside": self.count,
+            "fraction": self.fraction,
+            "elapsed_s": float(self.elapsed_s),
+            "measure": self.measure,
+            "grid_shape": [int(s) for s in self.grid_shape],
+        }
+
+    def save(self, path: str | os.PathLike[str]) -> None:
+        """Write an ``.npz`` with ``inside``, ``axis_0 …``, ``metadata`` (JSON) and the poses'
+        source: for a grid its definition (``grid_index``, ``grid_fixed``; the poses are
+        recomputed on :meth:`load`), else the array ``poses``.  The file stays the size of
+        the verdicts (compressed), whatever the grid's size."""
+        meta = {
+            "robot": self.robot_name,
+            "condition": self.condition,
+            "grid_shape": [int(s) for s in self.grid_shape],
+            "axis_names": list(self.axis_names),
+            "elapsed_s": float(self.elapsed_s),
+            "format": FILE_FORMAT,
+        }
+        arrays = {f"axis_{i}": np.asarray(a) for i, a in enumerate(self.axes)}
+        if self.grid is not None:
+            arrays["grid_index"] = np.asarray(self.grid.index, dtype=np.int64)
+            arrays["grid_fixed"] = np.asarray(self.grid.fixed, dtype=float)
+        elif self.explicit_poses is not None:
+            arrays["poses"] = self.explicit_poses
+        arrays["metadata"] = np.array(json.dumps(meta))
+        # numpy's stub checks **kwds against its keyword allow_pickle: bool
+        np.savez_compressed(path, inside=self.inside, **arrays)  # type: ignore[arg-type]
+
+    @classmethod
+    def load(cls, path: str | os.PathLike[str]) -> WorkspaceResult:
+        """Read a file written by :meth:`save` (also the first format, which stored ``poses``)."""
+        try:
+            with np.load(path, allow_pickle=False) as f:
+                meta = json.loads(str(f["metadata"]))
+                axes = tuple(f[f"axis_{i}"] for i in range(len(meta["grid_shape"])) if f"axis_{i}" in f.files)
+                names = tuple(meta.get("axis_names", ()))
+                grid = None
+                if "grid_index" in f.files:
+                    index = tuple(int(i) for i in f["grid_index"])
+                    grid = PoseGrid(axes, index, f["grid_fixed"], names)
+                return cls(
+                    meta["robot"],
+                    meta["condition"],
+                    f["inside"].astype(bool),
+                    axes,
+                    tuple(meta["grid_shape"]),
+                    meta["elapsed_s"],
+                    names,
+                    grid,
+                    f["poses"] if "poses" in f.files else None,
+                )
+        except (OSError, KeyError, ValueError) as exc:
+            raise TautError(f"{path}: not a taut workspace file ({exc})") from None
+
+
+#: One chunk of work: the robot, the condition, and the poses — an array, or a grid and a
+#: range of its flat indices (computed in the worker, so that no chunk of poses travels).
+Chunk = tuple[Robot, WorkspaceCondition, np.ndarray | PoseGrid, int, int]
+
+
+def _evaluate_chunk(item: Chunk) -> np.ndarray:
+    """Worker function (module level, so that it pickles): one chunk of poses."""
+    robot, condition, source, start, stop = item
+    poses = source.poses(start, stop) if isinstance(source, PoseGrid) else source[start:stop]
+    return np.asarray(condition.evaluate(robot, poses), dtype=bool)
+
+
+def _check_grid(robot: Robot, grid: PoseGrid) -> None:
+    """Every pose of ``grid`` is a valid pose of ``robot``: the checks of
+    :func:`~taut.kinematics._pose.as_poses` are bounds per coordinate, so the grid's two
+    corners stand for all its poses."""
+    try:
+        as_poses(robot, grid.corners())
+    except PoseError as exc:
+        raise PoseError(f"{exc} (pose 1 is the grid's lowest corner, pose 2 its highest)") from None
+
+
+def evaluate_workspace(
+    robot: Robot,
+    condition: str | WorkspaceCondition,
+    *,
+    grid: PoseGrid | Sequence[AxisSpec] | np.ndarray | None = None,
+    poses: npt.ArrayLike | None = None,
+    resolution: int | None = None,
+    orientation: npt.ArrayLike | None = None,
+    wrench_set: WrenchSet | None = None,
+    executor: object = None,
+    progress: Callable[[int, int | None], None] | None = None,
+    chunk: int = DEFAULT_CHUNK,
+) -> WorkspaceResult:
+    """Evaluate a workspace condition over a grid of poses.
+
+    ``condition``: a name of :data:`~taut.workspace._conditions.CONDITIONS`
+    (``wrench-closure``, ``wrench-feasible``, ``static``) or a condition instance;
+    ``wrench_set`` is passed to it (``wrench-feasible``: the set around the external
+    wrench).  The poses are ``grid`` (see :func:`~taut.workspace._grid.make_grid`: ``None``
+    for the default position grid of ``resolution`` points per axis at ``orientation``, a
+    :class:`PoseGrid`, or per-axis ``(lo, hi, n)``/coordinates), or an explicit array
+    ``poses (N, pose_size)`` (then ``axes == ()`` and ``grid_shape == (N,)``).
+
+    The poses of a grid are generated chunk by chunk (``chunk`` poses, from their flat
+    indices) where the chunk is evaluated, and only the verdicts are kept: memory is one
+    byte per pose plus a few chunks' work.  Chunks are mapped over ``executor`` (an
+    executor of :func:`taut.parallel.get_executor` or a ``distributed.Client``; default
+    serial) and the verdicts do not depend on ``chunk`` or the executor.
+    ``progress(done, total)`` is called with pose counts as chunks complete.
+
+    Raises :class:`~taut.errors.GridSizeError` for a grid of more than
+    :data:`~taut.workspace._grid.MAX_GRID_POSES` poses, before any work."""
+    cond = make_condition(condition, wrench_set=wrench_set)
+    runner: Executor = as_executor(executor)
+    if isinstance(chunk, bool) or not isinstance(chunk, (int, np.integer)) or chunk < 1:
+        raise TautError(f"chunk must be a positive integer, got {chunk!r}")
+    step = int(chunk)
+    g: PoseGrid | None = None
+    arr: np.ndarray | None = None
+    source: np.ndarray | PoseGrid
+    if poses is not None:
+        if grid is not None or resolution is not None or orientation is not None:
+            raise TautError("give either explicit poses or a grid (resolution, orientation), not both")
+        arr, _ = as_poses(robot, poses)
+        source = arr
+        axes: tuple[np.ndarray, ...] = ()
+        shape: tuple[int, ...] = (arr.shape[0],)
+        names: tuple[str, ...] = ()
+        N = int(arr.shape[0])
+    else:
+        g = make_grid(robot, grid, resolution, orientation)
+        _check_grid(robot, g)
+        source = g
+        axes, shape, names = tuple(np.asarray(a) for a in g.axes), g.shape, g.names
+        N = g.size
+    inside = np.zeros(N, dtype=bool)
+    done = 0
+    t0 = time.perf_counter()
+    if progress is not None:
+        progress(0, N)
+    batch = step * max(1, BATCH_POSES // step)
+    for b0 in range(0, N, batch):
+        starts = range(b0, min(N, b0 + batch), step)
+        # a grid travels with its index range; an array only as the chunk's slice
+        items: list[Chunk] = [
+            (robot, cond, source, s, min(N, s + step))
+            if isinstance(source, PoseGrid)
+            else (robot, cond, source[s : s + step], 0, min(N, s + step) - s)
+            for s in starts
+        ]
+        sizes = [it[4] - it[3] for it in items]
+
+        def callback(i: int, sizes: list[int] = sizes) -> None:
+            nonlocal done
+            done += sizes[i]
+            if progress is not None:
+                progress(done, N)
+
+        results = runner.map(_evaluate_chunk, items, callback=callback)
+        for s, verdicts in zip(starts, results):
+            inside[s : s + len(verdicts)] = verdicts
+    elapsed = time.perf_counter() - t0
+    return WorkspaceResult(robot.name, cond.name, inside, axes, shape, elapsed, names, g, arr)

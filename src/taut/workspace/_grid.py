@@ -1,0 +1,267 @@
+"""Pose grids for workspace evaluation by discretisation (Rushton (2022)
+§2.1.4: "discretizing the installation space into a grid of end effector poses and
+testing each one").
+
+A :class:`PoseGrid` is a Cartesian product of 1-D axes over some pose coordinates, the
+other coordinates being held fixed: either a *position grid* (x, y[, z] gridded, the
+orientation and joint coordinates fixed — a constant-orientation workspace) or a *full
+pose grid* (every pose coordinate gridded).  Poses are listed in C order, so that
+``inside.reshape(grid.shape)`` indexes ``[ix, iy(, iz)]``.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.errors import GridSizeError, TautError
+from taut.model._robot import Robot
+
+__all__ = [
+    "MAX_GRID_POSES",
+    "PoseGrid",
+    "check_grid_size",
+    "default_bounds",
+    "default_orientation",
+    "format_bytes",
+    "make_grid",
+    "pose_grid",
+    "position_grid",
+]
+
+#: One axis of a grid: ``(lo, hi, n)`` (``n`` evenly spaced points) or explicit coordinates.
+AxisSpec = tuple[float, float, int] | npt.ArrayLike
+
+#: Default points per axis: planar (2-D) and spatial (3-D) position grids.
+DEFAULT_RESOLUTION = {2: 101, 3: 41}
+#: Most poses a grid may have: the verdicts take one byte per pose (1 GiB at the limit).
+MAX_GRID_POSES = 2**30
+#: The default bounds are the box of the exit points shrunk by this fraction of its size per side.
+DEFAULT_SHRINK = 0.02
+
+
+def format_bytes(n: int) -> str:
+    """``n`` bytes in binary units (``"3 GiB"``), for messages."""
+    size = float(n)
+    units = ("B", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB", "ZiB", "YiB")
+    for unit in units[:-1]:
+        if size < 1024:
+            return f"{size:.3g} {unit}"
+        size /= 1024
+    return f"{size:.3g} {units[-1]}"
+
+
+def check_grid_size(counts: Sequence[int], pose_size: int) -> int:
+    """The number of poses of a grid of ``counts`` points per axis; a
+    :class:`~taut.errors.GridSizeError` above :data:`MAX_GRID_POSES`, before anything
+    is allocated (the verdicts take one byte per pose)."""
+    n = math.prod(int(c) for c in counts)
+    if n > MAX_GRID_POSES:
+        shape = " × ".join(f"{int(c):,}" for c in counts)
+        raise GridSizeError(
+            f"the grid has {n:,} poses ({shape}): their verdicts alone would need {format_bytes(n)} "
+            f"(the poses {format_bytes(n * pose_size * 8)}); at most {MAX_GRID_POSES:,} poses are evaluated, "
+            "give fewer points per axis"
+        )
+    return n
+
+
+@dataclass(frozen=True)
+class PoseGrid:
+    """Axes ``axes[i]`` over the pose coordinates ``index[i]``; every other coordinate
+    takes its value in ``fixed`` (a full pose of which the gridded entries are ignored).
+
+    The poses are never stored: :meth:`poses_at` computes any of them from its flat index
+    (C order), so that a grid of any size is evaluated chunk by chunk in bounded memory."""
+
+    axes: tuple[np.ndarray, ...]
+    index: tuple[int, ...]
+    fixed: np.ndarray
+    names: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        if len(self.axes) != len(self.index):
+            raise TautError(
+                f"a pose grid needs one pose coordinate per axis, got {len(self.axes)} axes, index {self.index}"
+            )
+        check_grid_size(self.shape, np.size(self.fixed))
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        return tuple(len(a) for a in self.axes)
+
+    @property
+    def size(self) -> int:
+        return math.prod(self.shape)
+
+    @property
+    def pose_size(self) -> int:
+        return int(np.size(self.fixed))
+
+    def poses_at(self, flat: npt.ArrayLike) -> np.ndarray:
+        """The poses of flat (C-order) indices ``flat`` ``(K,)``, ``(K, pose_size)``."""
+        flat = np.asarray(flat, dtype=np.int64).ravel()
+        out = np.repeat(np.asarray(self.fixed, dtype=float)[None, :], flat.size, axis=0)
+        for col, axis, idx in zip(self.index, self.axes, np.unravel_index(flat, self.shape)):
+            out[:, col] = axis[idx]
+        return out
+
+    def poses(self, start: int = 0, stop: int | None = None) -> np.ndarray:
+        """Poses ``start:stop`` of the grid (all by default), ``(K, pose_size)``, C order."""
+        stop = self.size if stop is None else min(stop, self.size)
+        return self.poses_at(np.arange(start, stop, dtype=np.int64))
+
+    def corners(self) -> np.ndarray:
+        """``(2, pose_size)``: the fixed pose with every gridded coordinate at its axis' least
+        (row 0) and greatest (row 1) value — the box every pose of the grid lies in."""
+        out = np.repeat(np.asarray(self.fixed, dtype=float)[None, :], 2, axis=0)
+        for col, axis in zip(self.index, self.axes):
+            out[:, col] = (np.min(axis), np.max(axis)) if len(axis) else (np.nan, np.nan)
+        return out
+
+
+def default_bounds(robot: Robot, shrink: float = DEFAULT_SHRINK) -> np.ndarray:
+    """``(d, 2)`` bounds: the bounding box of the exit points, shrunk by ``shrink`` of its
+    size on each side.  An axis along which all exits are level (a suspended robot with
+    coplanar exits) spans ``[c − E, c + E]``, ``E`` half the largest extent."""
+    lo, hi = robot.exits.min(axis=0), robot.exits.max(axis=0)
+    ext = hi - lo
+    big = float(ext.max()) if ext.size else 0.0
+    if big == 0.0:
+        big = 2.0
+    flat = ext <= 1e-9 * big
+    c = (lo + hi) / 2
+    lo = np.where(flat, c - big / 2, lo + shrink * ext)
+    hi = np.where(flat, c + big / 2, hi - shrink * ext)
+    return np.stack([lo, hi], axis=1)
+
+
+def default_orientation(robot: Robot) -> np.ndarray:
+    """Zero orientation and joints at mid-range: the pose coordinates after the position."""
+    tail = np.zeros(robot.pose_size - robot.dimension)
+    if robot.n_joints:
+        tail[robot.wrench_dim - robot.dimension :] = robot.joint_limits.mean(axis=1)
+    return tail
+
+
+def _orientation(robot: Robot, orientation: npt.ArrayLike | None) -> np.ndarray:
+    k = robot.pose_size - robot.dimension
+    if orientation is None:
+        return default_orientation(robot)
+    o = np.atleast_1d(np.asarray(orientation, dtype=float))
+    if o.ndim != 1 or o.size != k:
+        names = ", ".join(robot.pose_names[robot.dimension :]) or "none"
+        raise TautError(f"{robot.name}: the fixed orientation has {k} coordinates ({names}), got {o.size}")
+    if not np.all(np.isfinite(o)):
+        raise TautError(f"{robot.name}: the fixed orientation must be finite, got {o.tolist()}")
+    return o
+
+
+def _axis_count(spec: AxisSpec, what: str) -> int:
+    """The number of points of an axis spec, validated without building the axis."""
+    if isinstance(spec, tuple) and len(spec) == 3:
+        lo, hi, n = spec
+        if isinstance(n, bool) or not isinstance(n, numbers.Real) or not np.isfinite(float(n)):
+            raise TautError(f"{what}: the number of points must be a positive integer, got {n!r}")
+        if float(n) != int(float(n)) or int(float(n)) < 1:
+            raise TautError(f"{what}: the number of points must be a positive integer, got {n!r}")
+        if not (np.isfinite(lo) and np.isfinite(hi)):
+            raise TautError(f"{what}: the bounds must be finite, got {lo!r}, {hi!r}")
+        if lo > hi:
+            raise TautError(f"{what}: inverted bounds {lo} > {hi}")
+        return int(float(n))
+    a = np.asarray(spec, dtype=float)
+    if a.ndim != 1 or a.size == 0 or not np.all(np.isfinite(a)):
+        raise TautError(f"{what}: expected (lo, hi, n) or a 1-D array of finite coordinates, got {spec!r}")
+    return int(a.size)
+
+
+def _axes(robot: Robot, specs: Sequence[AxisSpec]) -> tuple[np.ndarray, ...]:
+    """The axes of ``specs`` (one per leading pose coordinate), the grid's size checked
+    before any axis is built."""
+    counts = [_axis_count(spec, f"axis {robot.pose_names[i]}") for i, spec in enumerate(specs)]
+    check_grid_size(counts, robot.pose_size)
+    out = []
+    for spec, n in zip(specs, counts):
+        if isinstance(spec, tuple) and len(spec) == 3:
+            out.append(np.linspace(float(spec[0]), float(spec[1]), n))
+        else:
+            out.append(np.asarray(spec, dtype=float))
+    return tuple(out)
+
+
+def position_grid(
+    robot: Robot,
+    resolution: int | None = None,
+    bounds: npt.ArrayLike | None = None,
+    orientation: npt.ArrayLike | None = None,
+) -> PoseGrid:
+    """Grid over the position (x, y[, z]) with ``resolution`` points per axis between
+    ``bounds`` ``(d, 2)`` (default :func:`default_bounds`), at a fixed ``orientation``
+    (the pose coordinates after the position; default :func:`default_orientation`)."""
+    d = robot.dimension
+    res = DEFAULT_RESOLUTION[d] if resolution is None else resolution
+    if isinstance(res, bool) or not isinstance(res, numbers.Integral) or res < 1:
+        raise TautError(f"resolution must be a positive integer, got {resolution!r}")
+    b = default_bounds(robot) if bounds is None else np.asarray(bounds, dtype=float)
+    if b.shape != (d, 2):
+        raise TautError(f"{robot.name}: bounds must have shape ({d}, 2), got {b.shape}")
+    axes = _axes(robot, [(float(lo), float(hi), int(res)) for lo, hi in b])
+    fixed = np.concatenate([np.zeros(d), _orientation(robot, orientation)])
+    return PoseGrid(axes, tuple(range(d)), fixed, tuple(robot.pose_names[:d]))
+
+
+def pose_grid(robot: Robot, axes: Sequence[AxisSpec]) -> PoseGrid:
+    """Full pose grid: one axis (``(lo, hi, n)`` tuple or coordinates) per pose coordinate."""
+    if len(axes) != robot.pose_size:
+        raise TautError(
+            f"{robot.name}: a full pose grid needs {robot.pose_size} axes ({', '.join(robot.pose_names)}), got {len(axes)}"
+        )
+    return PoseGrid(
+        _axes(robot, axes), tuple(range(robot.pose_size)), np.zeros(robot.pose_size), tuple(robot.pose_names)
+    )
+
+
+def make_grid(
+    robot: Robot,
+    grid: PoseGrid | Sequence[AxisSpec] | np.ndarray | None = None,
+    resolution: int | None = None,
+    orientation: npt.ArrayLike | None = None,
+) -> PoseGrid:
+    """Normalise the ``grid`` argument of :func:`taut.workspace.evaluate_workspace`:
+
+    ``None`` — :func:`position_grid` with ``resolution`` and ``orientation``; a
+    :class:`PoseGrid` — used as is; a sequence of one axis per position coordinate
+    (``(lo, hi, n)`` tuples or coordinate arrays) — a position grid at ``orientation``;
+    one axis per pose coordinate — a full pose grid.
+
+    Raises :class:`~taut.errors.GridSizeError` for a grid of more than
+    :data:`MAX_GRID_POSES` poses, before building it."""
+    if grid is None:
+        return position_grid(robot, resolution, orientation=orientation)
+    if isinstance(grid, PoseGrid):
+        return grid
+    if isinstance(grid, (str, bytes)) or not isinstance(grid, (Sequence, np.ndarray)):
+        raise TautError(f"grid must be a PoseGrid or a sequence of axes, got {type(grid).__name__}")
+    specs: list[AxisSpec] = list(grid)
+    d = robot.dimension
+    if len(specs) == d:
+        fixed = np.concatenate([np.zeros(d), _orientation(robot, orientation)])
+        return PoseGrid(_axes(robot, specs), tuple(range(d)), fixed, tuple(robot.pose_names[:d]))
+    if len(specs) == robot.pose_size:
+        if orientation is not None:
+            raise TautError("a full pose grid grids the orientation too: do not give a fixed orientation")
+        return pose_grid(robot, specs)
+    raise TautError(
+        f"{robot.name}: grid needs {d} position axes or {robot.pose_size} pose axes ({', '.join(robot.pose_names)}), got {len(specs)}"
+    )

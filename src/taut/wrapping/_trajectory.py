@@ -1,0 +1,213 @@
+"""VSCR trajectories: waypoints or a parametric path, IK, tensions (§4.4, §6.1.2, §6.2 of Rushton 2022).
+
+*Waypoint sequences* (§6.2): the end effector moves on a straight line between
+consecutive waypoints at constant ``speed`` and rests ``dwell`` seconds at each one (1 s
+in the experiments).  *Parametric paths* ``p(t)``: Eqs. (4.12) and (4.13) of §4.4 are
+built in (:data:`PARAMETRIC`) under the names of the examples' trajectories.  Samples are
+``dt`` apart; between samples the anchors move on chords (:mod:`taut.wrapping._update`).
+
+Per sample (§6.1.2): the cable lengths and states (:func:`wrapped_inverse_kinematics`),
+which cables are length-controlled — ``m`` of the ``n`` cables (``m`` = platform DOF),
+chosen in cable order but never two whose active segments leave the same object towards
+the same anchor, since "if multiple cables have the same anchor points, one at most can be
+length controlled" — and a tension distribution by linear programming (minimum total
+tension within the bounds, :func:`taut.statics._tension.solve_tensions`, ``method="lp"``);
+samples without a feasible distribution are reported.
+
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §4.4 (Eqs. 4.12–4.13), §6.1.2, §6.2. (docs/references.bib: rushton2022)
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.errors import TautError
+from taut.model._robot import Robot
+from taut.statics._tension import solve_tensions
+from taut.statics._wrench import external_wrench
+from taut.wrapping._ik import WrappedIK, wrapped_inverse_kinematics
+from taut.wrapping._tree import OBJ
+
+#: Dwell at each waypoint [s] of the experiments (§6.2).
+DWELL = 1.0
+#: Speed [m/s] used when a waypoint trajectory gives none (§6.2 prints none).
+DEFAULT_SPEED = 0.1
+
+#: Most samples of one trajectory: each carries a pose, lengths, tensions and cable states
+#: (about a kilobyte); at the default 0.01 s step this is close to three hours of motion.
+MAX_SAMPLES = 1_000_000
+
+
+def _check_samples(count: float, dt: float) -> None:
+    if not count <= MAX_SAMPLES:  # also refuses an infinite or NaN count
+        raise TautError(
+            f"sampling every {dt:g} s gives {count:.3g} samples, more than {MAX_SAMPLES:,}: choose a larger dt"
+        )
+
+
+#: Parametric paths of the source: name → (p(t) for an array t, t0, t1).
+PARAMETRIC = {
+    "eq-4.12": (lambda t: np.column_stack([t, 1 + np.cos(2 * np.pi * t / 3)]), 0.0, 4.0),
+    "eq-4.13": (
+        lambda t: np.column_stack([0.75 * np.cos(np.pi * t / 5), -0.5 + 0.75 * np.sin(np.pi * t / 5)]),
+        0.0,
+        5.0,
+    ),
+}
+
+
+def sample_waypoints(waypoints: npt.ArrayLike, speed: float, dwell: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
+    """``(times (T,), poses (T, k))`` of straight moves at ``speed`` between waypoints with
+    a ``dwell`` at each (the first waypoint included), sampled every ``dt`` (each move and
+    dwell is divided into a whole number of equal steps no longer than ``dt``)."""
+    W = np.asarray(waypoints, float)
+    if W.ndim != 2 or len(W) < 1:
+        raise TautError("a trajectory needs at least one waypoint")
+    if not (dt > 0 and speed > 0 and dwell >= 0):
+        raise TautError(f"dt, speed must be > 0 and dwell >= 0, got dt={dt}, speed={speed}, dwell={dwell}")
+    moves = [float(np.linalg.norm(b[:2] - a[:2])) / speed if len(a) >= 2 else 0.0 for a, b in zip(W[:-1], W[1:])]
+    _check_samples(1 + len(W) * (dwell / dt + 1) + sum(d / dt + 1 for d in moves), dt)
+    times, poses, t = [np.zeros(1)], [W[:1]], 0.0
+
+    def hold(p: np.ndarray, duration: float) -> None:
+        nonlocal t
+        k = math.ceil(duration / dt - 1e-9)
+        if k > 0:
+            times.append(t + duration * np.arange(1, k + 1) / k)
+            poses.append(np.repeat(p[None], k, axis=0))
+            t += duration
+
+    hold(W[0], dwell)
+    for a, b, duration in zip(W[:-1], W[1:], moves):
+        k = max(1, math.ceil(duration / dt - 1e-9))
+        s = np.arange(1, k + 1) / k
+        times.append(t + duration * s)
+        poses.append(a + s[:, None] * (b - a))
+        t += duration
+        hold(b, dwell)
+    return np.concatenate(times), np.vstack(poses)
+
+
+def sample_path(
+    path: Callable[[np.ndarray], npt.ArrayLike], t0: float, t1: float, dt: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """``(times, poses)`` of a parametric path ``path(t) -> (T, k)`` every ``dt``."""
+    if not (dt > 0 and t1 >= t0):
+        raise TautError(f"dt must be > 0 and t1 >= t0, got dt={dt}, t0={t0}, t1={t1}")
+    _check_samples((t1 - t0) / dt + 1, dt)
+    k = max(1, math.ceil((t1 - t0) / dt - 1e-9))
+    t = t0 + (t1 - t0) * np.arange(k + 1) / k
+    return t, np.asarray(path(t), float)
+
+
+def builtin_trajectory(
+    robot: Robot, name: str | None = None, dt: float = 0.01, speed: float | None = None, dwell: float | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """``(times, poses)`` of a named trajectory of ``robot`` (its first one by default):
+    the parametric path of :data:`PARAMETRIC` if the name is one, else its waypoints."""
+    if not robot.trajectories:
+        raise TautError(f"{robot.name} has no built-in trajectory; give --waypoints FILE")
+    name = name or next(iter(robot.trajectories))
+    if name not in robot.trajectories:
+        raise TautError(f"{robot.name} has no trajectory {name!r}; it has {', '.join(robot.trajectories)}")
+    if name in PARAMETRIC:
+        fn, t0, t1 = PARAMETRIC[name]
+        return sample_path(fn, t0, t1, dt)
+    tr = robot.trajectories[name]
+    return sample_waypoints(tr.waypoints, speed or tr.speed or DEFAULT_SPEED, tr.dwell if dwell is None else dwell, dt)
+
+
+def full_poses(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
+    """Waypoints given as positions become poses with zero orientation and joints."""
+    P = np.atleast_2d(np.asarray(poses, float))
+    if P.shape[1] == robot.pose_size:
+        return P
+    if P.shape[1] == robot.dimension:
+        return np.hstack([P, np.zeros((len(P), robot.pose_size - robot.dimension))])
+    raise TautError(
+        f"{robot.name}: a waypoint has {robot.dimension} (position) or {robot.pose_size} (pose) coordinates, got {P.shape[1]}"
+    )
+
+
+def length_controlled(ik: WrappedIK, m: int) -> np.ndarray:
+    """``(T, n)`` mask of the ``m`` length-controlled cables per sample (§6.1.2)."""
+    T, n = ik.lengths.shape
+    mask = np.zeros((T, n), dtype=bool)
+    last = np.stack([tree.I[ik.nodes[:, i], OBJ] for i, tree in enumerate(ik.trees)], axis=1)
+    ends = np.round(ik.anchors, 12)
+    for s in range(T):
+        used = set()
+        for i in range(n):
+            key = (int(last[s, i]) if len(ik.trees[i].path(int(ik.nodes[s, i]))) > 1 else -1 - i, *ends[s, i])
+            if key in used:
+                continue
+            used.add(key)
+            mask[s, i] = True
+            if mask[s].sum() == m:
+                break
+    return mask
+
+
+@dataclass
+class TrajectoryResult:
+    """A VSCR trajectory: samples, IK, tensions and transitions."""
+
+    times: np.ndarray  #: ``(T,)`` [s]
+    ik: WrappedIK
+    tensions: np.ndarray  #: ``(T, n)`` minimum-sum tensions (zeros where infeasible)
+    feasible: np.ndarray  #: ``(T,)`` bool: a tension distribution exists
+    controlled: np.ndarray  #: ``(T, n)`` bool: length-controlled cables
+    transitions: list  #: ``{"time", "sample", "cable", "kind", "object"}`` (0-based cable and object indices)
+
+    @property
+    def lengths(self) -> np.ndarray:
+        return self.ik.lengths
+
+    def summary(self) -> dict:
+        return {
+            "samples": int(len(self.times)),
+            "duration": float(self.times[-1] - self.times[0]),
+            "lengths": self.ik.lengths.tolist(),
+            "transitions": [{k: e[k] for k in ("time", "cable", "kind", "object")} for e in self.transitions],
+            "tension_feasible": bool(self.feasible.all()),
+            "infeasible_samples": np.flatnonzero(~self.feasible).tolist(),
+        }
+
+
+def run_trajectory(
+    robot: Robot,
+    times: npt.ArrayLike,
+    poses: npt.ArrayLike,
+    initial: Mapping[int, Sequence[tuple[int, int]]] | None = None,
+    wrench: npt.ArrayLike | None = None,
+    tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
+) -> TrajectoryResult:
+    """IK, length-control assignment and LP tensions at every sample of ``(times, poses)``.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.4, §6.2. (docs/references.bib: rushton2022)
+    """
+    times = np.asarray(times, float)
+    P = full_poses(robot, poses)
+    if len(times) != len(P):
+        raise TautError(f"{len(times)} times for {len(P)} poses")
+    ik = wrapped_inverse_kinematics(robot, P, initial)
+    w = (
+        external_wrench(robot, P)
+        if wrench is None
+        else np.broadcast_to(np.asarray(wrench, float), (len(P), robot.wrench_dim))
+    )
+    tmin, tmax = robot.tension_bounds if tension_bounds is None else tension_bounds
+    res = solve_tensions(ik.structure_matrix, w, tmin, tmax, method="lp")
+    controlled = length_controlled(ik, robot.wrench_dim)
+    return TrajectoryResult(times, ik, res.tensions, np.asarray(res.feasible, bool), controlled, ik.transitions(times))
