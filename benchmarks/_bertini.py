@@ -1,6 +1,6 @@
 """The peer ``bertini2`` (``pip install bertini2``; homotopy continuation) on a DGP
 sub-problem, shared by ``bench_dgp.py --peer`` and ``bench_dgp_random.py --peer``: the same
-polynomial system as ``taut.dgp._formulation.build_subproblem`` (its zero-dimensional solve
+polynomial system as ``taut.dgp.build_subproblem`` (its zero-dimensional solve
 from the start system it infers, one thread), its real endpoints with non-negative tensions,
 and how many of taut's certified solutions they reproduce."""
 
@@ -10,8 +10,8 @@ from fractions import Fraction
 import _common  # noqa: F401  (first: it pins the thread pools to one core)
 import numpy as np
 
-from taut.dgp._formulation import load, reference_choice
-from taut.geometry._rotation import rotation_matrix
+from taut.dgp import load, reference_choice
+from taut.geometry import rotation_matrix
 
 ALL_TAUT = (0, 1, 2)
 REAL_TOL = 1e-8  # |imaginary part| per unknown, relative to max(1, |value|)

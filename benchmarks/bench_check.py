@@ -17,9 +17,8 @@ from _common import best_of  # first: it pins the thread pools to one core
 from scipy.optimize import linprog
 
 import taut
-from taut.collision import capsule_model, check_poses
-from taut.collision._capsules import capsule_segments
-from taut.kinematics._jointed import actuator_jacobian
+from taut.collision import capsule_model, capsule_segments, check_poses
+from taut.kinematics import actuator_jacobian
 
 
 def naive_distance(p1, q1, p2, q2):

@@ -7,7 +7,7 @@ the table's.
 With ``--peer``, also the sub-problem with all three cables taut against the peer ``bertini2``
 (``pip install bertini2``): its zero-dimensional solve (the start system it infers, total degree
 2^12 = 4096 paths, one thread) of the same 12 polynomial equations in the same 12 unknowns as
-``taut.dgp._formulation.build_subproblem``, against taut's certified branch-and-prune on that
+``taut.dgp.build_subproblem``, against taut's certified branch-and-prune on that
 sub-problem alone.  bertini2 needs minutes here; its count is of the real endpoints with
 non-negative tensions.
 
@@ -22,8 +22,7 @@ import numpy as np
 from _bertini import ALL_TAUT, import_bertini, matching, run_bertini
 from _common import best_of  # pins the thread pools to one core
 
-from taut.dgp import solve_dgp
-from taut.dgp._solve import solve_subset
+from taut.dgp import solve_dgp, solve_subset
 from taut.model import load_robot
 from taut.parallel import get_executor
 

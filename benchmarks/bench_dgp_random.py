@@ -1,5 +1,5 @@
 """The complete DGP (``taut.dgp.solve_dgp``) on a suite of seeded random suspended robots
-(``taut.model._random_robots.random_suspended_robot``) that nobody tuned the solver to: per
+(``taut.model.random_suspended_robot``) that nobody tuned the solver to: per
 robot the equilibria, the undecided boxes and the time; per cable count the median, 90th
 percentile and worst time; for the 3-cable suite the worst/median ratio (target ≤ 5).
 
@@ -26,9 +26,8 @@ import _common  # noqa: F401  (pins the thread pools to one core)
 import numpy as np
 from _bertini import ALL_TAUT, import_bertini, matching, run_bertini
 
-from taut.dgp import solve_dgp
-from taut.dgp._solve import solve_subset
-from taut.model._random_robots import random_suspended_robot
+from taut.dgp import solve_dgp, solve_subset
+from taut.model import random_suspended_robot
 
 EPS = 1e-7  # solve_dgp's default box width
 RATIO_TARGET = 5.0  # worst / median time of the 3-cable suite (issue 21)

@@ -4,7 +4,7 @@
 * Inverse dynamics of a sampled motion with the closed-form distribution
   (:func:`taut.dynamics.inverse_dynamics`, compiled kernel), against a per-sample loop of the
   same function and against the statics path (the required wrench, then
-  :func:`taut.statics._tension.solve_tensions`).  Target: >= 200,000 samples/s on one core.
+  :func:`taut.statics.solve_tensions`).  Target: >= 200,000 samples/s on one core.
 * Computed-torque control at 1 kHz (:func:`taut.dynamics.simulate_control`: PD on the pose
   error plus feed-forward inverse dynamics with a controller model 10 % heavy, the
   closed-form distribution in the loop, a step disturbance, one RK4 step of the plant per
@@ -36,9 +36,9 @@ from _common import best_of  # first: it pins the thread pools to one core
 
 import taut
 from taut.dynamics import WrenchSteps, inverse_dynamics, loop_model, required_wrench, simulate_control, with_mass_error
-from taut.kinematics._batch import batch_structure_matrices
+from taut.kinematics import batch_structure_matrices
 from taut.motion import trajectory_from_waypoints
-from taut.statics._tension import solve_tensions
+from taut.statics import solve_tensions
 
 INERTIA = (0.12, 0.2, 0.15, 0.01, -0.02, 0.005)
 
@@ -107,7 +107,7 @@ def main():
     try:
         import mujoco
 
-        from taut.model._mjcf import mjcf_text, pose_to_qpos
+        from taut.model import mjcf_text, pose_to_qpos
     except ImportError:
         print("  MuJoCo not installed: no comparison")
         return

@@ -15,8 +15,7 @@ import numpy as np
 from _common import best_of  # first: it pins the thread pools to one core
 
 import taut
-from taut.kinematics import inverse_kinematics
-from taut.kinematics._batch import batch_structure_matrices
+from taut.kinematics import batch_structure_matrices, inverse_kinematics
 
 
 def naive_structure_matrix(robot, pose):

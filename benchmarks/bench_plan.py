@@ -39,9 +39,7 @@ import numpy as np
 from _common import best_of  # first: it pins the thread pools to one core
 
 import taut
-from taut.planning import Atlas, atlas_rrt, plan_path
-from taut.planning._manifold import WrenchFeasibleManifold
-from taut.planning._verify import verify_path
+from taut.planning import Atlas, WrenchFeasibleManifold, atlas_rrt, plan_path, verify_path
 
 PAPER_S = {("q1", "q2"): 20.0, ("q3", "q4"): 280.0}
 FREE = (3, 4)  # φ, θ in a pose [x, y, z, φ, θ, σ]

@@ -13,11 +13,9 @@ import time
 import numpy as np
 from _common import best_of  # first: it pins the thread pools to one core
 
-from taut.dgp._formulation import build_subproblem
-from taut.dgp._solve import DGPSolution
-from taut.dgp._tracking import track, track_path
-from taut.geometry._rotation import rotation_matrix
-from taut.interval._krawczyk import certify
+from taut.dgp import DGPSolution, build_subproblem, track, track_path
+from taut.geometry import rotation_matrix
+from taut.interval import certify
 from taut.model import load_robot
 
 SOURCE_MS = 4.0  # §4.1.2: "usually within 4 ms, and no more than 7 ms"

@@ -18,10 +18,8 @@ from _common import best_of  # first: it pins the thread pools to one core
 from scipy.optimize import linprog
 
 import taut
-from taut.kinematics import structure_matrix
-from taut.kinematics._batch import batch_structure_matrices
-from taut.statics._feasibility import wrench_feasible
-from taut.statics._wrench import external_wrench
+from taut.kinematics import batch_structure_matrices, structure_matrix
+from taut.statics import external_wrench, wrench_feasible
 from taut.workspace import default_wrench_set, evaluate_workspace
 
 

@@ -9,9 +9,7 @@ import numpy as np
 from _common import best_of  # first: it pins the thread pools to one core
 
 from taut.model import example
-from taut.wrapping._ik import collidable_objects
-from taut.wrapping._tree import CableStateTree
-from taut.wrapping._update import track
+from taut.wrapping import CableStateTree, collidable_objects, track
 
 
 def main():

@@ -3,7 +3,7 @@
 equilibria appear (4 of them below it, 6 above).  Double precision leaves boxes too narrow
 to split around the nearly double pair; shared by the DGP and CLI tests."""
 
-from taut.model._random_robots import random_suspended_robot
+from taut.model import random_suspended_robot
 
 FOLD_SIDE = 1.0353778044866666
 

@@ -1,6 +1,7 @@
 """docs/architecture.md §1: data flows one way; a lower layer never imports a higher one."""
 
 import ast
+import importlib
 from pathlib import Path
 
 import pytest
@@ -10,7 +11,7 @@ SRC = Path(__file__).parents[1] / "src" / "taut"
 #: Layer of each top-level module of taut; a module may import its own layer and below.
 LAYERS = {
     "errors": 0,
-    "lazy": 0,
+    "_lazy": 0,
     "geometry": 0,
     "interval": 0,
     "model": 1,
@@ -62,63 +63,67 @@ def test_no_upward_import(path):
     assert not upward, f"{path.relative_to(SRC)} (layer {own}) imports {upward}"
 
 
-def _is_module(dotted: str) -> bool:
-    path = SRC.parent.joinpath(*dotted.split("."))
-    return path.with_suffix(".py").exists() or (path / "__init__.py").exists()
+def _package(path: Path) -> str | None:
+    """The package a source file belongs to (``kinematics``), or None for a top-level module."""
+    rel = path.relative_to(SRC)
+    return rel.parts[0] if len(rel.parts) > 1 else None
 
 
-def _private(name: str) -> bool:
-    return name.startswith("_") and not name.startswith("__")
+def _private_module(dotted: str) -> str | None:
+    """``taut.PKG`` when ``dotted`` names a private module of package PKG (``taut.PKG._x``)."""
+    parts = dotted.split(".")
+    if len(parts) >= 3 and parts[0] == "taut" and parts[2].startswith("_") and not parts[2].startswith("__"):
+        return ".".join(parts[:2])
+    return None
 
 
-def _module_name(path: Path) -> str:
-    return "taut." + ".".join(path.relative_to(SRC).with_suffix("").parts)
-
-
-def _private_uses(own: str, source: str):
-    """``(module, name)`` for every private name of another taut module that the module
-    ``own`` uses in ``source``: ``from taut.x import _name``, and ``m._name`` after
-    ``import taut.x as m`` or ``from taut.pkg import x as m``."""
-    tree = ast.parse(source)
-    aliases = {}
-    for node in ast.walk(tree):
+def _private_imports(source: str):
+    """Every private module of a taut package that ``source`` imports, with the import's line:
+    ``from taut.pkg._x import y``, ``import taut.pkg._x`` and ``from taut.pkg import _x``."""
+    for node in ast.walk(ast.parse(source)):
         if isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("taut"):
+            if _private_module(node.module):
+                yield node.lineno, node.module
+                continue
             for alias in node.names:
-                if _private(alias.name) and node.module != own:
-                    yield node.module, alias.name
-                if _is_module(f"{node.module}.{alias.name}"):
-                    aliases[alias.asname or alias.name] = f"{node.module}.{alias.name}"
+                if _private_module(f"{node.module}.{alias.name}"):
+                    yield node.lineno, f"{node.module}.{alias.name}"
         elif isinstance(node, ast.Import):
             for alias in node.names:
-                if alias.name.startswith("taut.") and alias.asname:
-                    aliases[alias.asname] = alias.name
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Attribute) and _private(node.attr):
-            target = node.value
-            if isinstance(target, ast.Name) and target.id in aliases and aliases[target.id] != own:
-                yield aliases[target.id], node.attr
-            elif isinstance(target, ast.Attribute) and ast.unparse(target).startswith("taut."):
-                yield ast.unparse(target), node.attr
+                if _private_module(alias.name):
+                    yield node.lineno, alias.name
+
+
+PACKAGE_FILES = [p for p in FILES if _package(p) is not None]
+
+
+@pytest.mark.parametrize("path", PACKAGE_FILES, ids=[str(p.relative_to(SRC)) for p in PACKAGE_FILES])
+def test_modules_inside_packages_are_private(path):
+    """docs/architecture.md §2.7: a package's API is its ``__all__``; its modules are private."""
+    assert path.name.startswith("_"), f"{path.relative_to(SRC)}: a module inside a package is private (_name.py)"
 
 
 @pytest.mark.parametrize("path", FILES, ids=[str(p.relative_to(SRC)) for p in FILES])
-def test_no_private_name_across_modules(path):
-    used = sorted({f"{m}.{n}" for m, n in _private_uses(_module_name(path), path.read_text())})
-    assert not used, f"{path.relative_to(SRC)} uses private names of other modules: {used}"
+def test_no_private_module_of_another_package(path):
+    own = _package(path)
+    used = sorted(
+        {f"{line}: {m}" for line, m in _private_imports(path.read_text()) if _private_module(m) != f"taut.{own}"}
+    )
+    assert not used, f"{path.relative_to(SRC)} imports private modules of other packages: {used}"
 
 
-def test_private_use_is_detected():
+def test_private_import_is_detected():
     source = (
-        "from taut.kinematics._inverse import _x, anchors_at\n"
+        "from taut.kinematics._inverse import anchors_at\n"
         "from taut.interval import _kernels as K\n"
         "import taut.geometry._rotation\n"
-        "from taut.statics._wrench import _own\n"
-        "K._y, K.add, K.__name__, taut.geometry._rotation._z\n"
+        "from taut.statics import distribute_tensions\n"
+        "from taut.errors import TautError\n"
     )
-    assert list(_private_uses("taut.statics._wrench", source)) == [
-        ("taut.kinematics._inverse", "_x"),
-        ("taut.interval._kernels", "_y"),
-        ("taut.geometry._rotation", "_z"),
+    assert [m for _, m in _private_imports(source)] == [
+        "taut.kinematics._inverse",
+        "taut.interval._kernels",
+        "taut.geometry._rotation",
     ]
 
 
@@ -126,8 +131,110 @@ ROOT = SRC.parents[1]
 USERS = sorted([*(ROOT / "tests").rglob("*.py"), *(ROOT / "benchmarks").glob("*.py")])
 
 
+def _tested_package(path: Path) -> str | None:
+    """The package whose tests ``path`` holds (``tests/kinematics/…`` → ``taut.kinematics``)."""
+    rel = path.relative_to(ROOT)
+    return f"taut.{rel.parts[1]}" if rel.parts[0] == "tests" and len(rel.parts) > 2 else None
+
+
 @pytest.mark.parametrize("path", USERS, ids=[str(p.relative_to(ROOT)) for p in USERS])
-def test_tests_and_benchmarks_use_no_private_name(path):
-    """Tests and benchmarks use taut as its users do: through public names only."""
-    used = sorted({f"{m}.{n}" for m, n in _private_uses("", path.read_text())})
-    assert not used, f"{path.relative_to(ROOT)} uses private names of taut: {used}"
+def test_tests_and_benchmarks_use_the_public_api(path):
+    """Benchmarks and the tests of other packages use taut as its users do, through each
+    package's ``__all__``; a package's own tests may reach its private modules (kernels)."""
+    own = _tested_package(path)
+    used = sorted({f"{line}: {m}" for line, m in _private_imports(path.read_text()) if _private_module(m) != own})
+    assert not used, f"{path.relative_to(ROOT)} imports private modules of taut: {used}"
+
+
+PACKAGES = sorted({_package(p) for p in PACKAGE_FILES} - {None})
+
+
+@pytest.mark.parametrize("package", PACKAGES)
+def test_every_exported_name_exists(package):
+    """Each name of a package's ``__all__`` resolves (the lazy re-exports point at real names)."""
+    module = importlib.import_module(f"taut.{package}")
+    missing = [name for name in module.__all__ if not hasattr(module, name)]
+    assert not missing, f"taut.{package}.__all__ names what it does not define: {missing}"
+
+
+def _module_of(path: Path) -> str:
+    parts = list(path.relative_to(SRC.parent).with_suffix("").parts)
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def _type_checking_nodes(tree: ast.AST) -> set[int]:
+    inside: set[int] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test):
+            inside.update(id(n) for n in ast.walk(node))
+    return inside
+
+
+def import_graph() -> dict[str, set[str]]:
+    """Module → the taut modules it imports, at the top or inside functions (both are a
+    dependency); imports under ``if TYPE_CHECKING:`` are annotations only and do not count."""
+    modules = {_module_of(p): p for p in SRC.rglob("*.py")}
+
+    def resolve(dotted: str) -> str | None:
+        while dotted and dotted not in modules:
+            dotted = dotted.rpartition(".")[0]
+        return dotted or None
+
+    graph: dict[str, set[str]] = {}
+    for name, path in modules.items():
+        tree = ast.parse(path.read_text())
+        skip = _type_checking_nodes(tree)
+        deps: set[str] = set()
+        for node in ast.walk(tree):
+            if id(node) in skip:
+                continue
+            if isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("taut"):
+                for alias in node.names:
+                    target = resolve(f"{node.module}.{alias.name}")
+                    deps.add(target) if target else None
+            elif isinstance(node, ast.Import):
+                deps.update(t for a in node.names if a.name.startswith("taut") and (t := resolve(a.name)))
+        deps.discard(name)
+        graph[name] = deps
+    return graph
+
+
+def cycles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """The strongly connected components of more than one module (Tarjan's algorithm)."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    found: list[list[str]] = []
+
+    def visit(v: str) -> None:
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        for w in graph.get(v, ()):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in stack:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            component = []
+            while True:
+                w = stack.pop()
+                component.append(w)
+                if w == v:
+                    break
+            if len(component) > 1:
+                found.append(sorted(component))
+
+    for v in sorted(graph):
+        if v not in index:
+            visit(v)
+    return found
+
+
+def test_no_import_cycles():
+    assert cycles(import_graph()) == []
+
+
+def test_cycles_are_detected():
+    graph = {"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}, "e": set()}
+    assert cycles(graph) == [["a", "b", "c"]]

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from taut._lazy import lazy_exports
 from taut.errors import (
     InfeasiblePoseError,
     PoseError,
@@ -16,7 +17,6 @@ from taut.errors import (
     TautError,
     UnreachableLengthsError,
 )
-from taut._lazy import lazy_exports
 
 if TYPE_CHECKING:
     from taut.model import Robot, example, example_names, load_robot, save_robot

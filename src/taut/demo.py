@@ -24,7 +24,7 @@ from taut.viz.plan import plan_section
 from taut.viz.trajectory import trajectory_section
 
 if TYPE_CHECKING:
-    from taut.model._robot import Robot
+    from taut.model import Robot
 
 
 def robots_section(report: Report) -> None:
@@ -55,7 +55,7 @@ def _line_of_poses(robot: Robot, start: npt.ArrayLike, shift: npt.ArrayLike, n: 
 
 def standard_model_section(report: Report, name: str, shift: npt.ArrayLike, resolution: int) -> None:
     """Robot drawing, wrench-feasible workspace and tensions along a straight move."""
-    from taut.statics._tension import distribute_tensions
+    from taut.statics import distribute_tensions
     from taut.viz import draw_robot, plot_tensions, plot_workspace
     from taut.workspace import evaluate_workspace
 

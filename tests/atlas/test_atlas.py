@@ -6,8 +6,7 @@ import shapely
 
 from taut.atlas import atlas_workspace, build_atlas, chart_lengths
 from taut.errors import PoseError, TautError
-from taut.model import example
-from taut.model._robot import Robot
+from taut.model import Robot, example
 
 
 @pytest.fixture(scope="module")

@@ -16,8 +16,7 @@ from taut.atlas import (
 )
 from taut.atlas._platform import interior_cone, minkowski_sum, platform_outline
 from taut.errors import PoseError, TautError
-from taut.model import example
-from taut.model._io import robot_from_dict
+from taut.model import example, robot_from_dict
 from taut.wrapping import wrapped_inverse_kinematics
 
 START = [0.8128, -0.2032]

@@ -19,7 +19,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import taut
-from taut.model._io import robot_to_dict
+from taut.model import robot_to_dict
 
 #: Seconds one case may take: far beyond the few seconds of a refusal, far below a hang.
 TIMEOUT = 120

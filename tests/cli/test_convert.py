@@ -118,9 +118,8 @@ def test_convert_a_jointed_caspr_model_to_mujoco(taut_cli: Callable[..., Any], t
     CASPR's masses and a drive each; at a pose its tendon lengths are ``taut ik``'s, and at
     rest without tensions the arm's drives must hold the links' weights, taut's joint forces."""
     mujoco = pytest.importorskip("mujoco")
-    from taut.kinematics._jointed import joint_forces
-    from taut.model import load_robot
-    from taut.model._mjcf import pose_to_qpos
+    from taut.kinematics import joint_forces
+    from taut.model import load_robot, pose_to_qpos
 
     out = tmp_path / "spiderbot.mjcf.xml"
     assert taut_cli("convert", str(SPIDERBOT), str(out), "--json").json()["format"] == "mujoco"

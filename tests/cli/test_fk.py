@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from taut.dgp import solve_dgp
-from taut.geometry._rotation import rotation_matrix
+from taut.geometry import rotation_matrix
 from taut.model import load_robot
 
 TAUT = str(Path(sys.executable).with_name("taut"))

@@ -13,8 +13,8 @@ import pytest
 from fold_robot import fold_robot
 
 from taut.cli.incomplete import CAUSE_TEXT, NAMED, warning
-from taut.dgp._undecided import CAUSES, UndecidedBox
-from taut.model._io import save_robot
+from taut.dgp import CAUSES, UndecidedBox
+from taut.model import save_robot
 
 FK = ["fk", "suspended-3cable"]
 IGP = ["igp", "suspended-3cable", "--taut", "3,1,2", "--fix", "x=2.7505,y=3.9798,z=5.5061"]

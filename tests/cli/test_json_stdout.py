@@ -15,8 +15,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from taut.statics._tension import METHODS
-from taut.workspace._conditions import CONDITIONS
+from taut.statics import METHODS
+from taut.workspace import CONDITIONS
 
 #: Asserts on the JSON document (and files in the temporary directory); a check written as
 #: one expression returns its truth instead.

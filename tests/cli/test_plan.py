@@ -6,9 +6,9 @@ import json
 import numpy as np
 import pytest
 
-from taut.kinematics._pose import platform_frame
+from taut.kinematics import platform_frame
 from taut.model import load_robot
-from taut.planning._verify import verify_path
+from taut.planning import verify_path
 
 SLICE = "x=0,y=0,z=2,sigma=35deg"
 ROBOT = load_robot("robocrane")

@@ -11,7 +11,7 @@ import pytest
 
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
-from taut.statics._feasibility import wrench_closure
+from taut.statics import wrench_closure
 
 ROBOT_YAML = """\
 format: taut/1

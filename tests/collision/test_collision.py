@@ -15,9 +15,9 @@ from taut.collision import (
 )
 from taut.collision._capsules import capsule_segments
 from taut.errors import PoseError
-from taut.geometry._segments import segment_distance
+from taut.geometry import segment_distance
 from taut.kinematics import inverse_kinematics
-from taut.model._io import robot_from_dict
+from taut.model import robot_from_dict
 from taut.workspace import CONDITIONS, evaluate_workspace
 
 ROBOT = taut.example("adjustable-8cable")

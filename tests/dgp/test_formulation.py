@@ -8,9 +8,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from taut.dgp._formulation import build_subproblem, exact_cross, rational_constant, secondary_coordinates
-from taut.geometry._rotation import rotation_matrix
-from taut.interval._expression import CONST
-from taut.interval._hc4 import evaluate_point
+from taut.geometry import rotation_matrix
+from taut.interval import CONST, evaluate_point
 from taut.model import load_robot
 
 coord = st.floats(-10.0, 10.0, allow_nan=False, allow_infinity=False)

@@ -11,8 +11,8 @@ from hypothesis import strategies as st
 from taut.dgp import solve_igp
 from taut.dgp._formulation import build_subproblem
 from taut.errors import CableSetError, PoseError, TautError, UnsupportedRobotError
-from taut.geometry._rotation import rotation_matrix
-from taut.interval._krawczyk import certify
+from taut.geometry import rotation_matrix
+from taut.interval import certify
 from taut.kinematics import inverse_kinematics
 from taut.model import Robot, load_robot
 from taut.statics import external_wrench

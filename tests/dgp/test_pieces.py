@@ -9,9 +9,8 @@ from taut.dgp import solve_dgp
 from taut.dgp._formulation import build_subproblem
 from taut.dgp._solve import PREPARED_SIZE, domain_pieces, prepared_subproblem, solve_piece
 from taut.errors import TautError
-from taut.geometry._rotation import rotation_matrix
-from taut.interval._branch_prune import same_solution
-from taut.interval._krawczyk import Certificate, certify
+from taut.geometry import rotation_matrix
+from taut.interval import Certificate, certify, same_solution
 from taut.model import load_robot
 
 ROBOT = load_robot("suspended-3cable")

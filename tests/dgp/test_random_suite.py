@@ -12,12 +12,9 @@ from hypothesis import strategies as st
 from taut.dgp import solve_dgp
 from taut.dgp._solve import solve_subset
 from taut.errors import TautError
-from taut.geometry._rotation import rotation_matrix
-from taut.interval._branch_prune import bisect
-from taut.interval._expression import compile_tape, const
-from taut.interval._linear import LinearFilter
-from taut.model._io import load_robot, save_robot
-from taut.model._random_robots import random_suspended_robot
+from taut.geometry import rotation_matrix
+from taut.interval import LinearFilter, bisect, compile_tape, const
+from taut.model import load_robot, random_suspended_robot, save_robot
 
 #: (cables, seed): quick robots of the benchmark suite, coplanar and not, with equilibria on
 #: two and three taut cables

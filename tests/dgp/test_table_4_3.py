@@ -8,8 +8,8 @@ import pytest
 
 from taut.dgp import is_stable, solve_dgp
 from taut.dgp._formulation import build_subproblem
-from taut.geometry._rotation import rotation_matrix
-from taut.interval._krawczyk import certify
+from taut.geometry import rotation_matrix
+from taut.interval import certify
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
 from taut.parallel import get_executor

@@ -11,9 +11,8 @@ import pytest
 from taut.dgp import solve_dgp
 from taut.dgp._formulation import build_subproblem
 from taut.dgp._solve import solve_subset
-from taut.geometry._rotation import rotation_matrix
-from taut.interval._branch_prune import BranchAndPruneResult, file_certificate
-from taut.interval._krawczyk import certify
+from taut.geometry import rotation_matrix
+from taut.interval import BranchAndPruneResult, certify, file_certificate
 from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
 

@@ -8,8 +8,8 @@ from taut.dgp._formulation import build_subproblem, load
 from taut.dgp._solve import DGPSolution
 from taut.dgp._tracking import track, track_path
 from taut.errors import TautError, TrackingLostError
-from taut.geometry._rotation import rotation_matrix
-from taut.interval._krawczyk import certify
+from taut.geometry import rotation_matrix
+from taut.interval import certify
 from taut.model import load_robot
 
 ROBOT = load_robot("suspended-3cable")

@@ -10,7 +10,7 @@ import pytest
 from taut.dgp import solve_dgp, solve_igp
 from taut.dgp._undecided import CAUSES
 from taut.errors import TautError
-from taut.geometry._rotation import rotation_matrix
+from taut.geometry import rotation_matrix
 from taut.model import load_robot
 
 ROBOT = load_robot("suspended-3cable")

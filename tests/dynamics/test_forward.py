@@ -16,11 +16,9 @@ from taut.dynamics import (
     rk4_step,
 )
 from taut.errors import SingularConfigurationError, TautError
-from taut.geometry._rates import rate_matrix
-from taut.geometry._rotation import rotation_matrix
-from taut.kinematics import cable_lengths
-from taut.kinematics._elastic import unstretched_length
-from taut.statics._tension import distribute_tensions
+from taut.geometry import rate_matrix, rotation_matrix
+from taut.kinematics import cable_lengths, unstretched_length
+from taut.statics import distribute_tensions
 
 TIGHT = {"method": "DOP853", "rtol": 1e-11, "atol": 1e-13}
 

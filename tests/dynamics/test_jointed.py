@@ -17,12 +17,9 @@ from taut.dynamics import (
     velocity_jacobian,
 )
 from taut.errors import UnsupportedRobotError
-from taut.geometry._rates import rate_matrix, rate_matrix_derivative
-from taut.geometry._rotation import rotation_matrix
-from taut.kinematics import inverse_kinematics
-from taut.kinematics._jointed import joint_forces, jointed_structure_matrix
-from taut.kinematics._pose import body_frames
-from taut.statics._wrench import external_wrench
+from taut.geometry import rate_matrix, rate_matrix_derivative, rotation_matrix
+from taut.kinematics import body_frames, inverse_kinematics, joint_forces, jointed_structure_matrix
+from taut.statics import external_wrench
 
 
 def random_poses(robot, n, rng, spread=0.5, tilt=1.0):
@@ -63,7 +60,7 @@ def test_mass_matrix_and_bias_forces_are_mujoco_s(name):
     ``h = Tᵀ (M_mj Ṫ q̇ + qfrc_bias)`` (gravity included) with ``qvel = T q̇``.  Measured
     (MuJoCo 4.0.0): 6e-15 relative for ``M``, 4e-15 for ``h``."""
     mujoco = pytest.importorskip("mujoco")
-    from taut.model._mjcf import mjcf_text, pose_to_qpos
+    from taut.model import mjcf_text, pose_to_qpos
 
     robot = ROBOTS[name]()
     rng = np.random.default_rng(40)

@@ -10,10 +10,9 @@ import pytest
 mujoco = pytest.importorskip("mujoco")
 
 from taut.dynamics import forward_dynamics  # noqa: E402
-from taut.geometry._rates import rate_matrix  # noqa: E402
-from taut.geometry._rotation import rotation_matrix  # noqa: E402
-from taut.model._mjcf import mjcf_text, pose_to_qpos  # noqa: E402
-from taut.statics._tension import distribute_tensions  # noqa: E402
+from taut.geometry import rate_matrix, rotation_matrix  # noqa: E402
+from taut.model import mjcf_text, pose_to_qpos  # noqa: E402
+from taut.statics import distribute_tensions  # noqa: E402
 
 DT = 1e-3
 

@@ -21,9 +21,9 @@ from taut.dynamics import (
 )
 from taut.dynamics._inverse import required_wrench
 from taut.errors import PoseError, UnsupportedRobotError
-from taut.geometry._rotation import planar_rotation, rotation_matrix
+from taut.geometry import planar_rotation, rotation_matrix
 from taut.kinematics import cable_lengths, structure_matrix
-from taut.statics._wrench import external_wrench
+from taut.statics import external_wrench
 
 #: 4th-order central difference weights at offsets −2, −1, 1, 2 (times 1/h).
 STENCIL = ((-2, 1 / 12), (-1, -8 / 12), (1, 8 / 12), (2, -1 / 12))

@@ -1,4 +1,4 @@
-"""taut.interval._branch_prune.bisect: the two halves of a box by the solver's bisection rule."""
+"""taut.interval.bisect: the two halves of a box by the solver's bisection rule."""
 
 import numpy as np
 from hypothesis import given, settings

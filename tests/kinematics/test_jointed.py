@@ -10,7 +10,7 @@ from taut.errors import PoseError, TautError
 from taut.geometry import angles_from_matrix, rotation_matrix
 from taut.kinematics import inverse_kinematics
 from taut.kinematics._jointed import actuator_jacobian, actuator_positions, joint_forces, jointed_structure_matrix
-from taut.model._io import robot_from_dict, robot_to_dict
+from taut.model import robot_from_dict, robot_to_dict
 
 ROBOT = taut.example("adjustable-8cable")
 

@@ -21,8 +21,13 @@ from hypothesis.extra.numpy import arrays
 
 import taut
 from taut.errors import InfeasiblePoseError, RobotFileError, UnsupportedRobotError
-from taut.kinematics import cable_lengths, forward_kinematics, inverse_kinematics, structure_matrix
-from taut.kinematics._batch import batch_structure_matrices
+from taut.kinematics import (
+    batch_structure_matrices,
+    cable_lengths,
+    forward_kinematics,
+    inverse_kinematics,
+    structure_matrix,
+)
 from taut.kinematics._inverse import ik_status
 from taut.model import Robot, robot_from_dict, robot_to_dict
 
@@ -281,19 +286,19 @@ def test_forward_kinematics_inverts_the_pulley_model(pose: np.ndarray, offset: n
 
 
 def test_tensions_balance_the_wrench_through_the_pulley_directions() -> None:
-    from taut.statics._tension import distribute_tensions
+    from taut.statics import distribute_tensions
 
     pose = np.array([0.1, -0.05, 0.1, 0.05, 0.0, -0.05])
     res = distribute_tensions(ROBOT, pose)
     W = structure_matrix(ROBOT, pose)
-    from taut.statics._wrench import external_wrench
+    from taut.statics import external_wrench
 
     assert res.feasible
     np.testing.assert_allclose(W @ res.tensions + external_wrench(ROBOT, pose), 0.0, atol=1e-8)
 
 
 def test_interference_check_uses_the_tangent_points() -> None:
-    from taut.collision._capsules import capsule_segments
+    from taut.collision import capsule_segments
 
     pose = np.zeros((1, 6))
     A, B = capsule_segments(ROBOT, pose)
@@ -490,8 +495,7 @@ def test_swivel_angles_of_a_spatial_pulley_by_hand() -> None:
 def test_planar_batch_path_and_analyses_use_the_pulleys() -> None:
     """Planar robots with pulleys go through NumPy in the batch entry point, and the tension
     distribution balances the wrench through the tangent directions."""
-    from taut.statics._tension import distribute_tensions
-    from taut.statics._wrench import external_wrench
+    from taut.statics import distribute_tensions, external_wrench
 
     rng = np.random.default_rng(3)
     P = rng.uniform(-0.3, 0.3, (64, 3))
@@ -541,8 +545,7 @@ def test_caspr_planar_base_rotating_pulleys(x: float, z: float, theta: float) ->
 
 def test_caspr_planar_pulleys_round_trip(tmp_path: Path) -> None:
     """The CASPR writer lifts a planar swivel axis into the robot's plane, and reads back."""
-    from taut.model import load_robot
-    from taut.model._caspr import write_caspr
+    from taut.model import load_robot, write_caspr
 
     robot = load_robot(CASPR / "planar_pulley_xz_bodies.xml")
     write_caspr(robot, tmp_path / "back_bodies.xml")

@@ -16,11 +16,10 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from taut.errors import RobotFileError, UnsupportedRobotError
-from taut.kinematics import inverse_kinematics
-from taut.kinematics._jointed import jointed_structure_matrix
+from taut.kinematics import inverse_kinematics, jointed_structure_matrix
 from taut.model import example, example_names, load_robot
 from taut.model._caspr import read_caspr, write_caspr
-from taut.statics._wrench import external_wrench
+from taut.statics import external_wrench
 
 FIXTURES = Path(__file__).parent / "fixtures" / "caspr"
 REAL = FIXTURES / "real"

@@ -19,12 +19,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from taut.errors import RobotFileError, UnsupportedRobotError
-from taut.kinematics import inverse_kinematics
-from taut.kinematics._jointed import joint_forces, jointed_structure_matrix
+from taut.kinematics import inverse_kinematics, joint_forces, jointed_structure_matrix
 from taut.model import Robot, example, load_robot
 from taut.model._caspr import read_caspr, write_caspr
-from taut.statics._tension import distribute_tensions
-from taut.statics._wrench import external_wrench
+from taut.statics import distribute_tensions, external_wrench
 
 FIXTURES = Path(__file__).parent / "fixtures" / "caspr"
 ARM = FIXTURES / "jointed_arm_bodies.xml"
@@ -711,7 +709,7 @@ def test_cli_tensions_hold_the_links_and_yaml_keeps_their_masses(tmp_path: Path,
 def test_default_wrench_set_is_sized_by_all_link_weights() -> None:
     """The default box of wrench-feasibility is 10 % of the force of the external wrench: of
     all seven SpiderBot links (18.63 kg), not of the platform's 10 kg."""
-    from taut.workspace._conditions import default_wrench_set
+    from taut.workspace import default_wrench_set
 
     box = default_wrench_set(load_robot(SPIDER))
     np.testing.assert_allclose(box.upper[:3], 0.1 * G * 18.63, rtol=1e-12)

@@ -16,7 +16,7 @@ import shapely
 import taut
 from taut.kinematics import cable_lengths, inverse_kinematics
 from taut.model import robot_to_dict
-from taut.statics._wrench import external_wrench
+from taut.statics import external_wrench
 
 HALF_UNIT = 5e-4  # half a unit of the last printed digit (3 decimals)
 
@@ -59,7 +59,7 @@ def test_example_loads_and_has_a_description(name):
     robot = taut.example(name)
     assert robot.format == "taut/1"
     assert robot.description and "\n" not in robot.description.strip()
-    assert name in taut.model._examples.example_descriptions()
+    assert name in taut.model.example_descriptions()
 
 
 @pytest.mark.parametrize("suffix", [".yaml", ".json"])

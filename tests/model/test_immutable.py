@@ -9,7 +9,7 @@ import pytest
 from pydantic import ValidationError
 
 import taut
-from taut.kinematics._inverse import inverse_kinematics
+from taut.kinematics import inverse_kinematics
 from taut.model import robot_from_dict
 
 SPATIAL = {
@@ -109,7 +109,7 @@ def test_weight_is_mass_times_gravity():
 
 
 def test_external_wrench_includes_the_weight():
-    from taut.statics._wrench import external_wrench
+    from taut.statics import external_wrench
 
     r = robot_from_dict(SPATIAL)
     np.testing.assert_allclose(external_wrench(r, [1, 1, 1, 0, 0, 0]), [0, 0, -19.62, 0, 0, 0])

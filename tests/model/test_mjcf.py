@@ -11,12 +11,11 @@ from hypothesis import strategies as st
 
 import taut
 from taut.errors import UnsupportedRobotError
-from taut.geometry._rotation import CONVENTIONS, rotation_matrix
+from taut.geometry import CONVENTIONS, rotation_matrix
 from taut.kinematics import inverse_kinematics
 from taut.model import example_names, robot_from_dict, robot_to_dict
 from taut.model._mjcf import check_mjcf, mjcf_text, pose_to_qpos, quaternions, write_mjcf
-from taut.statics import distribute_tensions
-from taut.statics._wrench import external_wrench
+from taut.statics import distribute_tensions, external_wrench
 
 mujoco = pytest.importorskip("mujoco")
 

@@ -10,14 +10,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import taut
-from taut.geometry._rotation import rotation_matrix
-from taut.kinematics import inverse_kinematics
-from taut.kinematics._jointed import joint_forces
-from taut.kinematics._pose import body_frames
+from taut.geometry import rotation_matrix
+from taut.kinematics import body_frames, inverse_kinematics, joint_forces
 from taut.model import robot_from_dict, robot_to_dict
 from taut.model._mjcf import joint_order, mjcf_text, pose_to_qpos, swivel_wraps_agree
-from taut.statics import distribute_tensions
-from taut.statics._wrench import external_wrench
+from taut.statics import distribute_tensions, external_wrench
 
 mujoco = pytest.importorskip("mujoco")
 

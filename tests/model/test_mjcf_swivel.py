@@ -13,10 +13,8 @@ from hypothesis import strategies as st
 
 import taut
 from taut.errors import InfeasiblePoseError
-from taut.geometry._rotation import rotation_matrix
-from taut.kinematics import inverse_kinematics
-from taut.kinematics._inverse import anchor_points
-from taut.kinematics._swivel import swivel_parameters, swivel_paths
+from taut.geometry import rotation_matrix
+from taut.kinematics import anchor_points, inverse_kinematics, swivel_parameters, swivel_paths
 from taut.model import load_robot, robot_from_dict, robot_to_dict
 from taut.model._mjcf import (
     PULLEY_MASS_RATIO,
@@ -26,8 +24,7 @@ from taut.model._mjcf import (
     swivel_frames,
     swivel_wraps_agree,
 )
-from taut.statics import distribute_tensions
-from taut.statics._wrench import external_wrench
+from taut.statics import distribute_tensions, external_wrench
 
 mujoco = pytest.importorskip("mujoco")
 

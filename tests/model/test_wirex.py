@@ -21,10 +21,10 @@ from hypothesis import strategies as st
 
 import taut
 from taut.errors import RobotFileError, UnsupportedRobotError
-from taut.kinematics._inverse import inverse_kinematics
+from taut.kinematics import inverse_kinematics
 from taut.model import load_robot
 from taut.model._wirex import read_wirex, write_wirex
-from taut.statics._wrench import external_wrench
+from taut.statics import external_wrench
 
 FIXTURES = Path(__file__).parent / "fixtures" / "wirex"
 REAL = ["IPAnema.wcrfx", "CoGiRo.wcrfx", "CableMasterRobot.wcrfx"]
@@ -234,7 +234,7 @@ def test_real_robots_swivel_angles_tangents_and_structure_matrix_are_wirexs(name
     validity test, and anchors at least ``r_p`` from the swivel axis for the two-``arccos``
     wrap angle), taut's lengths, swivel angles, tangent points and structure matrix are those
     of WireX's pulley kinematics and its pulley-corrected structure matrix."""
-    from taut.kinematics._swivel import swivel_angles
+    from taut.kinematics import swivel_angles
 
     root, robot = raw(name), read_wirex(FIXTURES / name)
     assert robot.swivel_cables == tuple(range(robot.n_cables))
@@ -282,7 +282,7 @@ def test_planar_pulleys_are_wirex_pulley_kinematics(x, y, theta, name):
     and ``R = R_z(θ)``), and the rows ``f_x, f_y`` (and ``m_z`` for ``1R2T``) of WireX's
     pulley-corrected structure matrix, the rows the planar patterns keep
     (``getStructureMatrix``)."""
-    from taut.kinematics._swivel import swivel_angles
+    from taut.kinematics import swivel_angles
 
     robot, root = read_wirex(FIXTURES / name), raw(name)
     rigid = robot.platform.kind == "rigid"
@@ -351,9 +351,9 @@ def test_tilted_winch_frames_are_wirex_pulley_kinematics(tmp_path_factory, posit
     """IPAnema with every winch frame turned (``R_z R_x R_z``): the swivel axis is the frame's
     z axis, and the lengths, tangent points and pulley-corrected structure matrix stay WireX's
     (same domain as above).  The swivel angle is WireX's up to the constant angle between the
-    file frame's x axis and that of :func:`taut.model._wirex.winch_frame`, about the same axis."""
-    from taut.kinematics._swivel import swivel_angles
-    from taut.model._wirex import winch_frame
+    file frame's x axis and that of :func:`taut.geometry.axis_frames`, about the same axis."""
+    from taut.geometry import axis_frames
+    from taut.kinematics import swivel_angles
 
     root = raw("IPAnema.wcrfx")
     for chain, (t1, t2, t3) in zip(root.find("geometry").findall("chain"), tilts, strict=True):
@@ -377,7 +377,7 @@ def test_tilted_winch_frames_are_wirex_pulley_kinematics(tmp_path_factory, posit
     assert np.allclose(ik.lengths, expected, rtol=0, atol=1e-9)
     assert np.allclose(ik.exit_points, wx["C"], rtol=0, atol=1e-9)
     assert np.allclose(ik.structure_matrix, wx["W"], rtol=0, atol=1e-9)
-    own_x = np.array([winch_frame(f[:, 2])[:, 0] for f in frames])
+    own_x = axis_frames(np.array([f[:, 2] for f in frames]))[:, :, 0]
     offset = np.arctan2(np.einsum("ni,ni->n", frames[:, :, 1], own_x), np.einsum("ni,ni->n", frames[:, :, 0], own_x))
     assert angle_gap(swivel_angles(robot, [*position, a, b, c]) + offset, wx["gamma"]).max() < 1e-9
 

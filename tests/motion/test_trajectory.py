@@ -13,9 +13,8 @@ from scipy.interpolate import CubicSpline
 
 import taut
 from taut.errors import TautError, TrajectoryError
-from taut.geometry._rotation import rotation_matrix
-from taut.model import robot_from_dict
-from taut.model._robot import Trajectory
+from taut.geometry import rotation_matrix
+from taut.model import Trajectory, robot_from_dict
 from taut.motion import Motion, trajectory_from_robot, trajectory_from_waypoints, unwrap_angles
 
 SPATIAL = taut.example("spatial-8cable")  # xyz-fixed

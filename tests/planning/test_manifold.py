@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from taut.errors import InfeasiblePoseError, PoseError
-from taut.kinematics._pose import platform_frame
+from taut.kinematics import platform_frame
 from taut.model import load_robot
 from taut.planning import plan_path, tangent_basis
 from taut.planning._manifold import WrenchFeasibleManifold

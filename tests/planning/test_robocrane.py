@@ -8,7 +8,7 @@ import itertools
 import numpy as np
 from scipy import ndimage
 
-from taut.kinematics._pose import platform_frame
+from taut.kinematics import platform_frame
 from taut.model import load_robot
 from taut.planning import plan_path
 from taut.planning._manifold import WrenchFeasibleManifold

@@ -8,9 +8,8 @@ import json
 import numpy as np
 import pytest
 
-from taut.kinematics._pose import platform_frame
-from taut.model import load_robot
-from taut.model._io import save_robot
+from taut.kinematics import platform_frame
+from taut.model import load_robot, save_robot
 from taut.planning import atlas_rrt
 from taut.planning._manifold import WrenchFeasibleManifold
 from taut.planning._verify import verify_path

@@ -22,13 +22,15 @@ from mpl_toolkits.mplot3d.axes3d import Axes3D  # noqa: E402
 import taut.viz  # noqa: E402
 from taut.atlas import atlas_workspace, build_atlas  # noqa: E402
 from taut.collision import check_poses, trajectory_poses  # noqa: E402
-from taut.dgp import DGPSolution, track_path  # noqa: E402
-from taut.dgp._formulation import build_subproblem  # noqa: E402
-from taut.geometry._rotation import rotation_matrix  # noqa: E402
-from taut.interval._krawczyk import certify  # noqa: E402
+from taut.dgp import (  # noqa: E402
+    DGPSolution,
+    build_subproblem,  # noqa: E402
+    track_path,
+)
+from taut.geometry import rotation_matrix  # noqa: E402
+from taut.interval import certify  # noqa: E402
 from taut.model import example, robot_from_dict  # noqa: E402
-from taut.planning import plan_path  # noqa: E402
-from taut.planning._manifold import WrenchFeasibleManifold  # noqa: E402
+from taut.planning import WrenchFeasibleManifold, plan_path  # noqa: E402
 from taut.viz.atlas import plot_atlas  # noqa: E402
 from taut.viz.check import plot_check  # noqa: E402
 from taut.viz.dgp import plot_equilibria, plot_tracking  # noqa: E402
@@ -38,7 +40,7 @@ from taut.viz.tensions import plot_tensions  # noqa: E402
 from taut.viz.trajectory import draw_wrapped_cables, plot_trajectory  # noqa: E402
 from taut.viz.workspace import plot_workspace  # noqa: E402
 from taut.workspace import evaluate_workspace  # noqa: E402
-from taut.wrapping._trajectory import builtin_trajectory, run_trajectory  # noqa: E402
+from taut.wrapping import builtin_trajectory, run_trajectory  # noqa: E402
 
 PLANAR = example("planar-4cable")
 SPATIAL = example("spatial-8cable")

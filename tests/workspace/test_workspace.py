@@ -13,10 +13,9 @@ from scipy.optimize import linprog
 
 import taut
 from taut.errors import GridSizeError, PoseError, TautError
-from taut.kinematics import structure_matrix
-from taut.kinematics._batch import batch_structure_matrices
+from taut.kinematics import batch_structure_matrices, structure_matrix
 from taut.model import robot_from_dict
-from taut.statics._wrench import BoxWrenchSet, external_wrench
+from taut.statics import BoxWrenchSet, external_wrench
 from taut.workspace import (
     CONDITIONS,
     WorkspaceCondition,

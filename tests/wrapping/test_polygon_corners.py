@@ -9,7 +9,7 @@ round-off): ``[unwrap A ccw, wrap A cw]``, a cable bent away from the obstacle."
 import numpy as np
 import pytest
 
-from taut.geometry._intersections import segment_enters_polygon
+from taut.geometry import segment_enters_polygon
 from taut.wrapping._tree import DIR, EX, EY, OBJ, PARENT, UX, UY, CableStateTree
 from taut.wrapping._update import track
 

@@ -6,7 +6,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from taut.errors import TautError
-from taut.geometry._intersections import segment_enters_polygon, segment_meets_circle
+from taut.geometry import segment_enters_polygon, segment_meets_circle
 from taut.model import example
 from taut.wrapping._state import CableState, rebuild_path
 from taut.wrapping._trajectory import builtin_trajectory, run_trajectory

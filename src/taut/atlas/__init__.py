@@ -9,12 +9,39 @@ References
    Waterloo, 2022, Ch. 5 (§5.1–5.3, Algs. 5.1–5.4). (docs/references.bib: rushton2022)
 """
 
-from taut.atlas._atlas import Edge, StructureAtlas, build_atlas
-from taut.atlas._chart import Chart, chart_lengths, structure_reachable_area
-from taut.atlas._ik import AtlasIK, direct_ik, iterative_ik, iterative_step, locate
-from taut.atlas._platform import platform_outline, platform_reachable_area
-from taut.atlas._reachable import cable_reachable_area
-from taut.atlas._workspace import AtlasWorkspace, atlas_workspace
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from taut._lazy import lazy_exports
+
+if TYPE_CHECKING:
+    from taut.atlas._atlas import Edge, StructureAtlas, build_atlas
+    from taut.atlas._chart import Chart, chart_lengths, structure_reachable_area
+    from taut.atlas._ik import AtlasIK, direct_ik, iterative_ik, iterative_step, locate
+    from taut.atlas._platform import platform_outline, platform_reachable_area
+    from taut.atlas._reachable import cable_reachable_area
+    from taut.atlas._workspace import AtlasWorkspace, atlas_workspace
+
+#: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
+_LAZY = {
+    "Edge": "taut.atlas._atlas",
+    "StructureAtlas": "taut.atlas._atlas",
+    "build_atlas": "taut.atlas._atlas",
+    "Chart": "taut.atlas._chart",
+    "chart_lengths": "taut.atlas._chart",
+    "structure_reachable_area": "taut.atlas._chart",
+    "AtlasIK": "taut.atlas._ik",
+    "direct_ik": "taut.atlas._ik",
+    "iterative_ik": "taut.atlas._ik",
+    "iterative_step": "taut.atlas._ik",
+    "locate": "taut.atlas._ik",
+    "platform_outline": "taut.atlas._platform",
+    "platform_reachable_area": "taut.atlas._platform",
+    "cable_reachable_area": "taut.atlas._reachable",
+    "AtlasWorkspace": "taut.atlas._workspace",
+    "atlas_workspace": "taut.atlas._workspace",
+}
 
 __all__ = [
     "AtlasIK",
@@ -34,3 +61,5 @@ __all__ = [
     "platform_reachable_area",
     "structure_reachable_area",
 ]
+
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

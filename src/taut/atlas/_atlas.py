@@ -1,7 +1,7 @@
 """Structure atlas of a point-mass planar VSCR (§5.1.3, Alg. 5.1 of Rushton 2022).
 
 From an initial point ``p_0`` (and the cables' initial states — by default the shortest
-taut routing, as in :func:`taut.wrapping._ik.wrapped_inverse_kinematics`) Alg. 5.1 builds
+taut routing, as in :func:`taut.wrapping.wrapped_inverse_kinematics`) Alg. 5.1 builds
 the first chart, then repeatedly visits the edges of each chart's domain ``Q`` that are
 *traversable* — crossing them changes one cable's state — and builds the chart of the
 structure on the other side from the edge's midpoint.
@@ -51,10 +51,9 @@ from taut.atlas._chart import Chart, chart_lengths, component_containing, struct
 from taut.atlas._platform import fixed_collision_region, platform_outline, rotation, structure_collision_region
 from taut.atlas._reachable import ARC_STEP, cable_reachable_area
 from taut.errors import PoseError, TautError
-from taut.kinematics._swivel import refuse_swivels
-from taut.model._robot import Robot
-from taut.wrapping._ik import wrapped_inverse_kinematics
-from taut.wrapping._tree import DIR, EX, EY, OBJ, PARENT, UX, UY, CableStateTree
+from taut.kinematics import refuse_swivels
+from taut.model import Robot
+from taut.wrapping import CableStateTree, wrapped_inverse_kinematics
 
 if TYPE_CHECKING:
     from shapely.geometry.base import BaseGeometry
@@ -160,10 +159,10 @@ class _Builder:
         the ``side`` (±1, along the left normal) of it."""
         for i, (tree, x) in enumerate(zip(self.trees, nodes)):
             if x != 0:
-                yield i, int(tree.I[x, PARENT]), x, -tree.F[x, DIR], "unwrap", int(tree.I[x, OBJ])
+                yield i, tree.parent(x), x, -tree.direction(x), "unwrap", tree.obstacle(x)
             for c in tree.children(x):
                 c = int(c)
-                yield i, c, c, tree.F[c, DIR], "wrap", int(tree.I[c, OBJ])
+                yield i, c, c, tree.direction(c), "wrap", tree.obstacle(c)
 
 
 def _objects_bounds(trees: Sequence[CableStateTree]) -> tuple[float, float, float, float]:
@@ -194,7 +193,7 @@ def build_atlas(
     """The structure atlas of a planar VSCR from the start point ``start`` (Alg. 5.1) —
     for a rigid platform the page of orientation ``theta`` (§5.2.2), ``start`` being the
     platform reference point.  ``initial`` maps a 0-based cable index to its starting
-    state (see :func:`taut.wrapping._ik.wrapped_inverse_kinematics`).
+    state (see :func:`taut.wrapping.wrapped_inverse_kinematics`).
     ``progress(expanded, None)`` is called as charts are expanded (how many there are is
     not known in advance) and ``progress(charts, charts)`` at the end.
 
@@ -249,8 +248,8 @@ def build_atlas(
             progress(expanded, None)
         for i, new, ray_node, side, kind, obj in b.transitions(C.nodes):
             tree = b.trees[i]
-            e = tree.F[ray_node, [EX, EY]] - b.offsets[i]
-            u = tree.F[ray_node, [UX, UY]]
+            e, u = tree.ray(ray_node)
+            e = e - b.offsets[i]
             nrm = side * np.array([-u[1], u[0]])
             nodes = C.nodes[:i] + (new,) + C.nodes[i + 1 :]
             for seg in _edge_pieces(C.domain, e, u, b.reach):

@@ -1,11 +1,11 @@
 """Charts of a point-mass VSCR: structure, domain and length map (§5.1.1, Eqs. 5.1–5.6 of Rushton 2022).
 
 A *structure* ``S = {s_1, …, s_n}`` (Eq. 5.1) is one cable state per cable, here the
-nodes of the cables' state trees (:class:`taut.wrapping._tree.CableStateTree`).  Its
+nodes of the cables' state trees (:class:`taut.wrapping.CableStateTree`).  Its
 *chart* ``C = {l_0, ν(p), A(p), Q}`` (Eq. 5.2) holds
 
 * ``l_0`` (Eq. 5.3): the length of each cable up to the point where it reaches its last
-  object — static segments and the arcs between them (``L_STATIC`` of the tree node);
+  object — static segments and the arcs between them (:meth:`taut.wrapping.CableStateTree.static_length`);
 * ``ν(p)`` (Eq. 5.4): the arc wrapped about the last object, ``r φ(p)``;
 * ``A(p)`` (Eq. 5.5): where the active segment leaves the last object (the exit points of
   the equivalent standard CDPR);
@@ -35,7 +35,7 @@ import shapely.affinity
 from shapely.geometry import MultiPolygon, Polygon
 
 from taut.atlas._reachable import close_cracks
-from taut.wrapping._tree import DIR, L_STATIC, OBJ, THETA_IN, CableStateTree
+from taut.wrapping import CableStateTree
 
 if TYPE_CHECKING:
     from shapely.geometry.base import BaseGeometry
@@ -78,17 +78,17 @@ def chart_lengths(
     A = np.empty((len(P0), n, 2))
     for i, (tree, node) in enumerate(zip(trees, nodes)):
         P = P0 + off[i]
-        k = int(tree.I[node, OBJ])
+        k = tree.obstacle(node)
         cx, cy, r = tree.circles[k]
-        d = tree.F[node, DIR]
+        d = tree.direction(node)
         Dx, Dy = P[:, 0] - cx, P[:, 1] - cy
         L = np.sqrt(np.maximum(Dx * Dx + Dy * Dy - r * r, 0.0))
         phi = np.arctan2(Dy, Dx) - np.arctan2(-d * r, L)
         ux, uy = np.cos(phi), np.sin(phi)
         theta = np.arctan2(-d * ux, d * uy)
         low = -math.pi if node == 0 else -0.5 * math.pi
-        w = np.mod(d * (theta - tree.F[node, THETA_IN]) - low, 2 * math.pi) + low
-        wrapped[:, i] = tree.F[node, L_STATIC] + r * w
+        w = np.mod(d * (theta - tree.theta_in(node)) - low, 2 * math.pi) + low
+        wrapped[:, i] = tree.static_length(node) + r * w
         L_out[:, i] = wrapped[:, i] + L
         A[:, i, 0] = cx + d * r * uy
         A[:, i, 1] = cy - d * r * ux

@@ -5,7 +5,7 @@ contains it (a point-in-polygon test, here shapely's prepared ``contains_xy`` ov
 query points of a chart at once); the lengths follow from the chart's elements by
 Eq. (4.9), ``l_i = l_{0,i} + ν_i(b_i) + ‖a_i(b_i) − b_i‖`` with the anchor
 ``b_i = p + R(θ) r_i`` of the atlas page (``b_i = p`` for a point mass;
-:func:`taut.atlas._chart.chart_lengths`).
+:func:`taut.atlas.chart_lengths`).
 Several charts may contain a point (Fig. 5.1); Alg. 5.3 takes the first, and so does
 :func:`direct_ik` unless ``charts`` restricts the search (e.g. to the workspace).
 
@@ -32,7 +32,7 @@ import shapely
 from taut.atlas._atlas import StructureAtlas
 from taut.atlas._chart import chart_lengths
 from taut.errors import PoseError
-from taut.geometry._intersections import segments_intersect
+from taut.geometry import segments_intersect
 
 
 @dataclass(frozen=True)

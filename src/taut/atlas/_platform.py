@@ -44,12 +44,12 @@ import shapely.affinity
 from shapely.geometry import MultiPoint, Polygon
 
 from taut.errors import TautError
-from taut.wrapping._tree import DIR, OBJ, CableStateTree
+from taut.wrapping import CableStateTree
 
 if TYPE_CHECKING:
     from shapely.geometry.base import BaseGeometry
 
-    from taut.model._robot import Robot
+    from taut.model import Robot
 
 #: Largest distance [m] of an anchor from the platform outline.
 ON_OUTLINE = 1e-9
@@ -134,9 +134,9 @@ def active_collision_region(
     ``node`` leaves the anchor in a direction of ``cone``: the tangents to the last object
     whose scan direction (object → anchor) is opposite to the cone."""
     a0, span = cone
-    k = int(tree.I[node, OBJ])
+    k = tree.obstacle(node)
     c, r = tree.circles[k, :2], float(tree.circles[k, 2])
-    d = int(tree.F[node, DIR])
+    d = tree.direction(node)
     m = max(2, int(math.ceil(span / arc_step)) + 1)
     al = a0 + math.pi + np.linspace(0.0, span, m)
     U = np.column_stack([np.cos(al), np.sin(al)])

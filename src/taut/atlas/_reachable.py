@@ -2,7 +2,7 @@
 
 The CRA of a cable in state ``s`` is the set of platform-end positions ``b`` reachable by
 its active (last, straight) segment without changing the state or making a forbidden
-collision: ``b`` is where :meth:`taut.wrapping._tree.CableStateTree.is_taut` holds —
+collision: ``b`` is where :meth:`taut.wrapping.CableStateTree.is_taut` holds —
 the tangent from the last object exists, the wrap angle about it is ``φ ∈ [0, 3π/2)``
 (``φ < 0`` is a separation), the segment enters no collidable circle (that would be a
 collision, i.e. a wrap), crosses no earlier static segment and enters no disallowed
@@ -44,8 +44,8 @@ import numpy.typing as npt
 import shapely
 from shapely.geometry import MultiPolygon, Polygon
 
-from taut.geometry._tangents import directed_tangent
-from taut.wrapping._tree import DIR, OBJ, UX, UY, CableStateTree
+from taut.geometry import directed_tangent
+from taut.wrapping import CableStateTree
 
 if TYPE_CHECKING:
     from shapely.geometry.base import BaseGeometry
@@ -64,13 +64,14 @@ CRACK = 1e-9
 def _sweep_frame(tree: CableStateTree, node: int) -> tuple[np.ndarray, float, int, float, float]:
     """``(centre, radius, d, α0, span)``: the scan line starts along direction angle ``α0``
     and turns by ``d·s``, ``s ∈ [0, span]``."""
-    k = int(tree.I[node, OBJ])
+    k = tree.obstacle(node)
     c, r = tree.circles[k, :2], float(tree.circles[k, 2])
     r = r if r > CRACK else 0.0  # a sub-nanometre pulley is a point
-    d = int(tree.F[node, DIR])
+    d = tree.direction(node)
     if node == 0:
         return c, r, d, 0.0, 2 * math.pi
-    return c, r, d, math.atan2(tree.F[node, UY], tree.F[node, UX]), WRAP_SPAN
+    _, leaving = tree.ray(node)
+    return c, r, d, math.atan2(leaving[1], leaving[0]), WRAP_SPAN
 
 
 def _rays(c: np.ndarray, r: float, d: int, a0: float, s: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
@@ -110,7 +111,7 @@ class _Scene:
     """The blocking elements seen by one cable state: segments, circles, polygons."""
 
     def __init__(self, tree: CableStateTree, node: int, bbox: np.ndarray) -> None:
-        k = int(tree.I[node, OBJ])
+        k = tree.obstacle(node)
         segs = [tree.static_segments(node)[:-1]] if node != 0 else []
         self.polys = [np.asarray(p, float) for p in tree.disallowed]
         for p in self.polys:

@@ -29,7 +29,7 @@ import shapely
 from taut.atlas._atlas import PROBE, StructureAtlas
 from taut.atlas._chart import chart_lengths
 from taut.errors import TautError
-from taut.workspace._conditions import WorkspaceCondition, WrenchCondition, make_condition
+from taut.workspace import WorkspaceCondition, WrenchCondition, make_condition
 
 #: Grid points along the longer side of the atlas when no step is given.
 DEFAULT_RESOLUTION = 200
@@ -78,7 +78,7 @@ def atlas_workspace(
     progress: Callable[[int, int | None], None] | None = None,
 ) -> AtlasWorkspace:
     """Alg. 5.2: the workspace under ``condition`` (a name or a
-    :class:`~taut.workspace._conditions.WrenchCondition`) and the pruned chart list.
+    :class:`~taut.workspace.WrenchCondition`) and the pruned chart list.
     ``progress(done, charts)`` is called as charts are decided (visited, or pruned
     unvisited at the end).
 

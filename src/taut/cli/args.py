@@ -11,12 +11,12 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from taut.errors import PoseError, TautError
-from taut.model._limits import MAX_MAGNITUDE
+from taut.model import MAX_MAGNITUDE
 
 if TYPE_CHECKING:
     import numpy as np
 
-    from taut.model._robot import Robot
+    from taut.model import Robot
 
 _PI = re.compile(r"^([+-]?)(\d*\.?\d*)\*?pi(?:/(\d*\.?\d+))?$")
 
@@ -73,7 +73,7 @@ def assignments(text: str, what: str) -> dict[str, float | None]:
 
 def pose(robot: Robot, text: str) -> np.ndarray:
     """``x,y`` / ``x,y,theta`` / ``x,y,z,a,b,c`` followed by joint coordinates."""
-    from taut.kinematics._pose import as_poses
+    from taut.kinematics import as_poses
 
     values = vector(text, "--pose")
     if values.size != robot.pose_size:
@@ -90,7 +90,7 @@ def default_pose(robot: Robot) -> np.ndarray:
     if robot.reference is not None and robot.reference.poses:
         name = "home" if "home" in robot.reference.poses else next(iter(robot.reference.poses))
         return np.asarray(robot.reference.poses[name], float)
-    from taut.kinematics._forward import default_guess
+    from taut.kinematics import default_guess
 
     return default_guess(robot)
 

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 from taut.errors import TautError
 
 if TYPE_CHECKING:
-    from taut.atlas._atlas import StructureAtlas
+    from taut.atlas import StructureAtlas
     from taut.cli.main import Command
 
 HELP = """Build the structure atlas of a planar VSCR (one chart per reachable structure,
@@ -59,7 +59,7 @@ def cmd_atlas(ns: argparse.Namespace) -> int:
     from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
     from taut.cli.progress import progress_bar, wanted
-    from taut.wrapping._state import contacts_text
+    from taut.wrapping import contacts_text
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)

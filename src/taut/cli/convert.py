@@ -9,7 +9,7 @@ from taut.cli.main import Command, console, emit, load
 
 
 def cmd_convert(ns: argparse.Namespace) -> int:
-    from taut.model._formats import format_of, write_robot
+    from taut.model import format_of, write_robot
 
     format_of(ns.out, "write")  # an unknown OUT is refused before IN is read
     robot = load(ns.robot, ns.cable_set)

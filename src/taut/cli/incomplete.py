@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 from taut.cli.cables import cable_numbers, numbered
 
 if TYPE_CHECKING:
-    from taut.dgp._undecided import UndecidedBox
+    from taut.dgp import UndecidedBox
 
 #: Exit status of a ``--strict`` command whose answer is incomplete.
 INCOMPLETE = 3
@@ -28,7 +28,7 @@ EXIT_STATUS = (
 #: then says how many more; the JSON lists them all.
 NAMED = 12
 
-#: How the warning counts the boxes of each cause of :data:`taut.dgp._undecided.CAUSES`.
+#: How the warning counts the boxes of each cause of :data:`taut.dgp.CAUSES`.
 CAUSE_TEXT = {
     "narrow": "too narrow to split",
     "singular": "around a singular solution, even in 256-bit balls",
@@ -65,9 +65,9 @@ def warning(boxes: Sequence[UndecidedBox], what: str, multiprecision_hint: bool 
         causes[b.cause] += 1
     why = ", ".join(f"{k} {CAUSE_TEXT[c]}" for c, k in causes.items() if k)
     if causes["narrow"] and multiprecision_hint:
-        from taut.interval._precise import available
+        from taut.interval import precise_available
 
-        if not available():
+        if not precise_available():
             why += "; pip install 'taut[precise]' searches them again in multi-precision"
     noun = "box" if len(boxes) == 1 else "boxes"
     where = "sub-problem" if len(subsets) == 1 else "sub-problems"

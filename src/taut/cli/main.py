@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     from rich.console import Console
     from rich.table import Table
 
-    from taut.model._robot import Robot
+    from taut.model import Robot
 
 #: ``command(name, help, fn, robot=True)``: adds a sub-command (see :func:`build_parser`).
 Command = Callable[..., argparse.ArgumentParser]
@@ -111,7 +111,7 @@ def cmd_examples(ns: argparse.Namespace) -> int:
 
 
 def cmd_schema(ns: argparse.Namespace) -> int:
-    from taut.model._schema import schema_text
+    from taut.model import schema_text
 
     sys.stdout.write(schema_text())
     return 0
@@ -157,7 +157,7 @@ def cmd_ik(ns: argparse.Namespace) -> int:
 
 
 def cmd_tensions(ns: argparse.Namespace) -> int:
-    from taut.statics._tension import distribute_tensions
+    from taut.statics import distribute_tensions
 
     robot = load(ns.robot, ns.cable_set)
     pose = A.pose(robot, ns.pose) if ns.pose is not None else A.default_pose(robot)
@@ -227,7 +227,7 @@ def cmd_workspace(ns: argparse.Namespace) -> int:
     import numpy as np
 
     from taut.parallel import get_executor
-    from taut.statics._wrench import BoxWrenchSet
+    from taut.statics import BoxWrenchSet
     from taut.workspace import evaluate_workspace
 
     out = A.output_file(ns.out, "--out", {".npz"})

@@ -23,9 +23,8 @@ if TYPE_CHECKING:
     import numpy as np
 
     from taut.cli.main import Command
-    from taut.model._robot import Robot
-    from taut.planning._manifold import WrenchFeasibleManifold
-    from taut.planning._search import PathResult
+    from taut.model import Robot
+    from taut.planning import PathResult, WrenchFeasibleManifold
 
 #: Smallest chart radius: the number of charts grows as radius^-k on a k-dimensional slice,
 #: and below this even a 2-D slice needs more charts than a search can visit.
@@ -73,7 +72,7 @@ def _pose(robot: Robot, text: str, what: str) -> np.ndarray:
 
 def _fixed(text: str | None, start: np.ndarray) -> dict[str, float]:
     from taut.cli import args as A
-    from taut.planning._manifold import POSE_NAMES
+    from taut.planning import POSE_NAMES
 
     if text is None:
         return {}
@@ -151,8 +150,7 @@ def cmd_plan(ns: argparse.Namespace) -> int:
 
     from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
-    from taut.planning._manifold import POSE_NAMES, WrenchFeasibleManifold
-    from taut.planning._verify import verify_path
+    from taut.planning import POSE_NAMES, WrenchFeasibleManifold, verify_path
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)

@@ -23,8 +23,8 @@ if TYPE_CHECKING:
     import numpy as np
 
     from taut.cli.main import Command
-    from taut.dynamics._control import WrenchSteps
-    from taut.model._robot import Robot
+    from taut.dynamics import WrenchSteps
+    from taut.model import Robot
 
 DISTURBANCE_HELP = (
     "external wrench on the platform, unknown to the controller: T0:W (a step from T0 s on) or "
@@ -57,7 +57,7 @@ def waypoints(robot: Robot, text: str) -> np.ndarray:
 def disturbance(robot: Robot, text: str) -> WrenchSteps:
     """``--disturbance T0:W[;T0:T1:W...]`` (:data:`DISTURBANCE_HELP`)."""
     from taut.cli import args as A
-    from taut.dynamics._control import WrenchSteps
+    from taut.dynamics import WrenchSteps
 
     steps = []
     for part in text.split(";"):
@@ -96,9 +96,9 @@ def cmd_simulate(ns: argparse.Namespace) -> int:
     from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
     from taut.cli.progress import progress_bar, wanted
-    from taut.dynamics._control import DEFAULT_KD, DEFAULT_KP, simulate_control, with_mass_error
+    from taut.dynamics import DEFAULT_KD, DEFAULT_KP, simulate_control, with_mass_error
     from taut.motion import trajectory_from_waypoints
-    from taut.statics._tension import METHODS
+    from taut.statics import METHODS
 
     out = A.output_file(ns.out, "--out", {".csv"})
     plot = A.plot_file(ns.plot)

@@ -68,8 +68,14 @@ def cmd_trajectory(ns: argparse.Namespace) -> int:
 
     from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
-    from taut.wrapping._state import contacts_text
-    from taut.wrapping._trajectory import DEFAULT_SPEED, builtin_trajectory, full_poses, run_trajectory, sample_waypoints
+    from taut.wrapping import (
+        DEFAULT_SPEED,
+        builtin_trajectory,
+        contacts_text,
+        full_poses,
+        run_trajectory,
+        sample_waypoints,
+    )
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)

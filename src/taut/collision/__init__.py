@@ -10,10 +10,34 @@ References
    (docs/references.bib: lieskovsky2020)
 """
 
-from taut.collision._capsules import CapsuleModel, capsule_model, capsule_segments
-from taut.collision._proximity import ProximityResult, proximity
-from taut.collision._singularity import force_closure_singular, jacobian_singular, positive_span_lp
-from taut.collision._trajectory import CheckResult, check_poses, load_trajectory, sample_waypoints, trajectory_poses
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from taut._lazy import lazy_exports
+
+if TYPE_CHECKING:
+    from taut.collision._capsules import CapsuleModel, capsule_model, capsule_segments
+    from taut.collision._proximity import ProximityResult, proximity
+    from taut.collision._singularity import force_closure_singular, jacobian_singular, positive_span_lp
+    from taut.collision._trajectory import CheckResult, check_poses, load_trajectory, sample_waypoints, trajectory_poses
+
+#: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
+_LAZY = {
+    "CapsuleModel": "taut.collision._capsules",
+    "capsule_model": "taut.collision._capsules",
+    "capsule_segments": "taut.collision._capsules",
+    "ProximityResult": "taut.collision._proximity",
+    "proximity": "taut.collision._proximity",
+    "force_closure_singular": "taut.collision._singularity",
+    "jacobian_singular": "taut.collision._singularity",
+    "positive_span_lp": "taut.collision._singularity",
+    "CheckResult": "taut.collision._trajectory",
+    "check_poses": "taut.collision._trajectory",
+    "load_trajectory": "taut.collision._trajectory",
+    "sample_waypoints": "taut.collision._trajectory",
+    "trajectory_poses": "taut.collision._trajectory",
+}
 
 __all__ = [
     "CapsuleModel",
@@ -30,3 +54,5 @@ __all__ = [
     "sample_waypoints",
     "trajectory_poses",
 ]
+
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

@@ -39,9 +39,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from taut.kinematics._inverse import anchors_at, cable_paths
-from taut.kinematics._pose import body_frames
-from taut.model._robot import Robot
+from taut.kinematics import anchors_at, body_frames, cable_paths
+from taut.model import Robot
 
 __all__ = ["CapsuleModel", "capsule_model", "capsule_segments"]
 

@@ -1,7 +1,7 @@
 """Self-collision by capsule proximity: the matrices ``D`` and ``E`` of §3.4 of
 Lieskovský (2020) and the colliding pairs at each pose.
 
-For each pair of capsules ``(i, j)`` of :func:`taut.collision._capsules.capsule_model` the
+For each pair of capsules ``(i, j)`` of :func:`taut.collision.capsule_model` the
 proximity ``δ_ij`` is the segment–segment distance of §3.5
 (:mod:`taut.geometry._segments`), and the clearance is ``ε_ij = δ_ij − (ρ_i + ρ_j)``
 (§2.3.2).  The pose is interference free iff every ``ε_ij > 0``; a pair with ``ε_ij ≤ 0``
@@ -27,9 +27,9 @@ import numpy.typing as npt
 from numba import njit
 
 from taut.collision._capsules import SHARED_END_MIN, CapsuleModel, capsule_model, capsule_segments
-from taut.geometry._segments import segment_distance_scalar
-from taut.kinematics._pose import as_poses
-from taut.model._robot import Robot
+from taut.geometry import segment_distance_scalar
+from taut.kinematics import as_poses
+from taut.model import Robot
 
 __all__ = ["ProximityResult", "proximity"]
 

@@ -1,7 +1,7 @@
 """Singular configurations (Lieskovský 2020, §2.3.1, after Diao & Ma 2007, 2008).
 
 * **Jacobian singularity**: the inverse-kinematics Jacobian ``J`` (Eq. 2.3.1; Eq. 3.2.12 for
-  the adjustable platform, :func:`taut.kinematics._jointed.actuator_jacobian`) loses rank.
+  the adjustable platform, :func:`taut.kinematics.actuator_jacobian`) loses rank.
   Decided from its singular values: singular iff ``σ_min ≤ tol · σ_max`` (``JACOBIAN_TOL``),
   which is also the case when ``J`` has fewer rows than columns (fewer actuators than
   degrees of freedom: under-constrained robots are Jacobian-singular everywhere).
@@ -9,7 +9,7 @@
   not positively span the wrench space (Eqs. 2.3.2–2.3.3), so that some wrench cannot be
   resisted with positive tensions.  Two methods:
 
-  - ``"fast"`` — the vectorised hyperplane test :func:`taut.statics._feasibility.wrench_closure`
+  - ``"fast"`` — the vectorised hyperplane test :func:`taut.statics.wrench_closure`
     (a Numba kernel over all poses: ``rank W = m`` and every facet normal of ``W·[0,1]^n``
     has columns strictly on both sides, relative margin ``1e-10``);
   - ``"lp"`` — the reference: the columns (scaled to unit length, which does not change
@@ -40,7 +40,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TautError
-from taut.statics._feasibility import wrench_closure
+from taut.statics import wrench_closure
 
 __all__ = ["force_closure_singular", "jacobian_singular", "positive_span_lp"]
 
@@ -82,7 +82,7 @@ def positive_span_lp(W: npt.ArrayLike) -> np.ndarray:
         W = W[None]
     N, m, n = W.shape
     out = np.zeros(N, bool)
-    from taut.statics._highs import QuietHighs
+    from taut.statics import QuietHighs
 
     h = QuietHighs()
     inf = highspy.kHighsInf

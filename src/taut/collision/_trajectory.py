@@ -41,11 +41,9 @@ from taut.collision._capsules import CapsuleModel, capsule_model
 from taut.collision._proximity import ProximityResult, proximity
 from taut.collision._singularity import JACOBIAN_TOL, force_closure_singular, jacobian_singular
 from taut.errors import PoseError, TautError
-from taut.kinematics._inverse import OK, ik_status
-from taut.kinematics._jointed import actuator_jacobian
-from taut.kinematics._pose import as_poses
-from taut.model._robot import Robot
-from taut.motion._waypoints import complete_waypoints
+from taut.kinematics import CABLE_OK, actuator_jacobian, as_poses, ik_status
+from taut.model import Robot
+from taut.motion import complete_waypoints
 
 __all__ = ["CheckResult", "check_poses", "load_trajectory", "sample_waypoints", "trajectory_poses"]
 
@@ -234,7 +232,7 @@ def check_poses(
     prox = proximity(robot, arr, model)
     N = arr.shape[0]
     jac, ratio, fc = np.ones(N, bool), np.zeros(N), np.ones(N, bool)
-    ok = (ik_status(robot, arr)[1] == OK).all(axis=1)
+    ok = (ik_status(robot, arr)[1] == CABLE_OK).all(axis=1)
     if ok.any():
         J = actuator_jacobian(robot, arr[ok])
         jac[ok], ratio[ok] = jacobian_singular(J, jacobian_tol)

@@ -68,11 +68,9 @@ import numpy.typing as npt
 from numba import njit
 
 from taut.errors import SingularConfigurationError
-from taut.geometry._rotation import angles_from_matrix
-from taut.interval._expression import Expr, System, compile_system, compile_tape, const, variables
-from taut.interval._hc4 import evaluate_point
-from taut.interval._linear import LinearFilter
-from taut.model._robot import Robot
+from taut.geometry import angles_from_matrix
+from taut.interval import Expr, LinearFilter, System, compile_system, compile_tape, const, evaluate_point, variables
+from taut.model import Robot
 
 #: Three body points whose triangle has a smaller area ratio than this are collinear.
 COLLINEAR = 1e-9

@@ -28,8 +28,8 @@ future interval-analysis module:
   tests they cut the boxes 2.8-fold (suspended 3-cable robot), 12-fold (teaching
   prototype) and 66-fold (Robocrane)), and ``t_i² ‖a_i − b_i‖² ∈ [τ_min², τ_max²]`` when
   the robot bounds the tensions;
-* solver: :func:`taut.interval._branch_prune.branch_and_prune` (HC4, the tension filter of
-  §3.1.3 Eqs. 3.9–3.12 through :class:`~taut.interval._linear.LinearFilter`, Krawczyk
+* solver: :func:`taut.interval.branch_and_prune` (HC4, the tension filter of
+  §3.1.3 Eqs. 3.9–3.12 through :class:`~taut.interval.LinearFilter`, Krawczyk
   uniqueness and Newton refinement of §3.2.1).
 
 A free ``σ`` of tilt-and-torsion is sought through ``ψ = σ − φ`` (``R = Rz(φ) Ry(θ) Rz(ψ)``
@@ -69,13 +69,22 @@ from taut.dgp._formulation import load
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import UndecidedBox, cause_of, scaled
 from taut.errors import CableSetError, PoseError, TautError, UnsupportedRobotError
-from taut.geometry._rotation import rotation_matrix
-from taut.interval._branch_prune import branch_and_prune
-from taut.interval._expression import ONE, ZERO, Expr, System, compile_system, compile_tape, const, variables
-from taut.interval._krawczyk import Certificate
-from taut.interval._linear import LinearFilter
-from taut.kinematics._swivel import refuse_swivels
-from taut.model._robot import Robot
+from taut.geometry import rotation_matrix
+from taut.interval import (
+    ONE,
+    ZERO,
+    Certificate,
+    Expr,
+    LinearFilter,
+    System,
+    branch_and_prune,
+    compile_system,
+    compile_tape,
+    const,
+    variables,
+)
+from taut.kinematics import refuse_swivels
+from taut.model import Robot
 
 #: A 3×3 matrix of expressions (a rotation's entries as polynomials).
 Matrix = list[list[Expr]]
@@ -253,7 +262,7 @@ def _rz(c: Expr, s: Expr) -> Matrix:
 
 
 def _rotation(cs: Sequence[tuple[Expr, Expr]], convention: str) -> Matrix:
-    """``R`` of :func:`taut.geometry._rotation.rotation_matrix` as polynomials in the
+    """``R`` of :func:`taut.geometry.rotation_matrix` as polynomials in the
     ``(cos, sin)`` pairs ``cs`` of its three elementary rotations — for tilt-and-torsion
     those of ``φ``, ``θ`` and ``σ − φ`` (``R = Rz(φ) Ry(θ) Rz(σ − φ)``)."""
     (ca, sa), (cb, sb), (cc, sc) = cs
@@ -408,7 +417,7 @@ def solve_igp(
     — ``phix, phiy, phiz`` are accepted for the ``xyz`` conventions — or
     ``phi, theta, sigma`` for tilt-and-torsion); ``box``: ``(lower, upper)`` corners of the
     search box of the free position coordinates (default: see :func:`_position_box`);
-    ``eps``: the bisection threshold of :func:`~taut.interval._branch_prune.branch_and_prune`;
+    ``eps``: the bisection threshold of :func:`~taut.interval.branch_and_prune`;
     ``max_boxes``: its box budget — the well-posed problems of the examples take 10²–10⁴
     boxes, a continuum of solutions (an assignment that does not fix the pose, e.g. ``x, y,
     φ`` of the Robocrane with cables 1, 3, 5 at ``x = y = 0``) would take them all, at about

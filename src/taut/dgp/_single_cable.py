@@ -23,7 +23,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from taut.dgp._formulation import load
-from taut.model._robot import Robot
+from taut.model import Robot
 
 TWO_PI = 2.0 * np.pi
 

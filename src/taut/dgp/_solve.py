@@ -37,13 +37,19 @@ from taut.dgp._single_cable import single_cable_equilibria
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import UndecidedBox, cause_of, subproblem_box
 from taut.errors import TautError
-from taut.geometry._rotation import angles_from_matrix
-from taut.interval import _precise as precise
-from taut.interval._branch_prune import Box, bisect, branch_and_prune, same_solution
-from taut.interval._hc4 import contract
-from taut.interval._krawczyk import Certificate
-from taut.kinematics._swivel import refuse_swivels
-from taut.model._robot import Robot
+from taut.geometry import angles_from_matrix
+from taut.interval import (
+    Box,
+    Certificate,
+    bisect,
+    branch_and_prune,
+    contract,
+    precise_available,
+    same_solution,
+    solve_precise,
+)
+from taut.kinematics import refuse_swivels
+from taut.model import Robot
 from taut.parallel import Executor, as_executor
 
 if TYPE_CHECKING:
@@ -156,7 +162,7 @@ def certify_width(m: int) -> float:
 
 
 #: The bisection cuts the widest reference-point coordinate when it is this many times wider
-#: than the smear's pick (:func:`~taut.interval._branch_prune.branch_and_prune`): seed 58 of
+#: than the smear's pick (:func:`~taut.interval.branch_and_prune`): seed 58 of
 #: the random 3-cable suite, cables 1 and 3, 1.34 M boxes → 553; the same boxes on
 #: Table 4.3, 87 661 instead of 88 231 on Table 4.6.
 STARVE = 10.0
@@ -244,7 +250,7 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
     )
     found = [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]
     left = [(blo, bhi, cause_of(blo, bhi, eps)) for blo, bhi in res.undecided]
-    if multiprecision and any(cause == "narrow" for *_, cause in left) and precise.available():
+    if multiprecision and any(cause == "narrow" for *_, cause in left) and precise_available():
         found, left = _resolve_narrow(sp, found, left)
     undecided = [subproblem_box(sp, lengths, blo, bhi, cause) for blo, bhi, cause in left]
     certs: list[Certificate | None] = []
@@ -297,7 +303,7 @@ def _resolve_narrow(
     Returns the certificates and the boxes still undecided: ``"singular"`` those the
     multi-precision search shrank to its own limit, ``"narrow"`` those it did not reach."""
     pad = [(blo, bhi, NARROW_PAD * (bhi - blo)) for blo, bhi, cause in left if cause == "narrow"]
-    res = precise.solve_precise(
+    res = solve_precise(
         sp.system,
         [(np.nextafter(blo - w, -np.inf), np.nextafter(bhi + w, np.inf)) for blo, bhi, w in pad],
         domain=(sp.lo, sp.hi),
@@ -372,7 +378,7 @@ def solve_dgp(
     ``reference.lengths``), each with its stability flag and certificate.
 
     ``executor``: where the jobs run, as for
-    :func:`~taut.workspace._evaluate.evaluate_workspace` — ``None`` (serial), an executor of
+    :func:`~taut.workspace.evaluate_workspace` — ``None`` (serial), an executor of
     :func:`taut.parallel.get_executor`, or a ``distributed.Client``; it is not closed.
     ``split``: the domain of every sub-problem with at least 3 taut cables is cut into
     ``2**split`` pieces solved as separate jobs (default :data:`SPLIT`), so that one hard

@@ -53,13 +53,10 @@ from taut.dgp._inverse import IGPSolution
 from taut.dgp._solve import DGPSolution, check_lengths
 from taut.dgp._stability import smallest_eigenvalue
 from taut.errors import TautError, TrackingLostError
-from taut.geometry._rotation import CONVENTIONS, rotation_matrix
-from taut.geometry._rotation_kernels import angles as matrix_angles
-from taut.interval._expression import CONST, SQR
-from taut.interval._hc4 import point_kernel
-from taut.interval._krawczyk import certified_step
-from taut.kinematics._swivel import refuse_swivels
-from taut.model._robot import Robot
+from taut.geometry import CONVENTIONS, matrix_angles, rotation_matrix
+from taut.interval import CONST, SQR, certified_step, point_kernel
+from taut.kinematics import refuse_swivels
+from taut.model import Robot
 
 #: Relative floor of the Krawczyk box half-width (a zero step still needs a box).
 BOX_FLOOR = 1e-8
@@ -200,7 +197,7 @@ def _update(
 
     The unknowns of the pose ``(p0, R0)`` and tensions ``tau0`` (the three ``refs``
     reference points, then ``τ/ρ`` unless six cables are taut) start
-    :func:`~taut.interval._krawczyk.certified_step`; from its limit come the frame (:func:`~taut.dgp._formulation.frame_from_points`), the tensions
+    :func:`~taut.interval.certified_step`; from its limit come the frame (:func:`~taut.dgp._formulation.frame_from_points`), the tensions
     (for six taut cables the square statics of the ``s*`` tape, §3.1.3), every cable's
     span ``‖b_i − a_i‖`` and the smallest eigenvalue of the reduced Hessian (§3.2.2).
     Returns ``(status, p, R, angles, tensions, spans, eigenvalue, box width)``; status as
@@ -340,7 +337,7 @@ def _solution(s: _State, width: float) -> DGPSolution:
 
 def track(robot: Robot, previous_solution: DGPSolution | IGPSolution, lengths: npt.ArrayLike) -> DGPSolution:
     """The equilibrium that continues ``previous_solution`` (a :class:`DGPSolution` or an
-    :class:`~taut.dgp._inverse.IGPSolution`) at the new cable ``lengths`` (see the module
+    :class:`~taut.dgp.IGPSolution`) at the new cable ``lengths`` (see the module
     docstring); raises :class:`~taut.errors.TrackingLostError` when it
     cannot be certified.  ``certificate_width`` is the width of the Krawczyk enclosure;
     ``uniqueness_radius`` is not computed (0).

@@ -39,16 +39,16 @@ if TYPE_CHECKING:
         velocity_jacobian,
     )
 
-#: Every name is imported on first use (PEP 562): the forward dynamics loads Numba and SciPy.
+#: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
+    "ControlResult": "taut.dynamics._control",
     "DEFAULT_KD": "taut.dynamics._control",
     "DEFAULT_KP": "taut.dynamics._control",
-    "ControlResult": "taut.dynamics._control",
     "WrenchSteps": "taut.dynamics._control",
     "simulate_control": "taut.dynamics._control",
     "with_mass_error": "taut.dynamics._control",
-    "INTEGRATORS": "taut.dynamics._forward",
     "ForwardDynamicsResult": "taut.dynamics._forward",
+    "INTEGRATORS": "taut.dynamics._forward",
     "IntegrationError": "taut.dynamics._forward",
     "acceleration": "taut.dynamics._forward",
     "cable_tensions": "taut.dynamics._forward",
@@ -69,31 +69,31 @@ _LAZY = {
 }
 
 __all__ = [
+    "ControlResult",
     "DEFAULT_KD",
     "DEFAULT_KP",
-    "ControlResult",
-    "WrenchSteps",
-    "simulate_control",
-    "with_mass_error",
-    "INTEGRATORS",
     "ForwardDynamicsResult",
+    "INTEGRATORS",
     "IntegrationError",
-    "acceleration",
-    "cable_tensions",
-    "forward_dynamics",
-    "rk4_step",
     "InverseDynamicsResult",
-    "inverse_dynamics",
-    "required_wrench",
     "LoopModel",
-    "loop_model",
+    "WrenchSteps",
+    "acceleration",
     "bias_forces",
+    "cable_tensions",
     "coriolis_matrix",
+    "forward_dynamics",
     "generalized_forces",
     "gravity_forces",
+    "inverse_dynamics",
+    "loop_model",
     "mass_matrix",
     "platform_dynamics",
+    "required_wrench",
+    "rk4_step",
+    "simulate_control",
     "velocity_jacobian",
+    "with_mass_error",
 ]
 
 __getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

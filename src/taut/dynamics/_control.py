@@ -10,10 +10,10 @@ reference ``(q_r, q̇_r, q̈_r)`` of a :class:`~taut.motion.Motion` and commands
 the inverse-dynamics (computed-torque) law of Siciliano et al. 2009, §8.5.2, with the
 pose as the generalized coordinates and ``M̂, Ĉ, ĝ`` the controller's model, which may differ
 from the plant (:func:`with_mass_error`).  The wrench is turned into tensions by a tension
-distribution (:meth:`taut.dynamics._loop.LoopModel.tensions`: the compiled closed form, and
+distribution (:meth:`taut.dynamics.LoopModel.tensions`: the compiled closed form, and
 ``method`` where it gives up).  The tensions are held over the control period (zero-order
 hold) while the plant, with its exact model and an optional external wrench ``w_d(t)``, is
-integrated by ``substeps`` RK4 steps (:meth:`~taut.dynamics._loop.LoopModel.step`).
+integrated by ``substeps`` RK4 steps (:meth:`~taut.dynamics.LoopModel.step`).
 
 A hold delays the command by half a period on average, which leaves an error of first order
 in the period even with an exact model.  With ``predict`` (the default) the law is evaluated
@@ -65,9 +65,8 @@ import numpy.typing as npt
 from taut.dynamics._forward import IntegrationError
 from taut.dynamics._loop import LoopModel, loop_model
 from taut.errors import InfeasiblePoseError, TautError
-from taut.model._robot import Robot
-from taut.motion._trajectory import Motion
-from taut.motion._waypoints import angle_columns
+from taut.model import Robot
+from taut.motion import Motion, angle_columns
 
 __all__ = [
     "DEFAULT_KP",
@@ -356,7 +355,7 @@ def simulate_control(
     with a mass error), with the same cables.  ``disturbance(t) -> (dof,)``: an external
     wrench on the plant, unknown to the controller (e.g. :class:`WrenchSteps`), held over each
     RK4 step.  ``method``: the distribution where the closed form gives up (a method of
-    :data:`taut.statics._tension.METHODS`).  ``predict``: evaluate the law half a period ahead
+    :data:`taut.statics.METHODS`).  ``predict``: evaluate the law half a period ahead
     (see the module's docstring; False: at the sampled state).  ``q0``, ``qd0``: the initial
     state (default the reference's).  ``progress(done, total)`` is called with the updates
     done.
@@ -383,9 +382,9 @@ def simulate_control(
     """
     from taut.dynamics._kernels import control_updates
     from taut.dynamics._platform import as_rates
-    from taut.geometry._rotation import rotation_matrix
-    from taut.kinematics._pose import as_poses
-    from taut.statics._tension import EQUILIBRIUM_RTOL
+    from taut.geometry import rotation_matrix
+    from taut.kinematics import as_poses
+    from taut.statics import EQUILIBRIUM_RTOL
 
     if motion.robot.pose_size != robot.pose_size or motion.robot.orientation != robot.orientation:
         raise TautError(f"the motion is a trajectory of {motion.robot.name}, whose poses are not those of {robot.name}")

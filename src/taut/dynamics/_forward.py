@@ -31,9 +31,8 @@ import numpy.typing as npt
 
 from taut.dynamics._platform import CONVENTION_FACTORS, SPATIAL, PlatformDynamics, as_rates, platform_dynamics
 from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError
-from taut.kinematics._elastic import robot_stiffness, tension_from_stretch
-from taut.kinematics._pose import as_poses
-from taut.model._robot import Robot
+from taut.kinematics import as_poses, robot_stiffness, tension_from_stretch
+from taut.model import Robot
 
 __all__ = [
     "IntegrationError",
@@ -148,7 +147,7 @@ def quick_rows(
     """Poses ``q`` and per-pose arrays ``others`` (value, width; None for zeros) as
     C-contiguous ``(N, ·)`` arrays, and whether ``q`` was one pose, when the shapes are right
     and every value is finite (and the poses within 1e9, like
-    :func:`~taut.kinematics._pose.as_poses`) — checked in a few operations, because a control
+    :func:`~taut.kinematics.as_poses`) — checked in a few operations, because a control
     loop calls this every step; None otherwise, and the caller's full checks name the problem.
     Not for jointed platforms (no joint limits are checked)."""
     try:
@@ -204,12 +203,12 @@ def _checked_inputs(
 
 
 def _cable_wrench(robot: Robot, q: np.ndarray, u: np.ndarray, elastic: bool) -> tuple[np.ndarray, np.ndarray]:
-    """``W τ (N, dof)`` and the tensions ``(N, n)`` through :func:`taut.kinematics._inverse.ik_status`
+    """``W τ (N, dof)`` and the tensions ``(N, n)`` through :func:`taut.kinematics.ik_status`
     (cables through swivelling pulleys)."""
-    from taut.kinematics._inverse import OK, ik_status
+    from taut.kinematics import CABLE_OK, ik_status
 
     ik, status = ik_status(robot, q)
-    bad = (status != OK).any(axis=1)
+    bad = (status != CABLE_OK).any(axis=1)
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
         raise InfeasiblePoseError(
@@ -283,7 +282,7 @@ def cable_tensions(robot: Robot, q: npt.ArrayLike, unstretched: npt.ArrayLike) -
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, Eq. 2.15. (docs/references.bib: rushton2022)
     """
-    from taut.kinematics._inverse import lengths_at
+    from taut.kinematics import lengths_at
 
     arr, single = as_poses(robot, q)
     l0 = _unstretched(robot, unstretched, arr.shape[0])

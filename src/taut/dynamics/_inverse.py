@@ -34,8 +34,8 @@ import numpy.typing as npt
 from taut.dynamics._forward import KernelModel, kernel_model, quick_rows
 from taut.dynamics._platform import as_rates
 from taut.errors import TautError
-from taut.kinematics._pose import as_poses
-from taut.model._robot import Robot
+from taut.kinematics import as_poses
+from taut.model import Robot
 
 __all__ = ["InverseDynamicsResult", "required_wrench", "inverse_dynamics"]
 
@@ -140,7 +140,7 @@ def _samples(
     closed-form tensions ``(N, n)`` and the kernel status ``(N,)`` (see
     :func:`taut.dynamics._kernels.inverse_samples`)."""
     from taut.dynamics._kernels import inverse_samples
-    from taut.statics._tension import EQUILIBRIUM_RTOL
+    from taut.statics import EQUILIBRIUM_RTOL
 
     N, dof = q.shape
     ip, fp, cab = model.args
@@ -184,7 +184,7 @@ def inverse_dynamics(
     """Cable tensions along a sampled motion ``(q, q̇, q̈)`` (each ``(N, dof)``, or one sample
     ``(dof,)``: a result without the batch axis).
 
-    ``method`` is a tension distribution method of :data:`taut.statics._tension.METHODS`
+    ``method`` is a tension distribution method of :data:`taut.statics.METHODS`
     (``lp``, ``qp``, ``inf``, ``closed-form``, ``improved-closed-form``, ``barycentric``); the
     bounds are ``robot.tension_bounds``.  ``w_ext`` is an external wrench besides the robot's
     weight, ``time (N,)`` the sample times (kept in the result for plots).  Samples without an
@@ -193,7 +193,7 @@ def inverse_dynamics(
     The wrenches, structure matrices and, for ``closed-form``, the tensions are computed by a
     compiled kernel (:func:`taut.dynamics._kernels.inverse_samples`); the samples it does not
     accept, and every sample of the other methods, go to
-    :func:`taut.statics._tension.solve_tensions`, so that ``feasible`` means what it means there.
+    :func:`taut.statics.solve_tensions`, so that ``feasible`` means what it means there.
 
     Raises
     ------
@@ -211,7 +211,7 @@ def inverse_dynamics(
     .. [3] A. Pott, T. Bruckmann, L. Mikelsons, "Closed-form force distribution for parallel
        wire robots", Computational Kinematics, Springer, 2009. (docs/references.bib: pott2009)
     """
-    from taut.statics._tension import METHODS, solve_tensions
+    from taut.statics import METHODS, solve_tensions
 
     if method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
@@ -237,7 +237,7 @@ def inverse_dynamics(
         wrench[part] = wr
         ok = st != ZERO_LENGTH
         if not model.straight:
-            from taut.kinematics._batch import batch_structure_matrices
+            from taut.kinematics import batch_structure_matrices
 
             _, W, ok = batch_structure_matrices(robot, arr[part])
         done = ok & (st == 0) if closed else np.zeros_like(ok)

@@ -37,11 +37,11 @@ and ``h = C q̇ + g`` with ``C = Tᵀ (M_X Ṫ + C_X T)``,
 ``Ṁ − 2 C`` is skew-symmetric (Siciliano et al. 2009, §7.2.1); ``J̇_b`` differentiates the
 columns above (``ė_j = ω_P × e_j``, and the velocities of ``c_b`` and ``o_j``).  Here
 ``Q_X`` are generalized forces in twist coordinates — the rows of the jointed structure
-matrix ``A`` times ``(τ, ζ)`` (:func:`taut.kinematics._jointed.jointed_structure_matrix`: its
+matrix ``A`` times ``(τ, ζ)`` (:func:`taut.kinematics.jointed_structure_matrix`: its
 platform rows are ``W τ``, a wrench about ``p``, its joint rows forces along and torques
 about the joint axes), plus an external wrench on the platform.  At rest (``q̇ = q̈ = 0``,
 ``h = g``) and with ``T`` regular the equations are the jointed statics
-``A (τ, ζ) + Q_ext = 0`` of :func:`taut.kinematics._jointed.joint_forces`, ``g = −Tᵀ Q_ext``.
+``A (τ, ζ) + Q_ext = 0`` of :func:`taut.kinematics.joint_forces`, ``g = −Tᵀ Q_ext``.
 
 References
 ----------
@@ -60,9 +60,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from taut.errors import UnsupportedRobotError
-from taut.geometry._rates import rate_matrix, rate_matrix_derivative
-from taut.kinematics._pose import body_frames
-from taut.model._robot import Robot
+from taut.geometry import rate_matrix, rate_matrix_derivative
+from taut.kinematics import body_frames
+from taut.model import Robot
 
 __all__ = [
     "BodyInertia",

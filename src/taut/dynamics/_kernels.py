@@ -551,7 +551,7 @@ def control_updates(
     A: np.ndarray,
     T: np.ndarray,
 ) -> int:
-    """Control updates ``start, start + 1, …, stop − 1`` of :func:`taut.dynamics._control.simulate_control`
+    """Control updates ``start, start + 1, …, stop − 1`` of :func:`taut.dynamics.simulate_control`
     while the closed-form distribution (:func:`closed_form_one`) succeeds: the law
     ``q̈_cmd = q̈_r + K_d ė + K_p e`` (angle errors wrapped into ``[−π, π)``; with ``predict``
     evaluated at the state predicted half a period ahead with the acceleration measured over the

@@ -1,6 +1,6 @@
 """The inner loop of a controller: one state at a time, as fast as the compiled kernels allow.
 
-:func:`taut.dynamics._forward.rk4_step` and :func:`taut.dynamics._inverse.inverse_dynamics`
+:func:`taut.dynamics.rk4_step` and :func:`taut.dynamics.inverse_dynamics`
 check their input and build immutable results, which costs several times the arithmetic of
 one state.  A control loop at 1 kHz calls them every millisecond with states it produced
 itself, so :class:`LoopModel` checks the robot once and then runs the kernels on
@@ -26,7 +26,7 @@ import numpy.typing as npt
 
 from taut.dynamics._forward import KernelModel, kernel_model
 from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError, UnsupportedRobotError
-from taut.model._robot import Robot
+from taut.model import Robot
 
 __all__ = ["LoopModel", "loop_model"]
 
@@ -49,7 +49,7 @@ class LoopModel:
         when not).  Raises :class:`~taut.errors.InfeasiblePoseError` where a cable has zero
         length."""
         from taut.dynamics._kernels import OK, ZERO_LENGTH, inverse_samples
-        from taut.statics._tension import EQUILIBRIUM_RTOL, solve_tensions
+        from taut.statics import EQUILIBRIUM_RTOL, solve_tensions
 
         b = self.buffers
         b["q"][0], b["qd"][0], b["qdd"][0] = q, qd, qdd
@@ -124,7 +124,7 @@ def loop_model(robot: Robot, method: str = "qp") -> LoopModel:
     TautError
         An unknown method.
     """
-    from taut.statics._tension import METHODS
+    from taut.statics import METHODS
 
     if method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")

@@ -14,7 +14,7 @@ structure matrix ``W``, §2.4), read
     ``b_ν = (m ω × (ω × r), ω × I_p ω)``,
 
 with ``w₀`` the robot's own load (its weight ``Robot.weight`` at the centre of mass and the
-constant ``platform.wrench``: :func:`taut.statics._wrench.external_wrench`).  The moment rows of
+constant ``platform.wrench``: :func:`taut.statics.external_wrench`).  The moment rows of
 ``W`` are moments, not generalized forces of the angles: by virtual work the generalized force
 of a wrench ``w`` is ``Jᵀ w`` (``Eᵀ n`` for the angles).  Premultiplying by ``Jᵀ`` gives the
 Lagrange form in the pose coordinates (Siciliano et al. 2009, §7.1–7.2)
@@ -31,7 +31,7 @@ orientation convention).
 A platform carrying jointed bodies (``platform.bodies``) has the pose ``q = (p, φ, q_J)`` with
 the joint coordinates: :func:`mass_matrix`, :func:`bias_forces`, :func:`gravity_forces`,
 :func:`velocity_jacobian` (``T = diag(1, E, 1)``) and :func:`generalized_forces` (of the rows
-of :func:`taut.kinematics._jointed.jointed_structure_matrix`: a wrench about ``p``, then joint
+of :func:`taut.kinematics.jointed_structure_matrix`: a wrench about ``p``, then joint
 forces) and :func:`coriolis_matrix` take it to :mod:`taut.dynamics._jointed` when every body
 has a mass and an inertia; :func:`platform_dynamics` (hence forward and inverse dynamics)
 refuses it (:class:`~taut.errors.UnsupportedRobotError`).
@@ -60,11 +60,9 @@ from taut.dynamics._jointed import (
     twist_jacobian,
 )
 from taut.errors import UnsupportedRobotError
-from taut.geometry._rates import rate_matrix, rate_matrix_derivative
-from taut.geometry._rotation import planar_rotation, rotation_matrix
-from taut.geometry._vectors import cross
-from taut.kinematics._pose import as_poses
-from taut.model._robot import Robot
+from taut.geometry import cross, planar_rotation, rate_matrix, rate_matrix_derivative, rotation_matrix
+from taut.kinematics import as_poses
+from taut.model import Robot
 
 __all__ = [
     "PlatformDynamics",
@@ -225,7 +223,7 @@ def twist_inertia(pd: PlatformDynamics, R: np.ndarray, r: np.ndarray) -> np.ndar
 
 def velocity_jacobian(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
     """``J (N, dof, dof)`` with the twist ``(ṗ, ω) = J q̇``: ``diag(1, E(φ))`` for a spatial
-    platform (:func:`taut.geometry._rates.rate_matrix`), the identity otherwise.  The
+    platform (:func:`taut.geometry.rate_matrix`), the identity otherwise.  The
     generalized force of a wrench ``w`` (taut's convention: moments about ``p``) is ``Jᵀ w``.
     A jointed platform's ``J = diag(1, E(φ), 1)`` also maps the joint rates (``(P, P)``,
     ``P = pose_size``)."""
@@ -325,8 +323,8 @@ def coriolis_matrix(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.nda
 def gravity_forces(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
     """``g(q) = −Jᵀ w₀`` ``(N, dof)``: the generalized forces of the robot's weight (and of a
     constant ``platform.wrench``), so that a platform at rest is in equilibrium when
-    ``g = Jᵀ W τ`` — the statics of :func:`taut.statics._wrench.external_wrench` (jointed
-    platforms: also the bodies' weights, and the joint rows of :func:`taut.kinematics._jointed.joint_forces`)."""
+    ``g = Jᵀ W τ`` — the statics of :func:`taut.statics.external_wrench` (jointed
+    platforms: also the bodies' weights, and the joint rows of :func:`taut.kinematics.joint_forces`)."""
     arr, single = _poses(robot, q)
     if robot.n_joints:
         g = jointed_gravity_forces(robot, arr)
@@ -365,7 +363,7 @@ def generalized_forces(robot: Robot, q: npt.ArrayLike, wrench: npt.ArrayLike) ->
     """``Jᵀ w`` ``(N, dof)``: the generalized forces of wrenches ``w`` in taut's convention
     (forces, then moments about ``p`` in the fixed frame, like ``W τ``).  On a jointed platform
     ``w`` also holds the joint forces (along, or torques about, the joint axes), as the rows of
-    :func:`taut.kinematics._jointed.jointed_structure_matrix`: the cables' generalized forces
+    :func:`taut.kinematics.jointed_structure_matrix`: the cables' generalized forces
     are ``Jᵀ A[:, :n] τ``."""
     arr, single = _poses(robot, q)
     w = as_rates(robot, wrench, arr.shape[0], "wrenches")

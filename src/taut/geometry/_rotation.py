@@ -79,6 +79,6 @@ def angles_from_matrix(R: npt.ArrayLike, convention: str = "xyz-fixed") -> np.nd
         raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
     R = np.asarray(R, dtype=float)
     flat = np.ascontiguousarray(R.reshape(-1, 3, 3))
-    from taut.geometry._rotation_kernels import angles
+    from taut.geometry._rotation_kernels import matrix_angles
 
-    return angles(flat, CONVENTIONS.index(convention)).reshape(R.shape[:-2] + (3,))
+    return matrix_angles(flat, CONVENTIONS.index(convention)).reshape(R.shape[:-2] + (3,))

@@ -1,6 +1,6 @@
-"""The compiled kernel of :func:`taut.geometry._rotation.angles_from_matrix`, in a module of
+"""The compiled kernel of :func:`taut.geometry.angles_from_matrix`, in a module of
 its own so that Numba is imported only by the code that calls it (the conventions are those
-of :data:`taut.geometry._rotation.CONVENTIONS`, by index)."""
+of :data:`taut.geometry.CONVENTIONS`, by index)."""
 
 from __future__ import annotations
 
@@ -11,9 +11,9 @@ from numba import njit
 
 
 @njit(cache=True)
-def angles(R: np.ndarray, code: int) -> np.ndarray:
+def matrix_angles(R: np.ndarray, code: int) -> np.ndarray:
     """Angles of the matrices ``R`` (``(N, 3, 3)``), convention ``code`` (index in
-    :data:`~taut.geometry._rotation.CONVENTIONS`).  Compiled: tracking converts one matrix
+    :data:`~taut.geometry.CONVENTIONS`).  Compiled: tracking converts one matrix
     per update, where array ufuncs on a single matrix cost more than the arithmetic."""
     out = np.empty((R.shape[0], 3))
     for k in range(R.shape[0]):

@@ -9,33 +9,116 @@ References
    di Bologna, 2015, §1.3 and Ch. 3. (docs/references.bib: berti2015)
 """
 
-from taut.interval._arithmetic import Interval, centred_form
-from taut.interval._branch_prune import BranchAndPruneResult, branch_and_prune
-from taut.interval._expression import System, compile_system, const, derivative, sqrt, variables
-from taut.interval._hc4 import contract, evaluate, evaluate_point
-from taut.interval._krawczyk import Certificate, certify, inflate, krawczyk, newton
-from taut.interval._linear import LinearFilter, interval_gauss, preconditioned_solve
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from taut._lazy import lazy_exports
+
+if TYPE_CHECKING:
+    from taut.interval._arithmetic import Interval, centred_form
+    from taut.interval._branch_prune import (
+        Box,
+        BranchAndPruneResult,
+        bisect,
+        branch_and_prune,
+        file_certificate,
+        same_solution,
+    )
+    from taut.interval._expression import (
+        CONST,
+        ONE,
+        SQR,
+        ZERO,
+        Expr,
+        System,
+        compile_system,
+        compile_tape,
+        const,
+        derivative,
+        sqrt,
+        variables,
+    )
+    from taut.interval._hc4 import contract, evaluate, evaluate_point, point_kernel
+    from taut.interval._krawczyk import Certificate, certified_step, certify, inflate, krawczyk, newton
+    from taut.interval._linear import LinearFilter, interval_gauss, preconditioned_solve
+    from taut.interval._precise import precise_available, solve_precise
+
+#: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
+_LAZY = {
+    "solve_precise": "taut.interval._precise",
+    "precise_available": "taut.interval._precise",
+    "Interval": "taut.interval._arithmetic",
+    "centred_form": "taut.interval._arithmetic",
+    "Box": "taut.interval._branch_prune",
+    "BranchAndPruneResult": "taut.interval._branch_prune",
+    "bisect": "taut.interval._branch_prune",
+    "branch_and_prune": "taut.interval._branch_prune",
+    "file_certificate": "taut.interval._branch_prune",
+    "same_solution": "taut.interval._branch_prune",
+    "CONST": "taut.interval._expression",
+    "Expr": "taut.interval._expression",
+    "ONE": "taut.interval._expression",
+    "SQR": "taut.interval._expression",
+    "System": "taut.interval._expression",
+    "ZERO": "taut.interval._expression",
+    "compile_system": "taut.interval._expression",
+    "compile_tape": "taut.interval._expression",
+    "const": "taut.interval._expression",
+    "derivative": "taut.interval._expression",
+    "sqrt": "taut.interval._expression",
+    "variables": "taut.interval._expression",
+    "contract": "taut.interval._hc4",
+    "evaluate": "taut.interval._hc4",
+    "evaluate_point": "taut.interval._hc4",
+    "point_kernel": "taut.interval._hc4",
+    "Certificate": "taut.interval._krawczyk",
+    "certified_step": "taut.interval._krawczyk",
+    "certify": "taut.interval._krawczyk",
+    "inflate": "taut.interval._krawczyk",
+    "krawczyk": "taut.interval._krawczyk",
+    "newton": "taut.interval._krawczyk",
+    "LinearFilter": "taut.interval._linear",
+    "interval_gauss": "taut.interval._linear",
+    "preconditioned_solve": "taut.interval._linear",
+}
 
 __all__ = [
+    "Box",
     "BranchAndPruneResult",
+    "CONST",
     "Certificate",
+    "Expr",
     "Interval",
     "LinearFilter",
+    "ONE",
+    "SQR",
     "System",
+    "ZERO",
+    "bisect",
     "branch_and_prune",
     "centred_form",
+    "certified_step",
     "certify",
     "compile_system",
+    "compile_tape",
     "const",
     "contract",
     "derivative",
     "evaluate",
     "evaluate_point",
+    "file_certificate",
     "inflate",
     "interval_gauss",
     "krawczyk",
     "newton",
+    "point_kernel",
+    "precise_available",
     "preconditioned_solve",
+    "same_solution",
+    "solve_precise",
     "sqrt",
     "variables",
 ]
+
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

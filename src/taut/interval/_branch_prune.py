@@ -26,7 +26,7 @@ Boxes narrower than ``eps`` in every variable that could not be certified are re
 ``undecided`` (singular or nearly-coincident solutions): nothing is silently dropped.
 
 The loop runs in a Numba kernel (:func:`_drive`, a depth-first stack of boxes) when the
-filters are :class:`~taut.interval._linear.LinearFilter` s; it hands a box back to Python
+filters are :class:`~taut.interval.LinearFilter` s; it hands a box back to Python
 only to certify a solution (Newton, Krawczyk, inflation: a handful of calls per solution).
 
 References
@@ -236,14 +236,14 @@ def branch_and_prune(
 
     ``method="numba"`` runs the box loop in a compiled kernel (:func:`_drive`) and returns
     to Python only to certify a solution; it needs every filter to be a
-    :class:`~taut.interval._linear.LinearFilter`.  ``"python"`` is the reference loop (any
+    :class:`~taut.interval.LinearFilter`.  ``"python"`` is the reference loop (any
     filter); ``"auto"`` picks ``"numba"`` when it can.  With ``passes=1`` both run the same
     algorithm (box counts may differ by a few: the preconditioners are inverted by
     different float routines).  With ``passes > 1`` the compiled loop repeats
     HC4 → filter → Krawczyk narrowing on a box while Krawczyk shrinks its widest
     primary variable by more than the fraction ``gain`` (a fixpoint of the contractors
     before bisecting); ``ratio`` is the HC4 stopping threshold of
-    :func:`taut.interval._hc4.contract` in the compiled loop.  The result's ``stats`` count
+    :func:`taut.interval.contract` in the compiled loop.  The result's ``stats`` count
     the boxes each operator discarded (compiled loop only).
 
     ``progress(boxes, None)`` is called every :data:`PROGRESS_BOXES` boxes processed (the

@@ -12,7 +12,7 @@ the exact rational it stands for (:attr:`taut.interval._expression.Tape.exact`),
 operator separates and certifies roots down to distances of about ``2^(−PRECISION/2)``.
 
 The search runs on a box the double search gave up on, with the same constraints: the
-equations and the redundant constraints of the :class:`~taut.interval._expression.System`
+equations and the redundant constraints of the :class:`~taut.interval.System`
 discard boxes where their enclosure misses their bounds; the Krawczyk operator
 ``K(X) = y − C f(y) + (I − C J(X))(X − y)`` (``y`` the box's centre, ``C`` the midpoint
 inverse of ``J(X)``) discards a box when ``K(X) ∩ X = ∅``, proves a unique root in it when
@@ -75,7 +75,7 @@ class PreciseResult:
     boxes: int
 
 
-def available() -> bool:
+def precise_available() -> bool:
     """python-flint can be imported."""
     try:
         import flint  # noqa: F401

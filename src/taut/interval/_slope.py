@@ -47,7 +47,7 @@ NODES_2 = 0.5 + np.array([-1.0, 1.0]) * np.sqrt(3.0) / 6.0 + 1e-15
 
 
 def slopes(system: System, lo: np.ndarray, hi: np.ndarray, points: int) -> tuple[np.ndarray, np.ndarray]:
-    """The slope enclosure of a :class:`~taut.interval._expression.System`'s Jacobian
+    """The slope enclosure of a :class:`~taut.interval.System`'s Jacobian
     entries over the box (``points`` nodes; the Jacobian over the box when 0)."""
     if not points:
         return evaluate(system.jacobian, lo, hi)

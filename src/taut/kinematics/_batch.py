@@ -2,7 +2,7 @@
 many poses at once, for workspace grids (Rushton 2022, §2.1.1, Eqs. 2.1,
 2.8 and 2.10; the conventions of :mod:`taut.kinematics._inverse`).
 
-Same quantities as :func:`taut.kinematics._inverse.inverse_kinematics` for robots without
+Same quantities as :func:`taut.kinematics.inverse_kinematics` for robots without
 jointed bodies (point-mass, planar and spatial rigid platforms, all orientation
 conventions, cables through swivelling pulleys as in :mod:`taut.kinematics._swivel`), in one
 pass over the poses instead of a chain of NumPy temporaries.  A pose with a zero-length
@@ -20,16 +20,12 @@ References
 from __future__ import annotations
 
 import numpy as np
-import numpy.typing as npt
 from numba import njit
 
-from taut.geometry._rotation import CONVENTIONS
-from taut.kinematics._inverse import MIN_LENGTH, OK, ik_status
-from taut.kinematics._pose import as_poses
-from taut.kinematics._swivel import SINGULAR_TOL, normal_fallback, swivel_parameters
-from taut.model._robot import Robot
-
-__all__ = ["batch_structure_matrices", "supports_batch"]
+from taut.geometry import CONVENTIONS, axis_frames
+from taut.kinematics._paths import MIN_LENGTH
+from taut.kinematics._swivel import SINGULAR_TOL, swivel_parameters
+from taut.model import Robot
 
 
 @njit(cache=True, nogil=True)
@@ -102,7 +98,7 @@ def _swivel_cable(
 ) -> tuple[float, bool]:
     """Length of cable ``i`` from its pulley at ``exits[i]`` (unit ``axes[i]``, radius ``r``)
     to the anchor ``b``, and whether it has a tangent point; ``u`` receives its unit vector
-    (the formulas of :func:`taut.kinematics._swivel.swivel_paths`, ``normals[i]`` the pulley
+    (the formulas of :func:`taut.kinematics.swivel_paths`, ``normals[i]`` the pulley
     plane's normal direction for an anchor on the axis)."""
     v0, v1, v2 = b[0] - exits[i, 0], b[1] - exits[i, 1], b[2] - exits[i, 2]
     k0, k1, k2 = axes[i, 0], axes[i, 1], axes[i, 2]
@@ -221,17 +217,10 @@ def supports_batch(robot: Robot) -> bool:
     return robot.n_joints == 0 and not (robot.dimension == 2 and robot.swivel_cables)
 
 
-def batch_structure_matrices(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Cable lengths ``(N, n)``, structure matrices ``W (N, m, n)`` and a mask ``ok (N,)``
-    of the poses where every cable has a length of at least ``MIN_LENGTH`` and, through a
-    swivelling pulley, a tangent point (elsewhere ``W`` is zero).  Robots with jointed bodies
-    and planar robots with swivelling pulleys go through the NumPy implementation
-    (:func:`taut.kinematics._inverse.ik_status`)."""
-    arr, _ = as_poses(robot, poses)
+def kernel_structure_matrices(robot: Robot, arr: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`taut.kinematics.batch_structure_matrices` through the Numba kernel, for a robot
+    it supports (:func:`supports_batch`) and ``(N, pose_size)`` poses already checked."""
     N, n, m, d = arr.shape[0], robot.n_cables, robot.wrench_dim, robot.dimension
-    if not supports_batch(robot):
-        ik, status = ik_status(robot, arr)
-        return ik.lengths, ik.structure_matrix, (status == OK).all(axis=1)
     lengths = np.empty((N, n))
     W = np.zeros((N, m, n))
     ok = np.empty(N, np.bool_)
@@ -240,7 +229,7 @@ def batch_structure_matrices(robot: Robot, poses: npt.ArrayLike) -> tuple[np.nda
     if robot.swivel_cables:
         idx, unit_axes, pulley_radii = swivel_parameters(robot)
         axes[idx], radii[idx], swivel[idx] = unit_axes, pulley_radii, True
-        normals[idx] = normal_fallback(axes[idx])
+        normals[idx] = axis_frames(axes[idx])[:, :, 1]
     _ik_kernel(
         np.ascontiguousarray(arr),
         robot.exits,

@@ -13,7 +13,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TautError
-from taut.model._robot import Robot
+from taut.model import Robot
 
 
 def unstretched_length(lengths: npt.ArrayLike, tensions: npt.ArrayLike, stiffness: npt.ArrayLike) -> np.ndarray:

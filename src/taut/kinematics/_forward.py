@@ -16,7 +16,7 @@ import numpy.typing as npt
 from taut.errors import PoseError, TautError, UnreachableLengthsError
 from taut.kinematics._inverse import lengths_at
 from taut.kinematics._pose import as_poses
-from taut.model._robot import Robot
+from taut.model import Robot
 
 
 @dataclass(frozen=True)

@@ -30,12 +30,11 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import InfeasiblePoseError
-from taut.geometry._vectors import cross
-from taut.kinematics._pose import as_poses, body_frames, platform_frame
-from taut.model._robot import Robot
-
-#: A cable shorter than this [m] has no direction: the pose is rejected.
-MIN_LENGTH = 1e-12
+from taut.geometry import cross
+from taut.kinematics._batch import kernel_structure_matrices, supports_batch
+from taut.kinematics._paths import CABLE_OK, MIN_LENGTH, STATUS_REASONS, ZERO_LENGTH, cable_paths
+from taut.kinematics._pose import anchors_at, as_poses
+from taut.model import Robot
 
 #: From this many poses on, rigid platforms go through the Numba kernel; below it NumPy is
 #: as fast per call and spares the process the import of Numba.
@@ -55,48 +54,17 @@ class IKResult:
     exit_points: np.ndarray
 
 
-def anchor_points(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
-    """Platform anchors ``b_i`` in the fixed frame, ``(N, n, d)`` (``(n, d)`` for one pose)."""
-    arr, single = as_poses(robot, poses)
-    b = anchors_at(robot, arr)
-    return b[0] if single else b
-
-
-def anchors_at(robot: Robot, poses: np.ndarray) -> np.ndarray:
-    """:func:`anchor_points` without the checks: ``poses`` is an ``(N, pose_size)`` array
-    already checked by :func:`~taut.kinematics._pose.as_poses` (solvers and samplers call it
-    on their own iterates, which may leave the joint limits); returns ``(N, n, d)``."""
-    if robot.is_point_mass:
-        return np.broadcast_to(poses[:, None, : robot.dimension], (poses.shape[0], robot.n_cables, robot.dimension))
-    if robot.n_joints == 0:
-        p, R = platform_frame(robot, poses)
-        return p[:, None, :] + np.einsum("nij,kj->nki", R, robot.anchors)
-    pos, rot = body_frames(robot, poses)
-    idx = robot.cable_bodies
-    return pos[:, idx, :] + np.einsum("nkij,kj->nki", rot[:, idx], robot.anchors)
-
-
-#: ``ik_status`` codes of a cable at a pose: its quantities exist, or why they do not.
-OK, ZERO_LENGTH, ON_SWIVEL_AXIS, ON_PULLEY = 0, 1, 2, 3
-
-_WHY = {
-    ZERO_LENGTH: "has zero length (its anchor is at its exit point)",
-    ON_SWIVEL_AXIS: "has its anchor on the axis of its swivelling pulley (the pulley's swivel angle is undefined)",
-    ON_PULLEY: "has its anchor on or inside the circle of its swivelling pulley (no tangent to leave it by)",
-}
-
-
 def _infeasible(robot: Robot, status: np.ndarray) -> InfeasiblePoseError:
-    k, i = np.argwhere(status != OK)[0]
-    return InfeasiblePoseError(f"{robot.name}: at pose {k + 1} cable {i + 1} {_WHY[int(status[k, i])]}")
+    k, i = np.argwhere(status != CABLE_OK)[0]
+    return InfeasiblePoseError(f"{robot.name}: at pose {k + 1} cable {i + 1} {STATUS_REASONS[int(status[k, i])]}")
 
 
 def ik_status(robot: Robot, poses: np.ndarray) -> tuple[IKResult, np.ndarray]:
     """:func:`inverse_kinematics` of ``(N, pose_size)`` poses already checked by
-    :func:`~taut.kinematics._pose.as_poses`, without raising: the result at every pose and the
-    status ``(N, n)`` of each cable (:data:`OK`, :data:`ZERO_LENGTH`, :data:`ON_SWIVEL_AXIS`,
+    :func:`~taut.kinematics.as_poses`, without raising: the result at every pose and the
+    status ``(N, n)`` of each cable (:data:`CABLE_OK`, :data:`ZERO_LENGTH`, :data:`ON_SWIVEL_AXIS`,
     :data:`ON_PULLEY`).  Lengths and exit points are finite everywhere; directions and the
-    structure matrix are zero for the cables and poses whose status is not :data:`OK`.
+    structure matrix are zero for the cables and poses whose status is not :data:`CABLE_OK`.
 
     References
     ----------
@@ -110,7 +78,7 @@ def ik_status(robot: Robot, poses: np.ndarray) -> tuple[IKResult, np.ndarray]:
     lengths, exits, status = cable_paths(robot, b)
     v = exits - b
     free = np.sqrt(np.einsum("nki,nki->nk", v, v))
-    good = status == OK
+    good = status == CABLE_OK
     u = np.where(good[..., None], v / np.where(good, free, 1.0)[..., None], 0.0)
     W = np.swapaxes(u, 1, 2)
     if not robot.is_point_mass:
@@ -119,26 +87,6 @@ def ik_status(robot: Robot, poses: np.ndarray) -> tuple[IKResult, np.ndarray]:
         W = np.concatenate([W, np.swapaxes(m, 1, 2)], axis=1)
     W = np.where(good.all(axis=1)[:, None, None], W, 0.0)
     return IKResult(lengths, u, b, W, exits), status
-
-
-def cable_paths(robot: Robot, anchors: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Cable lengths ``(N, n)``, the points where their straight parts begin ``(N, n, d)``
-    (exit points, or tangent points of swivelling pulleys) and their status ``(N, n)`` (see
-    :func:`ik_status`) for the platform anchors ``(N, n, d)`` in the fixed frame."""
-    exits = np.broadcast_to(robot.exits[None], anchors.shape)
-    v = exits - anchors
-    lengths = np.sqrt(np.einsum("nki,nki->nk", v, v))
-    status = np.where(lengths < MIN_LENGTH, ZERO_LENGTH, OK)
-    if robot.swivel_cables:
-        from taut.kinematics._swivel import swivel_parameters, swivel_paths
-
-        idx, axes, radii = swivel_parameters(robot)
-        paths = swivel_paths(robot.exits[idx], axes, radii, anchors[:, idx])
-        exits = exits.copy()
-        lengths[:, idx] = paths.lengths
-        exits[:, idx] = paths.tangent_points
-        status[:, idx] = np.select([paths.on_axis, paths.on_pulley], [ON_SWIVEL_AXIS, ON_PULLEY], OK)
-    return lengths, exits, status
 
 
 def lengths_at(robot: Robot, poses: np.ndarray) -> np.ndarray:
@@ -170,13 +118,13 @@ def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
     if batched is not None:
         lengths, W, ok = batched
         if not ok.all():
-            raise _infeasible(robot, np.where(lengths < MIN_LENGTH, ZERO_LENGTH, OK))
+            raise _infeasible(robot, np.where(lengths < MIN_LENGTH, ZERO_LENGTH, CABLE_OK))
         u = np.swapaxes(W[:, :d, :], 1, 2)
         b = robot.exits[None, :, :] - u * lengths[..., None]
         res = IKResult(lengths, u, b, W, np.broadcast_to(robot.exits[None], b.shape))
     else:
         res, status = ik_status(robot, arr)
-        if (status != OK).any():
+        if (status != CABLE_OK).any():
             raise _infeasible(robot, status)
     if single:
         return IKResult(res.lengths[0], res.directions[0], res.anchors[0], res.structure_matrix[0], res.exit_points[0])
@@ -184,14 +132,12 @@ def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
 
 
 def _batched(robot: Robot, poses: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
-    """``(lengths, W, ok)`` of :func:`taut.kinematics._batch.batch_structure_matrices`, or None
+    """``(lengths, W, ok)`` of :func:`batch_structure_matrices`, or None
     for fewer than :data:`BATCH_POSES` poses, a robot the kernel does not handle, or one with
     swivelling pulleys (the kernel does not return their tangent points)."""
     if poses.shape[0] < BATCH_POSES or robot.swivel_cables:
         return None
-    from taut.kinematics._batch import batch_structure_matrices, supports_batch
-
-    return batch_structure_matrices(robot, poses) if supports_batch(robot) else None
+    return kernel_structure_matrices(robot, poses) if supports_batch(robot) else None
 
 
 def cable_lengths(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
@@ -208,3 +154,16 @@ def structure_matrix(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
        of Waterloo, 2022, §2.1.1, Eqs. 2.8 and 2.10. (docs/references.bib: rushton2022)
     """
     return inverse_kinematics(robot, poses).structure_matrix
+
+
+def batch_structure_matrices(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Cable lengths ``(N, n)``, structure matrices ``W (N, m, n)`` and a mask ``ok (N,)``
+    of the poses where every cable has a length of at least ``MIN_LENGTH`` and, through a
+    swivelling pulley, a tangent point (elsewhere ``W`` is zero).  Robots with jointed bodies
+    and planar robots with swivelling pulleys go through the NumPy implementation
+    (:func:`ik_status`)."""
+    arr, _ = as_poses(robot, poses)
+    if not supports_batch(robot):
+        ik, status = ik_status(robot, arr)
+        return ik.lengths, ik.structure_matrix, (status == CABLE_OK).all(axis=1)
+    return kernel_structure_matrices(robot, arr)

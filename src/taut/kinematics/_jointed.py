@@ -40,7 +40,7 @@ import numpy.typing as npt
 from taut.errors import TautError
 from taut.kinematics._inverse import inverse_kinematics, lengths_at
 from taut.kinematics._pose import as_poses, body_frames
-from taut.model._robot import Robot
+from taut.model import Robot
 
 __all__ = ["actuator_jacobian", "actuator_positions", "joint_forces", "jointed_structure_matrix"]
 

@@ -12,8 +12,8 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import PoseError
-from taut.geometry._rotation import planar_rotation, rotation_matrix
-from taut.model._robot import Robot
+from taut.geometry import planar_rotation, rotation_matrix
+from taut.model import Robot
 
 
 def as_poses(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, bool]:
@@ -94,3 +94,24 @@ def body_frames(robot: Robot, poses: np.ndarray) -> tuple[np.ndarray, np.ndarray
             pos.append(pp + RR @ origin)
             rot.append(RR @ _axis_rotation(axis, q, d))
     return np.stack(pos, 1), np.stack(rot, 1)
+
+
+def anchor_points(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
+    """Platform anchors ``b_i`` in the fixed frame, ``(N, n, d)`` (``(n, d)`` for one pose)."""
+    arr, single = as_poses(robot, poses)
+    b = anchors_at(robot, arr)
+    return b[0] if single else b
+
+
+def anchors_at(robot: Robot, poses: np.ndarray) -> np.ndarray:
+    """:func:`anchor_points` without the checks: ``poses`` is an ``(N, pose_size)`` array
+    already checked by :func:`~taut.kinematics.as_poses` (solvers and samplers call it
+    on their own iterates, which may leave the joint limits); returns ``(N, n, d)``."""
+    if robot.is_point_mass:
+        return np.broadcast_to(poses[:, None, : robot.dimension], (poses.shape[0], robot.n_cables, robot.dimension))
+    if robot.n_joints == 0:
+        p, R = platform_frame(robot, poses)
+        return p[:, None, :] + np.einsum("nij,kj->nki", R, robot.anchors)
+    pos, rot = body_frames(robot, poses)
+    idx = robot.cable_bodies
+    return pos[:, idx, :] + np.einsum("nkij,kj->nki", rot[:, idx], robot.anchors)

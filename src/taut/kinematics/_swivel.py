@@ -25,7 +25,7 @@ swivel angle is undefined) or on or inside the pulley circle (``ρ ≤ r``: no t
 **Swivel angle.**  :func:`swivel_angles` gives the angle ``γ`` the pulley has turned about its
 axis, as WireX measures it (``doInverseKinematicsPulleyEx``: ``γ = atan2(b_y, b_x)`` of the
 anchor in the winch frame): from the x axis of the winch frame
-:func:`taut.model._wirex.winch_frame` whose z axis is the unit swivel axis (the frame taut
+(:func:`taut.geometry.axis_frames`) whose z axis is the unit swivel axis (the frame taut
 writes into WireX files; the identity for the axis ``(0, 0, 1)``).
 
 **Planar robots.**  On a planar robot the swivel axis lies in the robot's plane, and so do
@@ -53,8 +53,9 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import InfeasiblePoseError, UnsupportedRobotError
-from taut.model._robot import Robot
-from taut.model._wirex import winch_frame
+from taut.geometry import axis_frames
+from taut.kinematics._pose import anchors_at, as_poses
+from taut.model import Robot
 
 #: Relative tolerance of the singular configurations: an anchor nearer the swivel axis, or
 #: a free length shorter, than this times ``r + ‖b − D‖`` has no swivel angle or no tangent.
@@ -82,14 +83,6 @@ def swivel_parameters(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]
     return idx, axes, radii
 
 
-def normal_fallback(k: np.ndarray) -> np.ndarray:
-    """A unit vector normal to each axis ``k (s, 3)``: the pulley plane of an anchor on the
-    axis, where every plane gives the same length."""
-    helper = np.where(np.abs(k[:, :1]) < 0.9, np.array([[1.0, 0.0, 0.0]]), np.array([[0.0, 1.0, 0.0]]))
-    n = np.cross(k, helper)
-    return n / np.linalg.norm(n, axis=1, keepdims=True)
-
-
 def in_space(x: np.ndarray) -> np.ndarray:
     """Points or vectors ``(..., 2)`` of a robot's plane as ``(..., 3)`` with z = 0; ``(..., 3)`` as given."""
     if x.shape[-1] == 3:
@@ -110,7 +103,7 @@ def swivel_paths(points: np.ndarray, axes: np.ndarray, radii: np.ndarray, anchor
         fallback = np.column_stack([-axes[:, 1], axes[:, 0], np.zeros(len(axes))])
         points, axes, anchors = in_space(points), in_space(axes), in_space(anchors)
     else:
-        fallback = normal_fallback(axes)
+        fallback = axis_frames(axes)[:, :, 1]
     v = anchors - points[None]
     h = np.einsum("nsi,si->ns", v, axes)
     w = v - h[..., None] * axes[None]
@@ -136,7 +129,7 @@ def swivel_angles(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
 
     ``γ = atan2(w·y, w·x)`` in ``[−π, π]``, where ``w`` is the anchor's offset from the exit
     point ``b − D`` and ``x``, ``y`` the first two axes of the winch frame
-    :func:`taut.model._wirex.winch_frame` of the unit swivel axis: the rotation of the pulley
+    :func:`taut.geometry.axis_frames` of the unit swivel axis: the rotation of the pulley
     about its axis as WireX measures it (``CKinematics::doInverseKinematicsPulleyEx``,
     ``γ = atan2(b_y, b_x)`` in the winch frame), for a file whose winch frames are those
     taut writes.  On a planar robot ``γ`` is 0 or π: the side of the axis line the pulley
@@ -156,9 +149,6 @@ def swivel_angles(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     .. [2] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
        Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
     """
-    from taut.kinematics._inverse import anchors_at
-    from taut.kinematics._pose import as_poses
-
     if not robot.swivel_cables:
         raise UnsupportedRobotError(f"{robot.name}: no cable leaves through a swivelling pulley (cables[].swivel)")
     arr, single = as_poses(robot, poses)
@@ -171,7 +161,7 @@ def swivel_angles(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
             f"{robot.name}: at pose {k + 1} cable {idx[j] + 1} has its anchor on the axis of its swivelling "
             "pulley (the pulley's swivel angle is undefined)"
         )
-    frames = np.array([winch_frame(k) for k in in_space(axes)])
+    frames = axis_frames(in_space(axes))
     w = in_space(anchors - robot.exits[idx][None])
     local = np.einsum("sji,nsj->nsi", frames, w)
     gamma = np.arctan2(local[..., 1], local[..., 0])

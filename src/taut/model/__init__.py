@@ -5,11 +5,15 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from taut._lazy import lazy_exports
-from taut.model._examples import example, example_descriptions, example_names
 
 if TYPE_CHECKING:
-    from taut.model._io import load_robot, parse_robot, robot_from_dict, robot_to_dict, save_robot
+    from taut.model._caspr import BODIES_SUFFIX, parse_xml, read_caspr, write_caspr
+    from taut.model._examples import example, example_descriptions, example_names
+    from taut.model._formats import format_of, load_robot, write_robot
+    from taut.model._io import parse_robot, read_text, robot_from_dict, robot_to_dict, save_robot
+    from taut.model._limits import MAX_MAGNITUDE
     from taut.model._mjcf import mjcf_text, pose_to_qpos, write_mjcf
+    from taut.model._random_robots import random_suspended_robot
     from taut.model._robot import (
         Body,
         Cable,
@@ -25,41 +29,55 @@ if TYPE_CHECKING:
         SwivelPulley,
         Trajectory,
     )
-    from taut.model._schema import robot_schema
+    from taut.model._schema import robot_schema, schema_text
 
-#: Names re-exported from the modules that load pydantic and PyYAML: imported on first use
-#: (PEP 562), so that listing the examples does not build the pydantic models.
+#: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
-    **dict.fromkeys(["load_robot", "parse_robot", "robot_from_dict", "robot_to_dict", "save_robot"], "taut.model._io"),
-    **dict.fromkeys(
-        [
-            "Body",
-            "Cable",
-            "Capsule",
-            "Circle",
-            "Joint",
-            "Platform",
-            "Polygon",
-            "Pulley",
-            "Reference",
-            "Robot",
-            "Shape",
-            "SwivelPulley",
-            "Trajectory",
-        ],
-        "taut.model._robot",
-    ),
+    "BODIES_SUFFIX": "taut.model._caspr",
+    "parse_xml": "taut.model._caspr",
+    "read_caspr": "taut.model._caspr",
+    "write_caspr": "taut.model._caspr",
+    "example": "taut.model._examples",
+    "example_descriptions": "taut.model._examples",
+    "example_names": "taut.model._examples",
+    "format_of": "taut.model._formats",
+    "load_robot": "taut.model._formats",
+    "write_robot": "taut.model._formats",
+    "parse_robot": "taut.model._io",
+    "read_text": "taut.model._io",
+    "robot_from_dict": "taut.model._io",
+    "robot_to_dict": "taut.model._io",
+    "save_robot": "taut.model._io",
+    "MAX_MAGNITUDE": "taut.model._limits",
+    "mjcf_text": "taut.model._mjcf",
+    "pose_to_qpos": "taut.model._mjcf",
+    "write_mjcf": "taut.model._mjcf",
+    "random_suspended_robot": "taut.model._random_robots",
+    "Body": "taut.model._robot",
+    "Cable": "taut.model._robot",
+    "Capsule": "taut.model._robot",
+    "Circle": "taut.model._robot",
+    "Joint": "taut.model._robot",
+    "Platform": "taut.model._robot",
+    "Polygon": "taut.model._robot",
+    "Pulley": "taut.model._robot",
+    "Reference": "taut.model._robot",
+    "Robot": "taut.model._robot",
+    "Shape": "taut.model._robot",
+    "SwivelPulley": "taut.model._robot",
+    "Trajectory": "taut.model._robot",
     "robot_schema": "taut.model._schema",
-    **dict.fromkeys(["mjcf_text", "pose_to_qpos", "write_mjcf"], "taut.model._mjcf"),
+    "schema_text": "taut.model._schema",
 }
 
-
 __all__ = [
+    "BODIES_SUFFIX",
     "Body",
     "Cable",
     "Capsule",
     "Circle",
     "Joint",
+    "MAX_MAGNITUDE",
     "Platform",
     "Polygon",
     "Pulley",
@@ -71,15 +89,23 @@ __all__ = [
     "example",
     "example_descriptions",
     "example_names",
+    "format_of",
     "load_robot",
     "mjcf_text",
     "parse_robot",
+    "parse_xml",
     "pose_to_qpos",
+    "random_suspended_robot",
+    "read_caspr",
+    "read_text",
     "robot_from_dict",
     "robot_schema",
     "robot_to_dict",
     "save_robot",
+    "schema_text",
+    "write_caspr",
     "write_mjcf",
+    "write_robot",
 ]
 
 __getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

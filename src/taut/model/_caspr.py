@@ -139,7 +139,7 @@ _ONE_DOF: dict[str, tuple[str, tuple[float, float, float] | None]] = {
 _AXIS_JOINTS = ("R_AXIS", "P_AXIS")
 #: Bounds CASPR's joint classes give ``q`` when the file gives no ``q_min`` / ``q_max``.
 _DEFAULT_LIMITS = {"revolute": (-math.pi, math.pi), "prismatic": (-math.inf, math.inf)}
-#: taut refuses pose coordinates beyond this (``taut.kinematics._pose.as_poses``): an
+#: taut refuses pose coordinates beyond this (``taut.kinematics.as_poses``): an
 #: unbounded CASPR joint gets these limits, which admit the same poses.
 _UNBOUNDED = 1e9
 _CABLE_TYPES = ("cable_ideal", "cable_linear_spring")

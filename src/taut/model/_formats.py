@@ -18,7 +18,7 @@ if TYPE_CHECKING:
     from taut.model._robot import Robot
 
 #: ``reader(path, text, cable_set)``: the text of the file (read with the size and
-#: regular-file limits of :func:`taut.model._io.load_robot`) to a validated robot.
+#: regular-file limits of :func:`taut.model.load_robot`) to a validated robot.
 Reader = Callable[[Path, str, "str | None"], "Robot"]
 #: ``writer(robot, path)``: writes the file (and any companion files the format needs).
 Writer = Callable[["Robot", Path], None]
@@ -131,3 +131,24 @@ def write_robot(robot: Robot, path: str | Path) -> str:
     except OSError as exc:
         raise RobotFileError(f"{path}: cannot write the file: {exc}") from None
     return fmt.name
+
+
+def load_robot(spec: str | Path, *, cable_set: str | None = None) -> Robot:
+    """Load a robot from a file path, or a built-in example by name (``taut examples``).
+
+    The file's name selects its format (:mod:`taut.model._formats`): taut's YAML/JSON, a
+    WireX ``.wcrfx`` file, or a CASPR ``*_bodies.xml`` model whose cable set ``cable_set``
+    (default: the file's ``default_cable_set``) is read from the ``*_cables.xml`` beside it."""
+    from taut.model._examples import example, example_names
+    from taut.model._io import check_regular, read_text
+
+    path = Path(spec)
+    if not path.exists():
+        if str(spec) in example_names():
+            if cable_set is not None:
+                raise RobotFileError(f"{spec}: --cable-set selects a cable set of a CASPR model, not of an example")
+            return example(str(spec))
+        raise RobotFileError(f"{spec}: no such file and not a built-in example (see `taut examples`)")
+    check_regular(path)  # before the name is judged: /dev/zero is not a file of any format
+    format_of(path, "read")
+    return read_robot(path, read_text(path), cable_set)

@@ -15,58 +15,11 @@ from typing import Any
 
 import yaml
 from pydantic import ValidationError
-from pydantic_core import ErrorDetails
 
 from taut.errors import RobotFileError
 from taut.model._limits import MAX_MAGNITUDE
+from taut.model._messages import validation_message
 from taut.model._robot import Robot
-
-
-def _field(loc: tuple[int | str, ...]) -> str:
-    out = ""
-    for part in loc:
-        if isinstance(part, int):
-            out += f"[{part + 1}]"
-        elif part in ("Circle", "Polygon", "circle", "polygon", "function-after[_consistent(), Robot]"):
-            continue
-        else:
-            out += ("." if out else "") + str(part)
-    return out or "(top level)"
-
-
-def _message(err: ErrorDetails) -> str:
-    kind, msg = err["type"], err["msg"]
-    if kind == "extra_forbidden":
-        return "unknown key (not part of the taut/1 format)"
-    if kind == "missing":
-        return "required field is missing"
-    if kind == "value_error":
-        return msg.removeprefix("Value error, ")
-    if kind == "union_tag_invalid":
-        return f"unknown kind; expected one of {err.get('ctx', {}).get('expected_tags', '')}"
-    if kind == "finite_number":
-        return "expected a finite number"
-    inp = err.get("input")
-    got = "" if isinstance(inp, (dict, list)) else f", got {inp!r}"
-    return f"{msg.lower()}{got}"
-
-
-def validation_message(source: str, exc: ValidationError) -> str:
-    """Turn a pydantic error into lines ``SOURCE: FIELD: what is wrong``."""
-    lines = []
-    for err in exc.errors():
-        loc = tuple(err["loc"])
-        msg = _message(err)
-        field = _field(loc)
-        if (
-            field == "(top level)"
-            and ": " in msg
-            and msg.split(": ", 1)[0].replace(".", "").replace("[", "").replace("]", "").replace("_", "").isalnum()
-        ):
-            field, msg = msg.split(": ", 1)
-        lines.append(f"{source}: {field}: {msg}")
-    return "\n".join(lines)
-
 
 #: Largest robot file read, in bytes: a robot of thousands of cables is a few hundred KiB.
 MAX_FILE_BYTES = 16 << 20
@@ -189,27 +142,6 @@ def read_text(path: Path) -> str:
         return read_bytes(path).decode("utf-8")
     except UnicodeDecodeError as exc:
         raise RobotFileError(f"{path}: cannot read the file: {exc}") from None
-
-
-def load_robot(spec: str | Path, *, cable_set: str | None = None) -> Robot:
-    """Load a robot from a file path, or a built-in example by name (``taut examples``).
-
-    The file's name selects its format (:mod:`taut.model._formats`): taut's YAML/JSON, a
-    WireX ``.wcrfx`` file, or a CASPR ``*_bodies.xml`` model whose cable set ``cable_set``
-    (default: the file's ``default_cable_set``) is read from the ``*_cables.xml`` beside it."""
-    from taut.model._examples import example, example_names
-    from taut.model._formats import format_of, read_robot
-
-    path = Path(spec)
-    if not path.exists():
-        if str(spec) in example_names():
-            if cable_set is not None:
-                raise RobotFileError(f"{spec}: --cable-set selects a cable set of a CASPR model, not of an example")
-            return example(str(spec))
-        raise RobotFileError(f"{spec}: no such file and not a built-in example (see `taut examples`)")
-    check_regular(path)  # before the name is judged: /dev/zero is not a file of any format
-    format_of(path, "read")
-    return read_robot(path, read_text(path), cable_set)
 
 
 def _plain(value: object) -> object:

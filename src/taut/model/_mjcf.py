@@ -36,7 +36,7 @@ MuJoCo bodies inside their parents': ``platform.bodies[k − 1]`` is ``body<k>``
 joint ``joint<k>``: a ``slide`` along the unit ``axis`` for a prismatic joint, a ``hinge``
 about ``axis`` through the body's origin for a revolute one (about ``+z`` on a planar robot,
 as taut turns a planar body whatever its one-number axis), with ``range`` the joint's
-``limits``.  This is taut's frame (:func:`taut.kinematics._pose.body_frames`: the parent's
+``limits``.  This is taut's frame (:func:`taut.kinematics.body_frames`: the parent's
 frame translated by ``origin + q·axis``, or by ``origin`` and turned by ``q`` about
 ``axis``), so the joint's ``qpos`` is taut's joint coordinate ``q``, in MuJoCo's depth-first
 order of the body tree (:func:`joint_order`).  Its ``inertial`` holds the body's ``mass`` at
@@ -44,7 +44,7 @@ its ``com`` and its ``inertia`` about the ``com`` (``fullinertia``; a planar bod
 as the platform's), and the anchor sites of its cables are in it.  The motor ``drive<k>``
 (``gear = 1``, no control range: taut gives no joint force bounds; the drives follow the
 tension actuators, so that ``ctrl = (τ, ζ)``) acts on ``joint<k>``: its control is taut's
-joint force ``ζ_k`` of :func:`taut.kinematics._jointed.joint_forces`, the force along
+joint force ``ζ_k`` of :func:`taut.kinematics.joint_forces`, the force along
 ``+axis`` or the torque about ``+axis`` that the joint's actuator exerts on the child body,
 which is MuJoCo's generalised force of that joint (the reaction on the parent is MuJoCo's, as
 it is taut's).  Measured with MuJoCo 4.0.0 (``tests/model/test_mjcf_jointed.py``): at rest,
@@ -132,7 +132,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import InfeasiblePoseError, PoseError, UnsupportedRobotError
-from taut.geometry._rotation import rotation_matrix
+from taut.geometry import axis_frames, rotation_matrix
 from taut.model._robot import Robot
 
 #: Radius [m] of the sphere whose rotational inertia a point-mass body is given.
@@ -353,11 +353,8 @@ def swivel_frames(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.
     axis (``y`` for an axis within 26° of ``x``), the direction of the hinge angle ``q = 0``."""
     idx = np.array(robot.swivel_cables, dtype=int)
     swivels = [s for s in (robot.cables[i].swivel for i in idx) if s is not None]
-    k = np.array([s.axis for s in swivels], dtype=float).reshape(-1, 3)
-    k /= np.linalg.norm(k, axis=1, keepdims=True)
-    helper = np.where(np.abs(k[:, :1]) < 0.9, np.array([[1.0, 0.0, 0.0]]), np.array([[0.0, 1.0, 0.0]]))
-    e0 = helper - np.einsum("si,si->s", helper, k)[:, None] * k
-    e0 /= np.linalg.norm(e0, axis=1, keepdims=True)
+    frames = axis_frames(np.array([s.axis for s in swivels], dtype=float).reshape(-1, 3))
+    k, e0 = frames[:, :, 2], frames[:, :, 0]
     return idx, k, e0, np.array([s.radius for s in swivels], dtype=float)
 
 

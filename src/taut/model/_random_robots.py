@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from taut.errors import TautError
-from taut.geometry._rotation import rotation_matrix
+from taut.geometry import rotation_matrix
 from taut.model._robot import Cable, Platform, Reference, Robot
 
 #: Cable counts the generator draws (the DGP solves subsets of up to six taut cables).

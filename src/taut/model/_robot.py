@@ -27,7 +27,7 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError, field_validator, model_validator
 
 from taut.errors import RobotFileError
-from taut.geometry._rotation import CONVENTIONS
+from taut.geometry import CONVENTIONS
 
 FORMAT: Literal["taut/1"] = "taut/1"
 
@@ -65,7 +65,7 @@ class _Strict(BaseModel):
         try:
             return type(self).model_validate(fields | dict(update))
         except ValidationError as exc:
-            from taut.model._io import validation_message
+            from taut.model._messages import validation_message
 
             raise RobotFileError(validation_message(f"{type(self).__name__}.model_copy", exc)) from None
 

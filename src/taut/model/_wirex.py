@@ -1,4 +1,4 @@
-"""WireX robot files (``.wcrfx``): read into a :class:`~taut.model._robot.Robot`, and written from one.
+"""WireX robot files (``.wcrfx``): read into a :class:`~taut.model.Robot`, and written from one.
 
 WireX (A. Pott, Fraunhofer IPA, MIT licence) stores a robot as XML: ``<models>`` holds
 ``<robot motionpattern=...>`` with one ``<chain>`` per cable in ``<geometry>`` (a ``<base>``
@@ -84,12 +84,13 @@ from typing import Literal
 from xml.parsers import expat
 
 import numpy as np
-import numpy.typing as npt
 from pydantic import ValidationError
 
 from taut.errors import RobotFileError, UnsupportedRobotError
-from taut.model._io import read_bytes, validation_message
+from taut.geometry import axis_frames
+from taut.model._io import read_bytes
 from taut.model._limits import MAX_MAGNITUDE
+from taut.model._messages import validation_message
 from taut.model._robot import STANDARD_GRAVITY, Robot
 
 #: WireX's motion patterns (``CRobotData::MotionPatternType``) and their degrees of freedom.
@@ -536,18 +537,6 @@ def _set_point(element: ET.Element, point: np.ndarray | tuple[float, ...]) -> No
         element.set(key, _fmt(value))
 
 
-def winch_frame(axis: npt.ArrayLike) -> np.ndarray:
-    """A rotation whose z axis (third column) is the unit ``axis``: a winch frame for a
-    swivelling pulley (WireX's pulley lengths depend only on that column); the identity for
-    ``(0, 0, 1)``."""
-    k = np.asarray(axis, dtype=float)
-    k = k / np.linalg.norm(k)
-    helper = np.array([1.0, 0.0, 0.0]) if abs(k[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
-    x = helper - (helper @ k) * k
-    x /= np.linalg.norm(x)
-    return np.column_stack([x, np.cross(k, x), k])
-
-
 def wirex_text(robot: Robot) -> str:
     """The WireX XML of ``robot`` (see :func:`write_wirex`)."""
     why = _refusal(robot)
@@ -571,7 +560,7 @@ def wirex_text(robot: Robot) -> str:
             base.attrib.update(identity)
             base.set("radius", "0.0")
         else:
-            frame = winch_frame([*swivel.axis, 0.0][:3])
+            frame = axis_frames([*swivel.axis, 0.0][:3])
             base.attrib.update({k: _fmt(v) for k, v in zip(FRAME_KEYS, frame.ravel(), strict=True)})
             base.set("radius", _fmt(swivel.radius))
         anchor = ET.SubElement(chain, "platform")

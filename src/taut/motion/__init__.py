@@ -2,21 +2,46 @@
 multi-waypoint, with cubic, quintic, trapezoidal or linear time laws, sampled at any rate with
 velocity, acceleration and angular rates (``docs/architecture.md`` §1, layer 2)."""
 
-from taut.motion._caspr import CasprTrajectory, read_caspr_trajectories
-from taut.motion._laws import LAWS
-from taut.motion._trajectory import Motion, MotionSamples, trajectory_from_robot, trajectory_from_waypoints
-from taut.motion._vias import VIAS
-from taut.motion._waypoints import complete_waypoints, unwrap_angles
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from taut._lazy import lazy_exports
+
+if TYPE_CHECKING:
+    from taut.motion._caspr import CasprTrajectory, read_caspr_trajectories
+    from taut.motion._laws import LAWS
+    from taut.motion._trajectory import Motion, MotionSamples, trajectory_from_robot, trajectory_from_waypoints
+    from taut.motion._vias import VIAS
+    from taut.motion._waypoints import angle_columns, complete_waypoints, unwrap_angles
+
+#: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
+_LAZY = {
+    "CasprTrajectory": "taut.motion._caspr",
+    "read_caspr_trajectories": "taut.motion._caspr",
+    "LAWS": "taut.motion._laws",
+    "Motion": "taut.motion._trajectory",
+    "MotionSamples": "taut.motion._trajectory",
+    "trajectory_from_robot": "taut.motion._trajectory",
+    "trajectory_from_waypoints": "taut.motion._trajectory",
+    "VIAS": "taut.motion._vias",
+    "angle_columns": "taut.motion._waypoints",
+    "complete_waypoints": "taut.motion._waypoints",
+    "unwrap_angles": "taut.motion._waypoints",
+}
 
 __all__ = [
-    "LAWS",
-    "VIAS",
     "CasprTrajectory",
+    "LAWS",
     "Motion",
     "MotionSamples",
+    "VIAS",
+    "angle_columns",
     "complete_waypoints",
     "read_caspr_trajectories",
     "trajectory_from_robot",
     "trajectory_from_waypoints",
     "unwrap_angles",
 ]
+
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

@@ -6,7 +6,7 @@ CASPR [1]_ keeps a model's trajectories in ``X_trajectories.xml`` beside ``X_bod
 ``absolute``: the time since the start, the first point being at 0) and a sampling
 ``time_step`` [s], whose ``<points>`` give the joint coordinates ``<q>`` of each point.  They
 map onto :func:`~taut.motion.trajectory_from_waypoints` one to one, since taut's pose is
-CASPR's ``q`` for the models :func:`taut.model._caspr.read_caspr` reads (a ``PLANAR_XZ``
+CASPR's ``q`` for the models :func:`taut.model.read_caspr` reads (a ``PLANAR_XZ``
 platform has ``θ = −θ_CASPR``: its angle, rates and accelerations change sign):
 
 ==========================================  ==============================================
@@ -45,9 +45,7 @@ from pathlib import Path
 import numpy as np
 
 from taut.errors import TrajectoryError
-from taut.model._caspr import BODIES_SUFFIX, parse_xml, read_caspr
-from taut.model._io import read_text
-from taut.model._robot import Robot
+from taut.model import BODIES_SUFFIX, Robot, parse_xml, read_caspr, read_text
 from taut.motion._trajectory import Motion, trajectory_from_waypoints
 from taut.motion._vias import average_velocities
 from taut.motion._waypoints import unwrap_angles, validate_waypoints
@@ -192,7 +190,7 @@ def read_caspr_trajectories(
     ``X_trajectories.xml`` ``path``, by id (see the module docstring).
 
     ``bodies`` is the model's ``X_bodies.xml`` (default: the one beside ``path``), read by
-    :func:`taut.model._caspr.read_caspr`.  Raises :class:`~taut.errors.TrajectoryError` for a
+    :func:`taut.model.read_caspr`.  Raises :class:`~taut.errors.TrajectoryError` for a
     malformed trajectory (and the model's errors for the model)."""
     path = Path(path)
     if bodies is None:

@@ -11,7 +11,7 @@ at most 5 whose :meth:`Motion.at` and :meth:`Motion.sample` give pose ``q``, vel
 and acceleration ``q̈`` in pose coordinates and, for a rigid platform, the angular velocity
 ``ω`` and acceleration ``α`` in the fixed frame (:class:`MotionSamples`).
 
-Orientation.  The angles are interpolated as coordinates, after :func:`~taut.motion._waypoints.unwrap_angles`
+Orientation.  The angles are interpolated as coordinates, after :func:`~taut.motion.unwrap_angles`
 has made each take the short way between waypoints.  ``ω = E(q) q̇`` and
 ``α = E(q) q̈ + Ė(q, q̇) q̇`` come from the rate matrix of the robot's convention
 (:mod:`taut.geometry._rates`), never from angle differences; a planar platform has ``ω = θ̇``.
@@ -42,8 +42,8 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TrajectoryError
-from taut.geometry._rates import rate_matrix, rate_matrix_derivative
-from taut.model._robot import Robot
+from taut.geometry import rate_matrix, rate_matrix_derivative
+from taut.model import Robot
 from taut.motion._laws import (
     DEGREE,
     LAWS,
@@ -113,7 +113,7 @@ class Motion:
     ``[breaks[k], breaks[k+1]]`` with ``coefficients[k, j]`` (``(K, 6, pose_size)``), through
     ``waypoints`` ``(N, pose_size)`` (angles unwrapped) at ``times`` ``(N,)``, from 0 to
     :attr:`duration`, with the time ``law`` and the velocities at via points ``via`` (one of
-    :data:`~taut.motion._vias.VIAS`, or ``"given"`` when they were given).  At a break the
+    :data:`~taut.motion.VIAS`, or ``"given"`` when they were given).  At a break the
     piece that ends there is evaluated (as CASPR samples a segment up to its end), which
     matters only where the law's velocity or acceleration jumps.  Build it with
     :func:`trajectory_from_waypoints`."""
@@ -306,7 +306,7 @@ def trajectory_from_waypoints(
     unwrap: bool = True,
 ) -> Motion:
     """A trajectory of ``robot`` through ``waypoints`` ``(N ≥ 2, pose_size)`` (positions
-    ``(N, dimension)`` are completed by :func:`~taut.motion._waypoints.complete_waypoints`).
+    ``(N, dimension)`` are completed by :func:`~taut.motion.complete_waypoints`).
 
     Timing, exactly one of:
 

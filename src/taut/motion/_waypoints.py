@@ -21,7 +21,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TrajectoryError
-from taut.model._robot import Robot
+from taut.model import Robot
 
 __all__ = ["angle_columns", "complete_waypoints", "unwrap_angles", "validate_waypoints"]
 

@@ -12,21 +12,54 @@ References
    (docs/references.bib: jaillet2013)
 """
 
-from taut.planning._atlasrrt import atlas_rrt, shorten_path
-from taut.planning._continuation import Atlas, Chart, ImplicitManifold, Polytope, Symmetry, project, tangent_basis
-from taut.planning._search import PathResult, plan_path, refine_path
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from taut._lazy import lazy_exports
+
+if TYPE_CHECKING:
+    from taut.planning._atlasrrt import atlas_rrt, shorten_path
+    from taut.planning._continuation import Atlas, Chart, ImplicitManifold, Polytope, Symmetry, project, tangent_basis
+    from taut.planning._manifold import POSE_NAMES, WrenchFeasibleManifold
+    from taut.planning._search import PathResult, plan_path, refine_path
+    from taut.planning._verify import verify_path
+
+#: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
+_LAZY = {
+    "atlas_rrt": "taut.planning._atlasrrt",
+    "shorten_path": "taut.planning._atlasrrt",
+    "Atlas": "taut.planning._continuation",
+    "Chart": "taut.planning._continuation",
+    "ImplicitManifold": "taut.planning._continuation",
+    "Polytope": "taut.planning._continuation",
+    "Symmetry": "taut.planning._continuation",
+    "project": "taut.planning._continuation",
+    "tangent_basis": "taut.planning._continuation",
+    "POSE_NAMES": "taut.planning._manifold",
+    "WrenchFeasibleManifold": "taut.planning._manifold",
+    "PathResult": "taut.planning._search",
+    "plan_path": "taut.planning._search",
+    "refine_path": "taut.planning._search",
+    "verify_path": "taut.planning._verify",
+}
 
 __all__ = [
     "Atlas",
     "Chart",
     "ImplicitManifold",
+    "POSE_NAMES",
     "PathResult",
     "Polytope",
     "Symmetry",
+    "WrenchFeasibleManifold",
     "atlas_rrt",
     "plan_path",
     "project",
     "refine_path",
     "shorten_path",
     "tangent_basis",
+    "verify_path",
 ]
+
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

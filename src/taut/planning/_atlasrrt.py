@@ -1,8 +1,8 @@
 """AtlasRRT: rapidly exploring random trees grown on a manifold through an atlas of charts.
 
-Jaillet & Porta (2013), Algs. 1–4, on an :class:`~taut.planning._continuation.ImplicitManifold`:
+Jaillet & Porta (2013), Algs. 1–4, on an :class:`~taut.planning.ImplicitManifold`:
 
-* the **atlas** (:class:`~taut.planning._continuation.Atlas`) starts with one chart at the
+* the **atlas** (:class:`~taut.planning.Atlas`) starts with one chart at the
   start and one at the goal; a chart is a tangent space ``Ψ_c`` at a centre ``x_c`` with a
   ball of radius ``ρ`` and a polytope ``P_c`` cropped by its neighbours;
 * **sampling**: a chart ``c`` is drawn uniformly, then a point ``u_r`` uniformly in its ball,
@@ -25,11 +25,11 @@ Jaillet & Porta (2013), Algs. 1–4, on an :class:`~taut.planning._continuation.
   ``goal_bias``.
 
 The path is the tree branch (points ``δ`` apart on the manifold), made continuous across the
-manifold's :class:`~taut.planning._continuation.Symmetry`, and optionally **shortened**
+manifold's :class:`~taut.planning.Symmetry`, and optionally **shortened**
 (:func:`shorten_path`): random shortcuts between two path points, walked on the atlas
 the same way, replace the stretch between them when shorter.  A random search cannot
 prove that no path exists: when the budget runs out the answer is ``found=False,
-exhausted=False`` (:func:`taut.planning._search.plan_path` is the complete search).
+exhausted=False`` (:func:`taut.planning.plan_path` is the complete search).
 
 References
 ----------

@@ -23,7 +23,7 @@ nominal wrench (``c_i = b_i − P_m`` in the platform frame), where §5 states
 
 Angles are periodic: the slice is invariant under ``φ → φ + 2π``, ``θ → θ + 2π``,
 ``σ → σ + 2π`` and the half-turn ``(φ, θ) → (φ + π, −θ)`` (the same ``R`` of Eq. 1), and its
-:class:`~taut.planning._continuation.Symmetry` makes an atlas cover the quotient: a path may
+:class:`~taut.planning.Symmetry` makes an atlas cover the quotient: a path may
 cross ``φ = ±π`` or ``θ = 0``, and since the angles of the quotient are bounded, the atlas
 of a slice is finite and can complete — the no-path proof of §4.  Poses are lifted with
 canonical angles (``θ ∈ [0, π]``, ``φ`` in ``phi_window``).  The slice is also the graph of
@@ -52,11 +52,11 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import InfeasiblePoseError, PoseError, TautError
-from taut.kinematics._swivel import refuse_swivels
+from taut.kinematics import refuse_swivels
 from taut.planning._continuation import ImplicitManifold, Symmetry
 
 if TYPE_CHECKING:
-    from taut.model._robot import Robot
+    from taut.model import Robot
 
 __all__ = ["POSE_NAMES", "WrenchFeasibleManifold", "rotation_derivatives"]
 

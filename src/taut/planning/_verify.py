@@ -5,7 +5,7 @@ is tested with the general wrench-feasibility test of :mod:`taut.statics._feasib
 (hyperplane shifting, not the equations of the planner): the structure matrix of
 :mod:`taut.kinematics._inverse` with moments moved to the platform point ``P_m`` of the
 nominal wrench, the ellipsoid ``{ŵ : (ŵ − ŵ_0)ᵀ E (ŵ − ŵ_0) ≤ 1}`` as an
-:class:`~taut.statics._wrench.EllipsoidWrenchSet` of shape ``E⁻¹``, the cables' tension
+:class:`~taut.statics.EllipsoidWrenchSet` of shape ``E⁻¹``, the cables' tension
 bounds, and their length bounds.
 
 References
@@ -22,11 +22,9 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from taut.kinematics._inverse import inverse_kinematics
-from taut.kinematics._pose import platform_frame
-from taut.model._robot import Robot
-from taut.statics._feasibility import wrench_feasible
-from taut.statics._wrench import EllipsoidWrenchSet
+from taut.kinematics import inverse_kinematics, platform_frame
+from taut.model import Robot
+from taut.statics import EllipsoidWrenchSet, wrench_feasible
 
 __all__ = ["PathCheck", "interpolate_poses", "verify_path"]
 

@@ -6,46 +6,55 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from taut._lazy import lazy_exports
-from taut.statics._wrench import (
-    BoxWrenchSet,
-    EllipsoidWrenchSet,
-    PolytopeWrenchSet,
-    SingleWrench,
-    WrenchSet,
-    external_wrench,
-)
 
 if TYPE_CHECKING:
     from taut.statics._feasibility import static_equilibrium, wrench_closure, wrench_feasible
-    from taut.statics._tension import METHODS, TensionResult, distribute_tensions, solve_tensions
+    from taut.statics._highs import QuietHighs
+    from taut.statics._tension import EQUILIBRIUM_RTOL, METHODS, TensionResult, distribute_tensions, solve_tensions
+    from taut.statics._wrench import (
+        BoxWrenchSet,
+        EllipsoidWrenchSet,
+        PolytopeWrenchSet,
+        SingleWrench,
+        WrenchSet,
+        external_wrench,
+    )
 
-#: Names re-exported from modules that load Numba or HiGHS: imported on first use (PEP 562),
-#: so that ``import taut.statics._wrench`` does not pay for them.
+#: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
     "static_equilibrium": "taut.statics._feasibility",
     "wrench_closure": "taut.statics._feasibility",
     "wrench_feasible": "taut.statics._feasibility",
+    "QuietHighs": "taut.statics._highs",
+    "EQUILIBRIUM_RTOL": "taut.statics._tension",
     "METHODS": "taut.statics._tension",
     "TensionResult": "taut.statics._tension",
     "distribute_tensions": "taut.statics._tension",
     "solve_tensions": "taut.statics._tension",
+    "BoxWrenchSet": "taut.statics._wrench",
+    "EllipsoidWrenchSet": "taut.statics._wrench",
+    "PolytopeWrenchSet": "taut.statics._wrench",
+    "SingleWrench": "taut.statics._wrench",
+    "WrenchSet": "taut.statics._wrench",
+    "external_wrench": "taut.statics._wrench",
 }
-
 
 __all__ = [
     "BoxWrenchSet",
+    "EQUILIBRIUM_RTOL",
     "EllipsoidWrenchSet",
+    "METHODS",
     "PolytopeWrenchSet",
+    "QuietHighs",
     "SingleWrench",
+    "TensionResult",
     "WrenchSet",
+    "distribute_tensions",
     "external_wrench",
+    "solve_tensions",
     "static_equilibrium",
     "wrench_closure",
     "wrench_feasible",
-    "METHODS",
-    "TensionResult",
-    "distribute_tensions",
-    "solve_tensions",
 ]
 
 __getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

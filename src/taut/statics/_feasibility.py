@@ -22,7 +22,7 @@ so ``h_A(n) = h_S(−n) − n·o``.  The normals are computed inside a Numba ker
 Gaussian elimination with partial pivoting, shared between the combinations of columns
 with a common prefix (a depth-first walk, see the kernel's comment).  The kernel also
 evaluates the support function of the built-in wrench sets (point, box, ellipsoid,
-polytope — or any Minkowski sum of them); other :class:`~taut.statics._wrench.WrenchSet`
+polytope — or any Minkowski sum of them); other :class:`~taut.statics.WrenchSet`
 subclasses get the normals back and are evaluated through their own vectorised
 ``support``.
 

@@ -71,8 +71,8 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TautError
-from taut.kinematics._inverse import inverse_kinematics
-from taut.model._robot import Robot
+from taut.kinematics import inverse_kinematics
+from taut.model import Robot
 from taut.statics._highs import QuietHighs
 from taut.statics._wrench import external_wrench
 
@@ -701,7 +701,7 @@ def distribute_tensions(
 
     ``W`` from :func:`taut.kinematics.inverse_kinematics`, the external wrench ``wrench``
     (``(m,)`` shared by all poses or ``(N, m)``; default
-    :func:`taut.statics._wrench.external_wrench`, the robot's own wrench and weight) and the
+    :func:`taut.statics.external_wrench`, the robot's own wrench and weight) and the
     bounds ``robot.tension_bounds``.  See :func:`solve_tensions`.
 
     References

@@ -32,9 +32,9 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TautError
-from taut.geometry._vectors import cross
-from taut.kinematics._pose import as_poses, body_frames, platform_frame
-from taut.model._robot import Robot
+from taut.geometry import cross
+from taut.kinematics import as_poses, body_frames, platform_frame
+from taut.model import Robot
 
 
 def external_wrench(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:

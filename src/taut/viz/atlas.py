@@ -17,8 +17,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from taut.atlas import AtlasWorkspace, StructureAtlas, atlas_workspace, build_atlas, direct_ik
-from taut.atlas._platform import platform_outline
+from taut.atlas import AtlasWorkspace, StructureAtlas, atlas_workspace, build_atlas, direct_ik, platform_outline
 from taut.errors import TautError
 from taut.model import example
 from taut.viz._style import empty_figure

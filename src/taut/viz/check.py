@@ -17,8 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from taut.collision import CheckResult, capsule_segments, check_poses, trajectory_poses
-from taut.model import example
-from taut.model._robot import Robot
+from taut.model import Robot, example
 from taut.viz._style import DISALLOWED, empty_figure
 from taut.viz.robot import draw_robot
 

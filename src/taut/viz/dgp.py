@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from taut.model._robot import Robot
+from taut.model import Robot
 from taut.viz._style import cable_color, empty_figure
 from taut.viz.robot import draw_robot
 

@@ -14,10 +14,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from taut.dynamics._control import ControlResult
-from taut.dynamics._forward import ForwardDynamicsResult
-from taut.dynamics._inverse import InverseDynamicsResult
-from taut.model._robot import Robot
+from taut.dynamics import ControlResult, ForwardDynamicsResult, InverseDynamicsResult
+from taut.model import Robot
 from taut.viz.tensions import plot_tensions
 
 if TYPE_CHECKING:
@@ -49,7 +47,7 @@ def plot_motion_tensions(
 
 
 def plot_control(robot: Robot, result: ControlResult) -> Figure:
-    """A new figure of a controlled motion (:func:`taut.dynamics._control.simulate_control`):
+    """A new figure of a controlled motion (:func:`taut.dynamics.simulate_control`):
     the commanded tensions against time with their bounds, the updates where the distribution
     failed (the last admissible tensions held) marked; below, the tracking error of each pose
     coordinate (positions in mm, angles in mrad)."""
@@ -89,7 +87,7 @@ def control_section(report: Report) -> None:
     with a controller model 10 % too heavy and a 5 N, 0.2 N·m step disturbance at 1 s."""
     import time
 
-    from taut.dynamics._control import DEFAULT_KD, DEFAULT_KP, WrenchSteps, simulate_control, with_mass_error
+    from taut.dynamics import DEFAULT_KD, DEFAULT_KP, WrenchSteps, simulate_control, with_mass_error
     from taut.model import example
     from taut.motion import trajectory_from_waypoints
 

@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from taut.motion._trajectory import MotionSamples
+from taut.motion import MotionSamples
 from taut.viz._style import cable_color, empty_figure
 
 if TYPE_CHECKING:

@@ -23,9 +23,7 @@ import numpy.typing as npt
 
 from taut.errors import TautError
 from taut.model import example
-from taut.planning import PathResult, plan_path
-from taut.planning._manifold import POSE_NAMES, WrenchFeasibleManifold
-from taut.planning._verify import verify_path
+from taut.planning import POSE_NAMES, PathResult, WrenchFeasibleManifold, plan_path, verify_path
 from taut.viz._style import DISALLOWED, INSIDE, cable_color, empty_figure
 
 if TYPE_CHECKING:

@@ -36,9 +36,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from taut.kinematics._inverse import anchor_points
-from taut.kinematics._pose import as_poses, body_frames
-from taut.model._robot import Circle, Robot
+from taut.kinematics import anchor_points, as_poses, body_frames
+from taut.model import Circle, Robot
 from taut.viz._style import (
     DISALLOWED,
     FRAME,
@@ -165,7 +164,7 @@ def _default_pose(robot: Robot) -> np.ndarray:
     if robot.reference is not None and robot.reference.poses:
         name = "home" if "home" in robot.reference.poses else next(iter(robot.reference.poses))
         return np.asarray(robot.reference.poses[name], float)
-    from taut.kinematics._forward import default_guess
+    from taut.kinematics import default_guess
 
     return default_guess(robot)
 

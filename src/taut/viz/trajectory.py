@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from taut.model._robot import Robot
+from taut.model import Robot
 from taut.viz._style import axes_2d, cable_color, empty_figure
 
 if TYPE_CHECKING:
@@ -25,7 +25,7 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
     from taut.viz.report import Report
-    from taut.wrapping._trajectory import TrajectoryResult
+    from taut.wrapping import TrajectoryResult
 
 __all__ = ["draw_wrapped_cables", "plot_trajectory", "trajectory_section"]
 
@@ -95,7 +95,7 @@ def plot_trajectory(robot: Robot, result: TrajectoryResult, snapshots: int = 3, 
 def trajectory_section(report: Report) -> None:
     """One trajectory of each VSCR example: lengths, transitions, snapshots, tensions."""
     from taut.model import example
-    from taut.wrapping._trajectory import builtin_trajectory, run_trajectory
+    from taut.wrapping import builtin_trajectory, run_trajectory
 
     rows, figures = [], []
     for name in ["vscr-single-cable", "vscr-four-cable", "vscr-agriculture", "vscr-rehabilitation", "vscr-t-shaped"]:

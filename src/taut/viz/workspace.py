@@ -31,7 +31,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
-from taut.model._robot import Robot
+from taut.model import Robot
 from taut.viz._style import INSIDE, OUTSIDE, axes_2d, axes_3d, set_equal_3d
 from taut.viz.robot import draw_scene_2d, draw_scene_3d, scene_points_3d
 

@@ -8,18 +8,44 @@ References
    Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
 """
 
-from taut.workspace._conditions import (
-    CONDITIONS,
-    StaticEquilibrium,
-    WorkspaceCondition,
-    WrenchClosure,
-    WrenchCondition,
-    WrenchFeasible,
-    default_wrench_set,
-    make_condition,
-)
-from taut.workspace._evaluate import WorkspaceResult, evaluate_workspace
-from taut.workspace._grid import PoseGrid, default_bounds, make_grid, pose_grid, position_grid
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from taut._lazy import lazy_exports
+
+if TYPE_CHECKING:
+    from taut.workspace._conditions import (
+        CONDITIONS,
+        StaticEquilibrium,
+        WorkspaceCondition,
+        WrenchClosure,
+        WrenchCondition,
+        WrenchFeasible,
+        default_wrench_set,
+        make_condition,
+    )
+    from taut.workspace._evaluate import WorkspaceResult, evaluate_workspace
+    from taut.workspace._grid import PoseGrid, default_bounds, make_grid, pose_grid, position_grid
+
+#: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
+_LAZY = {
+    "CONDITIONS": "taut.workspace._conditions",
+    "StaticEquilibrium": "taut.workspace._conditions",
+    "WorkspaceCondition": "taut.workspace._conditions",
+    "WrenchClosure": "taut.workspace._conditions",
+    "WrenchCondition": "taut.workspace._conditions",
+    "WrenchFeasible": "taut.workspace._conditions",
+    "default_wrench_set": "taut.workspace._conditions",
+    "make_condition": "taut.workspace._conditions",
+    "WorkspaceResult": "taut.workspace._evaluate",
+    "evaluate_workspace": "taut.workspace._evaluate",
+    "PoseGrid": "taut.workspace._grid",
+    "default_bounds": "taut.workspace._grid",
+    "make_grid": "taut.workspace._grid",
+    "pose_grid": "taut.workspace._grid",
+    "position_grid": "taut.workspace._grid",
+}
 
 __all__ = [
     "CONDITIONS",
@@ -38,3 +64,5 @@ __all__ = [
     "pose_grid",
     "position_grid",
 ]
+
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

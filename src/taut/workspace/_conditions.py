@@ -34,12 +34,11 @@ from typing import ClassVar
 
 import numpy as np
 
-from taut.collision._proximity import proximity
+from taut.collision import proximity
 from taut.errors import TautError
-from taut.kinematics._batch import batch_structure_matrices
-from taut.model._robot import Robot
-from taut.statics._feasibility import static_equilibrium, wrench_closure, wrench_feasible
-from taut.statics._wrench import BoxWrenchSet, WrenchSet, external_wrench
+from taut.kinematics import batch_structure_matrices
+from taut.model import Robot
+from taut.statics import BoxWrenchSet, WrenchSet, external_wrench, static_equilibrium, wrench_closure, wrench_feasible
 
 __all__ = [
     "CONDITIONS",

@@ -1,5 +1,5 @@
 """Grid evaluation of a workspace condition (Rushton 2022, §2.1.4): the
-poses of a :class:`~taut.workspace._grid.PoseGrid` are split into chunks of flat indices,
+poses of a :class:`~taut.workspace.PoseGrid` are split into chunks of flat indices,
 each chunk's poses are generated where it is evaluated (in one vectorised call of the
 condition), and the chunks are mapped over an executor of :mod:`taut.parallel` (serial,
 local processes or dask.distributed — the verdicts are identical whatever the executor
@@ -25,10 +25,10 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import GridSizeError, PoseError, TautError
-from taut.kinematics._pose import as_poses
-from taut.model._robot import Robot
+from taut.kinematics import as_poses
+from taut.model import Robot
 from taut.parallel import Executor, as_executor
-from taut.statics._wrench import WrenchSet
+from taut.statics import WrenchSet
 from taut.workspace._conditions import WorkspaceCondition, make_condition
 from taut.workspace._grid import AxisSpec, PoseGrid, format_bytes, make_grid
 
@@ -194,7 +194,7 @@ def _evaluate_chunk(item: Chunk) -> np.ndarray:
 
 def _check_grid(robot: Robot, grid: PoseGrid) -> None:
     """Every pose of ``grid`` is a valid pose of ``robot``: the checks of
-    :func:`~taut.kinematics._pose.as_poses` are bounds per coordinate, so the grid's two
+    :func:`~taut.kinematics.as_poses` are bounds per coordinate, so the grid's two
     corners stand for all its poses."""
     try:
         as_poses(robot, grid.corners())
@@ -217,10 +217,10 @@ def evaluate_workspace(
 ) -> WorkspaceResult:
     """Evaluate a workspace condition over a grid of poses.
 
-    ``condition``: a name of :data:`~taut.workspace._conditions.CONDITIONS`
+    ``condition``: a name of :data:`~taut.workspace.CONDITIONS`
     (``wrench-closure``, ``wrench-feasible``, ``static``) or a condition instance;
     ``wrench_set`` is passed to it (``wrench-feasible``: the set around the external
-    wrench).  The poses are ``grid`` (see :func:`~taut.workspace._grid.make_grid`: ``None``
+    wrench).  The poses are ``grid`` (see :func:`~taut.workspace.make_grid`: ``None``
     for the default position grid of ``resolution`` points per axis at ``orientation``, a
     :class:`PoseGrid`, or per-axis ``(lo, hi, n)``/coordinates), or an explicit array
     ``poses (N, pose_size)`` (then ``axes == ()`` and ``grid_shape == (N,)``).

@@ -25,7 +25,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import GridSizeError, TautError
-from taut.model._robot import Robot
+from taut.model import Robot
 
 __all__ = [
     "MAX_GRID_POSES",

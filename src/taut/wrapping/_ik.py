@@ -1,7 +1,7 @@
 """Inverse kinematics of planar variable-structure CDPRs (VSCRs) along a path (§4.3 of Rushton 2022).
 
 Two stages per sample (§4.3): update every cable's state for the new platform pose with
-Alg. 4.4 (:func:`taut.wrapping._update.track`), then turn states into lengths with
+Alg. 4.4 (:func:`taut.wrapping.track`), then turn states into lengths with
 Eq. (4.9).  The platform anchor of cable *i* is ``b_i = p + R(θ) r_i`` (Eq. 4.8; a point
 mass has ``r_i = 0``).  Each cable's *active segment* plays the role of the straight cable
 of a standard CDPR: ``u_i`` points from ``b_i`` to the last point where the cable touches
@@ -30,11 +30,9 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import PoseError, TautError
-from taut.geometry._intersections import circles_overlap, point_in_polygon
-from taut.kinematics._inverse import anchor_points
-from taut.kinematics._pose import as_poses
-from taut.kinematics._swivel import refuse_swivels
-from taut.model._robot import Circle, Robot
+from taut.geometry import circles_overlap, point_in_polygon
+from taut.kinematics import anchor_points, as_poses, refuse_swivels
+from taut.model import Circle, Robot
 from taut.wrapping._state import CablePath, contact_angle, rebuild_path
 from taut.wrapping._tree import DIR, OBJ, CableStateTree
 from taut.wrapping._update import track

@@ -5,7 +5,7 @@ A cable runs from its winch (the exit pulley, a circle ``(a, r_0)`` turned in di
 Its *state* is the minimal information that rebuilds the path (§4.1.1, Alg. 4.1): the
 objects it touches in order and the wrap direction about each (``+1`` counter-clockwise,
 ``−1`` clockwise, as in Appendix A).  Every straight segment is the wrap-direction
-consistent common tangent of its two end objects (:func:`taut.geometry._tangents.directed_tangent`),
+consistent common tangent of its two end objects (:func:`taut.geometry.directed_tangent`),
 so the entry and exit angles follow from the objects; the last one, the *active segment*,
 ends at ``b``.
 
@@ -32,7 +32,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TautError
-from taut.geometry._tangents import directed_tangent
+from taut.geometry import directed_tangent
 
 #: Lower end of the range of wrap angles about an object (radians).
 WRAP_LOW = -0.5 * math.pi

@@ -11,7 +11,7 @@ which cables are length-controlled — ``m`` of the ``n`` cables (``m`` = platfo
 chosen in cable order but never two whose active segments leave the same object towards
 the same anchor, since "if multiple cables have the same anchor points, one at most can be
 length controlled" — and a tension distribution by linear programming (minimum total
-tension within the bounds, :func:`taut.statics._tension.solve_tensions`, ``method="lp"``);
+tension within the bounds, :func:`taut.statics.solve_tensions`, ``method="lp"``);
 samples without a feasible distribution are reported.
 
 References
@@ -30,9 +30,8 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TautError
-from taut.model._robot import Robot
-from taut.statics._tension import solve_tensions
-from taut.statics._wrench import external_wrench
+from taut.model import Robot
+from taut.statics import external_wrench, solve_tensions
 from taut.wrapping._ik import WrappedIK, wrapped_inverse_kinematics
 from taut.wrapping._tree import OBJ
 

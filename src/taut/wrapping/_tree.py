@@ -38,8 +38,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TautError
-from taut.geometry._intersections import segment_enters_polygon, segment_meets_circle, segments_intersect
-from taut.geometry._tangents import directed_tangent
+from taut.geometry import directed_tangent, segment_enters_polygon, segment_meets_circle, segments_intersect
 from taut.wrapping._state import WINCH_LOW, WRAP_LOW, CableState, contact_angle, wrap_angle
 
 # columns of F
@@ -96,6 +95,31 @@ class CableStateTree:
             F[: self.size] = self.F[: self.size]
             I[: self.size] = self.I[: self.size]
             self.F, self.I = F, I
+
+    def parent(self, node: int) -> int:
+        """The node this one wraps from (−1 for the root)."""
+        return int(self.I[node, PARENT])
+
+    def obstacle(self, node: int) -> int:
+        """The obstacle (0-based; ``n_objects`` for the winch) the cable last wraps at ``node``."""
+        return int(self.I[node, OBJ])
+
+    def direction(self, node: int) -> int:
+        """The wrapping direction at ``node``: +1 counter-clockwise, −1 clockwise."""
+        return int(self.F[node, DIR])
+
+    def theta_in(self, node: int) -> float:
+        """The contact angle [rad] at which the cable arrives on its last obstacle."""
+        return float(self.F[node, THETA_IN])
+
+    def static_length(self, node: int) -> float:
+        """The length [m] of the cable from the winch up to its arrival on the last obstacle."""
+        return float(self.F[node, L_STATIC])
+
+    def ray(self, node: int) -> tuple[np.ndarray, np.ndarray]:
+        """``(point (2,), unit direction (2,))``: where the free part of the cable leaves its
+        last contact at ``node``, and the direction it leaves in."""
+        return self.F[node, [EX, EY]].copy(), self.F[node, [UX, UY]].copy()
 
     def path(self, node: int) -> list[int]:
         """Nodes from the root to ``node``."""
