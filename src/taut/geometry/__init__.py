@@ -17,13 +17,15 @@ if TYPE_CHECKING:
     )
     from taut.geometry._rates import rate_matrix, rate_matrix_derivative
     from taut.geometry._rotation import CONVENTIONS, angles_from_matrix, planar_rotation, rotation_matrix
-    from taut.geometry._rotation_kernels import matrix_angles
+    from taut.geometry._rotation_kernels import matrix_angles, rotate_about_axis, rotation_into
     from taut.geometry._segments import segment_distance, segment_distance_scalar
     from taut.geometry._tangents import directed_tangent
     from taut.geometry._vectors import cross
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
+    "rotation_into": "taut.geometry._rotation_kernels",
+    "rotate_about_axis": "taut.geometry._rotation_kernels",
     "matrix_angles": "taut.geometry._rotation_kernels",
     "axis_frames": "taut.geometry._frames",
     "circles_overlap": "taut.geometry._intersections",
@@ -44,17 +46,19 @@ _LAZY = {
 }
 
 __all__ = [
-    "matrix_angles",
     "CONVENTIONS",
     "angles_from_matrix",
     "axis_frames",
     "circles_overlap",
     "cross",
     "directed_tangent",
+    "matrix_angles",
     "planar_rotation",
     "point_in_polygon",
     "rate_matrix",
     "rate_matrix_derivative",
+    "rotate_about_axis",
+    "rotation_into",
     "rotation_matrix",
     "segment_distance",
     "segment_distance_scalar",
