@@ -19,10 +19,11 @@ from taut.workspace.conditions import (
     make_condition,
 )
 from taut.workspace.evaluate import WorkspaceResult, evaluate_workspace
-from taut.workspace.grid import PoseGrid, default_bounds, make_grid, pose_grid, position_grid
+from taut.workspace.grid import MAX_GRID_POSES, PoseGrid, default_bounds, make_grid, pose_grid, position_grid
 
 __all__ = [
     "CONDITIONS",
+    "MAX_GRID_POSES",
     "PoseGrid",
     "StaticEquilibrium",
     "WorkspaceCondition",
