@@ -10,21 +10,29 @@ import ast
 import inspect
 import re
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
-import numpy as np
-import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
+import matplotlib
 
-import taut
-import taut.errors
-from taut.dynamics import IntegrationError
-from taut.errors import ArgumentError, TautError
-from taut.geometry import angles_from_matrix, planar_rotation, rotation_matrix
-from taut.geometry.rates import angular_acceleration, angular_velocity, rate_matrix
-from taut.geometry.segments import segment_distance
-from taut.interval import Interval, branch_and_prune, compile_system, variables
+matplotlib.use("Agg")
+
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+import taut  # noqa: E402
+import taut.errors  # noqa: E402
+from taut.dynamics import IntegrationError  # noqa: E402
+from taut.errors import ArgumentError, PoseError, TautError  # noqa: E402
+from taut.geometry import angles_from_matrix, planar_rotation, rotation_matrix  # noqa: E402
+from taut.geometry.rates import angular_acceleration, angular_velocity, rate_matrix  # noqa: E402
+from taut.geometry.segments import segment_distance  # noqa: E402
+from taut.interval import Interval, branch_and_prune, compile_system, variables  # noqa: E402
+from taut.viz import Report, draw_robot, plot_tensions, plot_workspace  # noqa: E402
+from taut.viz.dgp import plot_equilibria, plot_tracking  # noqa: E402
 
 SRC = Path(__file__).parents[1] / "src" / "taut"
 FILES = sorted(SRC.rglob("*.py"))
@@ -38,6 +46,30 @@ def test_taut_error_is_a_value_error():
         assert issubclass(cls, TautError) and issubclass(cls, ValueError), cls
     with pytest.raises(ValueError, match="unknown orientation convention"):
         rotation_matrix([0.0, 0.0, 0.0], "zyz")
+
+
+def _bare_raises(source: str) -> list[int]:
+    """Lines of ``raise ValueError(...)`` / ``raise TypeError`` (called or not)."""
+    out = []
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.Raise) and node.exc is not None:
+            exc = node.exc.func if isinstance(node.exc, ast.Call) else node.exc
+            if isinstance(exc, ast.Name) and exc.id in ("ValueError", "TypeError"):
+                out.append(node.lineno)
+    return out
+
+
+def test_bare_raise_is_detected():
+    source = (
+        "raise ValueError('x')\nraise TypeError\nraise TautError('y')\ntry:\n    f()\nexcept ValueError:\n    raise\n"
+    )
+    assert _bare_raises(source) == [1, 2]
+
+
+@pytest.mark.parametrize("path", FILES, ids=[str(p.relative_to(SRC)) for p in FILES])
+def test_no_bare_value_or_type_error_is_raised(path):
+    lines = _bare_raises(path.read_text())
+    assert not lines, f"{path.relative_to(SRC)} raises a bare ValueError/TypeError at lines {lines}"
 
 
 # ---- the limits shared by several modules are defined once -------------------------------
@@ -72,6 +104,23 @@ def _system():
     return compile_system(2, [x * x + y * y - 1.0, x - y])
 
 
+@dataclass
+class _Grid:
+    condition: str
+    inside: np.ndarray
+    axes: tuple
+    grid_shape: tuple
+
+
+def _figure_with_axes():
+    fig = plt.figure()
+    fig.add_subplot()
+    return fig
+
+
+PLANAR = taut.example("planar-4cable")
+SPATIAL = taut.example("spatial-8cable")
+
 #: name → call that gets bad input
 BAD_INPUT: dict[str, Callable[[], object]] = {
     # geometry
@@ -104,6 +153,22 @@ BAD_INPUT: dict[str, Callable[[], object]] = {
     "branch and prune: primary": lambda: branch_and_prune(_system(), [-2, -2], [2, 2], primary=[True]),
     "branch and prune: tube": lambda: branch_and_prune(_system(), [-2, -2], [2, 2], tube=5),
     "branch and prune: domain": lambda: branch_and_prune(_system(), [-2, -2], [2, 2], domain=([-1, -1], [1, 1])),
+    # viz
+    "draw robot: 2-D axes for 3-D": lambda: draw_robot(SPATIAL, None, ax=plt.figure().add_subplot()),
+    "draw robot: 3-D axes for 2-D": lambda: draw_robot(PLANAR, None, ax=plt.figure().add_subplot(projection="3d")),
+    "tensions: 3-D array": lambda: plot_tensions(None, np.ones((2, 2, 2)), 0.0, 1.0),
+    "tensions: not numbers": lambda: plot_tensions(None, "abc", 0.0, 1.0),
+    "tensions: times": lambda: plot_tensions([0.0, 1.0, 2.0], np.ones((2, 3)), 0.0, 1.0),
+    "tensions: flags": lambda: plot_tensions(None, np.ones((2, 3)), 0.0, 1.0, [True]),
+    "tensions: bounds": lambda: plot_tensions(None, np.ones((2, 3)), [0.0, 0.0], 1.0),
+    "workspace: inside": lambda: plot_workspace(_Grid("x", np.ones(3, bool), (np.arange(2.0), np.arange(2.0)), (2, 2))),
+    "workspace: one axis": lambda: plot_workspace(_Grid("x", np.ones(2, bool), (np.arange(2.0),), (2,))),
+    "workspace: axes not numbers": lambda: plot_workspace(_Grid("x", np.ones(4, bool), ("ab", "cd"), (2, 2))),
+    "equilibria: columns": lambda: plot_equilibria(SPATIAL, [], columns=0),
+    "equilibria: figure with axes": lambda: plot_equilibria(SPATIAL, [], fig=_figure_with_axes()),
+    "tracking: no solution": lambda: plot_tracking([]),
+    "report: not a tuple": lambda: Report("r").add_section("s", figures=[plt.figure()]),
+    "report: path": lambda: Report("r").add_section("s", figures=[(plt.figure(), "../x.png")]),
 }
 
 
@@ -111,6 +176,13 @@ BAD_INPUT: dict[str, Callable[[], object]] = {
 def test_bad_input_raises_argument_error(name):
     with pytest.raises(ArgumentError):
         BAD_INPUT[name]()
+    plt.close("all")
+
+
+def test_several_poses_for_one_drawing_raise_pose_error():
+    with pytest.raises(PoseError, match="one pose"):
+        draw_robot(PLANAR, np.zeros((2, PLANAR.pose_size)))
+    plt.close("all")
 
 
 @settings(max_examples=60, deadline=None)

@@ -1,6 +1,7 @@
 """Wrench-feasible path planning (Bohigas et al. 2013): higher-dimensional
-continuation (:mod:`.continuation`), A* over its charts (:mod:`.search`, complete), and
-AtlasRRT (Jaillet & Porta 2013, :mod:`.atlasrrt`, randomised).
+continuation (:mod:`.continuation`), A* over its charts (:mod:`.search`, complete),
+AtlasRRT (Jaillet & Porta 2013, :mod:`.atlasrrt`, randomised), and the classified grid of a
+two-dimensional slice (:func:`slice_map`, Fig. 5).
 
 References
 ----------
@@ -15,6 +16,7 @@ References
 from taut.planning.atlasrrt import atlas_rrt, shorten_path
 from taut.planning.continuation import Atlas, Chart, ImplicitManifold, Polytope, Symmetry, project, tangent_basis
 from taut.planning.search import PathResult, plan_path, refine_path
+from taut.planning.slices import SliceMap, slice_map
 
 __all__ = [
     "Atlas",
@@ -22,11 +24,13 @@ __all__ = [
     "ImplicitManifold",
     "PathResult",
     "Polytope",
+    "SliceMap",
     "Symmetry",
     "atlas_rrt",
     "plan_path",
     "project",
     "refine_path",
     "shorten_path",
+    "slice_map",
     "tangent_basis",
 ]
