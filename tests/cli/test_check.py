@@ -92,12 +92,3 @@ def test_other_robots_with_a_pose_file(cli, tmp_path):
     code, out, err = run(cli, "check", "spatial-8cable", "--trajectory", str(f), "--json")
     assert code == 0, err
     assert len(json.loads(out)["steps"]) == 2
-
-
-def test_check_section_reports_step_71():
-    from taut.viz import Report
-    from taut.viz.check import check_section
-
-    report = Report("t")
-    check_section(report)
-    assert "step 71" in report.sections[0].text

@@ -42,7 +42,13 @@ def loaded(statement: str) -> tuple[set[str], str]:
 
 @pytest.mark.parametrize(
     "statement, allowed",
-    [("import taut", set()), ("import taut.cli.main", set()), ("import taut.model, taut.statics", ROBOT)],
+    [
+        ("import taut", set()),
+        ("import taut.cli.main", set()),
+        # every package re-exports lazily (docs/architecture.md §2.7): importing one loads nothing
+        ("import taut.model, taut.statics, taut.kinematics, taut.dgp, taut.dynamics", set()),
+        ("from taut.model import example; example('planar-4cable')", ROBOT),
+    ],
 )
 def test_imports_load_no_heavy_library(statement, allowed):
     assert loaded(statement)[0] == allowed

@@ -5,6 +5,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from taut.errors import ArgumentError
 from taut.geometry._rates import angular_acceleration, angular_velocity, rate_matrix
 from taut.geometry._rotation import CONVENTIONS, rotation_matrix
 
@@ -47,5 +48,5 @@ def test_batched_shapes_and_gimbal_lock():
 
 
 def test_unknown_convention():
-    with pytest.raises(ValueError, match="unknown orientation convention"):
+    with pytest.raises(ArgumentError, match="unknown orientation convention"):
         rate_matrix([0, 0, 0], "zyz")

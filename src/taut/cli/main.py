@@ -31,9 +31,6 @@ if TYPE_CHECKING:
 #: ``command(name, help, fn, robot=True)``: adds a sub-command (see :func:`build_parser`).
 Command = Callable[..., argparse.ArgumentParser]
 
-#: Most poses of one ``workspace`` grid: beyond it the verdicts alone fill gigabytes.
-MAX_GRID_POSES = 10**9
-
 
 class _Parser(argparse.ArgumentParser):
     def error(self, message: str) -> NoReturn:
@@ -198,8 +195,10 @@ def cmd_tensions(ns: argparse.Namespace) -> int:
 
 def _grid(text: str | None, dimension: int) -> tuple[list[tuple[float, float, int]] | None, int | None]:
     """``--grid N`` (points per axis) or ``lo:hi:n;lo:hi:n[;...]`` (one range per axis), with
-    at least one point per axis and at most :data:`MAX_GRID_POSES` poses in all."""
+    at least one point per axis and at most :data:`taut.workspace.MAX_GRID_POSES` poses in all."""
     import numpy as np
+
+    from taut.workspace import MAX_GRID_POSES
 
     if text is None:
         return None, None
@@ -219,7 +218,7 @@ def _grid(text: str | None, dimension: int) -> tuple[list[tuple[float, float, in
     if n < 1:
         raise TautError(f"--grid: every axis needs at least one point, got {text!r}")
     if count > MAX_GRID_POSES:
-        raise TautError(f"--grid: {text!r} makes {float(count):.3g} poses, more than {MAX_GRID_POSES:.0e}")
+        raise TautError(f"--grid: {text!r} makes {float(count):.3g} poses, more than {MAX_GRID_POSES:,}")
     return axes, None if axes is not None else n
 
 
@@ -399,6 +398,8 @@ def main(argv: list[str] | None = None) -> int:
             code: int = ns.fn(ns)
         return code
     except TautError as exc:
+        # before the broad clause below: a TautError is a ValueError, but only a TautError is
+        # bad input; a bare ValueError from taut or a library is a bug (exit 1)
         print(f"taut: error: {exc}", file=sys.stderr)
         return 2
     except (MemoryError, RecursionError) as exc:

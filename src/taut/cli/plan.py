@@ -235,9 +235,12 @@ def cmd_plan(ns: argparse.Namespace) -> int:
             np.savetxt(fh, table, delimiter=",", header=head, comments="")
         data["out"] = str(out)
     if plot is not None:
+        from taut.planning import slice_map
         from taut.viz.plan import plot_plan
 
-        save_figure(plot_plan(M, res, axes=(free[0], free[1])), plot, data)
+        centres = M.pose(res.atlas.centres)
+        grid = slice_map(M, centres[0], axes=(free[0], free[1]), span=centres)
+        save_figure(plot_plan(M, res, grid), plot, data)
     emit(data, ns.json, human)
     return 0
 

@@ -56,6 +56,8 @@ def _read_waypoints(spec: str) -> tuple[str | None, np.ndarray | None]:
                 if ln.strip() and not ln.lstrip().startswith("#")
             ]
             W = np.asarray(rows, dtype=float)
+    except TautError:
+        raise
     except (ValueError, TypeError, AttributeError, RecursionError) as exc:
         raise TautError(f"--waypoints {spec}: expected rows of numbers ({exc})") from None
     if W.ndim != 2 or len(W) < 1 or not np.isfinite(W).all():

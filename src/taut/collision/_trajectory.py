@@ -37,7 +37,7 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
-from taut.collision._capsules import CapsuleModel, capsule_model
+from taut.collision._capsules import CapsuleModel, capsule_model, capsule_segments
 from taut.collision._proximity import ProximityResult, proximity
 from taut.collision._singularity import JACOBIAN_TOL, force_closure_singular, jacobian_singular
 from taut.errors import PoseError, TautError
@@ -188,6 +188,12 @@ class CheckResult:
     def problems(self) -> np.ndarray:
         """``(N,)`` bool: a collision or a singularity."""
         return self.collides | self.jacobian_singular | self.force_closure_singular
+
+    def capsules(self, robot: Robot, k: int) -> tuple[np.ndarray, np.ndarray]:
+        """End points ``A, B`` ``(C, 3)`` of every capsule of :attr:`model` at pose ``k``
+        (0-based) of ``robot``, the robot that was checked (:func:`capsule_segments`)."""
+        A, B = capsule_segments(robot, self.poses[k : k + 1], self.model)
+        return A[0], B[0]
 
     def first(self, flags: np.ndarray) -> int | None:
         """0-based index of the first pose whose flag is true, or None."""

@@ -258,6 +258,8 @@ def _tabulate(f: Callable[[float], npt.ArrayLike] | None, time: np.ndarray, subs
             t = float(time[k] + s * h)
             try:
                 w = np.asarray(f(t), dtype=float)
+            except TautError:
+                raise
             except (TypeError, ValueError) as e:
                 raise TautError(f"disturbance at t = {t:g} s: not numbers ({e})") from None
             if w.shape != (dof,) or not np.isfinite(w).all():

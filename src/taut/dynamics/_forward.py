@@ -359,6 +359,8 @@ def _rk4(
 def _call(f: Callable[[float], npt.ArrayLike], t: float, what: str, shape: tuple[int, ...]) -> np.ndarray:
     try:
         v = np.asarray(f(t), dtype=float)
+    except TautError:
+        raise
     except (TypeError, ValueError) as e:
         raise TautError(f"{what} at t = {t:g} s: not numbers ({e})") from None
     if v.shape != shape:

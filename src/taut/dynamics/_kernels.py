@@ -33,11 +33,10 @@ import numpy as np
 from numba import njit
 
 from taut.geometry import rotate_about_axis
+from taut.kinematics import MIN_LENGTH
 
 #: Below this ``|det U|`` the rate matrix counts as singular (gimbal lock).
 GIMBAL_TOL = 1e-9
-#: A cable shorter than this [m] has no direction.
-MIN_LENGTH = 1e-12
 
 OK, GIMBAL_LOCK, ZERO_LENGTH = 0, 1, 2
 

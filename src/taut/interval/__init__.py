@@ -46,8 +46,6 @@ if TYPE_CHECKING:
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
-    "solve_precise": "taut.interval._precise",
-    "precise_available": "taut.interval._precise",
     "Interval": "taut.interval._arithmetic",
     "centred_form": "taut.interval._arithmetic",
     "Box": "taut.interval._branch_prune",
@@ -81,6 +79,8 @@ _LAZY = {
     "LinearFilter": "taut.interval._linear",
     "interval_gauss": "taut.interval._linear",
     "preconditioned_solve": "taut.interval._linear",
+    "precise_available": "taut.interval._precise",
+    "solve_precise": "taut.interval._precise",
 }
 
 __all__ = [

@@ -50,6 +50,7 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut.errors import ArgumentError
 from taut.interval._expression import System
 from taut.interval._hc4 import contract, contract_kernel, evaluate, evaluate_kernel
 from taut.interval._krawczyk import Certificate, certify, krawczyk, krawczyk_jacobian, tube_kernel
@@ -248,14 +249,19 @@ def branch_and_prune(
 
     ``progress(boxes, None)`` is called every :data:`PROGRESS_BOXES` boxes processed (the
     total is unknown until the end), and ``progress(boxes, boxes)`` once the search is done.
+
+    Raises :class:`~taut.errors.ArgumentError` for an unknown ``method`` or ``bisection``,
+    filters the compiled loop cannot run with ``method="numba"``, a start box or ``primary``
+    of the wrong size, a box outside ``domain``, or a ``tube`` that is not under-determined.
     """
     kernel_ok = all(isinstance(f, LinearFilter) for f in filters) and len(filters) <= 1
     if method not in ("auto", "numba", "python"):
-        raise ValueError(f"method must be 'auto', 'numba' or 'python', got {method!r}")
+        raise ArgumentError(f"method must be 'auto', 'numba' or 'python', got {method!r}")
     if method == "numba" and not kernel_ok:
-        raise ValueError("method='numba' takes at most one filter, a LinearFilter")
+        raise ArgumentError("method='numba' takes at most one filter, a LinearFilter")
     if bisection not in ("width", "smear"):
-        raise ValueError(f"bisection must be 'width' or 'smear', got {bisection!r}")
+        raise ArgumentError(f"bisection must be 'width' or 'smear', got {bisection!r}")
+    _start_box(system, lo, hi, primary)
     smear = bisection == "smear"
     if method != "python" and kernel_ok:
         return _branch_and_prune_numba(
@@ -606,13 +612,13 @@ def tube_variables(system: System, tube: int, primary: np.ndarray) -> tuple[np.n
     non-primary ones first, and how many of them lead (the tube step solves for them: a
     variable that is not bisected is a function of the primary ones)."""
     if not 0 <= tube < system.n_equations:
-        raise ValueError(f"tube must be between 0 and {system.n_equations - 1}, got {tube}")
+        raise ArgumentError(f"tube must be between 0 and {system.n_equations - 1}, got {tube}")
     used = np.unique(system.cols[system.rows < tube])
     if tube and used.size <= tube:
-        raise ValueError(f"the first {tube} equations involve {used.size} variables: not under-determined")
+        raise ArgumentError(f"the first {tube} equations involve {used.size} variables: not under-determined")
     dependent = used[~primary[used]]
     if dependent.size > tube:
-        raise ValueError(
+        raise ArgumentError(
             f"the first {tube} equations involve {dependent.size} non-primary variables: they cannot all be solved for"
         )
     return np.concatenate([dependent, used[primary[used]]]).astype(np.int64), int(dependent.size)
@@ -625,6 +631,24 @@ def _slope_points(system: System, k: int) -> int:
     return points_for(int(np.max(system.degrees[:k]))) if k else 0
 
 
+def _start_box(system: System, lo: npt.ArrayLike, hi: npt.ArrayLike, primary: npt.ArrayLike | None) -> None:
+    """Raise :class:`~taut.errors.ArgumentError` unless ``[lo, hi]`` is a box of
+    ``system.n`` variables without NaN (an empty one, ``lo > hi`` somewhere, holds no
+    solution) and ``primary`` a mask of as many."""
+    try:
+        box = [np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)]
+    except (TypeError, ValueError):
+        raise ArgumentError("the start box must be two arrays of numbers (lo, hi)") from None
+    if any(b.shape != (system.n,) for b in box):
+        raise ArgumentError(
+            f"the start box needs {system.n} lower and upper bounds, got shapes {box[0].shape} and {box[1].shape}"
+        )
+    if np.isnan(box[0]).any() or np.isnan(box[1]).any():
+        raise ArgumentError("the start box has NaN bounds")
+    if primary is not None and np.shape(primary) != (system.n,):
+        raise ArgumentError(f"primary must mark each of the {system.n} variables, got shape {np.shape(primary)}")
+
+
 def _domain(
     lo: npt.ArrayLike, hi: npt.ArrayLike, domain: tuple[npt.ArrayLike, npt.ArrayLike] | None
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -632,7 +656,7 @@ def _domain(
         return np.array(lo, float), np.array(hi, float)
     dlo, dhi = (np.array(d, float) for d in domain)
     if np.any(np.asarray(lo, float) < dlo) or np.any(np.asarray(hi, float) > dhi):
-        raise ValueError("the start box must lie in the search domain")
+        raise ArgumentError("the start box must lie in the search domain")
     return dlo, dhi
 
 

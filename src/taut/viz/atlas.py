@@ -1,7 +1,7 @@
 """Figures of a structure atlas (Figs. 5.4 and 5.9 of Rushton 2022):
 :func:`plot_atlas` — the charts in grey (darker where they overlap) with their traversable
-edges, the start point (and a rigid platform's outline there, at the page's orientation), and, given a workspace (Alg. 5.2), the workspace in purple over
-the charts kept; :func:`atlas_section`, the demo's atlas of the T-shaped VSCR.
+edges, the start point (and a rigid platform's outline there, at the page's orientation),
+and, given a workspace (Alg. 5.2), the workspace in purple over the charts kept.
 
 References
 ----------
@@ -11,15 +11,12 @@ References
 
 from __future__ import annotations
 
-import time
 from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from taut.atlas import AtlasWorkspace, StructureAtlas, atlas_workspace, build_atlas, direct_ik, platform_outline
-from taut.errors import TautError
-from taut.model import example
+from taut.geometry import planar_rotation
 from taut.viz._style import empty_figure
 from taut.viz.robot import draw_scene_2d
 
@@ -28,9 +25,9 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
     from shapely.geometry.base import BaseGeometry
 
-    from taut.viz.report import Report
+    from taut.atlas import AtlasWorkspace, StructureAtlas
 
-__all__ = ["atlas_section", "plot_atlas"]
+__all__ = ["plot_atlas"]
 
 WORKSPACE = "#7b2cbf"
 
@@ -65,10 +62,11 @@ def _draw_charts(ax: Axes, atlas: StructureAtlas, charts: Iterable[int], title: 
             )
             first = False
     ax.plot(*atlas.start, marker="o", color="black", ms=5, zorder=5, label="start", gid="start")
-    M = platform_outline(atlas.robot, atlas.theta)
-    if M is not None:  # the platform at the start, at the page's orientation
+    robot, shape = atlas.robot, atlas.robot.platform.shape
+    if not robot.is_point_mass and shape is not None and shape.polygon:  # at the start, at the page's orientation
+        M = np.asarray(shape.polygon, float) @ planar_rotation(atlas.theta).T
         ax.fill(
-            *(np.asarray(M.exterior.coords) + atlas.start).T,
+            *(M + atlas.start).T,
             fc="none",
             ec="black",
             lw=1.0,
@@ -84,8 +82,8 @@ def _draw_charts(ax: Axes, atlas: StructureAtlas, charts: Iterable[int], title: 
 def plot_atlas(atlas: StructureAtlas, workspace: AtlasWorkspace | None = None, fig: Figure | None = None) -> Figure:
     """Figure: the atlas (Fig. 5.4 / 5.9b) and, with ``workspace``, the workspace over the
     charts kept by Alg. 5.2 (Fig. 5.9c) in a second panel; laid out on the empty figure
-    ``fig`` (``None``: a new one; a figure that already has axes raises ``ValueError``),
-    which is returned."""
+    ``fig`` (``None``: a new one; a figure that already has axes raises
+    :class:`~taut.errors.ArgumentError`), which is returned."""
     panels = 2 if workspace is not None else 1
     fig = empty_figure(fig, "a structure atlas", (6.5 * panels, 5.5))
     axes = fig.subplots(1, panels, squeeze=False)
@@ -122,37 +120,3 @@ def plot_atlas(atlas: StructureAtlas, workspace: AtlasWorkspace | None = None, f
         ax.legend(loc="best", fontsize=7)
     fig.tight_layout()
     return fig
-
-
-def atlas_section(report: Report) -> None:
-    """Demo section: the structure atlas of the T-shaped VSCR and its wrench-feasible
-    workspace (Figs. 5.4, 5.9), with atlas-based direct IK timed."""
-    robot = example("vscr-t-shaped")
-    if robot.reference is None or "initial" not in robot.reference.poses:
-        raise TautError(f"{robot.name} has no reference pose 'initial' to start the atlas from")
-    start = robot.reference.poses["initial"]
-    t0 = time.perf_counter()
-    atlas = build_atlas(robot, start)
-    t_build = time.perf_counter() - t0
-    ws = atlas_workspace(atlas, "wrench-feasible")
-    low, high = np.array(atlas.space.bounds).reshape(2, 2)
-    Q = np.random.default_rng(0).uniform(low, high, size=(100_000, 2))
-    t0 = time.perf_counter()
-    direct_ik(atlas, Q)
-    rate = len(Q) / (time.perf_counter() - t0)
-    reach = atlas.reachable_area().area
-    text = (
-        f"Structure atlas of the T-shaped VSCR (§5.1.3, Alg. 5.1 of Rushton 2022) from the start point "
-        f"{list(start)}: {len(atlas.charts)} charts (one per reachable structure and SRA component), "
-        f"{atlas.n_edges} adjacent pairs, built in {t_build:.2f} s. The charts cover {reach:.4f} m² of the "
-        f"{atlas.space.area:.4f} m² installation space: the rest is inside the idlers and the winch pulleys. "
-        f"Wrench-feasible workspace (Alg. 5.2, grid step {ws.step * 1000:.1f} mm): {ws.area:.4f} m², "
-        f"{len(ws.pruned)} charts pruned. Atlas-based direct IK (Alg. 5.3): {rate:,.0f} queries/s."
-    )
-    fig = plot_atlas(atlas, ws)
-    report.add_section(
-        "vscr-t-shaped: structure atlas and workspace",
-        text=text,
-        figures=[(fig, "vscr-t-shaped-atlas.png", "charts and traversable edges; wrench-feasible workspace")],
-        json={"charts": len(atlas.charts), "edges": atlas.n_edges, "reachable_area": reach, "workspace_area": ws.area},
-    )

@@ -1,7 +1,6 @@
 """Figures of a trajectory check (:func:`taut.collision.check_poses`, Lieskovský (2020), §4.2):
 :func:`plot_check` — the smallest clearance ``ε`` and the singularity flags over the steps,
-and the robot at the first step with a problem, its colliding capsules in red; and
-:func:`check_section`, the demo's check of simulation c of ``adjustable-8cable``.
+and the robot at the first step with a problem, its colliding capsules in red.
 
 References
 ----------
@@ -16,8 +15,6 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from taut.collision import CheckResult, capsule_segments, check_poses, trajectory_poses
-from taut.model import Robot, example
 from taut.viz._style import DISALLOWED, empty_figure
 from taut.viz.robot import draw_robot
 
@@ -25,9 +22,10 @@ if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from taut.viz.report import Report
+    from taut.collision import CheckResult
+    from taut.model import Robot
 
-__all__ = ["check_section", "plot_check"]
+__all__ = ["plot_check"]
 
 
 def _bands(ax: Axes, steps: np.ndarray, flags: np.ndarray, y0: float, y1: float, color: str, label: str) -> None:
@@ -47,7 +45,7 @@ def plot_check(robot: Robot, result: CheckResult, fig: Figure | None = None) -> 
     """Figure: clearance and flags over the steps (left), robot at the first problem (right;
     the first step when there is none; 3-D for a spatial robot), laid out on the empty
     figure ``fig`` (``None``: a new one; a figure that already has axes raises
-    ``ValueError``), which is returned."""
+    :class:`~taut.errors.ArgumentError`), which is returned."""
     N = len(result.poses)
     steps = np.arange(1, N + 1)
     fig = empty_figure(fig, "a trajectory check", (13.0, 5.5))
@@ -66,10 +64,10 @@ def plot_check(robot: Robot, result: CheckResult, fig: Figure | None = None) -> 
     three_d = robot.dimension == 3
     rax = fig.add_subplot(1, 2, 2, projection="3d") if three_d else fig.add_subplot(1, 2, 2)
     draw_robot(robot, result.poses[k], ax=rax)
-    A, B = capsule_segments(robot, result.poses[k : k + 1], result.model)
+    A, B = result.capsules(robot, k)
     hit = sorted({c for pair in result.proximity.collisions(k) for c in pair})
     for c in hit:
-        pts = np.stack([A[0, c], B[0, c]])[:, : robot.dimension]
+        pts = np.stack([A[c], B[c]])[:, : robot.dimension]
         rax.plot(*pts.T, color=DISALLOWED, lw=4, gid=f"colliding-{c + 1}")
     what = "no problem" if first is None else "first problem"
     rax.set_title(
@@ -78,26 +76,3 @@ def plot_check(robot: Robot, result: CheckResult, fig: Figure | None = None) -> 
     ax.set_title(f"{robot.name}: {N} steps", fontsize=10)
     fig.tight_layout()
     return fig
-
-
-def check_section(report: Report) -> None:
-    """Demo section: simulation c of ``adjustable-8cable`` (rotation about x at s23 = 2)."""
-    robot = example("adjustable-8cable")
-    res = check_poses(robot, trajectory_poses(robot, "sim-c"))
-    first = res.first(res.collides)
-    pairs = ", ".join(f"{i + 1} & {j + 1}" for i, j in res.proximity.collisions(first)) if first is not None else "none"
-    text = (
-        "Simulation c of Lieskovský 2020, §4.2.2: the adjustable platform (two bodies joined by a "
-        "prismatic joint, 8 cables) rotates about x from 0 to π/8 in 100 steps with the joint retracted "
-        f"(s23 = 2). Capsule model: cables of radius 0.1, the two rectangles and the joint column. First "
-        f"self-collision at step {None if first is None else first + 1} between cables {pairs} (the source reports step 71, cables 1 & 5 and "
-        f"4 & 8). Force-closure singular steps: {int(res.force_closure_singular.sum())}; Jacobian singular: "
-        f"{int(res.jacobian_singular.sum())}."
-    )
-    fig = plot_check(robot, res)
-    report.add_section(
-        "adjustable-8cable: self-collision and singularities (simulation c)",
-        text=text,
-        figures=[(fig, "adjustable-8cable-check.png", "clearance over the steps; robot at the first collision")],
-        json={"first_collision": first, "collisions": res.proximity.collisions(first - 1) if first else []},
-    )

@@ -1,6 +1,5 @@
 """Tensions of a motion against time: :func:`plot_motion_tensions`; a controlled motion's
-tensions and tracking error: :func:`plot_control`; the demo report's section of a controlled
-motion of spatial-8cable: :func:`control_section`.
+tensions and tracking error: :func:`plot_control`.
 
 The figure of CASPR's inverse-dynamics workflow: one curve per cable over the trajectory's
 time, the tension bounds dashed, and the samples without an admissible distribution shaded
@@ -10,21 +9,20 @@ the samples where a cable is slack are marked infeasible.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
-from taut.dynamics import ControlResult, ForwardDynamicsResult, InverseDynamicsResult
-from taut.model import Robot
 from taut.viz.tensions import plot_tensions
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from taut.viz.report import Report
+    from taut.dynamics import ControlResult, ForwardDynamicsResult, InverseDynamicsResult
+    from taut.model import Robot
 
-__all__ = ["plot_motion_tensions", "plot_control", "control_section"]
+__all__ = ["plot_motion_tensions", "plot_control"]
 
 
 def plot_motion_tensions(
@@ -34,14 +32,17 @@ def plot_motion_tensions(
     index without one) or of a simulated motion (against time; slack samples marked) on 2-D
     axes ``ax`` (``None``: a new figure) and return the ``Axes``."""
     tmin, tmax = robot.tension_bounds
-    if isinstance(result, InverseDynamicsResult):
-        ax = plot_tensions(result.time, result.tensions, tmin, tmax, result.feasible, ax)
+    slack = getattr(result, "slack", None)  # only a simulated motion has slack cables
+    admissible: np.ndarray
+    if slack is None:
+        admissible = np.asarray(cast("InverseDynamicsResult", result).feasible, bool)
+        ax = plot_tensions(result.time, result.tensions, tmin, tmax, admissible, ax)
         what = f"inverse dynamics ({result.method})"
     else:
-        taut_all = ~result.slack.any(axis=1)
-        ax = plot_tensions(result.time, result.tensions, tmin, tmax, taut_all, ax, mask_infeasible=False)
+        admissible = np.asarray(~np.asarray(slack, bool).any(axis=1))
+        ax = plot_tensions(result.time, result.tensions, tmin, tmax, admissible, ax, mask_infeasible=False)
         what = f"simulated motion ({result.method})"
-    ok = int(np.count_nonzero(result.feasible if isinstance(result, InverseDynamicsResult) else taut_all))
+    ok = int(np.count_nonzero(admissible))
     ax.set_title(f"{robot.name}: {what}, {ok} of {len(result.tensions)} samples admissible", fontsize=10)
     return ax
 
@@ -80,56 +81,3 @@ def plot_control(robot: Robot, result: ControlResult) -> Figure:
     bottom.legend(fontsize=8, ncol=min(6, len(result.pose_names)), loc="best")
     fig.tight_layout()
     return fig
-
-
-def control_section(report: Report) -> None:
-    """spatial-8cable tracking a 3 s quintic motion under computed-torque control at 1 kHz,
-    with a controller model 10 % too heavy and a 5 N, 0.2 N·m step disturbance at 1 s."""
-    import time
-
-    from taut.dynamics import DEFAULT_KD, DEFAULT_KP, WrenchSteps, simulate_control, with_mass_error
-    from taut.model import example
-    from taut.motion import trajectory_from_waypoints
-
-    robot = example("spatial-8cable")
-    waypoints = [[0.0, 0, 0, 0, 0, 0], [0.3, 0.1, 0.2, 0.1, -0.05, 0.2], [-0.1, 0.2, 0.1, 0, 0, 0]]
-    motion = trajectory_from_waypoints(robot, waypoints, duration=3.0, law="quintic")
-    step = WrenchSteps.step(1.0, [5.0, -3.0, 0.0, 0.0, 0.2, 0.0])
-    # loads the compiled loop, which is not part of the timings
-    simulate_control(robot, trajectory_from_waypoints(robot, waypoints[:2], duration=1.0))
-    runs = {}
-    for label, model, wd in (
-        ("exact model", None, None),
-        ("mass +10 %, step", with_mass_error(robot, 0.1), step),
-        ("mass −10 %, step", with_mass_error(robot, -0.1), step),
-    ):
-        start = time.perf_counter()
-        runs[label] = (simulate_control(robot, motion, model=model, disturbance=wd), time.perf_counter() - start)
-    rows = [
-        {
-            "case": label,
-            "max position error [mm]": round(1e3 * float(res.position_error.max()), 4),
-            "max rotation error [mrad]": round(1e3 * float(res.rotation_error.max()), 4),
-            "min tension margin [N]": round(res.min_tension_margin, 1),
-            "slack events": res.slack_events,
-            "distribution failures": res.failures,
-            "x real time": round(motion.duration / elapsed, 1),
-        }
-        for label, (res, elapsed) in runs.items()
-    ]
-    shown = runs["mass +10 %, step"][0]
-    report.add_section(
-        "spatial-8cable: computed-torque control with the tension distribution in the loop",
-        text=(
-            f"A 3 s quintic motion through three poses tracked at 1 kHz by PD on the pose error "
-            f"(K_p = {DEFAULT_KP:g}/s², K_d = {DEFAULT_KD:g}/s) plus feed-forward inverse dynamics "
-            "(Siciliano et al. 2009, §8.5.2), the wrench turned into tensions by the closed-form "
-            "distribution (QP where it gives up; the last admissible tensions held where none exist, "
-            "as CASPR does), the plant integrated by RK4 with the tensions held over each period. "
-            "With the controller's mass and inertia 10 % off and a step of 5 N along x, −3 N along y "
-            "and 0.2 N·m about y at 1 s, the error settles near sup|d|/((1+ε) K_p), d = "
-            "−ε (q̈_r + M⁻¹h) − M⁻¹Jᵀw_d: a few millimetres, while every tension stays within its limits."
-        ),
-        figures=[(plot_control(robot, shown), "spatial-8cable-control.png", "mass +10 %, step disturbance at 1 s")],
-        table=rows,
-    )

@@ -20,11 +20,12 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from taut.motion import MotionSamples
 from taut.viz._style import cable_color, empty_figure
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
+
+    from taut.motion import MotionSamples
 
 __all__ = ["plot_motion"]
 
@@ -33,9 +34,9 @@ def plot_motion(
     samples: MotionSamples, waypoint_times: npt.ArrayLike | None = None, fig: Figure | None = None
 ) -> Figure:
     """Plot ``samples`` (e.g. ``motion.sample(100)``) on the empty figure ``fig`` (``None``: a
-    new one; a figure that already has axes raises ``ValueError``) and return it: pose,
-    velocity and acceleration of every pose coordinate against time, with dotted lines at
-    ``waypoint_times`` (e.g. ``motion.times``).  Coordinate ``k`` has ``gid="pose-<name>"``,
+    new one; a figure that already has axes raises :class:`~taut.errors.ArgumentError`) and
+    return it: pose, velocity and acceleration of every pose coordinate against time, with
+    dotted lines at ``waypoint_times`` (e.g. ``motion.times``).  Coordinate ``k`` has ``gid="pose-<name>"``,
     ``"velocity-<name>"``, ``"acceleration-<name>"`` in the three panels."""
     fig = empty_figure(fig, "a trajectory's pose, velocity and acceleration", (7.5, 8.0))
     axes = fig.subplots(3, 1, sharex=True)

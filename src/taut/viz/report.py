@@ -24,6 +24,8 @@ from urllib.parse import quote
 
 import numpy as np
 
+from taut.errors import ArgumentError
+
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure, SubFigure
@@ -142,19 +144,21 @@ class Report:
         stands for its whole figure); each figure is rendered to
         PNG and closed now; ``filename`` is a plain file name (``.png`` added if missing),
         unique in the report.  ``table``: a list of dict rows (columns in order of first
-        appearance).  ``json``: any JSON-serialisable value (NumPy values accepted)."""
+        appearance).  ``json``: any JSON-serialisable value (NumPy values accepted).
+        A figure item of another length or a file name that is not plain or is used twice
+        raises :class:`~taut.errors.ArgumentError`."""
         figs = []
         for item in figures or []:
-            if len(item) not in (2, 3):
-                raise ValueError("a report figure is (figure, filename) or (figure, filename, caption)")
+            if not isinstance(item, (tuple, list)) or len(item) not in (2, 3):
+                raise ArgumentError("a report figure is (figure, filename) or (figure, filename, caption)")
             fig, name = item[0], str(item[1])
             caption = str(item[2]) if len(item) == 3 and item[2] is not None else ""
             if not name or Path(name).name != name or name.startswith(".") or "\\" in name:
-                raise ValueError(f"report figure file name must be a plain file name, got {name!r}")
+                raise ArgumentError(f"report figure file name must be a plain file name, got {name!r}")
             if not name.lower().endswith(".png"):
                 name += ".png"
             if name in self._files or name == "index.html":
-                raise ValueError(f"report figure file name {name!r} is used twice")
+                raise ArgumentError(f"report figure file name {name!r} is used twice")
             self._files.add(name)
             figs.append(_Figure(name, caption, _png(fig)))
         rows = None

@@ -36,6 +36,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from taut.errors import PoseError
 from taut.kinematics import anchor_points, as_poses, body_frames
 from taut.model import Circle, Robot
 from taut.viz._style import (
@@ -177,7 +178,7 @@ def draw_scene_2d(robot: Robot, ax: Axes | None = None, *, labels: bool = True) 
     regions, obstacles, the frame outline and the exit points (with cable numbers when
     ``labels``) — on 2-D axes ``ax`` (``None``: a new figure) and return them.
 
-    Raises ``TypeError`` for 3-D axes."""
+    Raises :class:`~taut.errors.ArgumentError` for 3-D axes."""
     from matplotlib.patches import Circle as CirclePatch
     from matplotlib.patches import Polygon as PolygonPatch
 
@@ -294,7 +295,7 @@ def draw_scene_3d(robot: Robot, ax: Axes | None = None, *, labels: bool = True) 
     """Draw the fixed parts of a spatial robot on 3-D axes ``ax`` (``None``: a new figure)
     and return them; :func:`scene_points_3d` gives the points drawn, to set the limits.
 
-    Raises ``TypeError`` for 2-D axes."""
+    Raises :class:`~taut.errors.ArgumentError` for 2-D axes."""
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
     ax3 = axes_3d(ax, f"the scene of {robot.name}")
@@ -354,12 +355,13 @@ def draw_robot(robot: Robot, pose: npt.ArrayLike | None = None, ax: Axes | None 
 
     A planar robot is drawn on 2-D axes, a spatial one on 3-D axes (an ``Axes3D``, made by
     ``projection="3d"``); with ``ax=None`` a new figure with axes of the right kind is made,
-    axes of the other kind raise ``TypeError``.  Each cable is one line with
+    axes of the other kind raise :class:`~taut.errors.ArgumentError`, several poses a
+    :class:`~taut.errors.PoseError`.  Each cable is one line with
     ``gid="cable-<i>"`` and label ``"cable <i>"`` (1-based ``i``)."""
     pose = _default_pose(robot) if pose is None else pose
     arr, _ = as_poses(robot, pose)
     if arr.shape[0] != 1:
-        raise ValueError(f"draw_robot draws one pose, got {arr.shape[0]}")
+        raise PoseError(f"draw_robot draws one pose, got {arr.shape[0]}")
     what = f"{robot.name} ({'spatial' if robot.dimension == 3 else 'planar'})"
     drawn = _draw_3d(axes_3d(ax, what), robot, arr) if robot.dimension == 3 else _draw_2d(axes_2d(ax, what), robot, arr)
     drawn.set_title(f"{robot.name}\n{_pose_title(robot, arr[0])}", fontsize=10)

@@ -20,7 +20,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from taut.viz._style import DISALLOWED, axes_2d, cable_color
+from taut.errors import ArgumentError
+from taut.viz._style import DISALLOWED, axes_2d, cable_color, numbers
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -45,8 +46,9 @@ def plot_tensions(
     mask_infeasible: bool = True,
 ) -> Axes:
     """Plot tensions ``(N, n)`` against ``times_or_index`` (``N`` times; ``None`` for the
-    sample index) on 2-D axes ``ax`` (``None``: a new figure; 3-D axes raise ``TypeError``)
-    and return that ``Axes``.
+    sample index) on 2-D axes ``ax`` (``None``: a new figure) and return that ``Axes``.
+    3-D axes, arrays that are not numbers and sizes that do not match raise
+    :class:`~taut.errors.ArgumentError`.
 
     ``tmin``/``tmax`` are scalars or one bound per cable (infinite bounds are not drawn);
     ``feasible (N,)`` marks the samples without a feasible distribution; their tensions
@@ -54,25 +56,27 @@ def plot_tensions(
     ``mask_infeasible=False``: the lines break there.  Cable lines have ``gid="tension-<i>"``; the
     infeasible marks are one line with ``gid="infeasible"`` whose x data are the
     infeasible samples."""
-    T = np.asarray(tensions, float)
+    T = numbers(tensions, "tensions")
     if T.ndim == 1:
         T = T[None, :]
     if T.ndim != 2:
-        raise ValueError(f"tensions must be (N, n), got shape {np.shape(tensions)}")
+        raise ArgumentError(f"tensions must be (N, n), got shape {np.shape(tensions)}")
     N, n = T.shape
     if times_or_index is None:
         x, xlabel = np.arange(N, dtype=float), "sample"
     else:
-        x, xlabel = np.asarray(times_or_index, float).ravel(), "time [s]"
+        x, xlabel = numbers(times_or_index, "times").ravel(), "time [s]"
         if x.size != N:
-            raise ValueError(f"{x.size} times for {N} tension samples")
+            raise ArgumentError(f"{x.size} times for {N} tension samples")
     ok = np.ones(N, bool) if feasible is None else np.asarray(feasible, bool).ravel()
     if ok.size != N:
-        raise ValueError(f"{ok.size} feasibility flags for {N} tension samples")
+        raise ArgumentError(f"{ok.size} feasibility flags for {N} tension samples")
     if mask_infeasible and not ok.all():
         T = np.where(ok[:, None], T, np.nan)
-    lo = np.broadcast_to(np.asarray(tmin, float), (n,))
-    hi = np.broadcast_to(np.asarray(tmax, float), (n,))
+    lo, hi = (numbers(b, "tension bounds") for b in (tmin, tmax))
+    if lo.size not in (1, n) or hi.size not in (1, n):
+        raise ArgumentError(f"tension bounds are one number or one per cable ({n}), got {lo.size} and {hi.size}")
+    lo, hi = np.broadcast_to(lo.ravel(), (n,)), np.broadcast_to(hi.ravel(), (n,))
     ax = axes_2d(ax, "a plot of tensions", figsize=(7.0, 4.0))
 
     for i in range(n):

@@ -2,8 +2,7 @@
 
 :func:`plot_trajectory`: the cable lengths over time with every CST transition marked by a
 black circle (wrap: filled, unwrap: open), above snapshots of the robot in which each
-cable is drawn as its wrapped path — straight segments and arcs.  :func:`trajectory_section`
-adds one trajectory of each VSCR example to the ``taut demo`` report.
+cable is drawn as its wrapped path — straight segments and arcs.
 
 References
 ----------
@@ -17,23 +16,23 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from taut.model import Robot
+from taut.errors import ArgumentError
 from taut.viz._style import axes_2d, cable_color, empty_figure
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from taut.viz.report import Report
+    from taut.model import Robot
     from taut.wrapping import TrajectoryResult
 
-__all__ = ["draw_wrapped_cables", "plot_trajectory", "trajectory_section"]
+__all__ = ["draw_wrapped_cables", "plot_trajectory"]
 
 
 def draw_wrapped_cables(result: TrajectoryResult, sample: int, ax: Axes | None = None) -> Axes:
     """Draw every cable of ``result`` at ``sample`` as its path — static segments solid,
     the active segment dashed, arcs around the objects — on 2-D axes ``ax`` (``None``: a
-    new figure; 3-D axes raise ``TypeError``) and return that ``Axes``."""
+    new figure; 3-D axes raise :class:`~taut.errors.ArgumentError`) and return that ``Axes``."""
     ax = axes_2d(ax, "a wrapped cable path")
     for i in range(result.ik.lengths.shape[1]):
         path = result.ik.path(sample, i)
@@ -56,12 +55,13 @@ def draw_wrapped_cables(result: TrajectoryResult, sample: int, ax: Axes | None =
 
 def plot_trajectory(robot: Robot, result: TrajectoryResult, snapshots: int = 3, fig: Figure | None = None) -> Figure:
     """Lengths over time with transitions (top) and ``snapshots`` robot drawings (bottom)
-    laid out on the empty figure ``fig`` (``None``: a new one; a figure that already has
-    axes raises ``ValueError``); returns that figure."""
+    laid out on the empty figure ``fig`` (``None``: a new one); returns that figure.  A
+    figure that already has axes or ``snapshots < 1`` raise
+    :class:`~taut.errors.ArgumentError`."""
     from taut.viz.robot import draw_robot
 
     if snapshots < 1:
-        raise ValueError(f"plot_trajectory draws at least one snapshot, got snapshots={snapshots}")
+        raise ArgumentError(f"plot_trajectory draws at least one snapshot, got snapshots={snapshots}")
     fig = empty_figure(fig, "a trajectory", (4.0 * snapshots, 7.5))
     gs = fig.add_gridspec(2, snapshots, height_ratios=[1.0, 1.2])
     ax = fig.add_subplot(gs[0, :])
@@ -90,38 +90,3 @@ def plot_trajectory(robot: Robot, result: TrajectoryResult, snapshots: int = 3, 
             leg.remove()
     fig.tight_layout()
     return fig
-
-
-def trajectory_section(report: Report) -> None:
-    """One trajectory of each VSCR example: lengths, transitions, snapshots, tensions."""
-    from taut.model import example
-    from taut.wrapping import builtin_trajectory, run_trajectory
-
-    rows, figures = [], []
-    for name in ["vscr-single-cable", "vscr-four-cable", "vscr-agriculture", "vscr-rehabilitation", "vscr-t-shaped"]:
-        robot = example(name)
-        traj = next(iter(robot.trajectories))
-        t, P = builtin_trajectory(robot, traj, dt=0.02)
-        res = run_trajectory(robot, t, P)
-        rows.append(
-            {
-                "robot": name,
-                "trajectory": traj,
-                "samples": len(t),
-                "duration [s]": round(float(t[-1]), 2),
-                "wraps": sum(e["kind"] == "wrap" for e in res.transitions),
-                "unwraps": sum(e["kind"] == "unwrap" for e in res.transitions),
-                "tension feasible": bool(res.feasible.all()),
-            }
-        )
-        figures.append((plot_trajectory(robot, res), f"{name}-trajectory.png", f"{name}: {traj}"))
-    report.add_section(
-        "Variable-structure robots: wrapping cables along trajectories",
-        text=(
-            "Cable states tracked with the cable-state tree and the exact-event form of Alg. 4.4 "
-            "(Rushton 2022, §4.2–4.3); waypoint moves with 1 s dwells (§6.2), "
-            "Eqs. (4.12)/(4.13) as parametric paths; minimum-sum LP tensions per sample (§6.1.2)."
-        ),
-        figures=figures,
-        table=rows,
-    )

@@ -31,8 +31,9 @@ from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
+from taut.errors import ArgumentError
 from taut.model import Robot
-from taut.viz._style import INSIDE, OUTSIDE, axes_2d, axes_3d, set_equal_3d
+from taut.viz._style import INSIDE, OUTSIDE, axes_2d, axes_3d, numbers, set_equal_3d
 from taut.viz.robot import draw_scene_2d, draw_scene_3d, scene_points_3d
 
 if TYPE_CHECKING:
@@ -100,14 +101,15 @@ def plot_workspace(
     ``robot`` (optional) overlays its fixed parts.  A planar result (or a slice) is drawn on
     2-D axes, a full spatial one on 3-D axes (an ``Axes3D``, ``projection="3d"``);
     ``ax=None`` makes a new figure with axes of the right kind, axes of the other kind raise
-    ``TypeError``."""
+    :class:`~taut.errors.ArgumentError`, as does a result whose arrays do not match its
+    ``grid_shape``."""
     shape = tuple(int(s) for s in result.grid_shape)
     inside = np.asarray(result.inside, bool).ravel()
-    coords = [np.asarray(a, float) for a in result.axes]
+    coords = [numbers(a, "workspace grid axes") for a in result.axes]
     if len(coords) != len(shape) or len(shape) not in (2, 3):
-        raise ValueError(f"plot_workspace draws 2- or 3-axis grids, got grid_shape {shape} with {len(coords)} axes")
+        raise ArgumentError(f"plot_workspace draws 2- or 3-axis grids, got grid_shape {shape} with {len(coords)} axes")
     if inside.size != int(np.prod(shape)):
-        raise ValueError(f"inside has {inside.size} values, grid_shape {shape} needs {int(np.prod(shape))}")
+        raise ArgumentError(f"inside has {inside.size} values, grid_shape {shape} needs {int(np.prod(shape))}")
     n_in, total = int(inside.sum()), inside.size
     fraction = float(getattr(result, "fraction", n_in / total if total else 0.0))
     mask = inside.reshape(shape)

@@ -40,15 +40,16 @@ DWELL = 1.0
 #: Speed [m/s] used when a waypoint trajectory gives none (§6.2 prints none).
 DEFAULT_SPEED = 0.1
 
-#: Most samples of one trajectory: each carries a pose, lengths, tensions and cable states
+#: Most samples of one trajectory of a VSCR (a timed motion has its own budget, ``MAX_SAMPLES``
+#: of :mod:`taut.motion._trajectory`): each carries a pose, lengths, tensions and cable states
 #: (about a kilobyte); at the default 0.01 s step this is close to three hours of motion.
-MAX_SAMPLES = 1_000_000
+MAX_WRAPPING_SAMPLES = 1_000_000
 
 
 def _check_samples(count: float, dt: float) -> None:
-    if not count <= MAX_SAMPLES:  # also refuses an infinite or NaN count
+    if not count <= MAX_WRAPPING_SAMPLES:  # also refuses an infinite or NaN count
         raise TautError(
-            f"sampling every {dt:g} s gives {count:.3g} samples, more than {MAX_SAMPLES:,}: choose a larger dt"
+            f"sampling every {dt:g} s gives {count:.3g} samples, more than {MAX_WRAPPING_SAMPLES:,}: choose a larger dt"
         )
 
 

@@ -1,13 +1,14 @@
-"""The main job of ``taut demo``: run taut on built-in robots and write an HTML report.
+"""The demo's first sections: the table of built-in robots, and for a standard robot its
+drawing, wrench-feasible workspace and tensions along a straight move (Rushton 2022, Ch. 2).
 
-The report is a list of sections, each produced by one function of :data:`SECTIONS`
-taking a :class:`taut.viz.Report`; an analysis joins the demo by adding its function.
+References
+----------
+.. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1. (docs/references.bib: rushton2022)
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -15,16 +16,10 @@ import numpy.typing as npt
 
 from taut.errors import TautError
 from taut.model import example, example_names
-from taut.viz import Report
-from taut.viz.atlas import atlas_section
-from taut.viz.check import check_section
-from taut.viz.dgp import dgp_section
-from taut.viz.dynamics import control_section
-from taut.viz.plan import plan_section
-from taut.viz.trajectory import trajectory_section
 
 if TYPE_CHECKING:
     from taut.model import Robot
+    from taut.viz import Report
 
 
 def robots_section(report: Report) -> None:
@@ -92,27 +87,3 @@ def standard_model_section(report: Report, name: str, shift: npt.ArrayLike, reso
         ],
         json=summary,
     )
-
-
-SECTIONS: list[Callable[[Report], object]] = [
-    robots_section,
-    lambda r: standard_model_section(r, "planar-4cable", shift=[0.8, 0.6], resolution=80),
-    lambda r: standard_model_section(r, "spatial-8cable", shift=[1.2, 0.0, 0.8], resolution=30),
-    dgp_section,
-    trajectory_section,
-    atlas_section,
-    check_section,
-    plan_section,
-    control_section,
-]
-
-
-def run_demo(out: Path) -> Path:
-    """Write the demo report into ``out``; return the path of its ``index.html``."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    report = Report("taut demo report")
-    for section in SECTIONS:
-        section(report)
-    return report.write(Path(out))
