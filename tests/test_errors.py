@@ -37,8 +37,7 @@ from taut.geometry import (  # noqa: E402  # noqa: E402
     segment_distance,  # noqa: E402
 )
 from taut.interval import Interval, branch_and_prune, compile_system, variables  # noqa: E402
-from taut.viz import Report, draw_robot, plot_tensions, plot_workspace  # noqa: E402
-from taut.viz.dgp import plot_equilibria, plot_tracking  # noqa: E402
+from taut.viz import Report, draw_robot, plot_equilibria, plot_tensions, plot_tracking, plot_workspace  # noqa: E402  # noqa: E402
 
 SRC = Path(__file__).parents[1] / "src" / "taut"
 FILES = sorted(SRC.rglob("*.py"))

@@ -243,7 +243,7 @@ def test_cycles_are_detected():
 #: What a viz module may import at run time (§1, the row of viz): the robot and the geometry
 #: of a pose.  The results it draws come in as arguments; their classes are named in
 #: annotations only, imported under ``if TYPE_CHECKING:``.  So viz cannot run a solver.
-VIZ_RUNTIME = {"errors", "geometry", "model", "kinematics", "viz"}
+VIZ_RUNTIME = {"_lazy", "errors", "geometry", "model", "kinematics", "viz"}
 
 
 def _is_type_checking(test: ast.expr) -> bool:

@@ -19,8 +19,10 @@ from taut.planning import (
     WrenchFeasibleManifold,  # noqa: E402
     slice_map,  # noqa: E402
 )
-from taut.viz import Report  # noqa: E402
-from taut.viz.plan import plot_plan  # noqa: E402
+from taut.viz import (
+    Report,  # noqa: E402
+    plot_plan,  # noqa: E402
+)
 
 
 def test_atlas_section(tmp_path):

@@ -36,14 +36,14 @@ from taut.planning import (  # noqa: E402
     plan_path,
     slice_map,
 )
-from taut.viz.atlas import plot_atlas  # noqa: E402
-from taut.viz.check import plot_check  # noqa: E402
-from taut.viz.dgp import plot_equilibria, plot_tracking  # noqa: E402
-from taut.viz.plan import plot_plan  # noqa: E402
-from taut.viz.robot import draw_robot, draw_scene_2d, draw_scene_3d, scene_points_3d  # noqa: E402
-from taut.viz.tensions import plot_tensions  # noqa: E402
-from taut.viz.trajectory import draw_wrapped_cables, plot_trajectory  # noqa: E402
-from taut.viz.workspace import plot_workspace  # noqa: E402
+from taut.viz._atlas import plot_atlas  # noqa: E402
+from taut.viz._check import plot_check  # noqa: E402
+from taut.viz._dgp import plot_equilibria, plot_tracking  # noqa: E402
+from taut.viz._plan import plot_plan  # noqa: E402
+from taut.viz._robot import draw_robot, draw_scene_2d, draw_scene_3d, scene_points_3d  # noqa: E402
+from taut.viz._tensions import plot_tensions  # noqa: E402
+from taut.viz._trajectory import draw_wrapped_cables, plot_trajectory  # noqa: E402
+from taut.viz._workspace import plot_workspace  # noqa: E402
 from taut.workspace import evaluate_workspace  # noqa: E402
 from taut.wrapping import builtin_trajectory, run_trajectory  # noqa: E402
 

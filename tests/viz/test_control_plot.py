@@ -1,4 +1,4 @@
-"""The figure of a controlled motion (``taut.viz.dynamics.plot_control``)."""
+"""The figure of a controlled motion (``taut.viz._dynamics.plot_control``)."""
 
 import matplotlib
 
@@ -9,7 +9,7 @@ import numpy as np  # noqa: E402
 import taut  # noqa: E402
 from taut.dynamics import WrenchSteps, simulate_control  # noqa: E402
 from taut.motion import trajectory_from_waypoints  # noqa: E402
-from taut.viz.dynamics import plot_control  # noqa: E402
+from taut.viz._dynamics import plot_control  # noqa: E402
 
 
 def test_plot_control_draws_tensions_and_errors():

@@ -13,7 +13,7 @@ import pytest  # noqa: E402
 import taut  # noqa: E402
 from taut.errors import ArgumentError  # noqa: E402
 from taut.motion import trajectory_from_robot  # noqa: E402
-from taut.viz.motion import plot_motion  # noqa: E402
+from taut.viz._motion import plot_motion  # noqa: E402
 
 
 def test_three_panels_hold_pose_velocity_and_acceleration(tmp_path):

@@ -115,7 +115,7 @@ def cmd_atlas(ns: argparse.Namespace) -> int:
             json.dump(full, fh, indent=1)
         data["out"] = str(out)
     if plot is not None:
-        from taut.viz.atlas import plot_atlas
+        from taut.viz import plot_atlas
 
         save_figure(plot_atlas(atlas, ws), plot, data)
 

@@ -95,7 +95,7 @@ def cmd_check(ns: argparse.Namespace) -> int:
         ],
     }
     if plot is not None:
-        from taut.viz.check import plot_check
+        from taut.viz import plot_check
 
         save_figure(plot_check(robot, res), plot, data)
 

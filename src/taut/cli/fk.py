@@ -65,7 +65,7 @@ def cmd_fk(ns: argparse.Namespace) -> int:
         "elapsed_s": res.elapsed_s,
     }
     if plot is not None:
-        from taut.viz.dgp import plot_equilibria
+        from taut.viz import plot_equilibria
 
         save_figure(plot_equilibria(robot, res.solutions), plot, data)
     status = report(res.undecided_enclosures, "equilibria", ns.strict, multiprecision_hint=True)

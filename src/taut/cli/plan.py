@@ -236,7 +236,7 @@ def cmd_plan(ns: argparse.Namespace) -> int:
         data["out"] = str(out)
     if plot is not None:
         from taut.planning import slice_map
-        from taut.viz.plan import plot_plan
+        from taut.viz import plot_plan
 
         centres = M.pose(res.atlas.centres)
         grid = slice_map(M, centres[0], axes=(free[0], free[1]), span=centres)

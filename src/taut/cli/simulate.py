@@ -191,7 +191,7 @@ def cmd_simulate(ns: argparse.Namespace) -> int:
                 fh.write(",".join(f"{v:.9g}" for v in vals) + f",{int(res.admissible[k])}\n")
         data["out"] = str(out)
     if plot is not None:
-        from taut.viz.dynamics import plot_control
+        from taut.viz import plot_control
 
         save_figure(plot_control(robot, res), plot, data)
 

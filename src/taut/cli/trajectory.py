@@ -117,7 +117,7 @@ def cmd_trajectory(ns: argparse.Namespace) -> int:
                 fh.write(",".join(f"{v:.9g}" for v in vals) + f",{int(res.feasible[s])}," + ",".join(states) + "\n")
         data["out"] = str(out)
     if plot is not None:
-        from taut.viz.trajectory import plot_trajectory
+        from taut.viz import plot_trajectory
 
         save_figure(plot_trajectory(robot, res), plot, data)
 

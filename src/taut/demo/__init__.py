@@ -7,6 +7,22 @@ and hands the results to the figures of :mod:`taut.viz`, which only draw them
 private list of sections.
 """
 
-from taut.demo._run import run_demo
+from __future__ import annotations
 
-__all__ = ["run_demo"]
+from typing import TYPE_CHECKING
+
+from taut._lazy import lazy_exports
+
+if TYPE_CHECKING:
+    from taut.demo._run import run_demo
+
+#: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
+_LAZY = {
+    "run_demo": "taut.demo._run",
+}
+
+__all__ = [
+    "run_demo",
+]
+
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

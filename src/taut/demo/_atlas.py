@@ -17,7 +17,7 @@ import numpy as np
 from taut.atlas import atlas_workspace, build_atlas, direct_ik
 from taut.errors import TautError
 from taut.model import example
-from taut.viz.atlas import plot_atlas
+from taut.viz import plot_atlas
 
 if TYPE_CHECKING:
     from taut.viz import Report

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 from taut.collision import check_poses, trajectory_poses
 from taut.model import example
-from taut.viz.check import plot_check
+from taut.viz import plot_check
 
 if TYPE_CHECKING:
     from taut.viz import Report

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 from taut.dynamics import DEFAULT_KD, DEFAULT_KP, WrenchSteps, simulate_control, with_mass_error
 from taut.model import example
 from taut.motion import trajectory_from_waypoints
-from taut.viz.dynamics import plot_control
+from taut.viz import plot_control
 
 if TYPE_CHECKING:
     from taut.viz import Report

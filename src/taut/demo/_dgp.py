@@ -18,7 +18,7 @@ import numpy as np
 from taut.dgp import solve_dgp, track_path
 from taut.errors import TautError
 from taut.model import example
-from taut.viz.dgp import plot_equilibria, plot_tracking
+from taut.viz import plot_equilibria, plot_tracking
 
 if TYPE_CHECKING:
     from taut.viz import Report

@@ -18,7 +18,7 @@ import numpy as np
 from taut.errors import TautError
 from taut.model import example
 from taut.planning import PathResult, WrenchFeasibleManifold, plan_path, slice_map, verify_path
-from taut.viz.plan import plot_plan
+from taut.viz import plot_plan
 
 if TYPE_CHECKING:
     from taut.viz import Report

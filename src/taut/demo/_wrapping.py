@@ -12,7 +12,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from taut.model import example
-from taut.viz.trajectory import plot_trajectory
+from taut.viz import plot_trajectory
 from taut.wrapping import builtin_trajectory, run_trajectory
 
 if TYPE_CHECKING:

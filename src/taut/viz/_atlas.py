@@ -17,8 +17,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from taut.geometry import planar_rotation
+from taut.viz._robot import draw_scene_2d
 from taut.viz._style import empty_figure
-from taut.viz.robot import draw_scene_2d
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes

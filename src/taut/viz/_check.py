@@ -15,8 +15,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from taut.viz._robot import draw_robot
 from taut.viz._style import DISALLOWED, empty_figure
-from taut.viz.robot import draw_robot
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes

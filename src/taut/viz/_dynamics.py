@@ -3,7 +3,7 @@ tensions and tracking error: :func:`plot_control`.
 
 The figure of CASPR's inverse-dynamics workflow: one curve per cable over the trajectory's
 time, the tension bounds dashed, and the samples without an admissible distribution shaded
-(:func:`taut.viz.tensions.plot_tensions` draws it).  For a simulated motion of elastic cables
+(:func:`taut.viz._tensions.plot_tensions` draws it).  For a simulated motion of elastic cables
 the samples where a cable is slack are marked infeasible.
 """
 
@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
-from taut.viz.tensions import plot_tensions
+from taut.viz._tensions import plot_tensions
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes

@@ -33,8 +33,8 @@ import numpy as np
 
 from taut.errors import ArgumentError
 from taut.model import Robot
+from taut.viz._robot import draw_scene_2d, draw_scene_3d, scene_points_3d
 from taut.viz._style import INSIDE, OUTSIDE, axes_2d, axes_3d, numbers, set_equal_3d
-from taut.viz.robot import draw_scene_2d, draw_scene_3d, scene_points_3d
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes

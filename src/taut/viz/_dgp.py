@@ -21,8 +21,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from taut.errors import ArgumentError
+from taut.viz._robot import draw_robot
 from taut.viz._style import cable_color, empty_figure
-from taut.viz.robot import draw_robot
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

@@ -58,7 +58,7 @@ def plot_trajectory(robot: Robot, result: TrajectoryResult, snapshots: int = 3, 
     laid out on the empty figure ``fig`` (``None``: a new one); returns that figure.  A
     figure that already has axes or ``snapshots < 1`` raise
     :class:`~taut.errors.ArgumentError`."""
-    from taut.viz.robot import draw_robot
+    from taut.viz._robot import draw_robot
 
     if snapshots < 1:
         raise ArgumentError(f"plot_trajectory draws at least one snapshot, got snapshots={snapshots}")
