@@ -49,3 +49,8 @@ class TrajectoryError(TautError):
     """A trajectory that cannot be built or sampled: fewer than two waypoints, waypoints of the
     wrong size or not finite, non-increasing times, a non-positive duration or rate, an
     unknown time law, a sample time outside the trajectory."""
+
+
+class TautWarning(UserWarning):
+    """Something the caller should know that is not an error: a part of a file taut leaves
+    out (a CASPR trajectory of a kind it does not read) while reading the rest."""
