@@ -3,6 +3,7 @@ points, jointed platforms, robot-file trajectories, sampling and bad input."""
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -16,7 +17,7 @@ from taut.errors import TautError, TrajectoryError
 from taut.geometry.rotation import rotation_matrix
 from taut.model import robot_from_dict
 from taut.model.robot import Trajectory
-from taut.motion import Motion, trajectory_from_robot, trajectory_from_waypoints, unwrap_angles
+from taut.motion import Motion, robot_trajectory, trajectory_from_robot, trajectory_from_waypoints, unwrap_angles
 
 SPATIAL = taut.example("spatial-8cable")  # xyz-fixed
 JOINTED = taut.example("adjustable-8cable")  # xyz-moving, prismatic joint s23
@@ -290,6 +291,49 @@ def test_robot_trajectory_with_speed_and_dwell():
     assert m.duration == pytest.approx(10.0) and len(m.times) == len(AGRICULTURE.trajectories["table-6.2"].waypoints)
     with pytest.raises(TrajectoryError, match="no trajectory 'nope'"):
         trajectory_from_robot(JOINTED, "nope", duration=1.0)
+
+
+def test_robot_trajectory_reads_the_file_once_for_every_user():
+    """:func:`robot_trajectory` is the one reader of ``trajectories:``: waypoints as poses
+    (positions completed from the first reference pose), steps, speed, dwell; the timed
+    motion, the collision checks' pose sequence and the wrapping cables' samples start from
+    it and refuse an unknown name with its one message."""
+    from taut.collision import straight_moves, trajectory_poses
+    from taut.wrapping.trajectory import builtin_trajectory, timed_moves
+
+    sim = robot_trajectory(JOINTED, "sim-a")
+    assert sim.name == "sim-a" and sim.steps == (100, 100) and sim.speed is None and sim.dwell == 0.0
+    assert sim.waypoints.tolist() == [[5, 5, 4.5, 0, 0, 0, 2], [5, 5, 2.5, 0, 0, 0, 2], [5, 5, 0.5, 0, 0, 0, 4]]
+    assert not sim.waypoints.flags.writeable and "Simulation a)" in sim.description
+    assert json.loads(json.dumps(sim.as_dict(), allow_nan=False))["steps"] == [100, 100]
+    assert robot_trajectory(JOINTED).name == next(iter(JOINTED.trajectories))  # the first by default
+    # positions only: the rest of the pose from the first reference pose (orientation, s23 = 2)
+    moved = Trajectory(waypoints=((5, 5, 4), (5, 4, 3)), speed=0.5, dwell=1.0)
+    robot = JOINTED.model_copy(update={"trajectories": {"moved": moved}})
+    tr = robot_trajectory(robot, "moved")
+    assert tr.waypoints.tolist() == [[5, 5, 4, 0, 0, 0, 2], [5, 4, 3, 0, 0, 0, 2]]
+    assert (tr.speed, tr.dwell) == (0.5, 1.0)
+    # its users: 201 poses on straight moves, a timed motion, time samples at speed with dwell
+    poses = trajectory_poses(JOINTED, "sim-a")
+    assert np.array_equal(poses, straight_moves(JOINTED, sim.waypoints, sim.steps)) and len(poses) == 201
+    assert np.allclose(poses[100], sim.waypoints[1]) and np.allclose(poses[50], (sim.waypoints[0] + sim.waypoints[1]) / 2)
+    assert trajectory_from_robot(robot, "moved").duration == pytest.approx(2 * 1.0 + math.sqrt(2) / 0.5)
+    agri = robot_trajectory(AGRICULTURE, "table-6.2")
+    t, P = builtin_trajectory(AGRICULTURE, "table-6.2", speed=0.2)
+    t2, P2 = timed_moves(agri.waypoints, 0.2, agri.dwell, 0.01)
+    assert np.array_equal(t, t2) and np.array_equal(P, P2) and np.allclose(P[-1], agri.waypoints[-1])
+    moves = np.linalg.norm(np.diff(agri.waypoints, axis=0), axis=1).sum() / 0.2
+    assert t[-1] == pytest.approx(moves + len(agri.waypoints) * agri.dwell)
+    for read in (
+        lambda: robot_trajectory(JOINTED, "nope"),
+        lambda: trajectory_from_robot(JOINTED, "nope", duration=1.0),
+        lambda: trajectory_poses(JOINTED, "nope"),
+        lambda: builtin_trajectory(JOINTED, "nope"),
+    ):
+        with pytest.raises(TrajectoryError, match=r"adjustable.*: no trajectory 'nope' \(it has: sim-a, sim-b, sim-c, sim-d\)"):
+            read()
+    with pytest.raises(TrajectoryError, match="has no trajectories"):
+        robot_trajectory(SPATIAL)
 
 
 def test_samples_and_immutability():

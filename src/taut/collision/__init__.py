@@ -13,7 +13,7 @@ References
 from taut.collision.capsules import CapsuleModel, capsule_model, capsule_segments
 from taut.collision.proximity import ProximityResult, proximity
 from taut.collision.singularity import force_closure_singular, jacobian_singular, positive_span_lp
-from taut.collision.trajectory import CheckResult, check_poses, load_trajectory, sample_waypoints, trajectory_poses
+from taut.collision.trajectory import CheckResult, check_poses, load_trajectory, straight_moves, trajectory_poses
 
 __all__ = [
     "CapsuleModel",
@@ -27,6 +27,6 @@ __all__ = [
     "load_trajectory",
     "positive_span_lp",
     "proximity",
-    "sample_waypoints",
+    "straight_moves",
     "trajectory_poses",
 ]

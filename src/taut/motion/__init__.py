@@ -4,6 +4,7 @@ velocity, acceleration and angular rates (``docs/architecture.md`` §1, layer 2)
 
 from taut.motion.caspr import CasprTrajectories, CasprTrajectory, read_caspr_trajectories
 from taut.motion.laws import LAWS
+from taut.motion.named import RobotTrajectory, robot_trajectory
 from taut.motion.trajectory import ROTATIONS, Motion, MotionSamples, trajectory_from_robot, trajectory_from_waypoints
 from taut.motion.vias import VIAS
 from taut.motion.waypoints import complete_waypoints, unwrap_angles
@@ -16,8 +17,10 @@ __all__ = [
     "CasprTrajectory",
     "Motion",
     "MotionSamples",
+    "RobotTrajectory",
     "complete_waypoints",
     "read_caspr_trajectories",
+    "robot_trajectory",
     "trajectory_from_robot",
     "trajectory_from_waypoints",
     "unwrap_angles",

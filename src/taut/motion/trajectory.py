@@ -57,6 +57,7 @@ from taut.motion.laws import (
     quintic_piece,
     trapezoidal_pieces,
 )
+from taut.motion.named import robot_trajectory
 from taut.motion.vias import VIAS, average_velocities, spline_velocities
 from taut.motion.waypoints import angle_columns, complete_waypoints, unwrap_angles, validate_waypoints
 
@@ -524,13 +525,11 @@ def trajectory_from_robot(
     move of a pose sequence; by their lengths without steps) and ``speed``/``dwell`` are not
     used.  Without it the file's ``speed`` [m/s] times each move by the distance its position
     travels, and ``dwell`` holds the pose at every waypoint, the first included (as
-    ``taut trajectory`` does); a trajectory without ``speed`` needs ``duration``."""
-    if name not in robot.trajectories:
-        known = ", ".join(robot.trajectories) or "none"
-        raise TrajectoryError(f"{robot.name}: no trajectory {name!r} (it has: {known})")
-    tr = robot.trajectories[name]
+    ``taut trajectory`` does); a trajectory without ``speed`` needs ``duration``.  The file's
+    trajectory is read by :func:`~taut.motion.named.robot_trajectory`."""
+    tr = robot_trajectory(robot, name)
     what = f"trajectory {name}"
-    W = complete_waypoints(robot, tr.waypoints, what)
+    W = tr.waypoints
     if len(W) < 2:
         raise TrajectoryError(f"{what}: a trajectory needs at least 2 waypoints, got {len(W)}")
     if duration is not None:

@@ -95,12 +95,13 @@ def plot_trajectory(robot: Robot, result: TrajectoryResult, snapshots: int = 3, 
 def trajectory_section(report: Report) -> None:
     """One trajectory of each VSCR example: lengths, transitions, snapshots, tensions."""
     from taut.model import example
+    from taut.motion import robot_trajectory
     from taut.wrapping.trajectory import builtin_trajectory, run_trajectory
 
     rows, figures = [], []
     for name in ["vscr-single-cable", "vscr-four-cable", "vscr-agriculture", "vscr-rehabilitation", "vscr-t-shaped"]:
         robot = example(name)
-        traj = next(iter(robot.trajectories))
+        traj = robot_trajectory(robot).name
         t, P = builtin_trajectory(robot, traj, dt=0.02)
         res = run_trajectory(robot, t, P)
         rows.append(
