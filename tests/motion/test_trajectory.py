@@ -316,7 +316,9 @@ def test_robot_trajectory_reads_the_file_once_for_every_user():
     # its users: 201 poses on straight moves, a timed motion, time samples at speed with dwell
     poses = trajectory_poses(JOINTED, "sim-a")
     assert np.array_equal(poses, straight_moves(JOINTED, sim.waypoints, sim.steps)) and len(poses) == 201
-    assert np.allclose(poses[100], sim.waypoints[1]) and np.allclose(poses[50], (sim.waypoints[0] + sim.waypoints[1]) / 2)
+    assert np.allclose(poses[100], sim.waypoints[1]) and np.allclose(
+        poses[50], (sim.waypoints[0] + sim.waypoints[1]) / 2
+    )
     assert trajectory_from_robot(robot, "moved").duration == pytest.approx(2 * 1.0 + math.sqrt(2) / 0.5)
     agri = robot_trajectory(AGRICULTURE, "table-6.2")
     t, P = builtin_trajectory(AGRICULTURE, "table-6.2", speed=0.2)
@@ -330,7 +332,9 @@ def test_robot_trajectory_reads_the_file_once_for_every_user():
         lambda: trajectory_poses(JOINTED, "nope"),
         lambda: builtin_trajectory(JOINTED, "nope"),
     ):
-        with pytest.raises(TrajectoryError, match=r"adjustable.*: no trajectory 'nope' \(it has: sim-a, sim-b, sim-c, sim-d\)"):
+        with pytest.raises(
+            TrajectoryError, match=r"adjustable.*: no trajectory 'nope' \(it has: sim-a, sim-b, sim-c, sim-d\)"
+        ):
             read()
     with pytest.raises(TrajectoryError, match="has no trajectories"):
         robot_trajectory(SPATIAL)
