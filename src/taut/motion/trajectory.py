@@ -169,9 +169,12 @@ class Motion:
         cols = angle_columns(self.robot)
         if self.turns is not None:
             segment = np.clip(np.searchsorted(self.times, t, side="left") - 1, 0, len(self.times) - 2)
-            q[:, cols], qd[:, cols], qdd[:, cols], w, a = self.turns.evaluate(
-                self.robot.orientation, segment, q[:, cols], qd[:, cols], qdd[:, cols]
-            )
+            w, a = np.empty((len(t), 3)), np.empty((len(t), 3))
+            for s in range(0, len(t), _CHUNK):
+                part = slice(s, s + _CHUNK)
+                q[part, cols], qd[part, cols], qdd[part, cols], w[part], a[part] = self.turns.evaluate(
+                    self.robot.orientation, segment[part], q[part, cols], qd[part, cols], qdd[part, cols]
+                )
         elif self.robot.dimension == 3 and not self.robot.is_point_mass:
             # ω = E q̇, α = E q̈ + Ė q̇: E built once for both
             angles, rates = q[:, cols], qd[:, cols]
