@@ -94,3 +94,8 @@ class ArgumentError(TautError):
     that does not match another, an unknown option value (a method, a bisection rule, an
     orientation convention), a count out of range, axes of the wrong kind (2-D for a 3-D
     drawing or the reverse) or a figure that is not empty."""
+
+
+class TautWarning(UserWarning):
+    """Something the caller should know that is not an error: a part of a file taut leaves
+    out (a CASPR trajectory of a kind it does not read) while reading the rest."""

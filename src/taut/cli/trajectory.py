@@ -70,14 +70,7 @@ def cmd_trajectory(ns: argparse.Namespace) -> int:
 
     from taut.cli import args as A
     from taut.cli.main import console, emit, load, save_figure
-    from taut.wrapping import (
-        DEFAULT_SPEED,
-        builtin_trajectory,
-        contacts_text,
-        full_poses,
-        run_trajectory,
-        sample_waypoints,
-    )
+    from taut.wrapping import DEFAULT_SPEED, builtin_trajectory, contacts_text, full_poses, run_trajectory, timed_moves
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)
@@ -89,10 +82,12 @@ def cmd_trajectory(ns: argparse.Namespace) -> int:
         raise TautError(f"--dwell must be a finite number >= 0, got {ns.dwell!r}")
     name, W = _read_waypoints(ns.waypoints)
     if W is None:
+        if not robot.trajectories:
+            raise TautError(f"{robot.name} has no trajectories of its own: give --waypoints FILE")
         t, P = builtin_trajectory(robot, name, dt=ns.dt, speed=ns.speed, dwell=ns.dwell)
     else:
         W = full_poses(robot, W)
-        t, P = sample_waypoints(W, ns.speed or DEFAULT_SPEED, 1.0 if ns.dwell is None else ns.dwell, ns.dt)
+        t, P = timed_moves(W, ns.speed or DEFAULT_SPEED, 1.0 if ns.dwell is None else ns.dwell, ns.dt)
     res = run_trajectory(robot, t, P)
     data = {"robot": robot.name} | res.summary()
     # users read 1-based cable and object numbers
