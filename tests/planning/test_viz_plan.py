@@ -1,15 +1,15 @@
 """The planning figures of taut.viz.plan (Figs. 5–6 of Bohigas et al. 2013) and the
 demo section: what is drawn."""
 
-import time
-
 import matplotlib
 
 matplotlib.use("Agg")
 
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import pytest  # noqa: E402
 
+from taut import InfeasiblePoseError  # noqa: E402
 from taut.model import load_robot  # noqa: E402
 from taut.planning.manifold import WrenchFeasibleManifold  # noqa: E402
 from taut.viz.plan import FEASIBLE, LENGTH_OUT, plan_section, plot_plan, slice_map  # noqa: E402
@@ -26,12 +26,12 @@ def test_slice_map_classifies_like_the_manifold():
     for i, j in np.ndindex(cls.shape):
         q = Q1.copy()
         q[3], q[4] = u[i], v[j]
-        try:
+        if cls[i, j] == FEASIBLE:
             M.lift(q)
-            ok = True
-        except Exception:
-            ok = False
-        assert ok == (cls[i, j] == FEASIBLE)
+        else:
+            reason = "cable lengths" if cls[i, j] == LENGTH_OUT else "not wrench-feasible|Jacobian is singular"
+            with pytest.raises(InfeasiblePoseError, match=reason):
+                M.lift(q)
     assert (cls == FEASIBLE).any() and (cls != FEASIBLE).any()
     # lengths: at z = 4.9 cables are longer than 5a = 5 somewhere
     _, _, far = slice_map(M, np.r_[0, 0, 4.9, Q1[3:]], resolution=(8, 6))
@@ -40,9 +40,7 @@ def test_slice_map_classifies_like_the_manifold():
 
 def test_plan_section_draws_the_atlas_path_and_tension_envelope():
     report = Report("t")
-    t0 = time.perf_counter()
     res = plan_section(report)
-    assert time.perf_counter() - t0 < 15  # ~2 s alone; generous under a loaded test run
     (sec,) = report.sections
     (row,) = sec.table
     assert row["found"] and row["independent check"] and row["charts"] == res.charts > 10
