@@ -15,6 +15,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import taut
+from taut.kinematics import structure_matrix
+from taut.statics import external_wrench
 from taut.statics.tension import METHODS
 from taut.workspace.conditions import CONDITIONS
 
@@ -31,7 +34,11 @@ def _tensions(method: str) -> Check:
     def check(d: dict, tmp: Path) -> None:
         assert d["method"] == method and d["feasible"] is True and d["status"] == "optimal"
         tau = np.array(d["tensions"])
-        assert tau.shape == (8,) and np.all(tau >= 0)
+        robot = taut.example("spatial-8cable")
+        lo, hi = robot.tension_bounds
+        assert tau.shape == (8,) and np.all(tau >= lo - 1e-9) and np.all(tau <= hi + 1e-9)
+        w = external_wrench(robot, d["pose"])
+        np.testing.assert_allclose(structure_matrix(robot, d["pose"]) @ tau + w, 0, atol=1e-7 * np.abs(w).max())
 
     return check
 
