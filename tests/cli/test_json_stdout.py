@@ -200,7 +200,8 @@ def test_every_command_has_a_case():
 
 
 #: Cases of the quick suite: every command once, and the modes that run HiGHS (whose banner
-#: was the historical stdout pollution); the slow suite runs every case.
+#: was the historical stdout pollution); the slow suite runs every case.  ``igp``: the same
+#: command is tests/cli/test_igp.py::test_igp_json_table_4_3.
 QUICK = {
     "examples",
     "schema",
@@ -211,7 +212,6 @@ QUICK = {
     "workspace-wrench-feasible",
     "workspace-out-plot",
     "fk",
-    "igp",
     "trajectory",
     "atlas-wrench-feasible",
     "check-lp",
