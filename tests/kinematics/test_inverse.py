@@ -98,9 +98,9 @@ def test_batches_match_the_equations_on_both_sides_of_the_kernel_threshold(robot
     for k, pose in enumerate(poses):
         lengths, u, b, W = _ik_by_hand(robot, pose)
         np.testing.assert_allclose(ik.lengths[k], lengths, rtol=1e-13)
-        np.testing.assert_allclose(ik.directions[k], u, atol=1e-13)
-        np.testing.assert_allclose(ik.anchors[k], b, atol=1e-13)
-        np.testing.assert_allclose(ik.structure_matrix[k], W, atol=1e-13)
+        np.testing.assert_allclose(ik.directions[k], u, rtol=0, atol=1e-13)
+        np.testing.assert_allclose(ik.anchors[k], b, rtol=0, atol=1e-13)
+        np.testing.assert_allclose(ik.structure_matrix[k], W, rtol=0, atol=1e-13)
 
 
 def test_bad_poses_are_typed_errors():
