@@ -1,4 +1,5 @@
 import json
+import re
 
 import pytest
 
@@ -18,7 +19,17 @@ def test_atlas_json_out_plot(tmp_path, cli):
 
 def test_atlas_human_and_options(cli):
     assert cli.main(["atlas", "vscr-agriculture", "--start", "0,0.991", "--condition", "static", "--theta", "0"]) == 0
-    assert "charts" in cli.readouterr().out
+    out = cli.readouterr().out
+    head = re.search(
+        r"(\d+) charts, (\d+) adjacent pairs, reachable area ([\d.]+) m².*static workspace ([\d.]+) m²", out, re.S
+    )
+    charts, pairs, reachable, static = int(head[1]), int(head[2]), float(head[3]), float(head[4])
+    areas = [float(a) for a in re.findall(r"chart +\d+ +area +([\d.]+)", out)]
+    # one line per chart; a connected atlas has at least charts - 1 adjacent pairs; the charts
+    # cover the reachable area (they overlap) and the static workspace lies inside it
+    assert len(areas) == charts > 1 and pairs >= charts - 1
+    assert all(0 < a <= reachable for a in areas) and sum(areas) >= reachable
+    assert 0 < static <= reachable
 
 
 def test_atlas_bad_input(cli):
