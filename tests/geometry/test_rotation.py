@@ -46,7 +46,11 @@ def test_angles_round_trip(convention, v):
 
 def test_batches_and_planar():
     v = np.random.default_rng(0).uniform(-1, 1, (5, 4, 3))
-    assert rotation_matrix(v).shape == (5, 4, 3, 3)
+    R = rotation_matrix(v)
+    assert R.shape == (5, 4, 3, 3)
+    for i, j in np.ndindex(5, 4):
+        a, b, c = v[i, j]
+        np.testing.assert_allclose(R[i, j], _rz(c) @ _ry(b) @ _rx(a), atol=1e-14)
     R = planar_rotation(np.pi / 2)
     np.testing.assert_allclose(R @ [1, 0], [0, 1], atol=1e-15)
     with pytest.raises(ArgumentError, match="unknown orientation"):

@@ -235,11 +235,13 @@ def test_spatial_workspace_scatter_and_subsampling():
 
 def test_spatial_slice_is_an_image():
     axes = (np.linspace(-1, 1, 10), np.linspace(-0.5, 0.5, 6), np.array([0.25]))
-    res = grid_result(SPATIAL, axes, lambda p: p[:, 0] > 0, orientation=[0, 0, 0])
+    res = grid_result(SPATIAL, axes, lambda p: (p[:, 0] > 0) & (p[:, 1] > 0.1), orientation=[0, 0, 0])
     ax = plot_workspace(res, SPATIAL)
     assert ax.name != "3d"
     (im,) = ax.get_images()
-    assert np.asarray(im.get_array()).shape == (6, 10)
+    arr = np.asarray(im.get_array())
+    assert arr.shape == (6, 10)  # rows = y, columns = x
+    np.testing.assert_array_equal(arr.astype(bool), (axes[1][:, None] > 0.1) & (axes[0][None, :] > 0))
     assert "z=0.25" in ax.get_title()
 
 
