@@ -33,6 +33,7 @@ from taut.dynamics._platform import CONVENTION_FACTORS, SPATIAL, PlatformDynamic
 from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError
 from taut.kinematics._elastic import robot_stiffness, tension_from_stretch
 from taut.kinematics._pose import as_poses
+from taut.model._limits import MAX_MAGNITUDE
 from taut.model._robot import Robot
 
 __all__ = [
@@ -147,7 +148,7 @@ def quick_rows(
 ) -> tuple[list[np.ndarray], bool] | None:
     """Poses ``q`` and per-pose arrays ``others`` (value, width; None for zeros) as
     C-contiguous ``(N, ·)`` arrays, and whether ``q`` was one pose, when the shapes are right
-    and every value is finite (and the poses within 1e9, like
+    and every value is finite (and the poses within ``MAX_MAGNITUDE``, like
     :func:`~taut.kinematics._pose.as_poses`) — checked in a few operations, because a control
     loop calls this every step; None otherwise, and the caller's full checks name the problem.
     Not for jointed platforms (no joint limits are checked)."""
@@ -478,7 +479,7 @@ def _fixed_steps(
             x, v = _rk4(robot, model, x, v, u, w, float(time[k + 1] - time[k]), elastic)
         except TautError as e:
             raise IntegrationError(f"RK4 failed at t = {time[k]:g} s: {e}") from None
-        if not (np.isfinite(x).all() and np.isfinite(v).all()) or np.abs(x).max() > 1e9:
+        if not (np.isfinite(x).all() and np.isfinite(v).all()) or np.abs(x).max() > MAX_MAGNITUDE:
             raise IntegrationError(f"RK4 diverged at t = {time[k + 1]:g} s (step {step:g} s too large?)")
         Q[k + 1], V[k + 1] = x[0], v[0]
         if progress is not None:
@@ -516,7 +517,7 @@ def _adaptive(
     def rhs(t: float, y: np.ndarray) -> np.ndarray:
         x, v = y[None, :dof], y[None, dof:]
         u, w = inputs(t)
-        if not (np.isfinite(y).all() and np.abs(x).max() <= 1e9):
+        if not (np.isfinite(y).all() and np.abs(x).max() <= MAX_MAGNITUDE):
             failure.append(f"the motion left the representable range at t = {t:g} s")
             return np.zeros_like(y)
         try:

@@ -32,6 +32,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from taut.model._limits import MAX_MAGNITUDE
+
 #: Below this ``|det U|`` the rate matrix counts as singular (gimbal lock).
 GIMBAL_TOL = 1e-9
 #: A cable shorter than this [m] has no direction.
@@ -620,7 +622,7 @@ def control_updates(
             for j in range(dof):
                 q2[0, j], qd2[0, j] = qn[0, j], qdn[0, j]
         for j in range(dof):
-            if not (np.isfinite(q2[0, j]) and np.isfinite(qd2[0, j]) and abs(q2[0, j]) <= 1e9):
+            if not (np.isfinite(q2[0, j]) and np.isfinite(qd2[0, j]) and abs(q2[0, j]) <= MAX_MAGNITUDE):
                 return k
         for j in range(dof):
             state[0, j], state[1, j] = q2[0, j], qd2[0, j]
