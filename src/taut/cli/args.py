@@ -1,4 +1,5 @@
-"""Parsing of the command line's value syntax: poses, vectors, grids."""
+"""Parsing of the command line's value syntax: poses, vectors, numbers with their ranges,
+output paths, the ROBOT argument."""
 
 from __future__ import annotations
 
@@ -6,10 +7,11 @@ import argparse
 import math
 import os
 import re
-from collections.abc import Collection
+from collections.abc import Callable, Collection
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from taut.cli.output import check_writable
 from taut.errors import PoseError, TautError
 from taut.model._limits import MAX_MAGNITUDE
 
@@ -95,37 +97,16 @@ def default_pose(robot: Robot) -> np.ndarray:
     return default_guess(robot)
 
 
-def positive(value: float, what: str, *, largest: float = math.inf) -> float:
-    """A finite value ``0 < value <= largest`` of a numeric option, or a :class:`TautError`."""
-    if not (math.isfinite(value) and 0 < value <= largest):
-        bound = "" if math.isinf(largest) else f" and at most {largest:g}"
-        raise TautError(f"{what} must be a finite number greater than 0{bound}, got {value!r}")
-    return value
-
-
 def output_file(text: str | None, what: str, suffixes: Collection[str] | None = None) -> Path | None:
-    """The path of an output option, checked before any computation: a file (not a
-    directory) in an existing, writable directory, with one of ``suffixes`` if given.  The
-    file is written at exactly this path."""
+    """The path of an output option, checked before any computation (see
+    :func:`taut.cli.output.check_writable`), with one of ``suffixes`` if given.  The file is
+    written at exactly this path."""
     if text is None:
         return None
     path = Path(text)
     if suffixes is not None and path.suffix.lower() not in suffixes:
         raise TautError(f"{what}: {text!r} must end in one of {', '.join(sorted(suffixes))}")
-    if not path.name or path.is_dir():
-        raise TautError(f"{what}: {text!r} is a directory; give a file name")
-    parent = path.parent
-    if not parent.is_dir():
-        raise TautError(f"{what}: the directory {str(parent)!r} does not exist")
-    existed = path.exists()
-    try:
-        # opening for append is the one reliable test (read-only mounts, /proc, permissions)
-        with path.open("a"):
-            pass
-    except OSError as exc:
-        raise TautError(f"{what}: cannot write {text!r}: {exc.strerror or exc}") from None
-    if not existed:
-        os.unlink(path)
+    check_writable(path, what)
     return path
 
 
@@ -136,6 +117,77 @@ def plot_file(text: str | None) -> Path | None:
     from matplotlib.figure import Figure
 
     return output_file(text, "--plot", {f".{k}" for k in Figure().canvas.get_supported_filetypes()})
+
+
+def load(spec: str, cable_set: str | None = None) -> Robot:
+    """The robot of a command: a file in any format :mod:`taut.model` reads, or a built-in
+    example; ``cable_set`` is the ``--cable-set`` of a CASPR model."""
+    from taut.model import load_robot
+
+    return load_robot(spec, cable_set=cable_set)
+
+
+# ---- argparse types: numeric options are checked as the command line is parsed ----------
+
+#: Largest count of a budget option (``--max-boxes``, ``--max-charts``, ...): the kernels
+#: count in 64-bit signed integers.
+MAX_COUNT = 2**63 - 1
+
+#: Largest ``--seed``: NumPy's seed sequences take any non-negative integer, 32 bits are
+#: the convention every other tool follows.
+MAX_SEED = 2**32 - 1
+
+
+def count(least: int = 1, most: int = MAX_COUNT) -> Callable[[str], int]:
+    """An argparse ``type``: a whole number from ``least`` to ``most``."""
+
+    def convert(text: str) -> int:
+        try:
+            n = int(text)
+        except ValueError:
+            n = None
+        if n is None or not least <= n <= most:
+            raise argparse.ArgumentTypeError(f"expected a whole number from {least} to {most}, got {text!r}")
+        return n
+
+    convert.__name__ = "count"
+    return convert
+
+
+def seed(text: str) -> int:
+    """An argparse ``type``: a random seed, 0 to :data:`MAX_SEED`."""
+    return count(0, MAX_SEED)(text)
+
+
+def real(
+    *, above: float | None = None, least: float | None = None, below: float | None = None, most: float | None = None
+) -> Callable[[str], float]:
+    """An argparse ``type``: a finite number as :func:`number` reads it (``35deg``, ``pi/8``;
+    magnitudes up to :data:`~taut.model.MAX_MAGNITUDE`), with optional bounds: greater than
+    ``above``, at least ``least``, less than ``below``, at most ``most``."""
+    bounds = [
+        f"{name} {bound:g}"
+        for name, bound in (("greater than", above), ("at least", least), ("less than", below), ("at most", most))
+        if bound is not None
+    ]
+
+    def convert(text: str) -> float:
+        try:
+            x = number(text, "value")
+        except TautError as exc:
+            raise argparse.ArgumentTypeError(str(exc).removeprefix("value: ")) from None
+        if (
+            (above is not None and not x > above)
+            or (least is not None and not x >= least)
+            or (below is not None and not x < below)
+            or (most is not None and not x <= most)
+        ):
+            want = "a finite number" + (f" {' and '.join(bounds)}" if bounds else "")
+            raise argparse.ArgumentTypeError(f"expected {want}, got {text!r}")
+        return x
+
+    convert.__name__ = "real"
+    return convert
 
 
 #: Most local worker processes: more than this many per core only thrashes.
@@ -152,3 +204,44 @@ def worker_count(text: str) -> int:
     if not 1 <= n <= largest:
         raise argparse.ArgumentTypeError(f"expected 1 to {largest} processes on this machine, got {n}")
     return n
+
+
+def scheduler_address(text: str) -> str:
+    """``--scheduler ADDRESS`` (an argparse ``type``): ``tcp://HOST:PORT`` or ``HOST:PORT``.
+    The command line has no options for TLS certificates, and in-process or UCX schedulers
+    are not reached from another process, so TCP is the one transport it takes."""
+    address = text.strip()
+    scheme, sep, rest = address.partition("://")
+    if not sep:
+        scheme, rest = "tcp", address
+    host, colon, port = rest.rpartition(":")
+    if scheme.lower() != "tcp" and sep and host and port.isdigit():
+        raise argparse.ArgumentTypeError(
+            f"the command line reaches a dask scheduler over TCP only: expected tcp://HOST:PORT, got {text!r}"
+        )
+    if (
+        scheme.lower() != "tcp"
+        or not colon
+        or not host
+        or any(c.isspace() or c == "/" for c in host)
+        or not port.isdigit()
+        or len(port) > 5
+        or not 0 < int(port) < 65536
+    ):
+        raise argparse.ArgumentTypeError(f"expected a dask scheduler address tcp://HOST:PORT, got {text!r}")
+    return address
+
+
+def add_parallel(parser: argparse.ArgumentParser, *, workers: int | None) -> None:
+    """``--workers N`` (default ``workers``) and ``--scheduler ADDRESS``: where the work runs."""
+    parser.add_argument("--workers", type=worker_count, default=workers, help="local worker processes")
+    parser.add_argument(
+        "--scheduler", type=scheduler_address, metavar="ADDRESS", help="dask.distributed scheduler tcp://HOST:PORT"
+    )
+
+
+#: Help of ``--pose``.
+POSE_HELP = (
+    "pose x,y | x,y,theta | x,y,z,a,b,c then joint coordinates (angles in rad, or 30deg, pi/8); "
+    "write --pose=-1,... for a leading minus"
+)

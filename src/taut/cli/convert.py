@@ -1,24 +1,36 @@
 """``taut convert IN OUT``: write a robot in the format the name of OUT selects
-(:mod:`taut.model._formats`: taut YAML/JSON, a CASPR ``X_bodies.xml`` pair, ...)."""
+(:data:`taut.model._formats.FORMATS`: taut YAML/JSON, a CASPR ``X_bodies.xml`` pair, ...)."""
 
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
-from taut.cli.main import Command, console, emit, load
+from taut.cli import args as A
+from taut.cli.output import check_writable, console, emit, markup
+from taut.model._formats import FORMATS
+
+SUMMARY = "write a robot in another file format (chosen by the name of OUT)"
+ROBOT = True
 
 
-def cmd_convert(ns: argparse.Namespace) -> int:
+def _out_help() -> str:
+    """The names OUT may have, from the format table (so that the help cannot drift from it)."""
+    kinds = [f"{', '.join(f.patterns)} ({f.name})" for f in FORMATS if f.writer is not None]
+    return "output file; its name selects the format: " + "; ".join(kinds)
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("out", metavar="OUT", help=_out_help().replace("%", "%%"))
+
+
+def run(ns: argparse.Namespace) -> int:
     from taut.model._formats import format_of, write_robot
 
     format_of(ns.out, "write")  # an unknown OUT is refused before IN is read
-    robot = load(ns.robot, ns.cable_set)
+    check_writable(Path(ns.out), "OUT")
+    robot = A.load(ns.robot, ns.cable_set)
     fmt = write_robot(robot, ns.out)
     data = {"in": ns.robot, "out": ns.out, "format": fmt, "robot": robot.name}
-    emit(data, ns.json, lambda d: console().print(f"{d['in']} -> {d['out']} ({d['format']})"))
+    emit(data, ns.json, lambda d: console().print(markup(f"{d['in']} -> {d['out']} ({d['format']})")))
     return 0
-
-
-def register(command: Command) -> None:
-    c = command("convert", "write a robot in another file format (chosen by the name of OUT)", cmd_convert)
-    c.add_argument("out", metavar="OUT", help="output file: *.yaml, *.yml, *.json (taut) or X_bodies.xml (CASPR)")
