@@ -65,7 +65,7 @@ import numpy.typing as npt
 from taut.dynamics._forward import IntegrationError
 from taut.dynamics._loop import LoopModel, loop_model
 from taut.errors import InfeasiblePoseError, TautError
-from taut.model import Robot
+from taut.model import MAX_MAGNITUDE, Robot
 from taut.motion import Motion, angle_columns
 
 __all__ = [
@@ -322,7 +322,7 @@ def _update(
             q, qd = plant.step(q, qd, last, h, D[k, s])
         except TautError as exc:
             raise IntegrationError(f"RK4 failed at t = {t + s * h:g} s: {exc}") from None
-    if not (np.isfinite(q).all() and np.isfinite(qd).all()) or np.abs(q).max() > 1e9:
+    if not (np.isfinite(q).all() and np.isfinite(qd).all()) or np.abs(q).max() > MAX_MAGNITUDE:
         raise IntegrationError(
             f"the controlled motion diverged at t = {float(time[k + 1]):g} s from pose "
             f"{np.round(state[0], 6).tolist()} (an RK4 step of {h:g} s too large for the dynamics there?)"

@@ -31,8 +31,8 @@ import numpy.typing as npt
 
 from taut.dynamics._platform import CONVENTION_FACTORS, SPATIAL, PlatformDynamics, as_rates, platform_dynamics
 from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError
-from taut.kinematics import MAX_COORDINATE, as_poses, robot_stiffness, tension_from_stretch
-from taut.model import Robot
+from taut.kinematics import as_poses, robot_stiffness, tension_from_stretch
+from taut.model import MAX_MAGNITUDE, Robot
 
 __all__ = [
     "IntegrationError",
@@ -146,7 +146,7 @@ def quick_rows(
 ) -> tuple[list[np.ndarray], bool] | None:
     """Poses ``q`` and per-pose arrays ``others`` (value, width; None for zeros) as
     C-contiguous ``(N, ·)`` arrays, and whether ``q`` was one pose, when the shapes are right
-    and every value is finite (and the poses within 1e9, like
+    and every value is finite (and the poses within ``MAX_MAGNITUDE``, like
     :func:`~taut.kinematics.as_poses`) — checked in a few operations, because a control
     loop calls this every step; None otherwise, and the caller's full checks name the problem.
     Not for jointed platforms (no joint limits are checked)."""
@@ -405,7 +405,7 @@ def forward_dynamics(
     IntegrationError
         When the integrator fails or the motion reaches a singular configuration.  A trial
         stage of an adaptive step that leaves the representable range (a coordinate beyond
-        :data:`~taut.kinematics._pose.MAX_COORDINATE`) or reaches a singular configuration
+        :data:`~taut.kinematics._pose.MAX_MAGNITUDE`) or reaches a singular configuration
         only makes the step controller reject that step; the range is checked on the
         accepted steps.
 
@@ -483,7 +483,7 @@ def _fixed_steps(
             x, v = _rk4(robot, model, x, v, u, w, float(time[k + 1] - time[k]), elastic)
         except TautError as e:
             raise IntegrationError(f"RK4 failed at t = {time[k]:g} s: {e}") from None
-        if not (np.isfinite(x).all() and np.isfinite(v).all()) or np.abs(x).max() > MAX_COORDINATE:
+        if not (np.isfinite(x).all() and np.isfinite(v).all()) or np.abs(x).max() > MAX_MAGNITUDE:
             raise IntegrationError(f"RK4 diverged at t = {time[k + 1]:g} s (step {step:g} s too large?)")
         Q[k + 1], V[k + 1] = x[0], v[0]
         if progress is not None:
@@ -524,7 +524,7 @@ def _adaptive(
         # norm is NaN), and only a failure of the integrator itself is reported.
         x, v = y[None, :dof], y[None, dof:]
         u, w = inputs(t)
-        if not (np.isfinite(y).all() and np.abs(x).max() <= MAX_COORDINATE):
+        if not (np.isfinite(y).all() and np.abs(x).max() <= MAX_MAGNITUDE):
             failures.append(f"the motion left the representable range at t = {t:g} s")
             return np.full_like(y, np.nan)
         try:
@@ -556,7 +556,7 @@ def _adaptive(
             raise IntegrationError(f"{method} failed: {failures[-1] if failures else message}")
         t, y = float(solver.t), solver.y
         # the range is checked on accepted steps only
-        if not (np.isfinite(y).all() and np.abs(y[:dof]).max() <= MAX_COORDINATE):
+        if not (np.isfinite(y).all() and np.abs(y[:dof]).max() <= MAX_MAGNITUDE):
             raise IntegrationError(f"{method} failed: the motion left the representable range at t = {t:g} s")
         if t_eval is None:
             out_t.append(t)

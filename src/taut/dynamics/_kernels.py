@@ -34,6 +34,7 @@ from numba import njit
 
 from taut.geometry import rotate_about_axis
 from taut.kinematics import MIN_LENGTH
+from taut.model import MAX_MAGNITUDE
 
 #: Below this ``|det U|`` the rate matrix counts as singular (gimbal lock).
 GIMBAL_TOL = 1e-9
@@ -610,7 +611,7 @@ def control_updates(
             for j in range(dof):
                 q2[0, j], qd2[0, j] = qn[0, j], qdn[0, j]
         for j in range(dof):
-            if not (np.isfinite(q2[0, j]) and np.isfinite(qd2[0, j]) and abs(q2[0, j]) <= 1e9):
+            if not (np.isfinite(q2[0, j]) and np.isfinite(qd2[0, j]) and abs(q2[0, j]) <= MAX_MAGNITUDE):
                 return k
         for j in range(dof):
             state[0, j], state[1, j] = q2[0, j], qd2[0, j]

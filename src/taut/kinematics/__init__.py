@@ -21,7 +21,7 @@ if TYPE_CHECKING:
     )
     from taut.kinematics._jointed import actuator_jacobian, joint_forces, jointed_structure_matrix
     from taut.kinematics._paths import CABLE_OK, MIN_LENGTH, cable_paths
-    from taut.kinematics._pose import MAX_COORDINATE, anchor_points, anchors_at, as_poses, body_frames, platform_frame
+    from taut.kinematics._pose import anchor_points, anchors_at, as_poses, body_frames, platform_frame
     from taut.kinematics._swivel import refuse_swivels, swivel_angles, swivel_parameters, swivel_paths
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
@@ -45,7 +45,6 @@ _LAZY = {
     "CABLE_OK": "taut.kinematics._paths",
     "MIN_LENGTH": "taut.kinematics._paths",
     "cable_paths": "taut.kinematics._paths",
-    "MAX_COORDINATE": "taut.kinematics._pose",
     "anchor_points": "taut.kinematics._pose",
     "anchors_at": "taut.kinematics._pose",
     "as_poses": "taut.kinematics._pose",
@@ -61,7 +60,6 @@ __all__ = [
     "CABLE_OK",
     "FKResult",
     "IKResult",
-    "MAX_COORDINATE",
     "MIN_LENGTH",
     "actuator_jacobian",
     "anchor_points",

@@ -13,11 +13,7 @@ import numpy.typing as npt
 
 from taut.errors import PoseError
 from taut.geometry import planar_rotation, rotation_matrix
-from taut.model import Robot
-
-#: Largest magnitude of a pose coordinate taut evaluates (beyond it, angles lose every digit
-#: of their fraction and lengths mean nothing).
-MAX_COORDINATE = 1e9
+from taut.model import MAX_MAGNITUDE, Robot
 
 
 def as_poses(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, bool]:
@@ -38,10 +34,10 @@ def as_poses(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, bool]:
     if not np.all(np.isfinite(arr)):
         bad = np.argwhere(~np.isfinite(arr))[0]
         raise PoseError(f"{robot.name}: pose {bad[0] + 1}, coordinate {robot.pose_names[bad[1]]} is not finite")
-    if arr.size and np.abs(arr).max() > MAX_COORDINATE:
+    if arr.size and np.abs(arr).max() > MAX_MAGNITUDE:
         k, j = np.unravel_index(np.argmax(np.abs(arr)), arr.shape)
         raise PoseError(
-            f"{robot.name}: pose {k + 1}, coordinate {robot.pose_names[j]} = {arr[k, j]:g} is beyond {MAX_COORDINATE:g}"
+            f"{robot.name}: pose {k + 1}, coordinate {robot.pose_names[j]} = {arr[k, j]:g} is beyond {MAX_MAGNITUDE:g}"
         )
     if robot.n_joints:
         q = arr[:, robot.wrench_dim :]

@@ -29,6 +29,7 @@ from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError,
 
 from taut.errors import RobotFileError
 from taut.geometry import CONVENTIONS
+from taut.model._limits import MAX_MAGNITUDE
 
 FORMAT: Literal["taut/1"] = "taut/1"
 
@@ -38,8 +39,8 @@ STANDARD_GRAVITY = 9.81
 
 Number = Annotated[float, Field(allow_inf_nan=True)]
 Finite = Annotated[float, Field(allow_inf_nan=False)]
-#: Coordinates [m]: beyond a million kilometres squares overflow, and no robot is that large.
-Coordinate = Annotated[float, Field(allow_inf_nan=False, ge=-1e9, le=1e9)]
+#: Coordinates [m], within :data:`~taut.model._limits.MAX_MAGNITUDE`.
+Coordinate = Annotated[float, Field(allow_inf_nan=False, ge=-MAX_MAGNITUDE, le=MAX_MAGNITUDE)]
 
 Derived = TypeVar("Derived", np.ndarray, tuple[np.ndarray, np.ndarray])
 
@@ -150,7 +151,9 @@ class SwivelPulley(_Strict):
         "leaves on: the pulley swivels to face the anchor (its centre on the anchor's side of the axis) "
         "and the cable, running along this direction, wraps around it until it heads for the anchor",
     )
-    radius: Finite = Field(gt=0, le=1e9, description="pulley radius [m] (to the cable's centre line in the groove)")
+    radius: Finite = Field(
+        gt=0, le=MAX_MAGNITUDE, description="pulley radius [m] (to the cable's centre line in the groove)"
+    )
 
     @field_validator("axis")
     @classmethod

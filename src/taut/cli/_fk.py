@@ -8,14 +8,16 @@ from __future__ import annotations
 
 import argparse
 
-from taut.cli import args as A
-from taut.cli.cables import cable_numbers, numbered
-from taut.cli.incomplete import EXIT_STATUS, add_strict, enclosures, report
-from taut.cli.main import Command, console, emit, load, save_figure
-from taut.cli.progress import progress_bar, wanted
-from taut.errors import TautError
+from taut.cli import _args as A
+from taut.cli._cables import cable_numbers, numbered
+from taut.cli._incomplete import EXIT_STATUS, add_strict, enclosures, report
+from taut.cli._output import console, emit, print_table, save_figure, table
+from taut.cli._progress import progress_bar, wanted
 
-HELP = f"""All equilibrium poses of the platform for given cable lengths, every one certified
+SUMMARY = "all equilibria for given cable lengths (direct geometrico-static problem)"
+ROBOT = True
+
+DESCRIPTION = f"""All equilibrium poses of the platform for given cable lengths, every one certified
 (interval branch-and-prune, Krawczyk).  A box double precision leaves too small to split
 (a double or nearly double solution) is searched again in 256-bit balls when python-flint is
 installed (pip install 'taut[precise]').  A box that could be neither discarded nor
@@ -36,17 +38,13 @@ JSON: {{"robot", "solutions": [{{"taut", "position", "orientation", "tensions", 
 "elapsed_s"}}."""
 
 
-def cmd_fk(ns: argparse.Namespace) -> int:
+def run(ns: argparse.Namespace) -> int:
     from taut.dgp import solve_dgp
     from taut.parallel import get_executor
 
     plot = A.plot_file(ns.plot)
-    robot = load(ns.robot, ns.cable_set)
+    robot = A.load(ns.robot, ns.cable_set)
     lengths = A.vector(ns.lengths, "--lengths") if ns.lengths is not None else None
-    if ns.max_taut is not None and ns.max_taut < 1:
-        raise TautError(f"--max-taut must be at least 1, got {ns.max_taut}")
-    if ns.max_boxes is not None and ns.max_boxes < 1:
-        raise TautError(f"--max-boxes must be at least 1, got {ns.max_boxes}")
     with (
         get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor,
         progress_bar("fk", wanted(ns.json)) as progress,
@@ -71,48 +69,45 @@ def cmd_fk(ns: argparse.Namespace) -> int:
     status = report(res.undecided_enclosures, "equilibria", ns.strict, multiprecision_hint=True)
 
     def human(d: dict) -> None:
-        from rich.table import Table
-
         con = console()
-        # a row is the taut set, 6 pose values and n tensions of 7 characters: never squeeze it into "…"
-        con.width = max(con.width, 20 + 10 * (7 + robot.n_cables))
-        t = Table(
-            title=f"{robot.name}: {len(res.solutions)} equilibria ({res.subproblems} sub-problems, {res.elapsed_s:.2f} s)"
-            + ("" if res.complete else f", incomplete: {res.undecided} boxes undecided")
+        t = table(
+            f"{robot.name}: {len(res.solutions)} equilibria ({res.subproblems} sub-problems, {res.elapsed_s:.2f} s)"
+            + ("" if res.complete else f", incomplete: {res.undecided} boxes undecided"),
+            ["taut", *robot.pose_names, *(f"τ{i + 1}" for i in range(robot.n_cables)), "stable"],
+            [
+                [
+                    ",".join(map(str, cable_numbers(s.taut))),
+                    *(f"{v:.4f}" for v in s.position),
+                    *(f"{v:.4f}" for v in s.orientation),
+                    *(f"{v:.4f}" for v in s.tensions),
+                    "yes" if s.stable else "no",
+                ]
+                for s in res.solutions
+            ],
         )
-        for h in ("taut", *robot.pose_names, *(f"τ{i + 1}" for i in range(robot.n_cables)), "stable"):
-            t.add_column(h, justify="right")
-        for s in res.solutions:
-            t.add_row(
-                ",".join(map(str, cable_numbers(s.taut))),
-                *(f"{v:.4f}" for v in s.position),
-                *(f"{v:.4f}" for v in s.orientation),
-                *(f"{v:.4f}" for v in s.tensions),
-                "yes" if s.stable else "no",
-            )
-        con.print(t)
+        print_table(con, t)
 
     emit(data, ns.json, human)
     return status
 
 
-def register(command: Command) -> None:
-    c = command("fk", "all equilibria for given cable lengths (direct geometrico-static problem)", cmd_fk)
-    c.description = HELP
-    c.formatter_class = argparse.RawDescriptionHelpFormatter
-    c.add_argument("--lengths", help="cable lengths L1,...,Ln (default: the robot's reference lengths)")
-    c.add_argument(
-        "--max-taut", type=int, default=None, metavar="K", help="largest number of taut cables (default min(n, 6))"
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--lengths", help="cable lengths L1,...,Ln (default: the robot's reference lengths)")
+    parser.add_argument(
+        "--max-taut",
+        type=A.count(),
+        default=None,
+        metavar="K",
+        help="largest number of taut cables (default min(n, 6))",
     )
-    c.add_argument(
+    parser.add_argument(
         "--max-boxes",
-        type=int,
+        type=A.count(),
         default=None,
         metavar="N",
         help="box budget of every sub-problem; the boxes left when it runs out are undecided "
         "(default: a guard of 2000000 boxes per piece of a sub-problem)",
     )
-    add_strict(c)
-    c.add_argument("--workers", type=A.worker_count, default=1, help="local worker processes")
-    c.add_argument("--scheduler", default=None, metavar="ADDRESS", help="dask.distributed scheduler tcp://HOST:PORT")
-    c.add_argument("--plot", metavar="FILE.png", help="the robot in every equilibrium found")
+    add_strict(parser)
+    A.add_parallel(parser, workers=1)
+    parser.add_argument("--plot", metavar="FILE.png", help="the robot in every equilibrium found")

@@ -14,13 +14,17 @@ import argparse
 import json
 from typing import TYPE_CHECKING
 
+from taut.cli import _args as A
+from taut.cli._output import console, emit, markup, save_figure, written
 from taut.errors import TautError
 
 if TYPE_CHECKING:
     from taut.atlas import StructureAtlas
-    from taut.cli.main import Command
 
-HELP = """Build the structure atlas of a planar VSCR (one chart per reachable structure,
+SUMMARY = "structure atlas and workspace of a planar VSCR (rigid: one orientation page)"
+ROBOT = True
+
+DESCRIPTION = """Build the structure atlas of a planar VSCR (one chart per reachable structure,
 Alg. 5.1) from a start point, and its workspace under a condition (Alg. 5.2).  For a
 rigid platform the atlas is the page of constant orientation T (§5.2): charts hold the
 platform reference points whose anchors R(T) r_i + p are cable-reachable and where the
@@ -50,20 +54,18 @@ def _chart_json(atlas: StructureAtlas, c: int) -> dict:
     }
 
 
-def cmd_atlas(ns: argparse.Namespace) -> int:
+def run(ns: argparse.Namespace) -> int:
     import time
 
     import numpy as np
 
     from taut.atlas import atlas_workspace, build_atlas
-    from taut.cli import args as A
-    from taut.cli.main import console, emit, load, save_figure
-    from taut.cli.progress import progress_bar, wanted
+    from taut.cli._progress import progress_bar, wanted
     from taut.wrapping import contacts_text
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)
-    robot = load(ns.robot, ns.cable_set)
+    robot = A.load(ns.robot, ns.cable_set)
     ref = None
     if robot.reference is not None and robot.reference.poses:
         ref = np.asarray(next(iter(robot.reference.poses.values())), float)
@@ -75,7 +77,7 @@ def cmd_atlas(ns: argparse.Namespace) -> int:
         start = ref[:2]
     else:
         raise TautError(f"{robot.name} has no reference pose; give --start x,y")
-    theta = A.number(ns.theta, "--theta") if ns.theta is not None else 0.0
+    theta = ns.theta if ns.theta is not None else 0.0
     if robot.is_point_mass and theta != 0.0:
         raise TautError("--theta: a point-mass platform has no orientation (only 0)")
     if ns.theta is None and not robot.is_point_mass and ref is not None and ref.size == 3:
@@ -111,8 +113,8 @@ def cmd_atlas(ns: argparse.Namespace) -> int:
                 for e in atlas.edges
             ],
         }
-        with open(out, "w") as fh:
-            json.dump(full, fh, indent=1)
+        with written(out, "--out") as tmp, open(tmp, "w") as fh:
+            json.dump(full, fh, indent=1, allow_nan=False)
         data["out"] = str(out)
     if plot is not None:
         from taut.viz import plot_atlas
@@ -123,7 +125,7 @@ def cmd_atlas(ns: argparse.Namespace) -> int:
         con = console()
         page = "" if robot.is_point_mass else f" (page θ = {d['theta']:.6g} rad)"
         con.print(
-            f"[bold]{robot.name}[/]{page}: {d['charts']} charts, {d['edges']} adjacent pairs, "
+            f"[bold]{markup(robot.name)}[/]{page}: {d['charts']} charts, {d['edges']} adjacent pairs, "
             f"reachable area {d['reachable_area']:.6g} m², {d['condition']} workspace {d['workspace_area']:.6g} m² "
             f"({len(d['pruned'])} charts pruned) in {d['time']:.2f} s"
         )
@@ -135,19 +137,19 @@ def cmd_atlas(ns: argparse.Namespace) -> int:
     return 0
 
 
-def register(command: Command) -> None:
-    c = command("atlas", "structure atlas and workspace of a planar VSCR (rigid: one orientation page)", cmd_atlas)
-    c.description = HELP
-    c.formatter_class = argparse.RawDescriptionHelpFormatter
-    c.add_argument("--start", metavar="x,y", help="start point (default: the first reference pose)")
-    c.add_argument(
-        "--theta", metavar="T", help="orientation [rad] of a rigid platform's atlas page (0 for a point mass)"
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--start", metavar="x,y", help="start point (default: the first reference pose)")
+    parser.add_argument(
+        "--theta",
+        type=A.real(),
+        metavar="T",
+        help="orientation [rad] of a rigid platform's atlas page (0 for a point mass)",
     )
-    c.add_argument(
+    parser.add_argument(
         "--condition",
         default="wrench-feasible",
         choices=("wrench-feasible", "wrench-closure", "static"),
         help="workspace condition (Alg. 5.2)",
     )
-    c.add_argument("--out", metavar="FILE.json", help="write the charts and edges")
-    c.add_argument("--plot", metavar="FILE.png", help="atlas and workspace figure (Figs. 5.4, 5.9)")
+    parser.add_argument("--out", metavar="FILE.json", help="write the charts and edges")
+    parser.add_argument("--plot", metavar="FILE.png", help="atlas and workspace figure (Figs. 5.4, 5.9)")

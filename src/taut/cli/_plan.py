@@ -17,12 +17,13 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING
 
+from taut.cli import _args as A
+from taut.cli._output import console, emit, markup, save_figure, written
 from taut.errors import TautError
 
 if TYPE_CHECKING:
     import numpy as np
 
-    from taut.cli.main import Command
     from taut.model import Robot
     from taut.planning import PathResult, WrenchFeasibleManifold
 
@@ -35,7 +36,10 @@ DEFAULT_RADIUS = {"astar": 0.2, "atlasrrt": 0.4}
 #: AtlasRRT tree nodes when --max-nodes is not given: alone, and as the first stage of auto.
 DEFAULT_NODES = {"atlasrrt": 5000, "auto": 500}
 
-HELP = """Plan a path along which the cables balance every wrench of the ellipsoid
+SUMMARY = "wrench-feasible path between two configurations (cable hexapods)"
+ROBOT = True
+
+DESCRIPTION = """Plan a path along which the cables balance every wrench of the ellipsoid
 (w - w0)^T E (w - w0) <= 1 with tensions and lengths strictly inside their bounds.
 Planners (--planner):
   astar     higher-dimensional continuation + A* (Bohigas et al. 2013, §4): complete, it
@@ -59,8 +63,6 @@ JSON: {"planner", "method", "found", "path": [[x,y,z,phi,theta,sigma], ...], "ch
 def _pose(robot: Robot, text: str, what: str) -> np.ndarray:
     import numpy as np
 
-    from taut.cli import args as A
-
     ref = robot.reference.poses if robot.reference is not None else {}
     if text in ref:
         return np.asarray(ref[text], float)
@@ -71,7 +73,6 @@ def _pose(robot: Robot, text: str, what: str) -> np.ndarray:
 
 
 def _fixed(text: str | None, start: np.ndarray) -> dict[str, float]:
-    from taut.cli import args as A
     from taut.planning import POSE_NAMES
 
     if text is None:
@@ -87,8 +88,6 @@ def _fixed(text: str | None, start: np.ndarray) -> dict[str, float]:
 
 def _ellipsoid(text: str | None) -> np.ndarray:
     import numpy as np
-
-    from taut.cli import args as A
 
     if text is None:
         return 1e4 * np.eye(6)
@@ -108,7 +107,7 @@ def _ellipsoid(text: str | None) -> np.ndarray:
 
 def _run(ns: argparse.Namespace, M: WrenchFeasibleManifold, y0: np.ndarray, y1: np.ndarray) -> tuple[str, PathResult]:
     """The planner's answer: the method that gave it and its result."""
-    from taut.cli.progress import progress_bar, wanted
+    from taut.cli._progress import progress_bar, wanted
     from taut.planning import atlas_rrt, plan_path
 
     if ns.planner in ("atlasrrt", "auto"):
@@ -143,33 +142,22 @@ def _run(ns: argparse.Namespace, M: WrenchFeasibleManifold, y0: np.ndarray, y1: 
     return "astar", res
 
 
-def cmd_plan(ns: argparse.Namespace) -> int:
+def run(ns: argparse.Namespace) -> int:
     import time
 
     import numpy as np
 
-    from taut.cli import args as A
-    from taut.cli.main import console, emit, load, save_figure
     from taut.planning import POSE_NAMES, WrenchFeasibleManifold, verify_path
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)
-    if ns.radius is not None:
-        A.positive(ns.radius, "--radius")
-        if ns.radius < MIN_RADIUS:
-            raise TautError(f"--radius {ns.radius:g} is below {MIN_RADIUS:g}: the search could not cover the space")
-    if ns.max_charts < 2 or ns.subdivide < 1:
-        raise TautError("--max-charts must be at least 2 and --subdivide at least 1")
-    if ns.max_nodes is not None and ns.max_nodes < 2:
-        raise TautError(f"--max-nodes must be at least 2, got {ns.max_nodes}")
     if ns.step is not None:
-        A.positive(ns.step, "--step")
         radius = ns.radius or DEFAULT_RADIUS["atlasrrt"]
         if ns.step > radius:
             raise TautError(f"--step {ns.step:g} exceeds the chart radius {radius:g}")
     if ns.planner == "astar" and (ns.shorten or ns.unidirectional or ns.step is not None or ns.max_nodes):
         raise TautError("--shorten, --unidirectional, --step and --max-nodes apply to --planner atlasrrt or auto")
-    robot = load(ns.robot, ns.cable_set)
+    robot = A.load(ns.robot, ns.cable_set)
     start, goal = _pose(robot, ns.start, "--start"), _pose(robot, ns.goal, "--goal")
     fixed = _fixed(ns.fix, start)
     free = [n for n in POSE_NAMES if n not in fixed]
@@ -211,7 +199,7 @@ def cmd_plan(ns: argparse.Namespace) -> int:
         con = console()
         if d["found"]:
             con.print(
-                f"[bold]{robot.name}[/]: path of {len(d['path'])} poses, length {d['length']:.4g} "
+                f"[bold]{markup(robot.name)}[/]: path of {len(d['path'])} poses, length {d['length']:.4g} "
                 f"(pose coordinates), {d['method']}, {d['charts']} charts, {d['elapsed_s']:.3g} s"
             )
             con.print(
@@ -225,14 +213,16 @@ def cmd_plan(ns: argparse.Namespace) -> int:
                 why = f"not a proof: AtlasRRT's budget of {d['nodes']} nodes ran out"
             else:
                 why = "not a proof: the chart limit was reached"
-            con.print(f"[bold]{robot.name}[/]: no path ({why}; {d['charts']} charts explored, {d['elapsed_s']:.3g} s)")
+            con.print(
+                f"[bold]{markup(robot.name)}[/]: no path ({why}; {d['charts']} charts explored, {d['elapsed_s']:.3g} s)"
+            )
 
     if out is not None and table is not None:
         head = ",".join(
             [*robot.pose_names, *(f"f_min_{i + 1}" for i in range(6)), *(f"f_max_{i + 1}" for i in range(6))]
         )
-        with open(out, "w") as fh:
-            np.savetxt(fh, table, delimiter=",", header=head, comments="")
+        with written(out, "--out") as tmp:
+            np.savetxt(tmp, table, delimiter=",", header=head, comments="")
         data["out"] = str(out)
     if plot is not None:
         from taut.planning import slice_map
@@ -245,39 +235,43 @@ def cmd_plan(ns: argparse.Namespace) -> int:
     return 0
 
 
-def register(command: Command) -> None:
-    c = command("plan", "wrench-feasible path between two configurations (cable hexapods)", cmd_plan)
-    c.description = HELP
-    c.formatter_class = argparse.RawDescriptionHelpFormatter
-    c.add_argument("--start", required=True, help="start pose x,y,z,phi,theta,sigma or reference pose name")
-    c.add_argument("--goal", required=True, help="goal pose, same syntax")
-    c.add_argument(
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--start", required=True, help="start pose x,y,z,phi,theta,sigma or reference pose name")
+    parser.add_argument("--goal", required=True, help="goal pose, same syntax")
+    parser.add_argument(
         "--fix", help="slice: fixed pose coordinates, e.g. x=0,y=0,sigma=35deg (a name alone takes the start's value)"
     )
-    c.add_argument(
+    parser.add_argument(
         "--wrench-ellipsoid", help="E of (w-w0)^T E (w-w0) <= 1: e (E = e*I), 6 diagonal or 36 entries (default 1e4)"
     )
-    c.add_argument(
+    parser.add_argument(
         "--planner",
         choices=("auto", "atlasrrt", "astar"),
         default="auto",
         help="auto (default): AtlasRRT, then A* if it found nothing; atlasrrt; astar (complete)",
     )
-    c.add_argument(
+    parser.add_argument(
         "--radius",
-        type=float,
-        help="chart radius; for astar the resolution of a 'no path' answer (default 0.2 astar, 0.4 atlasrrt)",
+        type=A.real(least=MIN_RADIUS),
+        help="chart radius; for astar the resolution of a 'no path' answer (default 0.2 astar, 0.4 atlasrrt); "
+        f"at least {MIN_RADIUS:g}, below which the search could not cover the space",
     )
-    c.add_argument("--step", type=float, help="AtlasRRT step in the tangent spaces (default radius/4)")
-    c.add_argument("--seed", type=int, default=0, help="AtlasRRT random seed (default 0)")
-    c.add_argument("--max-nodes", type=int, help="AtlasRRT tree nodes (default 5000 atlasrrt, 500 auto)")
-    c.add_argument("--unidirectional", action="store_true", help="AtlasRRT: one tree from the start")
-    c.add_argument("--shorten", action="store_true", help="AtlasRRT: shorten the path on the manifold")
-    c.add_argument(
-        "--max-charts", type=int, default=20000, help="stop the search after this many charts (default 20000)"
+    parser.add_argument("--step", type=A.real(above=0), help="AtlasRRT step in the tangent spaces (default radius/4)")
+    parser.add_argument("--seed", type=A.seed, default=0, help=f"AtlasRRT random seed, 0 to {A.MAX_SEED} (default 0)")
+    parser.add_argument("--max-nodes", type=A.count(2), help="AtlasRRT tree nodes (default 5000 atlasrrt, 500 auto)")
+    parser.add_argument("--unidirectional", action="store_true", help="AtlasRRT: one tree from the start")
+    parser.add_argument("--shorten", action="store_true", help="AtlasRRT: shorten the path on the manifold")
+    parser.add_argument(
+        "--max-charts",
+        type=A.count(2),
+        default=20000,
+        help="stop the search after this many charts (default 20000)",
     )
-    c.add_argument(
-        "--subdivide", type=int, default=10, help="interpolated poses per path step for the independent check"
+    parser.add_argument(
+        "--subdivide",
+        type=A.count(),
+        default=10,
+        help="interpolated poses per path step for the independent check",
     )
-    c.add_argument("--out", metavar="FILE.csv", help="path poses and extreme tensions")
-    c.add_argument("--plot", metavar="FILE.png", help="extreme tensions along the path (Fig. 6)")
+    parser.add_argument("--out", metavar="FILE.csv", help="path poses and extreme tensions")
+    parser.add_argument("--plot", metavar="FILE.png", help="extreme tensions along the path (Fig. 6)")

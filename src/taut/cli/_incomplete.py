@@ -10,7 +10,7 @@ import sys
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-from taut.cli.cables import cable_numbers, numbered
+from taut.cli._cables import cable_numbers, numbered
 
 if TYPE_CHECKING:
     from taut.dgp import UndecidedBox

@@ -17,14 +17,23 @@ import argparse
 import math
 from typing import TYPE_CHECKING
 
+from taut.cli import _args as A
+from taut.cli._output import console, emit, markup, save_figure, written
 from taut.errors import TautError
 
 if TYPE_CHECKING:
     import numpy as np
 
-    from taut.cli.main import Command
     from taut.dynamics import WrenchSteps
     from taut.model import Robot
+
+SUMMARY = "simulate a trajectory tracked by computed-torque control with the tension distribution in the loop"
+ROBOT = True
+
+#: Highest control and sample rate [Hz].
+MAX_RATE = 1e6
+#: Most RK4 steps of the plant per control period.
+MAX_SUBSTEPS = 1000
 
 DISTURBANCE_HELP = (
     "external wrench on the platform, unknown to the controller: T0:W (a step from T0 s on) or "
@@ -38,8 +47,6 @@ def waypoints(robot: Robot, text: str) -> np.ndarray:
     """``--waypoints P0;P1;...``: poses (``pose_size`` numbers each) or positions
     (``dimension`` numbers each, the orientation kept at zero)."""
     import numpy as np
-
-    from taut.cli import args as A
 
     rows = [A.vector(part, "--waypoints") for part in text.split(";")]
     if len(rows) < 2:
@@ -56,7 +63,6 @@ def waypoints(robot: Robot, text: str) -> np.ndarray:
 
 def disturbance(robot: Robot, text: str) -> WrenchSteps:
     """``--disturbance T0:W[;T0:T1:W...]`` (:data:`DISTURBANCE_HELP`)."""
-    from taut.cli import args as A
     from taut.dynamics import WrenchSteps
 
     steps = []
@@ -80,8 +86,6 @@ def disturbance(robot: Robot, text: str) -> WrenchSteps:
 def _gains(text: str, robot: Robot, what: str) -> np.ndarray:
     import numpy as np
 
-    from taut.cli import args as A
-
     g = A.vector(text, what)
     if g.size not in (1, robot.pose_size) or (g < 0).any():
         raise TautError(
@@ -90,38 +94,33 @@ def _gains(text: str, robot: Robot, what: str) -> np.ndarray:
     return np.broadcast_to(g, (robot.pose_size,)).copy()
 
 
-def cmd_simulate(ns: argparse.Namespace) -> int:
+def run(ns: argparse.Namespace) -> int:
     import numpy as np
 
-    from taut.cli import args as A
-    from taut.cli.main import console, emit, load, save_figure
-    from taut.cli.progress import progress_bar, wanted
+    from taut.cli._progress import progress_bar, wanted
     from taut.dynamics import DEFAULT_KD, DEFAULT_KP, simulate_control, with_mass_error
     from taut.motion import trajectory_from_waypoints
     from taut.statics import METHODS
 
     out = A.output_file(ns.out, "--out", {".csv"})
     plot = A.plot_file(ns.plot)
-    robot = load(ns.robot, ns.cable_set)
-    duration = A.positive(ns.duration, "--duration")
-    rate = A.positive(ns.rate, "--rate", largest=1e6)
-    sample_rate = A.positive(ns.sample_rate, "--sample-rate", largest=1e6)
-    if not 1 <= ns.substeps <= 1000:
-        raise TautError(f"--substeps must be 1 to 1000, got {ns.substeps}")
+    robot = A.load(ns.robot, ns.cable_set)
+    duration, rate, sample_rate = ns.duration, ns.rate, ns.sample_rate
     if duration * rate > 1e7:
         raise TautError(f"--duration {duration:g} s at --rate {rate:g} Hz makes more than 1e7 control updates")
     if ns.method not in METHODS:
         raise TautError(f"--method: unknown method {ns.method!r}; valid methods: {', '.join(METHODS)}")
     if ns.controller == "none" and (ns.kp is not None or ns.kd is not None):
         raise TautError("--kp and --kd are the gains of --controller ctc")
-    kp = np.zeros(robot.pose_size) if ns.controller == "none" else _gains(ns.kp or str(DEFAULT_KP), robot, "--kp")
-    kd = np.zeros(robot.pose_size) if ns.controller == "none" else _gains(ns.kd or str(DEFAULT_KD), robot, "--kd")
+    if ns.controller == "none":
+        kp = kd = np.zeros(robot.pose_size)
+    else:
+        kp = _gains(str(DEFAULT_KP) if ns.kp is None else ns.kp, robot, "--kp")
+        kd = _gains(str(DEFAULT_KD) if ns.kd is None else ns.kd, robot, "--kd")
     W = waypoints(robot, ns.waypoints)
     wd = disturbance(robot, ns.disturbance) if ns.disturbance is not None else None
     model = None
     if ns.mass_error is not None:
-        if not (math.isfinite(ns.mass_error) and abs(ns.mass_error) < 1):
-            raise TautError(f"--mass-error must be a finite number between -1 and 1, got {ns.mass_error!r}")
         model = with_mass_error(robot, ns.mass_error)
     motion = trajectory_from_waypoints(robot, W, duration=duration, law=ns.law)
     with progress_bar("simulate", wanted(ns.json)) as progress:
@@ -184,7 +183,7 @@ def cmd_simulate(ns: argparse.Namespace) -> int:
             *(f"tau{i + 1}" for i in range(n)),
             "admissible",
         ]
-        with open(out, "w") as fh:
+        with written(out, "--out") as tmp, open(tmp, "w") as fh:
             fh.write(",".join(head) + "\n")
             for k in idx:
                 vals = [res.time[k], *res.pose[k], *res.reference[k], *res.tensions[k]]
@@ -198,7 +197,7 @@ def cmd_simulate(ns: argparse.Namespace) -> int:
     def human(d: dict) -> None:
         con = console()
         con.print(
-            f"[bold]{robot.name}[/]: {ns.law} trajectory through {len(W)} waypoints over {duration:g} s, "
+            f"[bold]{markup(robot.name)}[/]: {ns.law} trajectory through {len(W)} waypoints over {duration:g} s, "
             f"{ns.controller} control at {rate:g} Hz ({d['updates']} updates)"
         )
         errs = ", ".join(f"{p}={e:.3g}" for p, e in zip(robot.pose_names, d["tracking_error_max"]))
@@ -216,47 +215,54 @@ def cmd_simulate(ns: argparse.Namespace) -> int:
     return 0
 
 
-def register(command: Command) -> None:
-    c = command(
-        "simulate",
-        "simulate a trajectory tracked by computed-torque control with the tension distribution in the loop",
-        cmd_simulate,
-    )
-    c.add_argument(
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
         "--waypoints",
         required=True,
         metavar="P0;P1;...",
         help="waypoints separated by ';', each a pose (x,y,z,a,b,c; angles in rad, 30deg or pi/8) or a position; "
         "write --waypoints=-0.1,0,0;... for a leading minus",
     )
-    c.add_argument("--duration", type=float, required=True, help="total duration [s], shared out by segment length")
-    c.add_argument(
+    parser.add_argument(
+        "--duration", type=A.real(above=0), required=True, help="total duration [s], shared out by segment length"
+    )
+    parser.add_argument(
         "--law", default="quintic", help="time law: linear | cubic | quintic | trapezoidal (default quintic)"
     )
-    c.add_argument(
+    parser.add_argument(
         "--controller",
         default="ctc",
         choices=("ctc", "none"),
         help="ctc: computed torque (PD + feed-forward inverse dynamics); none: feed-forward only",
     )
-    c.add_argument("--kp", help="proportional gain [1/s^2], one or one per pose coordinate (default 400)")
-    c.add_argument("--kd", help="derivative gain [1/s], one or one per pose coordinate (default 44)")
-    c.add_argument("--rate", type=float, default=1000.0, help="control rate [Hz] (default 1000)")
-    c.add_argument("--substeps", type=int, default=1, help="RK4 steps of the plant per control period (default 1)")
-    c.add_argument("--disturbance", metavar="T0:W[;T0:T1:W]", help=DISTURBANCE_HELP)
-    c.add_argument(
+    parser.add_argument("--kp", help="proportional gain [1/s^2], one or one per pose coordinate (default 400)")
+    parser.add_argument("--kd", help="derivative gain [1/s], one or one per pose coordinate (default 44)")
+    parser.add_argument(
+        "--rate", type=A.real(above=0, most=MAX_RATE), default=1000.0, help="control rate [Hz] (default 1000)"
+    )
+    parser.add_argument(
+        "--substeps",
+        type=A.count(1, MAX_SUBSTEPS),
+        default=1,
+        help=f"RK4 steps of the plant per control period, 1 to {MAX_SUBSTEPS} (default 1)",
+    )
+    parser.add_argument("--disturbance", metavar="T0:W[;T0:T1:W]", help=DISTURBANCE_HELP)
+    parser.add_argument(
         "--mass-error",
-        type=float,
+        type=A.real(above=-1, below=1),
         metavar="F",
         help="relative error of the controller's mass and inertia (0.1: its model is 10 %% heavier)",
     )
-    c.add_argument(
+    parser.add_argument(
         "--method",
         default="qp",
         help="tension distribution where the closed form gives up: lp | qp | inf | closed-form | improved-closed-form | barycentric",
     )
-    c.add_argument(
-        "--sample-rate", type=float, default=100.0, help="samples per second in the JSON and CSV output (default 100)"
+    parser.add_argument(
+        "--sample-rate",
+        type=A.real(above=0, most=MAX_RATE),
+        default=100.0,
+        help="samples per second in the JSON and CSV output (default 100)",
     )
-    c.add_argument("--out", metavar="FILE.csv", help="per-sample time, pose, reference pose, tensions, admissible")
-    c.add_argument("--plot", metavar="FILE.png", help="tensions and tracking error against time")
+    parser.add_argument("--out", metavar="FILE.csv", help="per-sample time, pose, reference pose, tensions, admissible")
+    parser.add_argument("--plot", metavar="FILE.png", help="tensions and tracking error against time")

@@ -10,16 +10,18 @@ References
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from taut.cli import _args as A
+from taut.cli._output import console, emit, markup, save_figure, written
 from taut.errors import TautError
 
 if TYPE_CHECKING:
     import numpy as np
 
-    from taut.cli.main import Command
+SUMMARY = "VSCR trajectory: wrapping cable states, lengths, transitions, tensions"
+ROBOT = True
 
 
 def _read_waypoints(spec: str) -> tuple[str | None, np.ndarray | None]:
@@ -65,21 +67,19 @@ def _read_waypoints(spec: str) -> tuple[str | None, np.ndarray | None]:
     return None, W
 
 
-def cmd_trajectory(ns: argparse.Namespace) -> int:
-    import numpy as np
-
-    from taut.cli import args as A
-    from taut.cli.main import console, emit, load, save_figure
-    from taut.wrapping import DEFAULT_SPEED, builtin_trajectory, contacts_text, full_poses, run_trajectory, timed_moves
+def run(ns: argparse.Namespace) -> int:
+    from taut.wrapping import (
+        DEFAULT_SPEED,
+        builtin_trajectory,
+        contacts_text,
+        full_poses,
+        run_trajectory,
+        timed_moves,
+    )
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)
-    robot = load(ns.robot, ns.cable_set)
-    A.positive(ns.dt, "--dt")
-    if ns.speed is not None:
-        A.positive(ns.speed, "--speed")
-    if ns.dwell is not None and not (np.isfinite(ns.dwell) and ns.dwell >= 0):
-        raise TautError(f"--dwell must be a finite number >= 0, got {ns.dwell!r}")
+    robot = A.load(ns.robot, ns.cable_set)
     name, W = _read_waypoints(ns.waypoints)
     if W is None:
         if not robot.trajectories:
@@ -104,7 +104,7 @@ def cmd_trajectory(ns: argparse.Namespace) -> int:
             "feasible",
             *(f"state{i + 1}" for i in range(n)),
         ]
-        with open(out, "w") as fh:
+        with written(out, "--out") as tmp, open(tmp, "w") as fh:
             fh.write(",".join(head) + "\n")
             for s in range(len(t)):
                 states = [contacts_text(res.ik.contacts(s, i)) for i in range(n)]
@@ -119,7 +119,7 @@ def cmd_trajectory(ns: argparse.Namespace) -> int:
     def human(d: dict) -> None:
         con = console()
         con.print(
-            f"[bold]{robot.name}[/]: {d['samples']} samples over {d['duration']:.3g} s, "
+            f"[bold]{markup(robot.name)}[/]: {d['samples']} samples over {d['duration']:.3g} s, "
             f"{len(d['transitions'])} CST transitions"
         )
         for e in d["transitions"]:
@@ -129,33 +129,29 @@ def cmd_trajectory(ns: argparse.Namespace) -> int:
         else:
             con.print(f"[bold red]no feasible tension distribution[/] at {len(d['infeasible_samples'])} samples")
 
-    if ns.json:
-        print(json.dumps(data, allow_nan=False))
-    else:
-        emit(data, False, human)
+    emit(data, ns.json, human)
     return 0
 
 
-def register(command: Command) -> None:
-    c = command("trajectory", "VSCR trajectory: wrapping cable states, lengths, transitions, tensions", cmd_trajectory)
-    c.add_argument(
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
         "--waypoints",
         default="builtin",
         metavar="FILE|builtin",
         help="waypoints file (x,y per line, or JSON/YAML list), or builtin[:NAME] (default: the robot's first trajectory)",
     )
-    c.add_argument("--dt", type=float, default=0.01, help="sampling step [s] (default 0.01)")
-    c.add_argument(
+    parser.add_argument("--dt", type=A.real(above=0), default=0.01, help="sampling step [s] (default 0.01)")
+    parser.add_argument(
         "--speed",
-        type=float,
+        type=A.real(above=0),
         default=None,
         help="speed along waypoint moves [m/s] (default: the trajectory's, else 0.1)",
     )
-    c.add_argument(
+    parser.add_argument(
         "--dwell",
-        type=float,
+        type=A.real(least=0),
         default=None,
         help="dwell at each waypoint [s] (default: the trajectory's, 1 s for files)",
     )
-    c.add_argument("--out", metavar="FILE.csv", help="per-sample times, poses, lengths, tensions, cable states")
-    c.add_argument("--plot", metavar="FILE.png", help="lengths over time with transitions, and robot snapshots")
+    parser.add_argument("--out", metavar="FILE.csv", help="per-sample times, poses, lengths, tensions, cable states")
+    parser.add_argument("--plot", metavar="FILE.png", help="lengths over time with transitions, and robot snapshots")

@@ -14,16 +14,19 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING
 
-from taut.cli.incomplete import EXIT_STATUS, add_strict, enclosures, report
-from taut.errors import CableSetError, PoseError, TautError
+from taut.cli import _args as A
+from taut.cli._incomplete import EXIT_STATUS, add_strict, enclosures, report
+from taut.cli._output import console, emit, markup, print_table, table
+from taut.errors import CableSetError, PoseError
 
 if TYPE_CHECKING:
     import numpy as np
     from rich.console import Console
 
-    from taut.cli.main import Command
+SUMMARY = "pose, tensions and lengths for chosen taut cables (inverse geometrico-static problem)"
+ROBOT = True
 
-HELP = f"""With the cables of --taut taut (m of them, 2 <= m <= 6) only m pose coordinates
+DESCRIPTION = f"""With the cables of --taut taut (m of them, 2 <= m <= 6) only m pose coordinates
 can be assigned: give them with --fix (names x, y, z and the robot's angle names, e.g.
 a, b, c or phix, phiy, phiz for xyz conventions, phi, theta, sigma for tilt-torsion;
 angles in rad, or 30deg, pi/8).  Every equilibrium with tensions >= 0 is found and
@@ -52,8 +55,6 @@ def _cables(text: str) -> list[int]:
 
 
 def _assigned(text: str) -> dict[str, float]:
-    from taut.cli import args as A
-
     values = A.assignments(text, "--fix")
     bare = [name for name, v in values.items() if v is None]
     if bare:
@@ -64,23 +65,18 @@ def _assigned(text: str) -> dict[str, float]:
 def _box(text: str | None) -> tuple[np.ndarray, np.ndarray] | None:
     if text is None:
         return None
-    from taut.cli import args as A
-
     v = A.vector(text, "--box")
     if v.size != 6:
         raise PoseError(f"--box: expected xmin,ymin,zmin,xmax,ymax,zmax, got {v.size} numbers")
     return v[:3], v[3:]
 
 
-def cmd_igp(ns: argparse.Namespace) -> int:
-    from taut.cli.cables import cable_indices, cable_numbers, numbered
-    from taut.cli.main import console, emit, load
-    from taut.cli.progress import progress_bar, wanted
+def run(ns: argparse.Namespace) -> int:
+    from taut.cli._cables import cable_indices, cable_numbers, numbered
+    from taut.cli._progress import progress_bar, wanted
     from taut.dgp import solve_igp
 
-    if ns.max_boxes < 1:
-        raise TautError(f"--max-boxes must be at least 1, got {ns.max_boxes}")
-    robot = load(ns.robot, ns.cable_set)
+    robot = A.load(ns.robot, ns.cable_set)
     cables = _cables(ns.taut)
     with progress_bar("igp (boxes)", wanted(ns.json)) as progress:
         res = solve_igp(
@@ -105,31 +101,30 @@ def cmd_igp(ns: argparse.Namespace) -> int:
     }
 
     def tables(con: Console, d: dict) -> None:
-        from rich.table import Table
-
         free = [k for k, name in enumerate(robot.pose_names[:6]) if name not in res.assigned]
-        t = Table(title="free coordinates and tensions")
-        for h in ("#", *(robot.pose_names[k] for k in free), *(f"τ{i}" for i in d["taut"]), "stable"):
-            t.add_column(h, justify="right")
+        rows = []
         for k, s in enumerate(res.solutions, 1):
             pose = [*s.position, *s.orientation]
-            t.add_row(
-                str(k),
-                *(f"{pose[j]:.4f}" for j in free),
-                *(f"{s.tensions[i - 1]:.4f}" for i in d["taut"]),
-                "yes" if s.stable else "no",
+            rows.append(
+                [
+                    str(k),
+                    *(f"{pose[j]:.4f}" for j in free),
+                    *(f"{s.tensions[i - 1]:.4f}" for i in d["taut"]),
+                    "yes" if s.stable else "no",
+                ]
             )
-        con.print(t)
+        header = ["#", *(robot.pose_names[k] for k in free), *(f"τ{i}" for i in d["taut"]), "stable"]
+        print_table(con, table("free coordinates and tensions", header, rows))
         # one column per solution: n cables would not fit across a terminal
-        t = Table(title="cable lengths to command (≥ span: slack cable)")
-        for h in ("cable", *(f"#{k}" for k in range(1, len(res.solutions) + 1))):
-            t.add_column(h, justify="right")
-        for i in range(robot.n_cables):
-            t.add_row(
+        rows = [
+            [
                 str(i + 1),
                 *(f"≥{s.lengths[i]:.4f}" if i in s.slack else f"{s.lengths[i]:.4f}" for s in res.solutions),
-            )
-        con.print(t)
+            ]
+            for i in range(robot.n_cables)
+        ]
+        header = ["cable", *(f"#{k}" for k in range(1, len(res.solutions) + 1))]
+        print_table(con, table("cable lengths to command (≥ span: slack cable)", header, rows))
         for k, s in enumerate(res.solutions, 1):
             if s.length_violations:
                 con.print(
@@ -140,7 +135,7 @@ def cmd_igp(ns: argparse.Namespace) -> int:
         con = console()
         fixed = ", ".join(f"{k}={v:.6g}" for k, v in res.assigned.items())
         con.print(
-            f"[bold]{robot.name}[/]: {len(res.solutions)} equilibria with cables {d['taut']} taut at {fixed} "
+            f"[bold]{markup(robot.name)}[/]: {len(res.solutions)} equilibria with cables {d['taut']} taut at {fixed} "
             f"({res.boxes} boxes, {res.elapsed_s:.2f} s)"
         )
         if res.solutions:
@@ -156,18 +151,17 @@ def cmd_igp(ns: argparse.Namespace) -> int:
     return status
 
 
-def register(command: Command) -> None:
-    c = command("igp", "pose, tensions and lengths for chosen taut cables (inverse geometrico-static problem)", cmd_igp)
-    c.description = HELP
-    c.formatter_class = argparse.RawDescriptionHelpFormatter
-    c.add_argument("--taut", required=True, help="taut cables, e.g. 1,2,3 (2 to 6 of them)")
-    c.add_argument(
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--taut", required=True, help="taut cables, e.g. 1,2,3 (2 to 6 of them)")
+    parser.add_argument(
         "--fix", required=True, help="as many pose coordinates as taut cables, e.g. x=0.3,y=0.4,z=0.1,a=5deg"
     )
-    c.add_argument("--max-boxes", type=int, default=100_000, help="branch-and-prune box budget (default 100000)")
-    c.add_argument(
+    parser.add_argument(
+        "--max-boxes", type=A.count(), default=100_000, help="branch-and-prune box budget (default 100000)"
+    )
+    parser.add_argument(
         "--box",
         help="search box of the free position coordinates xmin,ymin,zmin,xmax,ymax,zmax "
         "(default: the taut cables' reach around their exit points)",
     )
-    add_strict(c)
+    add_strict(parser)

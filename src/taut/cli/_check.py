@@ -14,14 +14,17 @@ import argparse
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from taut.cli import _args as A
+from taut.cli._output import console, emit, markup, save_figure
 from taut.errors import TautError
 
 if TYPE_CHECKING:
     import numpy as np
 
-    from taut.cli.main import Command
+SUMMARY = "self-collision and singularity check along a trajectory"
+ROBOT = True
 
-HELP = """Check every step of a trajectory for cable/platform self-collision (capsule model),
+DESCRIPTION = """Check every step of a trajectory for cable/platform self-collision (capsule model),
 Jacobian singularity and force-closure singularity.
 
 --trajectory is the name of one of the robot's built-in trajectories (e.g. sim-a ... sim-d
@@ -53,15 +56,13 @@ def _runs(flags: np.ndarray) -> list[list[int]]:
     return [[int(s) + 1, int(e) + 1] for s, e in zip(starts, ends)]
 
 
-def cmd_check(ns: argparse.Namespace) -> int:
+def run(ns: argparse.Namespace) -> int:
     import numpy as np
 
-    from taut.cli import args as A
-    from taut.cli.main import console, emit, load, save_figure
     from taut.collision import check_poses, load_trajectory, trajectory_poses
 
     plot = A.plot_file(ns.plot)
-    robot = load(ns.robot, ns.cable_set)
+    robot = A.load(ns.robot, ns.cable_set)
     spec = ns.trajectory
     if spec in robot.trajectories:
         poses = trajectory_poses(robot, spec)
@@ -103,7 +104,7 @@ def cmd_check(ns: argparse.Namespace) -> int:
         con = console()
         s = d["summary"]
         con.print(
-            f"[bold]{robot.name}[/], trajectory {spec}: {s['poses']} steps, smallest clearance {s['min_clearance']:.4g} m"
+            f"[bold]{markup(robot.name)}[/], trajectory {markup(spec)}: {s['poses']} steps, smallest clearance {s['min_clearance']:.4g} m"
         )
         names = res.model.names
         for label, key in (
@@ -117,28 +118,25 @@ def cmd_check(ns: argparse.Namespace) -> int:
         if s["first_collision"] is not None:
             k = s["first_collision"] - 1
             pairs = "; ".join(f"{names[i]} & {names[j]}" for i, j in res.proximity.collisions(k))
-            con.print(f"  first collision at step {k + 1}: {pairs}")
+            con.print(f"  first collision at step {k + 1}: {markup(pairs)}")
 
     emit(data, ns.json, human)
     return 0
 
 
-def register(command: Command) -> None:
-    c = command("check", "self-collision and singularity check along a trajectory", cmd_check)
-    c.description = HELP
-    c.formatter_class = argparse.RawDescriptionHelpFormatter
-    c.add_argument(
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
         "--trajectory",
         required=True,
         metavar="FILE|NAME",
         help="trajectory file (CSV, YAML, JSON) or built-in trajectory name (e.g. sim-c)",
     )
-    c.add_argument(
+    parser.add_argument(
         "--method",
         default="fast",
         choices=("fast", "lp"),
         help="force-closure test: fast (vectorised) or lp (one LP per step, the reference)",
     )
-    c.add_argument(
+    parser.add_argument(
         "--plot", metavar="FILE.png", help="clearance and singularity flags over the steps, robot at the first problem"
     )
