@@ -258,6 +258,7 @@ def cmd_workspace(ns: argparse.Namespace) -> int:
             wrench_set=wrench_set,
             executor=executor,
             progress=progress,
+            **({} if ns.max_poses is None else {"max_poses": ns.max_poses}),
         )
     data = {"robot": robot.name, "condition": ns.condition} | res.summary()
     if out is not None:
@@ -345,6 +346,9 @@ def build_parser() -> argparse.ArgumentParser:
         help="wrench-feasible: box of wrenches around the external wrench, one half-width per component (default: 10 %% of the weight)",
     )
     c.add_argument("--orientation", help="fixed platform orientation (theta, or a,b,c) and joint coordinates")
+    c.add_argument(
+        "--max-poses", type=int, metavar="N", help="budget of poses: a larger grid is refused (default 10000000)"
+    )
     c.add_argument("--out", metavar="FILE.npz", help="save poses and verdicts")
     c.add_argument("--plot", metavar="FILE.png", help="plot the workspace")
     c.add_argument("--workers", type=A.worker_count, default=None, help="local worker processes")
