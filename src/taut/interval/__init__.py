@@ -10,13 +10,14 @@ References
 """
 
 from taut.interval.arithmetic import Interval, centred_form
-from taut.interval.branch_prune import BranchAndPruneResult, branch_and_prune
+from taut.interval.branch_prune import CERTIFY_BOXES, BranchAndPruneResult, branch_and_prune
 from taut.interval.expression import System, compile_system, const, derivative, sqrt, variables
 from taut.interval.hc4 import contract, evaluate, evaluate_point
 from taut.interval.krawczyk import Certificate, certify, inflate, krawczyk, newton
 from taut.interval.linear import LinearFilter, interval_gauss, preconditioned_solve
 
 __all__ = [
+    "CERTIFY_BOXES",
     "BranchAndPruneResult",
     "Certificate",
     "Interval",
