@@ -35,6 +35,10 @@ MIN_RADIUS = 1e-3
 DEFAULT_RADIUS = {"astar": 0.2, "atlasrrt": 0.4}
 #: AtlasRRT tree nodes when --max-nodes is not given: alone, and as the first stage of auto.
 DEFAULT_NODES = {"atlasrrt": 5000, "auto": 500}
+#: Most free coordinates A* searches without an explicit --max-charts: its atlas needs about
+#: (extent / radius)^k charts (millions in six dimensions at the default radius, at 0.2 s a
+#: chart), so that on more it would only run out of the default budget after an hour.
+ASTAR_DIMENSIONS = 4
 
 SUMMARY = "wrench-feasible path between two configurations (cable hexapods)"
 ROBOT = True
@@ -48,7 +52,11 @@ Planners (--planner):
   atlasrrt  AtlasRRT (Jaillet & Porta 2013), bidirectional unless --unidirectional: random
             trees grown on an atlas of the same manifold (--radius, default 0.4; --step,
             default radius/4; --seed), fast, but it cannot prove that no path exists;
-  auto      (default) AtlasRRT within --max-nodes (default 500), then A*.
+  auto      (default) AtlasRRT within --max-nodes (default 500), then A* (on more than 4
+            free coordinates only with an explicit --max-charts: its atlas would need
+            millions of charts).
+--max-charts bounds the atlas of either planner (default 20000); A* then answers
+"found": false, "exhausted": false.
 --shorten shortens an AtlasRRT path by random shortcuts on the manifold.
 Angles are periodic: a path may cross phi = +-pi or theta = 0, so its last pose is the goal
 or the same orientation written with other angles (phi +- 2pi, or phi + pi with -theta).
@@ -110,6 +118,7 @@ def _run(ns: argparse.Namespace, M: WrenchFeasibleManifold, y0: np.ndarray, y1: 
     from taut.cli._progress import progress_bar, wanted
     from taut.planning import atlas_rrt, plan_path
 
+    charts = {} if ns.max_charts is None else {"max_charts": ns.max_charts}
     if ns.planner in ("atlasrrt", "auto"):
         radius = ns.radius or DEFAULT_RADIUS["atlasrrt"]
         with progress_bar("plan (AtlasRRT nodes)", wanted(ns.json)) as progress:
@@ -123,11 +132,12 @@ def _run(ns: argparse.Namespace, M: WrenchFeasibleManifold, y0: np.ndarray, y1: 
                 seed=ns.seed,
                 bidirectional=not ns.unidirectional,
                 max_nodes=ns.max_nodes or DEFAULT_NODES[ns.planner],
-                max_charts=ns.max_charts,
                 shorten=ns.shorten,
                 progress=progress,
+                **charts,
             )
-        if res.found or ns.planner == "atlasrrt":
+        # auto on more free coordinates than A* covers: the AtlasRRT answer (not a proof)
+        if res.found or ns.planner == "atlasrrt" or (M.dim > ASTAR_DIMENSIONS and ns.max_charts is None):
             return "atlasrrt", res
     with progress_bar("plan (charts expanded)", wanted(ns.json)) as progress:
         res = plan_path(
@@ -136,8 +146,8 @@ def _run(ns: argparse.Namespace, M: WrenchFeasibleManifold, y0: np.ndarray, y1: 
             y1,
             ns.radius or DEFAULT_RADIUS["astar"],
             metric=M.pose_metric,
-            max_charts=ns.max_charts,
             progress=progress,
+            **charts,
         )
     return "astar", res
 
@@ -147,10 +157,23 @@ def run(ns: argparse.Namespace) -> int:
 
     import numpy as np
 
-    from taut.planning import POSE_NAMES, WrenchFeasibleManifold, verify_path
+    from taut.planning import MAX_POSES, POSE_NAMES, WrenchFeasibleManifold, verify_path
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)
+    if ns.radius is not None:
+        A.positive(ns.radius, "--radius")
+        if ns.radius < MIN_RADIUS:
+            raise TautError(f"--radius {ns.radius:g} is below {MIN_RADIUS:g}: the search could not cover the space")
+    if (ns.max_charts is not None and ns.max_charts < 2) or ns.subdivide < 1:
+        raise TautError("--max-charts must be at least 2 and --subdivide at least 1")
+    if ns.subdivide >= MAX_POSES:
+        raise TautError(
+            f"--subdivide {ns.subdivide} checks more than {MAX_POSES:,} poses on any path (of one step or more); "
+            "give a smaller --subdivide"
+        )
+    if ns.max_nodes is not None and ns.max_nodes < 2:
+        raise TautError(f"--max-nodes must be at least 2, got {ns.max_nodes}")
     if ns.step is not None:
         radius = ns.radius or DEFAULT_RADIUS["atlasrrt"]
         if ns.step > radius:
@@ -164,6 +187,12 @@ def run(ns: argparse.Namespace) -> int:
     if plot is not None and len(free) < 2:
         raise TautError("--plot draws a map of two free coordinates: fix at most four")
     M = WrenchFeasibleManifold.from_robot(robot, E=_ellipsoid(ns.wrench_ellipsoid), fixed=fixed)
+    if ns.planner == "astar" and M.dim > ASTAR_DIMENSIONS and ns.max_charts is None:
+        raise TautError(
+            f"A* on {M.dim} free coordinates needs about (extent/radius)^{M.dim} charts, far beyond its default "
+            f"budget: fix some with --fix (at most {ASTAR_DIMENSIONS} free), use --planner atlasrrt, "
+            "or give --max-charts to search within a budget"
+        )
     y0, y1 = M.lift(start), M.lift(goal)
     t0 = time.perf_counter()
     method, res = _run(ns, M, y0, y1)
@@ -264,8 +293,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--max-charts",
         type=A.count(2),
-        default=20000,
-        help="stop the search after this many charts (default 20000)",
+        help=f"stop the search after this many charts (default 20000; A* needs it on more than {ASTAR_DIMENSIONS} free coordinates)",
     )
     parser.add_argument(
         "--subdivide",

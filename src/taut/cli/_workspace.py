@@ -31,6 +31,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="wrench-feasible: box of wrenches around the external wrench, one half-width per component (default: 10 %% of the weight)",
     )
     parser.add_argument("--orientation", help="fixed platform orientation (theta, or a,b,c) and joint coordinates")
+    parser.add_argument(
+        "--max-poses", type=A.count(1), metavar="N", help="budget of poses: a larger grid is refused (default 10000000)"
+    )
     parser.add_argument("--out", metavar="FILE.npz", help="save poses and verdicts")
     parser.add_argument("--plot", metavar="FILE.png", help="plot the workspace")
     A.add_parallel(parser, workers=None)
@@ -102,6 +105,7 @@ def run(ns: argparse.Namespace) -> int:
             wrench_set=wrench_set,
             executor=executor,
             progress=progress,
+            **({} if ns.max_poses is None else {"max_poses": ns.max_poses}),
         )
     data = {"robot": robot.name, "condition": ns.condition} | res.summary()
     if out is not None:

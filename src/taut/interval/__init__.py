@@ -18,6 +18,7 @@ from taut._lazy import lazy_exports
 if TYPE_CHECKING:
     from taut.interval._arithmetic import Interval, centred_form
     from taut.interval._branch_prune import (
+        CERTIFY_BOXES,
         Box,
         BranchAndPruneResult,
         bisect,
@@ -50,6 +51,7 @@ _LAZY = {
     "centred_form": "taut.interval._arithmetic",
     "Box": "taut.interval._branch_prune",
     "BranchAndPruneResult": "taut.interval._branch_prune",
+    "CERTIFY_BOXES": "taut.interval._branch_prune",
     "bisect": "taut.interval._branch_prune",
     "branch_and_prune": "taut.interval._branch_prune",
     "file_certificate": "taut.interval._branch_prune",
@@ -86,6 +88,7 @@ _LAZY = {
 __all__ = [
     "Box",
     "BranchAndPruneResult",
+    "CERTIFY_BOXES",
     "CONST",
     "Certificate",
     "Expr",

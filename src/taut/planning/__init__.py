@@ -25,7 +25,7 @@ if TYPE_CHECKING:
     from taut.planning._manifold import POSE_NAMES, WrenchFeasibleManifold
     from taut.planning._search import PathResult, plan_path, refine_path
     from taut.planning._slices import SliceMap, slice_map
-    from taut.planning._verify import verify_path
+    from taut.planning._verify import MAX_POSES, verify_path
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -45,6 +45,7 @@ _LAZY = {
     "refine_path": "taut.planning._search",
     "SliceMap": "taut.planning._slices",
     "slice_map": "taut.planning._slices",
+    "MAX_POSES": "taut.planning._verify",
     "verify_path": "taut.planning._verify",
 }
 
@@ -52,6 +53,7 @@ __all__ = [
     "Atlas",
     "Chart",
     "ImplicitManifold",
+    "MAX_POSES",
     "POSE_NAMES",
     "PathResult",
     "Polytope",
