@@ -59,7 +59,7 @@ def test_two_roots_closer_than_double_precision_separates_are_certified(exponent
 def test_double_precision_leaves_them_undecided():
     """The reason for the module: the same system in float intervals (the centre rounded
     outwards) cannot be decided near the tangency."""
-    res = branch_and_prune(circles(Fraction(1, 3 * 2**50)), LO, HI, eps=1e-9)
+    res = branch_and_prune(circles(Fraction(1, 3 * 2**50)), LO, HI, tol=1e-9)
     assert res.undecided and len(res.solutions) < 2
 
 

@@ -19,7 +19,7 @@ positive = st.floats(0.2, 5.0)
 
 
 def _p2p(start, end, T, law, **kw):
-    return trajectory_from_waypoints(SPATIAL, [start, end], T, law=law, **kw)
+    return trajectory_from_waypoints(SPATIAL, [start, end], durations=T, law=law, **kw)
 
 
 @pytest.mark.parametrize("law", LAWS)
@@ -67,7 +67,7 @@ COMBINATIONS = [(law, "stop") for law in LAWS] + [("cubic", "average"), ("quinti
 @settings(max_examples=15, deadline=None)
 @given(points=st.lists(pose, min_size=2, max_size=5), durations=st.lists(positive, min_size=4, max_size=4))
 def test_derivatives_match_finite_differences_of_the_pose(law, via, points, durations):
-    m = trajectory_from_waypoints(SPATIAL, points, durations[: len(points) - 1], law=law, via=via)
+    m = trajectory_from_waypoints(SPATIAL, points, durations=durations[: len(points) - 1], law=law, via=via)
     h = 1e-4
     t = _smooth_times(m, h=h)
     s, plus, minus = m.at(t), m.at(t + h), m.at(t - h)
@@ -126,7 +126,9 @@ def test_trapezoidal_is_triangular_when_the_cruise_speed_is_out_of_reach():
 @pytest.mark.parametrize("blend", [0.1, 0.25, 0.5])
 def test_trapezoidal_blend_fraction(blend):
     T, d = 2.0, 0.3
-    m = trajectory_from_waypoints(PLANAR, [[0.5, 0.5, 0.0], [0.8, 0.5, 0.0]], T, law="trapezoidal", blend=blend)
+    m = trajectory_from_waypoints(
+        PLANAR, [[0.5, 0.5, 0.0], [0.8, 0.5, 0.0]], durations=T, law="trapezoidal", blend=blend
+    )
     tb = blend * T
     a = d / (tb * (T - tb))
     s = m.at([tb / 2, T / 2, T - tb / 2])

@@ -46,7 +46,7 @@ def _skew(W):
 @given(orientations=st.lists(angles, min_size=2, max_size=4), law=st.sampled_from(["cubic", "quintic"]))
 def test_angular_velocity_and_acceleration_match_rotation_matrices(convention, orientations, law):
     robot = ROBOTS[convention]
-    m = trajectory_from_waypoints(robot, _spatial_waypoints(robot, orientations), 1.0, law=law, via="average")
+    m = trajectory_from_waypoints(robot, _spatial_waypoints(robot, orientations), durations=1.0, law=law, via="average")
     h = 1e-4
     t = np.linspace(h, m.duration - h, 23)[1:-1]
     t = t[np.min(np.abs(t[:, None] - m.breaks[None, :]), axis=1) > 2 * h]
@@ -68,12 +68,12 @@ def test_angular_velocity_and_acceleration_match_rotation_matrices(convention, o
 
 
 def test_planar_and_point_mass_angular_rates():
-    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, -0.2], [0.6, 0.5, 0.4]], 2.0)
+    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, -0.2], [0.6, 0.5, 0.4]], durations=2.0)
     s = m.sample(50)
     assert s.angular_velocity.shape == (len(s.time), 1)
     assert np.array_equal(s.angular_velocity[:, 0], s.velocity[:, 2])  # ω = θ̇
     assert np.array_equal(s.angular_acceleration[:, 0], s.acceleration[:, 2])
-    point = trajectory_from_waypoints(AGRICULTURE, [[0, 0.3], [0.1, 0.5]], 1.0).sample(10)
+    point = trajectory_from_waypoints(AGRICULTURE, [[0, 0.3], [0.1, 0.5]], durations=1.0).sample(10)
     assert point.angular_velocity.shape == (11, 0)
 
 
@@ -82,7 +82,7 @@ def test_angles_take_the_short_way_across_pi(convention):
     robot = ROBOTS[convention]
     start, end = [3.0, 0.3, -3.1], [-3.0, 0.2, 3.05]
     W = _spatial_waypoints(robot, [start, end])
-    m = trajectory_from_waypoints(robot, W, 1.0)
+    m = trajectory_from_waypoints(robot, W, durations=1.0)
     s = m.sample(200)
     # each angle moves by less than π: 3.0 → 2π − 3.0 (0.283 rad), −3.1 → 3.05 − 2π (0.133 rad)
     travel = np.abs(s.pose[-1, 3:6] - s.pose[0, 3:6])
@@ -91,7 +91,7 @@ def test_angles_take_the_short_way_across_pi(convention):
     # the end is the waypoint's rotation
     assert np.allclose(rotation_matrix(s.pose[-1, 3:6], convention), rotation_matrix(end, convention), atol=1e-12)
     # without unwrapping the long way is kept (a deliberate turn)
-    long = trajectory_from_waypoints(robot, W, 1.0, unwrap=False).sample(200)
+    long = trajectory_from_waypoints(robot, W, durations=1.0, unwrap=False).sample(200)
     assert np.abs(long.pose[-1, 3] - long.pose[0, 3]) == pytest.approx(6.0)
 
 
@@ -108,7 +108,7 @@ def test_unwrap_keeps_each_rotation_and_steps_at_most_pi(orientations):
 
 
 def test_planar_angle_unwraps_too():
-    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 3.1], [0.3, 0.3, -3.1]], 1.0)
+    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 3.1], [0.3, 0.3, -3.1]], durations=1.0)
     assert m.waypoints[1, 2] == pytest.approx(2 * math.pi - 3.1)
 
 
@@ -117,7 +117,7 @@ def test_gimbal_lock_waypoint_gives_finite_exact_rates():
     # needs no inverse: the rates stay finite and match R(q(t))
     for robot, locked in ((SPATIAL, [0.2, math.pi / 2, -0.4]), (ROBOCRANE, [0.7, 0.0, 0.3])):
         W = _spatial_waypoints(robot, [[0.0, 0.3, 0.0], locked, [0.3, 0.2, 0.1]])
-        m = trajectory_from_waypoints(robot, W, 1.0, law="cubic", via="spline")
+        m = trajectory_from_waypoints(robot, W, durations=1.0, law="cubic", via="spline")
         h = 1e-6
         s = m.at([1.0])
         Rd = (
@@ -137,7 +137,7 @@ def test_via_points_continuity_and_independent_spline():
     t = np.concatenate([[0], np.cumsum(d)])
     eps = 1e-9
     for law, via in (("cubic", "average"), ("quintic", "average"), ("cubic", "spline"), ("quintic", "stop")):
-        m = trajectory_from_waypoints(SPATIAL, W, d, law=law, via=via)
+        m = trajectory_from_waypoints(SPATIAL, W, durations=d, law=law, via=via)
         left, right = m.at(t[1:-1] - eps), m.at(t[1:-1] + eps)
         assert np.allclose(left.pose, W[1:-1], atol=1e-8)
         assert np.allclose(left.pose, right.pose, atol=1e-8)
@@ -150,7 +150,7 @@ def test_via_points_continuity_and_independent_spline():
             slopes = np.diff(W, axis=0) / np.array(d)[:, None]
             assert np.allclose(left.velocity, (slopes[:-1] + slopes[1:]) / 2, atol=1e-6)
     # the spline against scipy's clamped cubic spline
-    m = trajectory_from_waypoints(SPATIAL, W, d, law="cubic", via="spline")
+    m = trajectory_from_waypoints(SPATIAL, W, durations=d, law="cubic", via="spline")
     ref = CubicSpline(t, W, bc_type="clamped")
     tt = np.linspace(0, t[-1], 157)
     s = m.at(tt)
@@ -158,7 +158,7 @@ def test_via_points_continuity_and_independent_spline():
     assert np.allclose(s.velocity, ref(tt, 1), atol=1e-10)
     assert np.allclose(s.acceleration, ref(tt, 2), atol=1e-9)
     # a cubic with average velocities has an acceleration jump at the via points
-    m = trajectory_from_waypoints(SPATIAL, W, d, law="cubic", via="average")
+    m = trajectory_from_waypoints(SPATIAL, W, durations=d, law="cubic", via="average")
     assert not np.allclose(m.at(t[1:-1] - eps).acceleration, m.at(t[1:-1] + eps).acceleration, atol=1e-3)
 
 
@@ -190,8 +190,8 @@ def test_a_spline_that_overshoots_a_joint_limit_is_refused():
         [[5, 5, 4.5, 0, 0, 0, 0.5], [5, 5, 4.0, 0, 0, 0, 4.4], [5, 5, 3.5, 0, 0, 0, 4.5], [5, 5, 3.0, 0, 0, 0, 0.5]]
     )
     with pytest.raises(TrajectoryError, match=r"joint s23 reaches .* outside its limits \[0.4, 4.5\]"):
-        trajectory_from_waypoints(JOINTED, W, [1.0, 0.2, 1.0], law="cubic", via="spline")
-    trajectory_from_waypoints(JOINTED, W, [1.0, 0.2, 1.0], law="cubic")  # stopping at each: inside
+        trajectory_from_waypoints(JOINTED, W, durations=[1.0, 0.2, 1.0], law="cubic", via="spline")
+    trajectory_from_waypoints(JOINTED, W, durations=[1.0, 0.2, 1.0], law="cubic")  # stopping at each: inside
 
 
 def test_robot_trajectory_with_speed_and_dwell():
@@ -217,7 +217,7 @@ def test_robot_trajectory_with_speed_and_dwell():
 
 
 def test_samples_and_immutability():
-    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0], [0.6, 0.5, 0.4], [0.4, 0.6, 0.0]], [1.0, 0.75])
+    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0], [0.6, 0.5, 0.4], [0.4, 0.6, 0.0]], durations=[1.0, 0.75])
     s = m.sample(4)
     assert np.allclose(s.time, [0, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75])
     s = m.sample(3)  # 1.75 s is not a whole number of steps: the end is added
@@ -280,7 +280,7 @@ def test_bad_input_raises_one_clear_typed_error(kwargs, message):
 
 
 def test_bad_samples():
-    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0], [0.4, 0.3, 0]], 1.0)
+    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0)
     for rate in (0, -1, np.nan, np.inf, "10"):
         with pytest.raises(TrajectoryError, match="sampling rate must be a finite number > 0"):
             m.sample(rate)  # type: ignore[arg-type]
@@ -294,9 +294,9 @@ def test_bad_samples():
 
 def test_joint_limits_of_waypoints_and_position_only_waypoints():
     with pytest.raises(TrajectoryError, match=r"waypoint 2: joint s23 = 5 is outside its limits"):
-        trajectory_from_waypoints(JOINTED, [[5, 5, 4, 0, 0, 0, 2], [5, 5, 4, 0, 0, 0, 5]], 1.0)
+        trajectory_from_waypoints(JOINTED, [[5, 5, 4, 0, 0, 0, 2], [5, 5, 4, 0, 0, 0, 5]], durations=1.0)
     # positions are completed from the first reference pose
-    m = trajectory_from_waypoints(JOINTED, [[5, 5, 4], [5, 5, 3]], 1.0)
+    m = trajectory_from_waypoints(JOINTED, [[5, 5, 4], [5, 5, 3]], durations=1.0)
     assert np.allclose(m.waypoints[:, 3:], [[0, 0, 0, 2], [0, 0, 0, 2]])
     bare = robot_from_dict(
         {
@@ -306,4 +306,4 @@ def test_joint_limits_of_waypoints_and_position_only_waypoints():
             "cables": [{"exit": [0, 0], "anchor": [0, 0]}, {"exit": [1, 0], "anchor": [0, 0]}],
         }
     )
-    assert np.allclose(trajectory_from_waypoints(bare, [[0, 1], [1, 1]], 1.0).waypoints[:, 2], 0.0)
+    assert np.allclose(trajectory_from_waypoints(bare, [[0, 1], [1, 1]], durations=1.0).waypoints[:, 2], 0.0)

@@ -59,7 +59,7 @@ def test_paths_are_taut_and_lengths_match_eq_4_9(runs, name):
                     if rad > 0:
                         assert np.dot(end - c, u) == pytest.approx(0, abs=1e-9)  # tangent
                         assert np.sign(u[0] * (c - end)[1] - u[1] * (c - end)[0]) == d  # recorded direction
-                assert not segment_meets_circle(a, b, tree.circles[:, :2], tree.circles[:, 2], 1e-7).any()
+                assert not segment_meets_circle(a, b, tree.circles[:, :2], tree.circles[:, 2], tol=1e-7).any()
             assert (path.arcs[1:, 4] >= -1e-9).all()  # non-negative wrap angles
             if not res.ik.contacts(s, i) and tree.circles[-1, 2] == 0:
                 assert path.length == pytest.approx(np.linalg.norm(res.ik.anchors[s, i] - tree.circles[-1, :2]))
@@ -73,7 +73,7 @@ def test_idlers_keep_cables_out_of_the_protected_regions(runs, name):
         for i in range(r.n_cables):
             seg = res.ik.path(s, i).segments
             for poly in r.disallowed:
-                assert not segment_enters_polygon(seg[:, 0], seg[:, 1], np.asarray(poly), 1e-9).any(), (s, i)
+                assert not segment_enters_polygon(seg[:, 0], seg[:, 1], np.asarray(poly), tol=1e-9).any(), (s, i)
 
 
 @pytest.mark.parametrize("name", VSCR)
@@ -153,7 +153,7 @@ def test_random_walks_stay_continuous_and_reversible(points):
     tree = _single_tree()
     P = np.array([[0.0, 2.0]] + [list(p) for p in points])
     through = segment_meets_circle(
-        P[:-1, None], P[1:, None], tree.circles[None, :3, :2], tree.circles[None, :3, 2] + 0.01, 0.0
+        P[:-1, None], P[1:, None], tree.circles[None, :3, :2], tree.circles[None, :3, 2] + 0.01, tol=0.0
     )
     if through.any():  # the platform end may not pass through an object
         return

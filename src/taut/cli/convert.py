@@ -11,7 +11,7 @@ from taut.cli.main import Command, console, emit, load
 def cmd_convert(ns: argparse.Namespace) -> int:
     from taut.model import format_of, write_robot
 
-    format_of(ns.out, "write")  # an unknown OUT is refused before IN is read
+    format_of(ns.out, kind="write")  # an unknown OUT is refused before IN is read
     robot = load(ns.robot, ns.cable_set)
     fmt = write_robot(robot, ns.out)
     data = {"in": ns.robot, "out": ns.out, "format": fmt, "robot": robot.name}

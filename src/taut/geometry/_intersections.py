@@ -26,7 +26,13 @@ def _cross(p: np.ndarray, q: np.ndarray) -> np.ndarray:
 
 
 def segments_intersect(
-    a1: npt.ArrayLike, b1: npt.ArrayLike, a2: npt.ArrayLike, b2: npt.ArrayLike, tol: float = 0.0, collinear: bool = True
+    a1: npt.ArrayLike,
+    b1: npt.ArrayLike,
+    a2: npt.ArrayLike,
+    b2: npt.ArrayLike,
+    *,
+    tol: float = 0.0,
+    collinear: bool = True,
 ) -> np.ndarray:
     """Whether segments ``a1b1`` and ``a2b2`` share a point (A.1).
 
@@ -81,7 +87,7 @@ def segment_circle_distance(a: npt.ArrayLike, b: npt.ArrayLike, c: npt.ArrayLike
 
 
 def segment_meets_circle(
-    a: npt.ArrayLike, b: npt.ArrayLike, c: npt.ArrayLike, r: npt.ArrayLike, tol: float = TOL
+    a: npt.ArrayLike, b: npt.ArrayLike, c: npt.ArrayLike, r: npt.ArrayLike, *, tol: float = TOL
 ) -> np.ndarray:
     """Whether segment ``ab`` enters the open disc ``(c, r)``: ``‖q − c‖ < r − tol``.
 
@@ -108,7 +114,9 @@ def point_in_polygon(p: npt.ArrayLike, vertices: npt.ArrayLike) -> np.ndarray:
     return (np.count_nonzero(cond & (x < xs), axis=-1) % 2) == 1
 
 
-def segment_enters_polygon(a: npt.ArrayLike, b: npt.ArrayLike, vertices: npt.ArrayLike, tol: float = TOL) -> np.ndarray:
+def segment_enters_polygon(
+    a: npt.ArrayLike, b: npt.ArrayLike, vertices: npt.ArrayLike, *, tol: float = TOL
+) -> np.ndarray:
     """Whether segment ``ab`` enters the interior of a polygon (a disallowed region, §4.2.1).
 
     §4.2.1 checks the segment against each edge of the bounding polygon (A.1); a segment
@@ -127,7 +135,7 @@ def segment_enters_polygon(a: npt.ArrayLike, b: npt.ArrayLike, vertices: npt.Arr
 
 
 def circles_overlap(
-    c1: npt.ArrayLike, r1: npt.ArrayLike, c2: npt.ArrayLike, r2: npt.ArrayLike, tol: float = TOL
+    c1: npt.ArrayLike, r1: npt.ArrayLike, c2: npt.ArrayLike, r2: npt.ArrayLike, *, tol: float = TOL
 ) -> np.ndarray:
     """Whether two closed discs share interior points (``‖c1 − c2‖ < r1 + r2 − tol``),
     or coincide (two points at the same place)."""

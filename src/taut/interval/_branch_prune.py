@@ -17,12 +17,12 @@ Each box popped from the list is
    as wide, so boxes are proven empty wider); uniqueness is still proven with the
    Jacobian;
 3. *bisected*: one of the ``primary`` variables (the pose variables ``X``) while their
-   largest width is at least ``eps``, then the widest variable of all (§3.1.4); the
+   largest width is at least ``tol``, then the widest variable of all (§3.1.4); the
    primary variable is the widest one, or with ``bisection="smear"`` the one of largest
    relative smear (:func:`smear_scores`: the equations' sensitivity times the width), which the
    DGP uses because its reference points and tensions are scaled unevenly.
 
-Boxes narrower than ``eps`` in every variable that could not be certified are returned as
+Boxes narrower than ``tol`` in every variable that could not be certified are returned as
 ``undecided`` (singular or nearly-coincident solutions): nothing is silently dropped.
 
 The loop runs in a Numba kernel (:func:`_drive`, a depth-first stack of boxes) when the
@@ -55,6 +55,10 @@ from taut.interval._hc4 import contract, contract_kernel, evaluate, evaluate_ker
 from taut.interval._krawczyk import Certificate, certify, krawczyk, krawczyk_jacobian, tube_kernel
 from taut.interval._linear import LinearFilter, linear_filter_kernel
 from taut.interval._slope import points_for, slope_kernel, slopes
+
+#: Default budget of :func:`branch_and_prune`: the boxes processed before the search stops and
+#: returns the boxes left as undecided (it also bounds the time and the memory of one search).
+MAX_BOXES = 2_000_000
 
 
 @dataclass
@@ -123,21 +127,21 @@ def _smear_of(
 
 
 @njit(cache=True, fastmath=False)
-def bisect_index(width: np.ndarray, primary: np.ndarray, eps: float, score: np.ndarray, starve: float) -> int:
+def bisect_index(width: np.ndarray, primary: np.ndarray, tol: float, score: np.ndarray, starve: float) -> int:
     """The variable to bisect (§3.1.4): a primary one while the widest of them is at least
-    ``eps`` — the one of largest ``score`` (:func:`smear_scores`) when any is positive, else the
+    ``tol`` — the one of largest ``score`` (:func:`smear_scores`) when any is positive, else the
     widest, or the widest when it is ``starve`` times wider than the score's pick — then the
     widest variable of all."""
     j, best = -1, -1.0
     for i in range(width.size):
         if primary[i] and width[i] > best:
             best, j = width[i], i
-    if best < eps:
+    if best < tol:
         return int(np.argmax(width))
     widest = j
     top = 0.0
     for i in range(width.size):
-        if primary[i] and width[i] >= eps and score[i] > top:
+        if primary[i] and width[i] >= tol and score[i] > top:
             top, j = score[i], i
     if width[j] * starve < best:
         return widest
@@ -152,13 +156,13 @@ def bisect(
     hi: npt.ArrayLike,
     *,
     primary: npt.ArrayLike | None = None,
-    eps: float = 0.0,
+    tol: float = 0.0,
     score: npt.ArrayLike | None = None,
     starve: float = np.inf,
 ) -> tuple[Box, Box]:
     """The two halves ``((lo, mid), (mid, hi))`` of the box ``[lo, hi]`` cut across the
     variable chosen by the bisection rule of the solver (§3.1.4): a ``primary`` one (all
-    variables by default) while the widest of them is at least ``eps`` — the one of
+    variables by default) while the widest of them is at least ``tol`` — the one of
     largest ``score`` when any is positive (e.g. the relative smear), else the widest, or the
     widest when it is ``starve`` times wider than the score's pick —
     then the widest variable of all.  The cut is at the midpoint, or at a finite point of
@@ -173,7 +177,7 @@ def bisect(
     lo, hi = np.array(lo, float), np.array(hi, float)
     mask = np.ones(lo.size, bool) if primary is None else np.asarray(primary, bool)
     weights = np.zeros(lo.size) if score is None else np.asarray(score, float)
-    j = bisect_index(hi - lo, mask, float(eps), weights, float(starve))
+    j = bisect_index(hi - lo, mask, float(tol), weights, float(starve))
     a, b = float(lo[j]), float(hi[j])
     if np.isfinite(a) and np.isfinite(b):
         m = 0.5 * a + 0.5 * b
@@ -190,10 +194,10 @@ def branch_and_prune(
     hi: npt.ArrayLike,
     *,
     primary: npt.ArrayLike | None = None,
-    eps: float = 1e-7,
+    tol: float = 1e-7,
     certify_width: float = 0.5,
     newton_width: float = 1e-3,
-    max_boxes: int = 2_000_000,
+    max_boxes: int = MAX_BOXES,
     filters: Sequence[Callable[[np.ndarray, np.ndarray], bool]] = (),
     method: str = "auto",
     passes: int = 1,
@@ -263,7 +267,7 @@ def branch_and_prune(
             lo,
             hi,
             primary,
-            eps,
+            tol,
             certify_width,
             newton_width,
             max_boxes,
@@ -322,7 +326,7 @@ def branch_and_prune(
         width = hi - lo
         if _primary_width(lo, hi, primary) < certify_width and np.all(np.isfinite(width)):
             klo, khi = _pad(lo, hi)
-            res = krawczyk(system, klo, khi, krawczyk_points)
+            res = krawczyk(system, klo, khi, points=krawczyk_points)
             if res.status == "empty":
                 continue
             unique = res.status == "unique"
@@ -339,11 +343,11 @@ def branch_and_prune(
             if np.any(lo > hi):
                 continue
             width = hi - lo
-        if np.max(width) < eps:
+        if np.max(width) < tol:
             out.undecided.append((lo, hi))
             continue
         score = smear_scores(*jac, lo, hi, primary) if smear else None
-        a, b = bisect(lo, hi, primary=primary, eps=eps, score=score, starve=starve)
+        a, b = bisect(lo, hi, primary=primary, tol=tol, score=score, starve=starve)
         stack.append(b)
         stack.append(a)
     if progress is not None:
@@ -366,7 +370,7 @@ def _pad(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     prove ``K(X) ⊂ int X`` on a box HC4 shrank to a few ulps.  Not clipped to the search
     domain: a solution on the domain's border (a zero tension) is then proven unique in the
     padded box and filed by :func:`file_certificate` as inside, outside or on the boundary, instead of
-    being left undecided at ``eps``."""
+    being left undecided at ``tol``."""
     klo, khi = np.empty(lo.size), np.empty(lo.size)
     for i in range(lo.size):
         pad = max(1e-3 * (hi[i] - lo[i]), 1e-10 * (1.0 + abs(lo[i]) + abs(hi[i])))
@@ -421,7 +425,7 @@ def _drive(
     nsol: int,
     lo0: np.ndarray,
     primary: np.ndarray,
-    eps: float,
+    tol: float,
     certify_width: float,
     newton_width: float,
     max_boxes: int,
@@ -569,7 +573,7 @@ def _drive(
         if cert:
             out[0], out[1], out[2], out[3], out[4], out[5] = lo, hi, klo, khi, rl, rh
             return _CERTIFY, sp, boxes, unique
-        if np.max(width) < eps:
+        if np.max(width) < tol:
             out[0], out[1] = lo, hi
             return _UNDECIDED, sp, boxes, False
         if sp + 2 > cap:
@@ -583,7 +587,7 @@ def _drive(
             score = smear_scores(jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, h, lo, hi, primary)
         else:
             score = np.zeros(n)
-        j = bisect_index(width, primary, eps, score, starve)
+        j = bisect_index(width, primary, tol, score, starve)
         m = 0.5 * lo[j] + 0.5 * hi[j]
         if not np.isfinite(m):
             if np.isfinite(lo[j]):
@@ -646,7 +650,7 @@ def _branch_and_prune_numba(
     lo: npt.ArrayLike,
     hi: npt.ArrayLike,
     primary: npt.ArrayLike | None,
-    eps: float,
+    tol: float,
     certify_width: float,
     newton_width: float,
     max_boxes: int,
@@ -711,7 +715,7 @@ def _branch_and_prune_numba(
             len(sol_r),
             lo0,
             primary,
-            float(eps),
+            float(tol),
             float(certify_width),
             float(newton_width),
             int(max_boxes),
@@ -765,11 +769,11 @@ def _branch_and_prune_numba(
         if np.any(blo > bhi):
             continue
         width = bhi - blo
-        if np.max(width) < eps:
+        if np.max(width) < tol:
             out.undecided.append((blo, bhi))
             continue
         score = smear_scores(*t_jac, blo, bhi, primary) if smear else None
-        (alo, ahi), (b2lo, b2hi) = bisect(blo, bhi, primary=primary, eps=eps, score=score, starve=starve)
+        (alo, ahi), (b2lo, b2hi) = bisect(blo, bhi, primary=primary, tol=tol, score=score, starve=starve)
         push(b2lo, b2hi)
         push(alo, ahi)
     out.boxes = boxes
@@ -787,7 +791,7 @@ def _branch_and_prune_numba(
 def _drop_covered(out: BranchAndPruneResult) -> BranchAndPruneResult:
     """Undecided boxes inside the uniqueness box ``x ± radius`` of a solution (or a boundary
     one) hold no other
-    one: a box that reached ``eps`` beside a solution before that solution was certified
+    one: a box that reached ``tol`` beside a solution before that solution was certified
     (depth first, its neighbour may come later) is decided after all."""
     known = out.solutions + out.boundary
     out.undecided = [(lo, hi) for lo, hi in out.undecided if not any(c.covers(lo, hi) for c in known)]

@@ -120,7 +120,7 @@ class Expr:
         return f"{fn}({self.args[0]!r})"
 
 
-def const(lo: float, hi: float | None = None, exact: Fraction | None = None) -> Expr:
+def const(lo: float, hi: float | None = None, *, exact: Fraction | None = None) -> Expr:
     """The constant interval ``[lo, hi]`` (``[lo, lo]`` for a float); ``exact``: the rational
     it encloses, when it is known (the multi-precision solver of :mod:`taut.interval._precise`
     evaluates it, not the float interval)."""

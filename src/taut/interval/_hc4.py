@@ -296,7 +296,7 @@ def point_kernel(
         out[c] = v[end[c] - 1]
 
 
-def contract(tape: Tape, lo: np.ndarray, hi: np.ndarray, ratio: float = 0.05, max_rounds: int = 50) -> bool:
+def contract(tape: Tape, lo: np.ndarray, hi: np.ndarray, *, ratio: float = 0.05, max_rounds: int = 50) -> bool:
     """Contract the box ``[lo, hi]`` in place with HC4; False when it holds no solution."""
     return bool(contract_kernel(*tape.arrays, lo, hi, ratio, max_rounds))
 

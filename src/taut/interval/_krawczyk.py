@@ -63,7 +63,7 @@ def residual(system: System, x: npt.ArrayLike) -> np.ndarray:
     return evaluate_point(system.tape, x)[: system.n_equations]
 
 
-def newton(system: System, x0: npt.ArrayLike, tol: float = 1e-13, max_iter: int = 30) -> tuple[np.ndarray, bool]:
+def newton(system: System, x0: npt.ArrayLike, *, tol: float = 1e-13, max_iter: int = 30) -> tuple[np.ndarray, bool]:
     """Newton's method from ``x0``; ``(x, converged)``."""
     x = np.array(x0, dtype=float)
     for _ in range(max_iter):
@@ -207,7 +207,7 @@ class KrawczykResult:
     hi: np.ndarray
 
 
-def krawczyk(system: System, lo: npt.ArrayLike, hi: npt.ArrayLike, points: int = 0) -> KrawczykResult:
+def krawczyk(system: System, lo: npt.ArrayLike, hi: npt.ArrayLike, *, points: int = 0) -> KrawczykResult:
     """One Krawczyk step on the box ``[lo, hi]`` (see module docstring).  With
     ``points > 0`` the slope enclosure of :mod:`taut.interval._slope` (that many nodes)
     replaces ``J(X)``: it proves more boxes empty and contracts more, but ``K(X) ⊂ int X``
@@ -519,7 +519,7 @@ def certified_step(
     return status, x, rl, rh
 
 
-def inflate(system: System, x: npt.ArrayLike, delta: float = 1e-9, max_doublings: int = 60) -> float:
+def inflate(system: System, x: npt.ArrayLike, *, delta: float = 1e-9, max_doublings: int = 60) -> float:
     """Half-width of the largest box ``x ± 2^k δ`` over which ``J`` is proven regular
     (§3.2.1, Eqs. 3.25–3.29); 0 when even ``x ± δ`` fails.
 
@@ -562,7 +562,7 @@ class Certificate:
         return bool(np.all(lo >= self.x - self.radius) and np.all(hi <= self.x + self.radius))
 
 
-def certify(system: System, x0: npt.ArrayLike, scale: float = 1e-8) -> Certificate | None:
+def certify(system: System, x0: npt.ArrayLike, *, scale: float = 1e-8) -> Certificate | None:
     """Newton from ``x0``, then Krawczyk on a small box around the limit, then inflation."""
     x, ok = newton(system, x0)
     if not ok:

@@ -94,12 +94,19 @@ def generalised_inverse(J: np.ndarray) -> np.ndarray:
 
 
 def preconditioned_solve(
-    Al: npt.ArrayLike, Ah: npt.ArrayLike, bl: npt.ArrayLike, bh: npt.ArrayLike, K_: np.ndarray | None = None
+    Al: npt.ArrayLike,
+    Ah: npt.ArrayLike,
+    bl: npt.ArrayLike,
+    bh: npt.ArrayLike,
+    *,
+    preconditioner: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray] | None:
-    """Solve ``K[A] x = K[b]`` by :func:`interval_gauss` (Eqs. 3.10–3.12); ``K_`` defaults to
-    :func:`generalised_inverse` of ``mid [A]``.  None when elimination fails."""
+    """Solve ``K[A] x = K[b]`` by :func:`interval_gauss` (Eqs. 3.10–3.12); the float matrix
+    ``K = preconditioner`` defaults to :func:`generalised_inverse` of ``mid [A]``.  None when
+    elimination fails."""
     Al, Ah = np.asarray(Al, float), np.asarray(Ah, float)
     bl, bh = np.asarray(bl, float), np.asarray(bh, float)
+    K_ = preconditioner
     if K_ is None:
         try:
             K_ = generalised_inverse(0.5 * Al + 0.5 * Ah)
@@ -329,7 +336,7 @@ class LinearFilter:
     not unknowns of the box: the filter only rejects boxes where some ``t_j`` must be
     negative.  The branch-and-prune kernel runs it without Python."""
 
-    def __init__(self, tape: Tape, m: int, sign_only: bool = False) -> None:
+    def __init__(self, tape: Tape, m: int, *, sign_only: bool = False) -> None:
         self.tape, self.m, self.sign_only = tape, int(m), bool(sign_only)
 
     def __call__(self, lo: np.ndarray, hi: np.ndarray) -> bool:

@@ -55,7 +55,7 @@ NEWTON_STEPS = 12
 
 #: Boxes one search may process before what is left stays undecided (about 0.3 ms each on
 #: the 12 unknowns of a 3-cable DGP sub-problem).
-MAX_BOXES = 20_000
+MAX_PRECISE_BOXES = 20_000
 
 
 @dataclass(frozen=True)
@@ -193,7 +193,7 @@ def solve_precise(
     *,
     domain: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
     precision: int = PRECISION,
-    max_boxes: int = MAX_BOXES,
+    max_boxes: int = MAX_PRECISE_BOXES,
 ) -> PreciseResult:
     """Every root of ``system`` in the boxes ``[(lo, hi), …]``, certified in arb balls of
     ``precision`` bits (module docstring): a root whose box lies in ``domain`` is a solution,

@@ -146,7 +146,7 @@ _CABLE_TYPES = ("cable_ideal", "cable_linear_spring")
 _INERTIA = ("Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz")
 
 
-def parse_xml(text: str, source: str) -> ET.Element:
+def parse_xml(text: str, *, source: str) -> ET.Element:
     """The root element of an XML text. Entity declarations are refused before parsing (they
     serve no purpose in a model and are how an XML file expands to gigabytes); CASPR's own
     ``<!DOCTYPE ... SYSTEM "...dtd">`` and ``<!ATTLIST>`` lines are harmless and accepted."""
@@ -413,7 +413,7 @@ def cables_path(bodies_path: str | Path) -> Path:
     return path.with_name(path.name[: -len(BODIES_SUFFIX)] + CABLES_SUFFIX)
 
 
-def read_caspr(bodies_path: str | Path, cable_set: str | None = None) -> Robot:
+def read_caspr(bodies_path: str | Path, *, cable_set: str | None = None) -> Robot:
     """Read the CASPR model ``X_bodies.xml`` and its ``X_cables.xml`` (see the module docstring).
 
     ``cable_set`` picks a cable set other than the file's ``default_cable_set``.
@@ -436,13 +436,13 @@ def parse_caspr(path: Path, text: str, cable_set: str | None = None) -> Robot:
     from taut.model._io import read_text
 
     source = str(path)
-    links = _read_links(parse_xml(text, source), source)
+    links = _read_links(parse_xml(text, source=source), source)
     cpath = cables_path(path)
     if not cpath.exists():
         raise RobotFileError(
             f"{source}: the cables file {cpath} is missing (CASPR keeps X_cables.xml beside X_bodies.xml)"
         )
-    set_id, cables = _read_cables(parse_xml(read_text(cpath), str(cpath)), str(cpath), len(links), cable_set)
+    set_id, cables = _read_cables(parse_xml(read_text(cpath), source=str(cpath)), str(cpath), len(links), cable_set)
     return _robot(path, links, set_id, cables)
 
 
@@ -702,7 +702,7 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
     }
     from taut.model._io import robot_from_dict
 
-    return robot_from_dict(data, source)
+    return robot_from_dict(data, source=source)
 
 
 # ---- writing -----------------------------------------------------------------------------

@@ -30,7 +30,7 @@ def example(name: str) -> Robot:
 
     if name not in example_names():
         raise RobotFileError(f"{name}: not a built-in example; expected one of {', '.join(example_names())}")
-    return parse_robot((_files() / f"{name}.yaml").read_text(encoding="utf-8"), f"example {name}")
+    return parse_robot((_files() / f"{name}.yaml").read_text(encoding="utf-8"), source=f"example {name}")
 
 
 def example_descriptions() -> dict[str, str]:

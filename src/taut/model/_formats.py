@@ -41,7 +41,7 @@ def _read_taut(path: Path, text: str, cable_set: str | None) -> Robot:
 
     if cable_set is not None:
         raise RobotFileError(f"{path}: --cable-set selects a cable set of a CASPR model; a taut file has one set")
-    return parse_robot(text, str(path), json_text=path.name.lower().endswith(".json"))
+    return parse_robot(text, source=str(path), json_text=path.name.lower().endswith(".json"))
 
 
 def _write_taut(robot: Robot, path: Path) -> None:
@@ -97,7 +97,7 @@ def supported(kind: str) -> str:
     return ", ".join(pats)
 
 
-def format_of(path: str | Path, kind: str = "read") -> Format:
+def format_of(path: str | Path, *, kind: str = "read") -> Format:
     """The format whose pattern matches the file name of ``path`` (case-insensitive), able to
     read (``kind="read"``) or write (``kind="write"``) it.
 
@@ -117,14 +117,14 @@ def format_of(path: str | Path, kind: str = "read") -> Format:
 
 def read_robot(path: Path, text: str, cable_set: str | None = None) -> Robot:
     """Read the text of the file ``path`` in the format its name selects."""
-    reader = format_of(path, "read").reader
+    reader = format_of(path).reader
     assert reader is not None, "format_of returns a format able to read"
     return reader(path, text, cable_set)
 
 
 def write_robot(robot: Robot, path: str | Path) -> str:
     """Write ``robot`` to ``path`` in the format its name selects; return the format's name."""
-    fmt = format_of(path, "write")
+    fmt = format_of(path, kind="write")
     assert fmt.writer is not None, "format_of returns a format able to write"
     try:
         fmt.writer(robot, Path(path))
@@ -150,5 +150,5 @@ def load_robot(spec: str | Path, *, cable_set: str | None = None) -> Robot:
             return example(str(spec))
         raise RobotFileError(f"{spec}: no such file and not a built-in example (see `taut examples`)")
     check_regular(path)  # before the name is judged: /dev/zero is not a file of any format
-    format_of(path, "read")
+    format_of(path)
     return read_robot(path, read_text(path), cable_set)

@@ -53,7 +53,7 @@ def _check_values(data: object, source: str) -> None:
                 )
 
 
-def robot_from_dict(data: object, source: str = "<robot>") -> Robot:
+def robot_from_dict(data: object, *, source: str = "<robot>") -> Robot:
     """Validate a parsed robot description."""
     if not isinstance(data, dict):
         raise RobotFileError(
@@ -66,7 +66,7 @@ def robot_from_dict(data: object, source: str = "<robot>") -> Robot:
         raise RobotFileError(validation_message(source, exc)) from None
 
 
-def parse_robot(text: str, source: str = "<robot>", *, json_text: bool = False) -> Robot:
+def parse_robot(text: str, *, source: str = "<robot>", json_text: bool = False) -> Robot:
     """Parse YAML or JSON text into a validated :class:`Robot`.
 
     JSON is read by :mod:`json` (which knows ``Infinity`` for unbounded tensions), YAML by
@@ -90,7 +90,7 @@ def parse_robot(text: str, source: str = "<robot>", *, json_text: bool = False) 
         raise RobotFileError(f"{source}: nested too deeply (at most {MAX_DEPTH} levels)") from None
     except ValueError:  # an integer of thousands of digits: beyond Python's int conversion limit
         raise RobotFileError(f"{source}: a number has too many digits to be read") from None
-    return robot_from_dict(data, source)
+    return robot_from_dict(data, source=source)
 
 
 def check_regular(path: Path) -> None:

@@ -29,9 +29,9 @@ MIN_CABLES, MAX_CABLES = 3, 8
 
 
 def random_suspended_robot(
-    seed: int | np.random.Generator,
     n_cables: int,
     *,
+    seed: int | np.random.Generator,
     coplanar: bool | None = None,
     perturbation: float = 0.02,
 ) -> tuple[Robot, np.ndarray]:

@@ -184,7 +184,7 @@ def _read_one(elem: ET.Element, robot: Robot, flip: bool, unwrap: bool, source: 
 
 
 def read_caspr_trajectories(
-    path: str | Path, bodies: str | Path | None = None, *, unwrap: bool = False
+    path: str | Path, *, bodies: str | Path | None = None, unwrap: bool = False
 ) -> tuple[Robot, dict[str, CasprTrajectory]]:
     """The robot of the CASPR model and the joint-space trajectories of its
     ``X_trajectories.xml`` ``path``, by id (see the module docstring).
@@ -199,10 +199,10 @@ def read_caspr_trajectories(
         bodies = path.with_name(path.name[: -len(TRAJECTORIES_SUFFIX)] + BODIES_SUFFIX)
     bodies = Path(bodies)
     robot = read_caspr(bodies)
-    joints = [j.get("type") for j in parse_xml(read_text(bodies), str(bodies)).iter("joint")]
+    joints = [j.get("type") for j in parse_xml(read_text(bodies), source=str(bodies)).iter("joint")]
     flip = joints == ["PLANAR_XZ"]
     source = str(path)
-    root = parse_xml(read_text(path), source)
+    root = parse_xml(read_text(path), source=source)
     if root.tag != "trajectories":
         raise TrajectoryError(f"{source}: expected a <trajectories> CASPR trajectory file, got <{root.tag}>")
     out: dict[str, CasprTrajectory] = {}

@@ -292,8 +292,8 @@ def _limited_times(W: np.ndarray, law: str, vmax: np.ndarray, amax: np.ndarray |
 def trajectory_from_waypoints(
     robot: Robot,
     waypoints: npt.ArrayLike,
-    durations: npt.ArrayLike | None = None,
     *,
+    durations: npt.ArrayLike | None = None,
     duration: float | None = None,
     times: npt.ArrayLike | None = None,
     law: str = "quintic",
@@ -478,14 +478,14 @@ def trajectory_from_robot(
         raise TrajectoryError(f"{robot.name}: no trajectory {name!r} (it has: {known})")
     tr = robot.trajectories[name]
     what = f"trajectory {name}"
-    W = complete_waypoints(robot, tr.waypoints, what)
+    W = complete_waypoints(robot, tr.waypoints, what=what)
     if len(W) < 2:
         raise TrajectoryError(f"{what}: a trajectory needs at least 2 waypoints, got {len(W)}")
     if duration is not None:
         if tr.steps is not None:
             total = _positive_vector(duration, 1, "duration")[0]
             steps = np.asarray(tr.steps, dtype=float)
-            return trajectory_from_waypoints(robot, W, total * steps / steps.sum(), law=law, via=via)
+            return trajectory_from_waypoints(robot, W, durations=total * steps / steps.sum(), law=law, via=via)
         return trajectory_from_waypoints(robot, W, duration=duration, law=law, via=via)
     if tr.speed is None:
         raise TrajectoryError(f"{what} gives no speed: give its duration")
@@ -497,11 +497,11 @@ def trajectory_from_robot(
             f"{what}: move {k + 1} does not change the position, so speed cannot time it: give duration"
         )
     if tr.dwell == 0:
-        return trajectory_from_waypoints(robot, W, moves, law=law, via=via)
+        return trajectory_from_waypoints(robot, W, durations=moves, law=law, via=via)
     if via != "stop":
         raise TrajectoryError(f"{what} dwells at its waypoints: it stops there, via must be 'stop'")
     held = np.repeat(W, 2, axis=0)
     durations = np.empty(len(held) - 1)
     durations[0::2] = tr.dwell
     durations[1::2] = moves
-    return trajectory_from_waypoints(robot, held, durations, law=law, via=via)
+    return trajectory_from_waypoints(robot, held, durations=durations, law=law, via=via)

@@ -67,7 +67,7 @@ def validate_waypoints(robot: Robot, waypoints: npt.ArrayLike, what: str = "wayp
     return W
 
 
-def complete_waypoints(robot: Robot, waypoints: npt.ArrayLike, what: str = "waypoints") -> np.ndarray:
+def complete_waypoints(robot: Robot, waypoints: npt.ArrayLike, *, what: str = "waypoints") -> np.ndarray:
     """Waypoints that give only a position ``(N, dimension)`` become poses: the rest of the
     pose is taken from the robot's first reference pose, or is zero orientation with every
     joint at mid-range when it has none.  Full poses are returned as they are."""

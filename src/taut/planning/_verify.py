@@ -69,7 +69,7 @@ def verify_path(robot: Robot, poses: npt.ArrayLike, E: npt.ArrayLike | None = No
     ws = EllipsoidWrenchSet(np.asarray(robot.platform.wrench, float), np.linalg.inv(E))
     tmin = np.array([c.tension[0] for c in robot.cables], float)
     tmax = np.array([c.tension[1] for c in robot.cables], float)
-    ok = wrench_feasible(W, tmin, tmax, ws)
+    ok = wrench_feasible(W, ws, tension_bounds=(tmin, tmax))
     lo = np.array([c.length[0] if c.length else 0.0 for c in robot.cables])
     hi = np.array([c.length[1] if c.length else np.inf for c in robot.cables])
     ok &= np.all((ik.lengths > lo) & (ik.lengths < hi), axis=1)

@@ -75,6 +75,7 @@ from taut.statics._wrench import (
     PolytopeWrenchSet,
     SingleWrench,
     WrenchSet,
+    bounds_pair,
 )
 
 if TYPE_CHECKING:
@@ -345,7 +346,8 @@ def _as_W(W: npt.ArrayLike) -> np.ndarray:
     return np.ascontiguousarray(W)
 
 
-def _bounds(tmin: npt.ArrayLike, tmax: npt.ArrayLike, n: int) -> tuple[np.ndarray, np.ndarray]:
+def _bounds(tension_bounds: object, n: int) -> tuple[np.ndarray, np.ndarray]:
+    tmin, tmax = bounds_pair(tension_bounds)
     lo = np.broadcast_to(np.asarray(tmin, dtype=float), (n,)).copy()
     hi = np.broadcast_to(np.asarray(tmax, dtype=float), (n,)).copy()
     if not np.all(np.isfinite(lo)):
@@ -502,9 +504,10 @@ def _no_set(m: int) -> SetArrays:
 
 
 def facet_normals(
-    W: npt.ArrayLike, tmin: npt.ArrayLike = 0.0, tmax: npt.ArrayLike = 1.0
+    W: npt.ArrayLike, *, tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] = (0.0, 1.0)
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Unit facet normals of the zonotopes ``Z = W·[tmin, tmax]`` and their support.
+    """Unit facet normals of the zonotopes ``Z = W·[tmin, tmax]`` (``tension_bounds = (tmin,
+    tmax)``) and their support.
 
     Returns ``normals (N, C, m)``, one per combination of ``m − 1`` columns
     (``C = binom(n, m−1)``, in the order of :func:`itertools.combinations`), ``hz (N, C, 2)``
@@ -512,7 +515,7 @@ def facet_normals(
     combinations of rank ``m − 1`` (the others have no normal; their rows are undefined)."""
     W = _as_W(W)
     N, m, n = W.shape
-    lo, hi = _bounds(tmin, tmax, n)
+    lo, hi = _bounds(tension_bounds, n)
     C = _binom(n, m - 1) if m >= 2 else 0
     normals = np.zeros((N, C, m))
     hz = np.zeros((N, C, 2))
@@ -550,17 +553,17 @@ def wrench_closure(W: npt.ArrayLike) -> np.ndarray:
 
 def wrench_feasible(
     W: npt.ArrayLike,
-    tmin: npt.ArrayLike,
-    tmax: npt.ArrayLike,
     wrench_set: WrenchSet,
-    offset: npt.ArrayLike | None = None,
+    *,
+    tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike],
+    wrench: npt.ArrayLike | None = None,
 ) -> np.ndarray:
-    """Wrench feasibility: for every ``w`` in ``offset[k] + wrench_set`` there are tensions
+    """Wrench feasibility: for every ``w`` in ``wrench[k] + wrench_set`` there are tensions
     ``tmin ≤ τ ≤ tmax`` with ``W[k] τ + w = 0`` (Rushton 2022, §2.1.4, the wrench-feasible
     workspace; hyperplane shifting of Gouttefarde & Gosselin 2006 / Bouchard et al. 2010).
 
-    ``W`` is ``(N, m, n)``; ``tmin``, ``tmax`` ``(n,)`` (``tmax`` may be ``+inf``);
-    ``offset`` ``(m,)`` or ``(N, m)`` (default 0), typically the external wrench.
+    ``W`` is ``(N, m, n)``; ``tension_bounds = (tmin, tmax)``, each ``(n,)`` (``tmax`` may be
+    ``+inf``); ``wrench`` ``(m,)`` or ``(N, m)`` (default 0) shifts the set: the external wrench.
     Returns ``(N,)`` bool.  Poses where ``rank W < m`` are decided by linear programs
     (see the module docstring).
 
@@ -578,15 +581,15 @@ def wrench_feasible(
         raise TautError(f"wrench_set must be a WrenchSet, got {type(wrench_set).__name__}")
     if wrench_set.dim != m:
         raise TautError(f"the wrench set has dimension {wrench_set.dim}, the structure matrices {m}")
-    tmin, tmax = _bounds(tmin, tmax, n)
-    off = np.zeros((1, m)) if offset is None else np.asarray(offset, dtype=float)
+    tmin, tmax = _bounds(tension_bounds, n)
+    off = np.zeros((1, m)) if wrench is None else np.asarray(wrench, dtype=float)
     given = off.shape
     if off.ndim == 1:
         off = off[None]
     if off.ndim != 2 or off.shape[-1] != m or off.shape[0] not in (1, N):
-        raise TautError(f"offset must have shape ({m},) or ({N}, {m}), got {given}")
+        raise TautError(f"wrench must have shape ({m},) or ({N}, {m}), got {given}")
     if not np.all(np.isfinite(off)):
-        raise TautError("offset must be finite")
+        raise TautError("wrench must be finite")
     W0, tmin0, tmax0, off0 = W, tmin, tmax, off
     W, tmin, tmax, off = _fix_constant(W, tmin, tmax, off)
     n = W.shape[2]
@@ -619,7 +622,7 @@ def _generic_status(
     step = max(1, block_elems // (C * m))
     for s in range(0, N, step):
         e = min(N, s + step)
-        normals, hz, valid = facet_normals(W[s:e], tmin, tmax)
+        normals, hz, valid = facet_normals(W[s:e], tension_bounds=(tmin, tmax))
         o = np.broadcast_to(off[s:e] if off.shape[0] > 1 else off, (e - s, m))
         lin = np.einsum("kcm,km->kc", normals, o)
         labs = np.einsum("kcm,km->kc", np.abs(normals), np.abs(o))
@@ -636,9 +639,12 @@ def _generic_status(
         status[s:e] = np.where(bad.any(axis=1), _OUT, np.where(full, _IN, _FLAT))
 
 
-def static_equilibrium(W: npt.ArrayLike, tmin: npt.ArrayLike, tmax: npt.ArrayLike, w: npt.ArrayLike) -> np.ndarray:
-    """Static equilibrium ``W[k] τ + w[k] = 0`` with ``tmin ≤ τ ≤ tmax`` for one wrench per
-    pose (``w`` ``(N, m)`` or ``(m,)``): the single-wrench case of the wrench-feasible
+def static_equilibrium(
+    W: npt.ArrayLike, wrench: npt.ArrayLike, *, tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike]
+) -> np.ndarray:
+    """Static equilibrium ``W[k] τ + wrench[k] = 0`` with ``tmin ≤ τ ≤ tmax``
+    (``tension_bounds = (tmin, tmax)``) for one wrench per pose (``wrench`` ``(N, m)`` or
+    ``(m,)``): the single-wrench case of the wrench-feasible
     workspace (Rushton 2022, §2.1.4), by the same hyperplane-shifting test, with an exact LP
     where ``rank W < m`` (e.g. every pose of a robot with fewer cables than DOF).
 
@@ -649,4 +655,4 @@ def static_equilibrium(W: npt.ArrayLike, tmin: npt.ArrayLike, tmax: npt.ArrayLik
     """
     W = _as_W(W)
     m = W.shape[1]
-    return wrench_feasible(W, tmin, tmax, SingleWrench(np.zeros(m)), offset=w)
+    return wrench_feasible(W, SingleWrench(np.zeros(m)), tension_bounds=tension_bounds, wrench=wrench)

@@ -74,7 +74,7 @@ from taut.errors import TautError
 from taut.kinematics import inverse_kinematics
 from taut.model import Robot
 from taut.statics._highs import QuietHighs
-from taut.statics._wrench import external_wrench
+from taut.statics._wrench import bounds_pair, external_wrench
 
 #: Relative equilibrium tolerance of a reported solution.
 EQUILIBRIUM_RTOL = 1e-9
@@ -668,15 +668,15 @@ def _inputs(
 
 
 def solve_tensions(
-    W: npt.ArrayLike, w: npt.ArrayLike, tmin: npt.ArrayLike, tmax: npt.ArrayLike, method: str = "lp"
+    W: npt.ArrayLike, wrench: npt.ArrayLike, *, tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike], method: str = "lp"
 ) -> TensionResult:
-    """Tensions ``τ`` with ``W τ + w = 0`` and ``tmin ≤ τ ≤ tmax`` at each pose.
+    """Tensions ``τ`` with ``W τ + wrench = 0`` and ``tmin ≤ τ ≤ tmax`` at each pose.
 
-    ``W`` is ``(N, m, n)`` or ``(m, n)``, ``w`` the external wrench ``(N, m)`` or ``(m,)``
-    (either may be shared by all poses), the bounds ``(n,)`` (``tmax`` may be ``inf``) or
-    ``(N, n)``.  ``method`` is one of :data:`METHODS`.  A pose without a solution gets zero
-    tensions, ``feasible = False`` and status ``"infeasible"`` (proved) or ``"not-found"``.
-    Raises :class:`TautError` for bad input or an unknown method.
+    ``W`` is ``(N, m, n)`` or ``(m, n)``, ``wrench`` the external wrench ``(N, m)`` or ``(m,)``
+    (either may be shared by all poses), ``tension_bounds = (tmin, tmax)`` each ``(n,)``
+    (``tmax`` may be ``inf``) or ``(N, n)``.  ``method`` is one of :data:`METHODS`.  A pose
+    without a solution gets zero tensions, ``feasible = False`` and status ``"infeasible"``
+    (proved) or ``"not-found"``.  Raises :class:`TautError` for bad input or an unknown method.
 
     References
     ----------
@@ -685,7 +685,8 @@ def solve_tensions(
     """
     if method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
-    W, w, tmin, tmax, single = _inputs(W, w, tmin, tmax)
+    tmin, tmax = bounds_pair(tension_bounds)
+    W, w, tmin, tmax, single = _inputs(W, wrench, tmin, tmax)
     cand, infeasible = METHODS[method](W, w, tmin, tmax)
     tau, ok = _verify(W, w, tmin, tmax, cand)
     status = np.where(ok, "optimal", np.where(infeasible, "infeasible", "not-found"))
@@ -695,14 +696,19 @@ def solve_tensions(
 
 
 def distribute_tensions(
-    robot: Robot, poses: npt.ArrayLike, wrench: npt.ArrayLike | None = None, method: str = "lp"
+    robot: Robot,
+    poses: npt.ArrayLike,
+    *,
+    wrench: npt.ArrayLike | None = None,
+    method: str = "lp",
+    tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
 ) -> TensionResult:
     """Tension distribution of ``robot`` at ``poses`` (``(N, pose_size)`` or one pose).
 
     ``W`` from :func:`taut.kinematics.inverse_kinematics`, the external wrench ``wrench``
     (``(m,)`` shared by all poses or ``(N, m)``; default
     :func:`taut.statics.external_wrench`, the robot's own wrench and weight) and the
-    bounds ``robot.tension_bounds``.  See :func:`solve_tensions`.
+    bounds ``tension_bounds`` (default ``robot.tension_bounds``).  See :func:`solve_tensions`.
 
     References
     ----------
@@ -715,5 +721,5 @@ def distribute_tensions(
     w = external_wrench(robot, poses) if wrench is None else wrench
     if wrench is not None and W.ndim == 2 and np.ndim(wrench) == 2:
         raise TautError(f"one pose but a batch of wrenches of shape {np.shape(wrench)}")
-    tmin, tmax = robot.tension_bounds
-    return solve_tensions(W, w, tmin, tmax, method)
+    bounds = robot.tension_bounds if tension_bounds is None else tension_bounds
+    return solve_tensions(W, w, tension_bounds=bounds, method=method)

@@ -37,6 +37,13 @@ from taut.kinematics import as_poses, body_frames, platform_frame
 from taut.model import Robot
 
 
+def bounds_pair(tension_bounds: object) -> tuple[npt.ArrayLike, npt.ArrayLike]:
+    """``(tmin, tmax)`` of the ``tension_bounds`` argument, which must be a pair."""
+    if not isinstance(tension_bounds, (tuple, list)) or len(tension_bounds) != 2:
+        raise TautError(f"tension_bounds must be a pair (tmin, tmax), got {tension_bounds!r}")
+    return tension_bounds[0], tension_bounds[1]
+
+
 def external_wrench(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """``w_ext`` at each pose, ``(N, m)`` (``(m,)`` for one pose)."""
     arr, single = as_poses(robot, poses)
