@@ -18,6 +18,7 @@ from taut._lazy import lazy_exports
 if TYPE_CHECKING:
     from taut.interval._arithmetic import Interval, centred_form
     from taut.interval._branch_prune import (
+        MAX_BOXES,
         Box,
         BranchAndPruneResult,
         bisect,
@@ -42,10 +43,12 @@ if TYPE_CHECKING:
     from taut.interval._hc4 import contract, evaluate, evaluate_point, point_kernel
     from taut.interval._krawczyk import Certificate, certified_step, certify, inflate, krawczyk, newton
     from taut.interval._linear import LinearFilter, interval_gauss, preconditioned_solve
-    from taut.interval._precise import precise_available, solve_precise
+    from taut.interval._precise import MAX_PRECISE_BOXES, precise_available, solve_precise
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
+    "MAX_BOXES": "taut.interval._branch_prune",
+    "MAX_PRECISE_BOXES": "taut.interval._precise",
     "solve_precise": "taut.interval._precise",
     "precise_available": "taut.interval._precise",
     "Interval": "taut.interval._arithmetic",
@@ -91,6 +94,8 @@ __all__ = [
     "Expr",
     "Interval",
     "LinearFilter",
+    "MAX_BOXES",
+    "MAX_PRECISE_BOXES",
     "ONE",
     "SQR",
     "System",
