@@ -41,10 +41,10 @@ def test_freeze_on_a_plain_dataclass():
         a: np.ndarray
         b: list
 
-    p = Plain(np.zeros(2), [np.zeros(1), np.ones(1)])
+    p = Plain(np.zeros(2), [(np.zeros(1), np.ones(1)), (np.ones(1), np.ones(2))])
     freeze(p)
     assert not p.a.flags.writeable
-    assert isinstance(p.b, tuple) and not any(x.flags.writeable for x in p.b)
+    assert isinstance(p.b, tuple) and not any(x.flags.writeable for box in p.b for x in box)
 
 
 def test_as_dict_types():

@@ -4,6 +4,7 @@ absolute time, the parabolic blend), a real CASPR file (CoGiRo), and malformed f
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import numpy as np
@@ -59,7 +60,7 @@ def _check(motion, segments, flip, n=41):
     for ts, te, ref in segments:
         t = np.linspace(ts, te, n)[0 if ts == 0 else 1 :]
         s = motion.at(t)
-        for got, want in zip((s.pose, s.velocity, s.acceleration), ref(t)):
+        for got, want in zip((s.poses, s.velocity, s.acceleration), ref(t)):
             assert np.allclose(got, np.stack(want, axis=1) * sign, atol=1e-9)
 
 
@@ -152,7 +153,7 @@ def test_every_kind_matches_caspr_formulas():
     # piece that starts there, taut the one that ends there)
     _check(blend, [(0, 2, pb(0, 0, 2, 0.5))], flip=True, n=43)
     end = blend.at([2.0, 3.0, 4.0])
-    assert np.allclose(end.pose[[0, 2]], qb[[1, 2]] * [1, 1, -1])
+    assert np.allclose(end.poses[[0, 2]], qb[[1, 2]] * [1, 1, -1])
     assert end.velocity[1] == pytest.approx([0.0, 0.4 / (1.0 * 1.0), 0.0])  # peak a t_b = Δ/(t_b(T−t_b)) t_b
 
 
@@ -165,12 +166,17 @@ def test_real_caspr_file_cogiro():
     g = trajs["general_1"]
     # CASPR samples time_section = t_s : time_step : t_e per segment: 401 samples over 4 s
     s = g.motion.sample(1 / g.time_step)
-    assert len(s.time) == 401
+    assert len(s.times) == 401
     start = np.array([-3.0, -1.0, 2.0, -0.5, 0.2, 0.3])
     mid = np.array([2.0, -3.0, 4.0, 0.2, -0.1, 0.1])
-    assert np.allclose(s.pose[0], start) and np.allclose(s.pose[200], mid)
-    ref = np.stack([_polynomial(0.0, 2.0, [start[i], 0, 0], [mid[i], 0, 0], s.time[:201])[0] for i in range(6)], axis=1)
-    assert np.allclose(s.pose[:201], ref, atol=1e-9)
+    assert np.allclose(s.poses[0], start) and np.allclose(s.poses[200], mid)
+    ref = np.stack(
+        [_polynomial(0.0, 2.0, [start[i], 0, 0], [mid[i], 0, 0], s.times[:201])[0] for i in range(6)], axis=1
+    )
+    assert np.allclose(s.poses[:201], ref, atol=1e-9)
+    back = json.loads(json.dumps(g.as_dict(), allow_nan=False))
+    assert back["id"] == "general_1" and back["time_step"] == g.time_step
+    assert back["motion"]["waypoints"] == g.motion.waypoints.tolist()
     assert np.all(np.isfinite(s.angular_velocity)) and s.angular_velocity.shape == (401, 3)
 
 

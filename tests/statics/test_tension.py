@@ -2,6 +2,9 @@
 on the built-in robots, agreement of the exact methods with ``scipy.optimize.linprog`` on
 random problems, known solutions, infeasible poses, shapes and bad input."""
 
+import dataclasses
+import json
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -104,6 +107,26 @@ def test_single_and_batch_shapes():
     many = distribute_tensions(robot, POSES["planar-4cable"], method="lp")
     assert many.tensions.shape == (3, 4) and many.feasible.shape == (3,) and many.status.shape == (3,)
     assert np.allclose(many.tensions[1], one.tensions)
+
+
+def test_result_is_frozen_read_only_and_json():
+    robot = taut.example("planar-4cable")
+    many = distribute_tensions(robot, POSES["planar-4cable"])
+    with pytest.raises(ValueError, match="read-only"):
+        many.tensions[0, 0] = 1.0
+    with pytest.raises(ValueError, match="read-only"):
+        many.feasible[0] = False
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        many.method = "qp"  # type: ignore[misc]
+    back = json.loads(json.dumps(many.as_dict(), allow_nan=False))
+    assert back == {
+        "tensions": many.tensions.tolist(),
+        "feasible": many.feasible.tolist(),
+        "status": many.status.tolist(),
+        "method": "lp",
+    }
+    one = distribute_tensions(robot, POSES["planar-4cable"][1], method="qp").as_dict()
+    assert one["feasible"] is True and one["status"] == "optimal" and len(one["tensions"]) == 4
 
 
 def test_explicit_wrench_shared_by_poses():

@@ -411,7 +411,7 @@ def simulate_control(
         raise TautError(f"{K} control updates: at most 1e8 are simulated")
     time = np.minimum(np.arange(K + 1) / rate_hz, duration)
     samples = motion.at(time)
-    qr, qdr, qddr = samples.pose, samples.velocity, samples.acceleration
+    qr, qdr, qddr = samples.poses, samples.velocity, samples.acceleration
     mid = motion.at(0.5 * (time[1:] + time[:-1]))
     q = np.array(qr[0]) if q0 is None else np.array(as_poses(robot, q0)[0][0])
     qd = np.array(qdr[0]) if qd0 is None else np.array(as_rates(robot, qd0, 1)[0])
@@ -425,7 +425,7 @@ def simulate_control(
     last = np.full(n, np.nan)
     lo, hi = robot.tension_bounds
     ref = np.array([qr, qdr, qddr])
-    ahead = np.array([mid.pose, mid.velocity, mid.acceleration])
+    ahead = np.array([mid.poses, mid.velocity, mid.acceleration])
     gains = np.array([kp_, kd_])
     columns = np.array([angles.start, angles.stop], np.int64)
     k = 0

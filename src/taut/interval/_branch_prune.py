@@ -42,6 +42,7 @@ References
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import cast
@@ -50,6 +51,7 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut._results import Result
 from taut.interval._expression import System
 from taut.interval._hc4 import contract, contract_kernel, evaluate, evaluate_kernel
 from taut.interval._krawczyk import Certificate, certify, krawczyk, krawczyk_jacobian, tube_kernel
@@ -61,15 +63,57 @@ from taut.interval._slope import points_for, slope_kernel, slopes
 MAX_BOXES = 2_000_000
 
 
-@dataclass
-class BranchAndPruneResult:
-    solutions: list[Certificate] = field(default_factory=list)
-    undecided: list[tuple[np.ndarray, np.ndarray]] = field(default_factory=list)
+Box = tuple[np.ndarray, np.ndarray]
+
+
+@dataclass(frozen=True)
+class BranchAndPruneResult(Result):
+    solutions: tuple[Certificate, ...]
+    undecided: tuple[Box, ...]
     #: solutions proven unique whose box straddles a bound of the domain or of a redundant
     #: inequality (e.g. a zero tension): neither inside nor outside at this precision
+    boundary: tuple[Certificate, ...]
+    boxes: int  #: boxes processed
+    stats: dict[str, int]  #: boxes discarded by each operator (compiled loop only)
+    exhausted: bool  #: the budget ``max_boxes`` ran out (the boxes left are undecided)
+    elapsed_s: float
+    complete: bool = field(init=False)  #: no box undecided
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "complete", not self.undecided)
+        super().__post_init__()
+
+
+@dataclass
+class _Filed:
+    """The certificates and undecided boxes of a search in progress."""
+
+    solutions: list[Certificate] = field(default_factory=list)
     boundary: list[Certificate] = field(default_factory=list)
-    boxes: int = 0  #: boxes processed
-    stats: dict = field(default_factory=dict)  #: boxes discarded by each operator (compiled loop only)
+    undecided: list[Box] = field(default_factory=list)
+
+    def file(self, system: System, cert: Certificate, lo0: np.ndarray, hi0: np.ndarray) -> bool:
+        """Keep ``cert`` where :func:`file_certificate` files it; True when kept."""
+        where = file_certificate(system, cert, lo0, hi0, known=self.solutions + self.boundary)
+        if where is not None:
+            (self.solutions if where == "solution" else self.boundary).append(cert)
+        return where is not None
+
+    def result(self, boxes: int, stats: dict[str, int], exhausted: bool, start: float) -> BranchAndPruneResult:
+        """The result, without the undecided boxes inside the uniqueness box ``x ± radius`` of
+        a solution (or a boundary one): they hold no other one — a box that reached ``tol``
+        beside a solution before that solution was certified (depth first, its neighbour may
+        come later) is decided after all."""
+        known = self.solutions + self.boundary
+        return BranchAndPruneResult(
+            solutions=tuple(self.solutions),
+            undecided=tuple((lo, hi) for lo, hi in self.undecided if not any(c.covers(lo, hi) for c in known)),
+            boundary=tuple(self.boundary),
+            boxes=boxes,
+            stats=stats,
+            exhausted=exhausted,
+            elapsed_s=time.perf_counter() - start,
+        )
 
 
 @njit(cache=True, fastmath=False)
@@ -146,9 +190,6 @@ def bisect_index(width: np.ndarray, primary: np.ndarray, tol: float, score: np.n
     if width[j] * starve < best:
         return widest
     return j
-
-
-Box = tuple[np.ndarray, np.ndarray]
 
 
 def bisect(
@@ -261,8 +302,10 @@ def branch_and_prune(
     if bisection not in ("width", "smear"):
         raise ValueError(f"bisection must be 'width' or 'smear', got {bisection!r}")
     smear = bisection == "smear"
+    start = time.perf_counter()
     if method != "python" and kernel_ok:
         return _branch_and_prune_numba(
+            start,
             system,
             lo,
             hi,
@@ -287,16 +330,18 @@ def branch_and_prune(
     jac = (*system.jacobian.arrays[:7], system.rows, system.cols, system.n_equations)
     tube_vars, dependent = tube_variables(system, tube, primary)
     tube_points, krawczyk_points = _slope_points(system, tube), _slope_points(system, system.n_equations)
-    out = BranchAndPruneResult()
+    out = _Filed()
+    boxes, exhausted = 0, False
     stack = [(np.array(lo, float), np.array(hi, float))]
     while stack:
         lo, hi = stack.pop()
-        out.boxes += 1
-        if progress is not None and out.boxes % PROGRESS_BOXES == 0:
-            progress(out.boxes, None)
-        if out.boxes > max_boxes:
+        boxes += 1
+        if progress is not None and boxes % PROGRESS_BOXES == 0:
+            progress(boxes, None)
+        if boxes > max_boxes:
             out.undecided.append((lo, hi))
             out.undecided.extend(stack)
+            exhausted = True
             break
         if not contract(system.tape, lo, hi):
             continue
@@ -333,7 +378,7 @@ def branch_and_prune(
             if unique or np.max(width) < newton_width:
                 cert = certify(system, 0.5 * res.lo + 0.5 * res.hi)
                 if cert is not None and np.all(cert.x >= klo) and np.all(cert.x <= khi):
-                    file_certificate(system, cert, lo0, hi0, out)
+                    out.file(system, cert, lo0, hi0)
                     if unique:
                         continue
                     if cert.covers(lo, hi):
@@ -351,8 +396,8 @@ def branch_and_prune(
         stack.append(b)
         stack.append(a)
     if progress is not None:
-        progress(out.boxes, out.boxes)
-    return _drop_covered(out)
+        progress(boxes, boxes)
+    return out.result(boxes, {}, exhausted, start)
 
 
 @njit(cache=True, fastmath=False)
@@ -646,6 +691,7 @@ def same_solution(a: Certificate, b: Certificate) -> bool:
 
 
 def _branch_and_prune_numba(
+    start: float,
     system: System,
     lo: npt.ArrayLike,
     hi: npt.ArrayLike,
@@ -668,7 +714,8 @@ def _branch_and_prune_numba(
     lo0, hi0 = _domain(lo, hi, domain)
     n = lo0.size
     primary = np.ones(n, bool) if primary is None else np.asarray(primary, bool)
-    out = BranchAndPruneResult()
+    out = _Filed()
+    exhausted = False
     t, jt = system.tape, system.jacobian
     t_jac = (*jt.arrays[:7], system.rows, system.cols, system.n_equations)
     if filters:
@@ -744,6 +791,7 @@ def _branch_and_prune_numba(
             continue
         if code == _MAX_BOXES:
             out.undecided.extend((stk_lo[i].copy(), stk_hi[i].copy()) for i in range(sp))
+            exhausted = True
             break
         if code == _STACK_FULL:
             stk_lo = np.concatenate([stk_lo, np.empty_like(stk_lo)])
@@ -757,7 +805,7 @@ def _branch_and_prune_numba(
         klo, khi, rl, rh = buf[2].copy(), buf[3].copy(), buf[4].copy(), buf[5].copy()
         cert = certify(system, 0.5 * rl + 0.5 * rh)
         if cert is not None and np.all(cert.x >= klo) and np.all(cert.x <= khi):
-            if file_certificate(system, cert, lo0, hi0, out):
+            if out.file(system, cert, lo0, hi0):
                 known = out.solutions + out.boundary
                 sol_x = np.array([c.x for c in known])
                 sol_r = np.array([c.radius for c in known])
@@ -776,48 +824,29 @@ def _branch_and_prune_numba(
         (alo, ahi), (b2lo, b2hi) = bisect(blo, bhi, primary=primary, tol=tol, score=score, starve=starve)
         push(b2lo, b2hi)
         push(alo, ahi)
-    out.boxes = boxes
-    out.stats = dict(
-        zip(
-            ("hc4", "statics", "covered", "krawczyk_empty", "bisections", "krawczyk", "tube", "tube_empty"),
-            stats.tolist(),
-        )
-    )
     if progress is not None:
         progress(boxes, boxes)
-    return _drop_covered(out)
-
-
-def _drop_covered(out: BranchAndPruneResult) -> BranchAndPruneResult:
-    """Undecided boxes inside the uniqueness box ``x ± radius`` of a solution (or a boundary
-    one) hold no other
-    one: a box that reached ``tol`` beside a solution before that solution was certified
-    (depth first, its neighbour may come later) is decided after all."""
-    known = out.solutions + out.boundary
-    out.undecided = [(lo, hi) for lo, hi in out.undecided if not any(c.covers(lo, hi) for c in known)]
-    return out
+    names = ("hc4", "statics", "covered", "krawczyk_empty", "bisections", "krawczyk", "tube", "tube_empty")
+    return out.result(boxes, dict(zip(names, stats.tolist())), exhausted, start)
 
 
 def file_certificate(
-    system: System, cert: Certificate, lo0: np.ndarray, hi0: np.ndarray, out: BranchAndPruneResult
-) -> bool:
-    """Add a new certified solution to ``out.solutions`` when its box lies in the search
-    domain and satisfies the redundant constraints, to ``out.boundary`` when it straddles a
-    bound of either (e.g. a zero tension: it may belong to a smaller subset, see
-    :mod:`taut.dgp`); a box proven outside one of them holds no solution.  True when added."""
-    if any(np.all(np.abs(cert.x - c.x) <= max(c.radius, 1e-9)) for c in out.solutions + out.boundary):
-        return False
+    system: System, cert: Certificate, lo0: np.ndarray, hi0: np.ndarray, *, known: Sequence[Certificate] = ()
+) -> str | None:
+    """Where the certified solution ``cert`` of a search over ``[lo0, hi0]`` belongs:
+    ``"solution"`` when its box lies in the search domain and satisfies the redundant
+    constraints, ``"boundary"`` when it straddles a bound of either (e.g. a zero tension: it
+    may belong to a smaller subset, see :mod:`taut.dgp`), ``None`` when its box is proven
+    outside one of them (it holds no solution) or it is one of the ``known`` solutions."""
+    if any(np.all(np.abs(cert.x - c.x) <= max(c.radius, 1e-9)) for c in known):
+        return None
     if np.any(cert.hi < lo0) or np.any(cert.lo > hi0):
-        return False
+        return None
     vl, vh = evaluate(system.tape, cert.lo, cert.hi)
     t, h = system.tape, system.n_equations
     vl, vh, bl, bh = vl[h:], vh[h:], t.blo[h:], t.bhi[h:]
     equality = bl == bh  # redundant equations: the solution satisfies them, the enclosure meets them
     if np.any(np.where(equality, (vl > bl) | (vh < bh), (vl > bh) | (vh < bl))):
-        return False
+        return None
     inside = bool(np.all(np.where(equality, True, (vl >= bl) & (vh <= bh))))
-    if inside and np.all(cert.lo >= lo0) and np.all(cert.hi <= hi0):
-        out.solutions.append(cert)
-    else:
-        out.boundary.append(cert)
-    return True
+    return "solution" if inside and np.all(cert.lo >= lo0) and np.all(cert.hi <= hi0) else "boundary"

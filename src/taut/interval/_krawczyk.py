@@ -41,6 +41,7 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut._results import Result
 from taut.interval import _kernels as K
 from taut.interval._expression import System
 from taut.interval._hc4 import evaluate, evaluate_kernel, evaluate_point, forward_kernel, point_kernel
@@ -201,7 +202,7 @@ def _diagonally_dominant(Sl: np.ndarray, Sh: np.ndarray) -> bool:
 
 
 @dataclass(frozen=True)
-class KrawczykResult:
+class KrawczykResult(Result):
     status: str  #: "unique" (exactly one solution in the box), "empty" (none), "unknown"
     lo: np.ndarray  #: K(X) ∩ X
     hi: np.ndarray
@@ -545,7 +546,7 @@ def inflate(system: System, x: npt.ArrayLike, *, delta: float = 1e-9, max_doubli
 
 
 @dataclass(frozen=True)
-class Certificate:
+class Certificate(Result):
     """A solution ``x`` proven unique in ``[lo, hi]`` (Krawczyk) and alone in ``x ± radius``."""
 
     x: np.ndarray

@@ -36,13 +36,15 @@ References
 from __future__ import annotations
 
 import math
+import time
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.interval._expression import ADD, CONST, DIV, MUL, NEG, POW, SQR, SQRT, SUB, VAR, System, Tape
 from taut.interval._krawczyk import Certificate
 
@@ -59,20 +61,29 @@ MAX_PRECISE_BOXES = 20_000
 
 
 @dataclass(frozen=True)
-class PreciseResult:
+class PreciseResult(Result):
     """What a multi-precision search proved: ``solutions`` (each unique in its box),
     ``boundary`` (certified, but its box straddles a bound of the domain or of a redundant
     inequality), boxes ``(lo, hi)`` left ``undecided`` (narrower than ``2^(−precision/2)``
     relative: around a singular root, where Newton's method does not converge, or roots
     closer than ``2^(−precision/4)``), boxes left ``unsearched`` when the budget ran out, and
     the number of ``boxes`` processed.  Every float box is rounded outwards from the arb one
-    it stands for."""
+    it stands for.  ``exhausted``: the budget ran out (some boxes are unsearched);
+    ``complete``: no box is undecided or unsearched."""
 
     solutions: tuple[Certificate, ...]
     boundary: tuple[Certificate, ...]
     undecided: tuple[tuple[np.ndarray, np.ndarray], ...]
     unsearched: tuple[tuple[np.ndarray, np.ndarray], ...]
     boxes: int
+    elapsed_s: float
+    exhausted: bool = field(init=False)
+    complete: bool = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "exhausted", bool(self.unsearched))
+        object.__setattr__(self, "complete", not self.undecided and not self.unsearched)
+        super().__post_init__()
 
 
 def precise_available() -> bool:
@@ -203,6 +214,7 @@ def solve_precise(
     boxes together) unsearched.  Raises ImportError without python-flint."""
     import flint
 
+    start = time.perf_counter()
     arb = flint.arb
     old = flint.ctx.prec
     flint.ctx.prec = int(precision)
@@ -357,6 +369,13 @@ def solve_precise(
             left, right = list(B), list(B)
             left[i], right[i] = (a, m), (m, b)
             stack += [right, left]
-        return PreciseResult(tuple(solutions), tuple(boundary), tuple(undecided), tuple(unsearched), processed)
+        return PreciseResult(
+            tuple(solutions),
+            tuple(boundary),
+            tuple(undecided),
+            tuple(unsearched),
+            processed,
+            time.perf_counter() - start,
+        )
     finally:
         flint.ctx.prec = old

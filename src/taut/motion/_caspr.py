@@ -44,6 +44,7 @@ from pathlib import Path
 
 import numpy as np
 
+from taut._results import Result
 from taut.errors import TrajectoryError
 from taut.model import BODIES_SUFFIX, Robot, parse_xml, read_caspr, read_text
 from taut.motion._trajectory import Motion, trajectory_from_waypoints
@@ -65,7 +66,7 @@ KINDS = {
 
 
 @dataclass(frozen=True)
-class CasprTrajectory:
+class CasprTrajectory(Result):
     """One trajectory of a CASPR file: its ``id``, CASPR element ``kind``, the
     :class:`Motion` and CASPR's sampling ``time_step`` [s].  ``motion.sample(1 / time_step)``
     gives CASPR's samples when the points' times are whole multiples of ``time_step`` (CASPR

@@ -41,6 +41,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result, jsonable
 from taut.errors import TrajectoryError
 from taut.geometry import rate_matrix, rate_matrix_derivative
 from taut.model import Robot
@@ -79,36 +80,26 @@ _CHUNK = 65_536
 _SLACK = 1e-9
 
 
-def _frozen(a: np.ndarray) -> np.ndarray:
-    a = np.ascontiguousarray(a, dtype=float)
-    a.setflags(write=False)
-    return a
-
-
 @dataclass(frozen=True)
-class MotionSamples:
+class MotionSamples(Result):
     """A trajectory sampled at ``n`` times (read-only arrays).
 
-    ``pose``, ``velocity``, ``acceleration`` are ``(n, pose_size)`` in pose coordinates;
-    ``angular_velocity`` and ``angular_acceleration`` are ``(n, 3)`` in the fixed frame for a
-    spatial rigid platform, ``(n, 1)`` (``θ̇``, ``θ̈``) for a planar one and ``(n, 0)`` for a
-    point mass."""
+    ``times`` is ``(n,)`` [s]; ``poses``, ``velocity``, ``acceleration`` are
+    ``(n, pose_size)`` in pose coordinates; ``angular_velocity`` and
+    ``angular_acceleration`` are ``(n, 3)`` in the fixed frame for a spatial rigid platform,
+    ``(n, 1)`` (``θ̇``, ``θ̈``) for a planar one and ``(n, 0)`` for a point mass."""
 
-    time: np.ndarray
-    pose: np.ndarray
+    times: np.ndarray
+    poses: np.ndarray
     velocity: np.ndarray
     acceleration: np.ndarray
     angular_velocity: np.ndarray
     angular_acceleration: np.ndarray
     pose_names: tuple[str, ...]
 
-    def __post_init__(self) -> None:
-        for name in ("time", "pose", "velocity", "acceleration", "angular_velocity", "angular_acceleration"):
-            object.__setattr__(self, name, _frozen(getattr(self, name)))
-
 
 @dataclass(frozen=True)
-class Motion:
+class Motion(Result):
     """A timed trajectory of ``robot``: piecewise polynomials ``q(t) = Σ_j c_j (t − t_k)^j`` on
     ``[breaks[k], breaks[k+1]]`` with ``coefficients[k, j]`` (``(K, 6, pose_size)``), through
     ``waypoints`` ``(N, pose_size)`` (angles unwrapped) at ``times`` ``(N,)``, from 0 to
@@ -126,9 +117,16 @@ class Motion:
     breaks: np.ndarray
     coefficients: np.ndarray
 
-    def __post_init__(self) -> None:
-        for name in ("times", "waypoints", "breaks", "coefficients"):
-            object.__setattr__(self, name, _frozen(getattr(self, name)))
+    def as_dict(self) -> dict:
+        """The fields in JSON types, the robot by its name and ``pose_names``."""
+        return {
+            "robot": self.robot.name,
+            "pose_names": list(self.robot.pose_names),
+            "law": self.law,
+            "via": self.via,
+            "duration": self.duration,
+            **{name: jsonable(getattr(self, name)) for name in ("times", "waypoints", "breaks", "coefficients")},
+        }
 
     @property
     def duration(self) -> float:

@@ -70,6 +70,7 @@ import highspy
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.errors import TautError
 from taut.kinematics import inverse_kinematics
 from taut.model import Robot
@@ -87,7 +88,7 @@ _EPS = np.finfo(float).eps
 
 
 @dataclass(frozen=True)
-class TensionResult:
+class TensionResult(Result):
     """Tensions at ``N`` poses of a robot with ``n`` cables.
 
     For a single pose the fields have no batch axis: ``tensions (n,)``, ``feasible`` a
