@@ -326,3 +326,9 @@ def test_joint_limits_of_waypoints_and_position_only_waypoints():
         }
     )
     assert np.allclose(trajectory_from_waypoints(bare, [[0, 1], [1, 1]], durations=1.0).waypoints[:, 2], 0.0)
+
+
+@pytest.mark.parametrize("waypoints", ["ab", [[0.1, 0.2]], np.zeros((2, 2, 3))])
+def test_unwrap_angles_refuses_what_is_not_poses(waypoints):
+    with pytest.raises(TrajectoryError):
+        unwrap_angles(PLANAR, waypoints)

@@ -279,3 +279,27 @@ def test_bad_inputs():
         wrench_feasible(W, SingleWrench([0.0, 0.0]), tension_bounds=([0, 0], [1, 1]), wrench=np.zeros((3, 2)))
     with pytest.raises(TautError):
         wrench_closure(np.full((1, 2, 3), np.nan))
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda: static_equilibrium("ab", [0.0, 0.0], tension_bounds=(0, 1)),
+        lambda: static_equilibrium(np.eye(2), "ab", tension_bounds=(0, 1)),
+        lambda: static_equilibrium(np.eye(2), [0.0, 0.0], tension_bounds=("a", 1)),
+        lambda: static_equilibrium(np.eye(2), [0.0, 0.0], tension_bounds=([0, 0, 0], 1)),
+        lambda: static_equilibrium(np.eye(2), [0.0, 0.0], tension_bounds=None),
+        lambda: wrench_feasible(np.eye(2), "not a set", tension_bounds=(0, 1)),
+        lambda: wrench_closure("ab"),
+        lambda: SingleWrench("ab"),
+        lambda: BoxWrenchSet("a", [1.0]),
+        lambda: PolytopeWrenchSet("ab"),
+        lambda: EllipsoidWrenchSet([0.0, 0.0], "ab"),
+        lambda: SingleWrench([1.0, 2.0]).support(np.ones(3)),
+        lambda: BoxWrenchSet([0.0], [1.0]).support("x"),
+    ],
+)
+def test_bad_input_is_a_taut_error_never_a_bare_value_error(call):
+    """docs/architecture.md §2.7: bad input raises a TautError subclass."""
+    with pytest.raises(TautError):
+        call()

@@ -15,6 +15,7 @@ import taut
 from taut.errors import TautError
 from taut.kinematics import structure_matrix
 from taut.model import robot_from_dict
+from taut.statics import external_wrench
 from taut.statics._tension import METHODS, TensionResult, distribute_tensions, solve_tensions
 
 EXACT = ["lp", "qp", "inf", "barycentric"]
@@ -300,3 +301,34 @@ def test_unknown_method_lists_valid_ones():
 def test_bad_input_raises_taut_error(W, w, lo, hi, match):
     with pytest.raises(TautError, match=match):
         solve_tensions(W, w, tension_bounds=(lo, hi))
+
+
+@pytest.mark.parametrize(
+    "call, match",
+    [
+        (lambda: solve_tensions(np.eye(2), [0.0, 0.0], tension_bounds=None), "must be a pair"),
+        (lambda: solve_tensions(np.eye(2), [0.0, 0.0], tension_bounds=(0, 1, 2)), "must be a pair"),
+        (lambda: solve_tensions(np.eye(2), [0.0, 0.0], tension_bounds=(0, 1), method=["lp"]), "unknown"),
+        (lambda: distribute_tensions(taut.example("planar-4cable"), [0.1, 0.2, 0.0], method=None), "unknown"),
+        (lambda: distribute_tensions(taut.example("planar-4cable"), [0.1, 0.2, 0.0], wrench="ab"), "numbers"),
+    ],
+)
+def test_bad_options_raise_taut_error(call, match):
+    with pytest.raises(TautError, match=match):
+        call()
+
+
+def test_tension_bounds_override_the_robots():
+    """``tension_bounds`` replaces ``robot.tension_bounds``: bounds too low for the weight make
+    the pose infeasible, the same as a robot whose cables carry them."""
+    robot = taut.example("planar-4cable")
+    pose = POSES["planar-4cable"][1]
+    assert distribute_tensions(robot, pose).feasible
+    low = distribute_tensions(robot, pose, tension_bounds=(0.0, 1e-3))
+    assert not low.feasible and low.status == "infeasible"
+    W = structure_matrix(robot, pose)
+    w = external_wrench(robot, pose)
+    bounds = (np.full(4, 2.0), np.full(4, 50.0))
+    res = distribute_tensions(robot, pose, tension_bounds=bounds, method="qp")
+    assert res.feasible and np.all(res.tensions >= 2.0 - 1e-12) and np.all(res.tensions <= 50.0)
+    np.testing.assert_allclose(W @ res.tensions + w, 0.0, atol=1e-9 * np.abs(w).max())

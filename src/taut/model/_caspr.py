@@ -829,6 +829,8 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
         For what the format cannot hold: obstacles, exit pulleys, length bounds,
         cable radii, other wrenches and gravities, the ``tilt-torsion`` convention.
     """
+    from taut.model._io import write_file
+
     bodies = Path(bodies_path)
     cables = cables_path(bodies)
     if robot.obstacles or robot.installation_space is not None or robot.disallowed:
@@ -915,6 +917,4 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
             ET.SubElement(att, "location").text = _fmt(point)
     for tree, target in ((root, bodies), (croot, cables)):
         ET.indent(tree)
-        target.write_text(
-            '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(tree, encoding="unicode") + "\n", encoding="utf-8"
-        )
+        write_file(target, '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(tree, encoding="unicode") + "\n")

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from taut.errors import RobotFileError
+from taut.errors import RobotFileError, TautError
 
 if TYPE_CHECKING:
     from taut.model._robot import Robot
@@ -106,6 +106,8 @@ def format_of(path: str | Path, *, kind: str = "read") -> Format:
     RobotFileError
         If no format matches, naming the supported ones.
     """
+    if kind not in ("read", "write"):
+        raise TautError(f"kind must be 'read' or 'write', got {kind!r}")
     name = Path(path).name.lower()
     for fmt in FORMATS:
         able = fmt.reader if kind == "read" else fmt.writer
@@ -126,10 +128,7 @@ def write_robot(robot: Robot, path: str | Path) -> str:
     """Write ``robot`` to ``path`` in the format its name selects; return the format's name."""
     fmt = format_of(path, kind="write")
     assert fmt.writer is not None, "format_of returns a format able to write"
-    try:
-        fmt.writer(robot, Path(path))
-    except OSError as exc:
-        raise RobotFileError(f"{path}: cannot write the file: {exc}") from None
+    fmt.writer(robot, Path(path))
     return fmt.name
 
 

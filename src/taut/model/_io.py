@@ -71,6 +71,8 @@ def parse_robot(text: str, *, source: str = "<robot>", json_text: bool = False) 
 
     JSON is read by :mod:`json` (which knows ``Infinity`` for unbounded tensions), YAML by
     ``yaml.safe_load`` (where it is ``.inf``)."""
+    if not isinstance(text, str):
+        raise RobotFileError(f"{source}: a robot description is text, got a {type(text).__name__}")
     try:
         if json_text:
             try:
@@ -130,7 +132,21 @@ def read_bytes(path: Path) -> bytes:
     return raw
 
 
-def read_text(path: Path) -> str:
+def write_file(path: str | Path, text: str) -> None:
+    """Write ``text`` in UTF-8 to ``path``.
+
+    Raises
+    ------
+    RobotFileError
+        If the file cannot be written (no such directory, no permission).
+    """
+    try:
+        Path(path).write_text(text, encoding="utf-8")
+    except OSError as exc:
+        raise RobotFileError(f"{path}: cannot write the file: {exc}") from None
+
+
+def read_text(path: str | Path) -> str:
     """The UTF-8 text of a robot file, read by :func:`read_bytes`.
 
     Raises
@@ -139,7 +155,7 @@ def read_text(path: Path) -> str:
         If the file cannot be read, is not a regular file, is too large or is not UTF-8.
     """
     try:
-        return read_bytes(path).decode("utf-8")
+        return read_bytes(Path(path)).decode("utf-8")
     except UnicodeDecodeError as exc:
         raise RobotFileError(f"{path}: cannot read the file: {exc}") from None
 
@@ -167,4 +183,4 @@ def save_robot(robot: Robot, path: str | Path) -> None:
         text = json.dumps(data, indent=2)
     else:
         text = yaml.safe_dump(data, sort_keys=False, default_flow_style=None)
-    path.write_text(text, encoding="utf-8")
+    write_file(path, text)

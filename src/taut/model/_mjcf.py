@@ -133,6 +133,7 @@ import numpy.typing as npt
 
 from taut.errors import InfeasiblePoseError, PoseError, UnsupportedRobotError
 from taut.geometry import axis_frames, rotation_matrix
+from taut.model._io import write_file
 from taut.model._robot import Robot
 
 #: Radius [m] of the sphere whose rotational inertia a point-mass body is given.
@@ -468,7 +469,7 @@ def write_mjcf(robot: Robot, path: str | Path) -> None:
        IEEE/RSJ International Conference on Intelligent Robots and Systems (IROS), 2012.
        (docs/references.bib: todorov2012)
     """
-    Path(path).write_text(mjcf_text(robot), encoding="utf-8")
+    write_file(path, mjcf_text(robot))
 
 
 def quaternions(R: npt.ArrayLike) -> np.ndarray:
@@ -498,7 +499,10 @@ def quaternions(R: npt.ArrayLike) -> np.ndarray:
 
 def _checked_poses(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, bool]:
     check_mjcf(robot)
-    arr = np.asarray(poses, dtype=float)
+    try:
+        arr = np.asarray(poses, dtype=float)
+    except (TypeError, ValueError):
+        raise PoseError(f"{robot.name}: poses must be numbers, got {poses!r}") from None
     single = arr.ndim == 1
     arr = np.atleast_2d(arr)
     if arr.ndim != 2 or arr.shape[1] != robot.pose_size:

@@ -54,10 +54,12 @@ def random_suspended_robot(
     Raises :class:`~taut.errors.TautError` for a cable count outside 3–8 or a negative
     perturbation.
     """
-    if not MIN_CABLES <= int(n_cables) <= MAX_CABLES:
-        raise TautError(f"a random suspended robot has {MIN_CABLES} to {MAX_CABLES} cables, got {n_cables}")
-    if not (np.isfinite(perturbation) and perturbation >= 0.0):
-        raise TautError(f"the length perturbation must be a non-negative number, got {perturbation}")
+    if not (isinstance(n_cables, (int, np.integer)) and MIN_CABLES <= n_cables <= MAX_CABLES):
+        raise TautError(f"a random suspended robot has {MIN_CABLES} to {MAX_CABLES} cables, got {n_cables!r}")
+    if not (isinstance(perturbation, (int, float, np.number)) and np.isfinite(perturbation) and perturbation >= 0.0):
+        raise TautError(f"the length perturbation must be a non-negative number, got {perturbation!r}")
+    if not (isinstance(seed, np.random.Generator) or (isinstance(seed, (int, np.integer)) and seed >= 0)):
+        raise TautError(f"seed must be an int >= 0 or a numpy.random.Generator, got {seed!r}")
     n = int(n_cables)
     rng = seed if isinstance(seed, np.random.Generator) else np.random.default_rng(seed)
     label = f" (seed {seed})" if not isinstance(seed, np.random.Generator) else ""

@@ -85,10 +85,17 @@ def complete_waypoints(robot: Robot, waypoints: npt.ArrayLike, *, what: str = "w
     return np.concatenate([W, np.broadcast_to(rest, (len(W), robot.pose_size - d))], axis=1)
 
 
-def unwrap_angles(robot: Robot, waypoints: np.ndarray) -> np.ndarray:
+def unwrap_angles(robot: Robot, waypoints: npt.ArrayLike) -> np.ndarray:
     """The waypoints with each orientation angle shifted by a multiple of 2π so that it differs
     from the previous waypoint's by at most π (the short way); the first waypoint is kept."""
-    W = np.array(waypoints, dtype=float)
+    try:
+        W = np.array(waypoints, dtype=float)
+    except (TypeError, ValueError):
+        raise TrajectoryError(f"waypoints: expected lists of numbers, got {waypoints!r}") from None
+    if W.ndim != 2 or W.shape[1] != robot.pose_size:
+        raise TrajectoryError(
+            f"waypoints: {robot.name} takes poses of {robot.pose_size} coordinates, got an array of shape {W.shape}"
+        )
     cols = angle_columns(robot)
     for k in range(1, len(W)):
         step = W[k, cols] - W[k - 1, cols]

@@ -75,6 +75,7 @@ from taut.statics._wrench import (
     PolytopeWrenchSet,
     SingleWrench,
     WrenchSet,
+    as_floats,
     bounds_pair,
 )
 
@@ -336,7 +337,7 @@ def _facet_kernel(
 
 
 def _as_W(W: npt.ArrayLike) -> np.ndarray:
-    W = np.asarray(W, dtype=float)
+    W = as_floats(W, "structure matrices")
     if W.ndim == 2:
         W = W[None]
     if W.ndim != 3 or W.shape[1] < 1 or W.shape[2] < 1:
@@ -348,8 +349,12 @@ def _as_W(W: npt.ArrayLike) -> np.ndarray:
 
 def _bounds(tension_bounds: object, n: int) -> tuple[np.ndarray, np.ndarray]:
     tmin, tmax = bounds_pair(tension_bounds)
-    lo = np.broadcast_to(np.asarray(tmin, dtype=float), (n,)).copy()
-    hi = np.broadcast_to(np.asarray(tmax, dtype=float), (n,)).copy()
+    lo, hi = as_floats(tmin, "lower tension bounds"), as_floats(tmax, "upper tension bounds")
+    if lo.ndim > 1 or lo.size not in (1, n) or hi.ndim > 1 or hi.size not in (1, n):
+        raise TautError(
+            f"tension bounds must be numbers or have shape ({n},) for {n} cables, got {lo.shape}, {hi.shape}"
+        )
+    lo, hi = np.broadcast_to(lo, (n,)).copy(), np.broadcast_to(hi, (n,)).copy()
     if not np.all(np.isfinite(lo)):
         raise TautError(f"lower tension bounds must be finite, got {lo.tolist()}")
     if np.any(np.isnan(hi)) or np.any(hi == -np.inf):
@@ -582,7 +587,7 @@ def wrench_feasible(
     if wrench_set.dim != m:
         raise TautError(f"the wrench set has dimension {wrench_set.dim}, the structure matrices {m}")
     tmin, tmax = _bounds(tension_bounds, n)
-    off = np.zeros((1, m)) if wrench is None else np.asarray(wrench, dtype=float)
+    off = np.zeros((1, m)) if wrench is None else as_floats(wrench, "wrench")
     given = off.shape
     if off.ndim == 1:
         off = off[None]

@@ -684,7 +684,7 @@ def solve_tensions(
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
     """
-    if method not in METHODS:
+    if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
     tmin, tmax = bounds_pair(tension_bounds)
     W, w, tmin, tmax, single = _inputs(W, wrench, tmin, tmax)
@@ -716,7 +716,7 @@ def distribute_tensions(
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
     """
-    if method not in METHODS:
+    if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
     W = inverse_kinematics(robot, poses).structure_matrix
     w = external_wrench(robot, poses) if wrench is None else wrench

@@ -44,6 +44,14 @@ def bounds_pair(tension_bounds: object) -> tuple[npt.ArrayLike, npt.ArrayLike]:
     return tension_bounds[0], tension_bounds[1]
 
 
+def as_floats(value: object, what: str) -> np.ndarray:
+    """``value`` as a float array; :class:`TautError` naming ``what`` when it holds no numbers."""
+    try:
+        return np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise TautError(f"{what} must be numbers, got {value!r}") from None
+
+
 def external_wrench(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """``w_ext`` at each pose, ``(N, m)`` (``(m,)`` for one pose)."""
     arr, single = as_poses(robot, poses)
@@ -91,8 +99,16 @@ class WrenchSet(ABC):
         """``h(n) = max_{w ∈ set} n·w`` for normals ``(..., dim)``."""
 
 
+def _normals(normals: npt.ArrayLike, dim: int) -> np.ndarray:
+    """The ``normals`` argument of a ``support`` as an array ``(..., dim)``."""
+    n = as_floats(normals, "normals")
+    if n.ndim == 0 or n.shape[-1] != dim:
+        raise TautError(f"normals of a {dim}-dimensional wrench set must have shape (..., {dim}), got {n.shape}")
+    return n
+
+
 def _vector(x: npt.ArrayLike, what: str) -> np.ndarray:
-    arr = np.asarray(x, dtype=float)
+    arr = as_floats(x, what)
     if arr.ndim != 1 or arr.size == 0 or not np.all(np.isfinite(arr)):
         raise TautError(f"{what} must be a finite vector, got {x!r}")
     return arr
@@ -110,7 +126,7 @@ class SingleWrench(WrenchSet):
         object.__setattr__(self, "dim", self.wrench.size)
 
     def support(self, normals: npt.ArrayLike) -> np.ndarray:
-        return np.asarray(normals) @ self.wrench
+        return _normals(normals, self.dim) @ self.wrench
 
 
 @dataclass(frozen=True)
@@ -137,7 +153,7 @@ class BoxWrenchSet(WrenchSet):
         return cls(c - r, c + r)
 
     def support(self, normals: npt.ArrayLike) -> np.ndarray:
-        n = np.asarray(normals)
+        n = _normals(normals, self.dim)
         c, r = (self.lower + self.upper) / 2, (self.upper - self.lower) / 2
         return n @ c + np.abs(n) @ r
 
@@ -155,14 +171,14 @@ class PolytopeWrenchSet(WrenchSet):
     dim: int = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        v = np.asarray(self.vertices, dtype=float)
+        v = as_floats(self.vertices, "polytope vertices")
         if v.ndim != 2 or v.shape[0] == 0 or not np.all(np.isfinite(v)):
             raise TautError("a polytope wrench set needs a (k, dim) array of finite vertices")
         object.__setattr__(self, "vertices", v)
         object.__setattr__(self, "dim", v.shape[1])
 
     def support(self, normals: npt.ArrayLike) -> np.ndarray:
-        return (np.asarray(normals) @ self.vertices.T).max(axis=-1)
+        return (_normals(normals, self.dim) @ self.vertices.T).max(axis=-1)
 
 
 @dataclass(frozen=True)
@@ -176,7 +192,7 @@ class EllipsoidWrenchSet(WrenchSet):
 
     def __post_init__(self) -> None:
         c = _vector(self.center_wrench, "ellipsoid center")
-        S = np.asarray(self.shape, dtype=float)
+        S = as_floats(self.shape, "ellipsoid shape")
         if S.shape != (c.size, c.size) or not np.all(np.isfinite(S)):
             raise TautError(f"ellipsoid shape must be a finite {c.size}x{c.size} matrix")
         if not np.allclose(S, S.T) or np.linalg.eigvalsh(S).min() < -1e-12 * max(1.0, np.abs(S).max()):
@@ -186,6 +202,6 @@ class EllipsoidWrenchSet(WrenchSet):
         object.__setattr__(self, "dim", c.size)
 
     def support(self, normals: npt.ArrayLike) -> np.ndarray:
-        n = np.asarray(normals)
+        n = _normals(normals, self.dim)
         q = np.einsum("...i,ij,...j->...", n, self.shape, n)
         return n @ self.center_wrench + np.sqrt(np.maximum(q, 0.0))
