@@ -531,12 +531,27 @@ def facet_normals(
 
 
 def wrench_closure(W: npt.ArrayLike) -> np.ndarray:
-    """Wrench closure: the columns of each ``W`` ``(N, m, n)`` positively span ``R^m``
-    (Rushton 2022, §2.1.4, the wrench-closure workspace).  Returns ``(N,)`` bool.
+    """Wrench closure: whether the columns of each structure matrix positively span ``R^m``,
+    so that the cables balance any wrench with positive tensions (the wrench-closure
+    workspace of Rushton (2022), §2.1.4).
 
     Hyperplane shifting with zero lower and unit upper bounds: ``0`` is interior to
-    ``W·[0, 1]^n`` iff ``rank W = m`` and every facet normal has a column strictly on
-    each side (relative margin ``CLOSURE_TOL``).
+    ``W·[0, 1]^n`` iff ``rank W = m`` and every facet normal has a column strictly on each
+    side (relative margin ``CLOSURE_TOL``).
+
+    Parameters
+    ----------
+    W : array_like, shape (N, m, n) or (m, n)
+        Structure matrices.
+
+    Returns
+    -------
+    ndarray of bool, shape (N,)
+
+    Raises
+    ------
+    TautError
+        For matrices of the wrong shape or not finite.
 
     References
     ----------
@@ -545,6 +560,15 @@ def wrench_closure(W: npt.ArrayLike) -> np.ndarray:
     .. [2] M. Gouttefarde, C. M. Gosselin, "Analysis of the wrench-closure workspace of planar
        parallel cable-driven mechanisms", IEEE Transactions on Robotics 22(3), 2006.
        (docs/references.bib: gouttefarde2006)
+
+    Examples
+    --------
+    Three cables pulling a point at 120° apart span the plane positively; two never do:
+
+    >>> angles = np.radians([90.0, 210.0, 330.0])
+    >>> W = np.stack([np.cos(angles), np.sin(angles)])
+    >>> wrench_closure(W), wrench_closure(W[:, :2])
+    (array([ True]), array([False]))
     """
     W = _as_W(W)
     N, m, n = W.shape
@@ -563,14 +587,31 @@ def wrench_feasible(
     tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike],
     wrench: npt.ArrayLike | None = None,
 ) -> np.ndarray:
-    """Wrench feasibility: for every ``w`` in ``wrench[k] + wrench_set`` there are tensions
-    ``tmin ≤ τ ≤ tmax`` with ``W[k] τ + w = 0`` (Rushton 2022, §2.1.4, the wrench-feasible
-    workspace; hyperplane shifting of Gouttefarde & Gosselin 2006 / Bouchard et al. 2010).
+    """Wrench feasibility: whether, for every wrench ``w`` of ``wrench[k] + wrench_set``, tensions
+    ``tmin ≤ τ ≤ tmax`` satisfy ``W[k] τ + w = 0`` (the wrench-feasible workspace of Rushton
+    (2022), §2.1.4; hyperplane shifting of Gouttefarde & Gosselin 2006 and Bouchard et al.
+    2010).  Poses where ``rank W < m`` are decided by linear programs (module docstring).
 
-    ``W`` is ``(N, m, n)``; ``tension_bounds = (tmin, tmax)``, each ``(n,)`` (``tmax`` may be
-    ``+inf``); ``wrench`` ``(m,)`` or ``(N, m)`` (default 0) shifts the set: the external wrench.
-    Returns ``(N,)`` bool.  Poses where ``rank W < m`` are decided by linear programs
-    (see the module docstring).
+    Parameters
+    ----------
+    W : array_like, shape (N, m, n) or (m, n)
+        Structure matrices.
+    wrench_set : WrenchSet
+        The required set of wrenches, of dimension ``m``.
+    tension_bounds : (tmin, tmax)
+        Tension bounds [N], each a number or ``(n,)``; ``tmax`` may be ``inf``.
+    wrench : array_like, shape (m,) or (N, m), optional
+        Shifts the set: the external wrench [N, N m] (default 0).
+
+    Returns
+    -------
+    ndarray of bool, shape (N,)
+
+    Raises
+    ------
+    TautError
+        For arrays of the wrong shape or not finite, bounds that are inverted or not a pair, or
+        a set that is not a :class:`WrenchSet` of dimension ``m``.
 
     References
     ----------
@@ -579,6 +620,22 @@ def wrench_feasible(
     .. [2] S. Bouchard, C. Gosselin, B. Moore, "On the ability of a cable-driven robot to
        generate a prescribed set of wrenches", Journal of Mechanisms and Robotics 2(1), 2010.
        (docs/references.bib: bouchard2010)
+
+    Examples
+    --------
+    The planar 4-cable robot at the centre of its frame holds its weight plus any force of
+    up to 1 N and moment of up to 0.1 N m, but not with tensions of at most 8 N:
+
+    >>> from taut.kinematics import structure_matrix
+    >>> from taut.model import example
+    >>> robot = example("planar-4cable")
+    >>> W = structure_matrix(robot, [0.0, 0.0, 0.0])
+    >>> box = BoxWrenchSet.around([0.0, 0.0, 0.0], [1.0, 1.0, 0.1])
+    >>> weight = [0.0, -9.81, 0.0]
+    >>> wrench_feasible(W, box, tension_bounds=(1.0, 100.0), wrench=weight)
+    array([ True])
+    >>> wrench_feasible(W, box, tension_bounds=(1.0, 8.0), wrench=weight)
+    array([False])
     """
     W = _as_W(W)
     N, m, n = W.shape
@@ -647,16 +704,44 @@ def _generic_status(
 def static_equilibrium(
     W: npt.ArrayLike, wrench: npt.ArrayLike, *, tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike]
 ) -> np.ndarray:
-    """Static equilibrium ``W[k] τ + wrench[k] = 0`` with ``tmin ≤ τ ≤ tmax``
-    (``tension_bounds = (tmin, tmax)``) for one wrench per pose (``wrench`` ``(N, m)`` or
-    ``(m,)``): the single-wrench case of the wrench-feasible
-    workspace (Rushton 2022, §2.1.4), by the same hyperplane-shifting test, with an exact LP
-    where ``rank W < m`` (e.g. every pose of a robot with fewer cables than DOF).
+    """Static equilibrium: whether tensions ``tmin ≤ τ ≤ tmax`` satisfy ``W[k] τ + wrench[k] = 0``,
+    one wrench per pose (the single-wrench case of the wrench-feasible workspace, Rushton
+    (2022), §2.1.4), by the hyperplane-shifting test of :func:`wrench_feasible`, with an exact
+    LP where ``rank W < m`` (e.g. every pose of a robot with fewer cables than degrees of
+    freedom).
+
+    Parameters
+    ----------
+    W : array_like, shape (N, m, n) or (m, n)
+        Structure matrices.
+    wrench : array_like, shape (N, m) or (m,)
+        External wrench [N, N m].
+    tension_bounds : (tmin, tmax)
+        Tension bounds [N], each a number or ``(n,)``; ``tmax`` may be ``inf``.
+
+    Returns
+    -------
+    ndarray of bool, shape (N,)
+
+    Raises
+    ------
+    TautError
+        As :func:`wrench_feasible`.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §2.1.4, Eq. 2.11. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    Two cables at 45° hold a 9.81 N weight with 6.94 N each (``9.81 / √2``):
+
+    >>> W = np.array([[-1.0, 1.0], [1.0, 1.0]]) / np.sqrt(2)
+    >>> static_equilibrium(W, [0.0, -9.81], tension_bounds=(0.0, 7.0))
+    array([ True])
+    >>> static_equilibrium(W, [0.0, -9.81], tension_bounds=(0.0, 6.9))
+    array([False])
     """
     W = _as_W(W)
     m = W.shape[1]
