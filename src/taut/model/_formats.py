@@ -98,13 +98,31 @@ def supported(kind: str) -> str:
 
 
 def format_of(path: str | Path, *, kind: str = "read") -> Format:
-    """The format whose pattern matches the file name of ``path`` (case-insensitive), able to
-    read (``kind="read"``) or write (``kind="write"``) it.
+    """The file format whose pattern matches the file name of ``path`` (case-insensitive) and can
+    read or write it (:data:`FORMATS`).
+
+    Parameters
+    ----------
+    path : str or Path
+        The file (only its name is looked at).
+    kind : {"read", "write"}, default "read"
+
+    Returns
+    -------
+    Format
+        Its ``name``, ``patterns``, ``reader`` and ``writer``.
 
     Raises
     ------
     RobotFileError
         If no format matches, naming the supported ones.
+    TautError
+        For another ``kind``.
+
+    Examples
+    --------
+    >>> format_of("cogiro_bodies.xml").name, format_of("robot.mjcf.xml", kind="write").name
+    ('caspr', 'mujoco')
     """
     if kind not in ("read", "write"):
         raise TautError(f"kind must be 'read' or 'write', got {kind!r}")
@@ -125,7 +143,37 @@ def read_robot(path: Path, text: str, cable_set: str | None = None) -> Robot:
 
 
 def write_robot(robot: Robot, path: str | Path) -> str:
-    """Write ``robot`` to ``path`` in the format its name selects; return the format's name."""
+    """Write ``robot`` to ``path`` in the format its name selects (:func:`format_of`).
+
+    Parameters
+    ----------
+    robot : Robot
+    path : str or Path
+        ``*.yaml``, ``*.yml`` or ``*.json`` (taut), ``*_bodies.xml`` (CASPR, with its
+        ``*_cables.xml``), ``*.wcrfx`` (WireX) or ``*.mjcf.xml`` (MuJoCo).
+
+    Returns
+    -------
+    str
+        The format's name.
+
+    Raises
+    ------
+    RobotFileError
+        For a name of no format, or a file that cannot be written.
+    UnsupportedRobotError
+        For a robot the format cannot hold (named).
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> import pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "robot.json"
+    >>> write_robot(example("planar-4cable"), path)
+    'taut'
+    >>> load_robot(path) == example("planar-4cable")
+    True
+    """
     fmt = format_of(path, kind="write")
     assert fmt.writer is not None, "format_of returns a format able to write"
     fmt.writer(robot, Path(path))
@@ -133,11 +181,38 @@ def write_robot(robot: Robot, path: str | Path) -> str:
 
 
 def load_robot(spec: str | Path, *, cable_set: str | None = None) -> Robot:
-    """Load a robot from a file path, or a built-in example by name (``taut examples``).
+    """Load a robot from a file, or a built-in example by name (``taut examples``).
 
     The file's name selects its format (:mod:`taut.model._formats`): taut's YAML/JSON, a
     WireX ``.wcrfx`` file, or a CASPR ``*_bodies.xml`` model whose cable set ``cable_set``
-    (default: the file's ``default_cable_set``) is read from the ``*_cables.xml`` beside it."""
+    (default: the file's ``default_cable_set``) is read from the ``*_cables.xml`` beside it.
+    Every reader applies the same limits (regular files, 16 MiB, nesting, magnitudes) and
+    refuses DTD entity declarations (``docs/architecture.md`` §3).
+
+    Parameters
+    ----------
+    spec : str or Path
+        A file, or the name of a built-in example.
+    cable_set : str, optional
+        A CASPR cable set.
+
+    Returns
+    -------
+    Robot
+
+    Raises
+    ------
+    RobotFileError
+        For a missing, unreadable or invalid file (one message naming the file, the field and
+        what was expected).
+    UnsupportedRobotError
+        For a construct taut does not model.
+
+    Examples
+    --------
+    >>> load_robot("suspended-3cable").dimension
+    3
+    """
     from taut.model._examples import example, example_names
     from taut.model._io import check_regular, read_text
 

@@ -396,7 +396,17 @@ def _pulley(robot: Robot, world: ET.Element, i: int, k: np.ndarray, e0: np.ndarr
 
 
 def mjcf_text(robot: Robot) -> str:
-    """The MuJoCo model (MJCF XML) of ``robot``; see the module's docstring for what it holds.
+    """The MuJoCo model (MJCF XML) of ``robot`` (module docstring): a free (or planar) platform
+    body with the jointed bodies, one spatial tendon per cable whose tension is the control
+    of an actuator.
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    str
 
     Raises
     ------
@@ -408,6 +418,13 @@ def mjcf_text(robot: Robot) -> str:
     .. [1] E. Todorov, T. Erez, Y. Tassa, "MuJoCo: A physics engine for model-based control",
        IEEE/RSJ International Conference on Intelligent Robots and Systems (IROS), 2012.
        (docs/references.bib: todorov2012)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> text = mjcf_text(example("planar-4cable"))
+    >>> text.splitlines()[0], text.count("<spatial ")
+    ('<mujoco model="planar 4-cable robot">', 4)
     """
     check_mjcf(robot)
     d = robot.dimension
@@ -461,13 +478,35 @@ def mjcf_text(robot: Robot) -> str:
 
 
 def write_mjcf(robot: Robot, path: str | Path) -> None:
-    """Write the MuJoCo model of ``robot`` (:func:`mjcf_text`) to ``path``, e.g. ``robot.mjcf.xml``.
+    """Write the MuJoCo model of ``robot`` (:func:`mjcf_text`) to ``path``, e.g.
+    ``robot.mjcf.xml``.
+
+    Parameters
+    ----------
+    robot : Robot
+    path : str or Path
+
+    Raises
+    ------
+    UnsupportedRobotError
+        For a robot the model cannot hold exactly.
+    RobotFileError
+        If the file cannot be written.
 
     References
     ----------
     .. [1] E. Todorov, T. Erez, Y. Tassa, "MuJoCo: A physics engine for model-based control",
        IEEE/RSJ International Conference on Intelligent Robots and Systems (IROS), 2012.
        (docs/references.bib: todorov2012)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> import pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "robot.mjcf.xml"
+    >>> write_mjcf(example("spatial-8cable"), path)
+    >>> path.read_text().startswith('<mujoco model="spatial 8-cable robot">')
+    True
     """
     write_file(path, mjcf_text(robot))
 
