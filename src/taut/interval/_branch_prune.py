@@ -63,11 +63,48 @@ from taut.interval._slope import points_for, slope_kernel, slopes
 MAX_BOXES = 2_000_000
 
 
+#: A box ``(lo, hi)``: the lower and upper ends of its variables, two arrays ``(n,)``.
 Box = tuple[np.ndarray, np.ndarray]
 
 
 @dataclass(frozen=True)
 class BranchAndPruneResult(Result):
+    """What :func:`branch_and_prune` found (a frozen result, read-only arrays).  Every solution of
+    the search domain that is not listed lies in one of the ``undecided`` boxes.
+
+    Attributes
+    ----------
+    solutions : tuple of Certificate
+        Solutions proven unique whose box lies in the domain and satisfies the redundant
+        constraints.
+    undecided : tuple of (ndarray, ndarray)
+        Boxes ``(lo, hi)`` left: narrower than ``tol`` but not certified (singular or nearly
+        coincident solutions), or unprocessed when the budget ran out.
+    boundary : tuple of Certificate
+        Solutions proven unique whose box straddles a bound of the domain or of a redundant
+        inequality (e.g. a zero tension): neither inside nor outside at this precision.
+    boxes : int
+        Boxes processed.
+    stats : dict of str to int
+        Boxes discarded by each operator (compiled loop only).
+    exhausted : bool
+        The budget ``max_boxes`` ran out.
+    elapsed_s : float
+        Wall-clock seconds.
+    complete : bool
+        No box is undecided.
+
+    Examples
+    --------
+    See :func:`branch_and_prune`.
+
+    >>> from taut.interval import compile_system, variables
+    >>> x, = variables(1)
+    >>> res = branch_and_prune(compile_system(1, [x**2 - 2]), [0.0], [2.0])
+    >>> res.complete, res.solutions[0].x
+    (True, array([1.41421356]))
+    """
+
     solutions: tuple[Certificate, ...]
     undecided: tuple[Box, ...]
     #: solutions proven unique whose box straddles a bound of the domain or of a redundant
@@ -201,19 +238,41 @@ def bisect(
     score: npt.ArrayLike | None = None,
     starve: float = np.inf,
 ) -> tuple[Box, Box]:
-    """The two halves ``((lo, mid), (mid, hi))`` of the box ``[lo, hi]`` cut across the
-    variable chosen by the bisection rule of the solver (§3.1.4): a ``primary`` one (all
-    variables by default) while the widest of them is at least ``tol`` — the one of
-    largest ``score`` when any is positive (e.g. the relative smear), else the widest, or the
-    widest when it is ``starve`` times wider than the score's pick —
-    then the widest variable of all.  The cut is at the midpoint, or at a finite point of
-    an unbounded variable.  The halves are new arrays.
+    """The two halves of the box ``[lo, hi]``, cut across the variable the solver's bisection rule
+    chooses (Berti 2015, §3.1.4): a ``primary`` one (all variables by default) while the widest
+    of them is at least ``tol`` — the one of largest ``score`` when any is positive (e.g. the
+    relative smear), else the widest, or the widest when it is ``starve`` times wider than the
+    score's pick — then the widest variable of all.
+
+    The cut is at the midpoint, or at a finite point of an unbounded variable.
+
+    Parameters
+    ----------
+    lo, hi : array_like, shape (n,)
+    primary : array_like of bool, shape (n,), optional
+        The variables bisected first (default all).
+    tol : float, default 0.0
+        The width below which primary variables are no longer preferred.
+    score : array_like, shape (n,), optional
+        A preference among the primary variables (:func:`smear_scores`).
+    starve : float, default inf
+
+    Returns
+    -------
+    ((lo, mid), (mid, hi)) : tuple of two Box
+        New arrays.
 
     References
     ----------
     .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
        interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
        Università di Bologna, 2015, §3.1.4. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> (lo1, hi1), (lo2, hi2) = bisect([0.0, 0.0], [1.0, 4.0])
+    >>> hi1, lo2
+    (array([1., 2.]), array([0., 2.]))
     """
     lo, hi = np.array(lo, float), np.array(hi, float)
     mask = np.ones(lo.size, bool) if primary is None else np.asarray(primary, bool)
@@ -251,48 +310,88 @@ def branch_and_prune(
     starve: float = np.inf,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> BranchAndPruneResult:
-    """All solutions of ``system`` in the box ``[lo, hi]`` (see module docstring).
+    """All solutions of ``system`` in the box ``[lo, hi]``: filter (HC4 and the filters),
+    evaluate (Krawczyk, Newton) and bisect (module docstring; Berti 2015, §1.3.3 Algorithm 1,
+    §3.1.4, §3.2).  Nothing is silently dropped: a box neither proven empty nor certified is
+    returned as undecided.
 
-    ``domain`` (``(lo, hi)``, default the box itself) is the whole search domain when
-    ``[lo, hi]`` is one piece of it: a solution counts when its certified box lies in the
-    domain, so a solution on the border between two pieces is kept by both (merge them
-    with :func:`same_solution`).
+    Parameters
+    ----------
+    system : System
+    lo, hi : array_like, shape (n,)
+        The box searched (a piece of ``domain``).
+    primary : array_like of bool, shape (n,), optional
+        The variables bisected first (the pose variables).
+    tol : float, default 1e-7
+        Boxes narrower than ``tol`` in every variable are not bisected: left undecided when
+        not certified.
+    certify_width : float, default 0.5
+        The width of the primary variables below which Krawczyk contracts a box.
+    newton_width : float, default 1e-3
+        Newton is started when Krawczyk proves uniqueness or the box is narrower than this.
+    max_boxes : int, default :data:`MAX_BOXES`
+        Budget: boxes processed before the search stops, the boxes left undecided.
+    filters : sequence of callables ``f(lo, hi) -> bool``
+        Extra contractors (in place, False = empty), applied after HC4 to the boxes whose
+        primary variables are narrower than ``filter_width``.
+    method : {"auto", "numba", "python"}, default "auto"
+        ``"numba"`` runs the box loop in a compiled kernel and needs every filter to be a
+        :class:`LinearFilter`; ``"python"`` is the reference loop; ``"auto"`` picks
+        ``"numba"`` when it can.
+    passes : int, default 1
+        With ``passes > 1`` the compiled loop repeats HC4 → filter → Krawczyk on a box while
+        Krawczyk shrinks its widest primary variable by more than the fraction ``gain``.
+    gain : float, default 0.2
+    ratio : float, default 0.05
+        The HC4 stopping threshold (:func:`contract`) in the compiled loop.
+    domain : (array_like, array_like), optional
+        The whole search domain (default the box): a solution counts when its certified box
+        lies in it, so one on the border between two pieces is kept by both (merge them with
+        :func:`same_solution`).
+    bisection : {"width", "smear"}, default "width"
+        Bisect the widest primary variable, or the one of largest relative smear
+        (:func:`smear_scores`), for variables scaled unevenly.
+    tube : int, default 0
+        How many leading equations form an under-determined subsystem (the DGP's rigidity and
+        cable lengths): every box is then contracted onto its solution manifold by the
+        parametric Krawczyk operator.
+    filter_width : float, default inf
+    starve : float, default inf
+        The smear rule gives way to the widest primary variable when that is ``starve`` times
+        wider than the smear's pick.
+    progress : callable ``(done, total)``, optional
+        Called every :data:`PROGRESS_BOXES` boxes with ``total`` None, and once at the end
+        with both the number of boxes processed.
 
-    ``primary`` (boolean mask) marks the variables bisected first; ``certify_width`` is
-    the width of the primary variables below which the Krawczyk operator contracts a box,
-    and Newton is started when Krawczyk proves uniqueness or the box is narrower than
-    ``newton_width``;
-    ``filters`` are extra contractors ``f(lo, hi) -> bool`` (in place, False = empty)
-    applied after HC4 to the boxes whose primary variables are narrower than
-    ``filter_width`` (an interval linear solve fails on wide boxes: its cost buys nothing
-    there).  ``bisection``: ``"width"`` bisects the widest primary variable
-    (§3.1.4), ``"smear"`` the primary variable of largest relative smear
-    (:func:`smear_scores`), which follows the variables the equations are most sensitive to
-    when they are scaled unevenly; ``starve``: the smear rule gives way to the widest
-    primary variable when that is ``starve`` times wider than the smear's pick — for
-    primary variables in one unit, where the smear can keep cutting a few of them while
-    another stays wide and every cut only trims a sliver (a random suspended robot, seed
-    58, cables 1 and 3: 1.34 M boxes with the smear alone, 553 with ``starve=10``).  ``tube``: how many leading equations form an
-    under-determined subsystem (fewer equations than the variables they involve: the
-    DGP's rigidity and cable lengths); every box is then contracted onto its solution
-    manifold by the parametric Krawczyk operator (:func:`taut.interval._krawczyk.tube_kernel`)
-    after HC4 and the filters; it solves for the non-primary variables of those equations
-    (at most ``tube`` of them) and for the best conditioned primary ones.
+    Returns
+    -------
+    BranchAndPruneResult
 
-    ``method="numba"`` runs the box loop in a compiled kernel (:func:`_drive`) and returns
-    to Python only to certify a solution; it needs every filter to be a
-    :class:`~taut.interval.LinearFilter`.  ``"python"`` is the reference loop (any
-    filter); ``"auto"`` picks ``"numba"`` when it can.  With ``passes=1`` both run the same
-    algorithm (box counts may differ by a few: the preconditioners are inverted by
-    different float routines).  With ``passes > 1`` the compiled loop repeats
-    HC4 → filter → Krawczyk narrowing on a box while Krawczyk shrinks its widest
-    primary variable by more than the fraction ``gain`` (a fixpoint of the contractors
-    before bisecting); ``ratio`` is the HC4 stopping threshold of
-    :func:`taut.interval.contract` in the compiled loop.  The result's ``stats`` count
-    the boxes each operator discarded (compiled loop only).
+    Raises
+    ------
+    TautError
+        For an unknown ``method`` or ``bisection``, filters the compiled loop cannot run, a
+        bad ``tube``, or a box outside ``domain``.
 
-    ``progress(boxes, None)`` is called every :data:`PROGRESS_BOXES` boxes processed (the
-    total is unknown until the end), and ``progress(boxes, boxes)`` once the search is done.
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §1.3.3 (Algorithm 1), §3.1.4, §3.2.1–3.2.2. (docs/references.bib: berti2015)
+    .. [2] R. B. Kearfott, M. Novoa, "Algorithm 681: INTBIS, a portable interval Newton/bisection
+       package", ACM Transactions on Mathematical Software 16(2), 1990.
+       (docs/references.bib: kearfott1990)
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> res = branch_and_prune(circles, [-3.0, -3.0], [3.0, 3.0])
+    >>> [c.x for c in res.solutions], res.complete
+    ([array([ 0.5      , -0.8660254]), array([0.5      , 0.8660254])], True)
+    >>> branch_and_prune(circles, [-3.0, -3.0], [3.0, 3.0], max_boxes=3).exhausted
+    True
     """
     kernel_ok = all(isinstance(f, LinearFilter) for f in filters) and len(filters) <= 1
     if method not in ("auto", "numba", "python"):
@@ -686,7 +785,26 @@ def _domain(
 
 
 def same_solution(a: Certificate, b: Certificate) -> bool:
-    """``b`` is the solution certified by ``a``: it lies in ``a``'s box, which holds one."""
+    """Whether ``b`` is the solution certified by ``a``: it lies in ``a``'s box, which holds one,
+    or within ``a``'s uniqueness radius.
+
+    Parameters
+    ----------
+    a, b : Certificate
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> upper, lower = certify(circles, [0.4, 0.8]), certify(circles, [0.4, -0.8])
+    >>> same_solution(upper, certify(circles, [0.6, 0.9])), same_solution(upper, lower)
+    (True, False)
+    """
     return bool(np.all(b.x >= a.lo) and np.all(b.x <= a.hi)) or bool(np.all(np.abs(a.x - b.x) <= a.radius))
 
 
@@ -833,11 +951,38 @@ def _branch_and_prune_numba(
 def file_certificate(
     system: System, cert: Certificate, lo0: np.ndarray, hi0: np.ndarray, *, known: Sequence[Certificate] = ()
 ) -> str | None:
-    """Where the certified solution ``cert`` of a search over ``[lo0, hi0]`` belongs:
-    ``"solution"`` when its box lies in the search domain and satisfies the redundant
-    constraints, ``"boundary"`` when it straddles a bound of either (e.g. a zero tension: it
-    may belong to a smaller subset, see :mod:`taut.dgp`), ``None`` when its box is proven
-    outside one of them (it holds no solution) or it is one of the ``known`` solutions."""
+    """Where the certified solution ``cert`` of a search over ``[lo0, hi0]`` belongs.
+
+    Parameters
+    ----------
+    system : System
+    cert : Certificate
+    lo0, hi0 : ndarray, shape (n,)
+        The search domain.
+    known : sequence of Certificate
+        Solutions already found: ``cert`` is dropped when it is one of them.
+
+    Returns
+    -------
+    {"solution", "boundary"} or None
+        ``"solution"`` when its box lies in the domain and satisfies the redundant
+        constraints; ``"boundary"`` when it straddles a bound of either (e.g. a zero tension:
+        it may belong to a smaller subset, see :mod:`taut.dgp`); None when its box is proven
+        outside one of them (it holds no solution) or it is known.
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> cert = certify(circles, [0.4, 0.8])
+    >>> file_certificate(circles, cert, np.array([-3.0, -3.0]), np.array([3.0, 3.0]))
+    'solution'
+    >>> file_certificate(circles, cert, np.array([-3.0, -3.0]), np.array([0.5, 3.0]))
+    'boundary'
+    >>> file_certificate(circles, cert, np.array([-3.0, -3.0]), np.array([3.0, 3.0]), known=[cert]) is None
+    True
+    """
     if any(np.all(np.abs(cert.x - c.x) <= max(c.radius, 1e-9)) for c in known):
         return None
     if np.any(cert.hi < lo0) or np.any(cert.lo > hi0):
