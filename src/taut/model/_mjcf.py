@@ -606,27 +606,49 @@ def swivel_wraps_agree(robot: Robot, poses: npt.ArrayLike) -> np.ndarray | bool:
 
 
 def pose_to_qpos(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
-    """MuJoCo's ``qpos`` of the model of :func:`mjcf_text` at taut poses: ``(N, nq)`` for
-    ``(N, pose_size)`` poses, ``(nq,)`` for one pose.
+    """MuJoCo's ``qpos`` of the model of :func:`mjcf_text` at taut poses.
 
     Spatial rigid platform: ``(x, y, z, w, qx, qy, qz)``, the quaternion of the rotation of the
     pose's three angles in the robot's orientation convention (``docs/architecture.md`` §2.3);
     planar rigid platform: ``(x, y, θ)``; point mass: its position.  Then the joint
-    coordinates of the jointed bodies in MuJoCo's order (:func:`joint_order`).  Then the hinge angle of
-    each swivelling pulley, in cable order: the angle about the swivel axis ``k`` from the
-    pulley's ``e_0`` (:func:`swivel_frames`) to the anchor's direction from the axis, so that
-    the pulley plane holds the anchor, as in :mod:`taut.kinematics._swivel`.
+    coordinates of the jointed bodies in MuJoCo's order (:func:`joint_order`).  Then the hinge
+    angle of each swivelling pulley, in cable order: the angle about the swivel axis ``k`` from
+    the pulley's ``e_0`` (:func:`swivel_frames`) to the anchor's direction from the axis, so
+    that the pulley plane holds the anchor, as in :mod:`taut.kinematics._swivel`.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+
+    Returns
+    -------
+    ndarray, shape (N, nq) or (nq,)
 
     Raises
     ------
     PoseError
-        For poses of the wrong size, with a non-finite coordinate or a joint coordinate
-        outside its limits (where MuJoCo's joint limit would push).
+        For poses that are not numbers, of the wrong size, with a non-finite coordinate or a
+        joint coordinate outside its limits (where MuJoCo's joint limit would push).
     InfeasiblePoseError
         For a pose at which MuJoCo would wrap a swivelling pulley another way than taut
         (:func:`swivel_wraps_agree`).
     UnsupportedRobotError
         For a robot the model cannot hold (:func:`check_mjcf`).
+
+    References
+    ----------
+    .. [1] E. Todorov, T. Erez, Y. Tassa, "MuJoCo: A physics engine for model-based control",
+       IEEE/RSJ International Conference on Intelligent Robots and Systems (IROS), 2012.
+       (docs/references.bib: todorov2012)
+
+    Examples
+    --------
+    A quarter turn about ``z`` is the quaternion ``(cos π/4, 0, 0, sin π/4)``:
+
+    >>> from taut.model import example
+    >>> np.round(pose_to_qpos(example("spatial-8cable"), [0.1, 0.2, 0.3, 0.0, 0.0, np.pi / 2]), 6)
+    array([0.1     , 0.2     , 0.3     , 0.707107, 0.      , 0.      , 0.707107])
     """
     arr, single = _checked_poses(robot, poses)
     m = robot.wrench_dim
