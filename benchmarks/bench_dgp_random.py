@@ -62,7 +62,7 @@ def peer(cases, mptype):
     for n, seed, _ in cases:
         if n != 3:
             continue
-        robot, lengths = random_suspended_robot(seed, n)
+        robot, lengths = random_suspended_robot(n, seed=seed)
         sols, undecided, _ = solve_subset((robot, lengths, ALL_TAUT, EPS))
         t_peer, endpoints, n_finite, n_paths = run_bertini(bertini, robot, lengths, mptype)
         found = matching(robot, lengths, sols, endpoints)
@@ -77,7 +77,7 @@ def peer(cases, mptype):
 
 
 def fold():
-    robot, lengths = random_suspended_robot(0, 3)
+    robot, lengths = random_suspended_robot(3, seed=0)
     lengths = lengths.copy()
     lengths[0] *= FOLD_SIDE
     times = []
@@ -109,11 +109,11 @@ def main():
     ns = ap.parse_args()
     cases = suite(ns)
     # load the Numba kernels outside the timing
-    solve_dgp(*random_suspended_robot(0, 3), max_taut=2)
+    solve_dgp(*random_suspended_robot(3, seed=0), max_taut=2)
     times: dict[int, list[float]] = {}
     total_undecided = 0
     for n, seed, max_taut in cases:
-        robot, lengths = random_suspended_robot(seed, n)
+        robot, lengths = random_suspended_robot(n, seed=seed)
         t0 = time.perf_counter()
         res = solve_dgp(robot, lengths, max_taut=max_taut)
         t = time.perf_counter() - t0

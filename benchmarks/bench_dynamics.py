@@ -76,8 +76,9 @@ def main():
 
     def statics_path():
         _, W, _ = batch_structure_matrices(robot, q)
-        lo, hi = robot.tension_bounds
-        return solve_tensions(W, -required_wrench(robot, q, qd, qdd), lo, hi, "closed-form")
+        return solve_tensions(
+            W, -required_wrench(robot, q, qd, qdd), tension_bounds=robot.tension_bounds, method="closed-form"
+        )
 
     dt_s, ref = best_of(statics_path, repeat=1)
     n = args.samples

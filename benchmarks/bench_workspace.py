@@ -57,7 +57,7 @@ def main():
     _, W, ok = batch_structure_matrices(robot, poses)
     w = external_wrench(robot, poses)
     tmin, tmax = robot.tension_bounds
-    dt_k, _ = best_of(lambda: wrench_feasible(W, tmin, tmax, box, w))
+    dt_k, _ = best_of(lambda: wrench_feasible(W, box, tension_bounds=(tmin, tmax), wrench=w))
     dt_ik, _ = best_of(lambda: batch_structure_matrices(robot, poses))
     dt_w, _ = best_of(lambda: external_wrench(robot, poses))
     print(

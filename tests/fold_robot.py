@@ -10,7 +10,7 @@ FOLD_SIDE = 1.0353778044866666
 
 def fold_robot():
     """``(robot, lengths, base lengths)``: the suite robot and its lengths at the fold side."""
-    robot, base = random_suspended_robot(0, 3)
+    robot, base = random_suspended_robot(3, seed=0)
     lengths = base.copy()
     lengths[0] *= FOLD_SIDE
     return robot, lengths, base

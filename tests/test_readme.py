@@ -50,5 +50,5 @@ def test_console_lines(line, tmp_path):
 
 @pytest.mark.parametrize("text", YAML, ids=[f"yaml-{i}" for i in range(len(YAML))])
 def test_yaml_blocks_are_valid_robot_files(text):
-    robot = parse_robot(text, "README")
+    robot = parse_robot(text, source="README")
     assert robot.n_cables == text.count("- {exit:")

@@ -42,7 +42,7 @@ def check_equilibrium(robot, lengths, sol):
 
 @pytest.mark.parametrize("n, seed", SUITE)
 def test_every_equilibrium_certified_and_checked(n, seed):
-    robot, lengths = random_suspended_robot(seed, n)
+    robot, lengths = random_suspended_robot(n, seed=seed)
     res = solve_dgp(robot, lengths)
     assert res.undecided == 0 and res.complete
     assert res.solutions
@@ -55,7 +55,7 @@ def test_singular_generalised_inverse_does_not_stall():
     preconditioner of Berti's Eq. 3.12, (Wᵀ J)⁻¹ Wᵀ, is singular although J has full rank;
     the statics filter then proved nothing, and the tensions of 4 M boxes ran to 1e308
     (undecided).  With the least-squares preconditioner the filter bounds them."""
-    robot, lengths = random_suspended_robot(4, 3)
+    robot, lengths = random_suspended_robot(3, seed=4)
     res = solve_dgp(robot, lengths, max_taut=3)
     assert res.undecided == 0 and len([s for s in res.solutions if len(s.taut) == 3]) == 2
 
@@ -79,7 +79,7 @@ def test_least_squares_preconditioner_encloses_the_solution():
 
 @pytest.mark.parametrize("n", range(3, 9))
 def test_random_robot_file_round_trip(n, tmp_path):
-    robot, lengths = random_suspended_robot(n, n)
+    robot, lengths = random_suspended_robot(n, seed=n)
     path = tmp_path / "random.yaml"
     save_robot(robot, path)
     again = load_robot(str(path))
@@ -90,7 +90,7 @@ def test_random_robot_file_round_trip(n, tmp_path):
 @settings(max_examples=25, deadline=None)
 @given(seed=st.integers(0, 2**32 - 1), n=st.integers(3, 8), coplanar=st.booleans())
 def test_random_robot_geometry(seed, n, coplanar):
-    robot, lengths = random_suspended_robot(seed, n, coplanar=coplanar)
+    robot, lengths = random_suspended_robot(n, seed=seed, coplanar=coplanar)
     a, r = robot.exits, robot.anchors
     g = np.asarray(robot.platform.wrench_point)
     assert np.all(lengths > 0) and robot.weight[2] < 0
@@ -101,14 +101,14 @@ def test_random_robot_geometry(seed, n, coplanar):
     assert (flat < 1e-12) if coplanar else (flat > 0)
     assert abs((g - r.mean(axis=0)) @ normal) > 1e-3
     assert np.ptp(a[:, 0]) > 1.0 and np.ptp(a[:, 1]) > 1.0
-    same = random_suspended_robot(seed, n, coplanar=coplanar)
+    same = random_suspended_robot(n, seed=seed, coplanar=coplanar)
     assert same[0] == robot and np.array_equal(same[1], lengths)
 
 
 @pytest.mark.parametrize("n, perturbation", [(2, 0.02), (9, 0.02), (3, -0.1), (3, float("nan"))])
 def test_random_robot_refuses_bad_arguments(n, perturbation):
     with pytest.raises(TautError):
-        random_suspended_robot(0, n, perturbation=perturbation)
+        random_suspended_robot(n, seed=0, perturbation=perturbation)
 
 
 @pytest.mark.parametrize("ulps", [-1, 0, 1])
@@ -118,7 +118,7 @@ def test_equilibrium_on_the_border_of_two_subsets_reported_once(ulps):
     tension in the 3-taut subset and cable 1 exactly at its length in the 2-taut one: both
     sub-problems certified it in a box straddling their bound and dropped it, or left a box
     undecided.  It is now reported once, naming both subsets."""
-    robot, lengths = random_suspended_robot(1, 3)
+    robot, lengths = random_suspended_robot(3, seed=1)
     before = solve_dgp(robot, lengths)
     target = before.solutions[0]
     R = rotation_matrix(target.orientation, robot.orientation)
@@ -143,7 +143,7 @@ def test_smear_bisection_does_not_starve_a_reference_point():
     anchors (widths down to 5e-4 m) while the third reference point stayed 0.4 m wide, and
     HC4 emptied one half of every cut: 1.34 M boxes, 55 s.  The widest primary variable is
     now cut when it is ten times wider than the smear's pick: a few hundred boxes."""
-    robot, lengths = random_suspended_robot(58, 3)
+    robot, lengths = random_suspended_robot(3, seed=58)
     sols, undecided, boxes = solve_subset((robot, lengths, (0, 2), 1e-7))
     assert undecided == 0 and len(sols) == 3 and boxes < 20_000
     for sol in sols:
@@ -163,7 +163,7 @@ def test_bisect_cuts_the_widest_when_the_smear_pick_starves():
 def test_border_equilibrium_through_the_cli_names_cables_from_1(taut_cli, tmp_path):
     """The same border equilibrium from ``taut fk --json`` on the saved robot: the JSON names
     the cables 1-based, as every cable field of the CLI does (docs/architecture.md §2.6)."""
-    robot, lengths = random_suspended_robot(1, 3)
+    robot, lengths = random_suspended_robot(3, seed=1)
     target = solve_dgp(robot, lengths).solutions[0]
     R = rotation_matrix(target.orientation, robot.orientation)
     edited = lengths.copy()

@@ -100,7 +100,7 @@ def test_exact_model_tracks_to_within_1e_6(robot):
     assert 3.0 < e1 / e2 < 5.0
     assert e0 > 50 * e1
     assert fine.feasible and fine.rotation_error.max() <= 2e-6 and fine.position_error.max() <= 1e-6
-    np.testing.assert_allclose(fine.reference, motion.at(fine.time).pose)
+    np.testing.assert_allclose(fine.reference, motion.at(fine.time).poses)
 
 
 def test_infeasible_demand_holds_the_last_admissible_tensions(robot):

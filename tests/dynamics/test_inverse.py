@@ -128,7 +128,10 @@ def test_compiled_closed_form_is_the_statics_closed_form(name, request):
     t, q, qd, qdd = sinusoid(robot, 30, amp, 3.0)
     res = inverse_dynamics(robot, q, qd, qdd, method="closed-form", time=t)
     ref = solve_tensions(
-        structure_matrix(robot, q), -required_wrench(robot, q, qd, qdd), *robot.tension_bounds, "closed-form"
+        structure_matrix(robot, q),
+        -required_wrench(robot, q, qd, qdd),
+        tension_bounds=robot.tension_bounds,
+        method="closed-form",
     )
     np.testing.assert_array_equal(res.feasible, ref.feasible)
     np.testing.assert_array_equal(res.status, ref.status)

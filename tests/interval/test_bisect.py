@@ -36,7 +36,7 @@ def test_score_and_eps_choose_the_variable():
     lo, hi = np.zeros(3), np.array([4.0, 2.0, 1.0])
     (_, ahi), _ = bisect(lo, hi, score=np.array([0.0, 0.0, 1.0]))
     assert ahi.tolist() == [4.0, 2.0, 0.5]  # largest score among the primary variables
-    (_, ahi), _ = bisect(lo, hi, primary=[False, True, True], eps=3.0)
+    (_, ahi), _ = bisect(lo, hi, primary=[False, True, True], tol=3.0)
     assert ahi.tolist() == [2.0, 2.0, 1.0]  # primary ones below eps: the widest of all
 
 

@@ -4,6 +4,7 @@ centres are ``2 − δ`` apart, with ``δ`` an exact rational no float holds: tw
 ``(1, 0)`` for ``δ = 0``.  The roots are checked in exact rational arithmetic, not with the
 solver's balls."""
 
+import json
 from fractions import Fraction
 
 import numpy as np
@@ -59,7 +60,7 @@ def test_two_roots_closer_than_double_precision_separates_are_certified(exponent
 def test_double_precision_leaves_them_undecided():
     """The reason for the module: the same system in float intervals (the centre rounded
     outwards) cannot be decided near the tangency."""
-    res = branch_and_prune(circles(Fraction(1, 3 * 2**50)), LO, HI, eps=1e-9)
+    res = branch_and_prune(circles(Fraction(1, 3 * 2**50)), LO, HI, tol=1e-9)
     assert res.undecided and len(res.solutions) < 2
 
 
@@ -123,3 +124,15 @@ def test_roots_on_a_bisection_face_are_certified():
     assert len(res.solutions) == 2 and not res.undecided and not res.unsearched
     assert all(c.lo[0] <= x <= c.hi[0] for c in res.solutions)
     assert sorted(np.sign([c.x[1] for c in res.solutions]).tolist()) == [-1.0, 1.0]
+
+
+def test_result_says_exhausted_and_complete_and_is_json():
+    cut = solve_precise(circles(Fraction(0)), [(LO, HI)], max_boxes=30)
+    assert cut.exhausted and not cut.complete and cut.elapsed_s >= 0.0
+    done = solve_precise(circles(Fraction(1, 2**20)), [(LO, HI)])
+    assert done.complete and not done.exhausted
+    back = json.loads(json.dumps(cut.as_dict(), allow_nan=False))
+    assert back["boxes"] == 30 and back["exhausted"] is True
+    assert back["unsearched"] == [[lo.tolist(), hi.tolist()] for lo, hi in cut.unsearched]
+    with pytest.raises(ValueError, match="read-only"):
+        cut.unsearched[0][0][0] = 0.0

@@ -1,5 +1,7 @@
 """HC4, interval Gauss, Krawczyk + inflation and branch-and-prune on small systems."""
 
+import dataclasses
+import json
 from fractions import Fraction
 
 import numpy as np
@@ -427,3 +429,31 @@ def test_float_inverse_flags_singular_matrices():
     assert ok and np.allclose(inv @ np.array([[2.0, 1.0], [1.0, 3.0]]), np.eye(2))
     assert not float_inverse(np.array([[1.0, 2.0], [2.0, 4.0]]))[0]
     assert not float_inverse(np.array([[np.inf, 0.0], [0.0, 1.0]]))[0]
+
+
+@pytest.mark.parametrize("method", ["python", "numba"])
+def test_branch_and_prune_result_is_frozen_read_only_and_json(method):
+    """docs/architecture.md §2.7: a frozen result, read-only arrays, ``as_dict`` in JSON types."""
+    res = branch_and_prune(CIRCLES, [-3.0, -3.0], [3.0, 3.0], method=method)
+    assert res.complete and not res.exhausted and res.elapsed_s >= 0.0
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        res.boxes = 0  # type: ignore[misc]
+    cert = res.solutions[0]
+    for array in (cert.x, cert.lo, cert.hi):
+        with pytest.raises(ValueError, match="read-only"):
+            array[0] = 0.0
+    back = json.loads(json.dumps(res.as_dict(), allow_nan=False))
+    assert back["boxes"] == res.boxes and back["complete"] is True and back["exhausted"] is False
+    assert [s["x"] for s in back["solutions"]] == [c.x.tolist() for c in res.solutions]
+    assert [s["radius"] for s in back["solutions"]] == [c.radius for c in res.solutions]
+
+
+@pytest.mark.parametrize("method", ["python", "numba"])
+def test_branch_and_prune_out_of_budget_is_exhausted_and_incomplete(method):
+    res = branch_and_prune(CIRCLES, [-3.0, -3.0], [3.0, 3.0], max_boxes=3, method=method)
+    assert res.exhausted and not res.complete and res.undecided
+    lo, hi = res.undecided[0]
+    with pytest.raises(ValueError, match="read-only"):
+        lo[0] = 0.0
+    back = json.loads(json.dumps(res.as_dict(), allow_nan=False))
+    assert back["undecided"] == [[lo.tolist(), hi.tolist()] for lo, hi in res.undecided]

@@ -159,3 +159,38 @@ def test_damaged_files_fail_cleanly(data, tmp_path_factory):
     except taut.TautError:
         return
     assert ik.lengths.shape == (robot.n_cables,)
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda: taut.model.parse_robot(3),
+        lambda: taut.model.format_of("robot.yaml", kind="append"),
+        lambda: taut.model.random_suspended_robot("3", seed=0),
+        lambda: taut.model.random_suspended_robot(3, seed="x"),
+        lambda: taut.model.random_suspended_robot(3, seed=-1),
+        lambda: taut.model.random_suspended_robot(3, seed=0, perturbation="x"),
+        lambda: taut.model.pose_to_qpos(taut.example("spatial-8cable"), "ab"),
+        lambda: taut.model.read_text("/nonexistent/robot.yaml"),
+    ],
+)
+def test_bad_arguments_are_taut_errors(call):
+    """docs/architecture.md §2.7: bad input raises a TautError subclass, never a bare
+    ValueError, TypeError or AttributeError."""
+    with pytest.raises(taut.TautError):
+        call()
+
+
+@pytest.mark.parametrize(
+    "write, name",
+    [
+        (taut.model.save_robot, "robot.yaml"),
+        (taut.model.write_robot, "robot.json"),
+        (taut.model.write_mjcf, "robot.mjcf.xml"),
+        (taut.model.write_caspr, "robot_bodies.xml"),
+    ],
+)
+def test_writing_into_a_missing_directory_is_a_robot_file_error(write, name, tmp_path):
+    robot = taut.example("planar-4cable")
+    with pytest.raises(taut.RobotFileError, match="cannot write the file|does not exist"):
+        write(robot, tmp_path / "missing" / name)

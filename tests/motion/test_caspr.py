@@ -61,7 +61,7 @@ def _check(motion, segments, flip, n=41):
     for ts, te, ref in segments:
         t = np.linspace(ts, te, n)[0 if ts == 0 else 1 :]
         s = motion.at(t)
-        for got, want in zip((s.pose, s.velocity, s.acceleration), ref(t)):
+        for got, want in zip((s.poses, s.velocity, s.acceleration), ref(t)):
             assert np.allclose(got, np.stack(want, axis=1) * sign, atol=1e-9)
 
 
@@ -154,7 +154,7 @@ def test_every_kind_matches_caspr_formulas():
     # piece that starts there, taut the one that ends there)
     _check(blend, [(0, 2, pb(0, 0, 2, 0.5))], flip=True, n=43)
     end = blend.at([2.0, 3.0, 4.0])
-    assert np.allclose(end.pose[[0, 2]], qb[[1, 2]] * [1, 1, -1])
+    assert np.allclose(end.poses[[0, 2]], qb[[1, 2]] * [1, 1, -1])
     assert end.velocity[1] == pytest.approx([0.0, 0.4 / (1.0 * 1.0), 0.0])  # peak a t_b = Δ/(t_b(T−t_b)) t_b
 
 
@@ -265,7 +265,7 @@ def _check_turns(motion, points, times, convention, law, n=41):
 
         caspr = partial(_caspr_turn, convention, points[k, 3:], points[k + 1, 3:], ts, te, law=law)
         angles, rates, omega, alpha = caspr(t)
-        np.testing.assert_allclose(np.angle(np.exp(1j * (s.pose[:, 3:] - angles))), 0.0, atol=1e-9)
+        np.testing.assert_allclose(np.angle(np.exp(1j * (s.poses[:, 3:] - angles))), 0.0, atol=1e-9)
         np.testing.assert_allclose(s.velocity[:, 3:], rates, atol=1e-9)
         np.testing.assert_allclose(s.angular_velocity, omega, atol=1e-9)
         np.testing.assert_allclose(s.angular_acceleration, alpha, atol=1e-9)
@@ -285,12 +285,14 @@ def test_real_caspr_file_cogiro():
     g = trajs["general_1"]
     # CASPR samples time_section = t_s : time_step : t_e per segment: 401 samples over 4 s
     s = g.motion.sample(1 / g.time_step)
-    assert len(s.time) == 401
+    assert len(s.times) == 401
     start = np.array([-3.0, -1.0, 2.0, -0.5, 0.2, 0.3])
     mid = np.array([2.0, -3.0, 4.0, 0.2, -0.1, 0.1])
-    assert np.allclose(s.pose[0], start) and np.allclose(s.pose[200], mid)
-    ref = np.stack([_polynomial(0.0, 2.0, [start[i], 0, 0], [mid[i], 0, 0], s.time[:201])[0] for i in range(3)], axis=1)
-    assert np.allclose(s.pose[:201, :3], ref, atol=1e-9)
+    assert np.allclose(s.poses[0], start) and np.allclose(s.poses[200], mid)
+    ref = np.stack(
+        [_polynomial(0.0, 2.0, [start[i], 0, 0], [mid[i], 0, 0], s.times[:201])[0] for i in range(3)], axis=1
+    )
+    assert np.allclose(s.poses[:201, :3], ref, atol=1e-9)
     for tr in trajs.values():
         assert tr.motion.rotation == "axis"
         _check_turns(tr.motion, tr.motion.waypoints, tr.motion.times, "xyz-moving", "quintic")
@@ -305,8 +307,8 @@ def test_cogiro_angles_interpolated_apart_are_another_motion():
     robot, trajs = read_caspr_trajectories(HERE / "CoGiRo_trajectories.xml", bodies=COGIRO)
     turned = trajs["general_2"].motion
     apart = trajectory_from_waypoints(robot, turned.waypoints, times=turned.times, law="quintic", unwrap=False)
-    t = turned.sample(100).time
-    a, b = turned.at(t).pose, apart.at(t).pose
+    t = turned.sample(100).times
+    a, b = turned.at(t).poses, apart.at(t).poses
     assert np.abs(a - b)[:, 3:].max() == pytest.approx(0.0302, abs=1e-4)
     assert np.abs(cable_lengths(robot, a) - cable_lengths(robot, b)).max() == pytest.approx(0.0470, abs=1e-4)
 
@@ -335,18 +337,18 @@ def test_fixed_xyz_turns_every_law(tmp_path):
         motion = trajs[law].motion
         assert motion.waypoints[2, 5] == pytest.approx(2 * np.pi - 2.9)  # continued past π
         _check_turns(motion, q, np.array([0.0, 1.0, 2.0]), "xyz-fixed", law)
-        c = motion.sample(1000).pose[:, 5]
+        c = motion.sample(1000).poses[:, 5]
         assert np.abs(np.diff(c)).max() < 0.01 and c.max() > np.pi  # no 2π jump
     # the parabolic blend times the angle turned: ω keeps its axis, its size is θ̇(t)
     s = trajs["blend"].motion.at(np.linspace(0, 2, 201))
     rotation = CONVENTIONS["xyz-fixed"][0]
     for k in range(2):
-        inside = (s.time > k) & (s.time < k + 1)
+        inside = (s.times > k) & (s.times < k + 1)
         w = s.angular_velocity[inside]
         axis = w[np.argmax(np.linalg.norm(w, axis=1))]
         assert np.abs(np.cross(w, axis / np.linalg.norm(axis))).max() < 1e-9
         theta = np.linalg.norm(Rotation.from_matrix(rotation(q[k, 3:]).T @ rotation(q[k + 1, 3:])).as_rotvec())
-        speed = _parabolic_blend(0.0, theta, k, k + 1, 0.25, s.time[inside])[1]
+        speed = _parabolic_blend(0.0, theta, k, k + 1, 0.25, s.times[inside])[1]
         np.testing.assert_allclose(np.linalg.norm(w, axis=1), speed, atol=1e-9)
 
 
@@ -457,7 +459,7 @@ def test_unread_trajectory_leaves_the_others():
     assert len(got) == 1
     assert sorted(trajs) == ["traj_average", "traj_blend", "traj_cubic", "traj_linear", "traj_quintic"]
     assert list(trajs.skipped) == ["traj_file"] and "traj_file" not in trajs and len(trajs) == 5
-    assert trajs["traj_linear"].motion.at([1.0]).pose[0] == pytest.approx([0.5, 0.2, 0.05])
+    assert trajs["traj_linear"].motion.at([1.0]).poses[0] == pytest.approx([0.5, 0.2, 0.05])
     with pytest.raises(TrajectoryError, match=r"trajectory 'traj_file' is not read: <file_trajectory> \(samples") as e:
         trajs["traj_file"]
     assert "\n" not in str(e.value)

@@ -19,7 +19,7 @@ positive = st.floats(0.2, 5.0)
 
 
 def _p2p(start, end, T, law, **kw):
-    return trajectory_from_waypoints(SPATIAL, [start, end], T, law=law, **kw)
+    return trajectory_from_waypoints(SPATIAL, [start, end], durations=T, law=law, **kw)
 
 
 @pytest.mark.parametrize("law", LAWS)
@@ -29,7 +29,7 @@ def test_boundary_conditions_and_straight_line(law, start, end, T):
     q0, q1 = np.array(start), np.array(end)
     m = _p2p(start, end, T, law)
     s = m.at([0.0, T])
-    assert np.allclose(s.pose, [q0, q1], atol=1e-12)
+    assert np.allclose(s.poses, [q0, q1], atol=1e-12)
     d = q1 - q0
     if law != "linear":
         # every rest-to-rest law starts and ends at rest
@@ -44,7 +44,7 @@ def test_boundary_conditions_and_straight_line(law, start, end, T):
     assert np.allclose(s.acceleration[1], -expected_start_acceleration, rtol=1e-9, atol=1e-9)
     # one scalar time law for all coordinates: a straight line, s rising monotonically 0 → 1
     inner = m.sample(200 / T)
-    offset = inner.pose - q0
+    offset = inner.poses - q0
     k = int(np.argmax(np.abs(d)))
     if abs(d[k]) > 1e-6:
         sv = offset[:, k] / d[k]
@@ -67,15 +67,15 @@ COMBINATIONS = [(law, "stop") for law in LAWS] + [("cubic", "average"), ("quinti
 @settings(max_examples=15, deadline=None)
 @given(points=st.lists(pose, min_size=2, max_size=5), durations=st.lists(positive, min_size=4, max_size=4))
 def test_derivatives_match_finite_differences_of_the_pose(law, via, points, durations):
-    m = trajectory_from_waypoints(SPATIAL, points, durations[: len(points) - 1], law=law, via=via)
+    m = trajectory_from_waypoints(SPATIAL, points, durations=durations[: len(points) - 1], law=law, via=via)
     h = 1e-4
     t = _smooth_times(m, h=h)
     s, plus, minus = m.at(t), m.at(t + h), m.at(t - h)
     # truncation errors h²/6 q⃛ and h²/12 q⁗ are below 1e-5 of the scale for segments ≥ 0.2 s
     v_scale = 1e-5 * (np.abs(s.velocity).max() + 1.0)
     a_scale = 1e-4 * (np.abs(s.acceleration).max() + 1.0)
-    assert np.abs(s.velocity - (plus.pose - minus.pose) / (2 * h)).max() <= v_scale
-    assert np.abs(s.acceleration - (plus.pose - 2 * s.pose + minus.pose) / h**2).max() <= a_scale
+    assert np.abs(s.velocity - (plus.poses - minus.poses) / (2 * h)).max() <= v_scale
+    assert np.abs(s.acceleration - (plus.poses - 2 * s.poses + minus.poses) / h**2).max() <= a_scale
 
 
 @pytest.mark.parametrize("law", LAWS)
@@ -98,7 +98,7 @@ def test_shortest_segments_keep_within_limits_and_reach_one(law, points, vmax, a
     # the shortest duration: in every segment, some coordinate is at its velocity or
     # acceleration limit (sampled 4000 times over the motion: within 1 %)
     for k in range(len(W) - 1):
-        inside = (s.time >= m.times[k]) & (s.time <= m.times[k + 1])
+        inside = (s.times >= m.times[k]) & (s.times <= m.times[k + 1])
         reached = max(vratio[inside].max(), 0.0 if law == "linear" else aratio[inside].max())
         assert reached >= 0.99
 
@@ -126,7 +126,9 @@ def test_trapezoidal_is_triangular_when_the_cruise_speed_is_out_of_reach():
 @pytest.mark.parametrize("blend", [0.1, 0.25, 0.5])
 def test_trapezoidal_blend_fraction(blend):
     T, d = 2.0, 0.3
-    m = trajectory_from_waypoints(PLANAR, [[0.5, 0.5, 0.0], [0.8, 0.5, 0.0]], T, law="trapezoidal", blend=blend)
+    m = trajectory_from_waypoints(
+        PLANAR, [[0.5, 0.5, 0.0], [0.8, 0.5, 0.0]], durations=T, law="trapezoidal", blend=blend
+    )
     tb = blend * T
     a = d / (tb * (T - tb))
     s = m.at([tb / 2, T / 2, T - tb / 2])

@@ -3,6 +3,7 @@ points, jointed platforms, robot-file trajectories, sampling and bad input."""
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 
@@ -47,14 +48,14 @@ def _skew(W):
 @given(orientations=st.lists(angles, min_size=2, max_size=4), law=st.sampled_from(["cubic", "quintic"]))
 def test_angular_velocity_and_acceleration_match_rotation_matrices(convention, orientations, law):
     robot = ROBOTS[convention]
-    m = trajectory_from_waypoints(robot, _spatial_waypoints(robot, orientations), 1.0, law=law, via="average")
+    m = trajectory_from_waypoints(robot, _spatial_waypoints(robot, orientations), durations=1.0, law=law, via="average")
     h = 1e-4
     t = np.linspace(h, m.duration - h, 23)[1:-1]
     t = t[np.min(np.abs(t[:, None] - m.breaks[None, :]), axis=1) > 2 * h]
     s = m.at(t)
 
     def R(times):
-        return rotation_matrix(m.at(times).pose[:, 3:6], convention)
+        return rotation_matrix(m.at(times).poses[:, 3:6], convention)
 
     R0, Rp, Rm = R(t), R(t + h), R(t - h)
     Rd = (Rp - Rm) / (2 * h)
@@ -83,7 +84,7 @@ def test_axis_rotation_turns_about_one_axis(convention, orientations, law):
     robot = ROBOTS[convention]
     W = _spatial_waypoints(robot, orientations)
     try:
-        m = trajectory_from_waypoints(robot, W, 1.0, law=law, rotation="axis")
+        m = trajectory_from_waypoints(robot, W, durations=1.0, law=law, rotation="axis")
     except TrajectoryError as e:  # a turn through the gimbal lock is refused, by name
         assert "gimbal lock" in str(e)
         return
@@ -98,29 +99,29 @@ def test_axis_rotation_turns_about_one_axis(convention, orientations, law):
         Rs, Re = rotation_matrix(W[k, 3:6], convention), rotation_matrix(W[k + 1, 3:6], convention)
         rotvec = Rotation.from_matrix(Rs.T @ Re).as_rotvec()
         d = W[k + 1, 0] - W[k, 0]
-        sigma = (s.pose[:, 0] - W[k, 0]) / d  # x moves by the same time law
+        sigma = (s.poses[:, 0] - W[k, 0]) / d  # x moves by the same time law
         want = Rs @ Rotation.from_rotvec(sigma[:, None] * rotvec).as_matrix()
-        assert np.allclose(rotation_matrix(s.pose[:, 3:6], convention), want, atol=1e-9)
+        assert np.allclose(rotation_matrix(s.poses[:, 3:6], convention), want, atol=1e-9)
         axis = Rs @ rotvec
         assert np.allclose(s.angular_velocity, np.outer(s.velocity[:, 0] / d, axis), atol=1e-9)
         assert np.allclose(s.angular_acceleration, np.outer(s.acceleration[:, 0] / d, axis), atol=1e-9)
         Rd = (
-            rotation_matrix(m.at(t + h).pose[:, 3:6], convention)
-            - rotation_matrix(m.at(t - h).pose[:, 3:6], convention)
+            rotation_matrix(m.at(t + h).poses[:, 3:6], convention)
+            - rotation_matrix(m.at(t - h).poses[:, 3:6], convention)
         ) / (2 * h)
-        omega = Rd @ np.swapaxes(rotation_matrix(s.pose[:, 3:6], convention), 1, 2)
+        omega = Rd @ np.swapaxes(rotation_matrix(s.poses[:, 3:6], convention), 1, 2)
         assert np.allclose(s.angular_velocity, _skew(omega), atol=1e-5 * (1 + np.abs(s.angular_velocity).max()))
     # continuous: no 2π jump (each sample step within the largest rate times the time step;
     # near the gimbal lock the angles do move fast)
     dense = m.at(np.linspace(0, m.duration, 2001))
-    step = np.abs(np.diff(dense.pose[:, 3:6], axis=0)).max()
+    step = np.abs(np.diff(dense.poses[:, 3:6], axis=0)).max()
     assert step <= 1.5 * np.abs(dense.velocity[:, 3:6]).max() * m.duration / 2000 + 1e-12
 
 
 def test_axis_rotation_refusals():
     W = _spatial_waypoints(SPATIAL, [[0.0, 1.4, 0.0], [math.pi, math.pi - 1.8, math.pi]])  # Ry(1.4) → Ry(1.8)
     with pytest.raises(TrajectoryError, match="segment 1 turns through the gimbal lock of the xyz-fixed angles"):
-        trajectory_from_waypoints(SPATIAL, W, 1.0, rotation="axis")
+        trajectory_from_waypoints(SPATIAL, W, durations=1.0, rotation="axis")
     W = _spatial_waypoints(SPATIAL, [[0.0, 0.1, 0.0], [0.2, 0.3, 0.1]])
     for kwargs, message in [
         (dict(law="cubic", via="average", rotation="axis"), "rotation='axis' stops the turn at every waypoint"),
@@ -131,11 +132,11 @@ def test_axis_rotation_refusals():
         (dict(rotation="quaternion"), "unknown rotation 'quaternion'"),
     ]:
         with pytest.raises(TrajectoryError, match=message):
-            trajectory_from_waypoints(SPATIAL, W, 1.0, **kwargs)
+            trajectory_from_waypoints(SPATIAL, W, durations=1.0, **kwargs)
     with pytest.raises(TrajectoryError, match="stops the turn at every waypoint and is timed by durations"):
         trajectory_from_waypoints(SPATIAL, W, rotation="axis", max_velocity=1.0, max_acceleration=1.0)
     with pytest.raises(TrajectoryError, match="rotation='axis' turns a spatial rigid platform"):
-        trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0.0], [0.4, 0.3, 1.0]], 1.0, rotation="axis")
+        trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0.0], [0.4, 0.3, 1.0]], durations=1.0, rotation="axis")
     # translations may move through a waypoint while the turn stops there
     m = trajectory_from_waypoints(
         SPATIAL, W, 1.0, law="cubic", velocities=[[0.1, 0, 0, 0, 0, 0], [0] * 6], rotation="axis"
@@ -144,12 +145,12 @@ def test_axis_rotation_refusals():
 
 
 def test_planar_and_point_mass_angular_rates():
-    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, -0.2], [0.6, 0.5, 0.4]], 2.0)
+    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, -0.2], [0.6, 0.5, 0.4]], durations=2.0)
     s = m.sample(50)
-    assert s.angular_velocity.shape == (len(s.time), 1)
+    assert s.angular_velocity.shape == (len(s.times), 1)
     assert np.array_equal(s.angular_velocity[:, 0], s.velocity[:, 2])  # ω = θ̇
     assert np.array_equal(s.angular_acceleration[:, 0], s.acceleration[:, 2])
-    point = trajectory_from_waypoints(AGRICULTURE, [[0, 0.3], [0.1, 0.5]], 1.0).sample(10)
+    point = trajectory_from_waypoints(AGRICULTURE, [[0, 0.3], [0.1, 0.5]], durations=1.0).sample(10)
     assert point.angular_velocity.shape == (11, 0)
 
 
@@ -158,17 +159,17 @@ def test_angles_take_the_short_way_across_pi(convention):
     robot = ROBOTS[convention]
     start, end = [3.0, 0.3, -3.1], [-3.0, 0.2, 3.05]
     W = _spatial_waypoints(robot, [start, end])
-    m = trajectory_from_waypoints(robot, W, 1.0)
+    m = trajectory_from_waypoints(robot, W, durations=1.0)
     s = m.sample(200)
     # each angle moves by less than π: 3.0 → 2π − 3.0 (0.283 rad), −3.1 → 3.05 − 2π (0.133 rad)
-    travel = np.abs(s.pose[-1, 3:6] - s.pose[0, 3:6])
+    travel = np.abs(s.poses[-1, 3:6] - s.poses[0, 3:6])
     assert travel == pytest.approx([2 * math.pi - 6.0, 0.1, 2 * math.pi - 6.15])
-    assert np.all(np.abs(np.diff(s.pose[:, 3:6], axis=0)) < 0.01)
+    assert np.all(np.abs(np.diff(s.poses[:, 3:6], axis=0)) < 0.01)
     # the end is the waypoint's rotation
-    assert np.allclose(rotation_matrix(s.pose[-1, 3:6], convention), rotation_matrix(end, convention), atol=1e-12)
+    assert np.allclose(rotation_matrix(s.poses[-1, 3:6], convention), rotation_matrix(end, convention), atol=1e-12)
     # without unwrapping the long way is kept (a deliberate turn)
-    long = trajectory_from_waypoints(robot, W, 1.0, unwrap=False).sample(200)
-    assert np.abs(long.pose[-1, 3] - long.pose[0, 3]) == pytest.approx(6.0)
+    long = trajectory_from_waypoints(robot, W, durations=1.0, unwrap=False).sample(200)
+    assert np.abs(long.poses[-1, 3] - long.poses[0, 3]) == pytest.approx(6.0)
 
 
 @settings(max_examples=60, deadline=None)
@@ -184,7 +185,7 @@ def test_unwrap_keeps_each_rotation_and_steps_at_most_pi(orientations):
 
 
 def test_planar_angle_unwraps_too():
-    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 3.1], [0.3, 0.3, -3.1]], 1.0)
+    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 3.1], [0.3, 0.3, -3.1]], durations=1.0)
     assert m.waypoints[1, 2] == pytest.approx(2 * math.pi - 3.1)
 
 
@@ -193,14 +194,14 @@ def test_gimbal_lock_waypoint_gives_finite_exact_rates():
     # needs no inverse: the rates stay finite and match R(q(t))
     for robot, locked in ((SPATIAL, [0.2, math.pi / 2, -0.4]), (ROBOCRANE, [0.7, 0.0, 0.3])):
         W = _spatial_waypoints(robot, [[0.0, 0.3, 0.0], locked, [0.3, 0.2, 0.1]])
-        m = trajectory_from_waypoints(robot, W, 1.0, law="cubic", via="spline")
+        m = trajectory_from_waypoints(robot, W, durations=1.0, law="cubic", via="spline")
         h = 1e-6
         s = m.at([1.0])
         Rd = (
-            rotation_matrix(m.at([1 + h]).pose[:, 3:6], robot.orientation)
-            - rotation_matrix(m.at([1 - h]).pose[:, 3:6], robot.orientation)
+            rotation_matrix(m.at([1 + h]).poses[:, 3:6], robot.orientation)
+            - rotation_matrix(m.at([1 - h]).poses[:, 3:6], robot.orientation)
         ) / (2 * h)
-        omega = Rd @ np.swapaxes(rotation_matrix(s.pose[:, 3:6], robot.orientation), 1, 2)
+        omega = Rd @ np.swapaxes(rotation_matrix(s.poses[:, 3:6], robot.orientation), 1, 2)
         assert np.all(np.isfinite(s.angular_velocity))
         assert np.allclose(s.angular_velocity, _skew(omega), atol=1e-6)
 
@@ -213,10 +214,10 @@ def test_via_points_continuity_and_independent_spline():
     t = np.concatenate([[0], np.cumsum(d)])
     eps = 1e-9
     for law, via in (("cubic", "average"), ("quintic", "average"), ("cubic", "spline"), ("quintic", "stop")):
-        m = trajectory_from_waypoints(SPATIAL, W, d, law=law, via=via)
+        m = trajectory_from_waypoints(SPATIAL, W, durations=d, law=law, via=via)
         left, right = m.at(t[1:-1] - eps), m.at(t[1:-1] + eps)
-        assert np.allclose(left.pose, W[1:-1], atol=1e-8)
-        assert np.allclose(left.pose, right.pose, atol=1e-8)
+        assert np.allclose(left.poses, W[1:-1], atol=1e-8)
+        assert np.allclose(left.poses, right.poses, atol=1e-8)
         assert np.allclose(left.velocity, right.velocity, atol=1e-6)
         if law == "quintic" or via == "spline":
             assert np.allclose(left.acceleration, right.acceleration, atol=1e-6)
@@ -226,15 +227,15 @@ def test_via_points_continuity_and_independent_spline():
             slopes = np.diff(W, axis=0) / np.array(d)[:, None]
             assert np.allclose(left.velocity, (slopes[:-1] + slopes[1:]) / 2, atol=1e-6)
     # the spline against scipy's clamped cubic spline
-    m = trajectory_from_waypoints(SPATIAL, W, d, law="cubic", via="spline")
+    m = trajectory_from_waypoints(SPATIAL, W, durations=d, law="cubic", via="spline")
     ref = CubicSpline(t, W, bc_type="clamped")
     tt = np.linspace(0, t[-1], 157)
     s = m.at(tt)
-    assert np.allclose(s.pose, ref(tt), atol=1e-12)
+    assert np.allclose(s.poses, ref(tt), atol=1e-12)
     assert np.allclose(s.velocity, ref(tt, 1), atol=1e-10)
     assert np.allclose(s.acceleration, ref(tt, 2), atol=1e-9)
     # a cubic with average velocities has an acceleration jump at the via points
-    m = trajectory_from_waypoints(SPATIAL, W, d, law="cubic", via="average")
+    m = trajectory_from_waypoints(SPATIAL, W, durations=d, law="cubic", via="average")
     assert not np.allclose(m.at(t[1:-1] - eps).acceleration, m.at(t[1:-1] + eps).acceleration, atol=1e-3)
 
 
@@ -243,14 +244,14 @@ def test_jointed_platform_joint_coordinates():
     m = trajectory_from_robot(JOINTED, "sim-a", duration=4.0)
     assert list(m.times) == [0.0, 2.0, 4.0]  # steps [100, 100] share the duration equally
     s = m.sample(100)
-    first, second = s.time <= 2.0, s.time >= 2.0
-    assert np.all(s.pose[first, 6] == 2.0) and np.all(s.velocity[first, 6] == 0.0)
+    first, second = s.times <= 2.0, s.times >= 2.0
+    assert np.all(s.poses[first, 6] == 2.0) and np.all(s.velocity[first, 6] == 0.0)
     # second move: a straight line in pose space, s23 rises as fast as z falls
-    assert np.allclose(s.pose[second, 6] - 2.0, -(s.pose[second, 2] - 2.5), atol=1e-12)
+    assert np.allclose(s.poses[second, 6] - 2.0, -(s.poses[second, 2] - 2.5), atol=1e-12)
     lo, hi = JOINTED.joint_limits[0]
-    assert s.pose[:, 6].min() >= lo and s.pose[:, 6].max() <= hi
-    tau = (s.time[second] - 2.0) / 2.0
-    assert np.allclose(s.pose[second, 6], 2.0 + 2.0 * (10 * tau**3 - 15 * tau**4 + 6 * tau**5), atol=1e-12)
+    assert s.poses[:, 6].min() >= lo and s.poses[:, 6].max() <= hi
+    tau = (s.times[second] - 2.0) / 2.0
+    assert np.allclose(s.poses[second, 6], 2.0 + 2.0 * (10 * tau**3 - 15 * tau**4 + 6 * tau**5), atol=1e-12)
 
 
 def test_robot_trajectory_steps_share_the_duration():
@@ -258,7 +259,7 @@ def test_robot_trajectory_steps_share_the_duration():
     robot = JOINTED.model_copy(update={"trajectories": {"uneven": tr}})
     m = trajectory_from_robot(robot, "uneven", duration=4.0, law="cubic")
     assert m.times.tolist() == [0.0, 1.0, 4.0]
-    assert np.allclose(m.at(m.times).pose, tr.waypoints)
+    assert np.allclose(m.at(m.times).poses, tr.waypoints)
 
 
 def test_a_spline_that_overshoots_a_joint_limit_is_refused():
@@ -266,8 +267,8 @@ def test_a_spline_that_overshoots_a_joint_limit_is_refused():
         [[5, 5, 4.5, 0, 0, 0, 0.5], [5, 5, 4.0, 0, 0, 0, 4.4], [5, 5, 3.5, 0, 0, 0, 4.5], [5, 5, 3.0, 0, 0, 0, 0.5]]
     )
     with pytest.raises(TrajectoryError, match=r"joint s23 reaches .* outside its limits \[0.4, 4.5\]"):
-        trajectory_from_waypoints(JOINTED, W, [1.0, 0.2, 1.0], law="cubic", via="spline")
-    trajectory_from_waypoints(JOINTED, W, [1.0, 0.2, 1.0], law="cubic")  # stopping at each: inside
+        trajectory_from_waypoints(JOINTED, W, durations=[1.0, 0.2, 1.0], law="cubic", via="spline")
+    trajectory_from_waypoints(JOINTED, W, durations=[1.0, 0.2, 1.0], law="cubic")  # stopping at each: inside
 
 
 def test_robot_trajectory_with_speed_and_dwell():
@@ -280,7 +281,7 @@ def test_robot_trajectory_with_speed_and_dwell():
     # held at each waypoint for the dwell, at rest
     for k, start in enumerate(np.concatenate([[0], np.cumsum(moves + tr.dwell)])):
         s = m.at(np.linspace(start, start + tr.dwell, 7))
-        assert np.allclose(s.pose, P[k]) and np.allclose(s.velocity, 0)
+        assert np.allclose(s.poses, P[k]) and np.allclose(s.velocity, 0)
     with pytest.raises(TrajectoryError, match="dwells at its waypoints"):
         trajectory_from_robot(robot, "timed", law="cubic", via="average")
     # the agriculture robot's own trajectory gives a dwell but no speed
@@ -340,21 +341,38 @@ def test_robot_trajectory_reads_the_file_once_for_every_user():
 
 
 def test_samples_and_immutability():
-    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0], [0.6, 0.5, 0.4], [0.4, 0.6, 0.0]], [1.0, 0.75])
+    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0], [0.6, 0.5, 0.4], [0.4, 0.6, 0.0]], durations=[1.0, 0.75])
     s = m.sample(4)
-    assert np.allclose(s.time, [0, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75])
+    assert np.allclose(s.times, [0, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75])
     s = m.sample(3)  # 1.75 s is not a whole number of steps: the end is added
-    assert np.allclose(s.time, [0, 1 / 3, 2 / 3, 1.0, 4 / 3, 5 / 3, 1.75])
-    assert np.allclose(s.pose[-1], m.waypoints[-1])
+    assert np.allclose(s.times, [0, 1 / 3, 2 / 3, 1.0, 4 / 3, 5 / 3, 1.75])
+    assert np.allclose(s.poses[-1], m.waypoints[-1])
     shuffled = m.at([1.2, 0.1, 0.5])
-    assert np.allclose(shuffled.pose, m.at([1.2]).pose.tolist() + m.at([0.1]).pose.tolist() + m.at([0.5]).pose.tolist())
+    assert np.allclose(
+        shuffled.poses, m.at([1.2]).poses.tolist() + m.at([0.1]).poses.tolist() + m.at([0.5]).poses.tolist()
+    )
     assert s.pose_names == ("x", "y", "theta")
-    for a in (s.pose, s.velocity, s.angular_velocity, m.coefficients, m.waypoints, m.times):
+    for a in (s.poses, s.velocity, s.angular_velocity, m.coefficients, m.waypoints, m.times):
         with pytest.raises(ValueError):
             a[0] = 1.0
     with pytest.raises(AttributeError):
         m.law = "cubic"  # type: ignore[misc]
     assert isinstance(m, Motion) and m.duration == 1.75
+
+
+def test_results_are_frozen_and_json():
+    """docs/architecture.md §2.7: ``as_dict`` in plain JSON types, the values round-trip."""
+    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0], [0.6, 0.5, 0.4]], durations=[1.5], law="cubic")
+    s = m.sample(10)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        s.times = s.times[:1]  # type: ignore[misc]
+    back = json.loads(json.dumps(s.as_dict(), allow_nan=False))
+    assert back["times"] == s.times.tolist() and back["poses"] == s.poses.tolist()
+    assert back["angular_velocity"] == s.angular_velocity.tolist() and back["pose_names"] == ["x", "y", "theta"]
+    motion = json.loads(json.dumps(m.as_dict(), allow_nan=False))
+    assert motion["robot"] == PLANAR.name and motion["law"] == "cubic" and motion["duration"] == 1.5
+    assert motion["waypoints"] == [[0.3, 0.3, 0], [0.6, 0.5, 0.4]] and motion["times"] == [0.0, 1.5]
+    assert np.array(motion["coefficients"]).shape == m.coefficients.shape
 
 
 BAD = [
@@ -403,7 +421,7 @@ def test_bad_input_raises_one_clear_typed_error(kwargs, message):
 
 
 def test_bad_samples():
-    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0], [0.4, 0.3, 0]], 1.0)
+    m = trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0], [0.4, 0.3, 0]], durations=1.0)
     for rate in (0, -1, np.nan, np.inf, "10"):
         with pytest.raises(TrajectoryError, match="sampling rate must be a finite number > 0"):
             m.sample(rate)  # type: ignore[arg-type]
@@ -417,9 +435,9 @@ def test_bad_samples():
 
 def test_joint_limits_of_waypoints_and_position_only_waypoints():
     with pytest.raises(TrajectoryError, match=r"waypoint 2: joint s23 = 5 is outside its limits"):
-        trajectory_from_waypoints(JOINTED, [[5, 5, 4, 0, 0, 0, 2], [5, 5, 4, 0, 0, 0, 5]], 1.0)
+        trajectory_from_waypoints(JOINTED, [[5, 5, 4, 0, 0, 0, 2], [5, 5, 4, 0, 0, 0, 5]], durations=1.0)
     # positions are completed from the first reference pose
-    m = trajectory_from_waypoints(JOINTED, [[5, 5, 4], [5, 5, 3]], 1.0)
+    m = trajectory_from_waypoints(JOINTED, [[5, 5, 4], [5, 5, 3]], durations=1.0)
     assert np.allclose(m.waypoints[:, 3:], [[0, 0, 0, 2], [0, 0, 0, 2]])
     bare = robot_from_dict(
         {
@@ -429,4 +447,10 @@ def test_joint_limits_of_waypoints_and_position_only_waypoints():
             "cables": [{"exit": [0, 0], "anchor": [0, 0]}, {"exit": [1, 0], "anchor": [0, 0]}],
         }
     )
-    assert np.allclose(trajectory_from_waypoints(bare, [[0, 1], [1, 1]], 1.0).waypoints[:, 2], 0.0)
+    assert np.allclose(trajectory_from_waypoints(bare, [[0, 1], [1, 1]], durations=1.0).waypoints[:, 2], 0.0)
+
+
+@pytest.mark.parametrize("waypoints", ["ab", [[0.1, 0.2]], np.zeros((2, 2, 3))])
+def test_unwrap_angles_refuses_what_is_not_poses(waypoints):
+    with pytest.raises(TrajectoryError):
+        unwrap_angles(PLANAR, waypoints)

@@ -55,7 +55,7 @@ def problems(draw, m_choices=(2, 3, 6), max_n=9):
 @given(problems())
 def test_static_equilibrium_agrees_with_lp(prob):
     W, tmin, tmax, w = prob
-    assert static_equilibrium(W[None], tmin, tmax, w[None])[0] == lp_equilibrium(W, tmin, tmax, w)
+    assert static_equilibrium(W[None], w[None], tension_bounds=(tmin, tmax))[0] == lp_equilibrium(W, tmin, tmax, w)
 
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -65,7 +65,7 @@ def test_box_feasibility_agrees_with_lp_over_vertices(prob, half):
     m = W.shape[0]
     box = BoxWrenchSet.around(np.zeros(m), half[:m])
     expected = all(lp_equilibrium(W, tmin, tmax, w + v) for v in box.vertices())
-    assert wrench_feasible(W[None], tmin, tmax, box, offset=w)[0] == expected
+    assert wrench_feasible(W[None], box, tension_bounds=(tmin, tmax), wrench=w)[0] == expected
 
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -74,7 +74,7 @@ def test_spatial_box_feasibility_agrees_with_lp(prob, half):
     W, tmin, tmax, w = prob
     box = BoxWrenchSet.around(np.zeros(6), half)
     expected = all(lp_equilibrium(W, tmin, tmax, w + v) for v in np.unique(box.vertices(), axis=0))
-    assert wrench_feasible(W[None], tmin, tmax, box, offset=w)[0] == expected
+    assert wrench_feasible(W[None], box, tension_bounds=(tmin, tmax), wrench=w)[0] == expected
 
 
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -93,11 +93,11 @@ def test_random_spatial_batch_agrees_with_lp():
     tau = rng.uniform(0, 9, size=(N, 8))
     w = -np.einsum("kij,kj->ki", W, tau)  # balanced by tau, which may violate the bounds
     box = BoxWrenchSet.around(np.zeros(6), np.full(6, 0.3))
-    got = wrench_feasible(W, tmin, tmax, box, offset=w)
+    got = wrench_feasible(W, box, tension_bounds=(tmin, tmax), wrench=w)
     expected = [all(lp_equilibrium(W[k], tmin, tmax, w[k] + v) for v in box.vertices()) for k in range(N)]
     assert 0 < got.sum() < N
     assert got.tolist() == expected
-    got_static = static_equilibrium(W, tmin, tmax, w)
+    got_static = static_equilibrium(W, w, tension_bounds=(tmin, tmax))
     assert got_static.tolist() == [lp_equilibrium(W[k], tmin, tmax, w[k]) for k in range(N)]
     assert np.all(got <= got_static)  # the box contains the single wrench
 
@@ -108,15 +108,15 @@ def test_signs_on_a_hand_example():
     W = u[None]
     lo, hi = np.zeros(2), np.full(2, 100.0)
     weight = np.array([0.0, -9.81])  # external wrench: gravity pulls down
-    assert static_equilibrium(W, lo, hi, weight)[0]
-    assert not static_equilibrium(W, lo, hi, -weight)[0]  # cables cannot push down
+    assert static_equilibrium(W, weight, tension_bounds=(lo, hi))[0]
+    assert not static_equilibrium(W, -weight, tension_bounds=(lo, hi))[0]  # cables cannot push down
     # each cable carries 9.81/sqrt(2) = 6.94 N: a bound of 6.9 N is too small
-    assert not static_equilibrium(W, lo, np.full(2, 6.9), weight)[0]
-    assert static_equilibrium(W, lo, np.full(2, 7.0), weight)[0]
+    assert not static_equilibrium(W, weight, tension_bounds=(lo, np.full(2, 6.9)))[0]
+    assert static_equilibrium(W, weight, tension_bounds=(lo, np.full(2, 7.0)))[0]
     # a box of side wrenches: ±1 N sideways needs tension differences within bounds
     box = BoxWrenchSet.around([0.0, 0.0], [1.0, 0.0])
-    assert wrench_feasible(W, lo, hi, box, offset=weight)[0]
-    assert not wrench_feasible(W, lo, np.full(2, 7.0), box, offset=weight)[0]
+    assert wrench_feasible(W, box, tension_bounds=(lo, hi), wrench=weight)[0]
+    assert not wrench_feasible(W, box, tension_bounds=(lo, np.full(2, 7.0)), wrench=weight)[0]
     assert not wrench_closure(W)[0]
 
 
@@ -132,20 +132,20 @@ def test_infinite_upper_bounds_and_zero_dot_products():
     """0·inf must be 0: a column orthogonal to a facet normal with tmax = inf."""
     W = np.array([[1.0, 0.0, -1.0, 0.0], [0.0, 1.0, 0.0, -1.0]])[None]
     lo, hi = np.ones(4), np.full(4, np.inf)
-    assert static_equilibrium(W, lo, hi, [5.0, -3.0])[0]
-    assert wrench_feasible(W, lo, hi, BoxWrenchSet.around([0, 0], [100, 100]))[0]
+    assert static_equilibrium(W, [5.0, -3.0], tension_bounds=(lo, hi))[0]
+    assert wrench_feasible(W, BoxWrenchSet.around([0, 0], [100, 100]), tension_bounds=(lo, hi))[0]
     hi2 = np.array([np.inf, 2.0, 2.0, np.inf])  # column 3 (pushes -x) at most 2
-    assert not static_equilibrium(W, lo, hi2, [5.0, 0.0])[0]  # needs t1 - t3 = -5
-    assert static_equilibrium(W, lo, hi2, [1.0, 0.0])[0]
+    assert not static_equilibrium(W, [5.0, 0.0], tension_bounds=(lo, hi2))[0]  # needs t1 - t3 = -5
+    assert static_equilibrium(W, [1.0, 0.0], tension_bounds=(lo, hi2))[0]
 
 
 def test_constant_tension_cables_move_into_the_offset():
     W = np.array([[1.0, -1.0, 0.0, 0.0], [0.0, 0.0, 1.0, -1.0]])[None]
     lo = np.array([2.0, 2.0, 0.0, 0.0])
     hi = np.array([2.0, 5.0, 3.0, 3.0])  # cable 1 carries exactly 2 N
-    assert static_equilibrium(W, lo, hi, [1.0, 0.0])[0]  # t2 = 3
-    assert not static_equilibrium(W, lo, hi, [-1.0, 0.0])[0]  # t2 = 1 < 2
-    assert static_equilibrium(W, lo, hi, [1.0, 0.0])[0] == lp_equilibrium(W[0], lo, hi, [1.0, 0.0])
+    assert static_equilibrium(W, [1.0, 0.0], tension_bounds=(lo, hi))[0]  # t2 = 3
+    assert not static_equilibrium(W, [-1.0, 0.0], tension_bounds=(lo, hi))[0]  # t2 = 1 < 2
+    assert static_equilibrium(W, [1.0, 0.0], tension_bounds=(lo, hi))[0] == lp_equilibrium(W[0], lo, hi, [1.0, 0.0])
 
 
 class GenericBox(WrenchSet):
@@ -173,8 +173,10 @@ def test_generic_support_path_matches_the_kernel(m, n):
         PolytopeWrenchSet(rng.normal(scale=0.2, size=(5, m))),
     ]
     for ws in sets:
-        fast = wrench_feasible(W, lo, hi, ws, w)
-        generic = wrench_feasible(W, lo, hi, GenericBox(ws) if isinstance(ws, BoxWrenchSet) else _wrap(ws), w)
+        fast = wrench_feasible(W, ws, tension_bounds=(lo, hi), wrench=w)
+        generic = wrench_feasible(
+            W, GenericBox(ws) if isinstance(ws, BoxWrenchSet) else _wrap(ws), tension_bounds=(lo, hi), wrench=w
+        )
         assert 0 < fast.sum() < N
         assert np.array_equal(fast, generic)
 
@@ -199,7 +201,7 @@ def test_ellipsoid_between_inscribed_and_circumscribed_boxes():
     ell = EllipsoidWrenchSet(np.zeros(m), np.diag(r**2))
     inner = BoxWrenchSet.around(np.zeros(m), r / np.sqrt(m))  # inside the ellipsoid
     outer = BoxWrenchSet.around(np.zeros(m), r)  # contains the ellipsoid
-    f_ell, f_in, f_out = (wrench_feasible(W, lo, hi, s, w) for s in (ell, inner, outer))
+    f_ell, f_in, f_out = (wrench_feasible(W, s, tension_bounds=(lo, hi), wrench=w) for s in (ell, inner, outer))
     assert np.all(f_out <= f_ell) and np.all(f_ell <= f_in)
     assert f_out.sum() < f_in.sum()
 
@@ -211,7 +213,8 @@ def test_polytope_equals_box_with_the_same_vertices():
     w = -np.einsum("kij,kj->ki", W, rng.uniform(0, 6, (300, 5)))
     box = BoxWrenchSet([-0.2, -0.1, 0.0], [0.3, 0.1, 0.4])
     assert np.array_equal(
-        wrench_feasible(W, lo, hi, box, w), wrench_feasible(W, lo, hi, PolytopeWrenchSet(box.vertices()), w)
+        wrench_feasible(W, box, tension_bounds=(lo, hi), wrench=w),
+        wrench_feasible(W, PolytopeWrenchSet(box.vertices()), tension_bounds=(lo, hi), wrench=w),
     )
 
 
@@ -219,18 +222,24 @@ def test_rank_deficient_structure_matrices():
     """Flat zonotopes: a single wrench goes to the LP, a full-dimensional set is infeasible."""
     W = np.array([[1.0, 0.0, -1.0], [0.0, 0.0, 0.0], [0.0, 1.0, 0.0]])  # rank 2 in R^3
     lo, hi = np.zeros(3), np.full(3, 10.0)
-    assert static_equilibrium(W[None], lo, hi, [1.0, 0.0, -2.0])[0]
-    assert not static_equilibrium(W[None], lo, hi, [1.0, 0.5, -2.0])[0]  # out of range(W)
-    assert not wrench_feasible(W[None], lo, hi, BoxWrenchSet.around(np.zeros(3), [0.1, 0.1, 0.1]), [1.0, 0.0, -2.0])[0]
+    assert static_equilibrium(W[None], [1.0, 0.0, -2.0], tension_bounds=(lo, hi))[0]
+    assert not static_equilibrium(W[None], [1.0, 0.5, -2.0], tension_bounds=(lo, hi))[0]  # out of range(W)
+    assert not wrench_feasible(
+        W[None], BoxWrenchSet.around(np.zeros(3), [0.1, 0.1, 0.1]), tension_bounds=(lo, hi), wrench=[1.0, 0.0, -2.0]
+    )[0]
     # a box flat along the missing direction lies in the plane: decided by vertex LPs
     flat = BoxWrenchSet.around(np.zeros(3), [0.5, 0.0, 0.5])
-    assert wrench_feasible(W[None], lo, hi, flat, [1.0, 0.0, -2.0])[0]
-    assert not wrench_feasible(W[None], lo, hi, flat, [1.0, 0.0, -0.2])[0]  # needs t2 = -0.3
+    assert wrench_feasible(W[None], flat, tension_bounds=(lo, hi), wrench=[1.0, 0.0, -2.0])[0]
+    assert not wrench_feasible(W[None], flat, tension_bounds=(lo, hi), wrench=[1.0, 0.0, -0.2])[0]  # needs t2 = -0.3
     # fewer cables than wrench components (under-constrained): 3 cables, m = 6
     W6 = np.zeros((6, 3))
     W6[:3] = np.eye(3)
-    assert static_equilibrium(W6[None], np.zeros(3), np.full(3, np.inf), [-1.0, -2.0, -3.0, 0, 0, 0])[0]
-    assert not static_equilibrium(W6[None], np.zeros(3), np.full(3, np.inf), [1.0, -2.0, -3.0, 0, 0, 0])[0]
+    assert static_equilibrium(W6[None], [-1.0, -2.0, -3.0, 0, 0, 0], tension_bounds=(np.zeros(3), np.full(3, np.inf)))[
+        0
+    ]
+    assert not static_equilibrium(
+        W6[None], [1.0, -2.0, -3.0, 0, 0, 0], tension_bounds=(np.zeros(3), np.full(3, np.inf))
+    )[0]
     assert not wrench_closure(W6[None])[0]
 
 
@@ -238,7 +247,7 @@ def test_facet_normals_are_unit_and_orthogonal_to_their_columns():
     rng = np.random.default_rng(5)
     W = rng.normal(size=(10, 6, 8))
     W[0, :, 3] = W[0, :, 1] * 2  # dependent pair: combinations with both have no normal
-    normals, hz, valid = facet_normals(W, np.zeros(8), np.ones(8))
+    normals, hz, valid = facet_normals(W, tension_bounds=(np.zeros(8), np.ones(8)))
     import itertools
 
     combos = list(itertools.combinations(range(8), 5))
@@ -263,11 +272,11 @@ def test_facet_normals_are_unit_and_orthogonal_to_their_columns():
 def test_bad_inputs():
     W = np.eye(2)[None]
     with pytest.raises(TautError):
-        wrench_feasible(W, [1, 1], [0, 0], SingleWrench([0.0, 0.0]))
+        wrench_feasible(W, SingleWrench([0.0, 0.0]), tension_bounds=([1, 1], [0, 0]))
     with pytest.raises(TautError):
-        wrench_feasible(W, [0, 0], [1, 1], SingleWrench([0.0, 0.0, 0.0]))
+        wrench_feasible(W, SingleWrench([0.0, 0.0, 0.0]), tension_bounds=([0, 0], [1, 1]))
     with pytest.raises(TautError):
-        wrench_feasible(W, [0, 0], [1, 1], SingleWrench([0.0, 0.0]), offset=np.zeros((3, 2)))
+        wrench_feasible(W, SingleWrench([0.0, 0.0]), tension_bounds=([0, 0], [1, 1]), wrench=np.zeros((3, 2)))
     with pytest.raises(TautError):
         wrench_closure(np.full((1, 2, 3), np.nan))
 
@@ -280,10 +289,12 @@ def test_the_lp_method_agrees_with_the_oracles(prob, half):
     W, tmin, tmax, w = prob
     m = W.shape[0]
     assert wrench_closure(W[None], method="lp")[0] == lp_closure(W)
-    assert static_equilibrium(W[None], tmin, tmax, w[None], method="lp")[0] == lp_equilibrium(W, tmin, tmax, w)
+    assert static_equilibrium(W[None], w[None], tension_bounds=(tmin, tmax), method="lp")[0] == lp_equilibrium(
+        W, tmin, tmax, w
+    )
     box = BoxWrenchSet.around(np.zeros(m), half[:m])
     expected = all(lp_equilibrium(W, tmin, tmax, w + v) for v in np.unique(box.vertices(), axis=0))
-    assert wrench_feasible(W[None], tmin, tmax, box, offset=w, method="lp")[0] == expected
+    assert wrench_feasible(W[None], box, tension_bounds=(tmin, tmax), wrench=w, method="lp")[0] == expected
 
 
 def test_many_cables_are_decided_by_lps_and_an_ellipsoid_is_refused_there():
@@ -295,12 +306,12 @@ def test_many_cables_are_decided_by_lps_and_an_ellipsoid_is_refused_there():
     tau = rng.uniform(1.0, 2.0, (4, 2000))
     w = -np.einsum("kij,kj->ki", W, tau)
     assert wrench_closure(W).tolist() == [lp_closure(W[k]) for k in range(4)] == [False, True, True, True]
-    got = static_equilibrium(W, 1.0, 2.0, w)
+    got = static_equilibrium(W, w, tension_bounds=(1.0, 2.0))
     assert got.tolist() == [lp_equilibrium(W[k], np.ones(2000), np.full(2000, 2.0), w[k]) for k in range(4)]
     assert got.all()
     ellipsoid = EllipsoidWrenchSet(np.zeros(3), np.eye(3))
     with pytest.raises(TautError, match=r"C\(2000, 2\) = 2e\+06 .* box, polytope"):
-        wrench_feasible(W, 1.0, 2.0, ellipsoid, w)
+        wrench_feasible(W, ellipsoid, tension_bounds=(1.0, 2.0), wrench=w)
     with pytest.raises(TautError, match="unknown method"):
         wrench_closure(W, method="simplex")
 
@@ -315,7 +326,31 @@ def test_under_constrained_poses_are_decided_in_one_closed_form():
     tau = rng.uniform(-0.5, 2.0, (K, n))
     w = -np.einsum("kmn,kn->km", W, tau)
     w[::2] += 1e-3 * rng.normal(size=(K // 2, m))
-    got = static_equilibrium(W, 0.0, 1.5, w)
+    got = static_equilibrium(W, w, tension_bounds=(0.0, 1.5))
     expected = [lp_equilibrium(W[k], np.zeros(n), np.full(n, 1.5), w[k]) for k in range(K)]
     assert got.tolist() == expected
     assert 20 < got.sum() < K // 2
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda: static_equilibrium("ab", [0.0, 0.0], tension_bounds=(0, 1)),
+        lambda: static_equilibrium(np.eye(2), "ab", tension_bounds=(0, 1)),
+        lambda: static_equilibrium(np.eye(2), [0.0, 0.0], tension_bounds=("a", 1)),
+        lambda: static_equilibrium(np.eye(2), [0.0, 0.0], tension_bounds=([0, 0, 0], 1)),
+        lambda: static_equilibrium(np.eye(2), [0.0, 0.0], tension_bounds=None),
+        lambda: wrench_feasible(np.eye(2), "not a set", tension_bounds=(0, 1)),
+        lambda: wrench_closure("ab"),
+        lambda: SingleWrench("ab"),
+        lambda: BoxWrenchSet("a", [1.0]),
+        lambda: PolytopeWrenchSet("ab"),
+        lambda: EllipsoidWrenchSet([0.0, 0.0], "ab"),
+        lambda: SingleWrench([1.0, 2.0]).support(np.ones(3)),
+        lambda: BoxWrenchSet([0.0], [1.0]).support("x"),
+    ],
+)
+def test_bad_input_is_a_taut_error_never_a_bare_value_error(call):
+    """docs/architecture.md §2.7: bad input raises a TautError subclass."""
+    with pytest.raises(TautError):
+        call()

@@ -2,6 +2,9 @@
 on the built-in robots, agreement of the exact methods with ``scipy.optimize.linprog`` on
 random problems, known solutions, infeasible poses, shapes and bad input."""
 
+import dataclasses
+import json
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -12,6 +15,7 @@ import taut
 from taut.errors import TautError
 from taut.kinematics import structure_matrix
 from taut.model import robot_from_dict
+from taut.statics import external_wrench
 from taut.statics._tension import METHODS, TensionResult, distribute_tensions, solve_tensions
 
 EXACT = ["lp", "qp", "inf", "barycentric"]
@@ -106,6 +110,26 @@ def test_single_and_batch_shapes():
     assert np.allclose(many.tensions[1], one.tensions)
 
 
+def test_result_is_frozen_read_only_and_json():
+    robot = taut.example("planar-4cable")
+    many = distribute_tensions(robot, POSES["planar-4cable"])
+    with pytest.raises(ValueError, match="read-only"):
+        many.tensions[0, 0] = 1.0
+    with pytest.raises(ValueError, match="read-only"):
+        many.feasible[0] = False
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        many.method = "qp"  # type: ignore[misc]
+    back = json.loads(json.dumps(many.as_dict(), allow_nan=False))
+    assert back == {
+        "tensions": many.tensions.tolist(),
+        "feasible": many.feasible.tolist(),
+        "status": many.status.tolist(),
+        "method": "lp",
+    }
+    one = distribute_tensions(robot, POSES["planar-4cable"][1], method="qp").as_dict()
+    assert one["feasible"] is True and one["status"] == "optimal" and len(one["tensions"]) == 4
+
+
 def test_explicit_wrench_shared_by_poses():
     robot = taut.example("spatial-8cable")
     res = distribute_tensions(robot, POSES["spatial-8cable"], wrench=np.zeros(6), method="qp")
@@ -131,37 +155,43 @@ def test_known_solutions_one_dof():
     W = np.array([[[1.0, 2.0, 3.0]]])
     w = np.array([[-6.0]])
     lo, hi = np.zeros(3), np.full(3, 10.0)
-    assert np.allclose(solve_tensions(W, w, lo, hi, "lp").tensions, [[0, 0, 2]])
-    assert np.allclose(solve_tensions(W, w, lo, hi, "qp").tensions, [np.array([1, 2, 3]) * 6 / 14])
-    assert np.allclose(solve_tensions(W, w, lo, hi, "inf").tensions, [[1, 1, 1]])
+    assert np.allclose(solve_tensions(W, w, tension_bounds=(lo, hi), method="lp").tensions, [[0, 0, 2]])
+    assert np.allclose(
+        solve_tensions(W, w, tension_bounds=(lo, hi), method="qp").tensions, [np.array([1, 2, 3]) * 6 / 14]
+    )
+    assert np.allclose(solve_tensions(W, w, tension_bounds=(lo, hi), method="inf").tensions, [[1, 1, 1]])
     # the feasible set is the triangle (6,0,0), (0,3,0), (0,0,2)
-    assert np.allclose(solve_tensions(W, w, lo, hi, "barycentric").tensions, [[2, 1, 2 / 3]])
+    assert np.allclose(solve_tensions(W, w, tension_bounds=(lo, hi), method="barycentric").tensions, [[2, 1, 2 / 3]])
 
 
 def test_improved_closed_form_succeeds_where_closed_form_gives_up():
     W, w, lo, hi = np.array([[1.0, 2.0, 3.0]]), np.array([-6.0]), np.zeros(3), np.full(3, 10.0)
-    cf = solve_tensions(W, w, lo, hi, "closed-form")
+    cf = solve_tensions(W, w, tension_bounds=(lo, hi), method="closed-form")
     assert cf.status == "not-found" and not cf.feasible and np.all(cf.tensions == 0)
-    icf = solve_tensions(W, w, lo, hi, "improved-closed-form")
+    icf = solve_tensions(W, w, tension_bounds=(lo, hi), method="improved-closed-form")
     assert icf.feasible and icf.status == "optimal"
     # cable 3 fixed at its lower bound, then the closed form on cables 1, 2 (τm = 5)
     assert np.allclose(icf.tensions, [5 - 9 / 5, 5 - 18 / 5, 0.0])
 
 
 def test_closed_form_without_upper_bound_uses_lower_bound_as_reference():
-    res = solve_tensions(np.array([[1.0, 1.0]]), np.array([-4.0]), np.ones(2), np.full(2, np.inf), "closed-form")
+    res = solve_tensions(
+        np.array([[1.0, 1.0]]), np.array([-4.0]), tension_bounds=(np.ones(2), np.full(2, np.inf)), method="closed-form"
+    )
     assert res.feasible and np.allclose(res.tensions, [2.0, 2.0])
 
 
 def test_barycentric_flat_polytope_uses_its_affine_hull():
     """Cable 3 has τ_min = τ_max: the polytope is the segment τ1 + τ2 = 4 in the plane τ3 = 2."""
-    res = solve_tensions(np.array([[1.0, 1.0, 1.0]]), np.array([-6.0]), [0, 0, 2], [10, 10, 2], "barycentric")
+    res = solve_tensions(
+        np.array([[1.0, 1.0, 1.0]]), np.array([-6.0]), tension_bounds=([0, 0, 2], [10, 10, 2]), method="barycentric"
+    )
     assert res.feasible and np.allclose(res.tensions, [2.0, 2.0, 2.0])
 
 
 def test_barycentric_needs_finite_upper_bounds():
     with pytest.raises(TautError, match="finite upper"):
-        solve_tensions(np.eye(2), [-1.0, -1.0], [0, 0], [np.inf, 1.0], "barycentric")
+        solve_tensions(np.eye(2), [-1.0, -1.0], tension_bounds=([0, 0], [np.inf, 1.0]), method="barycentric")
 
 
 def test_dependent_rows_and_columns():
@@ -169,12 +199,12 @@ def test_dependent_rows_and_columns():
     w = np.array([-3.0, -6.0])
     lo, hi = np.zeros(4), np.full(4, 5.0)
     for m in METHODS:
-        r = solve_tensions(W, w, lo, hi, m)
+        r = solve_tensions(W, w, tension_bounds=(lo, hi), method=m)
         assert r.feasible, m
         assert_balanced(W[None], w, lo, hi, r.tensions)
     w_out = np.array([-3.0, -5.0])  # not in the range of W
     for m in EXACT:
-        r = solve_tensions(W, w_out, lo, hi, m)
+        r = solve_tensions(W, w_out, tension_bounds=(lo, hi), method=m)
         assert r.status == "infeasible" and np.all(r.tensions == 0), m
 
 
@@ -210,7 +240,7 @@ def test_random_problems_against_linprog(problem):
     for m in METHODS:
         if m == "barycentric" and np.isinf(tmax).any():
             continue
-        r = res[m] = solve_tensions(W, w, tmin, tmax, m)
+        r = res[m] = solve_tensions(W, w, tension_bounds=(tmin, tmax), method=m)
         assert r.tensions.shape == (W.shape[1],) and not np.isnan(r.tensions).any()
         if r.feasible:
             assert r.status == "optimal"
@@ -235,9 +265,9 @@ def test_batch_agrees_with_single_poses():
     w = -np.einsum("kij,kj->ki", W, rng.uniform(0, 4, (30, 5))) * rng.uniform(0.7, 1.4, (30, 1))
     lo, hi = np.zeros(5), np.full(5, 4.0)
     for m in METHODS:
-        batch = solve_tensions(W, w, lo, hi, m)
+        batch = solve_tensions(W, w, tension_bounds=(lo, hi), method=m)
         for k in range(0, 30, 3):
-            one = solve_tensions(W[k], w[k], lo, hi, m)
+            one = solve_tensions(W[k], w[k], tension_bounds=(lo, hi), method=m)
             assert one.feasible == batch.feasible[k] and one.status == batch.status[k], m
             if m in ("qp", "closed-form", "improved-closed-form", "barycentric"):  # unique answers
                 assert np.allclose(one.tensions, batch.tensions[k], atol=1e-8), m
@@ -249,7 +279,7 @@ def test_batch_agrees_with_single_poses():
 
 def test_unknown_method_lists_valid_ones():
     with pytest.raises(TautError, match="valid methods: lp, qp, inf, closed-form, improved-closed-form, barycentric"):
-        solve_tensions(np.eye(2), [0, 0], [0, 0], [1, 1], "simplex")
+        solve_tensions(np.eye(2), [0, 0], tension_bounds=([0, 0], [1, 1]), method="simplex")
     with pytest.raises(TautError, match="valid methods"):
         distribute_tensions(taut.example("planar-4cable"), [0, 0, 0], method="nope")
 
@@ -270,4 +300,35 @@ def test_unknown_method_lists_valid_ones():
 )
 def test_bad_input_raises_taut_error(W, w, lo, hi, match):
     with pytest.raises(TautError, match=match):
-        solve_tensions(W, w, lo, hi)
+        solve_tensions(W, w, tension_bounds=(lo, hi))
+
+
+@pytest.mark.parametrize(
+    "call, match",
+    [
+        (lambda: solve_tensions(np.eye(2), [0.0, 0.0], tension_bounds=None), "must be a pair"),
+        (lambda: solve_tensions(np.eye(2), [0.0, 0.0], tension_bounds=(0, 1, 2)), "must be a pair"),
+        (lambda: solve_tensions(np.eye(2), [0.0, 0.0], tension_bounds=(0, 1), method=["lp"]), "unknown"),
+        (lambda: distribute_tensions(taut.example("planar-4cable"), [0.1, 0.2, 0.0], method=None), "unknown"),
+        (lambda: distribute_tensions(taut.example("planar-4cable"), [0.1, 0.2, 0.0], wrench="ab"), "numbers"),
+    ],
+)
+def test_bad_options_raise_taut_error(call, match):
+    with pytest.raises(TautError, match=match):
+        call()
+
+
+def test_tension_bounds_override_the_robots():
+    """``tension_bounds`` replaces ``robot.tension_bounds``: bounds too low for the weight make
+    the pose infeasible, the same as a robot whose cables carry them."""
+    robot = taut.example("planar-4cable")
+    pose = POSES["planar-4cable"][1]
+    assert distribute_tensions(robot, pose).feasible
+    low = distribute_tensions(robot, pose, tension_bounds=(0.0, 1e-3))
+    assert not low.feasible and low.status == "infeasible"
+    W = structure_matrix(robot, pose)
+    w = external_wrench(robot, pose)
+    bounds = (np.full(4, 2.0), np.full(4, 50.0))
+    res = distribute_tensions(robot, pose, tension_bounds=bounds, method="qp")
+    assert res.feasible and np.all(res.tensions >= 2.0 - 1e-12) and np.all(res.tensions <= 50.0)
+    np.testing.assert_allclose(W @ res.tensions + w, 0.0, atol=1e-9 * np.abs(w).max())

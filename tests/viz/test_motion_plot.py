@@ -23,11 +23,11 @@ def test_three_panels_hold_pose_velocity_and_acceleration(tmp_path):
     fig = plot_motion(s, motion.times)
     axes = fig.axes
     assert len(axes) == 3
-    for ax, kind, values in zip(axes, ("pose", "velocity", "acceleration"), (s.pose, s.velocity, s.acceleration)):
+    for ax, kind, values in zip(axes, ("pose", "velocity", "acceleration"), (s.poses, s.velocity, s.acceleration)):
         lines = {line.get_gid(): line for line in ax.lines}
         for k, name in enumerate(robot.pose_names):
             line = lines[f"{kind}-{name}"]
-            assert np.array_equal(line.get_xdata(), s.time)
+            assert np.array_equal(line.get_xdata(), s.times)
             assert np.array_equal(line.get_ydata(), values[:, k])
         marks = [line.get_xdata()[0] for line in ax.lines if line.get_gid() == "waypoint"]
         assert marks == [0.0, 2.0, 4.0]

@@ -61,7 +61,7 @@ def _check_physical(tree, P, tr, n0):
         for _, d in tree.contacts(n):
             assert d == 1  # the winch is to the left: every corner is wrapped ccw below the square
         x, u, _, _ = tree.active_segment(n, b)
-        assert not segment_enters_polygon(x, b, SQUARE, 1e-9)
+        assert not segment_enters_polygon(x, b, SQUARE, tol=1e-9)
         assert tree.contacts(n) == tree.contacts(tree.shortest_taut_state(b))
 
 
@@ -107,7 +107,7 @@ def test_random_straight_moves_below_the_square():
     while done < 60:
         b0 = np.array([rng.uniform(-2.0, 4.0), rng.uniform(-4.0, -0.05)])
         b1 = np.array([rng.uniform(-2.0, 4.0), rng.uniform(-4.0, -0.05)])
-        if segment_enters_polygon(b0, b1, SQUARE + np.sign(SQUARE) * 0.05, 0.0):
+        if segment_enters_polygon(b0, b1, SQUARE + np.sign(SQUARE) * 0.05, tol=0.0):
             continue
         tree = _tree()
         P = np.linspace(b0, b1, int(rng.integers(2, 30)))

@@ -59,7 +59,7 @@ def test_paths_are_taut_and_lengths_match_eq_4_9(runs, name):
                     if rad > 0:
                         assert np.dot(end - c, u) == pytest.approx(0, abs=1e-9)  # tangent
                         assert np.sign(u[0] * (c - end)[1] - u[1] * (c - end)[0]) == d  # recorded direction
-                assert not segment_meets_circle(a, b, tree.circles[:, :2], tree.circles[:, 2], 1e-7).any()
+                assert not segment_meets_circle(a, b, tree.circles[:, :2], tree.circles[:, 2], tol=1e-7).any()
             assert (path.arcs[1:, 4] >= -1e-9).all()  # non-negative wrap angles
             if not res.ik.contacts(s, i) and tree.circles[-1, 2] == 0:
                 assert path.length == pytest.approx(np.linalg.norm(res.ik.anchors[s, i] - tree.circles[-1, :2]))
@@ -75,7 +75,7 @@ def test_idlers_keep_cables_out_of_the_protected_regions(runs, name):
     seg = np.concatenate(pieces)
     which = np.repeat(np.arange(len(owner)), [len(p) for p in pieces])
     for poly in r.disallowed:
-        inside = segment_enters_polygon(seg[:, 0], seg[:, 1], np.asarray(poly), 1e-9)
+        inside = segment_enters_polygon(seg[:, 0], seg[:, 1], np.asarray(poly), tol=1e-9)
         assert not inside.any(), [owner[k] for k in np.unique(which[inside])]
 
 
@@ -156,7 +156,7 @@ def test_random_walks_stay_continuous_and_reversible(points):
     tree = _single_tree()
     P = np.array([[0.0, 2.0]] + [list(p) for p in points])
     through = segment_meets_circle(
-        P[:-1, None], P[1:, None], tree.circles[None, :3, :2], tree.circles[None, :3, 2] + 0.01, 0.0
+        P[:-1, None], P[1:, None], tree.circles[None, :3, :2], tree.circles[None, :3, 2] + 0.01, tol=0.0
     )
     if through.any():  # the platform end may not pass through an object
         return

@@ -27,7 +27,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(ns: argparse.Namespace) -> int:
     from taut.model import format_of, write_robot
 
-    format_of(ns.out, "write")  # an unknown OUT is refused before IN is read
+    format_of(ns.out, kind="write")  # an unknown OUT is refused before IN is read
     check_writable(Path(ns.out), "OUT")
     robot = A.load(ns.robot, ns.cable_set)
     fmt = write_robot(robot, ns.out)

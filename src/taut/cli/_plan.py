@@ -162,7 +162,6 @@ def run(ns: argparse.Namespace) -> int:
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)
     if ns.radius is not None:
-        A.positive(ns.radius, "--radius")
         if ns.radius < MIN_RADIUS:
             raise TautError(f"--radius {ns.radius:g} is below {MIN_RADIUS:g}: the search could not cover the space")
     if (ns.max_charts is not None and ns.max_charts < 2) or ns.subdivide < 1:

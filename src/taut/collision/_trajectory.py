@@ -61,7 +61,7 @@ def _fill(robot: Robot, waypoints: np.ndarray, what: str) -> np.ndarray:
             f"{what}: {robot.name} takes poses of {size} coordinates ({', '.join(robot.pose_names)}) "
             f"or positions of {d}, got {width}"
         )
-    return complete_waypoints(robot, waypoints, what)
+    return complete_waypoints(robot, waypoints, what=what)
 
 
 def straight_moves(

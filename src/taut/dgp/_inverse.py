@@ -452,7 +452,7 @@ def solve_igp(
             pb.lo,
             pb.hi,
             primary=pb.primary,
-            eps=eps,
+            tol=eps,
             filters=(pb.statics,),
             certify_width=0.5,
             max_boxes=max_boxes,

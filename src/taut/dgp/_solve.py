@@ -258,7 +258,7 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
         lo,
         hi,
         primary=sp.primary,
-        eps=eps,
+        tol=eps,
         filters=(sp.statics,),
         certify_width=width,
         passes=4,
@@ -320,7 +320,7 @@ def _resolve_narrow(
     share is inside one; a root the margin takes from a decided neighbour is one this
     piece certified already, and is dropped (one certified by another piece is dropped by
     :func:`solve_dgp`).  They share one budget of
-    :data:`taut.interval._precise.MAX_BOXES`; the boxes left when it runs out stay undecided,
+    :data:`taut.interval.MAX_PRECISE_BOXES`; the boxes left when it runs out stay undecided,
     so a continuum of solutions (thousands of narrow boxes) costs seconds, not hours.
     Returns the certificates and the boxes still undecided: ``"singular"`` those the
     multi-precision search shrank to its own limit, ``"narrow"`` those it did not reach."""

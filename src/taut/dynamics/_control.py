@@ -421,7 +421,7 @@ def simulate_control(
             f"decimate >= {need} (taut simulate: --sample-rate at most {rate_hz / need:.3g} Hz)"
         )
     first = motion.at([0.0])
-    q = np.array(first.pose[0]) if q0 is None else np.array(as_poses(robot, q0)[0][0])
+    q = np.array(first.poses[0]) if q0 is None else np.array(as_poses(robot, q0)[0][0])
     qd = np.array(first.velocity[0]) if qd0 is None else np.array(as_rates(robot, qd0, 1)[0])
     angles = angle_columns(robot)
     d = robot.dimension
@@ -452,8 +452,8 @@ def simulate_control(
         time = np.minimum(g / rate_hz, duration)
         samples = motion.at(time)
         mid = motion.at(0.5 * (time[1:] + time[:-1]))
-        ref = np.array([samples.pose, samples.velocity, samples.acceleration])
-        ahead = np.array([mid.pose, mid.velocity, mid.acceleration])
+        ref = np.array([samples.poses, samples.velocity, samples.acceleration])
+        ahead = np.array([mid.poses, mid.velocity, mid.acceleration])
         D = _tabulate(disturbance, time, int(substeps), dof)
         Q, V, E, A = (np.zeros((g.size, dof)) for _ in range(4))
         T = np.zeros((g.size, n))

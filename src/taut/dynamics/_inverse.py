@@ -245,7 +245,7 @@ def inverse_dynamics(
             tensions[part][done], feasible[part][done], code[part][done] = tau[done], True, STATUSES.index("optimal")
         rest = np.flatnonzero(ok & ~done)
         if rest.size:
-            res = solve_tensions(W[rest], -wr[rest], bounds[0], bounds[1], method)
+            res = solve_tensions(W[rest], -wr[rest], tension_bounds=bounds, method=method)
             idx = rest + start
             tensions[idx], feasible[idx] = res.tensions, res.feasible
             code[idx] = _ORDER[np.searchsorted(STATUSES, res.status, sorter=_ORDER)]

@@ -78,7 +78,7 @@ class LoopModel:
             raise InfeasiblePoseError(f"{self.robot.name}: a cable has zero length at {np.asarray(q).tolist()}")
         if status == OK:
             return b["tau"][0].copy(), True
-        res = solve_tensions(b["W"][0], -b["wrench"][0], lo, hi, self.method)
+        res = solve_tensions(b["W"][0], -b["wrench"][0], tension_bounds=(lo, hi), method=self.method)
         return np.array(res.tensions), bool(res.feasible)
 
     def step(

@@ -26,20 +26,47 @@ def _cross(p: np.ndarray, q: np.ndarray) -> np.ndarray:
 
 
 def segments_intersect(
-    a1: npt.ArrayLike, b1: npt.ArrayLike, a2: npt.ArrayLike, b2: npt.ArrayLike, tol: float = 0.0, collinear: bool = True
+    a1: npt.ArrayLike,
+    b1: npt.ArrayLike,
+    a2: npt.ArrayLike,
+    b2: npt.ArrayLike,
+    *,
+    tol: float = 0.0,
+    collinear: bool = True,
 ) -> np.ndarray:
-    """Whether segments ``a1b1`` and ``a2b2`` share a point (A.1).
+    """Whether segments ``a1 b1`` and ``a2 b2`` share a point (Rushton 2022, A.1).
 
     With ``s = ((a2 − a1) × (b2 − a2)) / ((b1 − a1) × (b2 − a2))`` and ``u = ((a2 − a1) ×
     (b1 − a1)) / ((b1 − a1) × (b2 − a2))`` they intercept iff ``0 ≤ s, u ≤ 1``; parallel
-    segments intercept iff collinear and overlapping.  ``tol > 0`` shrinks both segments
-    by ``tol`` at each end (a proper crossing, not an end point touching);
-    ``collinear=False`` does not count collinear overlaps (a segment running along another).
+    segments intercept iff collinear and overlapping.
+
+    Parameters
+    ----------
+    a1, b1, a2, b2 : array_like, shape (..., 2)
+        End points [m], broadcast together.
+    tol : float, default 0.0
+        Shrinks both segments by ``tol`` [m] at each end: with ``tol > 0`` only a proper
+        crossing counts, not end points touching.
+    collinear : bool, default True
+        Whether collinear overlaps (a segment running along another) count.
+
+    Returns
+    -------
+    ndarray of bool, shape (...)
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, Appendix A.1. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    The diagonals of a square cross; segments end to end touch, which counts unless ``tol > 0``:
+
+    >>> segments_intersect([[0, 0], [0, 0]], [[1, 1], [1, 0]], [[0, 1], [1, 0]], [[1, 0], [2, 0]])
+    array([ True,  True])
+    >>> segments_intersect([0, 0], [1, 0], [1, 0], [2, 0], tol=1e-9)
+    array(False)
     """
     a1, b1, a2, b2 = (np.asarray(v, float) for v in (a1, b1, a2, b2))
     r, q, w = b1 - a1, b2 - a2, a2 - a1
@@ -81,23 +108,63 @@ def segment_circle_distance(a: npt.ArrayLike, b: npt.ArrayLike, c: npt.ArrayLike
 
 
 def segment_meets_circle(
-    a: npt.ArrayLike, b: npt.ArrayLike, c: npt.ArrayLike, r: npt.ArrayLike, tol: float = TOL
+    a: npt.ArrayLike, b: npt.ArrayLike, c: npt.ArrayLike, r: npt.ArrayLike, *, tol: float = TOL
 ) -> np.ndarray:
-    """Whether segment ``ab`` enters the open disc ``(c, r)``: ``‖q − c‖ < r − tol``.
+    """Whether segment ``ab`` enters the open disc ``(c, r)``: ``‖q − c‖ < r − tol`` with ``q`` the
+    point of the segment nearest the centre.
 
-    A.2 states ``≤ r``; the strict form lets a cable touch an object tangentially (a
-    zero-radius object is therefore never met).
+    Rushton (2022), A.2, states ``≤ r``; the strict form lets a cable touch an object
+    tangentially (a zero-radius object is therefore never met).
+
+    Parameters
+    ----------
+    a, b : array_like, shape (..., 2)
+        End points [m].
+    c : array_like, shape (..., 2)
+        Centres [m].
+    r : array_like, shape (...)
+        Radii [m].
+    tol : float, default :data:`TOL`
+        Round-off allowance [m].
+
+    Returns
+    -------
+    ndarray of bool, shape (...)
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, Appendix A.2. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    A horizontal cable through a unit circle centred 0.5 m above it, and one tangent to it:
+
+    >>> segment_meets_circle([-2, 0], [2, 0], [0, 0.5], 1.0), segment_meets_circle([-2, 0], [2, 0], [0, 1.0], 1.0)
+    (np.True_, np.False_)
     """
     return segment_circle_distance(a, b, c) < np.asarray(r, float) - tol
 
 
 def point_in_polygon(p: npt.ArrayLike, vertices: npt.ArrayLike) -> np.ndarray:
-    """Whether points ``p`` (``(..., 2)``) lie strictly inside the polygon (even–odd rule)."""
+    """Whether points lie strictly inside a polygon (even–odd rule).
+
+    Parameters
+    ----------
+    p : array_like, shape (..., 2)
+        Points [m].
+    vertices : array_like, shape (k, 2)
+        The polygon's vertices, in order.
+
+    Returns
+    -------
+    ndarray of bool, shape (...)
+
+    Examples
+    --------
+    >>> point_in_polygon([[0.5, 0.5], [2.0, 2.0]], [[0, 0], [1, 0], [1, 1], [0, 1]])
+    array([ True, False])
+    """
     p = np.asarray(p, float)
     v = np.asarray(vertices, float)
     x, y = p[..., 0][..., None], p[..., 1][..., None]
@@ -108,14 +175,43 @@ def point_in_polygon(p: npt.ArrayLike, vertices: npt.ArrayLike) -> np.ndarray:
     return (np.count_nonzero(cond & (x < xs), axis=-1) % 2) == 1
 
 
-def segment_enters_polygon(a: npt.ArrayLike, b: npt.ArrayLike, vertices: npt.ArrayLike, tol: float = TOL) -> np.ndarray:
-    """Whether segment ``ab`` enters the interior of a polygon (a disallowed region, §4.2.1).
+def segment_enters_polygon(
+    a: npt.ArrayLike, b: npt.ArrayLike, vertices: npt.ArrayLike, *, tol: float = TOL
+) -> np.ndarray:
+    """Whether segment ``ab`` enters the interior of a polygon (a disallowed region, Rushton
+    2022, §4.2.1).
 
     §4.2.1 checks the segment against each edge of the bounding polygon (A.1); a segment
-    wholly inside crosses no edge, so its midpoint is tested too.  Touching an edge or a
-    vertex (within ``tol``) is not entering, and neither is running along an edge (a cable
-    wrapped round one corner of a polygon obstacle onto the next): the midpoint of such a
-    segment lies on the boundary, which the even–odd test may count as inside."""
+    wholly inside crosses no edge, so its midpoint is tested too.  Touching an edge or a vertex
+    (within ``tol``) is not entering, and neither is running along an edge (a cable wrapped
+    round one corner of a polygon obstacle onto the next).
+
+    Parameters
+    ----------
+    a, b : array_like, shape (..., 2)
+        End points [m].
+    vertices : array_like, shape (k, 2)
+        The polygon's vertices, in order.
+    tol : float, default :data:`TOL`
+        Round-off allowance [m].
+
+    Returns
+    -------
+    ndarray of bool, shape (...)
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Appendix A.1, §4.2.1. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    Through the unit square, and along its top edge:
+
+    >>> square = [[0, 0], [1, 0], [1, 1], [0, 1]]
+    >>> segment_enters_polygon([-1, 0.5], [2, 0.5], square), segment_enters_polygon([-1, 1], [2, 1], square)
+    (np.True_, np.False_)
+    """
     a = np.asarray(a, float)
     b = np.asarray(b, float)
     v = np.asarray(vertices, float)
@@ -127,10 +223,29 @@ def segment_enters_polygon(a: npt.ArrayLike, b: npt.ArrayLike, vertices: npt.Arr
 
 
 def circles_overlap(
-    c1: npt.ArrayLike, r1: npt.ArrayLike, c2: npt.ArrayLike, r2: npt.ArrayLike, tol: float = TOL
+    c1: npt.ArrayLike, r1: npt.ArrayLike, c2: npt.ArrayLike, r2: npt.ArrayLike, *, tol: float = TOL
 ) -> np.ndarray:
-    """Whether two closed discs share interior points (``‖c1 − c2‖ < r1 + r2 − tol``),
-    or coincide (two points at the same place)."""
+    """Whether two closed discs share interior points (``‖c1 − c2‖ < r1 + r2 − tol``), or
+    coincide (two points at the same place).
+
+    Parameters
+    ----------
+    c1, c2 : array_like, shape (..., 2)
+        Centres [m].
+    r1, r2 : array_like, shape (...)
+        Radii [m].
+    tol : float, default :data:`TOL`
+        Round-off allowance [m]: discs that only touch do not overlap.
+
+    Returns
+    -------
+    ndarray of bool, shape (...)
+
+    Examples
+    --------
+    >>> circles_overlap([0, 0], 1.0, [1.5, 0], 1.0), circles_overlap([0, 0], 1.0, [2.0, 0], 1.0)
+    (np.True_, np.False_)
+    """
     d = np.asarray(c2, float) - np.asarray(c1, float)
     dist = np.hypot(d[..., 0], d[..., 1])
     return (dist < np.asarray(r1, float) + np.asarray(r2, float) - tol) | (dist <= tol)

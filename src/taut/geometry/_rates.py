@@ -77,13 +77,40 @@ def _single_axis_angles(axis: int, angle: np.ndarray) -> np.ndarray:
 
 
 def rate_matrix(angles: npt.ArrayLike, convention: str = "xyz-fixed") -> np.ndarray:
-    """``E(q)`` ``(..., 3, 3)`` with ``ω = E(q) q̇``: the angular velocity in the fixed frame
-    from the rates of the angles ``q`` ``(..., 3)`` in ``convention``.
+    """The rate matrix ``E(q)`` with ``ω = E(q) q̇``: the angular velocity in the fixed frame from
+    the rates of the orientation angles ``q`` (module docstring).  It is singular exactly at
+    the convention's gimbal lock.
+
+    Parameters
+    ----------
+    angles : array_like, shape (..., 3)
+        Orientation angles ``q`` [rad].
+    convention : str, default "xyz-fixed"
+        One of :data:`CONVENTIONS`.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+
+    Raises
+    ------
+    TautError
+        For an unknown convention.
 
     References
     ----------
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
        and Control", Springer, 2009, §3.6, Eq. 3.64. (docs/references.bib: siciliano2009)
+
+    Examples
+    --------
+    With the yaw ``c = 0.5``, a unit rate of the roll ``a`` turns about the fixed frame's
+    ``Rz(0.5) x`` axis; ``E`` is singular at ``b = π/2``:
+
+    >>> rate_matrix([0.0, 0.0, 0.5]) @ [1.0, 0.0, 0.0]
+    array([0.87758256, 0.47942554, 0.        ])
+    >>> round(float(np.linalg.det(rate_matrix([0.0, np.pi / 2, 0.0]))), 12)
+    0.0
     """
     q = _triples(angles, "orientation angles")
     u, T = _factor_axes(q, convention)
@@ -91,12 +118,38 @@ def rate_matrix(angles: npt.ArrayLike, convention: str = "xyz-fixed") -> np.ndar
 
 
 def rate_matrix_derivative(angles: npt.ArrayLike, rates: npt.ArrayLike, convention: str = "xyz-fixed") -> np.ndarray:
-    """``Ė(q, q̇)`` ``(..., 3, 3)``, so that the angular acceleration is ``α = E q̈ + Ė q̇``.
+    """The time derivative ``Ė(q, q̇)`` of the rate matrix, so that the angular acceleration is
+    ``α = E q̈ + Ė q̇``.
+
+    Parameters
+    ----------
+    angles : array_like, shape (..., 3)
+        Orientation angles ``q`` [rad].
+    rates : array_like, shape (..., 3)
+        Their rates ``q̇`` [rad/s].
+    convention : str, default "xyz-fixed"
+        One of :data:`CONVENTIONS`.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+
+    Raises
+    ------
+    TautError
+        For an unknown convention.
 
     References
     ----------
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
        and Control", Springer, 2009, §3.6, Eq. 3.64. (docs/references.bib: siciliano2009)
+
+    Examples
+    --------
+    Rolling at 1 rad/s while the yaw turns at 1 rad/s: the roll axis ``x`` swings towards ``y``.
+
+    >>> rate_matrix_derivative([0.0, 0.0, 0.0], [1.0, 0.0, 1.0]) @ [1.0, 0.0, 1.0]
+    array([0., 1., 0.])
     """
     q = _triples(angles, "orientation angles")
     try:

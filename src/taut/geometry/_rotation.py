@@ -28,6 +28,7 @@ import numpy.typing as npt
 
 from taut.errors import ArgumentError
 
+#: The orientation conventions of three angles (docs/architecture.md §2.3), by name.
 CONVENTIONS = ("xyz-fixed", "xyz-moving", "tilt-torsion")
 
 
@@ -45,9 +46,22 @@ def _numbers(values: npt.ArrayLike, what: str) -> np.ndarray:
 
 
 def planar_rotation(theta: npt.ArrayLike) -> np.ndarray:
-    """``R(θ)`` of shape ``(..., 2, 2)`` for angles of shape ``(...)``.
+    """Planar rotation matrices ``R(θ)``.
 
-    Raises :class:`~taut.errors.ArgumentError` for angles that are not numbers."""
+    Parameters
+    ----------
+    theta : array_like, shape (...)
+        Angles [rad], counter-clockwise.
+
+    Returns
+    -------
+    ndarray, shape (..., 2, 2)
+
+    Examples
+    --------
+    >>> np.round(planar_rotation(np.pi / 2) @ [1.0, 0.0], 12)
+    array([0., 1.])
+    """
     theta = _numbers(theta, "planar rotation angles")
     c, s = np.cos(theta), np.sin(theta)
     return np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)
@@ -64,7 +78,29 @@ def _axis(k: int, t: np.ndarray) -> np.ndarray:
 
 
 def rotation_matrix(angles: npt.ArrayLike, convention: str = "xyz-fixed") -> np.ndarray:
-    """Rotation matrices ``(..., 3, 3)`` from three angles ``(..., 3)`` in ``convention``.
+    """Rotation matrices from three angles in an orientation convention
+    (``docs/architecture.md`` §2.3).
+
+    ``xyz-fixed``: ``R = Rz(c) Ry(b) Rx(a)``, rotations about the fixed axes (Berti 2015,
+    Tables 4.3–4.6); ``xyz-moving``: ``R = Rx(a) Ry(b) Rz(c)`` (Lieskovský 2020, Eq. 3.1.1);
+    ``tilt-torsion``: ``R = Rz(φ) Ry(θ) Rz(σ − φ)`` with angles ``(φ, θ, σ)`` (Bohigas et al.
+    2013, Eq. 1).
+
+    Parameters
+    ----------
+    angles : array_like, shape (..., 3)
+        Angles [rad].
+    convention : str, default "xyz-fixed"
+        One of :data:`CONVENTIONS`: it says what the angles mean.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+
+    Raises
+    ------
+    TautError
+        For an unknown convention.
 
     Raises :class:`~taut.errors.ArgumentError` for an unknown convention or angles that are
     not numbers ``(..., 3)``.
@@ -81,6 +117,13 @@ def rotation_matrix(angles: npt.ArrayLike, convention: str = "xyz-fixed") -> np.
        Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
        Mechanisms and Machine Science 12, Springer, 2013, Eq. 1.
        (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    A quarter turn about ``z`` takes ``x`` to ``y``:
+
+    >>> np.round(rotation_matrix([0.0, 0.0, np.pi / 2]) @ [1.0, 0.0, 0.0], 12)
+    array([0., 1., 0.])
     """
     check_convention(convention)
     arr = _numbers(angles, "rotation angles")
@@ -95,10 +138,44 @@ def rotation_matrix(angles: npt.ArrayLike, convention: str = "xyz-fixed") -> np.
 
 
 def angles_from_matrix(R: npt.ArrayLike, convention: str = "xyz-fixed") -> np.ndarray:
-    """Inverse of :func:`rotation_matrix`: angles ``(..., 3)`` with the middle angle in
-    ``[-π/2, π/2]`` (``[0, π]`` for tilt-and-torsion).  Raises
-    :class:`~taut.errors.ArgumentError` for an unknown convention or matrices that are not
-    ``(..., 3, 3)``."""
+    """The angles of rotation matrices in a convention: the inverse of :func:`rotation_matrix`,
+    with the middle angle in ``[−π/2, π/2]`` (``[0, π]`` for ``tilt-torsion``).
+
+    Parameters
+    ----------
+    R : array_like, shape (..., 3, 3)
+        Rotation matrices.
+    convention : str, default "xyz-fixed"
+        One of :data:`CONVENTIONS`.
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        Angles [rad].
+
+    Raises
+    ------
+    TautError
+        For an unknown convention.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, Tables 4.3–4.6. (docs/references.bib: berti2015)
+    .. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, Eq. 3.1.1.
+       (docs/references.bib: lieskovsky2020)
+    .. [3] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, Eq. 1.
+       (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    >>> angles_from_matrix(rotation_matrix([0.1, 0.2, 0.3], "xyz-moving"), "xyz-moving")
+    array([0.1, 0.2, 0.3])
+    """
     check_convention(convention)
     R = _numbers(R, "rotation matrices")
     if R.shape[-2:] != (3, 3):

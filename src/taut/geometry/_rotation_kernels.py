@@ -14,9 +14,28 @@ from numba import njit
 
 @njit(cache=True)
 def matrix_angles(R: np.ndarray, code: int) -> np.ndarray:
-    """Angles of the matrices ``R`` (``(N, 3, 3)``), convention ``code`` (index in
-    :data:`~taut.geometry.CONVENTIONS`).  Compiled: tracking converts one matrix
-    per update, where array ufuncs on a single matrix cost more than the arithmetic."""
+    """The angles of rotation matrices, compiled: the kernel of :func:`angles_from_matrix`
+    (tracking converts one matrix per update, where array ufuncs on a single matrix cost more
+    than the arithmetic).
+
+    Parameters
+    ----------
+    R : ndarray, shape (N, 3, 3)
+        Rotation matrices, C-contiguous floats.
+    code : int
+        The convention's index in :data:`~taut.geometry.CONVENTIONS`.
+
+    Returns
+    -------
+    ndarray, shape (N, 3)
+        Angles [rad], as :func:`~taut.geometry.angles_from_matrix` gives them.
+
+    Examples
+    --------
+    >>> from taut.geometry import rotation_matrix
+    >>> matrix_angles(rotation_matrix([[0.1, 0.2, 0.3]]), 0)
+    array([[0.1, 0.2, 0.3]])
+    """
     out = np.empty((R.shape[0], 3))
     for k in range(R.shape[0]):
         M = R[k]

@@ -71,7 +71,34 @@ def _point_segment(
 def segment_distance_scalar(
     a1: np.ndarray, b1: np.ndarray, a2: np.ndarray, b2: np.ndarray
 ) -> tuple[float, float, float]:
-    """``(δ, ξ_i, ξ_j)`` of the segments ``a1 b1`` and ``a2 b2`` (3-vectors)."""
+    """The distance of two segments and where it is reached, for one pair of 3-D segments:
+    the compiled kernel of :func:`segment_distance`, callable from other kernels.
+
+    Parameters
+    ----------
+    a1, b1, a2, b2 : ndarray, shape (3,)
+        End points [m].
+
+    Returns
+    -------
+    delta : float
+        The distance [m].
+    xi_i, xi_j : float
+        The parameters in ``[0, 1]`` of a closest pair of points.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §3.5, Eq. 3.5.1.
+       (docs/references.bib: lieskovsky2020)
+    .. [2] C. Ericson, "Real-Time Collision Detection", Morgan Kaufmann, 2005, §5.1.9.
+       (docs/references.bib: ericson2005)
+
+    Examples
+    --------
+    >>> segment_distance_scalar(np.zeros(3), np.array([1.0, 0, 0]), np.array([0.0, 0, 2]), np.array([0.0, 1, 2]))
+    (2.0, 0.0, 0.0)
+    """
     v1x, v1y, v1z = b1[0] - a1[0], b1[1] - a1[1], b1[2] - a1[2]
     v2x, v2y, v2z = b2[0] - a2[0], b2[1] - a2[1], b2[2] - a2[2]
     rx, ry, rz = a1[0] - a2[0], a1[1] - a2[1], a1[2] - a2[2]
@@ -144,19 +171,46 @@ def segment_distance(
 def segment_distance(
     a1: npt.ArrayLike, b1: npt.ArrayLike, a2: npt.ArrayLike, b2: npt.ArrayLike, *, parameters: bool = False
 ) -> np.ndarray | tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Minimal distance ``δ`` between the segments ``a1 b1`` and ``a2 b2`` (§3.5).
+    """The minimal distance ``δ`` between the segments ``a1 b1`` and ``a2 b2`` (the proximity of
+    Lieskovský 2020, §3.5), by a procedure that covers skew, parallel, collinear and
+    zero-length segments (module docstring).
 
-    The end points are arrays ``(..., 2)`` or ``(..., 3)`` that broadcast together; returns
-    ``δ`` of the broadcast shape, and with ``parameters=True`` also ``ξ_i, ξ_j ∈ [0, 1]``
-    locating a closest pair of points ``a1 + ξ_i (b1 − a1)`` and ``a2 + ξ_j (b2 − a2)``.
-    Raises :class:`~taut.errors.ArgumentError` for end points that are not numbers, do not
-    broadcast or are not 2-D or 3-D.
+    Parameters
+    ----------
+    a1, b1, a2, b2 : array_like, shape (..., 2) or (..., 3)
+        End points [m], broadcast together.
+    parameters : bool, default False
+        Also return where the closest points are.
+
+    Returns
+    -------
+    delta : ndarray, shape (...)
+        The distance [m].
+    xi_i, xi_j : ndarray, shape (...)
+        With ``parameters=True``: ``ξ_i, ξ_j ∈ [0, 1]`` of a closest pair of points
+        ``a1 + ξ_i (b1 − a1)`` and ``a2 + ξ_j (b2 − a2)``.
+
+    Raises
+    ------
+    TautError
+        For points that are neither 2-D nor 3-D.
 
     References
     ----------
     .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
        Bachelor thesis, Czech Technical University in Prague, 2020, §3.5, Eq. 3.5.1.
        (docs/references.bib: lieskovsky2020)
+    .. [2] C. Ericson, "Real-Time Collision Detection", Morgan Kaufmann, 2005, §5.1.9.
+       (docs/references.bib: ericson2005)
+
+    Examples
+    --------
+    Two parallel unit edges of a cube, across a face diagonal:
+
+    >>> float(segment_distance([0, 0, 0], [1, 0, 0], [0, 1, 1], [1, 1, 1]))
+    1.4142135623730951
+    >>> [float(x) for x in segment_distance([0, 0], [2, 0], [1, 1], [1, 3], parameters=True)]
+    [1.0, 0.5, 0.0]
     """
     try:
         arrs = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (a1, b1, a2, b2)))

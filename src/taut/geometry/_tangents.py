@@ -31,11 +31,43 @@ import numpy.typing as npt
 def directed_tangent(
     c1: npt.ArrayLike, r1: npt.ArrayLike, d1: npt.ArrayLike, c2: npt.ArrayLike, r2: npt.ArrayLike, d2: npt.ArrayLike
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """The tangent from circle 1 (wrap ``d1``) to circle 2 (wrap ``d2``), arrays broadcast.
+    """The tangent from circle 1, left with wrap direction ``d1``, to circle 2, reached with wrap
+    direction ``d2`` (module docstring; a point is a circle of radius 0).
 
-    Returns ``(x1, x2, u, length, exists)``: the tangent points ``(..., 2)``, the unit
-    direction ``u`` (defined at tangency too), the length ``L`` and a boolean mask; where
-    no tangent exists (nested or coincident circles) they are NaN."""
+    Parameters
+    ----------
+    c1, c2 : array_like, shape (..., 2)
+        Centres [m].
+    r1, r2 : array_like, shape (...)
+        Radii [m].
+    d1, d2 : array_like, shape (...)
+        Wrap directions: ``+1`` counter-clockwise (the centre on the left of the travel),
+        ``−1`` clockwise.
+
+    Returns
+    -------
+    x1, x2 : ndarray, shape (..., 2)
+        The tangent points on circles 1 and 2.
+    u : ndarray, shape (..., 2)
+        The unit direction ``x1 → x2`` (defined at tangency too).
+    length : ndarray, shape (...)
+        ``‖x2 − x1‖``.
+    exists : ndarray of bool, shape (...)
+        False for nested or coincident circles, where the other outputs are NaN.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, Appendix A.3–A.4. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    Two unit circles 4 m apart, both wrapped counter-clockwise: the external tangent below them.
+
+    >>> x1, x2, u, length, exists = directed_tangent([0.0, 0.0], 1.0, 1.0, [4.0, 0.0], 1.0, 1.0)
+    >>> x1, x2, float(length)
+    (array([ 0., -1.]), array([ 4., -1.]), 4.0)
+    """
     c1 = np.asarray(c1, float)
     c2 = np.asarray(c2, float)
     D = c2 - c1

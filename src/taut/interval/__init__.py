@@ -19,6 +19,7 @@ if TYPE_CHECKING:
     from taut.interval._arithmetic import Interval, centred_form
     from taut.interval._branch_prune import (
         CERTIFY_BOXES,
+        MAX_BOXES,
         Box,
         BranchAndPruneResult,
         bisect,
@@ -43,7 +44,7 @@ if TYPE_CHECKING:
     from taut.interval._hc4 import contract, evaluate, evaluate_point, point_kernel
     from taut.interval._krawczyk import Certificate, certified_step, certify, inflate, krawczyk, newton
     from taut.interval._linear import LinearFilter, interval_gauss, preconditioned_solve
-    from taut.interval._precise import precise_available, solve_precise
+    from taut.interval._precise import MAX_PRECISE_BOXES, precise_available, solve_precise
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -52,6 +53,7 @@ _LAZY = {
     "Box": "taut.interval._branch_prune",
     "BranchAndPruneResult": "taut.interval._branch_prune",
     "CERTIFY_BOXES": "taut.interval._branch_prune",
+    "MAX_BOXES": "taut.interval._branch_prune",
     "bisect": "taut.interval._branch_prune",
     "branch_and_prune": "taut.interval._branch_prune",
     "file_certificate": "taut.interval._branch_prune",
@@ -81,6 +83,7 @@ _LAZY = {
     "LinearFilter": "taut.interval._linear",
     "interval_gauss": "taut.interval._linear",
     "preconditioned_solve": "taut.interval._linear",
+    "MAX_PRECISE_BOXES": "taut.interval._precise",
     "precise_available": "taut.interval._precise",
     "solve_precise": "taut.interval._precise",
 }
@@ -94,6 +97,8 @@ __all__ = [
     "Expr",
     "Interval",
     "LinearFilter",
+    "MAX_BOXES",
+    "MAX_PRECISE_BOXES",
     "ONE",
     "SQR",
     "System",

@@ -17,12 +17,12 @@ Each box popped from the list is
    as wide, so boxes are proven empty wider); uniqueness is still proven with the
    Jacobian;
 3. *bisected*: one of the ``primary`` variables (the pose variables ``X``) while their
-   largest width is at least ``eps``, then the widest variable of all (§3.1.4); the
+   largest width is at least ``tol``, then the widest variable of all (§3.1.4); the
    primary variable is the widest one, or with ``bisection="smear"`` the one of largest
    relative smear (:func:`smear_scores`: the equations' sensitivity times the width), which the
    DGP uses because its reference points and tensions are scaled unevenly.
 
-Boxes narrower than ``eps`` in every variable that could not be certified are returned as
+Boxes narrower than ``tol`` in every variable that could not be certified are returned as
 ``undecided`` (singular or nearly-coincident solutions): nothing is silently dropped.
 
 The loop runs in a Numba kernel (:func:`_drive`, a depth-first stack of boxes) when the
@@ -42,6 +42,7 @@ References
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import cast
@@ -50,6 +51,7 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut._results import Result
 from taut.errors import ArgumentError
 from taut.interval._expression import System
 from taut.interval._hc4 import contract, contract_kernel, evaluate, evaluate_kernel
@@ -57,19 +59,99 @@ from taut.interval._krawczyk import Certificate, certify, krawczyk, krawczyk_jac
 from taut.interval._linear import LinearFilter, linear_filter_kernel
 from taut.interval._slope import points_for, slope_kernel, slopes
 
+#: Default budget of :func:`branch_and_prune`: the boxes processed before the search stops and
+#: returns the boxes left as undecided (it also bounds the time and the memory of one search).
+MAX_BOXES = 2_000_000
 
-@dataclass
-class BranchAndPruneResult:
-    solutions: list[Certificate] = field(default_factory=list)
-    undecided: list[tuple[np.ndarray, np.ndarray]] = field(default_factory=list)
+
+#: A box ``(lo, hi)``: the lower and upper ends of its variables, two arrays ``(n,)``.
+Box = tuple[np.ndarray, np.ndarray]
+
+
+@dataclass(frozen=True)
+class BranchAndPruneResult(Result):
+    """What :func:`branch_and_prune` found (a frozen result, read-only arrays).  Every solution of
+    the search domain that is not listed lies in one of the ``undecided`` boxes.
+
+    Attributes
+    ----------
+    solutions : tuple of Certificate
+        Solutions proven unique whose box lies in the domain and satisfies the redundant
+        constraints.
+    undecided : tuple of (ndarray, ndarray)
+        Boxes ``(lo, hi)`` left: narrower than ``tol`` but not certified (singular or nearly
+        coincident solutions), or unprocessed when the budget ran out.
+    boundary : tuple of Certificate
+        Solutions proven unique whose box straddles a bound of the domain or of a redundant
+        inequality (e.g. a zero tension): neither inside nor outside at this precision.
+    boxes : int
+        Boxes processed.
+    stats : dict of str to int
+        Boxes discarded by each operator (compiled loop only).
+    exhausted : bool
+        The budget ``max_boxes`` ran out.
+    elapsed_s : float
+        Wall-clock seconds.
+    complete : bool
+        No box is undecided.
+
+    Examples
+    --------
+    See :func:`branch_and_prune`.
+
+    >>> from taut.interval import compile_system, variables
+    >>> x, = variables(1)
+    >>> res = branch_and_prune(compile_system(1, [x**2 - 2]), [0.0], [2.0])
+    >>> res.complete, res.solutions[0].x
+    (True, array([1.41421356]))
+    """
+
+    solutions: tuple[Certificate, ...]
+    undecided: tuple[Box, ...]
     #: solutions proven unique whose box straddles a bound of the domain or of a redundant
     #: inequality (e.g. a zero tension): neither inside nor outside at this precision
+    boundary: tuple[Certificate, ...]
+    boxes: int  #: boxes processed
+    stats: dict[str, int]  #: boxes discarded by each operator (compiled loop only)
+    exhausted: bool  #: the budget ``max_boxes`` ran out (the boxes left are undecided)
+    elapsed_s: float
+    complete: bool = field(init=False)  #: no box undecided
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "complete", not self.undecided)
+        super().__post_init__()
+
+
+@dataclass
+class _Filed:
+    """The certificates and undecided boxes of a search in progress."""
+
+    solutions: list[Certificate] = field(default_factory=list)
     boundary: list[Certificate] = field(default_factory=list)
-    boxes: int = 0  #: boxes processed
-    #: the budget ran out (boxes and certifications, see :func:`branch_and_prune`)
-    exhausted: bool = False
-    #: boxes discarded by each operator (compiled loop only) and the ``certifications`` tried
-    stats: dict = field(default_factory=dict)
+    undecided: list[Box] = field(default_factory=list)
+
+    def file(self, system: System, cert: Certificate, lo0: np.ndarray, hi0: np.ndarray) -> bool:
+        """Keep ``cert`` where :func:`file_certificate` files it; True when kept."""
+        where = file_certificate(system, cert, lo0, hi0, known=self.solutions + self.boundary)
+        if where is not None:
+            (self.solutions if where == "solution" else self.boundary).append(cert)
+        return where is not None
+
+    def result(self, boxes: int, stats: dict[str, int], exhausted: bool, start: float) -> BranchAndPruneResult:
+        """The result, without the undecided boxes inside the uniqueness box ``x ± radius`` of
+        a solution (or a boundary one): they hold no other one — a box that reached ``tol``
+        beside a solution before that solution was certified (depth first, its neighbour may
+        come later) is decided after all."""
+        known = self.solutions + self.boundary
+        return BranchAndPruneResult(
+            solutions=tuple(self.solutions),
+            undecided=tuple((lo, hi) for lo, hi in self.undecided if not any(c.covers(lo, hi) for c in known)),
+            boundary=tuple(self.boundary),
+            boxes=boxes,
+            stats=stats,
+            exhausted=exhausted,
+            elapsed_s=time.perf_counter() - start,
+        )
 
 
 @njit(cache=True, fastmath=False)
@@ -127,28 +209,25 @@ def _smear_of(
 
 
 @njit(cache=True, fastmath=False)
-def bisect_index(width: np.ndarray, primary: np.ndarray, eps: float, score: np.ndarray, starve: float) -> int:
+def bisect_index(width: np.ndarray, primary: np.ndarray, tol: float, score: np.ndarray, starve: float) -> int:
     """The variable to bisect (§3.1.4): a primary one while the widest of them is at least
-    ``eps`` — the one of largest ``score`` (:func:`smear_scores`) when any is positive, else the
+    ``tol`` — the one of largest ``score`` (:func:`smear_scores`) when any is positive, else the
     widest, or the widest when it is ``starve`` times wider than the score's pick — then the
     widest variable of all."""
     j, best = -1, -1.0
     for i in range(width.size):
         if primary[i] and width[i] > best:
             best, j = width[i], i
-    if best < eps:
+    if best < tol:
         return int(np.argmax(width))
     widest = j
     top = 0.0
     for i in range(width.size):
-        if primary[i] and width[i] >= eps and score[i] > top:
+        if primary[i] and width[i] >= tol and score[i] > top:
             top, j = score[i], i
     if width[j] * starve < best:
         return widest
     return j
-
-
-Box = tuple[np.ndarray, np.ndarray]
 
 
 def bisect(
@@ -156,28 +235,50 @@ def bisect(
     hi: npt.ArrayLike,
     *,
     primary: npt.ArrayLike | None = None,
-    eps: float = 0.0,
+    tol: float = 0.0,
     score: npt.ArrayLike | None = None,
     starve: float = np.inf,
 ) -> tuple[Box, Box]:
-    """The two halves ``((lo, mid), (mid, hi))`` of the box ``[lo, hi]`` cut across the
-    variable chosen by the bisection rule of the solver (§3.1.4): a ``primary`` one (all
-    variables by default) while the widest of them is at least ``eps`` — the one of
-    largest ``score`` when any is positive (e.g. the relative smear), else the widest, or the
-    widest when it is ``starve`` times wider than the score's pick —
-    then the widest variable of all.  The cut is at the midpoint, or at a finite point of
-    an unbounded variable.  The halves are new arrays.
+    """The two halves of the box ``[lo, hi]``, cut across the variable the solver's bisection rule
+    chooses (Berti 2015, §3.1.4): a ``primary`` one (all variables by default) while the widest
+    of them is at least ``tol`` — the one of largest ``score`` when any is positive (e.g. the
+    relative smear), else the widest, or the widest when it is ``starve`` times wider than the
+    score's pick — then the widest variable of all.
+
+    The cut is at the midpoint, or at a finite point of an unbounded variable.
+
+    Parameters
+    ----------
+    lo, hi : array_like, shape (n,)
+    primary : array_like of bool, shape (n,), optional
+        The variables bisected first (default all).
+    tol : float, default 0.0
+        The width below which primary variables are no longer preferred.
+    score : array_like, shape (n,), optional
+        A preference among the primary variables (:func:`smear_scores`).
+    starve : float, default inf
+
+    Returns
+    -------
+    ((lo, mid), (mid, hi)) : tuple of two Box
+        New arrays.
 
     References
     ----------
     .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
        interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
        Università di Bologna, 2015, §3.1.4. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> (lo1, hi1), (lo2, hi2) = bisect([0.0, 0.0], [1.0, 4.0])
+    >>> hi1, lo2
+    (array([1., 2.]), array([0., 2.]))
     """
     lo, hi = np.array(lo, float), np.array(hi, float)
     mask = np.ones(lo.size, bool) if primary is None else np.asarray(primary, bool)
     weights = np.zeros(lo.size) if score is None else np.asarray(score, float)
-    j = bisect_index(hi - lo, mask, float(eps), weights, float(starve))
+    j = bisect_index(hi - lo, mask, float(tol), weights, float(starve))
     a, b = float(lo[j]), float(hi[j])
     if np.isfinite(a) and np.isfinite(b):
         m = 0.5 * a + 0.5 * b
@@ -194,10 +295,10 @@ def branch_and_prune(
     hi: npt.ArrayLike,
     *,
     primary: npt.ArrayLike | None = None,
-    eps: float = 1e-7,
+    tol: float = 1e-7,
     certify_width: float = 0.5,
     newton_width: float = 1e-3,
-    max_boxes: int = 2_000_000,
+    max_boxes: int = MAX_BOXES,
     filters: Sequence[Callable[[np.ndarray, np.ndarray], bool]] = (),
     method: str = "auto",
     passes: int = 1,
@@ -210,33 +311,62 @@ def branch_and_prune(
     starve: float = np.inf,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> BranchAndPruneResult:
-    """All solutions of ``system`` in the box ``[lo, hi]`` (see module docstring).
+    """All solutions of ``system`` in the box ``[lo, hi]``: filter (HC4 and the filters),
+    evaluate (Krawczyk, Newton) and bisect (module docstring; Berti 2015, §1.3.3 Algorithm 1,
+    §3.1.4, §3.2).  Nothing is silently dropped: a box neither proven empty nor certified is
+    returned as undecided.
 
-    ``domain`` (``(lo, hi)``, default the box itself) is the whole search domain when
-    ``[lo, hi]`` is one piece of it: a solution counts when its certified box lies in the
-    domain, so a solution on the border between two pieces is kept by both (merge them
-    with :func:`same_solution`).
+    Parameters
+    ----------
+    system : System
+    lo, hi : array_like, shape (n,)
+        The box searched (a piece of ``domain``).
+    primary : array_like of bool, shape (n,), optional
+        The variables bisected first (the pose variables).
+    tol : float, default 1e-7
+        Boxes narrower than ``tol`` in every variable are not bisected: left undecided when
+        not certified.
+    certify_width : float, default 0.5
+        The width of the primary variables below which Krawczyk contracts a box.
+    newton_width : float, default 1e-3
+        Newton is started when Krawczyk proves uniqueness or the box is narrower than this.
+    max_boxes : int, default :data:`MAX_BOXES`
+        Budget: boxes processed before the search stops, the boxes left undecided.
+    filters : sequence of callables ``f(lo, hi) -> bool``
+        Extra contractors (in place, False = empty), applied after HC4 to the boxes whose
+        primary variables are narrower than ``filter_width``.
+    method : {"auto", "numba", "python"}, default "auto"
+        ``"numba"`` runs the box loop in a compiled kernel and needs every filter to be a
+        :class:`LinearFilter`; ``"python"`` is the reference loop; ``"auto"`` picks
+        ``"numba"`` when it can.
+    passes : int, default 1
+        With ``passes > 1`` the compiled loop repeats HC4 → filter → Krawczyk on a box while
+        Krawczyk shrinks its widest primary variable by more than the fraction ``gain``.
+    gain : float, default 0.2
+    ratio : float, default 0.05
+        The HC4 stopping threshold (:func:`contract`) in the compiled loop.
+    domain : (array_like, array_like), optional
+        The whole search domain (default the box): a solution counts when its certified box
+        lies in it, so one on the border between two pieces is kept by both (merge them with
+        :func:`same_solution`).
+    bisection : {"width", "smear"}, default "width"
+        Bisect the widest primary variable, or the one of largest relative smear
+        (:func:`smear_scores`), for variables scaled unevenly.
+    tube : int, default 0
+        How many leading equations form an under-determined subsystem (the DGP's rigidity and
+        cable lengths): every box is then contracted onto its solution manifold by the
+        parametric Krawczyk operator.
+    filter_width : float, default inf
+    starve : float, default inf
+        The smear rule gives way to the widest primary variable when that is ``starve`` times
+        wider than the smear's pick.
+    progress : callable ``(done, total)``, optional
+        Called every :data:`PROGRESS_BOXES` boxes with ``total`` None, and once at the end
+        with both the number of boxes processed.
 
-    ``primary`` (boolean mask) marks the variables bisected first; ``certify_width`` is
-    the width of the primary variables below which the Krawczyk operator contracts a box,
-    and Newton is started when Krawczyk proves uniqueness or the box is narrower than
-    ``newton_width``;
-    ``filters`` are extra contractors ``f(lo, hi) -> bool`` (in place, False = empty)
-    applied after HC4 to the boxes whose primary variables are narrower than
-    ``filter_width`` (an interval linear solve fails on wide boxes: its cost buys nothing
-    there).  ``bisection``: ``"width"`` bisects the widest primary variable
-    (§3.1.4), ``"smear"`` the primary variable of largest relative smear
-    (:func:`smear_scores`), which follows the variables the equations are most sensitive to
-    when they are scaled unevenly; ``starve``: the smear rule gives way to the widest
-    primary variable when that is ``starve`` times wider than the smear's pick — for
-    primary variables in one unit, where the smear can keep cutting a few of them while
-    another stays wide and every cut only trims a sliver (a random suspended robot, seed
-    58, cables 1 and 3: 1.34 M boxes with the smear alone, 553 with ``starve=10``).  ``tube``: how many leading equations form an
-    under-determined subsystem (fewer equations than the variables they involve: the
-    DGP's rigidity and cable lengths); every box is then contracted onto its solution
-    manifold by the parametric Krawczyk operator (:func:`taut.interval._krawczyk.tube_kernel`)
-    after HC4 and the filters; it solves for the non-primary variables of those equations
-    (at most ``tube`` of them) and for the best conditioned primary ones.
+    Returns
+    -------
+    BranchAndPruneResult
 
     ``method="numba"`` runs the box loop in a compiled kernel (:func:`_drive`) and returns
     to Python only to certify a solution; it needs every filter to be a
@@ -260,6 +390,31 @@ def branch_and_prune(
     Raises :class:`~taut.errors.ArgumentError` for an unknown ``method`` or ``bisection``,
     filters the compiled loop cannot run with ``method="numba"``, a start box or ``primary``
     of the wrong size, a box outside ``domain``, or a ``tube`` that is not under-determined.
+    Raises
+    ------
+    TautError
+        For an unknown ``method`` or ``bisection``, filters the compiled loop cannot run, a
+        bad ``tube``, or a box outside ``domain``.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §1.3.3 (Algorithm 1), §3.1.4, §3.2.1–3.2.2. (docs/references.bib: berti2015)
+    .. [2] R. B. Kearfott, M. Novoa, "Algorithm 681: INTBIS, a portable interval Newton/bisection
+       package", ACM Transactions on Mathematical Software 16(2), 1990.
+       (docs/references.bib: kearfott1990)
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> res = branch_and_prune(circles, [-3.0, -3.0], [3.0, 3.0])
+    >>> [c.x for c in res.solutions], res.complete
+    ([array([ 0.5      , -0.8660254]), array([0.5      , 0.8660254])], True)
+    >>> branch_and_prune(circles, [-3.0, -3.0], [3.0, 3.0], max_boxes=3).exhausted
+    True
     """
     kernel_ok = all(isinstance(f, LinearFilter) for f in filters) and len(filters) <= 1
     if method not in ("auto", "numba", "python"):
@@ -270,13 +425,15 @@ def branch_and_prune(
         raise ArgumentError(f"bisection must be 'width' or 'smear', got {bisection!r}")
     _start_box(system, lo, hi, primary)
     smear = bisection == "smear"
+    start = time.perf_counter()
     if method != "python" and kernel_ok:
         return _branch_and_prune_numba(
+            start,
             system,
             lo,
             hi,
             primary,
-            eps,
+            tol,
             certify_width,
             newton_width,
             max_boxes,
@@ -296,18 +453,19 @@ def branch_and_prune(
     jac = (*system.jacobian.arrays[:7], system.rows, system.cols, system.n_equations)
     tube_vars, dependent = tube_variables(system, tube, primary)
     tube_points, krawczyk_points = _slope_points(system, tube), _slope_points(system, system.n_equations)
-    out = BranchAndPruneResult()
+    out = _Filed()
+    boxes, exhausted = 0, False
     stack = [(np.array(lo, float), np.array(hi, float))]
     certifications = 0
     while stack:
         lo, hi = stack.pop()
-        out.boxes += 1
-        if progress is not None and out.boxes % PROGRESS_BOXES == 0:
-            progress(out.boxes, None)
-        if out.boxes + CERTIFY_BOXES * certifications > max_boxes:
+        boxes += 1
+        if progress is not None and boxes % PROGRESS_BOXES == 0:
+            progress(boxes, None)
+        if boxes + CERTIFY_BOXES * certifications > max_boxes:
             out.undecided.append((lo, hi))
             out.undecided.extend(stack)
-            out.exhausted = True
+            exhausted = True
             break
         if not contract(system.tape, lo, hi):
             continue
@@ -337,7 +495,7 @@ def branch_and_prune(
         width = hi - lo
         if _primary_width(lo, hi, primary) < certify_width and np.all(np.isfinite(width)):
             klo, khi = _pad(lo, hi)
-            res = krawczyk(system, klo, khi, krawczyk_points)
+            res = krawczyk(system, klo, khi, points=krawczyk_points)
             if res.status == "empty":
                 continue
             unique = res.status == "unique"
@@ -345,7 +503,7 @@ def branch_and_prune(
                 certifications += 1
                 cert = certify(system, 0.5 * res.lo + 0.5 * res.hi)
                 if cert is not None and np.all(cert.x >= klo) and np.all(cert.x <= khi):
-                    file_certificate(system, cert, lo0, hi0, out)
+                    out.file(system, cert, lo0, hi0)
                     if unique:
                         continue
                     if cert.covers(lo, hi):
@@ -355,17 +513,16 @@ def branch_and_prune(
             if np.any(lo > hi):
                 continue
             width = hi - lo
-        if np.max(width) < eps:
+        if np.max(width) < tol:
             out.undecided.append((lo, hi))
             continue
         score = smear_scores(*jac, lo, hi, primary) if smear else None
-        a, b = bisect(lo, hi, primary=primary, eps=eps, score=score, starve=starve)
+        a, b = bisect(lo, hi, primary=primary, tol=tol, score=score, starve=starve)
         stack.append(b)
         stack.append(a)
-    out.stats = {"certifications": certifications}
     if progress is not None:
-        progress(out.boxes, out.boxes)
-    return _drop_covered(out)
+        progress(boxes, boxes)
+    return out.result(boxes, {"certifications": certifications}, exhausted, start)
 
 
 @njit(cache=True, fastmath=False)
@@ -383,7 +540,7 @@ def _pad(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     prove ``K(X) ⊂ int X`` on a box HC4 shrank to a few ulps.  Not clipped to the search
     domain: a solution on the domain's border (a zero tension) is then proven unique in the
     padded box and filed by :func:`file_certificate` as inside, outside or on the boundary, instead of
-    being left undecided at ``eps``."""
+    being left undecided at ``tol``."""
     klo, khi = np.empty(lo.size), np.empty(lo.size)
     for i in range(lo.size):
         pad = max(1e-3 * (hi[i] - lo[i]), 1e-10 * (1.0 + abs(lo[i]) + abs(hi[i])))
@@ -444,7 +601,7 @@ def _drive(
     nsol: int,
     lo0: np.ndarray,
     primary: np.ndarray,
-    eps: float,
+    tol: float,
     certify_width: float,
     newton_width: float,
     max_boxes: int,
@@ -592,7 +749,7 @@ def _drive(
         if cert:
             out[0], out[1], out[2], out[3], out[4], out[5] = lo, hi, klo, khi, rl, rh
             return _CERTIFY, sp, boxes, unique
-        if np.max(width) < eps:
+        if np.max(width) < tol:
             out[0], out[1] = lo, hi
             return _UNDECIDED, sp, boxes, False
         if sp + 2 > cap:
@@ -606,7 +763,7 @@ def _drive(
             score = smear_scores(jop, ja, jb, jclo, jchi, jstart, jend, rows, cols, h, lo, hi, primary)
         else:
             score = np.zeros(n)
-        j = bisect_index(width, primary, eps, score, starve)
+        j = bisect_index(width, primary, tol, score, starve)
         m = 0.5 * lo[j] + 0.5 * hi[j]
         if not np.isfinite(m):
             if np.isfinite(lo[j]):
@@ -678,16 +835,36 @@ def _domain(
 
 
 def same_solution(a: Certificate, b: Certificate) -> bool:
-    """``b`` is the solution certified by ``a``: it lies in ``a``'s box, which holds one."""
+    """Whether ``b`` is the solution certified by ``a``: it lies in ``a``'s box, which holds one,
+    or within ``a``'s uniqueness radius.
+
+    Parameters
+    ----------
+    a, b : Certificate
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> upper, lower = certify(circles, [0.4, 0.8]), certify(circles, [0.4, -0.8])
+    >>> same_solution(upper, certify(circles, [0.6, 0.9])), same_solution(upper, lower)
+    (True, False)
+    """
     return bool(np.all(b.x >= a.lo) and np.all(b.x <= a.hi)) or bool(np.all(np.abs(a.x - b.x) <= a.radius))
 
 
 def _branch_and_prune_numba(
+    start: float,
     system: System,
     lo: npt.ArrayLike,
     hi: npt.ArrayLike,
     primary: npt.ArrayLike | None,
-    eps: float,
+    tol: float,
     certify_width: float,
     newton_width: float,
     max_boxes: int,
@@ -705,7 +882,8 @@ def _branch_and_prune_numba(
     lo0, hi0 = _domain(lo, hi, domain)
     n = lo0.size
     primary = np.ones(n, bool) if primary is None else np.asarray(primary, bool)
-    out = BranchAndPruneResult()
+    out = _Filed()
+    exhausted = False
     t, jt = system.tape, system.jacobian
     t_jac = (*jt.arrays[:7], system.rows, system.cols, system.n_equations)
     if filters:
@@ -753,7 +931,7 @@ def _branch_and_prune_numba(
             len(sol_r),
             lo0,
             primary,
-            float(eps),
+            float(tol),
             float(certify_width),
             float(newton_width),
             int(max_boxes) - CERTIFY_BOXES * certifications,
@@ -782,7 +960,7 @@ def _branch_and_prune_numba(
             continue
         if code == _MAX_BOXES:
             out.undecided.extend((stk_lo[i].copy(), stk_hi[i].copy()) for i in range(sp))
-            out.exhausted = True
+            exhausted = True
             break
         if code == _STACK_FULL:
             stk_lo = np.concatenate([stk_lo, np.empty_like(stk_lo)])
@@ -797,7 +975,7 @@ def _branch_and_prune_numba(
         certifications += 1
         cert = certify(system, 0.5 * rl + 0.5 * rh)
         if cert is not None and np.all(cert.x >= klo) and np.all(cert.x <= khi):
-            if file_certificate(system, cert, lo0, hi0, out):
+            if out.file(system, cert, lo0, hi0):
                 known = out.solutions + out.boundary
                 sol_x = np.array([c.x for c in known])
                 sol_r = np.array([c.radius for c in known])
@@ -809,55 +987,63 @@ def _branch_and_prune_numba(
         if np.any(blo > bhi):
             continue
         width = bhi - blo
-        if np.max(width) < eps:
+        if np.max(width) < tol:
             out.undecided.append((blo, bhi))
             continue
         score = smear_scores(*t_jac, blo, bhi, primary) if smear else None
-        (alo, ahi), (b2lo, b2hi) = bisect(blo, bhi, primary=primary, eps=eps, score=score, starve=starve)
+        (alo, ahi), (b2lo, b2hi) = bisect(blo, bhi, primary=primary, tol=tol, score=score, starve=starve)
         push(b2lo, b2hi)
         push(alo, ahi)
-    out.boxes = boxes
-    out.stats = dict(
-        zip(
-            ("hc4", "statics", "covered", "krawczyk_empty", "bisections", "krawczyk", "tube", "tube_empty"),
-            stats.tolist(),
-        )
-    ) | {"certifications": certifications}
     if progress is not None:
         progress(boxes, boxes)
-    return _drop_covered(out)
-
-
-def _drop_covered(out: BranchAndPruneResult) -> BranchAndPruneResult:
-    """Undecided boxes inside the uniqueness box ``x ± radius`` of a solution (or a boundary
-    one) hold no other
-    one: a box that reached ``eps`` beside a solution before that solution was certified
-    (depth first, its neighbour may come later) is decided after all."""
-    known = out.solutions + out.boundary
-    out.undecided = [(lo, hi) for lo, hi in out.undecided if not any(c.covers(lo, hi) for c in known)]
-    return out
+    names = ("hc4", "statics", "covered", "krawczyk_empty", "bisections", "krawczyk", "tube", "tube_empty")
+    return out.result(boxes, dict(zip(names, stats.tolist())) | {"certifications": certifications}, exhausted, start)
 
 
 def file_certificate(
-    system: System, cert: Certificate, lo0: np.ndarray, hi0: np.ndarray, out: BranchAndPruneResult
-) -> bool:
-    """Add a new certified solution to ``out.solutions`` when its box lies in the search
-    domain and satisfies the redundant constraints, to ``out.boundary`` when it straddles a
-    bound of either (e.g. a zero tension: it may belong to a smaller subset, see
-    :mod:`taut.dgp`); a box proven outside one of them holds no solution.  True when added."""
-    if any(np.all(np.abs(cert.x - c.x) <= max(c.radius, 1e-9)) for c in out.solutions + out.boundary):
-        return False
+    system: System, cert: Certificate, lo0: np.ndarray, hi0: np.ndarray, *, known: Sequence[Certificate] = ()
+) -> str | None:
+    """Where the certified solution ``cert`` of a search over ``[lo0, hi0]`` belongs.
+
+    Parameters
+    ----------
+    system : System
+    cert : Certificate
+    lo0, hi0 : ndarray, shape (n,)
+        The search domain.
+    known : sequence of Certificate
+        Solutions already found: ``cert`` is dropped when it is one of them.
+
+    Returns
+    -------
+    {"solution", "boundary"} or None
+        ``"solution"`` when its box lies in the domain and satisfies the redundant
+        constraints; ``"boundary"`` when it straddles a bound of either (e.g. a zero tension:
+        it may belong to a smaller subset, see :mod:`taut.dgp`); None when its box is proven
+        outside one of them (it holds no solution) or it is known.
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> cert = certify(circles, [0.4, 0.8])
+    >>> file_certificate(circles, cert, np.array([-3.0, -3.0]), np.array([3.0, 3.0]))
+    'solution'
+    >>> file_certificate(circles, cert, np.array([-3.0, -3.0]), np.array([0.5, 3.0]))
+    'boundary'
+    >>> file_certificate(circles, cert, np.array([-3.0, -3.0]), np.array([3.0, 3.0]), known=[cert]) is None
+    True
+    """
+    if any(np.all(np.abs(cert.x - c.x) <= max(c.radius, 1e-9)) for c in known):
+        return None
     if np.any(cert.hi < lo0) or np.any(cert.lo > hi0):
-        return False
+        return None
     vl, vh = evaluate(system.tape, cert.lo, cert.hi)
     t, h = system.tape, system.n_equations
     vl, vh, bl, bh = vl[h:], vh[h:], t.blo[h:], t.bhi[h:]
     equality = bl == bh  # redundant equations: the solution satisfies them, the enclosure meets them
     if np.any(np.where(equality, (vl > bl) | (vh < bh), (vl > bh) | (vh < bl))):
-        return False
+        return None
     inside = bool(np.all(np.where(equality, True, (vl >= bl) & (vh <= bh))))
-    if inside and np.all(cert.lo >= lo0) and np.all(cert.hi <= hi0):
-        out.solutions.append(cert)
-    else:
-        out.boundary.append(cert)
-    return True
+    return "solution" if inside and np.all(cert.lo >= lo0) and np.all(cert.hi <= hi0) else "boundary"

@@ -32,11 +32,35 @@ import numpy as np
 from taut.errors import ArgumentError
 
 # Opcodes shared with taut.interval._hc4.
+#: The opcodes of a tape's nodes (``Tape.op``), shared with the kernels of
+#: :mod:`taut.interval._hc4`: a variable, a constant interval, then the operations.
 VAR, CONST, ADD, SUB, MUL, NEG, SQR, POW, SQRT, DIV = range(10)
 
 
 class Expr:
-    """A node of a polynomial expression; build with :func:`variables` and :func:`const`."""
+    """A node of a polynomial expression: build them with :func:`variables`, :func:`const`,
+    :func:`sqrt` and the operators ``+ − × /`` and ``**`` (non-negative integer powers);
+    constants are folded where trivial (``x·0``, ``x + 0``, ``x·1``).
+
+    Parameters
+    ----------
+    op : int
+        Its opcode (``VAR``, :data:`CONST`, ``ADD``, ... :data:`SQR`).
+    args : iterable of Expr
+        Its operands.
+    index : int
+        The variable's index (``VAR``) or the exponent (``POW``).
+    lo, hi : float
+        A constant's interval (:data:`CONST`).
+    exact : Fraction, optional
+        The rational a constant's interval encloses, when known.
+
+    Examples
+    --------
+    >>> x, y = variables(2)
+    >>> x**2 + y * 3.0 - 1
+    ((sqr(x0) + (x1 * [3.0, 3.0])) - [1.0, 1.0])
+    """
 
     __slots__ = ("op", "args", "index", "lo", "hi", "exact")
     __array_priority__ = 1000
@@ -54,6 +78,13 @@ class Expr:
         self.exact = exact
 
     def is_const(self, value: float | None = None) -> bool:
+        """Whether it is a constant (equal to the float ``value`` when given).
+
+        Examples
+        --------
+        >>> ONE.is_const(1.0), variables(1)[0].is_const()
+        (True, False)
+        """
         return self.op == CONST and (value is None or (self.lo == value and self.hi == value))
 
     def __add__(self, o: Expr | float) -> Expr:
@@ -122,10 +153,30 @@ class Expr:
         return f"{fn}({self.args[0]!r})"
 
 
-def const(lo: float, hi: float | None = None, exact: Fraction | None = None) -> Expr:
-    """The constant interval ``[lo, hi]`` (``[lo, lo]`` for a float); ``exact``: the rational
-    it encloses, when it is known (the multi-precision solver of :mod:`taut.interval._precise`
-    evaluates it, not the float interval)."""
+def const(lo: float, hi: float | None = None, *, exact: Fraction | None = None) -> Expr:
+    """The constant interval ``[lo, hi]`` as an expression: ``[lo, lo]`` for a float, an enclosure
+    of a real that no float holds otherwise.
+
+    Parameters
+    ----------
+    lo : float
+    hi : float, optional
+        Default ``lo``.
+    exact : Fraction, optional
+        The rational it encloses, when known: the multi-precision solver
+        (:func:`solve_precise`) evaluates it instead of the float interval.
+
+    Returns
+    -------
+    Expr
+
+    Examples
+    --------
+    >>> from fractions import Fraction
+    >>> third = const(np.nextafter(1 / 3, 0), np.nextafter(1 / 3, 1), exact=Fraction(1, 3))
+    >>> third.lo < 1 / 3 < third.hi, third.exact
+    (True, Fraction(1, 3))
+    """
     return Expr(CONST, lo=lo, hi=lo if hi is None else hi, exact=exact)
 
 
@@ -133,20 +184,70 @@ def _coerce(x: Expr | float) -> Expr:
     return x if isinstance(x, Expr) else const(float(x))
 
 
+#: The constants 0 and 1 as expressions (folded: ``x * ZERO`` is ``ZERO``).
 ZERO, ONE = const(0.0), const(1.0)
 
 
 def variables(n: int) -> list[Expr]:
-    """The unknowns ``x_0 … x_{n-1}``."""
+    """The unknowns ``x_0 … x_{n−1}`` as expressions.
+
+    Parameters
+    ----------
+    n : int
+
+    Returns
+    -------
+    list of Expr
+
+    Examples
+    --------
+    >>> variables(3)
+    [x0, x1, x2]
+    """
     return [Expr(VAR, index=i) for i in range(n)]
 
 
 def sqrt(e: Expr) -> Expr:
+    """The square root of an expression.
+
+    Parameters
+    ----------
+    e : Expr or float
+
+    Returns
+    -------
+    Expr
+
+    Examples
+    --------
+    >>> sqrt(variables(1)[0] + 1)
+    sqrt((x0 + [1.0, 1.0]))
+    """
     return Expr(SQRT, (_coerce(e),))
 
 
 def derivative(e: Expr, i: int, memo: dict | None = None) -> Expr:
-    """``∂e/∂x_i`` as an expression (constants folded)."""
+    """The partial derivative ``∂e/∂x_i`` as an expression (constants folded): the constraints
+    are polynomials, so their derivatives are again expressions.
+
+    Parameters
+    ----------
+    e : Expr
+    i : int
+        The variable's index.
+    memo : dict, optional
+        Derivatives already taken, by node (shared subexpressions are differentiated once).
+
+    Returns
+    -------
+    Expr
+
+    Examples
+    --------
+    >>> x, y = variables(2)
+    >>> derivative(x**2 * y, 0)
+    (([2.0, 2.0] * x0) * x1)
+    """
     memo = {} if memo is None else memo
     key = id(e)
     if key in memo:
@@ -263,13 +364,41 @@ class Tape:
 
 
 def compile_tape(exprs: Iterable[Expr | float], bounds: Sequence[tuple[float, ...]]) -> Tape:
-    """Compile expressions ``exprs[c]`` with value bounds ``bounds[c] = (lo, hi)``.
+    """Compile expressions with value bounds into a :class:`Tape`: flat arrays, one node per
+    operation, children before parents, each constraint a contiguous run of nodes ending at
+    its root, that the kernels of :mod:`taut.interval._hc4` evaluate and contract.
 
     Nodes are shared across constraints and merged when structurally equal (hash-consing:
-    same operation on the same operands), so constraint ``c``'s segment holds only the
-    nodes that earlier constraints lack: the tape is evaluated in order, from its first
-    node (a Jacobian's entries and the secondary points of the DGP repeat the same
-    products many times over)."""
+    same operation on the same operands), so constraint ``c``'s segment holds only the nodes
+    that earlier constraints lack: the tape is evaluated in order, from its first node.
+
+    Parameters
+    ----------
+    exprs : iterable of Expr or float
+        The constraints' expressions.
+    bounds : sequence of (float, float)
+        ``(lo, hi)`` of each: ``lo ≤ expr ≤ hi``.
+
+    Returns
+    -------
+    Tape
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §3.1.3. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    ``x·y`` and ``x·y + 1`` share the product:
+
+    >>> x, y = variables(2)
+    >>> xy = x * y
+    >>> tape = compile_tape([xy, xy + 1], [(0.0, 1.0), (-np.inf, np.inf)])
+    >>> tape.size, len(tape.op)
+    (2, 5)
+    """
     op: list[int]
     op, a, b, clo, chi, start, end = [], [], [], [], [], [], []
     exact: list[Fraction | None] = []
@@ -333,12 +462,32 @@ def compile_tape(exprs: Iterable[Expr | float], bounds: Sequence[tuple[float, ..
 
 @dataclass(frozen=True)
 class System:
-    """A square system of ``h`` polynomial equations in ``h`` unknowns plus redundant
-    constraints (equalities or inequalities) that only the contractor uses.
+    """A square system of polynomial equations plus redundant constraints (equalities or
+    inequalities) that only the contractor uses: what :func:`compile_system` builds and the
+    solvers take.
 
-    ``tape`` holds the equations first (bounds ``[0, 0]``) then the redundant constraints;
-    ``jacobian`` holds the non-zero entries ``∂f_i/∂x_j`` at ``rows``, ``cols``;
-    ``degrees`` the polynomial degree of each equation (:func:`degree`)."""
+    Attributes
+    ----------
+    n : int
+        Number of unknowns.
+    n_equations : int
+        Number of equations ``h`` (``= n``).
+    tape : Tape
+        The equations first (bounds ``[0, 0]``), then the redundant constraints.
+    jacobian : Tape
+        The non-zero entries ``∂f_i/∂x_j`` of the equations' Jacobian.
+    rows, cols : ndarray of int
+        Where each entry of ``jacobian`` goes.
+    degrees : ndarray of int
+        The polynomial degree of each equation (:func:`degree`).
+
+    Examples
+    --------
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> circles.n, circles.rows, circles.cols
+    (2, array([0, 0, 1, 1]), array([0, 1, 0, 1]))
+    """
 
     n: int
     n_equations: int
@@ -354,8 +503,42 @@ def compile_system(
     equations: Iterable[Expr],
     constraints: Sequence[tuple[Expr | float, tuple[float, float]]] = (),
 ) -> System:
-    """Compile ``equations`` (expressions equal to 0, ``len == n``) and ``constraints``
-    (pairs ``(expr, (lo, hi))``) over the unknowns ``x_0 … x_{n-1}``."""
+    """Compile a square polynomial system and its Jacobian (symbolic, :func:`derivative`).
+
+    Parameters
+    ----------
+    n : int
+        Number of unknowns ``x_0 … x_{n−1}``.
+    equations : iterable of Expr
+        ``n`` expressions equal to 0.
+    constraints : sequence of (Expr or float, (float, float))
+        Redundant constraints ``lo ≤ expr ≤ hi`` that prune boxes (a tension ``≥ 0``).
+
+    Returns
+    -------
+    System
+
+    Raises
+    ------
+    TautError
+        Unless there are ``n`` equations.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §1.3.2, §3.1.3. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    The two unit circles centred at ``(0, 0)`` and ``(1, 0)`` (Berti 2015, §3.2.1, Example 1),
+    with ``y ≥ 0``:
+
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1], [(y, (0.0, np.inf))])
+    >>> circles.tape.size, circles.degrees
+    (3, array([2, 2]))
+    """
     equations = [_coerce(e) for e in equations]
     if len(equations) != n:
         raise ArgumentError(f"a square system needs {n} equations, got {len(equations)}")

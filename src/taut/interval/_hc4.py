@@ -268,7 +268,27 @@ def point_kernel(
     x: np.ndarray,
     out: np.ndarray,
 ) -> None:
-    """Plain floating-point evaluation at ``x`` (constants at their midpoints): for Newton."""
+    """The floating-point value of every constraint of a tape at ``x``: the compiled kernel of
+    :func:`evaluate_point`, callable from other kernels (hence the flat tape arguments).
+
+    Parameters
+    ----------
+    op, a, b, clo, chi, start, end : ndarray
+        The first seven of ``Tape.arrays``.
+    x : ndarray, shape (n,)
+    out : ndarray, shape (tape.size,)
+        Receives the values.
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> tape = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1]).tape
+    >>> out = np.empty(tape.size)
+    >>> point_kernel(*tape.arrays[:7], np.array([0.5, 0.5]), out)
+    >>> out
+    array([-0.5, -0.5])
+    """
     v = np.empty(op.size)
     for c in range(start.size):
         for k in range(start[c], end[c]):
@@ -296,13 +316,67 @@ def point_kernel(
         out[c] = v[end[c] - 1]
 
 
-def contract(tape: Tape, lo: np.ndarray, hi: np.ndarray, ratio: float = 0.05, max_rounds: int = 50) -> bool:
-    """Contract the box ``[lo, hi]`` in place with HC4; False when it holds no solution."""
+def contract(tape: Tape, lo: np.ndarray, hi: np.ndarray, *, ratio: float = 0.05, max_rounds: int = 50) -> bool:
+    """Contract the box ``[lo, hi]`` in place with HC4: forward evaluation and backward
+    projection of every constraint of ``tape``, repeated while a domain shrinks by more than
+    ``ratio`` (Berti 2015, §1.3.3; Benhamou et al. 1999).
+
+    Parameters
+    ----------
+    tape : Tape
+    lo, hi : ndarray, shape (n,)
+        The box, contracted in place (float arrays).
+    ratio : float, default 0.05
+        Stop when no domain shrinks by more than this fraction of its width.
+    max_rounds : int, default 50
+        At most this many sweeps.
+
+    Returns
+    -------
+    bool
+        False when the box holds no solution.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §1.3.3. (docs/references.bib: berti2015)
+    .. [2] F. Benhamou, F. Goualard, L. Granvilliers, J.-F. Puget, "Revising hull and box
+       consistency", ICLP, 1999. (docs/references.bib: benhamou1999)
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> lo, hi = np.array([-2.0, 0.0]), np.array([2.0, 2.0])
+    >>> contract(circles.tape, lo, hi), np.round(lo, 12), hi
+    (True, array([0., 0.]), array([1., 1.]))
+    """
     return bool(contract_kernel(*tape.arrays, lo, hi, ratio, max_rounds))
 
 
 def evaluate(tape: Tape, lo: npt.ArrayLike, hi: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
-    """Natural interval evaluation of every constraint over the box."""
+    """The natural interval evaluation of every constraint of ``tape`` over a box.
+
+    Parameters
+    ----------
+    tape : Tape
+    lo, hi : array_like, shape (n,)
+
+    Returns
+    -------
+    lo, hi : ndarray, shape (tape.size,)
+        Enclosures of the constraints' values.
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> evaluate(circles.tape, [0.0, 0.0], [1.0, 1.0])
+    (array([-1., -1.]), array([1., 1.]))
+    """
     out_lo, out_hi = np.empty(tape.size), np.empty(tape.size)
     op, a, b, clo, chi, start, end, _, _ = tape.arrays
     evaluate_kernel(op, a, b, clo, chi, start, end, np.asarray(lo, float), np.asarray(hi, float), out_lo, out_hi)
@@ -310,6 +384,26 @@ def evaluate(tape: Tape, lo: npt.ArrayLike, hi: npt.ArrayLike) -> tuple[np.ndarr
 
 
 def evaluate_point(tape: Tape, x: npt.ArrayLike) -> np.ndarray:
+    """The floating-point value of every constraint of ``tape`` at a point (constants at their
+    midpoints): for Newton's method.
+
+    Parameters
+    ----------
+    tape : Tape
+    x : array_like, shape (n,)
+
+    Returns
+    -------
+    ndarray, shape (tape.size,)
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> evaluate_point(circles.tape, [0.5, 0.5])
+    array([-0.5, -0.5])
+    """
     out = np.empty(tape.size)
     op, a, b, clo, chi, start, end, _, _ = tape.arrays
     point_kernel(op, a, b, clo, chi, start, end, np.asarray(x, float), out)

@@ -41,6 +41,7 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut._results import Result
 from taut.interval import _kernels as K
 from taut.interval._expression import System
 from taut.interval._hc4 import evaluate, evaluate_kernel, evaluate_point, forward_kernel, point_kernel
@@ -63,8 +64,30 @@ def residual(system: System, x: npt.ArrayLike) -> np.ndarray:
     return evaluate_point(system.tape, x)[: system.n_equations]
 
 
-def newton(system: System, x0: npt.ArrayLike, tol: float = 1e-13, max_iter: int = 30) -> tuple[np.ndarray, bool]:
-    """Newton's method from ``x0``; ``(x, converged)``."""
+def newton(system: System, x0: npt.ArrayLike, *, tol: float = 1e-13, max_iter: int = 30) -> tuple[np.ndarray, bool]:
+    """Newton's method on the equations of ``system`` from ``x0``.
+
+    Parameters
+    ----------
+    system : System
+    x0 : array_like, shape (n,)
+    tol : float, default 1e-13
+        Converged when the last step is at most ``tol · max(1, ‖x‖∞)``.
+    max_iter : int, default 30
+
+    Returns
+    -------
+    x : ndarray, shape (n,)
+    converged : bool
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> newton(circles, [0.4, 0.8])
+    (array([0.5      , 0.8660254]), True)
+    """
     x = np.array(x0, dtype=float)
     for _ in range(max_iter):
         f = residual(system, x)
@@ -201,18 +224,41 @@ def _diagonally_dominant(Sl: np.ndarray, Sh: np.ndarray) -> bool:
 
 
 @dataclass(frozen=True)
-class KrawczykResult:
+class KrawczykResult(Result):
+    """One Krawczyk step's verdict on a box (a frozen result, read-only arrays).
+
+    Attributes
+    ----------
+    status : str
+        ``"unique"`` (exactly one solution in the box), ``"empty"`` (none) or ``"unknown"``.
+    lo, hi : ndarray, shape (n,)
+        ``K(X) ∩ X``, which holds every solution of the box.
+    """
+
     status: str  #: "unique" (exactly one solution in the box), "empty" (none), "unknown"
     lo: np.ndarray  #: K(X) ∩ X
     hi: np.ndarray
 
 
-def krawczyk(system: System, lo: npt.ArrayLike, hi: npt.ArrayLike, points: int = 0) -> KrawczykResult:
-    """One Krawczyk step on the box ``[lo, hi]`` (see module docstring).  With
-    ``points > 0`` the slope enclosure of :mod:`taut.interval._slope` (that many nodes)
+def krawczyk(system: System, lo: npt.ArrayLike, hi: npt.ArrayLike, *, points: int = 0) -> KrawczykResult:
+    """One Krawczyk step on the box ``[lo, hi]``: ``K(X) ⊂ int X`` proves a unique solution in
+    ``X``, ``K(X) ∩ X = ∅`` proves none (module docstring).
+
+    With ``points > 0`` the slope enclosure of :mod:`taut.interval._slope` (that many nodes)
     replaces ``J(X)``: it proves more boxes empty and contracts more, but ``K(X) ⊂ int X``
     from slopes proves only that a solution exists, so such a box is tried again with
     ``J(X)``, which alone proves it unique.
+
+    Parameters
+    ----------
+    system : System
+    lo, hi : array_like, shape (n,)
+    points : int, default 0
+        Gauss–Legendre nodes of the slope enclosure (0: the Jacobian over the box).
+
+    Returns
+    -------
+    KrawczykResult
 
     References
     ----------
@@ -223,6 +269,14 @@ def krawczyk(system: System, lo: npt.ArrayLike, hi: npt.ArrayLike, points: int =
     .. [3] A. Berti, "Kinematics and statics of cable-driven parallel robots by
        interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
        Università di Bologna, 2015, §3.2.1. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> krawczyk(circles, [0.45, 0.8], [0.55, 0.9]).status, krawczyk(circles, [1.0, 1.0], [1.1, 1.1]).status
+    ('unique', 'empty')
     """
     lo, hi = np.asarray(lo, float), np.asarray(hi, float)
     if points:
@@ -472,13 +526,58 @@ def certified_step(
     max_iter: int,
     inflations: int,
 ) -> tuple[int, np.ndarray, np.ndarray, np.ndarray]:
-    """Newton from ``x0``, then Krawczyk on the box around the limit ``x`` whose
-    half-width covers the step: ``margin·|x − x₀| + floor·max(1, ‖x‖∞) + ‖x − x₀‖∞²`` per
-    component, widened ``inflations`` times to the Krawczyk hull (ε-inflation, Rump 1983).
-    Returns ``(status, x, lo, hi)``: status 1 — ``[lo, hi]`` holds ``x₀`` and exactly one
-    solution, ``x``; 2 — the box holds none; 0 — undecided; −1 — Newton failed.  The
-    tracking update of :mod:`taut.dgp._tracking` (called from its compiled code, hence the
-    flat tape arguments)."""
+    """Newton from ``x0``, then Krawczyk on the box around the limit ``x`` whose half-width covers
+    the step, ``margin·|x − x₀| + floor·max(1, ‖x‖∞) + ‖x − x₀‖∞²`` per component, widened
+    ``inflations`` times to the Krawczyk hull (ε-inflation, Rump 1983): the tracking update of
+    :mod:`taut.dgp._tracking`, compiled and called from its compiled code (hence the flat tape
+    arguments).
+
+    Parameters
+    ----------
+    op, a, b, clo, chi, start, end : ndarray
+        The equations' tape (``System.tape.arrays[:7]``).
+    h : int
+        Number of equations.
+    jop, ja, jb, jclo, jchi, jstart, jend : ndarray
+        The Jacobian's tape.
+    rows, cols : ndarray of int
+        Where the Jacobian's entries go.
+    x0 : ndarray, shape (n,)
+    margin, floor : float
+        Of the box's half-width (above).
+    tol : float
+        Newton's convergence tolerance, relative.
+    max_iter : int
+        Newton steps.
+    inflations : int
+        Krawczyk tries, each on the hull of the last.
+
+    Returns
+    -------
+    status : int
+        1: ``[lo, hi]`` holds exactly one solution, ``x``; 2: the box holds none; 0: undecided;
+        −1: Newton failed.
+    x : ndarray, shape (n,)
+    lo, hi : ndarray, shape (n,)
+
+    References
+    ----------
+    .. [1] S. M. Rump, "Solving algebraic problems with high accuracy", in U. Kulisch,
+       W. L. Miranker (eds.), A New Approach to Scientific Computation, Academic Press, 1983.
+       (docs/references.bib: rump1983)
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> s = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> status, x1, lo, hi = certified_step(
+    ...     *s.tape.arrays[:7], s.n_equations, *s.jacobian.arrays[:7], s.rows, s.cols,
+    ...     np.array([0.49, 0.87]), 2.0, 1e-12, 1e-13, 30, 3,
+    ... )
+    >>> status, x1
+    (1, array([0.5      , 0.8660254]))
+    """
     n = x0.size
     x = x0.copy()
     f = np.empty(h)
@@ -519,15 +618,38 @@ def certified_step(
     return status, x, rl, rh
 
 
-def inflate(system: System, x: npt.ArrayLike, delta: float = 1e-9, max_doublings: int = 60) -> float:
-    """Half-width of the largest box ``x ± 2^k δ`` over which ``J`` is proven regular
-    (§3.2.1, Eqs. 3.25–3.29); 0 when even ``x ± δ`` fails.
+def inflate(system: System, x: npt.ArrayLike, *, delta: float = 1e-9, max_doublings: int = 60) -> float:
+    """The half-width of the largest box ``x ± 2^k δ`` over which the Jacobian is proven regular
+    (its preconditioned enclosure strictly diagonally dominant; Berti 2015, §3.2.1, Eqs.
+    3.25–3.29): that box holds no other solution than ``x``.
+
+    Parameters
+    ----------
+    system : System
+    x : array_like, shape (n,)
+        A solution (or a point near one).
+    delta : float, default 1e-9
+        The first half-width tried.
+    max_doublings : int, default 60
+
+    Returns
+    -------
+    float
+        0 when even ``x ± δ`` fails.
 
     References
     ----------
     .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
        interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
        Università di Bologna, 2015, §3.2.1, Eqs. 3.25–3.29. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> inflate(circles, [0.5, np.sqrt(3) / 2])
+    0.134217728
     """
     x = np.asarray(x, float)
     try:
@@ -545,8 +667,29 @@ def inflate(system: System, x: npt.ArrayLike, delta: float = 1e-9, max_doublings
 
 
 @dataclass(frozen=True)
-class Certificate:
-    """A solution ``x`` proven unique in ``[lo, hi]`` (Krawczyk) and alone in ``x ± radius``."""
+class Certificate(Result):
+    """A solution proven unique in a box (Krawczyk) and alone in a wider one (a frozen result,
+    read-only arrays).
+
+    Attributes
+    ----------
+    x : ndarray, shape (n,)
+        The solution (Newton's limit).
+    lo, hi : ndarray, shape (n,)
+        A box proven to hold exactly one solution, ``x``.
+    radius : float
+        Half-width of the box ``x ± radius`` proven to hold no other solution
+        (:func:`inflate`).
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> cert = certify(circles, [0.4, 0.8])
+    >>> cert.x, cert.width < 1e-9, round(cert.radius, 3)
+    (array([0.5      , 0.8660254]), True, 0.134)
+    """
 
     x: np.ndarray
     lo: np.ndarray
@@ -555,15 +698,55 @@ class Certificate:
 
     @property
     def width(self) -> float:
+        """Largest width of the box ``[lo, hi]``."""
         return float(np.max(self.hi - self.lo))
 
     def covers(self, lo: np.ndarray, hi: np.ndarray) -> bool:
-        """The box ``[lo, hi]`` lies in ``x ± radius``: it holds no solution but ``x``."""
+        """Whether the box ``[lo, hi]`` lies in ``x ± radius``: it then holds no solution but ``x``.
+
+        Parameters
+        ----------
+        lo, hi : ndarray, shape (n,)
+
+        Returns
+        -------
+        bool
+        """
         return bool(np.all(lo >= self.x - self.radius) and np.all(hi <= self.x + self.radius))
 
 
-def certify(system: System, x0: npt.ArrayLike, scale: float = 1e-8) -> Certificate | None:
-    """Newton from ``x0``, then Krawczyk on a small box around the limit, then inflation."""
+def certify(system: System, x0: npt.ArrayLike, *, scale: float = 1e-8) -> Certificate | None:
+    """A certified solution near ``x0``: Newton from ``x0``, Krawczyk on a small box around its
+    limit (widened until proven), then inflation of the uniqueness box.
+
+    Parameters
+    ----------
+    system : System
+    x0 : array_like, shape (n,)
+    scale : float, default 1e-8
+        Relative half-width of the first Krawczyk box.
+
+    Returns
+    -------
+    Certificate or None
+        None when Newton does not converge or no box is proven.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §3.2.1. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> from taut.interval import compile_system, variables
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - 1) ** 2 + y**2 - 1])
+    >>> certify(circles, [0.4, 0.8]).x
+    array([0.5      , 0.8660254])
+    >>> certify(circles, [0.5, 0.0]) is None
+    True
+    """
     x, ok = newton(system, x0)
     if not ok:
         return None

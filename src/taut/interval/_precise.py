@@ -36,13 +36,15 @@ References
 from __future__ import annotations
 
 import math
+import time
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.interval._expression import ADD, CONST, DIV, MUL, NEG, POW, SQR, SQRT, SUB, VAR, System, Tape
 from taut.interval._krawczyk import Certificate
 
@@ -55,28 +57,63 @@ NEWTON_STEPS = 12
 
 #: Boxes one search may process before what is left stays undecided (about 0.3 ms each on
 #: the 12 unknowns of a 3-cable DGP sub-problem).
-MAX_BOXES = 20_000
+MAX_PRECISE_BOXES = 20_000
 
 
 @dataclass(frozen=True)
-class PreciseResult:
-    """What a multi-precision search proved: ``solutions`` (each unique in its box),
-    ``boundary`` (certified, but its box straddles a bound of the domain or of a redundant
-    inequality), boxes ``(lo, hi)`` left ``undecided`` (narrower than ``2^(−precision/2)``
-    relative: around a singular root, where Newton's method does not converge, or roots
-    closer than ``2^(−precision/4)``), boxes left ``unsearched`` when the budget ran out, and
-    the number of ``boxes`` processed.  Every float box is rounded outwards from the arb one
-    it stands for."""
+class PreciseResult(Result):
+    """What a multi-precision search proved (a frozen result, read-only arrays).  Every float
+    box is rounded outwards from the arb one it stands for.
+
+    Attributes
+    ----------
+    solutions : tuple of Certificate
+        Roots, each unique in its box.
+    boundary : tuple of Certificate
+        Certified roots whose box straddles a bound of the domain or of a redundant inequality.
+    undecided : tuple of (ndarray, ndarray)
+        Boxes narrower than ``2^(−precision/2)`` relative: around a singular root, where
+        Newton's method does not converge, or roots closer than ``2^(−precision/4)``.
+    unsearched : tuple of (ndarray, ndarray)
+        Boxes left when the budget ran out.
+    boxes : int
+        Boxes processed.
+    elapsed_s : float
+        Wall-clock seconds.
+    exhausted : bool
+        The budget ran out (some boxes are unsearched).
+    complete : bool
+        No box is undecided or unsearched.
+    """
 
     solutions: tuple[Certificate, ...]
     boundary: tuple[Certificate, ...]
     undecided: tuple[tuple[np.ndarray, np.ndarray], ...]
     unsearched: tuple[tuple[np.ndarray, np.ndarray], ...]
     boxes: int
+    elapsed_s: float
+    exhausted: bool = field(init=False)
+    complete: bool = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "exhausted", bool(self.unsearched))
+        object.__setattr__(self, "complete", not self.undecided and not self.unsearched)
+        super().__post_init__()
 
 
 def precise_available() -> bool:
-    """python-flint can be imported."""
+    """Whether python-flint (the ``precise`` extra, arb balls) can be imported, which
+    :func:`solve_precise` needs.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> isinstance(precise_available(), bool)
+    True
+    """
     try:
         import flint  # noqa: F401
     except ImportError:
@@ -193,16 +230,60 @@ def solve_precise(
     *,
     domain: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
     precision: int = PRECISION,
-    max_boxes: int = MAX_BOXES,
+    max_boxes: int = MAX_PRECISE_BOXES,
 ) -> PreciseResult:
     """Every root of ``system`` in the boxes ``[(lo, hi), …]``, certified in arb balls of
-    ``precision`` bits (module docstring): a root whose box lies in ``domain`` is a solution,
-    one whose box straddles its bound is ``boundary``, one outside it is dropped.  A root in
-    two overlapping boxes is reported once.  Boxes narrower than ``2^(−precision/2)``
-    relative are returned undecided, those left when ``max_boxes`` have been processed (all
-    boxes together) unsearched.  Raises ImportError without python-flint."""
+    ``precision`` bits (module docstring): the boxes double precision leaves too narrow to
+    split (nearly double roots of the DGP) searched again.
+
+    A root whose box lies in ``domain`` is a solution, one whose box straddles its bound is
+    ``boundary``, one outside it is dropped.  A root in two overlapping boxes is reported
+    once.
+
+    Parameters
+    ----------
+    system : System
+    boxes : sequence of (array_like, array_like)
+        The boxes to search, sharing one budget.
+    domain : (array_like, array_like), optional
+        The whole search domain (default unbounded).
+    precision : int, default :data:`PRECISION`
+        Bits of the balls.
+    max_boxes : int, default :data:`MAX_PRECISE_BOXES`
+        Boxes processed, all start boxes together, before the rest is left unsearched.
+
+    Returns
+    -------
+    PreciseResult
+
+    Raises
+    ------
+    ImportError
+        Without python-flint (:func:`precise_available`).
+
+    References
+    ----------
+    .. [1] F. Johansson, "Arb: efficient arbitrary-precision midpoint-radius interval
+       arithmetic", IEEE Transactions on Computers 66(8), 2017. (docs/references.bib: johansson2017)
+
+    Examples
+    --------
+    Two circles whose centres are ``2 − 2⁻⁶⁰/3`` apart meet in two points about ``1.9e-10``
+    apart in ``y``, which no float box separates:
+
+    >>> from fractions import Fraction
+    >>> from taut.interval import compile_system, const, variables
+    >>> gap = Fraction(2) - Fraction(1, 3 * 2**60)
+    >>> centre = const(np.nextafter(float(gap), 0), np.nextafter(float(gap), 3), exact=gap)
+    >>> x, y = variables(2)
+    >>> circles = compile_system(2, [x**2 + y**2 - 1, (x - centre) ** 2 + y**2 - 1])
+    >>> res = solve_precise(circles, [([0.5, -0.5], [1.5, 0.5])])
+    >>> len(res.solutions), res.complete
+    (2, True)
+    """
     import flint
 
+    start = time.perf_counter()
     arb = flint.arb
     old = flint.ctx.prec
     flint.ctx.prec = int(precision)
@@ -357,6 +438,13 @@ def solve_precise(
             left, right = list(B), list(B)
             left[i], right[i] = (a, m), (m, b)
             stack += [right, left]
-        return PreciseResult(tuple(solutions), tuple(boundary), tuple(undecided), tuple(unsearched), processed)
+        return PreciseResult(
+            tuple(solutions),
+            tuple(boundary),
+            tuple(undecided),
+            tuple(unsearched),
+            processed,
+            time.perf_counter() - start,
+        )
     finally:
         flint.ctx.prec = old

@@ -95,6 +95,8 @@ from taut.model._robot import STANDARD_GRAVITY, Robot
 #: CASPR's gravitational acceleration [m/s²], along its −z axis.
 CASPR_GRAVITY = 9.81
 
+#: How the name of a CASPR model's bodies file ends (``X_bodies.xml``) and of the cables file
+#: beside it (``X_cables.xml``).
 BODIES_SUFFIX = "_bodies.xml"
 CABLES_SUFFIX = "_cables.xml"
 
@@ -147,10 +149,31 @@ _CABLE_TYPES = ("cable_ideal", "cable_linear_spring")
 _INERTIA = ("Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz")
 
 
-def parse_xml(text: str, source: str) -> ET.Element:
-    """The root element of an XML text. Entity declarations are refused before parsing (they
+def parse_xml(text: str, *, source: str) -> ET.Element:
+    """The root element of an XML text.  Entity declarations are refused before parsing (they
     serve no purpose in a model and are how an XML file expands to gigabytes); CASPR's own
-    ``<!DOCTYPE ... SYSTEM "...dtd">`` and ``<!ATTLIST>`` lines are harmless and accepted."""
+    ``<!DOCTYPE ... SYSTEM "...dtd">`` and ``<!ATTLIST>`` lines are harmless and accepted.
+
+    Parameters
+    ----------
+    text : str
+    source : str
+        Where the text comes from, for messages.
+
+    Returns
+    -------
+    xml.etree.ElementTree.Element
+
+    Raises
+    ------
+    RobotFileError
+        For an entity declaration or text that is not XML.
+
+    Examples
+    --------
+    >>> parse_xml('<links><link_rigid num="1"/></links>', source="example").find("link_rigid").get("num")
+    '1'
+    """
     if _ENTITY.search(text):
         raise RobotFileError(f"{source}: XML entity declarations (<!ENTITY>) are not accepted in a model file")
     try:
@@ -414,10 +437,19 @@ def cables_path(bodies_path: str | Path) -> Path:
     return path.with_name(path.name[: -len(BODIES_SUFFIX)] + CABLES_SUFFIX)
 
 
-def read_caspr(bodies_path: str | Path, cable_set: str | None = None) -> Robot:
-    """Read the CASPR model ``X_bodies.xml`` and its ``X_cables.xml`` (see the module docstring).
+def read_caspr(bodies_path: str | Path, *, cable_set: str | None = None) -> Robot:
+    """Read the CASPR model ``X_bodies.xml`` and its ``X_cables.xml`` (module docstring).
 
-    ``cable_set`` picks a cable set other than the file's ``default_cable_set``.
+    Parameters
+    ----------
+    bodies_path : str or Path
+        The ``X_bodies.xml`` file (its name ends in :data:`BODIES_SUFFIX`).
+    cable_set : str, optional
+        A cable set other than the file's ``default_cable_set``.
+
+    Returns
+    -------
+    Robot
 
     Raises
     ------
@@ -425,6 +457,23 @@ def read_caspr(bodies_path: str | Path, cable_set: str | None = None) -> Robot:
         A missing or malformed file, inconsistent ids, a NaN.
     UnsupportedRobotError
         A construct taut does not model, named.
+
+    References
+    ----------
+    .. [1] D. Lau, J. Eden, Y. Tan, D. Oetomo, "CASPR: A comprehensive cable-robot analysis and
+       simulation platform for the research of cable-driven parallel robots", IEEE/RSJ
+       International Conference on Intelligent Robots and Systems (IROS), 2016.
+       (docs/references.bib: lau2016)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> import pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "spatial_bodies.xml"
+    >>> write_caspr(example("spatial-8cable"), path)
+    >>> robot = read_caspr(path)
+    >>> robot.n_cables, bool(np.allclose(robot.exits, example("spatial-8cable").exits))
+    (8, True)
     """
     from taut.model._io import read_text
 
@@ -437,13 +486,13 @@ def parse_caspr(path: Path, text: str, cable_set: str | None = None) -> Robot:
     from taut.model._io import read_text
 
     source = str(path)
-    links = _read_links(parse_xml(text, source), source)
+    links = _read_links(parse_xml(text, source=source), source)
     cpath = cables_path(path)
     if not cpath.exists():
         raise RobotFileError(
             f"{source}: the cables file {cpath} is missing (CASPR keeps X_cables.xml beside X_bodies.xml)"
         )
-    set_id, cables = _read_cables(parse_xml(read_text(cpath), str(cpath)), str(cpath), len(links), cable_set)
+    set_id, cables = _read_cables(parse_xml(read_text(cpath), source=str(cpath)), str(cpath), len(links), cable_set)
     return _robot(path, links, set_id, cables)
 
 
@@ -703,7 +752,7 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
     }
     from taut.model._io import robot_from_dict
 
-    return robot_from_dict(data, source)
+    return robot_from_dict(data, source=source)
 
 
 # ---- writing -----------------------------------------------------------------------------
@@ -816,20 +865,46 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
     A spatial rigid platform becomes a ``SPATIAL_EULER_XYZ`` link (``xyz-moving``) or a massless
     ``T_XYZ`` link carrying a ``S_FIXED_XYZ`` one (``xyz-fixed``); a planar one a
     ``PLANAR_XZ`` link (taut's ``y`` is CASPR's ``z``, where its gravity acts), or ``PLANAR_XY``
-    when it has a mass and no gravity in its plane; point masses ``T_XYZ``, ``P_XZ`` or ``P_XY``. A constant external wrench that is a downward force becomes the
-    mass whose weight it is. Jointed bodies become actuated links after the platform's
-    (``R_X``/``R_Y``/``R_Z``/``P_X`` along a positive coordinate axis, else
-    ``R_AXIS``/``P_AXIS``; a planar revolute joint ``R_Z`` in the XY plane, ``R_AXIS`` about −y
-    in the XZ plane, so that CASPR's ``q`` is taut's) with their masses. Reference data, trajectories, joint names
-    and the collision shapes of the platform and its bodies are not part of a CASPR model and
-    are not written.
+    when it has a mass and no gravity in its plane; point masses ``T_XYZ``, ``P_XZ`` or ``P_XY``.
+    A constant external wrench that is a downward force becomes the mass whose weight it is.
+    Jointed bodies become actuated links after the platform's (``R_X``/``R_Y``/``R_Z``/``P_X``
+    along a positive coordinate axis, else ``R_AXIS``/``P_AXIS``; a planar revolute joint
+    ``R_Z`` in the XY plane, ``R_AXIS`` about −y in the XZ plane, so that CASPR's ``q`` is
+    taut's) with their masses.  Reference data, trajectories, joint names and the collision
+    shapes of the platform and its bodies are not part of a CASPR model and are not written.
+
+    Parameters
+    ----------
+    robot : Robot
+    bodies_path : str or Path
+        The ``X_bodies.xml`` file to write; ``X_cables.xml`` goes beside it.
 
     Raises
     ------
     UnsupportedRobotError
-        For what the format cannot hold: obstacles, exit pulleys, length bounds,
-        cable radii, other wrenches and gravities, the ``tilt-torsion`` convention.
+        For what the format cannot hold: obstacles, exit pulleys, length bounds, cable radii,
+        other wrenches and gravities, the ``tilt-torsion`` convention.
+    RobotFileError
+        For a name that does not end in :data:`BODIES_SUFFIX`, or files that cannot be written.
+
+    References
+    ----------
+    .. [1] D. Lau, J. Eden, Y. Tan, D. Oetomo, "CASPR: A comprehensive cable-robot analysis and
+       simulation platform for the research of cable-driven parallel robots", IEEE/RSJ
+       International Conference on Intelligent Robots and Systems (IROS), 2016.
+       (docs/references.bib: lau2016)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> import pathlib, tempfile
+    >>> folder = pathlib.Path(tempfile.mkdtemp())
+    >>> write_caspr(example("planar-4cable"), folder / "planar_bodies.xml")
+    >>> sorted(p.name for p in folder.iterdir())
+    ['planar_bodies.xml', 'planar_cables.xml']
     """
+    from taut.model._io import write_file
+
     bodies = Path(bodies_path)
     cables = cables_path(bodies)
     if robot.obstacles or robot.installation_space is not None or robot.disallowed:
@@ -916,6 +991,4 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
             ET.SubElement(att, "location").text = _fmt(point)
     for tree, target in ((root, bodies), (croot, cables)):
         ET.indent(tree)
-        target.write_text(
-            '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(tree, encoding="unicode") + "\n", encoding="utf-8"
-        )
+        write_file(target, '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(tree, encoding="unicode") + "\n")

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from taut.errors import RobotFileError
+from taut.errors import RobotFileError, TautError
 
 if TYPE_CHECKING:
     from taut.model._robot import Robot
@@ -44,7 +44,7 @@ def _read_taut(path: Path, text: str, cable_set: str | None) -> Robot:
 
     if cable_set is not None:
         raise RobotFileError(f"{path}: --cable-set selects a cable set of a CASPR model; a taut file has one set")
-    return parse_robot(text, str(path), json_text=path.name.lower().endswith(".json"))
+    return parse_robot(text, source=str(path), json_text=path.name.lower().endswith(".json"))
 
 
 def _write_taut(robot: Robot, path: Path) -> None:
@@ -100,15 +100,35 @@ def supported(kind: str) -> str:
     return ", ".join(pats)
 
 
-def format_of(path: str | Path, kind: str = "read") -> Format:
-    """The format whose pattern matches the file name of ``path`` (case-insensitive), able to
-    read (``kind="read"``) or write (``kind="write"``) it.
+def format_of(path: str | Path, *, kind: str = "read") -> Format:
+    """The file format whose pattern matches the file name of ``path`` (case-insensitive) and can
+    read or write it (:data:`FORMATS`).
+
+    Parameters
+    ----------
+    path : str or Path
+        The file (only its name is looked at).
+    kind : {"read", "write"}, default "read"
+
+    Returns
+    -------
+    Format
+        Its ``name``, ``patterns``, ``reader`` and ``writer``.
 
     Raises
     ------
     RobotFileError
         If no format matches, naming the supported ones.
+    TautError
+        For another ``kind``.
+
+    Examples
+    --------
+    >>> format_of("cogiro_bodies.xml").name, format_of("robot.mjcf.xml", kind="write").name
+    ('caspr', 'mujoco')
     """
+    if kind not in ("read", "write"):
+        raise TautError(f"kind must be 'read' or 'write', got {kind!r}")
     name = Path(path).name.lower()
     for fmt in FORMATS:
         able = fmt.reader if kind == "read" else fmt.writer
@@ -123,7 +143,7 @@ def format_of(path: str | Path, kind: str = "read") -> Format:
 
 def read_robot(path: Path, text: str, cable_set: str | None = None) -> Robot:
     """Read the text of the file ``path`` in the format its name selects."""
-    reader = format_of(path, "read").reader
+    reader = format_of(path).reader
     assert reader is not None, "format_of returns a format able to read"
     return reader(path, text, cable_set)
 
@@ -147,20 +167,40 @@ def _check_target(path: Path) -> None:
 
 
 def write_robot(robot: Robot, path: str | Path) -> str:
-    """Write ``robot`` to ``path`` in the format its name selects; return the format's name.
+    """Write ``robot`` to ``path`` in the format its name selects (:func:`format_of`).
 
-    The file and its companions (a CASPR model's ``*_cables.xml``) are written in a
-    temporary directory beside ``path`` and moved into place only when every one is
-    written, so that a failure leaves no file written and none overwritten.
+    Parameters
+    ----------
+    robot : Robot
+    path : str or Path
+        ``*.yaml``, ``*.yml`` or ``*.json`` (taut), ``*_bodies.xml`` (CASPR, with its
+        ``*_cables.xml``), ``*.wcrfx`` (WireX) or ``*.mjcf.xml`` (MuJoCo).
+
+    Returns
+    -------
+    str
+        The format's name.
 
     Raises
     ------
     RobotFileError
         If no format writes such a name, if a file to write is a directory, a FIFO, a device
         or a dangling link, or if writing fails (a full disk).
+    UnsupportedRobotError
+        For a robot the format cannot hold (named).
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> import pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "robot.json"
+    >>> write_robot(example("planar-4cable"), path)
+    'taut'
+    >>> load_robot(path) == example("planar-4cable")
+    True
     """
     path = Path(path)
-    fmt = format_of(path, "write")
+    fmt = format_of(path, kind="write")
     assert fmt.writer is not None, "format_of returns a format able to write"
     _check_target(path)
     try:
@@ -177,11 +217,38 @@ def write_robot(robot: Robot, path: str | Path) -> str:
 
 
 def load_robot(spec: str | Path, *, cable_set: str | None = None) -> Robot:
-    """Load a robot from a file path, or a built-in example by name (``taut examples``).
+    """Load a robot from a file, or a built-in example by name (``taut examples``).
 
     The file's name selects its format (:mod:`taut.model._formats`): taut's YAML/JSON, a
     WireX ``.wcrfx`` file, or a CASPR ``*_bodies.xml`` model whose cable set ``cable_set``
-    (default: the file's ``default_cable_set``) is read from the ``*_cables.xml`` beside it."""
+    (default: the file's ``default_cable_set``) is read from the ``*_cables.xml`` beside it.
+    Every reader applies the same limits (regular files, 16 MiB, nesting, magnitudes) and
+    refuses DTD entity declarations (``docs/architecture.md`` §3).
+
+    Parameters
+    ----------
+    spec : str or Path
+        A file, or the name of a built-in example.
+    cable_set : str, optional
+        A CASPR cable set.
+
+    Returns
+    -------
+    Robot
+
+    Raises
+    ------
+    RobotFileError
+        For a missing, unreadable or invalid file (one message naming the file, the field and
+        what was expected).
+    UnsupportedRobotError
+        For a construct taut does not model.
+
+    Examples
+    --------
+    >>> load_robot("suspended-3cable").dimension
+    3
+    """
     from taut.model._examples import example, example_names
     from taut.model._io import check_regular, read_text
 
@@ -193,5 +260,5 @@ def load_robot(spec: str | Path, *, cable_set: str | None = None) -> Robot:
             return example(str(spec))
         raise RobotFileError(f"{spec}: no such file and not a built-in example (see `taut examples`)")
     check_regular(path)  # before the name is judged: /dev/zero is not a file of any format
-    format_of(path, "read")
+    format_of(path)
     return read_robot(path, read_text(path), cable_set)

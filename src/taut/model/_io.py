@@ -53,8 +53,37 @@ def _check_values(data: object, source: str) -> None:
                 )
 
 
-def robot_from_dict(data: object, source: str = "<robot>") -> Robot:
-    """Validate a parsed robot description."""
+def robot_from_dict(data: object, *, source: str = "<robot>") -> Robot:
+    """Validate a parsed robot description (the content of a robot file) into a :class:`Robot`.
+
+    Parameters
+    ----------
+    data : dict
+        The fields, as YAML or JSON give them.
+    source : str, default "<robot>"
+        Where the data come from, for messages.
+
+    Returns
+    -------
+    Robot
+
+    Raises
+    ------
+    RobotFileError
+        For anything but a mapping, nesting deeper than :data:`MAX_DEPTH`, numbers beyond
+        :data:`MAX_MAGNITUDE`, or fields that do not validate (one message naming the field).
+
+    Examples
+    --------
+    >>> data = {"name": "two cables", "dimension": 2, "platform": {"kind": "point-mass", "mass": 1.0},
+    ...         "cables": [{"exit": [0, 1]}, {"exit": [1, 1]}]}
+    >>> robot_from_dict(data).n_cables
+    2
+    >>> robot_from_dict(data | {"dimension": 4}, source="mine.yaml")
+    Traceback (most recent call last):
+    ...
+    taut.errors.RobotFileError: mine.yaml: dimension: ...
+    """
     if not isinstance(data, dict):
         raise RobotFileError(
             f"{source}: expected a mapping of robot fields at the top level, got {type(data).__name__}"
@@ -66,11 +95,45 @@ def robot_from_dict(data: object, source: str = "<robot>") -> Robot:
         raise RobotFileError(validation_message(source, exc)) from None
 
 
-def parse_robot(text: str, source: str = "<robot>", *, json_text: bool = False) -> Robot:
-    """Parse YAML or JSON text into a validated :class:`Robot`.
+def parse_robot(text: str, *, source: str = "<robot>", json_text: bool = False) -> Robot:
+    """Parse the YAML or JSON text of a robot file into a validated :class:`Robot`.
 
     JSON is read by :mod:`json` (which knows ``Infinity`` for unbounded tensions), YAML by
-    ``yaml.safe_load`` (where it is ``.inf``)."""
+    ``yaml.safe_load`` (where it is ``.inf``).
+
+    Parameters
+    ----------
+    text : str
+        The file's text.
+    source : str, default "<robot>"
+        Where it comes from, for messages.
+    json_text : bool, default False
+        Read it as JSON.
+
+    Returns
+    -------
+    Robot
+
+    Raises
+    ------
+    RobotFileError
+        For text that does not parse or a robot that does not validate.
+
+    Examples
+    --------
+    >>> robot = parse_robot('''
+    ... name: two cables
+    ... dimension: 2
+    ... platform: {kind: point-mass, mass: 1.0}
+    ... cables:
+    ...   - {exit: [0, 1], tension: [0, .inf]}
+    ...   - {exit: [1, 1]}
+    ... ''')
+    >>> robot.tension_bounds
+    (array([0., 0.]), array([inf, inf]))
+    """
+    if not isinstance(text, str):
+        raise RobotFileError(f"{source}: a robot description is text, got a {type(text).__name__}")
     try:
         if json_text:
             try:
@@ -92,7 +155,7 @@ def parse_robot(text: str, source: str = "<robot>", *, json_text: bool = False) 
         raise
     except ValueError:  # an integer of thousands of digits: beyond Python's int conversion limit
         raise RobotFileError(f"{source}: a number has too many digits to be read") from None
-    return robot_from_dict(data, source)
+    return robot_from_dict(data, source=source)
 
 
 def check_regular(path: Path) -> None:
@@ -132,16 +195,48 @@ def read_bytes(path: Path) -> bytes:
     return raw
 
 
-def read_text(path: Path) -> str:
-    """The UTF-8 text of a robot file, read by :func:`read_bytes`.
+def write_file(path: str | Path, text: str) -> None:
+    """Write ``text`` in UTF-8 to ``path``.
+
+    Raises
+    ------
+    RobotFileError
+        If the file cannot be written (no such directory, no permission).
+    """
+    try:
+        Path(path).write_text(text, encoding="utf-8")
+    except OSError as exc:
+        raise RobotFileError(f"{path}: cannot write the file: {exc}") from None
+
+
+def read_text(path: str | Path) -> str:
+    """The UTF-8 text of a robot file: regular files only (a FIFO, a device or a directory would
+    block or never end), at most :data:`MAX_FILE_BYTES`.
+
+    Parameters
+    ----------
+    path : str or Path
+
+    Returns
+    -------
+    str
 
     Raises
     ------
     RobotFileError
         If the file cannot be read, is not a regular file, is too large or is not UTF-8.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> import pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "robot.yaml"
+    >>> save_robot(example("planar-4cable"), path)
+    >>> read_text(path).splitlines()[0]
+    'name: planar 4-cable robot'
     """
     try:
-        return read_bytes(path).decode("utf-8")
+        return read_bytes(Path(path)).decode("utf-8")
     except UnicodeDecodeError as exc:
         raise RobotFileError(f"{path}: cannot read the file: {exc}") from None
 
@@ -156,17 +251,54 @@ def _plain(value: object) -> object:
 
 
 def robot_to_dict(robot: Robot) -> dict[str, Any]:
-    """The robot as plain data (lists, dicts, numbers, strings), without fields left at their defaults."""
+    """The robot as plain data (lists, dicts, numbers, strings), without the fields left at their
+    defaults: what a robot file holds.
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    dict
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> d = robot_to_dict(example("planar-4cable"))
+    >>> d["cables"][0]
+    {'exit': [-1.0, -1.0], 'anchor': [-0.1, -0.05], 'tension': [1.0, 100.0]}
+    """
     data = robot.model_dump(mode="python", exclude_defaults=True)
     return {k: _plain(v) for k, v in data.items()} | {"format": robot.format}
 
 
 def save_robot(robot: Robot, path: str | Path) -> None:
-    """Write ``robot`` as JSON (``.json``) or YAML (anything else)."""
+    """Write ``robot`` as a taut robot file: JSON for a ``.json`` name, YAML for any other.
+
+    Parameters
+    ----------
+    robot : Robot
+    path : str or Path
+
+    Raises
+    ------
+    RobotFileError
+        If the file cannot be written.
+
+    Examples
+    --------
+    >>> from taut.model import example, load_robot
+    >>> import pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "robot.yaml"
+    >>> save_robot(example("suspended-3cable"), path)
+    >>> load_robot(path) == example("suspended-3cable")
+    True
+    """
     path = Path(path)
     data = robot_to_dict(robot)
     if path.suffix.lower() == ".json":
         text = json.dumps(data, indent=2)
     else:
         text = yaml.safe_dump(data, sort_keys=False, default_flow_style=None)
-    path.write_text(text, encoding="utf-8")
+    write_file(path, text)

@@ -133,6 +133,7 @@ import numpy.typing as npt
 
 from taut.errors import InfeasiblePoseError, PoseError, UnsupportedRobotError
 from taut.geometry import axis_frames, rotation_matrix
+from taut.model._io import write_file
 from taut.model._robot import Robot
 
 #: Radius [m] of the sphere whose rotational inertia a point-mass body is given.
@@ -395,7 +396,17 @@ def _pulley(robot: Robot, world: ET.Element, i: int, k: np.ndarray, e0: np.ndarr
 
 
 def mjcf_text(robot: Robot) -> str:
-    """The MuJoCo model (MJCF XML) of ``robot``; see the module's docstring for what it holds.
+    """The MuJoCo model (MJCF XML) of ``robot`` (module docstring): a free (or planar) platform
+    body with the jointed bodies, one spatial tendon per cable whose tension is the control
+    of an actuator.
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    str
 
     Raises
     ------
@@ -407,6 +418,13 @@ def mjcf_text(robot: Robot) -> str:
     .. [1] E. Todorov, T. Erez, Y. Tassa, "MuJoCo: A physics engine for model-based control",
        IEEE/RSJ International Conference on Intelligent Robots and Systems (IROS), 2012.
        (docs/references.bib: todorov2012)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> text = mjcf_text(example("planar-4cable"))
+    >>> text.splitlines()[0], text.count("<spatial ")
+    ('<mujoco model="planar 4-cable robot">', 4)
     """
     check_mjcf(robot)
     d = robot.dimension
@@ -460,15 +478,37 @@ def mjcf_text(robot: Robot) -> str:
 
 
 def write_mjcf(robot: Robot, path: str | Path) -> None:
-    """Write the MuJoCo model of ``robot`` (:func:`mjcf_text`) to ``path``, e.g. ``robot.mjcf.xml``.
+    """Write the MuJoCo model of ``robot`` (:func:`mjcf_text`) to ``path``, e.g.
+    ``robot.mjcf.xml``.
+
+    Parameters
+    ----------
+    robot : Robot
+    path : str or Path
+
+    Raises
+    ------
+    UnsupportedRobotError
+        For a robot the model cannot hold exactly.
+    RobotFileError
+        If the file cannot be written.
 
     References
     ----------
     .. [1] E. Todorov, T. Erez, Y. Tassa, "MuJoCo: A physics engine for model-based control",
        IEEE/RSJ International Conference on Intelligent Robots and Systems (IROS), 2012.
        (docs/references.bib: todorov2012)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> import pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "robot.mjcf.xml"
+    >>> write_mjcf(example("spatial-8cable"), path)
+    >>> path.read_text().startswith('<mujoco model="spatial 8-cable robot">')
+    True
     """
-    Path(path).write_text(mjcf_text(robot), encoding="utf-8")
+    write_file(path, mjcf_text(robot))
 
 
 def quaternions(R: npt.ArrayLike) -> np.ndarray:
@@ -498,7 +538,10 @@ def quaternions(R: npt.ArrayLike) -> np.ndarray:
 
 def _checked_poses(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, bool]:
     check_mjcf(robot)
-    arr = np.asarray(poses, dtype=float)
+    try:
+        arr = np.asarray(poses, dtype=float)
+    except (TypeError, ValueError):
+        raise PoseError(f"{robot.name}: poses must be numbers, got {poses!r}") from None
     single = arr.ndim == 1
     arr = np.atleast_2d(arr)
     if arr.ndim != 2 or arr.shape[1] != robot.pose_size:
@@ -563,27 +606,49 @@ def swivel_wraps_agree(robot: Robot, poses: npt.ArrayLike) -> np.ndarray | bool:
 
 
 def pose_to_qpos(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
-    """MuJoCo's ``qpos`` of the model of :func:`mjcf_text` at taut poses: ``(N, nq)`` for
-    ``(N, pose_size)`` poses, ``(nq,)`` for one pose.
+    """MuJoCo's ``qpos`` of the model of :func:`mjcf_text` at taut poses.
 
     Spatial rigid platform: ``(x, y, z, w, qx, qy, qz)``, the quaternion of the rotation of the
     pose's three angles in the robot's orientation convention (``docs/architecture.md`` §2.3);
     planar rigid platform: ``(x, y, θ)``; point mass: its position.  Then the joint
-    coordinates of the jointed bodies in MuJoCo's order (:func:`joint_order`).  Then the hinge angle of
-    each swivelling pulley, in cable order: the angle about the swivel axis ``k`` from the
-    pulley's ``e_0`` (:func:`swivel_frames`) to the anchor's direction from the axis, so that
-    the pulley plane holds the anchor, as in :mod:`taut.kinematics._swivel`.
+    coordinates of the jointed bodies in MuJoCo's order (:func:`joint_order`).  Then the hinge
+    angle of each swivelling pulley, in cable order: the angle about the swivel axis ``k`` from
+    the pulley's ``e_0`` (:func:`swivel_frames`) to the anchor's direction from the axis, so
+    that the pulley plane holds the anchor, as in :mod:`taut.kinematics._swivel`.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+
+    Returns
+    -------
+    ndarray, shape (N, nq) or (nq,)
 
     Raises
     ------
     PoseError
-        For poses of the wrong size, with a non-finite coordinate or a joint coordinate
-        outside its limits (where MuJoCo's joint limit would push).
+        For poses that are not numbers, of the wrong size, with a non-finite coordinate or a
+        joint coordinate outside its limits (where MuJoCo's joint limit would push).
     InfeasiblePoseError
         For a pose at which MuJoCo would wrap a swivelling pulley another way than taut
         (:func:`swivel_wraps_agree`).
     UnsupportedRobotError
         For a robot the model cannot hold (:func:`check_mjcf`).
+
+    References
+    ----------
+    .. [1] E. Todorov, T. Erez, Y. Tassa, "MuJoCo: A physics engine for model-based control",
+       IEEE/RSJ International Conference on Intelligent Robots and Systems (IROS), 2012.
+       (docs/references.bib: todorov2012)
+
+    Examples
+    --------
+    A quarter turn about ``z`` is the quaternion ``(cos π/4, 0, 0, sin π/4)``:
+
+    >>> from taut.model import example
+    >>> np.round(pose_to_qpos(example("spatial-8cable"), [0.1, 0.2, 0.3, 0.0, 0.0, np.pi / 2]), 6)
+    array([0.1     , 0.2     , 0.3     , 0.707107, 0.      , 0.      , 0.707107])
     """
     arr, single = _checked_poses(robot, poses)
     m = robot.wrench_dim

@@ -29,20 +29,14 @@ MIN_CABLES, MAX_CABLES = 3, 8
 
 
 def random_suspended_robot(
-    seed: int | np.random.Generator,
     n_cables: int,
     *,
+    seed: int | np.random.Generator,
     coplanar: bool | None = None,
     perturbation: float = 0.02,
 ) -> tuple[Robot, np.ndarray]:
-    """A random suspended robot and cable lengths to solve its DGP for: ``(robot, lengths)``.
-
-    ``seed``: an int (the robot is named after it and is the same on every machine) or a
-    ``numpy.random.Generator``.  ``coplanar``: all anchors in one platform plane (True),
-    spread through the body's height (False), or drawn at random (None).  ``perturbation``:
-    the relative standard deviation of the lengths around the inverse kinematics of the
-    drawn pose (0: every cable exactly reaches its anchor at that pose, which is then
-    generally not an equilibrium).
+    """A random suspended spatial robot and cable lengths to solve its DGP for, drawn from a
+    seed: the test suite and benchmark of robots nobody tuned the solver to.
 
     The frame is 2–6 m wide and deep with its exit points 2.5–4 m high, one per cable,
     spread round its top in the angular order of their anchors (the cables do not cross);
@@ -51,13 +45,44 @@ def random_suspended_robot(
     and off its axis.  The lengths are also stored as ``reference.lengths``, so the robot
     file alone is a complete ``taut fk`` case.
 
-    Raises :class:`~taut.errors.TautError` for a cable count outside 3–8 or a negative
-    perturbation.
+    Parameters
+    ----------
+    n_cables : int
+        3 to 8.
+    seed : int or numpy.random.Generator
+        An int ≥ 0 (the robot is named after it and is the same on every machine) or a
+        generator.
+    coplanar : bool, optional
+        All anchors in one platform plane (True), spread through the body's height (False),
+        or drawn at random (None).
+    perturbation : float, default 0.02
+        The relative standard deviation of the lengths around the inverse kinematics of the
+        drawn pose (0: every cable exactly reaches its anchor there, which is then generally
+        not an equilibrium).
+
+    Returns
+    -------
+    robot : Robot
+    lengths : ndarray, shape (n_cables,)
+        Cable lengths [m].
+
+    Raises
+    ------
+    TautError
+        For a cable count outside 3–8, a negative perturbation or a bad seed.
+
+    Examples
+    --------
+    >>> robot, lengths = random_suspended_robot(3, seed=0)
+    >>> robot.name, np.round(lengths, 3)
+    ('random suspended 3-cable robot (seed 0)', array([1.822, 1.645, 1.835]))
     """
-    if not MIN_CABLES <= int(n_cables) <= MAX_CABLES:
-        raise TautError(f"a random suspended robot has {MIN_CABLES} to {MAX_CABLES} cables, got {n_cables}")
-    if not (np.isfinite(perturbation) and perturbation >= 0.0):
-        raise TautError(f"the length perturbation must be a non-negative number, got {perturbation}")
+    if not (isinstance(n_cables, (int, np.integer)) and MIN_CABLES <= n_cables <= MAX_CABLES):
+        raise TautError(f"a random suspended robot has {MIN_CABLES} to {MAX_CABLES} cables, got {n_cables!r}")
+    if not (isinstance(perturbation, (int, float, np.number)) and np.isfinite(perturbation) and perturbation >= 0.0):
+        raise TautError(f"the length perturbation must be a non-negative number, got {perturbation!r}")
+    if not (isinstance(seed, np.random.Generator) or (isinstance(seed, (int, np.integer)) and seed >= 0)):
+        raise TautError(f"seed must be an int >= 0 or a numpy.random.Generator, got {seed!r}")
     n = int(n_cables)
     rng = seed if isinstance(seed, np.random.Generator) else np.random.default_rng(seed)
     label = f" (seed {seed})" if not isinstance(seed, np.random.Generator) else ""

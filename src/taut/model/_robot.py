@@ -21,6 +21,7 @@ References
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Mapping
 from typing import Annotated, Any, Literal, Self, TypeVar
 
@@ -45,11 +46,23 @@ Coordinate = Annotated[float, Field(allow_inf_nan=False, ge=-MAX_MAGNITUDE, le=M
 Derived = TypeVar("Derived", np.ndarray, tuple[np.ndarray, np.ndarray])
 
 
+#: A numpydoc section header (``Attributes`` and its underline): where a model's docstring
+#: stops describing the file format and starts describing the Python class.
+_SECTION = re.compile(r"\n\n[A-Z][A-Za-z ]*\n-{3,}\n")
+
+
+def _schema_description(schema: dict[str, Any], model: type) -> None:
+    """The JSON Schema describes a model by its docstring up to the first numpydoc section."""
+    text = schema.get("description")
+    if isinstance(text, str):
+        schema["description"] = _SECTION.split(text, maxsplit=1)[0].rstrip()
+
+
 class _Strict(BaseModel):
     """Base of the description's models: unknown keys are errors and instances are immutable
     (frozen, with tuples for sequences), so that arrays derived from them cannot go stale."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, json_schema_extra=_schema_description)
 
     def model_copy(self, *, update: Mapping[str, Any] | None = None, deep: bool = False) -> Self:
         """A copy of this instance; with ``update``, a new instance validated from this one's
@@ -116,7 +129,25 @@ def _check_bounds(v: tuple[float, float], what: str) -> tuple[float, float]:
 
 
 class Pulley(_Strict):
-    """Exit pulley of a winch: the cable leaves it tangentially (Rushton 2022, §4.1)."""
+    """Exit pulley of a winch: the cable leaves it tangentially (Rushton 2022, §4.1).
+
+    Attributes
+    ----------
+    radius : float
+        Pulley radius [m], ≥ 0.
+    direction : {"ccw", "cw"}
+        The way the cable wraps it, counter-clockwise or clockwise.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.1. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> Pulley(radius=0.05)
+    Pulley(radius=0.05, direction='ccw')
+    """
 
     radius: Finite = Field(ge=0)
     direction: Literal["ccw", "cw"] = "ccw"
@@ -135,10 +166,23 @@ class SwivelPulley(_Strict):
     numbers), and so does the pulley: the cable comes along the axis, wraps the pulley on the
     anchor's side of the axis line and leaves towards the anchor.
 
+    Attributes
+    ----------
+    axis : tuple of float
+        Direction of the swivel axis in the fixed frame (3 numbers; 2 in a planar robot's
+        plane), the way the cable runs onto the pulley; any non-zero length.
+    radius : float
+        Pulley radius [m], > 0, to the cable's centre line in the groove.
+
     References
     ----------
     .. [1] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
        Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+
+    Examples
+    --------
+    >>> SwivelPulley(axis=(0, 0, -1), radius=0.03).radius
+    0.03
     """
 
     axis: tuple[Finite, ...] = Field(
@@ -166,7 +210,37 @@ class SwivelPulley(_Strict):
 class Cable(_Strict):
     """Cable *i*: from the fixed exit point ``a_i`` to the anchor ``r_i`` on a platform body.
 
-    With ``swivel``, ``a_i`` is the point where the cable runs onto its swivelling pulley."""
+    With ``swivel``, ``a_i`` is the point where the cable runs onto its swivelling pulley.
+
+    Attributes
+    ----------
+    name : str or None
+        A name for messages and figures.
+    exit : tuple of float
+        The exit point ``a_i`` in the fixed frame [m] (``dimension`` numbers).
+    anchor : tuple of float or None
+        The anchor ``r_i`` in the frame of its body [m]; the body's origin when not given.
+    body : str or None
+        The body it is anchored to: ``platform`` (default) or a name of ``platform.bodies``.
+    tension : (float, float)
+        Tension bounds ``(τ_min, τ_max)`` [N]: ``0 ≤ τ_min ≤ τ_max``, ``τ_max`` may be ``inf``.
+    length : (float, float) or None
+        Length bounds [m].
+    stiffness : float or None
+        Axial stiffness ``EA`` [N] (elastic cables in the dynamics).
+    radius : float
+        Cable radius for interference checks [m].
+    pulley : Pulley or None
+        Exit pulley of a planar winch, that collidable cables wrap around.
+    swivel : SwivelPulley or None
+        Swivelling exit pulley.
+
+    Examples
+    --------
+    >>> cable = Cable(exit=(0.0, 2.0), tension=(1.0, 50.0))
+    >>> cable.tension, cable.anchor
+    ((1.0, 50.0), None)
+    """
 
     name: str | None = None
     exit: tuple[Coordinate, ...]
@@ -201,6 +275,24 @@ class Joint(_Strict):
     ``prismatic``: the child frame is the parent frame translated by ``origin + q·axis``.
     ``revolute``: the child frame is the parent frame translated by ``origin`` and rotated
     by ``q`` about ``axis``.  ``limits`` bound the joint coordinate ``q``.
+
+    Attributes
+    ----------
+    kind : {"prismatic", "revolute"}
+    axis : tuple of float
+        Direction of the joint axis in the parent frame (non-zero; one number, ``z``, for a
+        planar revolute joint).
+    origin : tuple of float or None
+        The child frame's origin in the parent frame [m] (zero when not given).
+    limits : (float, float)
+        Bounds of ``q`` [m or rad].
+    name : str or None
+        The coordinate's name in poses (the body's name when not given).
+
+    Examples
+    --------
+    >>> Joint(kind="prismatic", axis=(0, 1), limits=(0.0, 0.5)).limits
+    (0.0, 0.5)
     """
 
     kind: Literal["prismatic", "revolute"]
@@ -225,7 +317,27 @@ class Joint(_Strict):
 
 
 class Capsule(_Strict):
-    """A segment swept by a sphere: the collision model of Lieskovský 2020, §2.3.2."""
+    """A segment swept by a sphere: the collision model of Lieskovský 2020, §2.3.2.
+
+    Attributes
+    ----------
+    a, b : tuple of float
+        End points of the segment in the body frame [m].
+    radius : float
+        Radius of the sphere [m], ≥ 0.
+    name : str or None
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.2.
+       (docs/references.bib: lieskovsky2020)
+
+    Examples
+    --------
+    >>> Capsule(a=(0, 0, 0), b=(0, 0, 0.3), radius=0.02).radius
+    0.02
+    """
 
     a: tuple[Coordinate, ...]
     b: tuple[Coordinate, ...]
@@ -238,7 +350,32 @@ class Body(_Strict):
 
     With a ``mass``, its weight ``mass·g`` (``g`` the robot's gravity, see
     :attr:`Robot.gravity`) acts at ``com``: the statics count it in the platform's external
-    wrench and in the joint forces."""
+    wrench and in the joint forces.
+
+    Attributes
+    ----------
+    name : str
+        Unique among the bodies (``platform`` is the platform's).
+    parent : str
+        ``platform`` or an earlier body.
+    joint : Joint
+        The joint to its parent.
+    capsules : tuple of Capsule
+        Collision shape in the body frame.
+    mass : float or None
+        Mass [kg].
+    com : tuple of float or None
+        Centre of mass in the body frame [m] (the origin when not given).
+    inertia : tuple of float or None
+        Rotational inertia about the centre of mass in the body frame [kg m²]: ``Izz``
+        (planar), or ``Ixx, Iyy, Izz, Ixy, Ixz, Iyz`` (spatial).
+
+    Examples
+    --------
+    >>> slider = Body(name="slider", joint=Joint(kind="prismatic", axis=(1, 0), limits=(0, 1)), mass=0.5)
+    >>> slider.parent, slider.mass
+    ('platform', 0.5)
+    """
 
     name: str
     parent: str = "platform"
@@ -256,7 +393,20 @@ class Body(_Strict):
 
 
 class Shape(_Strict):
-    """Platform outline in its body frame: a polygon (planar) and/or capsules (collision)."""
+    """Platform outline in its body frame: a polygon (planar) and/or capsules (collision).
+
+    Attributes
+    ----------
+    polygon : tuple of tuple of float or None
+        Vertices of a planar platform's outline [m], in order.
+    capsules : tuple of Capsule
+        Collision shape.
+
+    Examples
+    --------
+    >>> len(Shape(polygon=((-0.1, -0.05), (0.1, -0.05), (0.1, 0.05), (-0.1, 0.05))).polygon)
+    4
+    """
 
     polygon: tuple[tuple[Coordinate, ...], ...] | None = None
     capsules: tuple[Capsule, ...] = ()
@@ -265,7 +415,32 @@ class Shape(_Strict):
 class Platform(_Strict):
     """The moving platform.  The external wrench is ``wrench`` (constant, fixed frame) plus
     the weight ``mass·gravity``; both act at ``wrench_point`` (body frame), which is also
-    the centre of mass that ``inertia`` is taken about."""
+    the centre of mass that ``inertia`` is taken about.
+
+    Attributes
+    ----------
+    kind : {"rigid", "point-mass"}
+    wrench : tuple of float or None
+        Constant external wrench in the fixed frame [N, N m] (``wrench_dim`` numbers).
+    mass : float or None
+        Mass [kg].
+    inertia : tuple of float or None
+        Rotational inertia about the centre of mass in the body frame [kg m²]: ``Izz``
+        (planar), or ``Ixx, Iyy, Izz, Ixy, Ixz, Iyz`` (spatial).
+    gravity : tuple of float or None
+        Gravitational acceleration [m/s²] (default 9.81 m/s² down the last axis).
+    wrench_point : tuple of float or None
+        Where ``wrench`` and the weight act, in the body frame [m] (the origin when not given).
+    shape : Shape or None
+        Outline and collision shape.
+    bodies : tuple of Body
+        Extra bodies carried by joints.
+
+    Examples
+    --------
+    >>> Platform(kind="point-mass", mass=2.0).kind
+    'point-mass'
+    """
 
     kind: Literal["rigid", "point-mass"] = "rigid"
     wrench: tuple[Finite, ...] | None = None
@@ -282,6 +457,23 @@ class Platform(_Strict):
 
 
 class Circle(_Strict):
+    """A circular obstacle of a planar robot, collidable: cables wrap around it.
+
+    Attributes
+    ----------
+    kind : {"circle"}
+    center : tuple of float
+        Its centre [m].
+    radius : float
+        Its radius [m], ≥ 0 (0: a point cables wrap around).
+    name : str or None
+
+    Examples
+    --------
+    >>> Circle(kind="circle", center=(0.6, -0.4), radius=0.03).radius
+    0.03
+    """
+
     kind: Literal["circle"]
     center: tuple[Coordinate, ...]
     radius: Finite = Field(ge=0)
@@ -289,6 +481,21 @@ class Circle(_Strict):
 
 
 class Polygon(_Strict):
+    """A polygonal obstacle of a planar robot, collidable: cables wrap around its corners.
+
+    Attributes
+    ----------
+    kind : {"polygon"}
+    vertices : tuple of tuple of float
+        At least 3 vertices [m], in order.
+    name : str or None
+
+    Examples
+    --------
+    >>> len(Polygon(kind="polygon", vertices=((0, 0), (1, 0), (0, 1))).vertices)
+    3
+    """
+
     kind: Literal["polygon"]
     vertices: tuple[tuple[Coordinate, ...], ...]
     name: str | None = None
@@ -305,7 +512,24 @@ Obstacle = Annotated[Circle | Polygon, Field(discriminator="kind")]
 
 
 class Reference(_Strict):
-    """Reference data quoted from a source document (cable lengths of a DGP table, ...)."""
+    """Reference data quoted from a source document (cable lengths of a DGP table, ...).
+
+    Attributes
+    ----------
+    source : str or None
+        Where the data come from, short form (``Berti 2015, Table 4.3``).
+    lengths : tuple of float or None
+        Cable lengths [m], one per cable (the default of ``taut fk``).
+    poses : dict of str to tuple of float
+        Named poses.
+    notes : str or None
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> example("planar-4cable").reference.poses
+    {'home': (0.0, 0.0, 0.0)}
+    """
 
     source: str | None = None
     lengths: tuple[Finite, ...] | None = None
@@ -318,6 +542,31 @@ class Trajectory(_Strict):
 
     ``steps`` gives the number of samples of each move (pose sequences, Lieskovský 2020, §4.2);
     ``speed`` [m/s] and ``dwell`` [s] time a waypoint sequence (Rushton 2022, §6.2).
+
+    Attributes
+    ----------
+    description : str or None
+    waypoints : tuple of tuple of float
+        Positions (``dimension`` numbers) or poses (``pose_size``).
+    steps : tuple of int or None
+        Samples of each move, one per move.
+    speed : float or None
+        Speed of the position [m/s], > 0.
+    dwell : float
+        Time held at every waypoint [s], ≥ 0.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §4.2.
+       (docs/references.bib: lieskovsky2020)
+    .. [2] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §6.2. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> Trajectory(waypoints=((0, 0), (0.5, 0)), speed=0.1).dwell
+    0.0
     """
 
     description: str | None = None
@@ -328,7 +577,55 @@ class Trajectory(_Strict):
 
 
 class Robot(_Strict):
-    """A cable-driven parallel robot (see ``docs/architecture.md`` §2–3 for conventions)."""
+    """A cable-driven parallel robot (see ``docs/architecture.md`` §2–3 for conventions).
+
+    Attributes
+    ----------
+    format : {"taut/1"}
+    name : str
+    description : str or None
+        One line shown by ``taut examples``.
+    source : str or None
+        Where the data come from, short form.
+    dimension : {2, 3}
+        Planar or spatial.
+    orientation : str
+        The platform's angle convention, one of :data:`taut.geometry.CONVENTIONS`.
+    platform : Platform
+    cables : tuple of Cable
+        At least one.
+    obstacles : tuple of Circle or Polygon
+        Collidable obstacles of a planar robot.
+    installation_space : tuple of tuple of float or None
+        Polygon the cables must stay in.
+    disallowed : tuple of polygons
+        Regions inside the installation space the cables must avoid.
+    reference : Reference or None
+        Published data the tests reproduce.
+    trajectories : dict of str to Trajectory
+
+    Notes
+    -----
+    Immutable: the arrays derived from its fields (:attr:`exits`, :attr:`tension_bounds`, ...)
+    are computed once and read-only.  Read one with :func:`~taut.model.load_robot` or build
+    it from fields; bad fields raise :class:`~taut.errors.RobotFileError` through
+    :func:`~taut.model.robot_from_dict` (pydantic's ``ValidationError`` when the class is
+    called).
+
+    Examples
+    --------
+    >>> robot = Robot(
+    ...     name="two cables",
+    ...     dimension=2,
+    ...     platform=Platform(kind="point-mass", mass=1.0),
+    ...     cables=(Cable(exit=(0.0, 1.0)), Cable(exit=(1.0, 1.0))),
+    ... )
+    >>> robot.pose_names, robot.wrench_dim
+    (['x', 'y'], 2)
+    >>> robot.exits
+    array([[0., 1.],
+           [1., 1.]])
+    """
 
     format: Literal["taut/1"] = FORMAT
     name: str
@@ -448,6 +745,7 @@ class Robot(_Strict):
     # ---- derived sizes -------------------------------------------------------------
     @property
     def n_cables(self) -> int:
+        """Number of cables."""
         return len(self.cables)
 
     @property
@@ -457,10 +755,12 @@ class Robot(_Strict):
 
     @property
     def is_point_mass(self) -> bool:
+        """Whether the platform is a point mass (no orientation)."""
         return self.platform.kind == "point-mass"
 
     @property
     def n_joints(self) -> int:
+        """Number of joint coordinates (one per body of ``platform.bodies``)."""
         return len(self.platform.bodies)
 
     @property
@@ -477,6 +777,9 @@ class Robot(_Strict):
 
     @property
     def pose_names(self) -> list[str]:
+        """Names of the pose coordinates: position (``x, y[, z]``), orientation (``theta``;
+        ``a, b, c``; ``phi, theta, sigma`` for ``tilt-torsion``), then the joints.
+        """
         pos = ["x", "y", "z"][: self.dimension]
         if self.is_point_mass:
             ang: list[str] = []

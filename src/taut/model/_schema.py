@@ -10,6 +10,19 @@ from taut.model._robot import Robot
 
 
 def robot_schema() -> dict:
+    """The JSON Schema of the robot file format (``format: taut/1``), generated from
+    :class:`Robot`: what ``taut schema`` prints and ``taut/schema/robot.schema.json`` ships.
+
+    Returns
+    -------
+    dict
+
+    Examples
+    --------
+    >>> schema = robot_schema()
+    >>> schema["title"], schema["required"]
+    ('taut robot file (format taut/1)', ['name', 'dimension', 'cables'])
+    """
     schema = Robot.model_json_schema()
     schema["$schema"] = "https://json-schema.org/draft/2020-12/schema"
     schema["title"] = "taut robot file (format taut/1)"
@@ -21,4 +34,16 @@ def shipped_schema_text() -> str:
 
 
 def schema_text() -> str:
+    """:func:`robot_schema` as indented JSON text with sorted keys, ending in a newline.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> import json
+    >>> json.loads(schema_text()) == robot_schema()
+    True
+    """
     return json.dumps(robot_schema(), indent=2, sort_keys=True) + "\n"

@@ -88,7 +88,7 @@ from pydantic import ValidationError
 
 from taut.errors import RobotFileError, UnsupportedRobotError
 from taut.geometry import axis_frames
-from taut.model._io import read_bytes
+from taut.model._io import read_bytes, write_file
 from taut.model._limits import MAX_MAGNITUDE
 from taut.model._messages import validation_message
 from taut.model._robot import STANDARD_GRAVITY, Robot
@@ -615,4 +615,4 @@ def write_wirex(robot: Robot, path: str | Path) -> None:
     .. [1] A. Pott, WireX, 2006–2019, ``WireLib/RobotData.cpp`` (``CRobotData::setXmlNode``).
        (docs/references.bib: wirex)
     """
-    Path(path).write_text(wirex_text(robot), encoding="utf-8")
+    write_file(path, wirex_text(robot))

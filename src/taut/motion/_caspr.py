@@ -62,6 +62,7 @@ from pathlib import Path
 
 import numpy as np
 
+from taut._results import Result
 from taut.errors import TautWarning, TrajectoryError
 from taut.model import BODIES_SUFFIX, Robot, parse_xml, read_caspr, read_text
 from taut.motion._trajectory import Motion, trajectory_from_waypoints
@@ -91,12 +92,38 @@ _SPHERICAL = (
 
 
 @dataclass(frozen=True)
-class CasprTrajectory:
-    """One trajectory of a CASPR file: its ``id``, CASPR element ``kind``, the
-    :class:`Motion` and CASPR's sampling ``time_step`` [s].  ``motion.sample(1 / time_step)``
-    gives CASPR's samples when the points' times are whole multiples of ``time_step`` (CASPR
-    restarts its grid ``t_s : time_step : t_e`` at every point; taut's grid runs on from 0
-    and ends at the end point)."""
+class CasprTrajectory(Result):
+    """One trajectory of a CASPR trajectory file (a frozen result).
+
+    ``motion.sample(1 / time_step)`` gives CASPR's samples when the points' times are whole
+    multiples of ``time_step`` (CASPR restarts its grid ``t_s : time_step : t_e`` at every
+    point; taut's grid runs on from 0 and ends at the end point).
+
+    Attributes
+    ----------
+    id : str
+        The trajectory's ``id``.
+    kind : str
+        The CASPR element, a key of :data:`KINDS` (``quintic_spline_trajectory``, ...).
+    motion : Motion
+        The trajectory.
+    time_step : float
+        CASPR's sampling step [s].
+
+    References
+    ----------
+    .. [1] D. Lau, J. Eden, Y. Tan, D. Oetomo, "CASPR: A comprehensive cable-robot analysis and
+       simulation platform for the research of cable-driven parallel robots", IEEE/RSJ
+       International Conference on Intelligent Robots and Systems (IROS), 2016.
+       (docs/references.bib: lau2016)
+
+    Examples
+    --------
+    See :func:`read_caspr_trajectories`.
+
+    >>> KINDS["parabolic_blend_trajectory"]
+    'trapezoidal'
+    """
 
     id: str
     kind: str
@@ -257,16 +284,61 @@ def _read_one(elem: ET.Element, robot: Robot, flip: bool, unwrap: bool, source: 
 
 
 def read_caspr_trajectories(
-    path: str | Path, bodies: str | Path | None = None, *, unwrap: bool = False
+    path: str | Path, *, bodies: str | Path | None = None, unwrap: bool = False
 ) -> tuple[Robot, CasprTrajectories]:
-    """The robot of the CASPR model and the joint-space trajectories of its
-    ``X_trajectories.xml`` ``path``, by id (see the module docstring).
+    """The robot of a CASPR model and the joint-space trajectories of its
+    ``X_trajectories.xml`` file, by id (module docstring).
 
-    ``bodies`` is the model's ``X_bodies.xml`` (default: the one beside ``path``), read by
-    :func:`taut.model._caspr.read_caspr`.  A trajectory taut does not read is skipped with a
-    :class:`~taut.errors.TautWarning` and listed in the result's ``skipped``.  Raises
-    :class:`~taut.errors.TrajectoryError` for a malformed trajectory, or a file without one
-    that taut reads (and the model's errors for the model)."""
+    Parameters
+    ----------
+    path : str or Path
+        The ``X_trajectories.xml`` file.
+    bodies : str or Path, optional
+        The model's ``X_bodies.xml`` (default: the one beside ``path``), read by
+        :func:`taut.model.read_caspr`.
+    unwrap : bool, default False
+        Take each angle the short way between points (CASPR does not).
+
+    Returns
+    -------
+    robot : Robot
+    trajectories : CasprTrajectories
+        The trajectories by id; one taut does not read is skipped with a
+        :class:`~taut.errors.TautWarning` and listed in its ``skipped``.
+
+    Raises
+    ------
+    TrajectoryError
+        For a malformed trajectory, or a file without one that taut reads.
+    RobotFileError
+        For a model that cannot be read.
+
+    References
+    ----------
+    .. [1] D. Lau, J. Eden, Y. Tan, D. Oetomo, "CASPR: A comprehensive cable-robot analysis and
+       simulation platform for the research of cable-driven parallel robots", IEEE/RSJ
+       International Conference on Intelligent Robots and Systems (IROS), 2016.
+       (docs/references.bib: lau2016)
+
+    Examples
+    --------
+    A model written by :func:`taut.model.write_caspr` and one linear trajectory:
+
+    >>> import pathlib, tempfile
+    >>> from taut.model import example, write_caspr
+    >>> folder = pathlib.Path(tempfile.mkdtemp())
+    >>> write_caspr(example("planar-4cable"), folder / "planar_bodies.xml")
+    >>> _ = (folder / "planar_trajectories.xml").write_text(
+    ...     '<trajectories><joint_trajectories>'
+    ...     '<linear_spline_trajectory id="move" time_definition="relative" time_step="0.5"><points>'
+    ...     '<point><q>0 0 0</q></point><point time="2"><q>0.2 0.1 0</q></point>'
+    ...     '</points></linear_spline_trajectory></joint_trajectories></trajectories>'
+    ... )
+    >>> robot, trajectories = read_caspr_trajectories(folder / "planar_trajectories.xml")
+    >>> move = trajectories["move"]
+    >>> move.motion.law, move.motion.sample(1 / move.time_step).poses[1]
+    ('linear', array([0.05 , 0.025, 0.   ]))
+    """
     path = Path(path)
     if bodies is None:
         if not path.name.lower().endswith(TRAJECTORIES_SUFFIX):
@@ -274,10 +346,10 @@ def read_caspr_trajectories(
         bodies = path.with_name(path.name[: -len(TRAJECTORIES_SUFFIX)] + BODIES_SUFFIX)
     bodies = Path(bodies)
     robot = read_caspr(bodies)
-    joints = [j.get("type") for j in parse_xml(read_text(bodies), str(bodies)).iter("joint")]
+    joints = [j.get("type") for j in parse_xml(read_text(bodies), source=str(bodies)).iter("joint")]
     flip = joints == ["PLANAR_XZ"]
     source = str(path)
-    root = parse_xml(read_text(path), source)
+    root = parse_xml(read_text(path), source=source)
     if root.tag != "trajectories":
         raise TrajectoryError(f"{source}: expected a <trajectories> CASPR trajectory file, got <{root.tag}>")
     out: dict[str, CasprTrajectory] = {}

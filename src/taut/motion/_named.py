@@ -102,7 +102,7 @@ def robot_trajectory(robot: Robot, name: str | None = None) -> RobotTrajectory:
     if name not in robot.trajectories:
         raise TrajectoryError(f"{robot.name}: no trajectory {name!r} (it has: {', '.join(robot.trajectories)})")
     tr = robot.trajectories[name]
-    waypoints = complete_waypoints(robot, tr.waypoints, f"trajectory {name}")
+    waypoints = complete_waypoints(robot, tr.waypoints, what=f"trajectory {name}")
     return RobotTrajectory(
         name=name,
         waypoints=waypoints,

@@ -44,6 +44,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result, jsonable
 from taut.errors import TrajectoryError
 from taut.geometry import rate_matrix, rate_matrix_derivative
 from taut.model import Robot
@@ -88,46 +89,84 @@ _CHUNK = 65_536
 _SLACK = 1e-9
 
 
-def _frozen(a: np.ndarray) -> np.ndarray:
-    a = np.ascontiguousarray(a, dtype=float)
-    a.setflags(write=False)
-    return a
-
-
 @dataclass(frozen=True)
-class MotionSamples:
-    """A trajectory sampled at ``n`` times (read-only arrays).
+class MotionSamples(Result):
+    """A trajectory sampled at ``n`` times (a frozen result, read-only arrays).
 
-    ``pose``, ``velocity``, ``acceleration`` are ``(n, pose_size)`` in pose coordinates;
-    ``angular_velocity`` and ``angular_acceleration`` are ``(n, 3)`` in the fixed frame for a
-    spatial rigid platform, ``(n, 1)`` (``θ̇``, ``θ̈``) for a planar one and ``(n, 0)`` for a
-    point mass."""
+    Attributes
+    ----------
+    times : ndarray, shape (n,)
+        Sample times [s].
+    poses : ndarray, shape (n, pose_size)
+        Poses, in pose coordinates (``pose_names``).
+    velocity, acceleration : ndarray, shape (n, pose_size)
+        Their first and second time derivatives.
+    angular_velocity, angular_acceleration : ndarray, shape (n, 3), (n, 1) or (n, 0)
+        ``ω`` [rad/s] and ``α`` [rad/s²] in the fixed frame for a spatial rigid platform,
+        ``θ̇`` and ``θ̈`` for a planar one, nothing for a point mass.
+    pose_names : tuple of str
+        The robot's pose coordinates.
 
-    time: np.ndarray
-    pose: np.ndarray
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> motion = trajectory_from_waypoints(example("planar-4cable"), [[0, 0, 0], [0.2, 0.1, 0]], durations=[2.0])
+    >>> samples = motion.at([0.0, 1.0, 2.0])
+    >>> samples.poses[1], samples.velocity[1]
+    (array([0.1 , 0.05, 0.  ]), array([0.1875 , 0.09375, 0.     ]))
+    """
+
+    times: np.ndarray
+    poses: np.ndarray
     velocity: np.ndarray
     acceleration: np.ndarray
     angular_velocity: np.ndarray
     angular_acceleration: np.ndarray
     pose_names: tuple[str, ...]
 
-    def __post_init__(self) -> None:
-        for name in ("time", "pose", "velocity", "acceleration", "angular_velocity", "angular_acceleration"):
-            object.__setattr__(self, name, _frozen(getattr(self, name)))
-
 
 @dataclass(frozen=True)
-class Motion:
-    """A timed trajectory of ``robot``: piecewise polynomials ``q(t) = Σ_j c_j (t − t_k)^j`` on
-    ``[breaks[k], breaks[k+1]]`` with ``coefficients[k, j]`` (``(K, 6, pose_size)``), through
-    ``waypoints`` ``(N, pose_size)`` (angles unwrapped) at ``times`` ``(N,)``, from 0 to
-    :attr:`duration`, with the time ``law`` and the velocities at via points ``via`` (one of
-    :data:`~taut.motion.VIAS`, or ``"given"`` when they were given).  At a break the
-    piece that ends there is evaluated (as CASPR samples a segment up to its end), which
-    matters only where the law's velocity or acceleration jumps.  With ``rotation="axis"``
-    the angle columns of the polynomials hold the rotation vector turned since the segment's
-    start, and ``turns`` (:class:`~taut.motion._axis.AxisTurns`) gives the angles.  Build it
-    with :func:`trajectory_from_waypoints`."""
+class Motion(Result):
+    """A timed trajectory of ``robot`` (a frozen result, read-only arrays): piecewise
+    polynomials ``q(t) = Σ_j c_j (t − t_k)^j`` on ``[breaks[k], breaks[k+1]]`` through the
+    waypoints, from 0 to :attr:`duration`.
+
+    At a break the piece that ends there is evaluated (as CASPR samples a segment up to its
+    end), which matters only where the law's velocity or acceleration jumps.  Build it with
+    :func:`trajectory_from_waypoints` or :func:`trajectory_from_robot`.
+
+    Attributes
+    ----------
+    robot : Robot
+        The robot whose poses it moves through.
+    law : str
+        The time law, one of :data:`LAWS`.
+    via : str
+        The velocities at via points: one of :data:`VIAS`, or ``"given"``.
+    times : ndarray, shape (N,)
+        The time of each waypoint [s], from 0.
+    waypoints : ndarray, shape (N, pose_size)
+        The waypoints (angles unwrapped).
+    breaks : ndarray, shape (K + 1,)
+        The start of each polynomial piece and the end [s].
+    coefficients : ndarray, shape (K, 6, pose_size)
+        ``coefficients[k, j]`` multiplies ``(t − breaks[k])^j``.  With ``rotation="axis"`` the
+        angle columns hold the rotation vector turned since the segment's start, and ``turns``
+        (:class:`~taut.motion._axis.AxisTurns`) gives the angles.
+
+    References
+    ----------
+    .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning and
+       Control", Springer, 2009, §4.2 (joint-space trajectories), §3.6 (analytical Jacobian).
+       (docs/references.bib: siciliano2009)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> motion = trajectory_from_waypoints(example("planar-4cable"), [[0, 0, 0], [0.2, 0.1, 0]], durations=[2.0])
+    >>> motion.duration, motion.law, motion.coefficients.shape
+    (2.0, 'quintic', (1, 6, 3))
+    """
 
     robot: Robot
     law: str
@@ -139,17 +178,72 @@ class Motion:
     rotation: str = "angles"
     turns: AxisTurns | None = None
 
-    def __post_init__(self) -> None:
-        for name in ("times", "waypoints", "breaks", "coefficients"):
-            object.__setattr__(self, name, _frozen(getattr(self, name)))
+    def as_dict(self) -> dict:
+        """The motion in plain JSON types: the robot by its name, its ``pose_names``, the law, the
+        via-point velocities, the duration and the arrays as lists.
+
+        Returns
+        -------
+        dict
+
+        Examples
+        --------
+        >>> from taut.model import example
+        >>> motion = trajectory_from_waypoints(example("planar-4cable"), [[0, 0, 0], [0.2, 0.1, 0]], durations=[2.0])
+        >>> d = motion.as_dict()
+        >>> d["robot"], d["times"], d["waypoints"][1]
+        ('planar 4-cable robot', [0.0, 2.0], [0.2, 0.1, 0.0])
+        """
+        return {
+            "robot": self.robot.name,
+            "pose_names": list(self.robot.pose_names),
+            "law": self.law,
+            "via": self.via,
+            "duration": self.duration,
+            **{name: jsonable(getattr(self, name)) for name in ("times", "waypoints", "breaks", "coefficients")},
+        }
 
     @property
     def duration(self) -> float:
-        """Total duration [s]."""
+        """Total duration [s].
+
+        Examples
+        --------
+        >>> from taut.model import example
+        >>> trajectory_from_waypoints(example("planar-4cable"), [[0, 0, 0], [0.2, 0.1, 0]], durations=[2.0]).duration
+        2.0
+        """
         return float(self.times[-1])
 
     def at(self, times: npt.ArrayLike) -> MotionSamples:
-        """The trajectory at ``times`` (any order, within ``[0, duration]``)."""
+        """The trajectory at ``times`` (any order, within ``[0, duration]``).
+
+        ``ω = E(q) q̇`` and ``α = E(q) q̈ + Ė(q, q̇) q̇`` come from the rate matrix of the robot's
+        orientation convention (:func:`taut.geometry.rate_matrix`), never from angle differences.
+
+        Parameters
+        ----------
+        times : array_like, shape (n,)
+            Sample times [s]; at most :data:`MAX_SAMPLES`.
+
+        Returns
+        -------
+        MotionSamples
+
+        Raises
+        ------
+        TrajectoryError
+            For times that are not finite numbers, outside the trajectory, or too many.
+
+        Examples
+        --------
+        A quintic segment peaks at 15/8 of its average velocity, half way:
+
+        >>> from taut.model import example
+        >>> motion = trajectory_from_waypoints(example("planar-4cable"), [[0, 0, 0], [0.2, 0.1, 0]], durations=[2.0])
+        >>> motion.at([1.0]).velocity[0, 0] / (0.2 / 2.0)
+        np.float64(1.875)
+        """
         try:
             t = np.array(times, dtype=float).ravel()
         except (TypeError, ValueError):
@@ -187,8 +281,31 @@ class Motion:
         return MotionSamples(t, q, qd, qdd, w, a, tuple(self.robot.pose_names))
 
     def sample(self, rate_hz: float) -> MotionSamples:
-        """The trajectory every ``1/rate_hz`` seconds from 0, and at its end (the last step is
-        shorter when the duration is not a whole number of steps)."""
+        """The trajectory every ``1 / rate_hz`` seconds from 0, and at its end (the last step is
+        shorter when the duration is not a whole number of steps).
+
+        Parameters
+        ----------
+        rate_hz : float
+            Samples per second, > 0.
+
+        Returns
+        -------
+        MotionSamples
+
+        Raises
+        ------
+        TrajectoryError
+            For a rate that is not a finite positive number, or more than :data:`MAX_SAMPLES`
+            samples.
+
+        Examples
+        --------
+        >>> from taut.model import example
+        >>> motion = trajectory_from_waypoints(example("planar-4cable"), [[0, 0, 0], [0.2, 0.1, 0]], durations=[1.75])
+        >>> motion.sample(2.0).times
+        array([0.  , 0.5 , 1.  , 1.5 , 1.75])
+        """
         if not (isinstance(rate_hz, (int, float, np.floating, np.integer)) and math.isfinite(rate_hz) and rate_hz > 0):
             raise TrajectoryError(f"the sampling rate must be a finite number > 0 Hz, got {rate_hz!r}")
         steps = self.duration * float(rate_hz)
@@ -313,8 +430,8 @@ def _limited_times(W: np.ndarray, law: str, vmax: np.ndarray, amax: np.ndarray |
 def trajectory_from_waypoints(
     robot: Robot,
     waypoints: npt.ArrayLike,
-    durations: npt.ArrayLike | None = None,
     *,
+    durations: npt.ArrayLike | None = None,
     duration: float | None = None,
     times: npt.ArrayLike | None = None,
     law: str = "quintic",
@@ -327,30 +444,51 @@ def trajectory_from_waypoints(
     unwrap: bool = True,
     rotation: str = "angles",
 ) -> Motion:
-    """A trajectory of ``robot`` through ``waypoints`` ``(N ≥ 2, pose_size)`` (positions
-    ``(N, dimension)`` are completed by :func:`~taut.motion.complete_waypoints`).
+    """A trajectory of ``robot`` through ``waypoints``.
 
-    Timing, exactly one of:
+    Timing, exactly one of ``durations``, ``duration``, ``times``, or ``max_velocity`` with
+    ``max_acceleration``.  With ``via="stop"`` (the default) each segment is a straight line in
+    pose coordinates, the time law applied to all coordinates together.  The angles are
+    interpolated as coordinates, after :func:`unwrap_angles` (unless ``unwrap=False``) has made
+    each take the short way.
 
-    - ``durations``: one per segment [s] (a number: the same for every segment);
-    - ``duration``: the total [s], shared out in proportion to the segments' lengths
-      ``‖Δq‖`` in pose coordinates (metres and radians counted alike: give ``durations``
-      to choose);
-    - ``times``: the time of each waypoint, from 0, increasing;
-    - ``max_velocity`` and ``max_acceleration`` (one number, or one per pose coordinate, in
-      its units per s and s²; ``linear`` needs only ``max_velocity``): the shortest duration
-      of each segment whose every coordinate keeps within them (``via="stop"`` only).
+    Parameters
+    ----------
+    robot : Robot
+        The robot.
+    waypoints : array_like, shape (N, pose_size) or (N, dimension)
+        ``N ≥ 2`` poses; positions alone are completed by :func:`complete_waypoints`.
+    durations : array_like, shape (N - 1,) or (), optional
+        The duration of each segment [s] (one number: the same for every segment).
+    duration : float, optional
+        The total [s], shared out in proportion to the segments' lengths ``‖Δq‖`` in pose
+        coordinates (metres and radians counted alike: give ``durations`` to choose).
+    times : array_like, shape (N,), optional
+        The time of each waypoint [s], from 0, increasing.
+    law : str, default "quintic"
+        The time law, one of :data:`LAWS` (``linear``, ``cubic``, ``quintic``,
+        ``trapezoidal``).
+    via : str, default "stop"
+        The velocities at via points, one of :data:`VIAS`: ``stop``, ``average`` (CASPR's
+        average velocities) or ``spline`` (the cubic spline; needs ``law="cubic"``).
+        ``linear`` and ``trapezoidal`` take only ``stop``.
+    max_velocity, max_acceleration : array_like, shape (pose_size,) or (), optional
+        Limits of every pose coordinate, in its units per s and s² (``linear`` needs only
+        ``max_velocity``): each segment gets the shortest duration within them
+        (``via="stop"`` only).
+    blend : float or sequence of float, optional
+        The blend fraction ``t_b / T`` of each trapezoidal segment timed by a duration, in
+        ``(0, 1/2]`` (default :data:`DEFAULT_BLEND`).
+    velocities, accelerations : array_like, shape (N, pose_size), optional
+        The state at every waypoint instead of ``via`` (cubic: velocities; quintic: both,
+        accelerations zero when not given), as CASPR's ``cubic_spline_trajectory`` and
+        ``quintic_spline_trajectory``.
+    unwrap : bool, default True
+        ``False`` keeps the angles as given (e.g. a full turn from 0 to 2π).
 
-    ``law`` is ``linear``, ``cubic``, ``quintic`` or ``trapezoidal`` (:mod:`taut.motion._laws`);
-    ``via`` is ``stop``, ``average`` or ``spline`` (:mod:`taut.motion._vias`; ``spline`` is a
-    cubic spline; ``linear`` keeps each segment's constant velocity and ``trapezoidal`` stops at
-    every waypoint, so both take only ``stop``).  ``velocities`` and
-    ``accelerations`` ``(N, pose_size)`` give the state at every waypoint instead (cubic:
-    velocities; quintic: both, accelerations zero when not given), as CASPR's
-    ``cubic_spline_trajectory`` and ``quintic_spline_trajectory`` do.  ``blend`` is the blend
-    fraction ``t_b / T`` of each trapezoidal segment timed by a duration, in ``(0, 1/2]``
-    (default :data:`DEFAULT_BLEND`).  ``unwrap=False`` keeps the angles as given (e.g. a full
-    turn from 0 to 2π).
+    Returns
+    -------
+    Motion
 
     ``rotation`` (one of :data:`ROTATIONS`): ``"angles"`` interpolates each orientation angle
     as a coordinate; ``"axis"`` turns a spatial rigid platform about one axis from each
@@ -361,8 +499,34 @@ def trajectory_from_waypoints(
     the short way whatever ``unwrap``; the motion's waypoints hold the angles the turns
     arrive with.
 
-    Raises :class:`~taut.errors.TrajectoryError` for bad input, and when a joint coordinate
-    leaves its limits between waypoints (a spline can overshoot).
+    Raises
+    ------
+    TrajectoryError
+        For bad input, and when a joint coordinate leaves its limits between waypoints (a
+        spline can overshoot).
+
+    References
+    ----------
+    .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning and
+       Control", Springer, 2009, §4.2 (joint-space trajectories), §3.6 (analytical Jacobian).
+       (docs/references.bib: siciliano2009)
+    .. [2] D. Lau, J. Eden, Y. Tan, D. Oetomo, "CASPR: A comprehensive cable-robot analysis and
+       simulation platform for the research of cable-driven parallel robots", IEEE/RSJ
+       International Conference on Intelligent Robots and Systems (IROS), 2016.
+       (docs/references.bib: lau2016)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> robot = example("planar-4cable")
+    >>> motion = trajectory_from_waypoints(robot, [[0, 0, 0], [0.2, 0.1, 0], [0.2, 0.3, 0]], durations=[2.0, 1.0])
+    >>> motion.times
+    array([0., 2., 3.])
+    >>> motion.at([2.0]).velocity
+    array([[0., 0., 0.]])
+    >>> fast = trajectory_from_waypoints(robot, [[0, 0, 0], [0.2, 0, 0]], law="trapezoidal", max_velocity=0.1, max_acceleration=0.1)
+    >>> fast.duration
+    3.0
     """
     if law not in LAWS:
         raise TrajectoryError(f"unknown time law {law!r}; expected one of {', '.join(LAWS)}")
@@ -522,14 +686,45 @@ def trajectory_from_robot(
     law: str = "quintic",
     via: str = "stop",
 ) -> Motion:
-    """The robot file's trajectory ``name`` (``trajectories:``) as a :class:`Motion`.
+    """The robot file's trajectory ``name`` (its ``trajectories:`` section) as a :class:`Motion`.
 
     With ``duration`` the moves share it in proportion to their ``steps`` (the samples per
     move of a pose sequence; by their lengths without steps) and ``speed``/``dwell`` are not
     used.  Without it the file's ``speed`` [m/s] times each move by the distance its position
     travels, and ``dwell`` holds the pose at every waypoint, the first included (as
-    ``taut trajectory`` does); a trajectory without ``speed`` needs ``duration``.  The file's
-    trajectory is read by :func:`~taut.motion._named.robot_trajectory`."""
+    ``taut trajectory`` does).
+
+    Parameters
+    ----------
+    robot : Robot
+        The robot.
+    name : str
+        A key of ``robot.trajectories``.
+    duration : float, optional
+        The total duration [s]; needed when the trajectory gives no ``speed``.
+    law : str, default "quintic"
+        One of :data:`LAWS`.
+    via : str, default "stop"
+        One of :data:`VIAS`; a trajectory that dwells takes only ``stop``.
+
+    Returns
+    -------
+    Motion
+
+    Raises
+    ------
+    TrajectoryError
+        For an unknown name, a trajectory without ``speed`` and no ``duration``, or a move that
+        speed cannot time.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> robot = example("vscr-agriculture")
+    >>> motion = trajectory_from_robot(robot, "table-6.2", duration=10.0)
+    >>> round(motion.duration, 9), len(motion.waypoints), motion.waypoints[1]
+    (10.0, 10, array([0.   , 0.229]))
+    """
     tr = robot_trajectory(robot, name)
     what = f"trajectory {name}"
     W = tr.waypoints
@@ -539,7 +734,7 @@ def trajectory_from_robot(
         if tr.steps is not None:
             total = _positive_vector(duration, 1, "duration")[0]
             steps = np.asarray(tr.steps, dtype=float)
-            return trajectory_from_waypoints(robot, W, total * steps / steps.sum(), law=law, via=via)
+            return trajectory_from_waypoints(robot, W, durations=total * steps / steps.sum(), law=law, via=via)
         return trajectory_from_waypoints(robot, W, duration=duration, law=law, via=via)
     if tr.speed is None:
         raise TrajectoryError(f"{what} gives no speed: give its duration")
@@ -551,11 +746,11 @@ def trajectory_from_robot(
             f"{what}: move {k + 1} does not change the position, so speed cannot time it: give duration"
         )
     if tr.dwell == 0:
-        return trajectory_from_waypoints(robot, W, moves, law=law, via=via)
+        return trajectory_from_waypoints(robot, W, durations=moves, law=law, via=via)
     if via != "stop":
         raise TrajectoryError(f"{what} dwells at its waypoints: it stops there, via must be 'stop'")
     held = np.repeat(W, 2, axis=0)
     durations = np.empty(len(held) - 1)
     durations[0::2] = tr.dwell
     durations[1::2] = moves
-    return trajectory_from_waypoints(robot, held, durations, law=law, via=via)
+    return trajectory_from_waypoints(robot, held, durations=durations, law=law, via=via)

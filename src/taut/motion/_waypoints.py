@@ -27,8 +27,24 @@ __all__ = ["angle_columns", "complete_waypoints", "unwrap_angles", "validate_way
 
 
 def angle_columns(robot: Robot) -> slice:
-    """The columns of a pose that hold orientation angles: none for a point mass, ``θ`` for a
-    planar rigid platform, the three angles of a spatial one."""
+    """The columns of a pose that hold orientation angles.
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    slice
+        None for a point mass, ``θ`` for a planar rigid platform, the three angles of a
+        spatial one.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> angle_columns(example("planar-4cable")), angle_columns(example("spatial-8cable"))
+    (slice(2, 3, None), slice(3, 6, None))
+    """
     d = robot.dimension
     return slice(d, robot.wrench_dim)
 
@@ -67,10 +83,35 @@ def validate_waypoints(robot: Robot, waypoints: npt.ArrayLike, what: str = "wayp
     return W
 
 
-def complete_waypoints(robot: Robot, waypoints: npt.ArrayLike, what: str = "waypoints") -> np.ndarray:
-    """Waypoints that give only a position ``(N, dimension)`` become poses: the rest of the
-    pose is taken from the robot's first reference pose, or is zero orientation with every
-    joint at mid-range when it has none.  Full poses are returned as they are."""
+def complete_waypoints(robot: Robot, waypoints: npt.ArrayLike, *, what: str = "waypoints") -> np.ndarray:
+    """Waypoints that give only a position become poses: the rest of the pose is taken from the
+    robot's first reference pose, or is zero orientation with every joint at mid-range when it
+    has none.  Anything else is returned as an array, unchecked
+    (:func:`trajectory_from_waypoints` checks it).
+
+    Parameters
+    ----------
+    robot : Robot
+    waypoints : array_like, shape (N, dimension) or (N, pose_size)
+    what : str, default "waypoints"
+        What the waypoints are, for error messages.
+
+    Returns
+    -------
+    ndarray, shape (N, pose_size)
+
+    Raises
+    ------
+    TrajectoryError
+        For waypoints that are not numbers.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> complete_waypoints(example("planar-4cable"), [[0.1, 0.2], [0.3, 0.4]])
+    array([[0.1, 0.2, 0. ],
+           [0.3, 0.4, 0. ]])
+    """
     try:
         W = np.atleast_2d(np.array(waypoints, dtype=float))
     except (TypeError, ValueError):
@@ -85,10 +126,42 @@ def complete_waypoints(robot: Robot, waypoints: npt.ArrayLike, what: str = "wayp
     return np.concatenate([W, np.broadcast_to(rest, (len(W), robot.pose_size - d))], axis=1)
 
 
-def unwrap_angles(robot: Robot, waypoints: np.ndarray) -> np.ndarray:
+def unwrap_angles(robot: Robot, waypoints: npt.ArrayLike) -> np.ndarray:
     """The waypoints with each orientation angle shifted by a multiple of 2π so that it differs
-    from the previous waypoint's by at most π (the short way); the first waypoint is kept."""
-    W = np.array(waypoints, dtype=float)
+    from the previous waypoint's by at most π (the short way); the first waypoint is kept,
+    joint coordinates are never shifted (module docstring).
+
+    Parameters
+    ----------
+    robot : Robot
+    waypoints : array_like, shape (N, pose_size)
+
+    Returns
+    -------
+    ndarray, shape (N, pose_size)
+        A new array.
+
+    Raises
+    ------
+    TrajectoryError
+        For waypoints that are not numbers or not poses of the robot.
+
+    Examples
+    --------
+    From ``θ = 3`` to ``θ = −3`` the short way goes on through π:
+
+    >>> from taut.model import example
+    >>> unwrap_angles(example("planar-4cable"), [[0.0, 0.0, 3.0], [0.0, 0.0, -3.0]])[1, 2]
+    np.float64(3.283...)
+    """
+    try:
+        W = np.array(waypoints, dtype=float)
+    except (TypeError, ValueError):
+        raise TrajectoryError(f"waypoints: expected lists of numbers, got {waypoints!r}") from None
+    if W.ndim != 2 or W.shape[1] != robot.pose_size:
+        raise TrajectoryError(
+            f"waypoints: {robot.name} takes poses of {robot.pose_size} coordinates, got an array of shape {W.shape}"
+        )
     cols = angle_columns(robot)
     for k in range(1, len(W)):
         step = W[k, cols] - W[k - 1, cols]

@@ -103,6 +103,6 @@ def verify_path(
         arm = R @ pm  # moments about P_m: M_m = M_p − (R p_m) × F
         W[:, 3:, :] -= np.cross(arm[:, None, :], W[:, :3, :].transpose(0, 2, 1)).transpose(0, 2, 1)
         inside = np.all((ik.lengths > lo) & (ik.lengths < hi), axis=1)
-        ok[s : s + CHUNK] = wrench_feasible(W, tmin, tmax, ws) & inside
+        ok[s : s + CHUNK] = wrench_feasible(W, ws, tension_bounds=(tmin, tmax)) & inside
         lengths[s : s + CHUNK] = ik.lengths
     return PathCheck(q, ok, lengths)

@@ -23,12 +23,12 @@ if TYPE_CHECKING:
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
     "FEASIBILITY_METHODS": "taut.statics._feasibility",
-    "METHODS": "taut.statics._tension",
     "static_equilibrium": "taut.statics._feasibility",
     "wrench_closure": "taut.statics._feasibility",
     "wrench_feasible": "taut.statics._feasibility",
     "QuietHighs": "taut.statics._highs",
     "EQUILIBRIUM_RTOL": "taut.statics._tension",
+    "METHODS": "taut.statics._tension",
     "TensionResult": "taut.statics._tension",
     "distribute_tensions": "taut.statics._tension",
     "solve_tensions": "taut.statics._tension",

@@ -85,6 +85,8 @@ from taut.statics._wrench import (
     PolytopeWrenchSet,
     SingleWrench,
     WrenchSet,
+    as_floats,
+    bounds_pair,
 )
 
 if TYPE_CHECKING:
@@ -354,7 +356,7 @@ def _facet_kernel(
 
 
 def _as_W(W: npt.ArrayLike) -> np.ndarray:
-    W = np.asarray(W, dtype=float)
+    W = as_floats(W, "structure matrices")
     if W.ndim == 2:
         W = W[None]
     if W.ndim != 3 or W.shape[1] < 1 or W.shape[2] < 1:
@@ -364,9 +366,14 @@ def _as_W(W: npt.ArrayLike) -> np.ndarray:
     return np.ascontiguousarray(W)
 
 
-def _bounds(tmin: npt.ArrayLike, tmax: npt.ArrayLike, n: int) -> tuple[np.ndarray, np.ndarray]:
-    lo = np.broadcast_to(np.asarray(tmin, dtype=float), (n,)).copy()
-    hi = np.broadcast_to(np.asarray(tmax, dtype=float), (n,)).copy()
+def _bounds(tension_bounds: object, n: int) -> tuple[np.ndarray, np.ndarray]:
+    tmin, tmax = bounds_pair(tension_bounds)
+    lo, hi = as_floats(tmin, "lower tension bounds"), as_floats(tmax, "upper tension bounds")
+    if lo.ndim > 1 or lo.size not in (1, n) or hi.ndim > 1 or hi.size not in (1, n):
+        raise TautError(
+            f"tension bounds must be numbers or have shape ({n},) for {n} cables, got {lo.shape}, {hi.shape}"
+        )
+    lo, hi = np.broadcast_to(lo, (n,)).copy(), np.broadcast_to(hi, (n,)).copy()
     if not np.all(np.isfinite(lo)):
         raise TautError(f"lower tension bounds must be finite, got {lo.tolist()}")
     if np.any(np.isnan(hi)) or np.any(hi == -np.inf):
@@ -559,9 +566,10 @@ def _no_set(m: int) -> SetArrays:
 
 
 def facet_normals(
-    W: npt.ArrayLike, tmin: npt.ArrayLike = 0.0, tmax: npt.ArrayLike = 1.0
+    W: npt.ArrayLike, *, tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] = (0.0, 1.0)
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Unit facet normals of the zonotopes ``Z = W·[tmin, tmax]`` and their support.
+    """Unit facet normals of the zonotopes ``Z = W·[tmin, tmax]`` (``tension_bounds = (tmin,
+    tmax)``) and their support.
 
     Returns ``normals (N, C, m)``, one per combination of ``m − 1`` columns
     (``C = binom(n, m−1)``, in the order of :func:`itertools.combinations`), ``hz (N, C, 2)``
@@ -569,7 +577,7 @@ def facet_normals(
     combinations of rank ``m − 1`` (the others have no normal; their rows are undefined)."""
     W = _as_W(W)
     N, m, n = W.shape
-    lo, hi = _bounds(tmin, tmax, n)
+    lo, hi = _bounds(tension_bounds, n)
     C = _binom(n, m - 1) if m >= 2 else 0
     normals = np.zeros((N, C, m))
     hz = np.zeros((N, C, 2))
@@ -580,14 +588,29 @@ def facet_normals(
 
 
 def wrench_closure(W: npt.ArrayLike, *, method: str = "auto") -> np.ndarray:
-    """Wrench closure: the columns of each ``W`` ``(N, m, n)`` positively span ``R^m``
-    (Rushton 2022, §2.1.4, the wrench-closure workspace).  Returns ``(N,)`` bool.
+    """Wrench closure: whether the columns of each structure matrix positively span ``R^m``,
+    so that the cables balance any wrench with positive tensions (the wrench-closure
+    workspace of Rushton (2022), §2.1.4).
 
-    ``method="facets"``: hyperplane shifting with zero lower and unit upper bounds: ``0``
-    is interior to ``W·[0, 1]^n`` iff ``rank W = m`` and every facet normal has a column
-    strictly on each side (relative margin ``CLOSURE_TOL``).  ``"lp"``: one linear program
-    per pose, ``rank W = m`` and some ``τ ≥ 1`` with ``W τ = 0``.  ``"auto"`` (default):
-    the facets up to :data:`FACET_WORK` work per pose (``C(n, m − 1) n``), else LPs.
+    Hyperplane shifting with zero lower and unit upper bounds: ``0`` is interior to
+    ``W·[0, 1]^n`` iff ``rank W = m`` and every facet normal has a column strictly on each
+    side (relative margin ``CLOSURE_TOL``).  ``method="lp"`` decides instead by one linear
+    program per pose (``rank W = m`` and some ``τ ≥ 1`` with ``W τ = 0``); ``"auto"`` uses the
+    facets up to :data:`FACET_WORK` work per pose (``C(n, m − 1) n``), else LPs.
+
+    Parameters
+    ----------
+    W : array_like, shape (N, m, n) or (m, n)
+        Structure matrices.
+
+    Returns
+    -------
+    ndarray of bool, shape (N,)
+
+    Raises
+    ------
+    TautError
+        For matrices of the wrong shape or not finite.
 
     References
     ----------
@@ -596,6 +619,15 @@ def wrench_closure(W: npt.ArrayLike, *, method: str = "auto") -> np.ndarray:
     .. [2] M. Gouttefarde, C. M. Gosselin, "Analysis of the wrench-closure workspace of planar
        parallel cable-driven mechanisms", IEEE Transactions on Robotics 22(3), 2006.
        (docs/references.bib: gouttefarde2006)
+
+    Examples
+    --------
+    Three cables pulling a point at 120° apart span the plane positively; two never do:
+
+    >>> angles = np.radians([90.0, 210.0, 330.0])
+    >>> W = np.stack([np.cos(angles), np.sin(angles)])
+    >>> wrench_closure(W), wrench_closure(W[:, :2])
+    (array([ True]), array([False]))
     """
     W = _as_W(W)
     N, m, n = W.shape
@@ -612,24 +644,42 @@ def wrench_closure(W: npt.ArrayLike, *, method: str = "auto") -> np.ndarray:
 
 def wrench_feasible(
     W: npt.ArrayLike,
-    tmin: npt.ArrayLike,
-    tmax: npt.ArrayLike,
     wrench_set: WrenchSet,
-    offset: npt.ArrayLike | None = None,
     *,
+    tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike],
+    wrench: npt.ArrayLike | None = None,
     method: str = "auto",
 ) -> np.ndarray:
-    """Wrench feasibility: for every ``w`` in ``offset[k] + wrench_set`` there are tensions
-    ``tmin ≤ τ ≤ tmax`` with ``W[k] τ + w = 0`` (Rushton 2022, §2.1.4, the wrench-feasible
-    workspace; hyperplane shifting of Gouttefarde & Gosselin 2006 / Bouchard et al. 2010).
+    """Wrench feasibility: whether, for every wrench ``w`` of ``wrench[k] + wrench_set``, tensions
+    ``tmin ≤ τ ≤ tmax`` satisfy ``W[k] τ + w = 0`` (the wrench-feasible workspace of Rushton
+    (2022), §2.1.4; hyperplane shifting of Gouttefarde & Gosselin 2006 and Bouchard et al.
+    2010).  Poses where ``rank W < m`` are decided by linear programs (module docstring).
 
-    ``W`` is ``(N, m, n)``; ``tmin``, ``tmax`` ``(n,)`` (``tmax`` may be ``+inf``);
-    ``offset`` ``(m,)`` or ``(N, m)`` (default 0), typically the external wrench.
-    Returns ``(N,)`` bool.  Poses where ``rank W < m`` are decided in closed form or by
-    linear programs (see the module docstring).  ``method``: ``"facets"`` (hyperplane
-    shifting), ``"lp"`` (one linear program per vertex of the set, which must then be a
-    single wrench, a box or a polytope) or ``"auto"`` (default: the facets up to
-    :data:`FACET_WORK` work per pose, ``C(n, m − 1) n``, else LPs).
+    Parameters
+    ----------
+    W : array_like, shape (N, m, n) or (m, n)
+        Structure matrices.
+    wrench_set : WrenchSet
+        The required set of wrenches, of dimension ``m``.
+    tension_bounds : (tmin, tmax)
+        Tension bounds [N], each a number or ``(n,)``; ``tmax`` may be ``inf``.
+    wrench : array_like, shape (m,) or (N, m), optional
+        Shifts the set: the external wrench [N, N m] (default 0).
+    method : {"auto", "facets", "lp"}, default "auto"
+        ``"facets"``: hyperplane shifting; ``"lp"``: one linear program per vertex of the set
+        (a single wrench, a box or a polytope); ``"auto"``: the facets up to
+        :data:`FACET_WORK` work per pose (``C(n, m − 1) n``), else LPs.
+
+    Returns
+    -------
+    ndarray of bool, shape (N,)
+
+    Raises
+    ------
+    TautError
+        For arrays of the wrong shape or not finite, bounds that are inverted or not a pair, a
+        set that is not a :class:`WrenchSet` of dimension ``m``, an unknown ``method``, or an
+        ellipsoid where only LPs are affordable.
 
     References
     ----------
@@ -638,6 +688,22 @@ def wrench_feasible(
     .. [2] S. Bouchard, C. Gosselin, B. Moore, "On the ability of a cable-driven robot to
        generate a prescribed set of wrenches", Journal of Mechanisms and Robotics 2(1), 2010.
        (docs/references.bib: bouchard2010)
+
+    Examples
+    --------
+    The planar 4-cable robot at the centre of its frame holds its weight plus any force of
+    up to 1 N and moment of up to 0.1 N m, but not with tensions of at most 8 N:
+
+    >>> from taut.kinematics import structure_matrix
+    >>> from taut.model import example
+    >>> robot = example("planar-4cable")
+    >>> W = structure_matrix(robot, [0.0, 0.0, 0.0])
+    >>> box = BoxWrenchSet.around([0.0, 0.0, 0.0], [1.0, 1.0, 0.1])
+    >>> weight = [0.0, -9.81, 0.0]
+    >>> wrench_feasible(W, box, tension_bounds=(1.0, 100.0), wrench=weight)
+    array([ True])
+    >>> wrench_feasible(W, box, tension_bounds=(1.0, 8.0), wrench=weight)
+    array([False])
     """
     W = _as_W(W)
     N, m, n = W.shape
@@ -646,13 +712,13 @@ def wrench_feasible(
         raise TautError(f"wrench_set must be a WrenchSet, got {type(wrench_set).__name__}")
     if wrench_set.dim != m:
         raise TautError(f"the wrench set has dimension {wrench_set.dim}, the structure matrices {m}")
-    tmin, tmax = _bounds(tmin, tmax, n)
-    off = np.zeros((1, m)) if offset is None else np.asarray(offset, dtype=float)
+    tmin, tmax = _bounds(tension_bounds, n)
+    off = np.zeros((1, m)) if wrench is None else as_floats(wrench, "wrench")
     given = off.shape
     if off.ndim == 1:
         off = off[None]
     if off.ndim != 2 or off.shape[-1] != m or off.shape[0] not in (1, N):
-        raise TautError(f"offset must have shape ({m},) or ({N}, {m}), got {given}")
+        raise TautError(f"wrench must have shape ({m},) or ({N}, {m}), got {given}")
     if not np.all(np.isfinite(off)):
         raise TautError("offset must be finite")
     if m >= 2 and n >= m and lp:
@@ -762,7 +828,7 @@ def _generic_status(
     step = max(1, block_elems // (C * m))
     for s in range(0, N, step):
         e = min(N, s + step)
-        normals, hz, valid = facet_normals(W[s:e], tmin, tmax)
+        normals, hz, valid = facet_normals(W[s:e], tension_bounds=(tmin, tmax))
         o = np.broadcast_to(off[s:e] if off.shape[0] > 1 else off, (e - s, m))
         lin = np.einsum("kcm,km->kc", normals, o)
         labs = np.einsum("kcm,km->kc", np.abs(normals), np.abs(o))
@@ -780,18 +846,51 @@ def _generic_status(
 
 
 def static_equilibrium(
-    W: npt.ArrayLike, tmin: npt.ArrayLike, tmax: npt.ArrayLike, w: npt.ArrayLike, *, method: str = "auto"
+    W: npt.ArrayLike,
+    wrench: npt.ArrayLike,
+    *,
+    tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike],
+    method: str = "auto",
 ) -> np.ndarray:
-    """Static equilibrium ``W[k] τ + w[k] = 0`` with ``tmin ≤ τ ≤ tmax`` for one wrench per
-    pose (``w`` ``(N, m)`` or ``(m,)``): the single-wrench case of the wrench-feasible
-    workspace (Rushton 2022, §2.1.4), by the same test (``method`` as there), exact where
-    ``rank W < m`` too (e.g. every pose of a robot with fewer cables than DOF).
+    """Static equilibrium: whether tensions ``tmin ≤ τ ≤ tmax`` satisfy ``W[k] τ + wrench[k] = 0``,
+    one wrench per pose (the single-wrench case of the wrench-feasible workspace, Rushton
+    (2022), §2.1.4), by the hyperplane-shifting test of :func:`wrench_feasible`, with an exact
+    LP where ``rank W < m`` (e.g. every pose of a robot with fewer cables than degrees of
+    freedom).
+
+    Parameters
+    ----------
+    W : array_like, shape (N, m, n) or (m, n)
+        Structure matrices.
+    wrench : array_like, shape (N, m) or (m,)
+        External wrench [N, N m].
+    tension_bounds : (tmin, tmax)
+        Tension bounds [N], each a number or ``(n,)``; ``tmax`` may be ``inf``.
+
+    Returns
+    -------
+    ndarray of bool, shape (N,)
+
+    Raises
+    ------
+    TautError
+        As :func:`wrench_feasible`.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §2.1.4, Eq. 2.11. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    Two cables at 45° hold a 9.81 N weight with 6.94 N each (``9.81 / √2``):
+
+    >>> W = np.array([[-1.0, 1.0], [1.0, 1.0]]) / np.sqrt(2)
+    >>> static_equilibrium(W, [0.0, -9.81], tension_bounds=(0.0, 7.0))
+    array([ True])
+    >>> static_equilibrium(W, [0.0, -9.81], tension_bounds=(0.0, 6.9))
+    array([False])
     """
     W = _as_W(W)
     m = W.shape[1]
-    return wrench_feasible(W, tmin, tmax, SingleWrench(np.zeros(m)), offset=w, method=method)
+    return wrench_feasible(W, SingleWrench(np.zeros(m)), tension_bounds=tension_bounds, wrench=wrench, method=method)

@@ -13,7 +13,14 @@ import highspy
 
 
 class QuietHighs(highspy.Highs):
-    """``highspy.Highs`` with ``output_flag`` off from the start (no banner, no log)."""
+    """``highspy.Highs`` with ``output_flag`` off from the start: no banner, no log on stdout.
+
+    Examples
+    --------
+    >>> status, value = QuietHighs().getOptionValue("output_flag")
+    >>> value
+    False
+    """
 
     def enableCallbacks(self) -> None:  # noqa: N802 — highspy's name, called by Highs.__init__
         self.setOptionValue("output_flag", False)

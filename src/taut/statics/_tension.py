@@ -70,11 +70,12 @@ import highspy
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.errors import TautError
 from taut.kinematics import inverse_kinematics
 from taut.model import Robot
 from taut.statics._highs import QuietHighs
-from taut.statics._wrench import external_wrench
+from taut.statics._wrench import bounds_pair, external_wrench
 
 #: Relative equilibrium tolerance of a reported solution.
 EQUILIBRIUM_RTOL = 1e-9
@@ -87,11 +88,34 @@ _EPS = np.finfo(float).eps
 
 
 @dataclass(frozen=True)
-class TensionResult:
-    """Tensions at ``N`` poses of a robot with ``n`` cables.
+class TensionResult(Result):
+    """Tensions at ``N`` poses of a robot with ``n`` cables (a frozen result, read-only arrays).
 
     For a single pose the fields have no batch axis: ``tensions (n,)``, ``feasible`` a
-    ``bool`` and ``status`` a ``str``."""
+    ``bool`` and ``status`` a ``str``.
+
+    Attributes
+    ----------
+    tensions : ndarray, shape (N, n) or (n,)
+        Cable tensions [N]; zeros where no solution was found (never NaN).
+    feasible : ndarray of bool, shape (N,), or bool
+        The tensions balance the wrench (``‖W τ + w‖∞`` within :data:`EQUILIBRIUM_RTOL` of
+        its scale) and lie within the bounds.
+    status : ndarray of str, shape (N,), or str
+        ``"optimal"`` (feasible), ``"infeasible"`` (no tensions within the bounds balance the
+        wrench, proved) or ``"not-found"`` (a closed-form method gave up).
+    method : str
+        The method of :data:`METHODS` that computed them.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> res = distribute_tensions(example("planar-4cable"), [0.0, 0.0, 0.0])
+    >>> res.status, bool(res.feasible)
+    ('optimal', True)
+    >>> res.as_dict()["tensions"]
+    [1.0, 1.0, 7.75..., 7.75...]
+    """
 
     tensions: np.ndarray  #: ``(N, n)``; zeros where no solution was found (never NaN)
     feasible: np.ndarray | bool  #: ``(N,)`` bool: equilibrium (to 1e-9 relative) and bounds hold
@@ -668,24 +692,61 @@ def _inputs(
 
 
 def solve_tensions(
-    W: npt.ArrayLike, w: npt.ArrayLike, tmin: npt.ArrayLike, tmax: npt.ArrayLike, method: str = "lp"
+    W: npt.ArrayLike, wrench: npt.ArrayLike, *, tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike], method: str = "lp"
 ) -> TensionResult:
-    """Tensions ``τ`` with ``W τ + w = 0`` and ``tmin ≤ τ ≤ tmax`` at each pose.
+    """Tensions ``τ`` with ``W τ + wrench = 0`` and ``tmin ≤ τ ≤ tmax`` at each pose.
 
-    ``W`` is ``(N, m, n)`` or ``(m, n)``, ``w`` the external wrench ``(N, m)`` or ``(m,)``
-    (either may be shared by all poses), the bounds ``(n,)`` (``tmax`` may be ``inf``) or
-    ``(N, n)``.  ``method`` is one of :data:`METHODS`.  A pose without a solution gets zero
-    tensions, ``feasible = False`` and status ``"infeasible"`` (proved) or ``"not-found"``.
-    Raises :class:`TautError` for bad input or an unknown method.
+    With more cables than the wrench has components the solutions form a polytope and
+    ``method`` picks one of them (module docstring): ``"lp"`` the least sum, ``"qp"`` the
+    least 2-norm, ``"inf"`` the least largest tension, ``"barycentric"`` the centroid of the
+    polytope's vertices, ``"closed-form"`` and ``"improved-closed-form"`` the closed forms of
+    Pott et al.  Every candidate is verified (module docstring) before it is reported.
+
+    Parameters
+    ----------
+    W : array_like, shape (N, m, n) or (m, n)
+        Structure matrices (shared by all poses when 2-D).
+    wrench : array_like, shape (N, m) or (m,)
+        External wrench on the platform [N, N m] (shared by all poses when 1-D).
+    tension_bounds : (tmin, tmax)
+        Tension bounds [N], each a number, ``(n,)`` or ``(N, n)``; ``tmin ≥ 0`` finite,
+        ``tmax`` may be ``inf``.
+    method : str, default "lp"
+        One of :data:`METHODS`.
+
+    Returns
+    -------
+    TensionResult
+        Batched as ``W`` and ``wrench`` are; a pose without a solution gets zero tensions,
+        ``feasible = False`` and status ``"infeasible"`` (proved) or ``"not-found"``.
+
+    Raises
+    ------
+    TautError
+        For arrays of the wrong shape or not finite, bounds that are inverted, negative or not
+        a pair, an unknown method, or ``"barycentric"`` with an infinite upper bound.
 
     References
     ----------
-    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
-       of Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
+        .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+           of Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    One wrench component, three cables: ``τ1 + 2 τ2 + 3 τ3 = 6``.
+
+    >>> W, wrench = [[1.0, 2.0, 3.0]], [-6.0]
+    >>> solve_tensions(W, wrench, tension_bounds=(0.0, 10.0), method="lp").tensions
+    array([0., 0., 2.])
+    >>> solve_tensions(W, wrench, tension_bounds=(0.0, 10.0), method="inf").tensions
+    array([1., 1., 1.])
+    >>> solve_tensions(W, wrench, tension_bounds=(0.0, 0.9)).status
+    'infeasible'
     """
-    if method not in METHODS:
+    if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
-    W, w, tmin, tmax, single = _inputs(W, w, tmin, tmax)
+    tmin, tmax = bounds_pair(tension_bounds)
+    W, w, tmin, tmax, single = _inputs(W, wrench, tmin, tmax)
     cand, infeasible = METHODS[method](W, w, tmin, tmax)
     tau, ok = _verify(W, w, tmin, tmax, cand)
     status = np.where(ok, "optimal", np.where(infeasible, "infeasible", "not-found"))
@@ -695,25 +756,64 @@ def solve_tensions(
 
 
 def distribute_tensions(
-    robot: Robot, poses: npt.ArrayLike, wrench: npt.ArrayLike | None = None, method: str = "lp"
+    robot: Robot,
+    poses: npt.ArrayLike,
+    *,
+    wrench: npt.ArrayLike | None = None,
+    method: str = "lp",
+    tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
 ) -> TensionResult:
-    """Tension distribution of ``robot`` at ``poses`` (``(N, pose_size)`` or one pose).
+    """Tension distribution of ``robot`` at ``poses``: :func:`solve_tensions` with the
+    structure matrix of :func:`taut.kinematics.inverse_kinematics`.
 
-    ``W`` from :func:`taut.kinematics.inverse_kinematics`, the external wrench ``wrench``
-    (``(m,)`` shared by all poses or ``(N, m)``; default
-    :func:`taut.statics.external_wrench`, the robot's own wrench and weight) and the
-    bounds ``robot.tension_bounds``.  See :func:`solve_tensions`.
+    Parameters
+    ----------
+    robot : Robot
+        The robot.
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+        Poses (``robot.pose_names``), one or a batch.
+    wrench : array_like, shape (N, m) or (m,), optional
+        External wrench on the platform [N, N m]; default :func:`external_wrench`, the
+        robot's own wrench and weight.
+    method : str, default "lp"
+        One of :data:`METHODS`.
+    tension_bounds : (tmin, tmax), optional
+        Tension bounds [N], each a number or ``(n,)``; default ``robot.tension_bounds``.
+
+    Returns
+    -------
+    TensionResult
+        One pose: fields without a batch axis.
+
+    Raises
+    ------
+    TautError
+        For a bad pose (:class:`~taut.errors.PoseError`), wrench, bounds or method.
 
     References
     ----------
-    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
-       of Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
+        .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+           of Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    The platform of the planar 4-cable robot hangs at the centre of its frame: the least sum
+    of tensions keeps the lower cables at their 1 N minimum and the upper ones carry the
+    weight, ``2 · 7.757 · sin 46.5° − 2 · 1 · sin 46.5° = 9.81`` N.
+
+    >>> from taut.model import example
+    >>> robot = example("planar-4cable")
+    >>> res = distribute_tensions(robot, [0.0, 0.0, 0.0])
+    >>> np.round(res.tensions, 3)
+    array([1.   , 1.   , 7.757, 7.757])
+    >>> bool(distribute_tensions(robot, [0.0, 0.0, 0.0], tension_bounds=(1.0, 5.0)).feasible)
+    False
     """
-    if method not in METHODS:
+    if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
     W = inverse_kinematics(robot, poses).structure_matrix
     w = external_wrench(robot, poses) if wrench is None else wrench
     if wrench is not None and W.ndim == 2 and np.ndim(wrench) == 2:
         raise TautError(f"one pose but a batch of wrenches of shape {np.shape(wrench)}")
-    tmin, tmax = robot.tension_bounds
-    return solve_tensions(W, w, tmin, tmax, method)
+    bounds = robot.tension_bounds if tension_bounds is None else tension_bounds
+    return solve_tensions(W, w, tension_bounds=bounds, method=method)

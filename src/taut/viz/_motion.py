@@ -41,20 +41,20 @@ def plot_motion(
     fig = empty_figure(fig, "a trajectory's pose, velocity and acceleration", (7.5, 8.0))
     axes = fig.subplots(3, 1, sharex=True)
     panels = (
-        ("pose", samples.pose, "pose [m, rad]"),
+        ("pose", samples.poses, "pose [m, rad]"),
         ("velocity", samples.velocity, "velocity [m/s, rad/s]"),
         ("acceleration", samples.acceleration, "acceleration [m/s², rad/s²]"),
     )
     marks = np.asarray([] if waypoint_times is None else waypoint_times, float).ravel()
     for ax, (kind, values, label) in zip(axes, panels):
         for k, name in enumerate(samples.pose_names):
-            ax.plot(samples.time, values[:, k], color=cable_color(k), lw=1.4, label=name, gid=f"{kind}-{name}")
+            ax.plot(samples.times, values[:, k], color=cable_color(k), lw=1.4, label=name, gid=f"{kind}-{name}")
         for t in marks:
             ax.axvline(t, color="black", ls=":", lw=0.8, gid="waypoint")
         ax.set_ylabel(label)
         ax.grid(True, lw=0.3, alpha=0.5)
     axes[0].legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
-    axes[0].set_title(f"trajectory: {len(samples.time)} samples over {float(np.ptp(samples.time)):g} s", fontsize=10)
+    axes[0].set_title(f"trajectory: {len(samples.times)} samples over {float(np.ptp(samples.times)):g} s", fontsize=10)
     axes[-1].set_xlabel("time [s]")
     fig.tight_layout()
     return fig

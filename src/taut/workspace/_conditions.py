@@ -153,9 +153,8 @@ class WrenchFeasible(WrenchCondition):
 
     def test(self, robot: Robot, poses: np.ndarray, W: np.ndarray) -> np.ndarray:
         ws = self.required_set(robot)
-        offset = external_wrench(robot, poses) if self.around_external else None
-        tmin, tmax = robot.tension_bounds
-        return wrench_feasible(W, tmin, tmax, ws, offset)
+        wrench = external_wrench(robot, poses) if self.around_external else None
+        return wrench_feasible(W, ws, tension_bounds=robot.tension_bounds, wrench=wrench)
 
 
 class StaticEquilibrium(WrenchCondition):
@@ -163,8 +162,7 @@ class StaticEquilibrium(WrenchCondition):
     description = "the external wrench (weight included) is balanced within the tension bounds"
 
     def test(self, robot: Robot, poses: np.ndarray, W: np.ndarray) -> np.ndarray:
-        tmin, tmax = robot.tension_bounds
-        return static_equilibrium(W, tmin, tmax, external_wrench(robot, poses))
+        return static_equilibrium(W, external_wrench(robot, poses), tension_bounds=robot.tension_bounds)
 
 
 class InterferenceFree(WorkspaceCondition):

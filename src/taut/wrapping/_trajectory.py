@@ -204,7 +204,7 @@ def run_trajectory(
         if wrench is None
         else np.broadcast_to(np.asarray(wrench, float), (len(P), robot.wrench_dim))
     )
-    tmin, tmax = robot.tension_bounds if tension_bounds is None else tension_bounds
-    res = solve_tensions(ik.structure_matrix, w, tmin, tmax, method="lp")
+    bounds = robot.tension_bounds if tension_bounds is None else tension_bounds
+    res = solve_tensions(ik.structure_matrix, w, tension_bounds=bounds, method="lp")
     controlled = length_controlled(ik, robot.wrench_dim)
     return TrajectoryResult(times, ik, res.tensions, np.asarray(res.feasible, bool), controlled, ik.transitions(times))

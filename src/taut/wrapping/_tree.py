@@ -185,7 +185,7 @@ class CableStateTree:
                 keep &= phi >= -TAUT_TOL
             x1s, x2s = np.where(keep[:, None], x1, 0.0), np.where(keep[:, None], x2, 0.0)
             meets = segment_meets_circle(
-                x1s[:, None], x2s[:, None], self.circles[None, :, :2], self.circles[None, :, 2], MEET_TOL
+                x1s[:, None], x2s[:, None], self.circles[None, :, :2], self.circles[None, :, 2], tol=MEET_TOL
             )
             keep &= ~meets.any(axis=1)
             earlier = self.static_segments(node)[:-1] if node != 0 else np.zeros((0, 2, 2))
@@ -195,7 +195,7 @@ class CableStateTree:
                 )
                 keep &= ~cross.any(axis=1)
             for poly in self.disallowed:
-                keep &= ~segment_enters_polygon(x1s, x2s, poly, MEET_TOL)
+                keep &= ~segment_enters_polygon(x1s, x2s, poly, tol=MEET_TOL)
             sel = np.flatnonzero(keep)
         else:
             sel = np.zeros(0, dtype=np.int64)
@@ -265,12 +265,12 @@ class CableStateTree:
             d = self.F[node, DIR]
             if wrap_angle(self.F[node, THETA_IN], contact_angle(u, d), d, WRAP_LOW) < -TAUT_TOL:
                 return False
-        if segment_meets_circle(x, b, self.circles[:, :2], self.circles[:, 2], MEET_TOL).any():
+        if segment_meets_circle(x, b, self.circles[:, :2], self.circles[:, 2], tol=MEET_TOL).any():
             return False
         earlier = self.static_segments(node)[:-1] if node != 0 else np.zeros((0, 2, 2))
         if len(earlier) and segments_intersect(x, b, earlier[:, 0], earlier[:, 1], tol=MEET_TOL).any():
             return False
-        return not any(bool(segment_enters_polygon(x, b, poly, MEET_TOL)) for poly in self.disallowed)
+        return not any(bool(segment_enters_polygon(x, b, poly, tol=MEET_TOL)) for poly in self.disallowed)
 
     def shortest_taut_state(self, b: npt.ArrayLike, max_nodes: int = 20000) -> int:
         """The taut admissible state of least length with the platform end at ``b``: a
