@@ -67,7 +67,7 @@ def main():
         f"robot: {robot.name} (inertia {INERTIA}); first call (compile or cache load): {time.perf_counter() - t0:.2f} s"
     )
 
-    dt_b, res = best_of(lambda: inverse_dynamics(robot, q, qd, qdd, method="closed-form", time=t))
+    dt_b, res = best_of(lambda: inverse_dynamics(robot, q, qd, qdd, method="closed-form", times=t))
     m = min(args.loop, args.samples)
     t0 = time.perf_counter()
     for k in range(m):

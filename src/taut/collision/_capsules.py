@@ -130,7 +130,7 @@ def capsule_model(robot: Robot) -> CapsuleModel:
 
 
 def capsule_segments(
-    robot: Robot, poses: np.ndarray, model: CapsuleModel | None = None
+    robot: Robot, poses: np.ndarray, *, model: CapsuleModel | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
     """End points ``A, B`` of every capsule at each pose, ``(N, C, 3)`` each (planar robots
     get ``z = 0``).  Cable capsules run from the exit point (``A``; the tangent point of a

@@ -110,7 +110,7 @@ class ProximityResult:
         return self._matrix(self.clearances)
 
 
-def proximity(robot: Robot, poses: npt.ArrayLike, model: CapsuleModel | None = None) -> ProximityResult:
+def proximity(robot: Robot, poses: npt.ArrayLike, *, model: CapsuleModel | None = None) -> ProximityResult:
     """Proximities and clearances of all checked capsule pairs at each pose (``(N, pose_size)``
     or one pose).  Raises :class:`~taut.errors.PoseError` for invalid poses.
 
@@ -122,7 +122,7 @@ def proximity(robot: Robot, poses: npt.ArrayLike, model: CapsuleModel | None = N
     """
     arr, _ = as_poses(robot, poses)
     model = capsule_model(robot) if model is None else model
-    A, B = capsule_segments(robot, arr, model)
+    A, B = capsule_segments(robot, arr, model=model)
     dist = np.empty((arr.shape[0], len(model.pairs)))
     _proximity_kernel(A, B, model.pairs, model.shared, model.cut, dist)
     rho = model.radii[model.pairs[:, 0]] + model.radii[model.pairs[:, 1]]

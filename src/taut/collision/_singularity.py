@@ -52,7 +52,7 @@ LP_TOL = 1e-9
 RANK_TOL = 1e-10
 
 
-def jacobian_singular(J: npt.ArrayLike, tol: float = JACOBIAN_TOL) -> tuple[np.ndarray, np.ndarray]:
+def jacobian_singular(J: npt.ArrayLike, *, tol: float = JACOBIAN_TOL) -> tuple[np.ndarray, np.ndarray]:
     """Jacobian singularity of ``J (N, rows, cols)``: ``(singular (N,), σ_min/σ_max (N,))``.
 
     References
@@ -124,7 +124,7 @@ def positive_span_lp(W: npt.ArrayLike) -> np.ndarray:
     return out
 
 
-def force_closure_singular(W: npt.ArrayLike, method: str = "fast") -> np.ndarray:
+def force_closure_singular(W: npt.ArrayLike, *, method: str = "fast") -> np.ndarray:
     """Force-closure singularity of the structure matrices ``W (N, m, n)``: ``(N,)`` bool,
     true where the columns do not positively span ``R^m``.  ``method``: ``"fast"``
     (vectorised, for grids) or ``"lp"`` (reference).

@@ -63,7 +63,7 @@ def _fill(robot: Robot, waypoints: np.ndarray, what: str) -> np.ndarray:
 
 
 def sample_waypoints(
-    robot: Robot, waypoints: npt.ArrayLike, steps: Iterable[int] | None = None, what: str = "trajectory"
+    robot: Robot, waypoints: npt.ArrayLike, steps: Iterable[int] | None = None, *, what: str = "trajectory"
 ) -> np.ndarray:
     """Poses ``(1 + Σ steps, pose_size)`` along straight moves between ``waypoints``, with
     ``steps[k]`` increments on move ``k`` (default :data:`DEFAULT_STEPS` each)."""
@@ -90,7 +90,7 @@ def trajectory_poses(robot: Robot, name: str) -> np.ndarray:
         known = ", ".join(robot.trajectories) or "none"
         raise TautError(f"{robot.name}: no built-in trajectory {name!r} (built-in: {known})")
     t = robot.trajectories[name]
-    return sample_waypoints(robot, t.waypoints, t.steps, f"trajectory {name}")
+    return sample_waypoints(robot, t.waypoints, t.steps, what=f"trajectory {name}")
 
 
 def _csv(text: str, robot: Robot, source: str) -> np.ndarray:
@@ -148,7 +148,7 @@ def load_trajectory(robot: Robot, path: str | Path) -> np.ndarray:
     if isinstance(data, dict) and "poses" in data:
         data = data["poses"]
     if isinstance(data, dict) and "waypoints" in data:
-        return sample_waypoints(robot, data["waypoints"], data.get("steps"), source)
+        return sample_waypoints(robot, data["waypoints"], data.get("steps"), what=source)
     if not isinstance(data, list) or not data:
         raise TautError(f"{source}: expected a list of poses, or a mapping with 'poses' or 'waypoints'")
     try:
@@ -215,7 +215,7 @@ def check_poses(
     robot: Robot,
     poses: npt.ArrayLike,
     *,
-    jacobian_tol: float = JACOBIAN_TOL,
+    tol: float = JACOBIAN_TOL,
     method: str = "fast",
     model: CapsuleModel | None = None,
 ) -> CheckResult:
@@ -229,13 +229,13 @@ def check_poses(
     """
     arr, _ = as_poses(robot, poses)
     model = capsule_model(robot) if model is None else model
-    prox = proximity(robot, arr, model)
+    prox = proximity(robot, arr, model=model)
     N = arr.shape[0]
     jac, ratio, fc = np.ones(N, bool), np.zeros(N), np.ones(N, bool)
     ok = (ik_status(robot, arr)[1] == CABLE_OK).all(axis=1)
     if ok.any():
         J = actuator_jacobian(robot, arr[ok])
-        jac[ok], ratio[ok] = jacobian_singular(J, jacobian_tol)
+        jac[ok], ratio[ok] = jacobian_singular(J, tol=tol)
         W = -np.swapaxes(J[:, : robot.n_cables, : robot.wrench_dim], 1, 2)  # J = [−Wᵀ, …]
-        fc[ok] = force_closure_singular(W, method)
+        fc[ok] = force_closure_singular(W, method=method)
     return CheckResult(arr, prox, jac, ratio, fc)

@@ -317,7 +317,7 @@ def _update(
     h = (float(time[k + 1]) - t) / D.shape[1]
     for s in range(D.shape[1]):
         try:
-            q, qd = plant.step(q, qd, last, h, D[k, s])
+            q, qd = plant.step(q, qd, last, h, wrench=D[k, s])
         except TautError as exc:
             raise IntegrationError(f"RK4 failed at t = {t + s * h:g} s: {exc}") from None
     if not (np.isfinite(q).all() and np.isfinite(qd).all()) or np.abs(q).max() > 1e9:
@@ -394,7 +394,7 @@ def simulate_control(
         raise TautError(f"substeps must be a whole number >= 1, got {substeps!r}")
     dof, n = robot.pose_size, robot.n_cables
     kp_, kd_ = _gains(kp, dof, "kp"), _gains(kd, dof, "kd")
-    plant = loop_model(robot, method)
+    plant = loop_model(robot, method=method)
     if model is not None and (
         model.pose_size != dof
         or model.orientation != robot.orientation
@@ -404,7 +404,7 @@ def simulate_control(
         raise TautError(
             f"the controller's model {model.name} must have the cables and pose coordinates of {robot.name}"
         )
-    ctrl = plant if model is None else loop_model(model, method)
+    ctrl = plant if model is None else loop_model(model, method=method)
     duration = motion.duration
     K = max(1, math.ceil(duration * rate_hz - 1e-9))
     if K > 100_000_000:

@@ -242,10 +242,11 @@ def acceleration(
     q: npt.ArrayLike,
     qd: npt.ArrayLike,
     tensions: npt.ArrayLike,
-    w_ext: npt.ArrayLike | None = None,
+    *,
+    wrench: npt.ArrayLike | None = None,
 ) -> np.ndarray:
     """``q̈`` ``(N, dof)`` (``(dof,)`` for one state) of the platform at poses ``q`` with pose
-    rates ``qd`` under cable tensions ``(N, n)`` or ``(n,)`` and an external wrench ``w_ext``
+    rates ``qd`` under cable tensions ``(N, n)`` or ``(n,)`` and an external wrench ``wrench``
     (taut's convention: forces, then moments about ``p``, fixed frame) besides the robot's own
     weight: the solution of ``M q̈ + C q̇ + g = Jᵀ (W τ + w_ext)``.
 
@@ -266,7 +267,7 @@ def acceleration(
        and Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
     """
     model = kernel_model(robot)
-    arr, vel, tau, w, single = _inputs(robot, q, qd, tensions, w_ext, "tensions")
+    arr, vel, tau, w, single = _inputs(robot, q, qd, tensions, wrench, "tensions")
     qdd, _, status = _accelerate(robot, model, arr, vel, tau, w, False)
     if status.any():
         raise _status_error(robot, status, "state")
@@ -310,16 +311,17 @@ def rk4_step(
     qd: npt.ArrayLike,
     tensions: npt.ArrayLike,
     dt: float,
-    w_ext: npt.ArrayLike | None = None,
+    *,
+    wrench: npt.ArrayLike | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """One classical Runge–Kutta (RK4) step of ``dt`` seconds from each state ``(q, q̇)``
-    (``(N, dof)`` or one ``(dof,)``) with the tensions and ``w_ext`` held over the step (a
+    (``(N, dof)`` or one ``(dof,)``) with the tensions and ``wrench`` held over the step (a
     zero-order hold, as a controller applies them): the new ``(q, q̇)``.  Raises as
     :func:`acceleration` when a stage reaches a singular configuration."""
     if not (np.isfinite(dt) and dt > 0):
         raise TautError(f"time step must be positive and finite, got {dt!r}")
     model = kernel_model(robot)
-    arr, vel, tau, w, single = _inputs(robot, q, qd, tensions, w_ext, "tensions")
+    arr, vel, tau, w, single = _inputs(robot, q, qd, tensions, wrench, "tensions")
     qn, vn = _rk4(robot, model, arr, vel, tau, w, float(dt), False)
     return (qn[0], vn[0]) if single else (qn, vn)
 
@@ -376,7 +378,7 @@ def forward_dynamics(
     *,
     tensions: Callable[[float], npt.ArrayLike] | None = None,
     lengths: Callable[[float], npt.ArrayLike] | None = None,
-    w_ext: Callable[[float], npt.ArrayLike] | None = None,
+    wrench: Callable[[float], npt.ArrayLike] | None = None,
     method: str = "DOP853",
     rtol: float = 1e-9,
     atol: float = 1e-12,
@@ -388,7 +390,7 @@ def forward_dynamics(
 
     Exactly one input drives the cables: ``tensions(t) -> (n,)``, or ``lengths(t) -> (n,)``,
     the commanded unstretched lengths of elastic cables (each cable's ``stiffness`` is its
-    ``EA``; a slack cable pulls nothing).  ``w_ext(t) -> (dof,)`` is an external wrench
+    ``EA``; a slack cable pulls nothing).  ``wrench(t) -> (dof,)`` is an external wrench
     besides the robot's weight.  ``method`` is one of :data:`INTEGRATORS`: a method of
     :func:`scipy.integrate.solve_ivp` (adaptive, tolerances ``rtol``/``atol``, output at
     ``times``, default the integrator's own steps; ``step`` caps the step size) or ``"RK4"``
@@ -433,7 +435,7 @@ def forward_dynamics(
         u = _call(drive, t, what, (n,))
         if elastic:
             u = _unstretched(robot, u, 1)[0]
-        w = np.zeros(dof) if w_ext is None else _call(w_ext, t, "external wrench", (dof,))
+        w = np.zeros(dof) if wrench is None else _call(wrench, t, "external wrench", (dof,))
         return u[None], w[None]
 
     x0, v0, _, _, _ = _inputs(robot, q0, qd0, np.zeros(n), None, "tensions")

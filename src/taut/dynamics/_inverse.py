@@ -101,11 +101,12 @@ def required_wrench(
     q: npt.ArrayLike,
     qd: npt.ArrayLike,
     qdd: npt.ArrayLike,
-    w_ext: npt.ArrayLike | None = None,
+    *,
+    wrench: npt.ArrayLike | None = None,
 ) -> np.ndarray:
     """The wrench ``W τ`` ``(N, dof)`` (``(dof,)`` for one sample) the cables must apply for
     the pose accelerations ``qdd`` at poses ``q`` with rates ``qd``, given an external wrench
-    ``w_ext`` (``(dof,)`` or ``(N, dof)``) besides the robot's own weight; taut's wrench
+    ``wrench`` (``(dof,)`` or ``(N, dof)``) besides the robot's own weight; taut's wrench
     convention (forces, then moments about ``p``, fixed frame).
 
     References
@@ -115,15 +116,15 @@ def required_wrench(
     """
     model = kernel_model(robot)
     arr, vel, acc, single = _motion(robot, q, qd, qdd)
-    w = _ext(robot, w_ext, arr.shape[0])
-    wrench, _, _, _ = _samples(model, arr, vel, acc, w, robot.tension_bounds, closed_form=False, cables=False)
-    return wrench[0] if single else wrench
+    w = _ext(robot, wrench, arr.shape[0])
+    need, _, _, _ = _samples(model, arr, vel, acc, w, robot.tension_bounds, closed_form=False, cables=False)
+    return need[0] if single else need
 
 
-def _ext(robot: Robot, w_ext: npt.ArrayLike | None, N: int) -> np.ndarray:
-    if w_ext is None:
+def _ext(robot: Robot, wrench: npt.ArrayLike | None, N: int) -> np.ndarray:
+    if wrench is None:
         return np.zeros((N, robot.pose_size))
-    return np.ascontiguousarray(as_rates(robot, w_ext, N, "external wrenches"))
+    return np.ascontiguousarray(as_rates(robot, wrench, N, "external wrenches"))
 
 
 def _samples(
@@ -177,8 +178,9 @@ def inverse_dynamics(
     qdd: npt.ArrayLike,
     *,
     method: str = "improved-closed-form",
-    w_ext: npt.ArrayLike | None = None,
-    time: npt.ArrayLike | None = None,
+    wrench: npt.ArrayLike | None = None,
+    tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
+    times: npt.ArrayLike | None = None,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> InverseDynamicsResult:
     """Cable tensions along a sampled motion ``(q, q̇, q̈)`` (each ``(N, dof)``, or one sample
@@ -186,8 +188,9 @@ def inverse_dynamics(
 
     ``method`` is a tension distribution method of :data:`taut.statics.METHODS`
     (``lp``, ``qp``, ``inf``, ``closed-form``, ``improved-closed-form``, ``barycentric``); the
-    bounds are ``robot.tension_bounds``.  ``w_ext`` is an external wrench besides the robot's
-    weight, ``time (N,)`` the sample times (kept in the result for plots).  Samples without an
+    bounds are ``tension_bounds`` (default ``robot.tension_bounds``).  ``wrench`` is an external
+    wrench besides the robot's weight, ``times (N,)`` the sample times (kept in the result for
+    plots).  Samples without an
     admissible distribution get zero tensions, ``feasible = False`` and a reason.
 
     The wrenches, structure matrices and, for ``closed-form``, the tensions are computed by a
@@ -218,23 +221,23 @@ def inverse_dynamics(
     model = kernel_model(robot)
     arr, vel, acc, single = _motion(robot, q, qd, qdd)
     N, n = arr.shape[0], robot.n_cables
-    times = None
-    if time is not None:
-        times = np.array(time, dtype=float).reshape(-1) if single else np.array(time, dtype=float)
-        if times.shape != (N,) or not np.isfinite(times).all():
-            raise TautError(f"sample times must be {N} finite numbers, got shape {times.shape}")
+    sample_times = None
+    if times is not None:
+        sample_times = np.array(times, dtype=float).reshape(-1) if single else np.array(times, dtype=float)
+        if sample_times.shape != (N,) or not np.isfinite(sample_times).all():
+            raise TautError(f"sample times must be {N} finite numbers, got shape {sample_times.shape}")
     from taut.dynamics._kernels import ZERO_LENGTH
 
-    w = _ext(robot, w_ext, N)
-    bounds = robot.tension_bounds
-    wrench, tensions = np.empty((N, robot.pose_size)), np.zeros((N, n))
+    w = _ext(robot, wrench, N)
+    bounds = _tension_bounds(robot, tension_bounds)
+    need, tensions = np.empty((N, robot.pose_size)), np.zeros((N, n))
     feasible = np.zeros(N, dtype=bool)
     code = np.full(N, STATUSES.index("undefined"), dtype=np.int64)
     for start in range(0, N, CHUNK):
         part = slice(start, min(start + CHUNK, N))
         closed = method == "closed-form" and model.straight
         wr, W, tau, st = _samples(model, arr[part], vel[part], acc[part], w[part], bounds, closed)
-        wrench[part] = wr
+        need[part] = wr
         ok = st != ZERO_LENGTH
         if not model.straight:
             from taut.kinematics import batch_structure_matrices
@@ -253,13 +256,34 @@ def inverse_dynamics(
             progress(part.stop, N)
     labels = np.array(STATUSES)[code]
     reasons = np.array([_reason(s, method) for s in STATUSES])[code]
-    arrays = [wrench, tensions, feasible, labels, reasons] + ([] if times is None else [times])
+    arrays = [need, tensions, feasible, labels, reasons] + ([] if sample_times is None else [sample_times])
     if single:
         arrays = [np.array(a[0]) for a in arrays]
     for a in arrays:
         a.setflags(write=False)
     w_, tau, ok, st, why = arrays[:5]
-    return InverseDynamicsResult(None if times is None else arrays[5], w_, tau, ok, st, why, method)
+    return InverseDynamicsResult(None if sample_times is None else arrays[5], w_, tau, ok, st, why, method)
+
+
+def _tension_bounds(
+    robot: Robot, tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] | None
+) -> tuple[np.ndarray, np.ndarray]:
+    """``(tmin, tmax)`` as C-contiguous ``(n,)`` arrays: the robot's own, or ``tension_bounds``
+    (each a number or one per cable) checked."""
+    if tension_bounds is None:
+        return robot.tension_bounds
+    n = robot.n_cables
+    try:
+        lo, hi = (np.ascontiguousarray(np.broadcast_to(np.asarray(b, dtype=float), (n,))) for b in tension_bounds)
+    except (TypeError, ValueError):
+        raise TautError(
+            f"{robot.name}: tension_bounds must be (tmin, tmax), each a number or {n} numbers, got {tension_bounds!r}"
+        ) from None
+    if not np.isfinite(lo).all() or np.isnan(hi).any() or (lo < 0).any() or (hi < lo).any():
+        raise TautError(
+            f"{robot.name}: tension bounds need 0 <= tmin <= tmax and a finite tmin, got {lo.tolist()}, {hi.tolist()}"
+        )
+    return lo, hi
 
 
 def _reason(status: str, method: str) -> str:

@@ -42,10 +42,10 @@ class LoopModel:
     buffers: dict[str, np.ndarray] = field(repr=False)
 
     def tensions(
-        self, q: npt.ArrayLike, qd: npt.ArrayLike, qdd: npt.ArrayLike, w_ext: npt.ArrayLike | None = None
+        self, q: npt.ArrayLike, qd: npt.ArrayLike, qdd: npt.ArrayLike, *, wrench: npt.ArrayLike | None = None
     ) -> tuple[np.ndarray, bool]:
         """Tensions ``(n,)`` for the pose accelerations ``qdd`` at the state ``(q, q̇)`` (each
-        ``(dof,)``) under ``w_ext`` besides the weight, and whether they are admissible (zeros
+        ``(dof,)``) under the external wrench ``wrench`` besides the weight, and whether they are admissible (zeros
         when not).  Raises :class:`~taut.errors.InfeasiblePoseError` where a cable has zero
         length."""
         from taut.dynamics._kernels import OK, ZERO_LENGTH, inverse_samples
@@ -53,7 +53,7 @@ class LoopModel:
 
         b = self.buffers
         b["q"][0], b["qd"][0], b["qdd"][0] = q, qd, qdd
-        b["w"][0] = 0.0 if w_ext is None else w_ext
+        b["w"][0] = 0.0 if wrench is None else wrench
         lo, hi = b["lo"], b["hi"]
         ip, fp, cab = self.kernels.args
         inverse_samples(
@@ -87,17 +87,18 @@ class LoopModel:
         qd: npt.ArrayLike,
         tensions: npt.ArrayLike,
         dt: float,
-        w_ext: npt.ArrayLike | None = None,
+        *,
+        wrench: npt.ArrayLike | None = None,
     ) -> tuple[np.ndarray, np.ndarray]:
         """One RK4 step of ``dt`` from ``(q, q̇)`` (each ``(dof,)``) with ``tensions (n,)`` and
-        ``w_ext`` held: the new ``(q, q̇)``.  Raises :class:`~taut.errors.SingularConfigurationError`
+        the external ``wrench`` held: the new ``(q, q̇)``.  Raises :class:`~taut.errors.SingularConfigurationError`
         at the gimbal lock and :class:`~taut.errors.InfeasiblePoseError` where a cable has zero
         length."""
         from taut.dynamics._kernels import GIMBAL_LOCK, OK, rk4_steps
 
         b = self.buffers
         b["q"][0], b["qd"][0], b["u"][0] = q, qd, tensions
-        b["w"][0] = 0.0 if w_ext is None else w_ext
+        b["w"][0] = 0.0 if wrench is None else wrench
         ip, fp, cab = self.kernels.args
         rk4_steps(ip, fp, cab, False, b["q"], b["qd"], b["u"], b["w"], dt, b["q_next"], b["qd_next"], b["status"])
         status = b["status"][0]
@@ -112,7 +113,7 @@ class LoopModel:
         return b["q_next"][0].copy(), b["qd_next"][0].copy()
 
 
-def loop_model(robot: Robot, method: str = "qp") -> LoopModel:
+def loop_model(robot: Robot, *, method: str = "qp") -> LoopModel:
     """``robot`` prepared for :meth:`LoopModel.tensions` and :meth:`LoopModel.step`;
     ``method`` is the distribution used where the compiled closed form gives up.
 

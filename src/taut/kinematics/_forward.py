@@ -36,7 +36,7 @@ def default_guess(robot: Robot) -> np.ndarray:
 
 
 def forward_kinematics(
-    robot: Robot, lengths: npt.ArrayLike, guess: npt.ArrayLike | None = None, *, tol: float = 1e-9
+    robot: Robot, lengths: npt.ArrayLike, *, guess: npt.ArrayLike | None = None, tol: float = 1e-9
 ) -> FKResult:
     """The pose at which the cables have ``lengths``, found from ``guess``.
 

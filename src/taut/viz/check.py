@@ -66,7 +66,7 @@ def plot_check(robot: Robot, result: CheckResult, fig: Figure | None = None) -> 
     three_d = robot.dimension == 3
     rax = fig.add_subplot(1, 2, 2, projection="3d") if three_d else fig.add_subplot(1, 2, 2)
     draw_robot(robot, result.poses[k], ax=rax)
-    A, B = capsule_segments(robot, result.poses[k : k + 1], result.model)
+    A, B = capsule_segments(robot, result.poses[k : k + 1], model=result.model)
     hit = sorted({c for pair in result.proximity.collisions(k) for c in pair})
     for c in hit:
         pts = np.stack([A[0, c], B[0, c]])[:, : robot.dimension]

@@ -135,7 +135,7 @@ class WrenchFeasible(WrenchCondition):
     name = "wrench-feasible"
     description = "every wrench of a set around the external wrench is balanced within the tension bounds"
 
-    def __init__(self, wrench_set: WrenchSet | None = None, around_external: bool = True) -> None:
+    def __init__(self, wrench_set: WrenchSet | None = None, *, around_external: bool = True) -> None:
         if wrench_set is not None and not isinstance(wrench_set, WrenchSet):
             raise TautError(
                 f"wrench_set must be a WrenchSet (box, polytope, ellipsoid, single wrench), got {type(wrench_set).__name__}"

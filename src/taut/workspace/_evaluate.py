@@ -252,7 +252,7 @@ def evaluate_workspace(
         names: tuple[str, ...] = ()
         N = int(arr.shape[0])
     else:
-        g = make_grid(robot, grid, resolution, orientation)
+        g = make_grid(robot, grid, resolution=resolution, orientation=orientation)
         _check_grid(robot, g)
         source = g
         axes, shape, names = tuple(np.asarray(a) for a in g.axes), g.shape, g.names

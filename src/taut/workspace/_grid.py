@@ -130,7 +130,7 @@ class PoseGrid:
         return out
 
 
-def default_bounds(robot: Robot, shrink: float = DEFAULT_SHRINK) -> np.ndarray:
+def default_bounds(robot: Robot, *, shrink: float = DEFAULT_SHRINK) -> np.ndarray:
     """``(d, 2)`` bounds: the bounding box of the exit points, shrunk by ``shrink`` of its
     size on each side.  An axis along which all exits are level (a suspended robot with
     coplanar exits) spans ``[c − E, c + E]``, ``E`` half the largest extent."""
@@ -202,6 +202,7 @@ def _axes(robot: Robot, specs: Sequence[AxisSpec]) -> tuple[np.ndarray, ...]:
 
 def position_grid(
     robot: Robot,
+    *,
     resolution: int | None = None,
     bounds: npt.ArrayLike | None = None,
     orientation: npt.ArrayLike | None = None,
@@ -235,6 +236,7 @@ def pose_grid(robot: Robot, axes: Sequence[AxisSpec]) -> PoseGrid:
 def make_grid(
     robot: Robot,
     grid: PoseGrid | Sequence[AxisSpec] | np.ndarray | None = None,
+    *,
     resolution: int | None = None,
     orientation: npt.ArrayLike | None = None,
 ) -> PoseGrid:
@@ -248,7 +250,7 @@ def make_grid(
     Raises :class:`~taut.errors.GridSizeError` for a grid of more than
     :data:`MAX_GRID_POSES` poses, before building it."""
     if grid is None:
-        return position_grid(robot, resolution, orientation=orientation)
+        return position_grid(robot, resolution=resolution, orientation=orientation)
     if isinstance(grid, PoseGrid):
         return grid
     if isinstance(grid, (str, bytes)) or not isinstance(grid, (Sequence, np.ndarray)):
