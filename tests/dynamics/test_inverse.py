@@ -39,7 +39,7 @@ def test_tensions_give_the_required_wrench(method, spatial):
     lo, hi = spatial.tension_bounds
     assert (res.tensions >= lo).all() and (res.tensions <= hi).all()
     assert res.first_failure is None and res.failures() == []
-    np.testing.assert_array_equal(res.time, t)
+    np.testing.assert_array_equal(res.times, t)
     assert not res.tensions.flags.writeable
 
 
@@ -171,7 +171,7 @@ def test_progress_and_forward_plot(spatial, monkeypatch):
     assert steps == list(range(1, 21))
     ax = plot_motion_tensions(robot, res)
     marks = next(line for line in ax.get_lines() if line.get_gid() == "infeasible")
-    np.testing.assert_allclose(marks.get_xdata(), res.time)  # cable 3 is slack throughout
+    np.testing.assert_allclose(marks.get_xdata(), res.times)  # cable 3 is slack throughout
     assert "simulated motion" in ax.get_title()
 
 
@@ -180,7 +180,7 @@ def test_one_sample_has_no_batch_axis(spatial):
     one = inverse_dynamics(spatial, q, qd, qdd, method="qp", times=0.5)
     batch = inverse_dynamics(spatial, q[None], qd[None], qdd[None], method="qp", times=[0.5])
     assert one.tensions.shape == (8,) and one.wrench.shape == (6,) and one.feasible.shape == ()
-    assert bool(one.feasible) and str(one.status) == "optimal" and str(one.reasons) == "" and float(one.time) == 0.5
+    assert bool(one.feasible) and str(one.status) == "optimal" and str(one.reasons) == "" and float(one.times) == 0.5
     np.testing.assert_array_equal(one.tensions, batch.tensions[0])
     assert one.failures() == [] and one.first_failure is None
     fast = np.array([0.0, 0.0, 400.0, 0.0, 0.0, 0.0])

@@ -139,7 +139,7 @@ def cmd_simulate(ns: argparse.Namespace) -> int:
         )
     # the samples written: every control update at --sample-rate, and the last
     every = max(1, int(round(rate / sample_rate)))
-    idx = np.unique(np.r_[np.arange(0, res.time.size, every), res.time.size - 1])
+    idx = np.unique(np.r_[np.arange(0, res.times.size, every), res.times.size - 1])
     upper = res.upper_margin
     first = res.first_failure_time
     data = {
@@ -158,9 +158,9 @@ def cmd_simulate(ns: argparse.Namespace) -> int:
         "method": ns.method,
         "pose_names": list(res.pose_names),
         "samples": int(idx.size),
-        "updates": int(res.time.size),
-        "time": res.time[idx].tolist(),
-        "pose": res.pose[idx].tolist(),
+        "updates": int(res.times.size),
+        "time": res.times[idx].tolist(),
+        "pose": res.poses[idx].tolist(),
         "reference": res.reference[idx].tolist(),
         "tensions": res.tensions[idx].tolist(),
         "tracking_error_max": res.tracking_error_max.tolist(),
@@ -173,7 +173,7 @@ def cmd_simulate(ns: argparse.Namespace) -> int:
         "slack_events": res.slack_events,
         "distribution_failures": res.failures,
         "first_failure_time": first,
-        "feasible": res.feasible,
+        "feasible": res.all_feasible,
     }
     if out is not None:
         n = robot.n_cables
@@ -187,8 +187,8 @@ def cmd_simulate(ns: argparse.Namespace) -> int:
         with open(out, "w") as fh:
             fh.write(",".join(head) + "\n")
             for k in idx:
-                vals = [res.time[k], *res.pose[k], *res.reference[k], *res.tensions[k]]
-                fh.write(",".join(f"{v:.9g}" for v in vals) + f",{int(res.admissible[k])}\n")
+                vals = [res.times[k], *res.poses[k], *res.reference[k], *res.tensions[k]]
+                fh.write(",".join(f"{v:.9g}" for v in vals) + f",{int(res.feasible[k])}\n")
         data["out"] = str(out)
     if plot is not None:
         from taut.viz.dynamics import plot_control

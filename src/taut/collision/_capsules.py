@@ -39,6 +39,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from taut._results import Result
 from taut.kinematics import anchors_at, body_frames, cable_paths
 from taut.model import Robot
 
@@ -54,7 +55,7 @@ ON_TOL = 1e-9
 
 
 @dataclass(frozen=True)
-class CapsuleModel:
+class CapsuleModel(Result):
     """The capsules of a robot and the pairs to check.
 
     ``pairs (P, 2)`` are 0-based capsule indices ``i < j`` (``i`` always a cable);

@@ -26,6 +26,7 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut._results import Result
 from taut.collision._capsules import SHARED_END_MIN, CapsuleModel, capsule_model, capsule_segments
 from taut.geometry import segment_distance_scalar
 from taut.kinematics import as_poses
@@ -65,7 +66,7 @@ def _proximity_kernel(
 
 
 @dataclass(frozen=True)
-class ProximityResult:
+class ProximityResult(Result):
     """Proximities of the capsule pairs of ``model`` at ``N`` poses."""
 
     model: CapsuleModel

@@ -33,10 +33,12 @@ import json
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result, jsonable
 from taut.collision._capsules import CapsuleModel, capsule_model
 from taut.collision._proximity import ProximityResult, proximity
 from taut.collision._singularity import JACOBIAN_TOL, force_closure_singular, jacobian_singular
@@ -167,7 +169,7 @@ def load_trajectory(robot: Robot, path: str | Path) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class CheckResult:
+class CheckResult(Result):
     """Collision and singularity verdicts at ``N`` poses (index 0 = step 1)."""
 
     poses: np.ndarray  #: ``(N, pose_size)``
@@ -209,6 +211,25 @@ class CheckResult:
             }
             for k in range(len(self.poses))
         ]
+
+    def as_dict(self) -> dict[str, Any]:
+        """The result in plain JSON types: the ``capsules``' names (0-based, cables first),
+        the ``poses``, the ``jacobian_ratio`` of each pose and its record of :meth:`steps`
+        (0-based pose and capsule indices).
+
+        Returns
+        -------
+        dict
+            ``json.dumps(result.as_dict(), allow_nan=False)`` accepts it.
+        """
+        return jsonable(
+            {
+                "capsules": self.model.names,
+                "poses": self.poses,
+                "jacobian_ratio": self.jacobian_ratio,
+                "steps": self.steps(),
+            }
+        )
 
 
 def check_poses(

@@ -58,10 +58,13 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from time import perf_counter
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result, jsonable
 from taut.dynamics._forward import IntegrationError
 from taut.dynamics._loop import LoopModel, loop_model
 from taut.errors import InfeasiblePoseError, TautError
@@ -92,7 +95,7 @@ PROGRESS_EVERY = 2000
 
 
 @dataclass(frozen=True)
-class WrenchSteps:
+class WrenchSteps(Result):
     """An external wrench made of steps: ``steps[k] = (start, end, wrench)`` adds ``wrench``
     (taut's convention: forces, then moments about ``p``, fixed frame) for ``start ≤ t <
     end`` (``end = inf``: from ``start`` on).  Callable: ``steps(t) -> (dof,)``."""
@@ -106,6 +109,7 @@ class WrenchSteps:
         for start, end, w in self.steps:
             if not (math.isfinite(start) and start >= 0 and end > start) or not all(math.isfinite(x) for x in w):
                 raise TautError(f"a wrench step needs 0 <= start < end and a finite wrench, got {start}, {end}, {w}")
+        super().__post_init__()
 
     @classmethod
     def step(cls, start: float, wrench: npt.ArrayLike, end: float = math.inf) -> WrenchSteps:
@@ -126,24 +130,24 @@ class WrenchSteps:
 
 
 @dataclass(frozen=True)
-class ControlResult:
-    """A controlled motion sampled at the ``K + 1`` control updates ``time`` (read-only arrays).
+class ControlResult(Result):
+    """A controlled motion sampled at the ``K + 1`` control updates ``times`` (read-only arrays).
 
-    At update ``k`` the controller saw ``pose[k]``, ``velocity[k]`` against ``reference[k]``,
+    At update ``k`` the controller saw ``poses[k]``, ``velocity[k]`` against ``reference[k]``,
     commanded ``command[k]`` (``q̈_cmd``) and applied ``tensions[k]`` until the next update
-    (``admissible[k]`` False: the distribution failed and the last admissible tensions were
+    (``feasible[k]`` False: the distribution failed and the last admissible tensions were
     held)."""
 
-    time: np.ndarray  #: ``(K + 1,)``
+    times: np.ndarray  #: ``(K + 1,)``
     reference: np.ndarray  #: ``(K + 1, dof)`` the reference pose
-    pose: np.ndarray  #: ``(K + 1, dof)``
+    poses: np.ndarray  #: ``(K + 1, dof)``
     velocity: np.ndarray  #: ``(K + 1, dof)``
     error: np.ndarray  #: ``(K + 1, dof)`` ``q_r − q``, angles wrapped into ``[−π, π)``
     position_error: np.ndarray  #: ``(K + 1,)`` ``‖p_r − p‖`` [m]
     rotation_error: np.ndarray  #: ``(K + 1,)`` the angle of ``R_rᵀ R`` [rad] (zeros for a point mass)
     command: np.ndarray  #: ``(K + 1, dof)`` the commanded pose accelerations ``q̈_cmd``
     tensions: np.ndarray  #: ``(K + 1, n)`` the tensions applied from each update
-    admissible: np.ndarray  #: ``(K + 1,)`` bool: the distribution found admissible tensions
+    feasible: np.ndarray  #: ``(K + 1,)`` bool: the distribution found admissible tensions
     disturbance: np.ndarray  #: ``(K + 1, dof)`` the external wrench at each update
     tension_min: np.ndarray  #: ``(n,)``
     tension_max: np.ndarray  #: ``(n,)`` (``inf`` where a cable has no upper limit)
@@ -153,6 +157,8 @@ class ControlResult:
     rate_hz: float
     substeps: int
     method: str  #: the distribution used where the closed form gives up
+    elapsed_s: float = 0.0  #: wall-clock seconds of the simulation
+    complete: bool = True  #: the simulation reached the end of the motion
 
     @property
     def tracking_error_max(self) -> np.ndarray:
@@ -194,18 +200,42 @@ class ControlResult:
     @property
     def failures(self) -> int:
         """Updates at which the distribution failed (the last admissible tensions were held)."""
-        return int(np.count_nonzero(~self.admissible))
+        return int(np.count_nonzero(~self.feasible))
 
     @property
     def first_failure_time(self) -> float | None:
         """Time of the first failed update [s], or None."""
-        bad = np.flatnonzero(~self.admissible)
-        return float(self.time[bad[0]]) if bad.size else None
+        bad = np.flatnonzero(~self.feasible)
+        return float(self.times[bad[0]]) if bad.size else None
 
     @property
-    def feasible(self) -> bool:
+    def all_feasible(self) -> bool:
         """Every update found admissible tensions."""
-        return bool(self.admissible.all())
+        return bool(self.feasible.all())
+
+    def as_dict(self) -> dict[str, Any]:
+        """The fields and the summary properties (``tracking_error_max``,
+        ``tracking_error_rms``, ``lower_margin``, ``upper_margin``, ``min_tension_margin``,
+        ``slack_events``, ``failures``, ``first_failure_time``, ``all_feasible``) in plain JSON
+        types (an infinite bound or margin is ``None``).
+
+        Returns
+        -------
+        dict
+            ``json.dumps(result.as_dict(), allow_nan=False)`` accepts it.
+        """
+        names = (
+            "tracking_error_max",
+            "tracking_error_rms",
+            "lower_margin",
+            "upper_margin",
+            "min_tension_margin",
+            "slack_events",
+            "failures",
+            "first_failure_time",
+            "all_feasible",
+        )
+        return super().as_dict() | {name: jsonable(getattr(self, name)) for name in names}
 
 
 def with_mass_error(robot: Robot, error: float) -> Robot:
@@ -386,6 +416,7 @@ def simulate_control(
     from taut.kinematics import as_poses
     from taut.statics import EQUILIBRIUM_RTOL
 
+    started = perf_counter()
     if motion.robot.pose_size != robot.pose_size or motion.robot.orientation != robot.orientation:
         raise TautError(f"the motion is a trajectory of {motion.robot.name}, whose poses are not those of {robot.name}")
     if not (math.isfinite(rate_hz) and rate_hz > 0):
@@ -478,22 +509,18 @@ def simulate_control(
             cos = (np.einsum("kij,kij->k", Rr, R) - 1.0) / 2.0
             rot_err = np.arccos(np.clip(cos, -1.0, 1.0))
     lo, hi = robot.tension_bounds
-    for a in (time, Q, V, E, pos_err, rot_err, A, T, ok_all, kp_, kd_):
-        a.setflags(write=False)
     frozen = [np.array(a) for a in (qr, D[:, 0], lo, hi)]
-    for a in frozen:
-        a.setflags(write=False)
     return ControlResult(
-        time=time,
+        times=time,
         reference=frozen[0],
-        pose=Q,
+        poses=Q,
         velocity=V,
         error=E,
         position_error=pos_err,
         rotation_error=rot_err,
         command=A,
         tensions=T,
-        admissible=ok_all,
+        feasible=ok_all,
         disturbance=frozen[1],
         tension_min=frozen[2],
         tension_max=frozen[3],
@@ -503,4 +530,5 @@ def simulate_control(
         rate_hz=float(rate_hz),
         substeps=int(substeps),
         method=method,
+        elapsed_s=perf_counter() - started,
     )

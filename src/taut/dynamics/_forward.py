@@ -24,11 +24,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from time import perf_counter
 
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.dynamics._platform import CONVENTION_FACTORS, SPATIAL, PlatformDynamics, as_rates, platform_dynamics
 from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError
 from taut.kinematics import as_poses, robot_stiffness, tension_from_stretch
@@ -54,16 +56,18 @@ class IntegrationError(TautError):
 
 
 @dataclass(frozen=True)
-class ForwardDynamicsResult:
+class ForwardDynamicsResult(Result):
     """A simulated motion at ``K`` times of a robot with ``n`` cables and ``dof`` coordinates."""
 
-    time: np.ndarray  #: ``(K,)``
-    pose: np.ndarray  #: ``(K, dof)``
+    times: np.ndarray  #: ``(K,)``
+    poses: np.ndarray  #: ``(K, dof)``
     velocity: np.ndarray  #: ``(K, dof)`` pose rates ``q̇``
     tensions: np.ndarray  #: ``(K, n)`` the tensions that acted (elastic cables: from the stretch)
     slack: np.ndarray  #: ``(K, n)`` bool: elastic cables not stretched (always False for given tensions)
     method: str
     evaluations: int  #: right-hand side evaluations
+    elapsed_s: float = 0.0  #: wall-clock seconds of the integration
+    complete: bool = True  #: the motion reaches the end of ``duration``
 
 
 @dataclass(frozen=True)
@@ -441,11 +445,14 @@ def forward_dynamics(
     x0, v0, _, _, _ = _inputs(robot, q0, qd0, np.zeros(n), None, "tensions")
     if x0.shape[0] != 1:
         raise TautError(f"{robot.name}: one initial pose, got {x0.shape[0]}")
+    started = perf_counter()
     if method == "RK4":
-        return _fixed_steps(robot, model, x0[0], v0[0], float(duration), step, inputs, elastic, progress)
-    return _adaptive(
-        robot, model, x0[0], v0[0], float(duration), inputs, elastic, method, rtol, atol, step, times, progress
-    )
+        res = _fixed_steps(robot, model, x0[0], v0[0], float(duration), step, inputs, elastic, progress)
+    else:
+        res = _adaptive(
+            robot, model, x0[0], v0[0], float(duration), inputs, elastic, method, rtol, atol, step, times, progress
+        )
+    return replace(res, elapsed_s=perf_counter() - started)
 
 
 def _fixed_steps(
@@ -561,6 +568,4 @@ def _result(
 ) -> ForwardDynamicsResult:
     slack = taus <= 0 if elastic else np.zeros(taus.shape, dtype=bool)
     t, q, v, tau, sl = (np.array(a) for a in (time, Q, V, taus, slack))
-    for a in (t, q, v, tau, sl):
-        a.setflags(write=False)
     return ForwardDynamicsResult(t, q, v, tau, sl, method=method, evaluations=nfev)

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.dynamics._forward import KernelModel, kernel_model, quick_rows
 from taut.dynamics._platform import as_rates
 from taut.errors import TautError
@@ -54,14 +55,14 @@ _WHY = {
 
 
 @dataclass(frozen=True)
-class InverseDynamicsResult:
+class InverseDynamicsResult(Result):
     """Tensions along ``N`` samples of a motion of a robot with ``n`` cables.
 
     For a single sample the array fields have no batch axis (``docs/architecture.md`` §2.1):
     ``tensions (n,)``, ``wrench (dof,)``, and ``feasible``, ``status``, ``reasons`` and
-    ``time`` are 0-d arrays."""
+    ``times`` are 0-d arrays."""
 
-    time: np.ndarray | None  #: ``(N,)`` sample times, when given
+    times: np.ndarray | None  #: ``(N,)`` sample times, when given
     wrench: np.ndarray  #: ``(N, dof)`` the wrench ``W τ`` the cables must apply
     tensions: np.ndarray  #: ``(N, n)``; zeros where no admissible distribution was found
     feasible: np.ndarray  #: ``(N,)`` bool
@@ -259,8 +260,6 @@ def inverse_dynamics(
     arrays = [need, tensions, feasible, labels, reasons] + ([] if sample_times is None else [sample_times])
     if single:
         arrays = [np.array(a[0]) for a in arrays]
-    for a in arrays:
-        a.setflags(write=False)
     w_, tau, ok, st, why = arrays[:5]
     return InverseDynamicsResult(None if sample_times is None else arrays[5], w_, tau, ok, st, why, method)
 

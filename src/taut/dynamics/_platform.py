@@ -52,6 +52,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.dynamics._jointed import (
     jointed_bias_forces,
     jointed_coriolis_matrix,
@@ -88,7 +89,7 @@ POINT_MASS, PLANAR, SPATIAL = 0, 1, 2
 
 
 @dataclass(frozen=True)
-class PlatformDynamics:
+class PlatformDynamics(Result):
     """The inertial data of a robot's platform, checked once (:func:`platform_dynamics`)."""
 
     kind: int  #: :data:`POINT_MASS`, :data:`PLANAR` (rigid) or :data:`SPATIAL` (rigid)

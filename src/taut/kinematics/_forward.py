@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.errors import PoseError, TautError, UnreachableLengthsError
 from taut.kinematics._inverse import lengths_at
 from taut.kinematics._pose import as_poses
@@ -20,10 +21,10 @@ from taut.model import Robot
 
 
 @dataclass(frozen=True)
-class FKResult:
+class FKResult(Result):
     pose: np.ndarray  #: the pose found, ``(pose_size,)``
     residual: float  #: ``max |l_i(pose) − L_i|`` [m]
-    iterations: int  #: residual evaluations used
+    evaluations: int  #: residual evaluations used
 
 
 def default_guess(robot: Robot) -> np.ndarray:

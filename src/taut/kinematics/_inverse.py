@@ -29,6 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.errors import InfeasiblePoseError
 from taut.geometry import cross
 from taut.kinematics._batch import kernel_structure_matrices, supports_batch
@@ -42,7 +43,7 @@ BATCH_POSES = 32
 
 
 @dataclass(frozen=True)
-class IKResult:
+class IKResult(Result):
     """Inverse kinematics over ``N`` poses of a robot with ``n`` cables in ``d`` dimensions."""
 
     lengths: np.ndarray  #: ``(N, n)`` cable lengths

@@ -52,6 +52,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.errors import InfeasiblePoseError, UnsupportedRobotError
 from taut.geometry import axis_frames
 from taut.kinematics._pose import anchors_at, as_poses
@@ -63,7 +64,7 @@ SINGULAR_TOL = 1e-9
 
 
 @dataclass(frozen=True)
-class SwivelPaths:
+class SwivelPaths(Result):
     """The cables through swivelling pulleys at ``N`` poses, ``s`` such cables."""
 
     lengths: np.ndarray  #: ``(N, s)`` cable lengths ``r β + l_f``

@@ -20,10 +20,12 @@ import os
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result, jsonable
 from taut.errors import GridSizeError, PoseError, TautError
 from taut.kinematics import as_poses
 from taut.model import Robot
@@ -46,7 +48,7 @@ FILE_FORMAT = "taut-workspace/2"
 
 
 @dataclass(frozen=True)
-class WorkspaceResult:
+class WorkspaceResult(Result):
     """Verdicts of a workspace condition over a grid of poses.
 
     Only the verdicts ``inside`` (one byte per pose) are stored: the poses of a grid are
@@ -63,6 +65,7 @@ class WorkspaceResult:
     axis_names: tuple[str, ...] = field(default=())
     grid: PoseGrid | None = None  #: the grid the poses come from
     explicit_poses: np.ndarray | None = None  #: ``(N, pose_size)`` poses given as an array
+    complete: bool = True  #: every pose of the grid has its verdict
 
     @property
     def size(self) -> int:
@@ -130,6 +133,22 @@ class WorkspaceResult:
             "grid_shape": [int(s) for s in self.grid_shape],
         }
 
+    def as_dict(self) -> dict[str, Any]:
+        """The result in plain JSON types: the robot's name, the condition, the
+        :meth:`summary` (the count of poses ``inside``, not the verdict of each: a grid may hold
+        a billion poses; they are :attr:`inside` and the file of :meth:`save`), the grid's
+        ``axis_names`` and ``axes``, and ``complete``.
+
+        Returns
+        -------
+        dict
+            ``json.dumps(result.as_dict(), allow_nan=False)`` accepts it.
+        """
+        data: dict[str, object] = {"robot": self.robot_name, "condition": self.condition}
+        data |= self.summary()
+        data |= {"axis_names": list(self.axis_names), "axes": self.axes, "complete": self.complete}
+        return jsonable(data)
+
     def save(self, path: str | os.PathLike[str]) -> None:
         """Write an ``.npz`` with ``inside``, ``axis_0 …``, ``metadata`` (JSON) and the poses'
         source: for a grid its definition (``grid_index``, ``grid_fixed``; the poses are
@@ -141,6 +160,7 @@ class WorkspaceResult:
             "grid_shape": [int(s) for s in self.grid_shape],
             "axis_names": list(self.axis_names),
             "elapsed_s": float(self.elapsed_s),
+            "complete": bool(self.complete),
             "format": FILE_FORMAT,
         }
         arrays = {f"axis_{i}": np.asarray(a) for i, a in enumerate(self.axes)}
@@ -175,6 +195,7 @@ class WorkspaceResult:
                     names,
                     grid,
                     f["poses"] if "poses" in f.files else None,
+                    bool(meta.get("complete", True)),
                 )
         except (OSError, KeyError, ValueError) as exc:
             raise TautError(f"{path}: not a taut workspace file ({exc})") from None

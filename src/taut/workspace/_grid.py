@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.errors import GridSizeError, TautError
 from taut.model import Robot
 
@@ -77,7 +78,7 @@ def check_grid_size(counts: Sequence[int], pose_size: int) -> int:
 
 
 @dataclass(frozen=True)
-class PoseGrid:
+class PoseGrid(Result):
     """Axes ``axes[i]`` over the pose coordinates ``index[i]``; every other coordinate
     takes its value in ``fixed`` (a full pose of which the gridded entries are ignored).
 
@@ -95,6 +96,7 @@ class PoseGrid:
                 f"a pose grid needs one pose coordinate per axis, got {len(self.axes)} axes, index {self.index}"
             )
         check_grid_size(self.shape, np.size(self.fixed))
+        super().__post_init__()
 
     @property
     def shape(self) -> tuple[int, ...]:
