@@ -40,6 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from taut._results import Result
+from taut.errors import TautError
 from taut.kinematics import anchors_at, body_frames, cable_paths
 from taut.model import Robot
 
@@ -130,6 +131,19 @@ def capsule_model(robot: Robot) -> CapsuleModel:
     )
 
 
+def checked_model(robot: Robot, model: object) -> CapsuleModel:
+    """``model`` if it is a :class:`CapsuleModel` of a robot with ``robot``'s cables and
+    capsules, else a :class:`~taut.errors.TautError`."""
+    if not isinstance(model, CapsuleModel):
+        raise TautError(f"model must be a CapsuleModel (capsule_model(robot)), got {type(model).__name__}")
+    if model.n_cables != robot.n_cables or model.n_capsules != robot.n_cables + len(robot.body_capsules):
+        raise TautError(
+            f"{robot.name}: the capsule model has {model.n_cables} cables and {model.n_capsules} capsules, "
+            f"the robot {robot.n_cables} and {robot.n_cables + len(robot.body_capsules)}"
+        )
+    return model
+
+
 def capsule_segments(
     robot: Robot, poses: np.ndarray, *, model: CapsuleModel | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -137,11 +151,11 @@ def capsule_segments(
     get ``z = 0``).  Cable capsules run from the exit point (``A``; the tangent point of a
     swivelling pulley) to the anchor (``B``).
     ``poses`` must already be validated (:func:`taut.kinematics.as_poses`)."""
-    model = capsule_model(robot) if model is None else model
+    model = capsule_model(robot) if model is None else checked_model(robot, model)
+    b = anchors_at(robot, poses)  # refuses what is not an (N, pose_size) array
     N, n, d = poses.shape[0], robot.n_cables, robot.dimension
     A = np.zeros((N, model.n_capsules, 3))
     B = np.zeros((N, model.n_capsules, 3))
-    b = anchors_at(robot, poses)
     A[:, :n, :d] = cable_paths(robot, b)[1] if robot.swivel_cables else robot.exits
     B[:, :n, :d] = b
     if model.n_capsules > n:

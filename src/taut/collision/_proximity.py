@@ -27,7 +27,7 @@ import numpy.typing as npt
 from numba import njit
 
 from taut._results import Result
-from taut.collision._capsules import SHARED_END_MIN, CapsuleModel, capsule_model, capsule_segments
+from taut.collision._capsules import SHARED_END_MIN, CapsuleModel, capsule_model, capsule_segments, checked_model
 from taut.geometry import segment_distance_scalar
 from taut.kinematics import as_poses
 from taut.model import Robot
@@ -122,7 +122,7 @@ def proximity(robot: Robot, poses: npt.ArrayLike, *, model: CapsuleModel | None 
        (docs/references.bib: lieskovsky2020)
     """
     arr, _ = as_poses(robot, poses)
-    model = capsule_model(robot) if model is None else model
+    model = capsule_model(robot) if model is None else checked_model(robot, model)
     A, B = capsule_segments(robot, arr, model=model)
     dist = np.empty((arr.shape[0], len(model.pairs)))
     _proximity_kernel(A, B, model.pairs, model.shared, model.cut, dist)

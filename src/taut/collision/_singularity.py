@@ -36,6 +36,8 @@ References
 
 from __future__ import annotations
 
+import numbers
+
 import numpy as np
 import numpy.typing as npt
 
@@ -61,9 +63,9 @@ def jacobian_singular(J: npt.ArrayLike, *, tol: float = JACOBIAN_TOL) -> tuple[n
        Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.1, Eq. 2.3.1.
        (docs/references.bib: lieskovsky2020)
     """
-    J = np.asarray(J, dtype=float)
-    if J.ndim == 2:
-        J = J[None]
+    J = _matrices(J, "J")
+    if isinstance(tol, bool) or not isinstance(tol, numbers.Real) or not 0 <= tol < 1:
+        raise TautError(f"tol must be a number in [0, 1) (a ratio of singular values), got {tol!r}")
     rows, cols = J.shape[1:]
     if rows < cols:
         return np.ones(J.shape[0], bool), np.zeros(J.shape[0])
@@ -77,9 +79,7 @@ def positive_span_lp(W: npt.ArrayLike) -> np.ndarray:
     docstring."""
     import highspy
 
-    W = np.asarray(W, dtype=float)
-    if W.ndim == 2:
-        W = W[None]
+    W = _matrices(W, "W")
     N, m, n = W.shape
     out = np.zeros(N, bool)
     from taut.statics import QuietHighs
@@ -138,8 +138,30 @@ def force_closure_singular(W: npt.ArrayLike, *, method: str = "fast") -> np.ndar
        manipulators with seven cables", Mechanism and Machine Theory 42, 2007.
        (docs/references.bib: diao2007)
     """
-    if method == "fast":
-        return ~wrench_closure(W)
+    check_method(method)
     if method == "lp":
         return ~positive_span_lp(W)
-    raise TautError(f"unknown force-closure method {method!r}; expected 'fast' or 'lp'")
+    return ~wrench_closure(_matrices(W, "W"))
+
+
+#: The methods of :func:`force_closure_singular`.
+METHODS = ("fast", "lp")
+
+
+def check_method(method: object) -> None:
+    """Raise :class:`TautError` unless ``method`` is one of :data:`METHODS`."""
+    if not isinstance(method, str) or method not in METHODS:
+        raise TautError(f"unknown force-closure method {method!r}; expected 'fast' or 'lp'")
+
+
+def _matrices(X: npt.ArrayLike, what: str) -> np.ndarray:
+    """``X`` as a finite float array ``(N, rows, cols)`` (one matrix gets the batch axis)."""
+    try:
+        arr = np.asarray(X, dtype=float)
+    except (TypeError, ValueError):
+        raise TautError(f"{what} must be a matrix or an array of matrices of numbers") from None
+    if arr.ndim == 2:
+        arr = arr[None]
+    if arr.ndim != 3 or not np.isfinite(arr).all():
+        raise TautError(f"{what} must be finite, of shape (rows, cols) or (N, rows, cols), got shape {arr.shape}")
+    return arr

@@ -30,6 +30,7 @@ References
 from __future__ import annotations
 
 import json
+import numbers
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
@@ -41,7 +42,7 @@ import numpy.typing as npt
 from taut._results import Result, jsonable
 from taut.collision._capsules import CapsuleModel, capsule_model
 from taut.collision._proximity import ProximityResult, proximity
-from taut.collision._singularity import JACOBIAN_TOL, force_closure_singular, jacobian_singular
+from taut.collision._singularity import JACOBIAN_TOL, check_method, force_closure_singular, jacobian_singular
 from taut.errors import PoseError, TautError
 from taut.kinematics import CABLE_OK, actuator_jacobian, as_poses, ik_status
 from taut.model import Robot
@@ -248,6 +249,9 @@ def check_poses(
        Bachelor thesis, Czech Technical University in Prague, 2020, §4.2.
        (docs/references.bib: lieskovsky2020)
     """
+    check_method(method)
+    if isinstance(tol, bool) or not isinstance(tol, numbers.Real) or not 0 <= tol < 1:
+        raise TautError(f"tol must be a number in [0, 1) (a ratio of singular values), got {tol!r}")
     arr, _ = as_poses(robot, poses)
     model = capsule_model(robot) if model is None else model
     prox = proximity(robot, arr, model=model)

@@ -56,6 +56,7 @@ References
 from __future__ import annotations
 
 import math
+import numbers
 from collections.abc import Callable
 from dataclasses import dataclass
 from time import perf_counter
@@ -67,6 +68,7 @@ import numpy.typing as npt
 from taut._results import Result, jsonable
 from taut.dynamics._forward import IntegrationError
 from taut.dynamics._loop import LoopModel, loop_model
+from taut.dynamics._platform import as_rates, check_callable, positive
 from taut.errors import InfeasiblePoseError, TautError
 from taut.model import Robot
 from taut.motion import Motion, angle_columns
@@ -103,6 +105,11 @@ class WrenchSteps(Result):
     steps: tuple[tuple[float, float, tuple[float, ...]], ...]
 
     def __post_init__(self) -> None:
+        try:
+            steps = tuple((float(a), float(b), tuple(float(x) for x in w)) for a, b, w in self.steps)
+        except (TypeError, ValueError):
+            raise TautError(f"a wrench step is (start, end, wrench) of numbers, got {self.steps!r}") from None
+        object.__setattr__(self, "steps", steps)
         sizes = {len(w) for _, _, w in self.steps}
         if len(sizes) > 1:
             raise TautError(f"every step of a wrench needs the same number of components, got {sorted(sizes)}")
@@ -112,16 +119,19 @@ class WrenchSteps(Result):
         super().__post_init__()
 
     @classmethod
-    def step(cls, start: float, wrench: npt.ArrayLike, end: float = math.inf) -> WrenchSteps:
+    def step(cls, start: float, wrench: npt.ArrayLike, *, end: float = math.inf) -> WrenchSteps:
         """One step of ``wrench`` from ``start`` (to ``end``)."""
-        return cls(((float(start), float(end), tuple(float(x) for x in np.ravel(wrench))),))
+        return cls(((start, end, tuple(np.ravel(wrench))),))
 
     def __call__(self, t: float) -> np.ndarray:
         return self.at(np.array([t]))[0]
 
     def at(self, times: npt.ArrayLike) -> np.ndarray:
         """The wrench at each of ``times``: ``(N, dof)``."""
-        t = np.asarray(times, dtype=float).reshape(-1, 1)
+        try:
+            t = np.asarray(times, dtype=float).reshape(-1, 1)
+        except (TypeError, ValueError):
+            raise TautError(f"times must be numbers, got {times!r}") from None
         size = len(self.steps[0][2]) if self.steps else 0
         out = np.zeros((t.shape[0], size))
         for start, end, w in self.steps:
@@ -247,7 +257,7 @@ def with_mass_error(robot: Robot, error: float) -> Robot:
     TautError
         ``error`` not finite or ``<= −1``, or a robot without mass.
     """
-    if not (math.isfinite(error) and error > -1):
+    if isinstance(error, bool) or not isinstance(error, numbers.Real) or not (math.isfinite(error) and error > -1):
         raise TautError(f"the mass error must be a finite number > -1, got {error!r}")
     plat = robot.platform
     if plat.mass is None:
@@ -411,18 +421,22 @@ def simulate_control(
        (docs/references.bib: lau2016)
     """
     from taut.dynamics._kernels import control_updates
-    from taut.dynamics._platform import as_rates
     from taut.geometry import rotation_matrix
     from taut.kinematics import as_poses
     from taut.statics import EQUILIBRIUM_RTOL
 
     started = perf_counter()
+    if not isinstance(motion, Motion):
+        raise TautError(f"motion must be a taut.motion.Motion (a timed trajectory), got {type(motion).__name__}")
     if motion.robot.pose_size != robot.pose_size or motion.robot.orientation != robot.orientation:
         raise TautError(f"the motion is a trajectory of {motion.robot.name}, whose poses are not those of {robot.name}")
-    if not (math.isfinite(rate_hz) and rate_hz > 0):
-        raise TautError(f"the control rate must be a finite number > 0 Hz, got {rate_hz!r}")
-    if int(substeps) != substeps or substeps < 1:
+    rate_hz = positive(rate_hz, "the control rate rate_hz")
+    if isinstance(substeps, bool) or not isinstance(substeps, numbers.Integral) or substeps < 1:
         raise TautError(f"substeps must be a whole number >= 1, got {substeps!r}")
+    if model is not None and not isinstance(model, Robot):
+        raise TautError(f"model must be a Robot (the controller's model), got {type(model).__name__}")
+    check_callable(disturbance, "disturbance")
+    check_callable(progress, "progress")
     dof, n = robot.pose_size, robot.n_cables
     kp_, kd_ = _gains(kp, dof, "kp"), _gains(kd, dof, "kd")
     plant = loop_model(robot, method=method)

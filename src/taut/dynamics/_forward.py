@@ -31,7 +31,15 @@ import numpy as np
 import numpy.typing as npt
 
 from taut._results import Result
-from taut.dynamics._platform import CONVENTION_FACTORS, SPATIAL, PlatformDynamics, as_rates, platform_dynamics
+from taut.dynamics._platform import (
+    CONVENTION_FACTORS,
+    SPATIAL,
+    PlatformDynamics,
+    as_rates,
+    check_callable,
+    platform_dynamics,
+    positive,
+)
 from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError
 from taut.kinematics import as_poses, robot_stiffness, tension_from_stretch
 from taut.model import Robot
@@ -322,11 +330,10 @@ def rk4_step(
     (``(N, dof)`` or one ``(dof,)``) with the tensions and ``wrench`` held over the step (a
     zero-order hold, as a controller applies them): the new ``(q, q̇)``.  Raises as
     :func:`acceleration` when a stage reaches a singular configuration."""
-    if not (np.isfinite(dt) and dt > 0):
-        raise TautError(f"time step must be positive and finite, got {dt!r}")
+    h = positive(dt, "the time step dt")
     model = kernel_model(robot)
     arr, vel, tau, w, single = _inputs(robot, q, qd, tensions, wrench, "tensions")
-    qn, vn = _rk4(robot, model, arr, vel, tau, w, float(dt), False)
+    qn, vn = _rk4(robot, model, arr, vel, tau, w, h, False)
     return (qn[0], vn[0]) if single else (qn, vn)
 
 
@@ -420,12 +427,13 @@ def forward_dynamics(
     """
     if (tensions is None) == (lengths is None):
         raise TautError("forward dynamics needs exactly one of tensions(t) and lengths(t)")
-    if method not in INTEGRATORS:
+    for f, what in ((tensions, "tensions"), (lengths, "lengths"), (wrench, "wrench"), (progress, "progress")):
+        check_callable(f, what)
+    if not isinstance(method, str) or method not in INTEGRATORS:
         raise TautError(f"unknown integrator {method!r}; valid methods: {', '.join(INTEGRATORS)}")
-    if not (np.isfinite(duration) and duration > 0):
-        raise TautError(f"duration must be positive and finite, got {duration!r}")
-    if step is not None and not (np.isfinite(step) and step > 0):
-        raise TautError(f"step must be positive and finite, got {step!r}")
+    duration = positive(duration, "duration")
+    step = None if step is None else positive(step, "step")
+    rtol, atol = positive(rtol, "rtol"), positive(atol, "atol")
     model = kernel_model(robot)
     elastic = lengths is not None
     if elastic:
@@ -514,7 +522,10 @@ def _adaptive(
     dof = q.size
     t_eval = None
     if times is not None:
-        t_eval = np.asarray(times, dtype=float)
+        try:
+            t_eval = np.asarray(times, dtype=float)
+        except (TypeError, ValueError):
+            raise TautError(f"output times must be numbers, got {times!r}") from None
         if t_eval.ndim != 1 or not np.isfinite(t_eval).all() or (np.diff(t_eval) <= 0).any():
             raise TautError("output times must be finite and increasing")
         if t_eval.size and (t_eval[0] < 0 or t_eval[-1] > duration):

@@ -33,7 +33,7 @@ import numpy.typing as npt
 
 from taut._results import Result
 from taut.dynamics._forward import KernelModel, kernel_model, quick_rows
-from taut.dynamics._platform import as_rates
+from taut.dynamics._platform import as_rates, check_callable
 from taut.errors import TautError
 from taut.kinematics import as_poses
 from taut.model import Robot
@@ -217,14 +217,19 @@ def inverse_dynamics(
     """
     from taut.statics import METHODS, solve_tensions
 
-    if method not in METHODS:
+    if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
+    check_callable(progress, "progress")
     model = kernel_model(robot)
     arr, vel, acc, single = _motion(robot, q, qd, qdd)
     N, n = arr.shape[0], robot.n_cables
     sample_times = None
     if times is not None:
-        sample_times = np.array(times, dtype=float).reshape(-1) if single else np.array(times, dtype=float)
+        try:
+            sample_times = np.array(times, dtype=float)
+        except (TypeError, ValueError):
+            raise TautError(f"sample times must be numbers, got {times!r}") from None
+        sample_times = sample_times.reshape(-1) if single else sample_times
         if sample_times.shape != (N,) or not np.isfinite(sample_times).all():
             raise TautError(f"sample times must be {N} finite numbers, got shape {sample_times.shape}")
     from taut.dynamics._kernels import ZERO_LENGTH

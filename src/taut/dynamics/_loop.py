@@ -52,8 +52,13 @@ class LoopModel:
         from taut.statics import EQUILIBRIUM_RTOL, solve_tensions
 
         b = self.buffers
-        b["q"][0], b["qd"][0], b["qdd"][0] = q, qd, qdd
-        b["w"][0] = 0.0 if wrench is None else wrench
+        try:
+            b["q"][0], b["qd"][0], b["qdd"][0] = q, qd, qdd
+            b["w"][0] = 0.0 if wrench is None else wrench
+        except (TypeError, ValueError):
+            raise TautError(
+                f"{self.robot.name}: q, qd, qdd and wrench must be {b['q'].shape[1]} numbers each"
+            ) from None
         lo, hi = b["lo"], b["hi"]
         ip, fp, cab = self.kernels.args
         inverse_samples(
@@ -97,10 +102,17 @@ class LoopModel:
         from taut.dynamics._kernels import GIMBAL_LOCK, OK, rk4_steps
 
         b = self.buffers
-        b["q"][0], b["qd"][0], b["u"][0] = q, qd, tensions
-        b["w"][0] = 0.0 if wrench is None else wrench
+        try:
+            b["q"][0], b["qd"][0], b["u"][0] = q, qd, tensions
+            b["w"][0] = 0.0 if wrench is None else wrench
+            h = float(dt)
+        except (TypeError, ValueError):
+            raise TautError(
+                f"{self.robot.name}: q, qd and wrench must be {b['q'].shape[1]} numbers each, tensions "
+                f"{b['u'].shape[1]} and dt a number"
+            ) from None
         ip, fp, cab = self.kernels.args
-        rk4_steps(ip, fp, cab, False, b["q"], b["qd"], b["u"], b["w"], dt, b["q_next"], b["qd_next"], b["status"])
+        rk4_steps(ip, fp, cab, False, b["q"], b["qd"], b["u"], b["w"], h, b["q_next"], b["qd_next"], b["status"])
         status = b["status"][0]
         if status == GIMBAL_LOCK:
             raise SingularConfigurationError(
@@ -127,7 +139,7 @@ def loop_model(robot: Robot, *, method: str = "qp") -> LoopModel:
     """
     from taut.statics import METHODS
 
-    if method not in METHODS:
+    if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
     kernels = kernel_model(robot)
     if not kernels.straight:

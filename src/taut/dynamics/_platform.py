@@ -47,6 +47,8 @@ References
 
 from __future__ import annotations
 
+import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
@@ -60,7 +62,7 @@ from taut.dynamics._jointed import (
     jointed_mass_matrix,
     twist_jacobian,
 )
-from taut.errors import UnsupportedRobotError
+from taut.errors import TautError, UnsupportedRobotError
 from taut.geometry import cross, planar_rotation, rate_matrix, rate_matrix_derivative, rotation_matrix
 from taut.kinematics import as_poses
 from taut.model import Robot
@@ -156,6 +158,20 @@ def platform_dynamics(robot: Robot) -> PlatformDynamics:
 
 def _poses(robot: Robot, q: npt.ArrayLike) -> tuple[np.ndarray, bool]:
     return as_poses(robot, q)
+
+
+def positive(value: object, what: str) -> float:
+    """``value`` as a float if it is a positive finite number, else a :class:`TautError`."""
+    x = float(value) if isinstance(value, numbers.Real) and not isinstance(value, bool) else math.nan
+    if not 0 < x < math.inf:
+        raise TautError(f"{what} must be a positive finite number, got {value!r}")
+    return x
+
+
+def check_callable(f: object, what: str) -> None:
+    """A :class:`TautError` unless ``f`` is None or callable."""
+    if f is not None and not callable(f):
+        raise TautError(f"{what} must be a function, got {type(f).__name__}")
 
 
 def as_rates(robot: Robot, qd: npt.ArrayLike, n: int, what: str = "pose velocities") -> np.ndarray:

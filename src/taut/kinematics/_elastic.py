@@ -25,9 +25,7 @@ def unstretched_length(lengths: npt.ArrayLike, tensions: npt.ArrayLike, stiffnes
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, Eq. 2.15. (docs/references.bib: rushton2022)
     """
-    l, t, ea = (np.asarray(x, dtype=float) for x in (lengths, tensions, stiffness))
-    if np.any(ea <= 0) or not np.all(np.isfinite(ea)):
-        raise TautError("axial stiffness EA must be positive and finite")
+    l, t, ea = _arrays((lengths, "lengths"), (tensions, "tensions"), (stiffness, "stiffness"))
     if np.any(t < 0):
         raise TautError("cable tensions must be non-negative")
     return l / (1.0 + t / ea)
@@ -42,8 +40,31 @@ def tension_from_stretch(lengths: npt.ArrayLike, unstretched: npt.ArrayLike, sti
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, Eq. 2.15. (docs/references.bib: rushton2022)
     """
-    l, l0, ea = (np.asarray(x, dtype=float) for x in (lengths, unstretched, stiffness))
+    l, l0, ea = _arrays((lengths, "lengths"), (unstretched, "unstretched lengths"), (stiffness, "stiffness"))
+    if np.any(l0 <= 0):
+        raise TautError("unstretched lengths must be positive")
     return np.maximum(ea * (l - l0) / l0, 0.0)
+
+
+def _arrays(*named: tuple[npt.ArrayLike, str]) -> list[np.ndarray]:
+    """The arrays of ``named`` (value, name), finite and broadcast together; the last is the
+    axial stiffness, which must be positive."""
+    out = []
+    for value, what in named:
+        try:
+            arr = np.asarray(value, dtype=float)
+        except (TypeError, ValueError):
+            raise TautError(f"{what} must be numbers, got {value!r}") from None
+        if not np.all(np.isfinite(arr)):
+            raise TautError(f"{what} must be finite, got {arr.tolist()}")
+        out.append(arr)
+    if np.any(out[-1] <= 0):
+        raise TautError("axial stiffness EA must be positive and finite")
+    try:
+        return list(np.broadcast_arrays(*out))
+    except ValueError:
+        shapes = ", ".join(f"{what} {np.shape(a)}" for a, (_, what) in zip(out, named))
+        raise TautError(f"the arrays do not broadcast together: {shapes}") from None
 
 
 def robot_stiffness(robot: Robot) -> np.ndarray:

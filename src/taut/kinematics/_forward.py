@@ -8,6 +8,8 @@ direct geometrico-static problem (``taut.dgp``), not this.
 
 from __future__ import annotations
 
+import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
@@ -45,7 +47,12 @@ def forward_kinematics(
     to ``tol`` (lengths that violate a triangle inequality, or a guess in another basin)."""
     from scipy.optimize import least_squares
 
-    L = np.asarray(lengths, dtype=float)
+    try:
+        L = np.asarray(lengths, dtype=float)
+    except (TypeError, ValueError):
+        raise TautError(f"{robot.name}: cable lengths must be numbers, got {lengths!r}") from None
+    if isinstance(tol, bool) or not isinstance(tol, numbers.Real) or not (0 < tol < math.inf):
+        raise TautError(f"tol must be a positive number [m], got {tol!r}")
     if L.shape != (robot.n_cables,):
         raise TautError(f"{robot.name}: expected {robot.n_cables} cable lengths, got {L.size}")
     if not np.all(np.isfinite(L)) or np.any(L <= 0):

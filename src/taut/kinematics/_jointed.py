@@ -156,11 +156,16 @@ def joint_forces(robot: Robot, poses: npt.ArrayLike, tensions: npt.ArrayLike) ->
     """
     arr, single = as_poses(robot, poses)
     A = jointed_structure_matrix(robot, arr)
-    tau = np.asarray(tensions, dtype=float)
+    try:
+        tau = np.asarray(tensions, dtype=float)
+    except (TypeError, ValueError):
+        raise TautError(f"{robot.name}: tensions must be numbers, got {tensions!r}") from None
     if tau.shape not in ((robot.n_cables,), (arr.shape[0], robot.n_cables)):
         raise TautError(
             f"{robot.name}: tensions must have shape ({robot.n_cables},) or ({arr.shape[0]}, {robot.n_cables}), got {tau.shape}"
         )
+    if not np.isfinite(tau).all():
+        raise TautError(f"{robot.name}: tensions must be finite, got {tau.tolist()}")
     tau = np.broadcast_to(tau, (arr.shape[0], robot.n_cables))
     m, n = robot.wrench_dim, robot.n_cables
     zeta = -np.einsum("kjc,kc->kj", A[:, m:, :n], tau)

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from taut.errors import PoseError
 from taut.kinematics._swivel import swivel_parameters, swivel_paths
 from taut.model import Robot
 
@@ -33,6 +34,10 @@ def cable_paths(robot: Robot, anchors: np.ndarray) -> tuple[np.ndarray, np.ndarr
     """Cable lengths ``(N, n)``, the points where their straight parts begin ``(N, n, d)``
     (exit points, or tangent points of swivelling pulleys) and their status ``(N, n)`` (see
     :func:`ik_status`) for the platform anchors ``(N, n, d)`` in the fixed frame."""
+    if not isinstance(anchors, np.ndarray) or anchors.shape[1:] != robot.exits.shape or anchors.ndim != 3:
+        raise PoseError(
+            f"{robot.name}: expected anchors of shape (N, {robot.n_cables}, {robot.dimension}), got {np.shape(anchors)}"
+        )
     exits = np.broadcast_to(robot.exits[None], anchors.shape)
     v = exits - anchors
     lengths = np.sqrt(np.einsum("nki,nki->nk", v, v))

@@ -49,8 +49,19 @@ def as_poses(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, bool]:
     return arr, single
 
 
+def require_checked(robot: Robot, poses: np.ndarray) -> None:
+    """Raise :class:`PoseError` unless ``poses`` is an ``(N, pose_size)`` array (the functions
+    that skip the checks of :func:`as_poses` still refuse what would crash them)."""
+    if not isinstance(poses, np.ndarray) or poses.ndim != 2 or poses.shape[1] != robot.pose_size:
+        raise PoseError(
+            f"{robot.name}: expected an (N, {robot.pose_size}) array of poses checked by as_poses, "
+            f"got {type(poses).__name__} of shape {np.shape(poses)}"
+        )
+
+
 def platform_frame(robot: Robot, poses: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Position ``p (N, d)`` and rotation ``R (N, d, d)`` of the platform frame."""
+    require_checked(robot, poses)
     d = robot.dimension
     p = poses[:, :d]
     n = poses.shape[0]
@@ -107,6 +118,7 @@ def anchors_at(robot: Robot, poses: np.ndarray) -> np.ndarray:
     """:func:`anchor_points` without the checks: ``poses`` is an ``(N, pose_size)`` array
     already checked by :func:`~taut.kinematics.as_poses` (solvers and samplers call it
     on their own iterates, which may leave the joint limits); returns ``(N, n, d)``."""
+    require_checked(robot, poses)
     if robot.is_point_mass:
         return np.broadcast_to(poses[:, None, : robot.dimension], (poses.shape[0], robot.n_cables, robot.dimension))
     if robot.n_joints == 0:

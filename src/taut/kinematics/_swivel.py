@@ -53,7 +53,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut._results import Result
-from taut.errors import InfeasiblePoseError, UnsupportedRobotError
+from taut.errors import InfeasiblePoseError, TautError, UnsupportedRobotError
 from taut.geometry import axis_frames
 from taut.kinematics._pose import anchors_at, as_poses
 from taut.model import Robot
@@ -91,13 +91,16 @@ def in_space(x: np.ndarray) -> np.ndarray:
     return np.concatenate([x, np.zeros((*x.shape[:-1], 1))], axis=-1)
 
 
-def swivel_paths(points: np.ndarray, axes: np.ndarray, radii: np.ndarray, anchors: np.ndarray) -> SwivelPaths:
+def swivel_paths(
+    points: npt.ArrayLike, axes: npt.ArrayLike, radii: npt.ArrayLike, anchors: npt.ArrayLike
+) -> SwivelPaths:
     """Lengths and tangent points of cables that run onto pulleys at ``points (s, d)`` along
     the unit ``axes (s, d)``, pulleys of ``radii (s,)``, to the anchors ``(N, s, d)``; ``d``
     is 3, or 2 for a planar robot (axes in its plane; tangent points ``(N, s, 2)``).
 
     Every output is finite; poses flagged ``on_axis`` or ``on_pulley`` have a length (at
     ``d = 0`` it does not depend on the pulley plane) but no meaningful tangent point."""
+    points, axes, radii, anchors = _swivel_arrays(points, axes, radii, anchors)
     d = points.shape[-1]
     if d == 2:
         # an anchor on the axis line: the pulley plane is still the robot's plane
@@ -122,6 +125,24 @@ def swivel_paths(points: np.ndarray, axes: np.ndarray, radii: np.ndarray, anchor
     centre = points[None] + radii[None, :, None] * e
     tangent = centre + radii[None, :, None] * (-np.cos(wrap)[..., None] * e + np.sin(wrap)[..., None] * axes[None])
     return SwivelPaths(radii[None] * wrap + free, tangent[..., :d], wrap, on_axis, on_pulley)
+
+
+def _swivel_arrays(
+    points: npt.ArrayLike, axes: npt.ArrayLike, radii: npt.ArrayLike, anchors: npt.ArrayLike
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The arguments of :func:`swivel_paths` as float arrays of matching shapes."""
+    try:
+        arrays = [np.asarray(x, dtype=float) for x in (points, axes, radii, anchors)]
+    except (TypeError, ValueError):
+        raise TautError("swivel_paths takes arrays of numbers") from None
+    p, k, r, b = arrays
+    s = r.shape[0] if r.ndim == 1 else -1
+    if p.ndim != 2 or p.shape[1] not in (2, 3) or p.shape != k.shape or s != p.shape[0] or b.shape[1:] != p.shape:
+        raise TautError(
+            "swivel_paths takes points (s, d), axes (s, d), radii (s,) and anchors (N, s, d) with d = 2 or 3, got "
+            f"shapes {p.shape}, {k.shape}, {r.shape}, {b.shape}"
+        )
+    return p, k, r, b
 
 
 def swivel_angles(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:

@@ -36,7 +36,7 @@ import numpy as np
 
 from taut.collision import proximity
 from taut.errors import TautError
-from taut.kinematics import batch_structure_matrices
+from taut.kinematics import as_poses, batch_structure_matrices
 from taut.model import Robot
 from taut.statics import BoxWrenchSet, WrenchSet, external_wrench, static_equilibrium, wrench_closure, wrench_feasible
 
@@ -80,7 +80,7 @@ class WrenchCondition(WorkspaceCondition):
     zero-length cable are outside) and delegates to :meth:`test`."""
 
     def evaluate(self, robot: Robot, poses: np.ndarray) -> np.ndarray:
-        poses = np.asarray(poses, dtype=float)
+        poses = as_poses(robot, poses)[0]
         _, W, ok = batch_structure_matrices(robot, poses)
         out = np.zeros(poses.shape[0], bool)
         if ok.all():
@@ -172,7 +172,7 @@ class InterferenceFree(WorkspaceCondition):
     description = "no cable–cable or cable–platform interference of the capsule model (Lieskovský 2020, §3.4)"
 
     def evaluate(self, robot: Robot, poses: np.ndarray) -> np.ndarray:
-        return proximity(robot, np.asarray(poses, dtype=float)).interference_free
+        return proximity(robot, poses).interference_free
 
 
 #: The registry: condition name → class.

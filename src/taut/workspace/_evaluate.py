@@ -32,7 +32,7 @@ from taut.model import Robot
 from taut.parallel import Executor, as_executor
 from taut.statics import WrenchSet
 from taut.workspace._conditions import WorkspaceCondition, make_condition
-from taut.workspace._grid import AxisSpec, PoseGrid, format_bytes, make_grid
+from taut.workspace._grid import AxisSpec, PoseGrid, flat_indices, format_bytes, make_grid
 
 __all__ = ["DEFAULT_CHUNK", "MAX_POSE_ARRAY_BYTES", "WorkspaceResult", "evaluate_workspace"]
 
@@ -74,9 +74,7 @@ class WorkspaceResult(Result):
 
     def poses_at(self, flat: npt.ArrayLike) -> np.ndarray:
         """The poses ``(K, pose_size)`` of the flat indices ``flat`` (C order of the grid)."""
-        idx = np.asarray(flat, dtype=np.int64).ravel()
-        if idx.size and (idx.min() < 0 or idx.max() >= self.size):
-            raise TautError(f"pose indices must lie in [0, {self.size}), got {idx.min()} … {idx.max()}")
+        idx = flat_indices(flat, self.size)
         if self.explicit_poses is not None:
             return self.explicit_poses[idx]
         if self.grid is None:
@@ -259,6 +257,8 @@ def evaluate_workspace(
     runner: Executor = as_executor(executor)
     if isinstance(chunk, bool) or not isinstance(chunk, (int, np.integer)) or chunk < 1:
         raise TautError(f"chunk must be a positive integer, got {chunk!r}")
+    if progress is not None and not callable(progress):
+        raise TautError(f"progress must be a callable progress(done, total), got {progress!r}")
     step = int(chunk)
     g: PoseGrid | None = None
     arr: np.ndarray | None = None

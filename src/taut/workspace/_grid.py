@@ -112,7 +112,7 @@ class PoseGrid(Result):
 
     def poses_at(self, flat: npt.ArrayLike) -> np.ndarray:
         """The poses of flat (C-order) indices ``flat`` ``(K,)``, ``(K, pose_size)``."""
-        flat = np.asarray(flat, dtype=np.int64).ravel()
+        flat = flat_indices(flat, self.size)
         out = np.repeat(np.asarray(self.fixed, dtype=float)[None, :], flat.size, axis=0)
         for col, axis, idx in zip(self.index, self.axes, np.unravel_index(flat, self.shape)):
             out[:, col] = axis[idx]
@@ -120,6 +120,9 @@ class PoseGrid(Result):
 
     def poses(self, start: int = 0, stop: int | None = None) -> np.ndarray:
         """Poses ``start:stop`` of the grid (all by default), ``(K, pose_size)``, C order."""
+        for value in (start, stop):
+            if value is not None and (isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 0):
+                raise TautError(f"start and stop must be non-negative integers, got {start!r}, {stop!r}")
         stop = self.size if stop is None else min(stop, self.size)
         return self.poses_at(np.arange(start, stop, dtype=np.int64))
 
@@ -132,10 +135,26 @@ class PoseGrid(Result):
         return out
 
 
+def flat_indices(flat: npt.ArrayLike, size: int) -> np.ndarray:
+    """``flat`` as a 1-D array of indices of a grid of ``size`` poses, each in ``[0, size)``."""
+    try:
+        idx = np.asarray(flat)
+    except (TypeError, ValueError):
+        raise TautError(f"pose indices must be integers, got {flat!r}") from None
+    if idx.size and idx.dtype.kind not in "iu":
+        raise TautError(f"pose indices must be integers, got {flat!r}")
+    idx = idx.astype(np.int64).ravel()
+    if idx.size and (idx.min() < 0 or idx.max() >= size):
+        raise TautError(f"pose indices must lie in [0, {size}), got {idx.min()} … {idx.max()}")
+    return idx
+
+
 def default_bounds(robot: Robot, *, shrink: float = DEFAULT_SHRINK) -> np.ndarray:
     """``(d, 2)`` bounds: the bounding box of the exit points, shrunk by ``shrink`` of its
     size on each side.  An axis along which all exits are level (a suspended robot with
     coplanar exits) spans ``[c − E, c + E]``, ``E`` half the largest extent."""
+    if isinstance(shrink, bool) or not isinstance(shrink, numbers.Real) or not 0 <= shrink < 0.5:
+        raise TautError(f"shrink must be a number in [0, 0.5), got {shrink!r}")
     lo, hi = robot.exits.min(axis=0), robot.exits.max(axis=0)
     ext = hi - lo
     big = float(ext.max()) if ext.size else 0.0
@@ -216,7 +235,10 @@ def position_grid(
     res = DEFAULT_RESOLUTION[d] if resolution is None else resolution
     if isinstance(res, bool) or not isinstance(res, numbers.Integral) or res < 1:
         raise TautError(f"resolution must be a positive integer, got {resolution!r}")
-    b = default_bounds(robot) if bounds is None else np.asarray(bounds, dtype=float)
+    try:
+        b = default_bounds(robot) if bounds is None else np.asarray(bounds, dtype=float)
+    except (TypeError, ValueError):
+        raise TautError(f"{robot.name}: bounds must be numbers, got {bounds!r}") from None
     if b.shape != (d, 2):
         raise TautError(f"{robot.name}: bounds must have shape ({d}, 2), got {b.shape}")
     axes = _axes(robot, [(float(lo), float(hi), int(res)) for lo, hi in b])
@@ -226,6 +248,8 @@ def position_grid(
 
 def pose_grid(robot: Robot, axes: Sequence[AxisSpec]) -> PoseGrid:
     """Full pose grid: one axis (``(lo, hi, n)`` tuple or coordinates) per pose coordinate."""
+    if isinstance(axes, (str, bytes)) or not isinstance(axes, (Sequence, np.ndarray)):
+        raise TautError(f"axes must be a sequence of one axis per pose coordinate, got {axes!r}")
     if len(axes) != robot.pose_size:
         raise TautError(
             f"{robot.name}: a full pose grid needs {robot.pose_size} axes ({', '.join(robot.pose_names)}), got {len(axes)}"
