@@ -24,13 +24,51 @@ from taut.model import Robot
 
 @dataclass(frozen=True)
 class FKResult(Result):
+    """The pose of :func:`forward_kinematics`.
+
+    Attributes
+    ----------
+    pose : ndarray, shape (pose_size,)
+        The pose found.
+    residual : float
+        ``max |l_i(pose) − L_i|`` [m].
+    evaluations : int
+        Residual evaluations used.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.kinematics import cable_lengths, forward_kinematics
+    >>> robot = example("planar-4cable")
+    >>> fk = forward_kinematics(robot, cable_lengths(robot, [0.1, -0.05, 0.1]))
+    >>> sorted(fk.as_dict()), fk.residual < 1e-9
+    (['evaluations', 'pose', 'residual'], True)
+    """
+
     pose: np.ndarray  #: the pose found, ``(pose_size,)``
     residual: float  #: ``max |l_i(pose) − L_i|`` [m]
     evaluations: int  #: residual evaluations used
 
 
 def default_guess(robot: Robot) -> np.ndarray:
-    """Centroid of the exit points, zero orientation, joints at mid-range."""
+    """The starting pose of :func:`forward_kinematics` when none is given: the centroid of the
+    exit points, zero orientation, joints at mid-range.
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    ndarray, shape (pose_size,)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.kinematics import default_guess
+    >>> default_guess(example("adjustable-8cable"))
+    array([5.  , 5.  , 6.  , 0.  , 0.  , 0.  , 2.45])
+    """
     pose = np.zeros(robot.pose_size)
     pose[: robot.dimension] = robot.exits.mean(axis=0)
     if robot.n_joints:
@@ -41,10 +79,46 @@ def default_guess(robot: Robot) -> np.ndarray:
 def forward_kinematics(
     robot: Robot, lengths: npt.ArrayLike, *, guess: npt.ArrayLike | None = None, tol: float = 1e-9
 ) -> FKResult:
-    """The pose at which the cables have ``lengths``, found from ``guess``.
+    """The pose at which the cables have the given lengths, found from a guess.
 
-    Raises :class:`UnreachableLengthsError` when no pose near the guess fits the lengths
-    to ``tol`` (lengths that violate a triangle inequality, or a guess in another basin)."""
+    Damped Newton (Levenberg–Marquardt; trust-region reflective within the joint limits of a
+    jointed platform) on the residual ``l(x) − L`` of the inverse kinematics.  The robot must
+    have at least as many cables as pose coordinates (under-constrained robots are the
+    geometrico-static problem of ``taut.dgp``).
+
+    Parameters
+    ----------
+    robot : Robot
+    lengths : array_like, shape (n,)
+        Cable lengths [m], positive.
+    guess : array_like, shape (pose_size,), optional
+        The starting pose; default :func:`default_guess`.
+    tol : float, optional
+        The largest residual ``max |l_i(x) − L_i|`` [m] accepted.
+
+    Returns
+    -------
+    FKResult
+
+    Raises
+    ------
+    TautError
+        Lengths of the wrong number, not positive or not finite, a bad ``tol``, a robot with
+        fewer cables than pose coordinates.
+    PoseError
+        A guess that :func:`as_poses` refuses.
+    UnreachableLengthsError
+        No pose near the guess fits the lengths to ``tol`` (lengths that violate a triangle
+        inequality, or a guess in another basin).
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.kinematics import cable_lengths, forward_kinematics
+    >>> robot = example("planar-4cable")
+    >>> forward_kinematics(robot, cable_lengths(robot, [0.1, -0.05, 0.1])).pose.round(6)
+    array([ 0.1 , -0.05,  0.1 ])
+    """
     from scipy.optimize import least_squares
 
     try:
