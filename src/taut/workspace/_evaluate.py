@@ -49,19 +49,49 @@ FILE_FORMAT = "taut-workspace/2"
 
 @dataclass(frozen=True)
 class WorkspaceResult(Result):
-    """Verdicts of a workspace condition over a grid of poses.
+    """The verdicts of a workspace condition over a grid of poses (:func:`evaluate_workspace`).
 
     Only the verdicts ``inside`` (one byte per pose) are stored: the poses of a grid are
     recomputed from ``grid`` on demand (:attr:`poses`, :meth:`poses_at`), so that a grid of
-    hundreds of millions of poses fits in memory.  ``explicit_poses`` holds the poses given
-    to :func:`evaluate_workspace` as an array (then ``grid`` is ``None``)."""
+    hundreds of millions of poses fits in memory.
+
+    Attributes
+    ----------
+    robot_name : str
+    condition : str
+        The condition's registry name.
+    inside : ndarray of bool, shape (N,)
+        The verdict of each pose, in the C order of the grid.
+    axes : tuple of ndarray
+        The coordinates of each gridded axis (position axes first); empty for explicit poses.
+    grid_shape : tuple of int
+        ``inside.reshape(grid_shape)`` indexes the grid's axes; ``(N,)`` for explicit poses.
+    elapsed_s : float
+        Wall-clock seconds of the evaluation.
+    axis_names : tuple of str
+        The gridded coordinates' names.
+    grid : PoseGrid or None
+        The grid the poses come from.
+    explicit_poses : ndarray, shape (N, pose_size), or None
+        The poses given as an array (then ``grid`` is None).
+    complete : bool
+        Every pose has its verdict.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.workspace import evaluate_workspace
+    >>> res = evaluate_workspace(example("planar-4cable"), "static", resolution=21)
+    >>> res.count, res.size, res.as_dict()["grid_shape"]
+    (330, 441, [21, 21])
+    """
 
     robot_name: str
     condition: str
     inside: np.ndarray  #: ``(N,)`` bool
     axes: tuple[np.ndarray, ...]  #: grid coordinates per gridded axis (position axes first)
     grid_shape: tuple[int, ...]  #: ``inside.reshape(grid_shape)`` in C order
-    elapsed_s: float
+    elapsed_s: float  #: wall-clock seconds of the evaluation
     axis_names: tuple[str, ...] = field(default=())
     grid: PoseGrid | None = None  #: the grid the poses come from
     explicit_poses: np.ndarray | None = None  #: ``(N, pose_size)`` poses given as an array
@@ -73,7 +103,22 @@ class WorkspaceResult(Result):
         return int(self.inside.size)
 
     def poses_at(self, flat: npt.ArrayLike) -> np.ndarray:
-        """The poses ``(K, pose_size)`` of the flat indices ``flat`` (C order of the grid)."""
+        """The poses of flat indices (C order of the grid).
+
+        Parameters
+        ----------
+        flat : array_like of int, shape (K,)
+            Indices in ``[0, size)``.
+
+        Returns
+        -------
+        ndarray, shape (K, pose_size)
+
+        Raises
+        ------
+        TautError
+            Indices out of range, or a result that holds no poses.
+        """
         idx = flat_indices(flat, self.size)
         if self.explicit_poses is not None:
             return self.explicit_poses[idx]
@@ -121,7 +166,14 @@ class WorkspaceResult(Result):
         return self.count * cell
 
     def summary(self) -> dict[str, object]:
-        """JSON-ready summary: poses, inside, fraction, elapsed_s, measure, grid_shape."""
+        """The numbers of the result in JSON types, as ``taut workspace --json`` prints them.
+
+        Returns
+        -------
+        dict
+            ``poses`` (count), ``inside`` (count), ``fraction``, ``elapsed_s``, ``measure``
+            and ``grid_shape``.
+        """
         return {
             "poses": int(self.inside.size),
             "inside": self.count,
@@ -148,10 +200,17 @@ class WorkspaceResult(Result):
         return jsonable(data)
 
     def save(self, path: str | os.PathLike[str]) -> None:
-        """Write an ``.npz`` with ``inside``, ``axis_0 …``, ``metadata`` (JSON) and the poses'
-        source: for a grid its definition (``grid_index``, ``grid_fixed``; the poses are
-        recomputed on :meth:`load`), else the array ``poses``.  The file stays the size of
-        the verdicts (compressed), whatever the grid's size."""
+        """Write the result to an ``.npz`` file.
+
+        The file holds ``inside``, ``axis_0 …``, ``metadata`` (JSON) and the poses' source: for
+        a grid its definition (``grid_index``, ``grid_fixed``; the poses are recomputed on
+        :meth:`load`), else the array ``poses``.  It stays the size of the verdicts
+        (compressed), whatever the grid's size.
+
+        Parameters
+        ----------
+        path : str or os.PathLike
+        """
         meta = {
             "robot": self.robot_name,
             "condition": self.condition,
@@ -173,7 +232,21 @@ class WorkspaceResult(Result):
 
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> WorkspaceResult:
-        """Read a file written by :meth:`save` (also the first format, which stored ``poses``)."""
+        """Read a file written by :meth:`save` (also the first format, which stored ``poses``).
+
+        Parameters
+        ----------
+        path : str or os.PathLike
+
+        Returns
+        -------
+        WorkspaceResult
+
+        Raises
+        ------
+        TautError
+            A file that cannot be read or is not a taut workspace file.
+        """
         try:
             with np.load(path, allow_pickle=False) as f:
                 meta = json.loads(str(f["metadata"]))
@@ -236,23 +309,67 @@ def evaluate_workspace(
 ) -> WorkspaceResult:
     """Evaluate a workspace condition over a grid of poses.
 
-    ``condition``: a name of :data:`~taut.workspace.CONDITIONS`
-    (``wrench-closure``, ``wrench-feasible``, ``static``) or a condition instance;
-    ``wrench_set`` is passed to it (``wrench-feasible``: the set around the external
-    wrench).  The poses are ``grid`` (see :func:`~taut.workspace.make_grid`: ``None``
-    for the default position grid of ``resolution`` points per axis at ``orientation``, a
-    :class:`PoseGrid`, or per-axis ``(lo, hi, n)``/coordinates), or an explicit array
-    ``poses (N, pose_size)`` (then ``axes == ()`` and ``grid_shape == (N,)``).
-
     The poses of a grid are generated chunk by chunk (``chunk`` poses, from their flat
     indices) where the chunk is evaluated, and only the verdicts are kept: memory is one
-    byte per pose plus a few chunks' work.  Chunks are mapped over ``executor`` (an
-    executor of :func:`taut.parallel.get_executor` or a ``distributed.Client``; default
-    serial) and the verdicts do not depend on ``chunk`` or the executor.
-    ``progress(done, total)`` is called with pose counts as chunks complete.
+    byte per pose plus a few chunks' work.  Chunks are mapped over ``executor``, and the
+    verdicts do not depend on ``chunk`` or the executor.
 
-    Raises :class:`~taut.errors.GridSizeError` for a grid of more than
-    :data:`~taut.workspace._grid.MAX_GRID_POSES` poses, before any work."""
+    Parameters
+    ----------
+    robot : Robot
+    condition : str or WorkspaceCondition
+        A name of :data:`~taut.workspace.CONDITIONS` (``wrench-closure``,
+        ``wrench-feasible``, ``static``, ``interference-free``) or a condition instance.
+    grid : PoseGrid or sequence, optional
+        The poses (:func:`~taut.workspace.make_grid`): ``None`` for the default position grid
+        of ``resolution`` points per axis at ``orientation``, a :class:`PoseGrid`, or one
+        ``(lo, hi, n)`` or array of coordinates per position (or pose) coordinate.
+    poses : array_like, shape (N, pose_size), optional
+        Explicit poses instead of a grid (then ``axes == ()`` and ``grid_shape == (N,)``).
+    resolution : int, optional
+        Points per axis of the default position grid.
+    orientation : array_like, optional
+        The fixed coordinates after the position of a position grid.
+    wrench_set : WrenchSet, optional
+        Of ``wrench-feasible``: the set required around the external wrench.
+    executor : optional
+        An executor of :func:`taut.parallel.get_executor` or a ``distributed.Client``;
+        default serial.
+    progress : callable, optional
+        ``progress(done, total)``, called with pose counts as chunks complete.
+    chunk : int, optional
+        Poses per chunk.
+
+    Returns
+    -------
+    WorkspaceResult
+
+    Raises
+    ------
+    TautError
+        An unknown condition or option, a bad chunk, progress or grid, poses and a grid given
+        together.
+    PoseError
+        Poses, or grid corners, that :func:`~taut.kinematics.as_poses` refuses.
+    GridSizeError
+        A grid of more than ``MAX_GRID_POSES`` (2³⁰) poses, before any work.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.workspace import evaluate_workspace
+    >>> robot = example("planar-4cable")
+    >>> res = evaluate_workspace(robot, "wrench-closure", resolution=21)
+    >>> res.count, res.size, round(res.fraction, 3)
+    (361, 441, 0.819)
+    >>> evaluate_workspace(robot, "static", poses=[[0, 0, 0], [0.9, 0.9, 0]]).inside
+    array([ True, False])
+    """
     cond = make_condition(condition, wrench_set=wrench_set)
     runner: Executor = as_executor(executor)
     if isinstance(chunk, bool) or not isinstance(chunk, (int, np.integer)) or chunk < 1:
