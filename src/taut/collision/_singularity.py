@@ -55,13 +55,41 @@ RANK_TOL = 1e-10
 
 
 def jacobian_singular(J: npt.ArrayLike, *, tol: float = JACOBIAN_TOL) -> tuple[np.ndarray, np.ndarray]:
-    """Jacobian singularity of ``J (N, rows, cols)``: ``(singular (N,), σ_min/σ_max (N,))``.
+    """Jacobian singularity: where the inverse-kinematics Jacobian loses rank.
+
+    Singular iff ``σ_min ≤ tol · σ_max``, and always when ``J`` has fewer rows than columns
+    (fewer actuators than degrees of freedom).
+
+    Parameters
+    ----------
+    J : array_like, shape (N, rows, cols) or (rows, cols)
+        Jacobians (:func:`taut.kinematics.actuator_jacobian`).
+    tol : float, optional
+        The ratio ``σ_min / σ_max`` at or below which ``J`` is singular, in ``[0, 1)``.
+
+    Returns
+    -------
+    singular : ndarray of bool, shape (N,)
+    ratio : ndarray, shape (N,)
+        ``σ_min / σ_max`` (0 with fewer rows than columns).
+
+    Raises
+    ------
+    TautError
+        ``J`` not a finite matrix or array of matrices, a bad ``tol``.
 
     References
     ----------
     .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
        Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.1, Eq. 2.3.1.
        (docs/references.bib: lieskovsky2020)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.collision import jacobian_singular
+    >>> jacobian_singular([np.eye(3), np.diag([1.0, 1.0, 1e-9])])
+    (array([False,  True]), array([1.e+00, 1.e-09]))
     """
     J = _matrices(J, "J")
     if isinstance(tol, bool) or not isinstance(tol, numbers.Real) or not 0 <= tol < 1:
@@ -75,8 +103,45 @@ def jacobian_singular(J: npt.ArrayLike, *, tol: float = JACOBIAN_TOL) -> tuple[n
 
 
 def positive_span_lp(W: npt.ArrayLike) -> np.ndarray:
-    """Reference positive-span test (one LP per matrix): ``(N,)`` bool, see the module
-    docstring."""
+    """The reference positive-span test: one linear program (HiGHS) per matrix.
+
+    The columns (scaled to unit length) positively span ``R^m`` iff ``rank W = m`` and some
+    ``τ > 0`` has ``W τ = 0`` (Goldman & Tucker): the LP maximises the smallest tension ``t``
+    subject to ``W τ = 0``, ``t ≤ τ_i ≤ 1``.
+
+    Parameters
+    ----------
+    W : array_like, shape (N, m, n) or (m, n)
+        Structure matrices.
+
+    Returns
+    -------
+    ndarray of bool, shape (N,)
+        True where the columns positively span ``R^m`` (``t* > LP_TOL`` and
+        ``σ_min(W) > RANK_TOL σ_max(W)``).
+
+    Raises
+    ------
+    TautError
+        ``W`` not a finite matrix or array of matrices.
+
+    References
+    ----------
+    .. [1] X. Diao, O. Ma, "A method of verifying force-closure condition for general cable
+       manipulators with seven cables", Mechanism and Machine Theory 42, 2007.
+       (docs/references.bib: diao2007)
+
+    Examples
+    --------
+    At the centre of the planar robot the cables positively span the plane's wrenches; near
+    an exit they do not:
+
+    >>> from taut.model import example
+    >>> from taut.kinematics import structure_matrix
+    >>> from taut.collision import positive_span_lp
+    >>> positive_span_lp(structure_matrix(example("planar-4cable"), [[0, 0, 0], [0.9, 0.9, 0]]))
+    array([ True, False])
+    """
     import highspy
 
     W = _matrices(W, "W")
@@ -125,9 +190,26 @@ def positive_span_lp(W: npt.ArrayLike) -> np.ndarray:
 
 
 def force_closure_singular(W: npt.ArrayLike, *, method: str = "fast") -> np.ndarray:
-    """Force-closure singularity of the structure matrices ``W (N, m, n)``: ``(N,)`` bool,
-    true where the columns do not positively span ``R^m``.  ``method``: ``"fast"``
-    (vectorised, for grids) or ``"lp"`` (reference).
+    """Force-closure singularity: where the cables do not positively span the wrench space.
+
+    Parameters
+    ----------
+    W : array_like, shape (N, m, n) or (m, n)
+        Structure matrices.
+    method : {"fast", "lp"}, optional
+        ``"fast"``: the vectorised hyperplane test :func:`taut.statics.wrench_closure` (for
+        grids); ``"lp"``: the reference, :func:`positive_span_lp`.
+
+    Returns
+    -------
+    ndarray of bool, shape (N,)
+        True where the columns do not positively span ``R^m`` (configurations on the
+        boundary count as singular).
+
+    Raises
+    ------
+    TautError
+        ``W`` not a finite matrix or array of matrices, an unknown method.
 
     References
     ----------
@@ -137,6 +219,14 @@ def force_closure_singular(W: npt.ArrayLike, *, method: str = "fast") -> np.ndar
     .. [2] X. Diao, O. Ma, "A method of verifying force-closure condition for general cable
        manipulators with seven cables", Mechanism and Machine Theory 42, 2007.
        (docs/references.bib: diao2007)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.kinematics import structure_matrix
+    >>> from taut.collision import force_closure_singular
+    >>> force_closure_singular(structure_matrix(example("planar-4cable"), [[0, 0, 0], [0.9, 0.9, 0]]))
+    array([False,  True])
     """
     check_method(method)
     if method == "lp":
