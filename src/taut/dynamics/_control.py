@@ -82,9 +82,11 @@ __all__ = [
     "with_mass_error",
 ]
 
-#: Default proportional gain [1/s²]: a natural frequency of 20 rad/s.
+#: Default proportional gain ``K_p`` of :func:`simulate_control` [1/s²]: a natural frequency of
+#: 20 rad/s.
 DEFAULT_KP = 400.0
-#: Default derivative gain [1/s]: damping ratio 1.1, overdamped even with a 10 % heavier model
+#: Default derivative gain ``K_d`` of :func:`simulate_control` [1/s]: damping ratio 1.1,
+#: overdamped even with a 10 % heavier model
 #: (``ζ = √(1 + ε) K_d / (2 √K_p)``).
 DEFAULT_KD = 44.0
 
@@ -98,9 +100,30 @@ PROGRESS_EVERY = 2000
 
 @dataclass(frozen=True)
 class WrenchSteps(Result):
-    """An external wrench made of steps: ``steps[k] = (start, end, wrench)`` adds ``wrench``
-    (taut's convention: forces, then moments about ``p``, fixed frame) for ``start ≤ t <
-    end`` (``end = inf``: from ``start`` on).  Callable: ``steps(t) -> (dof,)``."""
+    """An external wrench made of steps, a function of time.
+
+    ``steps[k] = (start, end, wrench)`` adds ``wrench`` (taut's convention: forces, then
+    moments about ``p``, fixed frame) for ``start ≤ t < end`` (``end = inf``: from ``start``
+    on).  Callable: ``steps(t) -> (dof,)``.
+
+    Parameters
+    ----------
+    steps : tuple of (float, float, tuple of float)
+        The steps; their values are stored as floats.
+
+    Raises
+    ------
+    TautError
+        Values that are not numbers, ``start < 0``, ``end ≤ start``, a wrench that is not
+        finite, or wrenches of different sizes.
+
+    Examples
+    --------
+    >>> from taut.dynamics import WrenchSteps
+    >>> push = WrenchSteps.step(1.0, [5.0, 0.0, 0.0], end=2.0)
+    >>> push(0.5), push(1.5)
+    (array([0., 0., 0.]), array([5., 0., 0.]))
+    """
 
     steps: tuple[tuple[float, float, tuple[float, ...]], ...]
 
@@ -120,14 +143,42 @@ class WrenchSteps(Result):
 
     @classmethod
     def step(cls, start: float, wrench: npt.ArrayLike, *, end: float = math.inf) -> WrenchSteps:
-        """One step of ``wrench`` from ``start`` (to ``end``)."""
+        """One step of ``wrench`` from ``start`` (to ``end``).
+
+        Parameters
+        ----------
+        start : float
+            [s], non-negative.
+        wrench : array_like, shape (dof,)
+        end : float, optional
+            [s]; default for ever.
+
+        Returns
+        -------
+        WrenchSteps
+        """
         return cls(((start, end, tuple(np.ravel(wrench))),))
 
     def __call__(self, t: float) -> np.ndarray:
         return self.at(np.array([t]))[0]
 
     def at(self, times: npt.ArrayLike) -> np.ndarray:
-        """The wrench at each of ``times``: ``(N, dof)``."""
+        """The wrench at each of ``times``.
+
+        Parameters
+        ----------
+        times : array_like, shape (N,)
+            [s].
+
+        Returns
+        -------
+        ndarray, shape (N, dof)
+
+        Raises
+        ------
+        TautError
+            Times that are not numbers.
+        """
         try:
             t = np.asarray(times, dtype=float).reshape(-1, 1)
         except (TypeError, ValueError):
@@ -141,12 +192,59 @@ class WrenchSteps(Result):
 
 @dataclass(frozen=True)
 class ControlResult(Result):
-    """A controlled motion sampled at the ``K + 1`` control updates ``times`` (read-only arrays).
+    """A controlled motion sampled at the ``K + 1`` control updates (:func:`simulate_control`).
 
     At update ``k`` the controller saw ``poses[k]``, ``velocity[k]`` against ``reference[k]``,
     commanded ``command[k]`` (``q̈_cmd``) and applied ``tensions[k]`` until the next update
     (``feasible[k]`` False: the distribution failed and the last admissible tensions were
-    held)."""
+    held).
+
+    Attributes
+    ----------
+    times : ndarray, shape (K + 1,)
+        [s].
+    reference : ndarray, shape (K + 1, dof)
+        The reference pose.
+    poses : ndarray, shape (K + 1, dof)
+    velocity : ndarray, shape (K + 1, dof)
+    error : ndarray, shape (K + 1, dof)
+        ``q_r − q``, angles wrapped into ``[−π, π)``.
+    position_error : ndarray, shape (K + 1,)
+        ``‖p_r − p‖`` [m].
+    rotation_error : ndarray, shape (K + 1,)
+        The angle of ``R_rᵀ R`` [rad] (zeros for a point mass).
+    command : ndarray, shape (K + 1, dof)
+        The commanded pose accelerations ``q̈_cmd``.
+    tensions : ndarray, shape (K + 1, n)
+        The tensions applied from each update [N].
+    feasible : ndarray of bool, shape (K + 1,)
+        The distribution found admissible tensions.
+    disturbance : ndarray, shape (K + 1, dof)
+        The external wrench at each update.
+    tension_min, tension_max : ndarray, shape (n,)
+        The bounds [N] (``inf`` where a cable has no upper limit).
+    pose_names : tuple of str
+    kp, kd : ndarray, shape (dof,)
+        The gains.
+    rate_hz : float
+    substeps : int
+    method : str
+        The distribution used where the closed form gives up.
+    elapsed_s : float
+        Wall-clock seconds of the simulation.
+    complete : bool
+        The simulation reached the end of the motion.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.motion import trajectory_from_waypoints
+    >>> from taut.dynamics import simulate_control
+    >>> robot = example("planar-4cable")
+    >>> run = simulate_control(robot, trajectory_from_waypoints(robot, [[0, 0, 0], [0.1, 0.05, 0]], duration=0.5), rate_hz=200)
+    >>> run.times.shape, run.all_feasible, run.failures
+    ((101,), True, 0)
+    """
 
     times: np.ndarray  #: ``(K + 1,)``
     reference: np.ndarray  #: ``(K + 1, dof)`` the reference pose
@@ -249,13 +347,30 @@ class ControlResult(Result):
 
 
 def with_mass_error(robot: Robot, error: float) -> Robot:
-    """``robot`` with its platform's mass and inertia scaled by ``1 + error`` (``error =
-    0.1``: a model 10 % too heavy): a controller's model with a mass error.
+    """``robot`` with its platform's mass and inertia scaled by ``1 + error``: a controller's
+    model with a mass error (``error = 0.1``: a model 10 % too heavy).
+
+    Parameters
+    ----------
+    robot : Robot
+    error : float
+        Finite, greater than −1.
+
+    Returns
+    -------
+    Robot
 
     Raises
     ------
     TautError
-        ``error`` not finite or ``<= −1``, or a robot without mass.
+        ``error`` not a finite number greater than −1, or a robot without mass.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.dynamics import with_mass_error
+    >>> with_mass_error(example("planar-4cable"), 0.1).platform.mass
+    1.1
     """
     if isinstance(error, bool) or not isinstance(error, numbers.Real) or not (math.isfinite(error) and error > -1):
         raise TautError(f"the mass error must be a finite number > -1, got {error!r}")
@@ -388,22 +503,44 @@ def simulate_control(
     """Simulate ``robot`` tracking ``motion`` under computed-torque control with the tension
     distribution in the loop, from ``t = 0`` to ``motion.duration``.
 
-    ``kp``, ``kd``: gains [1/s², 1/s], one number or one per pose coordinate (zero gains: pure
-    feed-forward).  ``rate_hz``: control updates per second (the tensions are held between
-    them); ``substeps``: RK4 steps of the plant per control period.  ``model``: the
-    controller's robot (default ``robot``: an exact model; :func:`with_mass_error` makes one
-    with a mass error), with the same cables.  ``disturbance(t) -> (dof,)``: an external
-    wrench on the plant, unknown to the controller (e.g. :class:`WrenchSteps`), held over each
-    RK4 step.  ``method``: the distribution where the closed form gives up (a method of
-    :data:`taut.statics.METHODS`).  ``predict``: evaluate the law half a period ahead
-    (see the module's docstring; False: at the sampled state).  ``q0``, ``qd0``: the initial
-    state (default the reference's).  ``progress(done, total)`` is called with the updates
-    done.
+    Parameters
+    ----------
+    robot : Robot
+        The plant.
+    motion : taut.motion.Motion
+        The reference, a trajectory of a robot with the same pose coordinates.
+    kp, kd : float or array_like, shape (dof,), optional
+        Gains [1/s², 1/s], one number or one per pose coordinate (zero gains: pure
+        feed-forward); default :data:`DEFAULT_KP`, :data:`DEFAULT_KD`.
+    rate_hz : float, optional
+        Control updates per second (the tensions are held between them).
+    substeps : int, optional
+        RK4 steps of the plant per control period.
+    model : Robot, optional
+        The controller's robot, with the same cables (default ``robot``: an exact model;
+        :func:`with_mass_error` makes one with a mass error).
+    disturbance : callable, optional
+        ``disturbance(t) -> (dof,)``: an external wrench on the plant, unknown to the
+        controller (e.g. :class:`WrenchSteps`), held over each RK4 step.
+    method : str, optional
+        The distribution where the closed form gives up (a method of
+        :data:`taut.statics.METHODS`).
+    predict : bool, optional
+        Evaluate the law half a period ahead (see the module's docstring; False: at the
+        sampled state).
+    q0, qd0 : array_like, shape (dof,), optional
+        The initial state (default the reference's).
+    progress : callable, optional
+        ``progress(done, total)``, with the updates done.
+
+    Returns
+    -------
+    ControlResult
 
     Raises
     ------
     TautError
-        Bad gains, rate, model or disturbance.
+        Bad gains, rate, substeps, motion, model, disturbance or progress.
     UnsupportedRobotError
         A robot without mass or inertia, a jointed platform, cables through swivelling pulleys.
     InfeasiblePoseError
@@ -419,6 +556,20 @@ def simulate_control(
     .. [2] D. Lau, J. Eden, Y. Tan, D. Oetomo, "CASPR: A comprehensive cable-robot analysis
        and simulation platform for the research of cable-driven parallel robots", IROS, 2016.
        (docs/references.bib: lau2016)
+
+    Examples
+    --------
+    With an exact model the planar platform tracks a quintic move of 0.11 m in 0.5 s to
+    within a few hundredths of a millimetre:
+
+    >>> from taut.model import example
+    >>> from taut.motion import trajectory_from_waypoints
+    >>> from taut.dynamics import simulate_control
+    >>> robot = example("planar-4cable")
+    >>> motion = trajectory_from_waypoints(robot, [[0, 0, 0], [0.1, 0.05, 0]], duration=0.5)
+    >>> run = simulate_control(robot, motion, rate_hz=200)
+    >>> run.all_feasible, bool(run.position_error.max() < 5e-5)
+    (True, True)
     """
     from taut.dynamics._kernels import control_updates
     from taut.geometry import rotation_matrix

@@ -56,11 +56,39 @@ _WHY = {
 
 @dataclass(frozen=True)
 class InverseDynamicsResult(Result):
-    """Tensions along ``N`` samples of a motion of a robot with ``n`` cables.
+    """Tensions along ``N`` samples of a motion of a robot with ``n`` cables
+    (:func:`inverse_dynamics`).
 
     For a single sample the array fields have no batch axis (``docs/architecture.md`` §2.1):
     ``tensions (n,)``, ``wrench (dof,)``, and ``feasible``, ``status``, ``reasons`` and
-    ``times`` are 0-d arrays."""
+    ``times`` are 0-d arrays.
+
+    Attributes
+    ----------
+    times : ndarray, shape (N,), or None
+        Sample times [s], when given.
+    wrench : ndarray, shape (N, dof)
+        The wrench ``W τ`` the cables must apply (:func:`required_wrench`).
+    tensions : ndarray, shape (N, n)
+        [N]; zeros where no admissible distribution was found.
+    feasible : ndarray of bool, shape (N,)
+    status : ndarray of str, shape (N,)
+        ``"optimal"``, ``"infeasible"`` (proved), ``"not-found"`` (the method gave up) or
+        ``"undefined"`` (no structure matrix: a cable of zero length).
+    reasons : ndarray of str, shape (N,)
+        Why a sample has no admissible tensions, ``""`` where feasible.
+    method : str
+        The tension distribution method.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.dynamics import inverse_dynamics
+    >>> res = inverse_dynamics(example("planar-4cable"), np.zeros(3), np.zeros(3), [0.0, 400.0, 0.0], method="qp")
+    >>> bool(res.feasible), str(res.status), res.failures()
+    (False, 'infeasible', [(0, 'no tensions within the bounds give the required wrench (proved)')])
+    """
 
     times: np.ndarray | None  #: ``(N,)`` sample times, when given
     wrench: np.ndarray  #: ``(N, dof)`` the wrench ``W τ`` the cables must apply
@@ -73,13 +101,19 @@ class InverseDynamicsResult(Result):
     method: str
 
     def failures(self) -> list[tuple[int, str]]:
-        """``(index, reason)`` of every sample without admissible tensions (0-based)."""
+        """The samples without admissible tensions.
+
+        Returns
+        -------
+        list of (int, str)
+            ``(index, reason)``, 0-based indices.
+        """
         reasons = np.atleast_1d(self.reasons)
         return [(int(k), str(reasons[k])) for k in np.flatnonzero(~np.atleast_1d(self.feasible))]
 
     @property
     def first_failure(self) -> int | None:
-        """Index of the first sample without admissible tensions, or None."""
+        """The 0-based index of the first sample without admissible tensions, or None."""
         bad = np.flatnonzero(~np.atleast_1d(self.feasible))
         return int(bad[0]) if bad.size else None
 
@@ -105,15 +139,45 @@ def required_wrench(
     *,
     wrench: npt.ArrayLike | None = None,
 ) -> np.ndarray:
-    """The wrench ``W τ`` ``(N, dof)`` (``(dof,)`` for one sample) the cables must apply for
-    the pose accelerations ``qdd`` at poses ``q`` with rates ``qd``, given an external wrench
-    ``wrench`` (``(dof,)`` or ``(N, dof)``) besides the robot's own weight; taut's wrench
-    convention (forces, then moments about ``p``, fixed frame).
+    """The wrench ``W τ`` the cables must apply for a motion: Newton–Euler through the centre of
+    mass, minus the robot's own load and an external wrench.
+
+    Parameters
+    ----------
+    robot : Robot
+    q, qd, qdd : array_like, shape (N, dof) or (dof,)
+        Poses, pose rates and pose accelerations.
+    wrench : array_like, shape (N, dof) or (dof,), optional
+        External wrench besides the robot's own weight.
+
+    Returns
+    -------
+    ndarray, shape (N, dof) or (dof,) for one sample
+        taut's wrench convention: forces, then moments about ``p``, fixed frame [N, N m].
+
+    Raises
+    ------
+    TautError
+        Bad shapes or values (:class:`~taut.errors.PoseError` for poses and rates).
+    UnsupportedRobotError
+        A robot without mass (or inertia, for a rigid platform), or a jointed platform.
 
     References
     ----------
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
        and Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
+
+    Examples
+    --------
+    The planar platform (1 kg) at rest needs its weight held; accelerating at 1 m/s² along x
+    needs 1 N more:
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.dynamics import required_wrench
+    >>> required_wrench(example("planar-4cable"), np.zeros((2, 3)), np.zeros((2, 3)), [[0, 0, 0], [1.0, 0, 0]])
+    array([[0.  , 9.81, 0.  ],
+           [1.  , 9.81, 0.  ]])
     """
     model = kernel_model(robot)
     arr, vel, acc, single = _motion(robot, q, qd, qdd)
@@ -184,25 +248,40 @@ def inverse_dynamics(
     times: npt.ArrayLike | None = None,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> InverseDynamicsResult:
-    """Cable tensions along a sampled motion ``(q, q̇, q̈)`` (each ``(N, dof)``, or one sample
-    ``(dof,)``: a result without the batch axis).
+    """Cable tensions along a sampled motion ``(q, q̇, q̈)``.
 
-    ``method`` is a tension distribution method of :data:`taut.statics.METHODS`
-    (``lp``, ``qp``, ``inf``, ``closed-form``, ``improved-closed-form``, ``barycentric``); the
-    bounds are ``tension_bounds`` (default ``robot.tension_bounds``).  ``wrench`` is an external
-    wrench besides the robot's weight, ``times (N,)`` the sample times (kept in the result for
-    plots).  Samples without an
-    admissible distribution get zero tensions, ``feasible = False`` and a reason.
+    Samples without an admissible distribution get zero tensions, ``feasible = False`` and a
+    reason.  The wrenches, structure matrices and, for ``closed-form``, the tensions are
+    computed by a compiled kernel; the samples it does not accept, and every sample of the
+    other methods, go to :func:`taut.statics.solve_tensions`, so that ``feasible`` means what
+    it means there.
 
-    The wrenches, structure matrices and, for ``closed-form``, the tensions are computed by a
-    compiled kernel (:func:`taut.dynamics._kernels.inverse_samples`); the samples it does not
-    accept, and every sample of the other methods, go to
-    :func:`taut.statics.solve_tensions`, so that ``feasible`` means what it means there.
+    Parameters
+    ----------
+    robot : Robot
+    q, qd, qdd : array_like, shape (N, dof) or (dof,)
+        Poses, pose rates and pose accelerations; one sample gives a result without the
+        batch axis.
+    method : str, optional
+        A tension distribution method of :data:`taut.statics.METHODS` (``lp``, ``qp``,
+        ``inf``, ``closed-form``, ``improved-closed-form``, ``barycentric``).
+    wrench : array_like, shape (N, dof) or (dof,), optional
+        External wrench besides the robot's weight.
+    tension_bounds : (tmin, tmax), optional
+        Each a number or one per cable [N]; default the cables' own.
+    times : array_like, shape (N,), optional
+        The sample times [s], kept in the result (for plots).
+    progress : callable, optional
+        ``progress(done, total)``, with sample counts.
+
+    Returns
+    -------
+    InverseDynamicsResult
 
     Raises
     ------
     TautError
-        Bad shapes or values, an unknown method.
+        Bad shapes or values, an unknown method, bad tension bounds or times.
     UnsupportedRobotError
         A robot without mass (or inertia, for a rigid platform), or a jointed platform.
 
@@ -214,6 +293,22 @@ def inverse_dynamics(
        of Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
     .. [3] A. Pott, T. Bruckmann, L. Mikelsons, "Closed-form force distribution for parallel
        wire robots", Computational Kinematics, Springer, 2009. (docs/references.bib: pott2009)
+
+    Examples
+    --------
+    The planar platform at rest, accelerating along x, and far too fast upwards:
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.dynamics import inverse_dynamics
+    >>> qdd = [[0, 0, 0], [1.0, 0, 0], [0, 400.0, 0]]
+    >>> res = inverse_dynamics(example("planar-4cable"), np.zeros((3, 3)), np.zeros((3, 3)), qdd, method="qp")
+    >>> res.tensions.round(3)
+    array([[1.   , 1.   , 7.757, 7.757],
+           [1.   , 1.727, 8.484, 7.757],
+           [0.   , 0.   , 0.   , 0.   ]])
+    >>> res.feasible, res.first_failure
+    (array([ True,  True, False]), 2)
     """
     from taut.statics import METHODS, solve_tensions
 
