@@ -101,7 +101,7 @@ def main():
     print(f"  taut simulate_control: {args.seconds / dt_c:>10,.1f}x real time  (target >= 50x)")
     print(
         f"  max position error {1e3 * res.position_error.max():.2f} mm, rotation {1e3 * res.rotation_error.max():.2f} mrad; "
-        f"min tension margin {res.min_tension_margin:.1f} N; every distribution admissible: {res.feasible}"
+        f"min tension margin {res.min_tension_margin:.1f} N; every distribution admissible: {res.all_feasible}"
     )
     lm = loop_model(robot)
     try:
