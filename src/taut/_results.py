@@ -28,15 +28,18 @@ __all__ = ["Result", "freeze", "jsonable"]
 
 def _read_only(value: Any) -> Any:
     """``value`` with its arrays as read-only views (a view, so the caller's array is not
-    changed and nothing is copied); a list or tuple of arrays becomes a tuple of them."""
+    changed and nothing is copied); a list or tuple holding arrays, at any depth, becomes a
+    tuple of the same items with read-only arrays."""
     if isinstance(value, np.ndarray):
         if not value.flags.writeable:
             return value
         view = value.view()
         view.flags.writeable = False
         return view
-    if isinstance(value, (list, tuple)) and any(isinstance(v, np.ndarray) for v in value):
-        return tuple(_read_only(v) for v in value)
+    if isinstance(value, (list, tuple)):
+        items = [_read_only(v) for v in value]
+        if any(a is not b for a, b in zip(items, value)):
+            return tuple(items)
     return value
 
 
@@ -46,8 +49,8 @@ def freeze(obj: Any) -> None:
     Parameters
     ----------
     obj : dataclass instance
-        Frozen or not; its fields holding a :class:`numpy.ndarray` (or a list or tuple of
-        them) are replaced by read-only views.
+        Frozen or not; its fields holding a :class:`numpy.ndarray` (or lists or tuples of
+        them, nested) are replaced by read-only views.
 
     Examples
     --------
