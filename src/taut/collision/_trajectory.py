@@ -217,11 +217,13 @@ def load_trajectory(robot: Robot, path: str | Path) -> np.ndarray:
     >>> import pathlib, tempfile
     >>> from taut.model import example
     >>> from taut.collision import load_trajectory
-    >>> path = pathlib.Path(tempfile.mkdtemp()) / "moves.csv"
+    >>> folder = tempfile.TemporaryDirectory()
+    >>> path = pathlib.Path(folder.name) / "moves.csv"
     >>> _ = path.write_text("x,y,theta\\n0,0,0\\n0.1,0.2,0.05\\n")
     >>> load_trajectory(example("planar-4cable"), path)
     array([[0.  , 0.  , 0.  ],
            [0.1 , 0.2 , 0.05]])
+    >>> folder.cleanup()
     """
     path = Path(path)
     source = str(path)
