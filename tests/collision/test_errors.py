@@ -13,7 +13,7 @@ from taut.collision import (
     jacobian_singular,
     positive_span_lp,
     proximity,
-    sample_waypoints,
+    straight_moves,
 )
 from taut.errors import TautError
 
@@ -36,7 +36,7 @@ CASES = {
     "W not finite": lambda: force_closure_singular(np.full((3, 4), np.nan)),
     "method a list": lambda: force_closure_singular(np.eye(3), method=["lp"]),
     "lp of a string": lambda: positive_span_lp("x"),
-    "waypoints not numbers": lambda: sample_waypoints(SPATIAL, "ab"),
+    "waypoints not numbers": lambda: straight_moves(SPATIAL, "ab"),
     "segments of a list": lambda: capsule_segments(SPATIAL, [Z]),
 }
 

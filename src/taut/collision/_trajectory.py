@@ -2,8 +2,10 @@
 Lieskovský (2020): simulations a–d of the adjustable platform).
 
 A trajectory is a sequence of poses ``X_1 … X_N`` (1-based steps, as in §4.2).  A named
-trajectory of a robot (``trajectories:`` in its file) is sampled by joining its waypoints
-with straight moves of ``steps[k]`` increments each (:data:`DEFAULT_STEPS` when not given),
+trajectory of a robot (``trajectories:`` in its file, read by
+:func:`taut.motion.robot_trajectory`) is sampled by joining its waypoints with straight
+moves of ``steps[k]`` increments each (:func:`straight_moves`; :data:`DEFAULT_STEPS` when
+not given),
 so that simulation a (``steps: [100, 100]``) gives the 201 configurations ``X_1 … X_201`` of
 Eqs. 4.2.1–4.2.6.  Waypoints that give only a position take the rest of the pose from the
 robot's first reference pose (zeros, joints at mid-range, without one).
@@ -40,15 +42,15 @@ import numpy as np
 import numpy.typing as npt
 
 from taut._results import Result, jsonable
-from taut.collision._capsules import CapsuleModel, capsule_model
+from taut.collision._capsules import CapsuleModel, capsule_model, capsule_segments
 from taut.collision._proximity import ProximityResult, proximity
 from taut.collision._singularity import JACOBIAN_TOL, check_method, force_closure_singular, jacobian_singular
 from taut.errors import PoseError, TautError
 from taut.kinematics import CABLE_OK, actuator_jacobian, as_poses, ik_status
 from taut.model import Robot
-from taut.motion import complete_waypoints
+from taut.motion import complete_waypoints, robot_trajectory
 
-__all__ = ["CheckResult", "check_poses", "load_trajectory", "sample_waypoints", "trajectory_poses"]
+__all__ = ["CheckResult", "check_poses", "load_trajectory", "straight_moves", "trajectory_poses"]
 
 #: Increments per move of a named trajectory that gives no ``steps``.
 DEFAULT_STEPS = 100
@@ -65,7 +67,7 @@ def _fill(robot: Robot, waypoints: np.ndarray, what: str) -> np.ndarray:
     return complete_waypoints(robot, waypoints, what)
 
 
-def sample_waypoints(
+def straight_moves(
     robot: Robot, waypoints: npt.ArrayLike, steps: Iterable[int] | None = None, *, what: str = "trajectory"
 ) -> np.ndarray:
     """Poses along straight moves between waypoints.
@@ -101,8 +103,8 @@ def sample_waypoints(
     Examples
     --------
     >>> from taut.model import example
-    >>> from taut.collision import sample_waypoints
-    >>> sample_waypoints(example("planar-4cable"), [[0, 0, 0], [0.2, 0.1, 0]], [4])
+    >>> from taut.collision import straight_moves
+    >>> straight_moves(example("planar-4cable"), [[0, 0, 0], [0.2, 0.1, 0]], [4])
     array([[0.   , 0.   , 0.   ],
            [0.05 , 0.025, 0.   ],
            [0.1  , 0.05 , 0.   ],
@@ -138,12 +140,12 @@ def trajectory_poses(robot: Robot, name: str) -> np.ndarray:
     Returns
     -------
     ndarray, shape (1 + Σ steps, pose_size)
-        Sampled by :func:`sample_waypoints` with the trajectory's ``steps``.
+        Sampled by :func:`straight_moves` with the trajectory's ``steps``.
 
     Raises
     ------
-    TautError
-        No trajectory of that name.
+    TrajectoryError
+        No trajectory of that name (:func:`taut.motion.robot_trajectory`).
 
     Examples
     --------
@@ -154,11 +156,8 @@ def trajectory_poses(robot: Robot, name: str) -> np.ndarray:
     >>> trajectory_poses(example("adjustable-8cable"), "sim-a").shape
     (201, 7)
     """
-    if name not in robot.trajectories:
-        known = ", ".join(robot.trajectories) or "none"
-        raise TautError(f"{robot.name}: no built-in trajectory {name!r} (built-in: {known})")
-    t = robot.trajectories[name]
-    return sample_waypoints(robot, t.waypoints, t.steps, what=f"trajectory {name}")
+    t = robot_trajectory(robot, name)
+    return straight_moves(robot, t.waypoints, t.steps, what=f"trajectory {name}")
 
 
 def _csv(text: str, robot: Robot, source: str) -> np.ndarray:
@@ -192,7 +191,7 @@ def load_trajectory(robot: Robot, path: str | Path) -> np.ndarray:
 
     CSV: one pose per line, an optional header of the pose's coordinate names, ``#``
     comments; YAML or JSON: a list of poses, a mapping with ``poses``, or a mapping with
-    ``waypoints`` and optional ``steps`` (sampled by :func:`sample_waypoints`).
+    ``waypoints`` and optional ``steps`` (sampled by :func:`straight_moves`).
 
     Parameters
     ----------
@@ -251,7 +250,7 @@ def load_trajectory(robot: Robot, path: str | Path) -> np.ndarray:
     if isinstance(data, dict) and "poses" in data:
         data = data["poses"]
     if isinstance(data, dict) and "waypoints" in data:
-        return sample_waypoints(robot, data["waypoints"], data.get("steps"), what=source)
+        return straight_moves(robot, data["waypoints"], data.get("steps"), what=source)
     if not isinstance(data, list) or not data:
         raise TautError(f"{source}: expected a list of poses, or a mapping with 'poses' or 'waypoints'")
     try:
@@ -320,6 +319,24 @@ class CheckResult(Result):
     def problems(self) -> np.ndarray:
         """``(N,)`` bool: a collision or a singularity."""
         return self.collides | self.jacobian_singular | self.force_closure_singular
+
+    def capsules(self, robot: Robot, k: int) -> tuple[np.ndarray, np.ndarray]:
+        """The end points of every capsule of :attr:`model` at one checked pose.
+
+        Parameters
+        ----------
+        robot : Robot
+            The robot that was checked.
+        k : int
+            The pose's 0-based index.
+
+        Returns
+        -------
+        A, B : ndarray, shape (C, 3)
+            The capsules' end points (:func:`capsule_segments`).
+        """
+        A, B = capsule_segments(robot, self.poses[k : k + 1], model=self.model)
+        return A[0], B[0]
 
     def first(self, flags: np.ndarray) -> int | None:
         """The first pose whose flag is true.

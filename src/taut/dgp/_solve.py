@@ -115,6 +115,28 @@ def solution_key(solution: DGPSolution) -> tuple:
     return (solution.taut, *solution.position.tolist(), *solution.orientation.tolist())
 
 
+#: Largest coordinate of a search domain, in units of the solver's ``eps``: beyond
+#: ``2**40 eps`` (110 km for ``eps = 1e-7`` m) ``eps`` spans fewer than 4096 units in the
+#: last place of the coordinates, and the rounding of the squared lengths (``L²``, an ulp
+#: of ``L²`` moves a point by about ``L 2⁻⁵³``) leaves boxes of width ``eps`` that neither
+#: shrink nor certify: a search of hours that proves nothing.
+MAX_SCALE = 2.0**40
+
+
+def check_scale(robot: Robot, lengths: np.ndarray, eps: float) -> None:
+    """Refuse lengths that put the platform where double precision cannot resolve ``eps``
+    (:data:`MAX_SCALE`): a reference point lies within its cable's length of the exit."""
+    reach = float(np.max(np.abs(robot.exits).max(axis=1) + lengths)) + float(
+        np.linalg.norm(robot.anchors, axis=1).max()
+    )
+    if reach > MAX_SCALE * eps:
+        raise TautError(
+            f"cable lengths up to {lengths.max():.3g} m put the platform up to {reach:.3g} m from the origin, where "
+            f"doubles are {np.spacing(reach):.2g} m apart: the solver cannot resolve eps = {eps:g} m there "
+            f"(it takes coordinates up to {MAX_SCALE * eps:.3g} m)"
+        )
+
+
 def check_lengths(robot: Robot, lengths: npt.ArrayLike) -> np.ndarray:
     arr = np.asarray(lengths, dtype=float).ravel()
     if arr.size != robot.n_cables:
@@ -387,12 +409,17 @@ def solve_dgp(
     computed by the same code whatever the executor, so for a given ``split`` the solutions
     are bitwise identical on every executor; they are sorted by :func:`solution_key`.
     ``max_boxes``: the box budget of every sub-problem, shared equally by its pieces (by
-    default :data:`PIECE_BOXES` per piece); the boxes left when it runs out are undecided.
+    default :data:`PIECE_BOXES` per piece); a certification counts as
+    :data:`~taut.interval._branch_prune.CERTIFY_BOXES` boxes, so that the budget bounds the
+    time; the boxes left when it runs out are undecided.
     ``progress(done, total)`` is called with the number of jobs done (pieces of
     sub-problems) out of all of them, from 0 to the total.  ``multiprecision``: the boxes
     double precision leaves too narrow to bisect (a singular or nearly double solution) are
     searched again in multi-precision balls when python-flint is installed
     (:mod:`taut.interval._precise`); without it, or with ``False``, they stay undecided.
+
+    Raises :class:`~taut.errors.TautError` for lengths that put the platform beyond
+    :data:`MAX_SCALE` ``eps`` from the origin, where double precision cannot resolve ``eps``.
 
     The result is :attr:`~DGPResult.complete` when no box was left undecided; otherwise
     every equilibrium it does not list lies in one of its
@@ -413,6 +440,9 @@ def solve_dgp(
             raise TautError(f"{robot.name} has no reference lengths: give the cable lengths")
         lengths = robot.reference.lengths
     checked = check_lengths(robot, lengths)
+    if not (np.isfinite(eps) and eps > 0):
+        raise TautError(f"eps must be a number > 0, got {eps!r}")
+    check_scale(robot, checked, eps)
     n = robot.n_cables
     top = min(n, 6) if max_taut is None else min(n, 6, int(max_taut))
     if top < 1:

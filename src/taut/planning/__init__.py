@@ -1,6 +1,7 @@
 """Wrench-feasible path planning (Bohigas et al. 2013): higher-dimensional
-continuation (:mod:`.continuation`), A* over its charts (:mod:`.search`, complete), and
-AtlasRRT (Jaillet & Porta 2013, :mod:`.atlasrrt`, randomised).
+continuation (:mod:`.continuation`), A* over its charts (:mod:`.search`, complete),
+AtlasRRT (Jaillet & Porta 2013, :mod:`.atlasrrt`, randomised), and the classified grid of a
+two-dimensional slice (:func:`slice_map`, Fig. 5).
 
 References
 ----------
@@ -23,7 +24,8 @@ if TYPE_CHECKING:
     from taut.planning._continuation import Atlas, Chart, ImplicitManifold, Polytope, Symmetry, project, tangent_basis
     from taut.planning._manifold import POSE_NAMES, WrenchFeasibleManifold
     from taut.planning._search import PathResult, plan_path, refine_path
-    from taut.planning._verify import verify_path
+    from taut.planning._slices import SliceMap, slice_map
+    from taut.planning._verify import MAX_POSES, verify_path
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -41,6 +43,9 @@ _LAZY = {
     "PathResult": "taut.planning._search",
     "plan_path": "taut.planning._search",
     "refine_path": "taut.planning._search",
+    "SliceMap": "taut.planning._slices",
+    "slice_map": "taut.planning._slices",
+    "MAX_POSES": "taut.planning._verify",
     "verify_path": "taut.planning._verify",
 }
 
@@ -48,9 +53,11 @@ __all__ = [
     "Atlas",
     "Chart",
     "ImplicitManifold",
+    "MAX_POSES",
     "POSE_NAMES",
     "PathResult",
     "Polytope",
+    "SliceMap",
     "Symmetry",
     "WrenchFeasibleManifold",
     "atlas_rrt",
@@ -58,6 +65,7 @@ __all__ = [
     "project",
     "refine_path",
     "shorten_path",
+    "slice_map",
     "tangent_basis",
     "verify_path",
 ]

@@ -46,7 +46,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 import numpy.typing as npt
@@ -138,6 +138,9 @@ class WrenchFeasibleManifold:
        Mechanisms and Machine Science 12, Springer, 2013, §2–3, Eqs. 1–8.
        (docs/references.bib: bohigas2013)
     """
+
+    #: names of the pose coordinates, in the order of a pose ``(6,)``
+    pose_names: ClassVar[tuple[str, ...]] = POSE_NAMES
 
     a: np.ndarray
     b: np.ndarray

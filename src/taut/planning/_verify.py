@@ -22,11 +22,18 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut.errors import TautError
 from taut.kinematics import inverse_kinematics, platform_frame
 from taut.model import Robot
 from taut.statics import EllipsoidWrenchSet, wrench_feasible
 
-__all__ = ["PathCheck", "interpolate_poses", "verify_path"]
+__all__ = ["MAX_POSES", "PathCheck", "interpolate_poses", "verify_path"]
+
+#: Interpolated poses :func:`verify_path` checks when no ``max_poses`` is given: their
+#: :class:`PathCheck` holds 97 bytes each (97 MB at the limit), a few seconds of work.
+MAX_POSES = 1_000_000
+#: Poses checked at once: the structure matrices of a chunk take 19 MB.
+CHUNK = 1 << 16
 
 
 @dataclass(frozen=True)
@@ -48,8 +55,19 @@ def interpolate_poses(poses: npt.ArrayLike, subdivide: int) -> np.ndarray:
     return np.vstack([inner.reshape(-1, poses.shape[1]), poses[-1:]])
 
 
-def verify_path(robot: Robot, poses: npt.ArrayLike, E: npt.ArrayLike | None = None, subdivide: int = 10) -> PathCheck:
-    """Check every interpolated pose of ``poses`` for wrench feasibility (module doc).
+def verify_path(
+    robot: Robot,
+    poses: npt.ArrayLike,
+    E: npt.ArrayLike | None = None,
+    subdivide: int = 10,
+    *,
+    max_poses: int = MAX_POSES,
+) -> PathCheck:
+    """Check every interpolated pose of ``poses`` for wrench feasibility (module doc), in
+    chunks of :data:`CHUNK` poses.
+
+    Raises :class:`~taut.errors.TautError` when the interpolated poses (``subdivide`` per
+    segment, and the last) are more than ``max_poses``, before any work.
 
     References
     ----------
@@ -59,18 +77,32 @@ def verify_path(robot: Robot, poses: npt.ArrayLike, E: npt.ArrayLike | None = No
        (docs/references.bib: bohigas2013)
     """
     E = 1e4 * np.eye(6) if E is None else np.asarray(E, float)
-    q = interpolate_poses(poses, subdivide)
-    ik = inverse_kinematics(robot, q)
-    W = ik.structure_matrix.copy()
-    pm = np.zeros(3) if robot.platform.wrench_point is None else np.asarray(robot.platform.wrench_point, float)
-    _, R = platform_frame(robot, q)
-    arm = R @ pm  # moments about P_m: M_m = M_p − (R p_m) × F
-    W[:, 3:, :] -= np.cross(arm[:, None, :], W[:, :3, :].transpose(0, 2, 1)).transpose(0, 2, 1)
+    path = np.asarray(poses, float)
+    if isinstance(subdivide, bool) or int(subdivide) != subdivide or subdivide < 1:
+        raise TautError(f"subdivide must be a whole number >= 1, got {subdivide!r}")
+    total = (len(path) - 1) * int(subdivide) + 1
+    if total > max_poses:
+        raise TautError(
+            f"the path's {len(path) - 1} steps at {subdivide} poses each make {total:,} poses to check, more than "
+            f"{max_poses:,} (max_poses): give a subdivide of at most {max(1, (max_poses - 1) // max(1, len(path) - 1))}"
+        )
+    q = interpolate_poses(path, int(subdivide))
     ws = EllipsoidWrenchSet(np.asarray(robot.platform.wrench, float), np.linalg.inv(E))
     tmin = np.array([c.tension[0] for c in robot.cables], float)
     tmax = np.array([c.tension[1] for c in robot.cables], float)
-    ok = wrench_feasible(W, tmin, tmax, ws)
     lo = np.array([c.length[0] if c.length else 0.0 for c in robot.cables])
     hi = np.array([c.length[1] if c.length else np.inf for c in robot.cables])
-    ok &= np.all((ik.lengths > lo) & (ik.lengths < hi), axis=1)
-    return PathCheck(q, ok, ik.lengths)
+    pm = np.zeros(3) if robot.platform.wrench_point is None else np.asarray(robot.platform.wrench_point, float)
+    ok = np.zeros(len(q), bool)
+    lengths = np.zeros((len(q), robot.n_cables))
+    for s in range(0, len(q), CHUNK):
+        part = q[s : s + CHUNK]
+        ik = inverse_kinematics(robot, part)
+        W = ik.structure_matrix.copy()
+        _, R = platform_frame(robot, part)
+        arm = R @ pm  # moments about P_m: M_m = M_p − (R p_m) × F
+        W[:, 3:, :] -= np.cross(arm[:, None, :], W[:, :3, :].transpose(0, 2, 1)).transpose(0, 2, 1)
+        inside = np.all((ik.lengths > lo) & (ik.lengths < hi), axis=1)
+        ok[s : s + CHUNK] = wrench_feasible(W, tmin, tmax, ws) & inside
+        lengths[s : s + CHUNK] = ik.lengths
+    return PathCheck(q, ok, lengths)

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
         builtin_trajectory,
         full_poses,
         run_trajectory,
-        sample_waypoints,
+        timed_moves,
     )
     from taut.wrapping._tree import CableStateTree
     from taut.wrapping._update import track, update_state
@@ -41,7 +41,7 @@ _LAZY = {
     "builtin_trajectory": "taut.wrapping._trajectory",
     "full_poses": "taut.wrapping._trajectory",
     "run_trajectory": "taut.wrapping._trajectory",
-    "sample_waypoints": "taut.wrapping._trajectory",
+    "timed_moves": "taut.wrapping._trajectory",
     "CableStateTree": "taut.wrapping._tree",
     "track": "taut.wrapping._update",
     "update_state": "taut.wrapping._update",
@@ -60,7 +60,7 @@ __all__ = [
     "full_poses",
     "rebuild_path",
     "run_trajectory",
-    "sample_waypoints",
+    "timed_moves",
     "track",
     "update_state",
     "wrapped_inverse_kinematics",

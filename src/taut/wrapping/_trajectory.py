@@ -31,6 +31,7 @@ import numpy.typing as npt
 
 from taut.errors import TautError
 from taut.model import Robot
+from taut.motion import robot_trajectory
 from taut.statics import external_wrench, solve_tensions
 from taut.wrapping._ik import WrappedIK, wrapped_inverse_kinematics
 from taut.wrapping._tree import OBJ
@@ -40,15 +41,16 @@ DWELL = 1.0
 #: Speed [m/s] used when a waypoint trajectory gives none (§6.2 prints none).
 DEFAULT_SPEED = 0.1
 
-#: Most samples of one trajectory: each carries a pose, lengths, tensions and cable states
+#: Most samples of one trajectory of a VSCR (a timed motion has its own budget, ``MAX_SAMPLES``
+#: of :mod:`taut.motion._trajectory`): each carries a pose, lengths, tensions and cable states
 #: (about a kilobyte); at the default 0.01 s step this is close to three hours of motion.
-MAX_SAMPLES = 1_000_000
+MAX_WRAPPING_SAMPLES = 1_000_000
 
 
 def _check_samples(count: float, dt: float) -> None:
-    if not count <= MAX_SAMPLES:  # also refuses an infinite or NaN count
+    if not count <= MAX_WRAPPING_SAMPLES:  # also refuses an infinite or NaN count
         raise TautError(
-            f"sampling every {dt:g} s gives {count:.3g} samples, more than {MAX_SAMPLES:,}: choose a larger dt"
+            f"sampling every {dt:g} s gives {count:.3g} samples, more than {MAX_WRAPPING_SAMPLES:,}: choose a larger dt"
         )
 
 
@@ -63,7 +65,7 @@ PARAMETRIC = {
 }
 
 
-def sample_waypoints(waypoints: npt.ArrayLike, speed: float, dwell: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
+def timed_moves(waypoints: npt.ArrayLike, speed: float, dwell: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
     """``(times (T,), poses (T, k))`` of straight moves at ``speed`` between waypoints with
     a ``dwell`` at each (the first waypoint included), sampled every ``dt`` (each move and
     dwell is divided into a whole number of equal steps no longer than ``dt``)."""
@@ -110,18 +112,14 @@ def sample_path(
 def builtin_trajectory(
     robot: Robot, name: str | None = None, dt: float = 0.01, speed: float | None = None, dwell: float | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
-    """``(times, poses)`` of a named trajectory of ``robot`` (its first one by default):
-    the parametric path of :data:`PARAMETRIC` if the name is one, else its waypoints."""
-    if not robot.trajectories:
-        raise TautError(f"{robot.name} has no built-in trajectory; give --waypoints FILE")
-    name = name or next(iter(robot.trajectories))
-    if name not in robot.trajectories:
-        raise TautError(f"{robot.name} has no trajectory {name!r}; it has {', '.join(robot.trajectories)}")
-    if name in PARAMETRIC:
-        fn, t0, t1 = PARAMETRIC[name]
+    """``(times, poses)`` of a named trajectory of ``robot`` (its first one by default, read
+    by :func:`taut.motion.robot_trajectory`): the parametric path of :data:`PARAMETRIC` if
+    the name is one, else :func:`timed_moves` through its waypoints."""
+    tr = robot_trajectory(robot, name)
+    if tr.name in PARAMETRIC:
+        fn, t0, t1 = PARAMETRIC[tr.name]
         return sample_path(fn, t0, t1, dt)
-    tr = robot.trajectories[name]
-    return sample_waypoints(tr.waypoints, speed or tr.speed or DEFAULT_SPEED, tr.dwell if dwell is None else dwell, dt)
+    return timed_moves(tr.waypoints, speed or tr.speed or DEFAULT_SPEED, tr.dwell if dwell is None else dwell, dt)
 
 
 def full_poses(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
