@@ -39,7 +39,7 @@ def naive_distance(p1, q1, p2, q2):
 
 def naive_check(robot, model, pose):
     """One pose: colliding pairs, Jacobian singular, force-closure singular, min clearance."""
-    A, B = capsule_segments(robot, pose[None], model)
+    A, B = capsule_segments(robot, pose[None], model=model)
     clear = []
     for i, j in model.pairs:
         clear.append(naive_distance(A[0, i], B[0, i], A[0, j], B[0, j]) - model.radii[i] - model.radii[j])

@@ -67,7 +67,7 @@ def main():
         f"robot: {robot.name} (inertia {INERTIA}); first call (compile or cache load): {time.perf_counter() - t0:.2f} s"
     )
 
-    dt_b, res = best_of(lambda: inverse_dynamics(robot, q, qd, qdd, method="closed-form", time=t))
+    dt_b, res = best_of(lambda: inverse_dynamics(robot, q, qd, qdd, method="closed-form", times=t))
     m = min(args.loop, args.samples)
     t0 = time.perf_counter()
     for k in range(m):
@@ -102,7 +102,7 @@ def main():
     print(f"  taut simulate_control: {args.seconds / dt_c:>10,.1f}x real time  (target >= 50x)")
     print(
         f"  max position error {1e3 * res.position_error.max():.2f} mm, rotation {1e3 * res.rotation_error.max():.2f} mrad; "
-        f"min tension margin {res.min_tension_margin:.1f} N; every distribution admissible: {res.feasible}"
+        f"min tension margin {res.min_tension_margin:.1f} N; every distribution admissible: {res.all_feasible}"
     )
     lm = loop_model(robot)
     try:

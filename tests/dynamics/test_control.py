@@ -63,10 +63,10 @@ def test_mass_error_and_step_disturbance_stay_within_the_derived_bound(robot, mo
     exact = simulate_control(robot, motion, rate_hz=1000)
     hold = exact.tracking_error_max
     assert hold.max() < 1e-5
-    M = mass_matrix(robot, res.pose)
-    h = bias_forces(robot, res.pose, res.velocity)
-    gw = generalized_forces(robot, res.pose, res.disturbance)
-    qdd_ref = motion.at(res.time).acceleration
+    M = mass_matrix(robot, res.poses)
+    h = bias_forces(robot, res.poses, res.velocity)
+    gw = generalized_forces(robot, res.poses, res.disturbance)
+    qdd_ref = motion.at(res.times).acceleration
     d = -eps * (qdd_ref + np.linalg.solve(M, h[..., None])[..., 0]) - np.linalg.solve(M, gw[..., None])[..., 0]
     zeta = math.sqrt(1 + eps) * DEFAULT_KD / (2 * math.sqrt(DEFAULT_KP))
     assert zeta >= 1.0
@@ -78,7 +78,7 @@ def test_mass_error_and_step_disturbance_stay_within_the_derived_bound(robot, mo
     assert (err >= 0.8 * bound).all(), (err, bound)
     # every tension within its limits (the held tensions are admissible), computed here
     lo, hi = robot.tension_bounds
-    assert res.feasible and res.failures == 0 and res.first_failure_time is None
+    assert res.all_feasible and res.failures == 0 and res.first_failure_time is None
     assert (res.tensions >= lo).all() and (res.tensions <= hi).all()
     assert res.min_tension_margin == pytest.approx(min((res.tensions - lo).min(), (hi - res.tensions).min()))
     assert res.min_tension_margin > 0 and res.slack_events == 0
@@ -99,8 +99,8 @@ def test_exact_model_tracks_to_within_1e_6(robot):
     assert e2 <= 1e-6
     assert 3.0 < e1 / e2 < 5.0
     assert e0 > 50 * e1
-    assert fine.feasible and fine.rotation_error.max() <= 2e-6 and fine.position_error.max() <= 1e-6
-    np.testing.assert_allclose(fine.reference, motion.at(fine.time).poses)
+    assert fine.all_feasible and fine.rotation_error.max() <= 2e-6 and fine.position_error.max() <= 1e-6
+    np.testing.assert_allclose(fine.reference, motion.at(fine.times).poses)
 
 
 def test_infeasible_demand_holds_the_last_admissible_tensions(robot):
@@ -111,14 +111,14 @@ def test_infeasible_demand_holds_the_last_admissible_tensions(robot):
     evaluated at the recorded state)."""
     motion = trajectory_from_waypoints(robot, [[0] * 6, [0.6, 0.3, 0.4, 0, 0, 0], [0] * 6], duration=0.3)
     res = simulate_control(robot, motion, predict=False)
-    bad = np.flatnonzero(~res.admissible)
-    assert not res.feasible and res.failures == bad.size > 0
-    assert res.first_failure_time == res.time[bad[0]] > 0
+    bad = np.flatnonzero(~res.feasible)
+    assert not res.all_feasible and res.failures == bad.size > 0
+    assert res.first_failure_time == res.times[bad[0]] > 0
     for k in bad:
         np.testing.assert_array_equal(res.tensions[k], res.tensions[k - 1])
-    lp = inverse_dynamics(robot, res.pose, res.velocity, res.command, method="lp")
+    lp = inverse_dynamics(robot, res.poses, res.velocity, res.command, method="lp")
     assert (lp.status[bad] == "infeasible").all()
-    assert lp.feasible[res.admissible].all()
+    assert lp.feasible[res.feasible].all()
     lo, hi = robot.tension_bounds
     assert (res.tensions >= lo - 1e-9).all() and (res.tensions <= hi + 1e-9).all()
     assert res.slack_events == int(np.count_nonzero((res.tensions <= lo + 1e-6 * np.maximum(1, lo)).any(axis=1)))
@@ -144,7 +144,7 @@ def test_constant_disturbance_is_met_by_kp_e(force, moment, kp):
     hold = trajectory_from_waypoints(robot, [[0.0] * 6, [0.0] * 6], durations=[3.0])
     w = np.array(force + moment)
     res = simulate_control(robot, hold, kp=kp, kd=2.2 * math.sqrt(kp), disturbance=WrenchSteps.step(0.0, w))
-    q = res.pose[-1]
+    q = res.poses[-1]
     expected = -np.linalg.solve(mass_matrix(robot, q), generalized_forces(robot, q, w)) / kp
     np.testing.assert_allclose(res.error[-1], expected, rtol=0, atol=1e-6 * np.abs(expected).max() + 1e-12)
 
@@ -159,7 +159,7 @@ def test_planar_and_point_mass_platforms(name, waypoints, request):
     robot = request.getfixturevalue(name)
     motion = trajectory_from_waypoints(robot, waypoints, duration=2.0)
     res = simulate_control(robot, motion, rate_hz=2000)
-    assert res.feasible and res.tracking_error_max.max() < 1e-6
+    assert res.all_feasible and res.tracking_error_max.max() < 1e-6
     assert res.rotation_error.shape == (4001,)
     if name == "point_mass":
         assert not res.rotation_error.any()
@@ -175,18 +175,18 @@ def test_angle_errors_take_the_short_way(robot):
     assert res.error[0, 5] == pytest.approx(-0.01, abs=1e-12)
     assert np.abs(res.error[:, 5]).max() <= 0.01 + 1e-12
     assert res.rotation_error[0] == pytest.approx(0.01, abs=1e-9) and res.rotation_error[-1] < 1e-5
-    assert res.feasible
+    assert res.all_feasible
 
 
 def test_result_is_immutable_and_reports_per_coordinate(robot, motion):
     res = simulate_control(robot, motion, rate_hz=200)
-    assert res.time.shape == (801,) and res.tensions.shape == (801, 8) and res.pose_names == tuple(robot.pose_names)
+    assert res.times.shape == (801,) and res.tensions.shape == (801, 8) and res.pose_names == tuple(robot.pose_names)
     with pytest.raises(ValueError):
         res.tensions[0, 0] = 1.0
     with pytest.raises(AttributeError):
         res.rate_hz = 1.0  # type: ignore[misc]
     np.testing.assert_allclose(res.tracking_error_rms, np.sqrt((res.error**2).mean(axis=0)))
-    np.testing.assert_allclose(res.tracking_error_max, np.abs(res.reference - res.pose).max(axis=0), atol=1e-12)
+    np.testing.assert_allclose(res.tracking_error_max, np.abs(res.reference - res.poses).max(axis=0), atol=1e-12)
 
 
 def test_a_disturbance_callable_and_wrench_steps_act_alike(robot, motion):
@@ -197,12 +197,12 @@ def test_a_disturbance_callable_and_wrench_steps_act_alike(robot, motion):
     b = simulate_control(
         robot, short, disturbance=lambda t: [5.0 * (t >= 1), -3.0 * (t >= 1), 0, 0, 0.2 * (t >= 1), 0], substeps=2
     )
-    np.testing.assert_array_equal(a.pose, b.pose)
+    np.testing.assert_array_equal(a.poses, b.poses)
     np.testing.assert_array_equal(a.disturbance, b.disturbance)
     np.testing.assert_array_equal(
-        a.disturbance[a.time >= 1.0], np.broadcast_to(STEP(1.0), (int((a.time >= 1).sum()), 6))
+        a.disturbance[a.times >= 1.0], np.broadcast_to(STEP(1.0), (int((a.times >= 1).sum()), 6))
     )
-    assert not a.disturbance[a.time < 1.0].any()
+    assert not a.disturbance[a.times < 1.0].any()
 
 
 def test_wrench_steps_and_mass_error(robot):
@@ -250,7 +250,7 @@ def test_blocks_and_decimation_change_nothing_but_what_is_kept(robot, monkeypatc
     blocks = simulate_control(robot, fast, **kwargs)
     kept = simulate_control(robot, fast, decimate=7, **kwargs)
     every = np.r_[np.arange(0, 301, 7), 300]
-    for name in ("time", "pose", "velocity", "error", "command", "tensions", "admissible", "disturbance"):
+    for name in ("times", "poses", "velocity", "error", "command", "tensions", "feasible", "disturbance"):
         np.testing.assert_array_equal(getattr(blocks, name), getattr(whole, name))
         np.testing.assert_array_equal(getattr(kept, name), getattr(whole, name)[every])
     for res in (blocks, kept):
@@ -261,8 +261,8 @@ def test_blocks_and_decimation_change_nothing_but_what_is_kept(robot, monkeypatc
         assert res.lower_margin == (whole.tensions - whole.tension_min).min()
         assert res.upper_margin == (whole.tension_max - whole.tensions).min()
         assert res.slack_events == whole.slack.any(axis=1).sum()
-        assert res.failures == (~whole.admissible).sum() and res.first_failure_time == whole.first_failure_time
-    assert kept.time.size == every.size == 44 and kept.decimate == 7 and kept.updates == 301
+        assert res.failures == (~whole.feasible).sum() and res.first_failure_time == whole.first_failure_time
+    assert kept.times.size == every.size == 44 and kept.decimate == 7 and kept.updates == 301
 
 
 def test_kept_samples_are_bounded_before_the_simulation(robot, motion):

@@ -54,13 +54,13 @@ def test_free_platform_conserves_energy_and_momentum(spatial):
     qd0 = np.array([0.05, -0.1, 0.02, 0.6, 0.3, -0.5])
     res = forward_dynamics(robot, q0, qd0, 2.0, tensions=lambda t: np.zeros(8), **TIGHT)
     first = spatial_state_quantities(robot, q0, qd0)
-    assert np.abs(res.pose[:, 4]).max() < 1.2  # away from the gimbal lock of xyz-fixed
-    for q, qd in zip(res.pose, res.velocity):
+    assert np.abs(res.poses[:, 4]).max() < 1.2  # away from the gimbal lock of xyz-fixed
+    for q, qd in zip(res.poses, res.velocity):
         T, _, P, H = spatial_state_quantities(robot, q, qd)
         assert abs(T - first[0]) <= 1e-9 * first[0]
         np.testing.assert_allclose(P, first[2], atol=1e-9 * np.linalg.norm(first[2]))
         np.testing.assert_allclose(H, first[3], atol=1e-9 * np.linalg.norm(first[3]))
-    assert abs(res.time[-1] - 2.0) < 1e-12
+    assert abs(res.times[-1] - 2.0) < 1e-12
 
 
 def test_free_fall_conserves_total_energy(spatial):
@@ -70,18 +70,18 @@ def test_free_fall_conserves_total_energy(spatial):
     res = forward_dynamics(spatial, q0, qd0, 1.0, tensions=lambda t: np.zeros(8), **TIGHT)
     T0, V0, _, _ = spatial_state_quantities(spatial, q0, qd0)
     drops = []
-    for q, qd in zip(res.pose, res.velocity):
+    for q, qd in zip(res.poses, res.velocity):
         T, V, _, _ = spatial_state_quantities(spatial, q, qd)
         assert abs(T + V - (T0 + V0)) <= 1e-9 * (abs(T0) + abs(V0) + 1)
         drops.append(V0 - V)
     assert max(drops) > 10  # it did fall: the check is not vacuous
     # the centre of mass follows the parabola of its initial velocity
     c = np.asarray(spatial.platform.wrench_point)
-    pc = [q[:3] + rotation_matrix(q[3:6]) @ c for q in res.pose]
+    pc = [q[:3] + rotation_matrix(q[3:6]) @ c for q in res.poses]
     w0 = rate_matrix(q0[3:6]) @ qd0[3:6]
     vc0 = qd0[:3] + np.cross(w0, rotation_matrix(q0[3:6]) @ c)
     g = spatial.weight / spatial.platform.mass
-    for t, p in zip(res.time, pc):
+    for t, p in zip(res.times, pc):
         np.testing.assert_allclose(p, pc[0] + vc0 * t + 0.5 * g * t * t, atol=1e-9)
 
 
@@ -131,9 +131,9 @@ def test_round_trip_inverse_then_forward(name, q0, q1, method, request):
     tight = {"method": "DOP853", "rtol": 1e-12, "atol": 1e-14}
     res = forward_dynamics(robot, q0, np.zeros(len(q0)), 2.0, tensions=tensions, times=times, **tight)
     want = np.array([motion(t)[0] for t in times])
-    np.testing.assert_allclose(res.time, times)
-    assert np.abs(res.pose - want).max() <= 1e-6
-    assert np.abs(res.pose[-1] - np.asarray(q1)).max() <= 1e-6
+    np.testing.assert_allclose(res.times, times)
+    assert np.abs(res.poses - want).max() <= 1e-6
+    assert np.abs(res.poses[-1] - np.asarray(q1)).max() <= 1e-6
     wantv = np.array([motion(t)[1] for t in times])
     assert np.abs(res.velocity - wantv).max() <= 1e-5
 
@@ -151,8 +151,8 @@ def test_rk4_converges_with_fourth_order(spatial):
     errors = []
     for dt in (0.05, 0.025, 0.0125):
         res = forward_dynamics(spatial, q0, np.zeros(6), 1.0, tensions=tensions, method="RK4", step=dt)
-        assert len(res.time) == round(1.0 / dt) + 1
-        errors.append(np.abs(res.pose[-1] - ref.pose[-1]).max())
+        assert len(res.times) == round(1.0 / dt) + 1
+        errors.append(np.abs(res.poses[-1] - ref.poses[-1]).max())
     assert errors[0] > 1e-9  # the motion is not trivial
     for coarse, fine in zip(errors, errors[1:]):
         assert 10 < coarse / fine < 24, errors
@@ -169,7 +169,7 @@ def test_rk4_step_batch_matches_single(spatial, rng):
         np.testing.assert_allclose(b, vn[k], rtol=1e-14, atol=1e-15)
     # one step of RK4 agrees with the exact motion to O(dt⁵)
     exact = forward_dynamics(spatial, Q[0], QD[0], 1e-3, tensions=lambda t: tau[0], times=[1e-3], **TIGHT)
-    np.testing.assert_allclose(qn[0], exact.pose[-1], atol=1e-12)
+    np.testing.assert_allclose(qn[0], exact.poses[-1], atol=1e-12)
 
 
 def test_elastic_static_equilibrium_stays_put(spatial):
@@ -181,7 +181,7 @@ def test_elastic_static_equilibrium_stays_put(spatial):
     l0 = unstretched_length(cable_lengths(robot, q), tau, 2e4)
     np.testing.assert_allclose(cable_tensions(robot, q, l0), tau, rtol=1e-12)
     res = forward_dynamics(robot, q, np.zeros(6), 1.0, lengths=lambda t: l0, **TIGHT)
-    assert np.abs(res.pose - q).max() <= 1e-8
+    assert np.abs(res.poses - q).max() <= 1e-8
     assert not res.slack.any()
     np.testing.assert_allclose(res.tensions, np.broadcast_to(tau, res.tensions.shape), rtol=1e-6)
 
@@ -197,10 +197,10 @@ def test_slack_cable_pulls_nothing(spatial):
     assert cable_tensions(robot, q, l0)[0] == 0.0
     res = forward_dynamics(robot, q, np.zeros(6), 0.1, lengths=lambda t: l0, times=np.linspace(0, 0.1, 11), **TIGHT)
     assert res.slack[:, 0].all() and (res.tensions[:, 0] == 0).all()
-    assert np.abs(res.pose - q).max() > 1e-4  # it moves: the other cables are out of balance
+    assert np.abs(res.poses - q).max() > 1e-4  # it moves: the other cables are out of balance
     seven = robot.model_copy(update={"cables": robot.cables[1:]})
     ref = forward_dynamics(seven, q, np.zeros(6), 0.1, lengths=lambda t: l0[1:], times=np.linspace(0, 0.1, 11), **TIGHT)
-    np.testing.assert_allclose(res.pose, ref.pose, atol=1e-10)
+    np.testing.assert_allclose(res.poses, ref.poses, atol=1e-10)
     np.testing.assert_allclose(res.tensions[:, 1:], ref.tensions, rtol=1e-7, atol=1e-7)
 
 
@@ -240,10 +240,10 @@ def test_rejected_trial_stages_do_not_stop_the_motion(spatial):
     assert ref.success and refused  # trial stages were refused, and rejected
     assert res.slack[0].all() and not res.slack.all()  # released slack, then caught
     # measured 2e-8 and 7e-8: the two take slightly different steps (rtol 1e-9)
-    np.testing.assert_allclose(res.pose[-1], ref.y[:6, -1], atol=1e-6)
+    np.testing.assert_allclose(res.poses[-1], ref.y[:6, -1], atol=1e-6)
     np.testing.assert_allclose(res.velocity[-1], ref.y[6:, -1], atol=1e-6)
     e0 = elastic_energy(robot, q0, np.zeros(6), l0, ea)
-    for q, qd in zip(res.pose, res.velocity):
+    for q, qd in zip(res.poses, res.velocity):
         assert abs(elastic_energy(robot, q, qd, l0, ea) - e0) <= 1e-7 * abs(e0)  # measured 3e-9
 
 
@@ -253,8 +253,8 @@ def test_elastic_rk4_matches_adaptive(spatial):
     l0 = cable_lengths(robot, q) * (1 - 1e-3)
     ref = forward_dynamics(robot, q, np.zeros(6), 0.2, lengths=lambda t: l0, times=[0.2], **TIGHT)
     res = forward_dynamics(robot, q, np.zeros(6), 0.2, lengths=lambda t: l0, method="RK4", step=1e-4)
-    assert np.abs(ref.pose[-1] - q).max() > 1e-4
-    np.testing.assert_allclose(res.pose[-1], ref.pose[-1], atol=1e-7)
+    assert np.abs(ref.poses[-1] - q).max() > 1e-4
+    np.testing.assert_allclose(res.poses[-1], ref.poses[-1], atol=1e-7)
 
 
 @pytest.mark.parametrize("method", ["RK45", "LSODA", "Radau"])
@@ -262,9 +262,9 @@ def test_other_integrators(method, planar):
     q0 = np.array([0.1, -0.05, 0.1])
     tau = distribute_tensions(planar, q0, method="qp").tensions
     res = forward_dynamics(planar, q0, np.zeros(3), 0.5, tensions=lambda t: tau, method=method, rtol=1e-10, atol=1e-12)
-    assert np.abs(res.pose - q0).max() < 1e-6
+    assert np.abs(res.poses - q0).max() < 1e-6
     assert res.method == method and res.evaluations > 0
-    assert not res.pose.flags.writeable
+    assert not res.poses.flags.writeable
 
 
 def test_gimbal_lock(spatial):
@@ -335,11 +335,11 @@ def test_swivelling_pulleys(spatial):
     np.testing.assert_allclose(acceleration(robot, q, qd, tau), want, rtol=1e-10, atol=1e-10)
     res = forward_dynamics(robot, q, qd, 0.05, tensions=lambda t: tau, method="RK4", step=1e-3)
     ref = forward_dynamics(robot, q, qd, 0.05, tensions=lambda t: tau, times=[0.05], **TIGHT)
-    np.testing.assert_allclose(res.pose[-1], ref.pose[-1], atol=1e-10)
+    np.testing.assert_allclose(res.poses[-1], ref.poses[-1], atol=1e-10)
     l0 = cable_lengths(robot, q) * (1 - 1e-3)
     np.testing.assert_allclose(cable_tensions(robot, q, l0), 2e4 * (1 / (1 - 1e-3) - 1), rtol=1e-9)
     el = forward_dynamics(robot, q, qd, 0.01, lengths=lambda t: l0, method="RK4", step=1e-3)
-    assert np.isfinite(el.pose).all() and (el.tensions > 0).all()
+    assert np.isfinite(el.poses).all() and (el.tensions > 0).all()
     ident = inverse_dynamics(robot, q, qd, np.zeros(6), method="qp")
     assert ident.feasible.all()
     np.testing.assert_allclose(W @ ident.tensions, required_wrench(robot, q, qd, np.zeros(6)), atol=1e-8)

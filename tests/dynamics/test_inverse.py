@@ -30,7 +30,7 @@ def sinusoid(robot, n, amplitude, omega):
 @pytest.mark.parametrize("method", ["closed-form", "improved-closed-form", "qp", "lp"])
 def test_tensions_give_the_required_wrench(method, spatial):
     t, q, qd, qdd = sinusoid(spatial, 25, [0.1, 0.05, 0.1, 0.05, 0.05, 0.1], 2.0)
-    res = inverse_dynamics(spatial, q, qd, qdd, method=method, time=t)
+    res = inverse_dynamics(spatial, q, qd, qdd, method=method, times=t)
     assert res.feasible.all(), res.failures()
     W = structure_matrix(spatial, q)
     wrench = required_wrench(spatial, q, qd, qdd)
@@ -39,7 +39,7 @@ def test_tensions_give_the_required_wrench(method, spatial):
     lo, hi = spatial.tension_bounds
     assert (res.tensions >= lo).all() and (res.tensions <= hi).all()
     assert res.first_failure is None and res.failures() == []
-    np.testing.assert_array_equal(res.time, t)
+    np.testing.assert_array_equal(res.times, t)
     assert not res.tensions.flags.writeable
 
 
@@ -74,7 +74,7 @@ def test_infeasible_samples_are_reported(spatial):
     """A fast motion needs more than 500 N in some cable: those samples are reported with
     their index, the status of the exact method and a reason, and the others are solved."""
     t, q, qd, qdd = sinusoid(spatial, 41, [0.3, 0.0, 0.3, 0.0, 0.0, 0.0], 30.0)
-    res = inverse_dynamics(spatial, q, qd, qdd, method="qp", time=t)
+    res = inverse_dynamics(spatial, q, qd, qdd, method="qp", times=t)
     bad = np.flatnonzero(~res.feasible)
     assert 0 < bad.size < len(t)
     assert res.first_failure == bad[0]
@@ -93,7 +93,7 @@ def test_infeasible_samples_are_reported(spatial):
 
 def test_plot(spatial, tmp_path):
     t, q, qd, qdd = sinusoid(spatial, 41, [0.3, 0.0, 0.3, 0.0, 0.0, 0.0], 20.0)
-    res = inverse_dynamics(spatial, q, qd, qdd, method="closed-form", time=t)
+    res = inverse_dynamics(spatial, q, qd, qdd, method="closed-form", times=t)
     ax = plot_motion_tensions(spatial, res)
     lines = [line for line in ax.get_lines() if str(line.get_gid()).startswith("tension-")]
     assert len(lines) == 8
@@ -114,7 +114,7 @@ def test_bad_input(spatial, no_inertia):
     with pytest.raises(TautError):
         inverse_dynamics(spatial, q, q, np.full((3, 6), np.inf))
     with pytest.raises(TautError, match="times"):
-        inverse_dynamics(spatial, q, q, q, time=[0, 1])
+        inverse_dynamics(spatial, q, q, q, times=[0, 1])
     with pytest.raises(UnsupportedRobotError):
         inverse_dynamics(no_inertia, q, q, q)
 
@@ -126,7 +126,7 @@ def test_compiled_closed_form_is_the_statics_closed_form(name, request):
     robot = request.getfixturevalue(name)
     amp = [0.1, 0.05, 0.1, 0.05, 0.05, 0.1][: robot.pose_size]
     t, q, qd, qdd = sinusoid(robot, 30, amp, 3.0)
-    res = inverse_dynamics(robot, q, qd, qdd, method="closed-form", time=t)
+    res = inverse_dynamics(robot, q, qd, qdd, method="closed-form", times=t)
     ref = solve_tensions(
         structure_matrix(robot, q),
         -required_wrench(robot, q, qd, qdd),
@@ -174,18 +174,39 @@ def test_progress_and_forward_plot(spatial, monkeypatch):
     assert steps == list(range(1, 21))
     ax = plot_motion_tensions(robot, res)
     marks = next(line for line in ax.get_lines() if line.get_gid() == "infeasible")
-    np.testing.assert_allclose(marks.get_xdata(), res.time)  # cable 3 is slack throughout
+    np.testing.assert_allclose(marks.get_xdata(), res.times)  # cable 3 is slack throughout
     assert "simulated motion" in ax.get_title()
 
 
 def test_one_sample_has_no_batch_axis(spatial):
     q, qd, qdd = np.full(6, 0.05), np.full(6, 0.1), np.full(6, -0.2)
-    one = inverse_dynamics(spatial, q, qd, qdd, method="qp", time=0.5)
-    batch = inverse_dynamics(spatial, q[None], qd[None], qdd[None], method="qp", time=[0.5])
+    one = inverse_dynamics(spatial, q, qd, qdd, method="qp", times=0.5)
+    batch = inverse_dynamics(spatial, q[None], qd[None], qdd[None], method="qp", times=[0.5])
     assert one.tensions.shape == (8,) and one.wrench.shape == (6,) and one.feasible.shape == ()
-    assert bool(one.feasible) and str(one.status) == "optimal" and str(one.reasons) == "" and float(one.time) == 0.5
+    assert bool(one.feasible) and str(one.status) == "optimal" and str(one.reasons) == "" and float(one.times) == 0.5
     np.testing.assert_array_equal(one.tensions, batch.tensions[0])
     assert one.failures() == [] and one.first_failure is None
     fast = np.array([0.0, 0.0, 400.0, 0.0, 0.0, 0.0])
     bad = inverse_dynamics(spatial, q, qd, fast, method="qp")
     assert bad.first_failure == 0 and bad.failures()[0][0] == 0 and "bounds" in bad.failures()[0][1]
+
+
+def test_tension_bounds_are_those_of_a_robot_with_these_bounds(spatial):
+    """``tension_bounds=(tmin, tmax)`` gives the result of the same robot whose cables carry
+    these bounds; bad bounds are a TautError."""
+    t, q, qd, qdd = sinusoid(spatial, 20, [0.1, 0.05, 0.1, 0.05, 0.05, 0.1], 2.0)
+    tmin, tmax = np.linspace(5.0, 12.0, 8), 60.0
+    tight = spatial.model_copy(
+        update={"cables": tuple(c.model_copy(update={"tension": (lo, tmax)}) for c, lo in zip(spatial.cables, tmin))}
+    )
+    for method in ("closed-form", "qp"):
+        got = inverse_dynamics(spatial, q, qd, qdd, method=method, tension_bounds=(tmin, tmax))
+        ref = inverse_dynamics(tight, q, qd, qdd, method=method)
+        np.testing.assert_array_equal(got.feasible, ref.feasible)
+        np.testing.assert_allclose(got.tensions, ref.tensions, rtol=1e-9, atol=1e-9)
+        assert (got.tensions[got.feasible] >= tmin - 1e-9).all() and (got.tensions <= tmax + 1e-9).all()
+    default = inverse_dynamics(spatial, q, qd, qdd, method="qp")
+    assert not np.array_equal(default.tensions, got.tensions)
+    for bad in ((10.0, 5.0), (-1.0, 10.0), (np.nan, 10.0), (0.0, np.zeros(3)), 7.0):
+        with pytest.raises(TautError, match="tension"):
+            inverse_dynamics(spatial, q, qd, qdd, tension_bounds=bad)

@@ -234,4 +234,4 @@ def test_forward_dynamics_of_jointed_platforms_is_refused():
     robot = adjustable()
     q = random_poses(robot, 1, np.random.default_rng(44))[0]
     with pytest.raises(UnsupportedRobotError, match="jointed"):
-        forward_dynamics(robot, q, np.zeros(q.size), 0.01, tensions=np.full(robot.n_cables, 50.0))
+        forward_dynamics(robot, q, np.zeros(q.size), 0.01, tensions=lambda t: np.full(robot.n_cables, 50.0))

@@ -13,12 +13,12 @@ def test_step_and_tensions_match_the_checked_functions(spatial, rng):
     for _ in range(5):
         q, qd, qdd = rng.uniform(-0.2, 0.2, 6), rng.normal(0, 0.5, 6), rng.normal(0, 0.5, 6)
         w = rng.normal(0, 2, 6)
-        tau, ok = lm.tensions(q, qd, qdd, w)
-        ref = inverse_dynamics(spatial, q, qd, qdd, method="closed-form", w_ext=w)
+        tau, ok = lm.tensions(q, qd, qdd, wrench=w)
+        ref = inverse_dynamics(spatial, q, qd, qdd, method="closed-form", wrench=w)
         assert ok == bool(ref.feasible)
         np.testing.assert_allclose(tau, ref.tensions, rtol=1e-12, atol=1e-12)
-        a, b = lm.step(q, qd, tau, 1e-3, w)
-        ra, rb = rk4_step(spatial, q, qd, tau, 1e-3, w)
+        a, b = lm.step(q, qd, tau, 1e-3, wrench=w)
+        ra, rb = rk4_step(spatial, q, qd, tau, 1e-3, wrench=w)
         np.testing.assert_array_equal(a, ra)
         np.testing.assert_array_equal(b, rb)
 

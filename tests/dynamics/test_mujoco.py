@@ -39,12 +39,12 @@ def test_same_motion_as_mujoco(spatial):
     mujoco.mj_forward(model, data)
     body = model.body("platform").id
     worst_p, worst_R, moved = 0.0, 0.0, 0.0
-    for k, t in enumerate(taut_run.time):
-        q = taut_run.pose[k]
+    for k, t in enumerate(taut_run.times):
+        q = taut_run.poses[k]
         worst_p = max(worst_p, np.abs(data.xpos[body] - q[:3]).max())
         worst_R = max(worst_R, np.abs(data.xmat[body].reshape(3, 3) - rotation_matrix(q[3:6])).max())
         moved = max(moved, np.abs(q[:3] - q0[:3]).max())
-        if k + 1 < len(taut_run.time):
+        if k + 1 < len(taut_run.times):
             data.ctrl[:] = tensions(t)
             mujoco.mj_step(model, data)
     assert moved > 0.05  # a real motion, not a platform at rest

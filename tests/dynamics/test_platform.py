@@ -220,14 +220,14 @@ def test_acceleration_solves_the_lagrange_form(name, request, random_state, rng)
     QD = np.array([s[1] for s in states])
     tau = rng.uniform(1, 20, (5, robot.n_cables))
     w = rng.normal(0, 3, (5, robot.pose_size))
-    A = acceleration(robot, Q, QD, tau, w)
+    A = acceleration(robot, Q, QD, tau, wrench=w)
     for k in range(5):
         M = mass_matrix(robot, Q[k])
         rhs = generalized_forces(robot, Q[k], structure_matrix(robot, Q[k]) @ tau[k] + w[k]) - bias_forces(
             robot, Q[k], QD[k]
         )
         np.testing.assert_allclose(A[k], np.linalg.solve(M, rhs), rtol=1e-10, atol=1e-10)
-        np.testing.assert_allclose(acceleration(robot, Q[k], QD[k], tau[k], w[k]), A[k], rtol=1e-13, atol=1e-13)
+        np.testing.assert_allclose(acceleration(robot, Q[k], QD[k], tau[k], wrench=w[k]), A[k], rtol=1e-13, atol=1e-13)
 
 
 @pytest.mark.parametrize("name", [*ROBOTS, "loaded"])

@@ -177,7 +177,7 @@ def test_under_constrained_robot_static():
 def test_grid_defaults_and_bounds():
     b = default_bounds(PLANAR)
     np.testing.assert_allclose(b, [[-0.96, 0.96], [-0.96, 0.96]])
-    g = position_grid(SPATIAL, 5)
+    g = position_grid(SPATIAL, resolution=5)
     assert g.shape == (5, 5, 5) and g.poses().shape == (125, 6)
     assert np.all(g.poses()[:, 3:] == 0)
     res = evaluate_workspace(PLANAR, "static", grid=[(-0.5, 0.5, 5), (-0.2, 0.2, 3)], orientation=[0.1])
@@ -384,7 +384,7 @@ def test_a_grid_too_large_to_list_its_poses_still_plots():
     matplotlib.use("Agg")
     from taut.viz import plot_workspace
 
-    grid = position_grid(SPATIAL, 300, orientation=[0.0, 0.1, 0.0])
+    grid = position_grid(SPATIAL, resolution=300, orientation=[0.0, 0.1, 0.0])
     X, Y, Z = np.meshgrid(*grid.axes, indexing="ij", sparse=True)
     box = ((np.abs(X) < 0.5) & (np.abs(Y) < 0.3) & (np.abs(Z) < 0.5)).ravel()  # bool only: 27 MB
     res = WorkspaceResult(SPATIAL.name, "static", box, grid.axes, grid.shape, 0.0, ("x", "y", "z"), grid)

@@ -156,10 +156,10 @@ def run(ns: argparse.Namespace) -> int:
         else [{"start": a, "end": None if math.isinf(b) else b, "wrench": list(w)} for a, b, w in wd.steps],
         "method": ns.method,
         "pose_names": list(res.pose_names),
-        "samples": int(res.time.size),
+        "samples": int(res.times.size),
         "updates": res.updates,
-        "time": res.time.tolist(),
-        "pose": res.pose.tolist(),
+        "time": res.times.tolist(),
+        "pose": res.poses.tolist(),
         "reference": res.reference.tolist(),
         "tensions": res.tensions.tolist(),
         "tracking_error_max": res.tracking_error_max.tolist(),
@@ -172,7 +172,7 @@ def run(ns: argparse.Namespace) -> int:
         "slack_events": res.slack_events,
         "distribution_failures": res.failures,
         "first_failure_time": first,
-        "feasible": res.feasible,
+        "feasible": res.all_feasible,
     }
     if out is not None:
         n = robot.n_cables
@@ -185,9 +185,9 @@ def run(ns: argparse.Namespace) -> int:
         ]
         with written(out, "--out") as tmp, open(tmp, "w") as fh:
             fh.write(",".join(head) + "\n")
-            for k in range(res.time.size):
-                vals = [res.time[k], *res.pose[k], *res.reference[k], *res.tensions[k]]
-                fh.write(",".join(f"{v:.9g}" for v in vals) + f",{int(res.admissible[k])}\n")
+            for k in range(res.times.size):
+                vals = [res.times[k], *res.poses[k], *res.reference[k], *res.tensions[k]]
+                fh.write(",".join(f"{v:.9g}" for v in vals) + f",{int(res.feasible[k])}\n")
         data["out"] = str(out)
     if plot is not None:
         from taut.viz import plot_control

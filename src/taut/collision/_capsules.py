@@ -39,6 +39,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from taut._results import Result
+from taut.errors import TautError
 from taut.kinematics import anchors_at, body_frames, cable_paths
 from taut.model import Robot
 
@@ -54,12 +56,43 @@ ON_TOL = 1e-9
 
 
 @dataclass(frozen=True)
-class CapsuleModel:
-    """The capsules of a robot and the pairs to check.
+class CapsuleModel(Result):
+    """The capsules of a robot and the pairs to check (:func:`capsule_model`).
 
-    ``pairs (P, 2)`` are 0-based capsule indices ``i < j`` (``i`` always a cable);
-    ``shared (P, 2)`` flags a common exit point / anchor of a cable–cable pair and
-    ``cut (P,)`` is the cut-back length ``c`` used there."""
+    Capsule ``c`` has the 0-based index ``c``: the cables first, then the body capsules.
+
+    Attributes
+    ----------
+    names : tuple of str
+        Capsule names (``"cable 1"`` … then the body capsules' names).
+    radii : ndarray, shape (C,)
+        Capsule radii ``ρ`` [m].
+    body : ndarray of int, shape (C,)
+        The body of each body capsule (0 the platform), ``-1`` for cables.
+    local : ndarray, shape (K, 2, 3)
+        End points of the body capsules in their body frames [m].
+    n_cables : int
+    pairs : ndarray of int, shape (P, 2)
+        The pairs checked, capsule indices ``i < j`` (``i`` always a cable).
+    shared : ndarray of bool, shape (P, 2)
+        A common exit point / anchor of a cable–cable pair.
+    cut : ndarray, shape (P,)
+        The cut-back length ``c`` [m] at a shared end.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.2, §3.4.
+       (docs/references.bib: lieskovsky2020)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.collision import capsule_model
+    >>> model = capsule_model(example("adjustable-8cable"))
+    >>> model.n_capsules, model.names[8], len(model.pairs)
+    (17, 'segment 9 (B1-B2)', 84)
+    """
 
     names: tuple[str, ...]
     radii: np.ndarray  #: ``(C,)``
@@ -72,6 +105,7 @@ class CapsuleModel:
 
     @property
     def n_capsules(self) -> int:
+        """The number of capsules ``C``."""
         return len(self.names)
 
 
@@ -83,13 +117,32 @@ def _point_on_segment(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> bool:
 
 
 def capsule_model(robot: Robot) -> CapsuleModel:
-    """The capsule model of ``robot``: capsules, radii and the pairs to check.
+    """The capsule model of a robot: one capsule per cable, those of the bodies, and the pairs
+    to check (cable–cable and cable–body, §3.4).
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    CapsuleModel
 
     References
     ----------
     .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
        Bachelor thesis, Czech Technical University in Prague, 2020, §3.1.2, §3.4.
        (docs/references.bib: lieskovsky2020)
+
+    Examples
+    --------
+    The planar robot has four cable capsules and no body capsule: six cable pairs.
+
+    >>> from taut.model import example
+    >>> from taut.collision import capsule_model
+    >>> model = capsule_model(example("planar-4cable"))
+    >>> model.n_capsules, model.pairs.tolist()
+    (4, [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]])
     """
     n = robot.n_cables
     caps = robot.body_capsules
@@ -129,18 +182,61 @@ def capsule_model(robot: Robot) -> CapsuleModel:
     )
 
 
+def checked_model(robot: Robot, model: object) -> CapsuleModel:
+    """``model`` if it is a :class:`CapsuleModel` of a robot with ``robot``'s cables and
+    capsules, else a :class:`~taut.errors.TautError`."""
+    if not isinstance(model, CapsuleModel):
+        raise TautError(f"model must be a CapsuleModel (capsule_model(robot)), got {type(model).__name__}")
+    if model.n_cables != robot.n_cables or model.n_capsules != robot.n_cables + len(robot.body_capsules):
+        raise TautError(
+            f"{robot.name}: the capsule model has {model.n_cables} cables and {model.n_capsules} capsules, "
+            f"the robot {robot.n_cables} and {robot.n_cables + len(robot.body_capsules)}"
+        )
+    return model
+
+
 def capsule_segments(
-    robot: Robot, poses: np.ndarray, model: CapsuleModel | None = None
+    robot: Robot, poses: np.ndarray, *, model: CapsuleModel | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
-    """End points ``A, B`` of every capsule at each pose, ``(N, C, 3)`` each (planar robots
-    get ``z = 0``).  Cable capsules run from the exit point (``A``; the tangent point of a
-    swivelling pulley) to the anchor (``B``).
-    ``poses`` must already be validated (:func:`taut.kinematics.as_poses`)."""
-    model = capsule_model(robot) if model is None else model
+    """The end points of every capsule at checked poses.
+
+    Cable capsules run from the exit point (``A``; the tangent point of a swivelling pulley)
+    to the anchor (``B``).
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : ndarray, shape (N, pose_size)
+        Poses already checked by :func:`taut.kinematics.as_poses`.
+    model : CapsuleModel, optional
+        ``robot``'s capsule model; default :func:`capsule_model`.
+
+    Returns
+    -------
+    A, B : ndarray, shape (N, C, 3)
+        The end points [m] (planar robots get ``z = 0``).
+
+    Raises
+    ------
+    PoseError
+        ``poses`` is not an ``(N, pose_size)`` array.
+    TautError
+        A model of another robot.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.collision import capsule_segments
+    >>> A, B = capsule_segments(example("planar-4cable"), np.zeros((1, 3)))
+    >>> A[0, 0], B[0, 0]
+    (array([-1., -1.,  0.]), array([-0.1 , -0.05,  0.  ]))
+    """
+    model = capsule_model(robot) if model is None else checked_model(robot, model)
+    b = anchors_at(robot, poses)  # refuses what is not an (N, pose_size) array
     N, n, d = poses.shape[0], robot.n_cables, robot.dimension
     A = np.zeros((N, model.n_capsules, 3))
     B = np.zeros((N, model.n_capsules, 3))
-    b = anchors_at(robot, poses)
     A[:, :n, :d] = cable_paths(robot, b)[1] if robot.swivel_cables else robot.exits
     B[:, :n, :d] = b
     if model.n_capsules > n:

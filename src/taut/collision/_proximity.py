@@ -26,7 +26,8 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
-from taut.collision._capsules import SHARED_END_MIN, CapsuleModel, capsule_model, capsule_segments
+from taut._results import Result
+from taut.collision._capsules import SHARED_END_MIN, CapsuleModel, capsule_model, capsule_segments, checked_model
 from taut.geometry import segment_distance_scalar
 from taut.kinematics import as_poses
 from taut.model import Robot
@@ -65,8 +66,31 @@ def _proximity_kernel(
 
 
 @dataclass(frozen=True)
-class ProximityResult:
-    """Proximities of the capsule pairs of ``model`` at ``N`` poses."""
+class ProximityResult(Result):
+    """Proximities of the capsule pairs of ``model`` at ``N`` poses (:func:`proximity`).
+
+    Attributes
+    ----------
+    model : CapsuleModel
+    distances : ndarray, shape (N, P)
+        Proximities ``δ`` of ``model.pairs`` [m] (segment–segment distances).
+    clearances : ndarray, shape (N, P)
+        ``ε = δ − (ρ_i + ρ_j)`` [m]: a pair collides where ``ε ≤ 0``.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.2, §3.4.
+       (docs/references.bib: lieskovsky2020)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.collision import proximity
+    >>> res = proximity(example("planar-4cable"), [0.0, 0.0, 0.0])
+    >>> res.interference_free, res.collisions(0)
+    (array([ True]), [])
+    """
 
     model: CapsuleModel
     distances: np.ndarray  #: ``(N, P)`` proximities ``δ`` of ``model.pairs``
@@ -90,7 +114,18 @@ class ProximityResult:
         return self.clearances.min(axis=1)
 
     def collisions(self, k: int) -> list[tuple[int, int]]:
-        """Colliding pairs at pose ``k`` as 0-based capsule indices ``(i, j)``."""
+        """The colliding pairs at pose ``k``.
+
+        Parameters
+        ----------
+        k : int
+            A 0-based pose index.
+
+        Returns
+        -------
+        list of tuple of int
+            0-based capsule indices ``(i, j)``.
+        """
         return [(int(self.model.pairs[p, 0]), int(self.model.pairs[p, 1])) for p in np.flatnonzero(self.colliding[k])]
 
     def _matrix(self, values: np.ndarray) -> np.ndarray:
@@ -110,19 +145,47 @@ class ProximityResult:
         return self._matrix(self.clearances)
 
 
-def proximity(robot: Robot, poses: npt.ArrayLike, model: CapsuleModel | None = None) -> ProximityResult:
-    """Proximities and clearances of all checked capsule pairs at each pose (``(N, pose_size)``
-    or one pose).  Raises :class:`~taut.errors.PoseError` for invalid poses.
+def proximity(robot: Robot, poses: npt.ArrayLike, *, model: CapsuleModel | None = None) -> ProximityResult:
+    """Proximities and clearances of every checked capsule pair at each pose.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+    model : CapsuleModel, optional
+        ``robot``'s capsule model; default :func:`capsule_model`.
+
+    Returns
+    -------
+    ProximityResult
+        Always with the batch axis (``N = 1`` for one pose).
+
+    Raises
+    ------
+    PoseError
+        Poses that :func:`~taut.kinematics.as_poses` refuses.
+    TautError
+        A model of another robot.
 
     References
     ----------
     .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
        Bachelor thesis, Czech Technical University in Prague, 2020, §3.4, Eq. 3.4.1.
        (docs/references.bib: lieskovsky2020)
+
+    Examples
+    --------
+    At the centre of the planar robot cables 1 and 2 (indices 0 and 1) are 0.2 m apart, the
+    distance of their anchors:
+
+    >>> from taut.model import example
+    >>> from taut.collision import proximity
+    >>> proximity(example("planar-4cable"), [0.0, 0.0, 0.0]).distances.round(3)
+    array([[0.2  , 0.224, 0.1  , 0.1  , 0.224, 0.2  ]])
     """
     arr, _ = as_poses(robot, poses)
-    model = capsule_model(robot) if model is None else model
-    A, B = capsule_segments(robot, arr, model)
+    model = capsule_model(robot) if model is None else checked_model(robot, model)
+    A, B = capsule_segments(robot, arr, model=model)
     dist = np.empty((arr.shape[0], len(model.pairs)))
     _proximity_kernel(A, B, model.pairs, model.shared, model.cut, dist)
     rho = model.radii[model.pairs[:, 0]] + model.radii[model.pairs[:, 1]]

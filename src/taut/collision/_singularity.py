@@ -36,6 +36,8 @@ References
 
 from __future__ import annotations
 
+import numbers
+
 import numpy as np
 import numpy.typing as npt
 
@@ -52,18 +54,46 @@ LP_TOL = 1e-9
 RANK_TOL = 1e-10
 
 
-def jacobian_singular(J: npt.ArrayLike, tol: float = JACOBIAN_TOL) -> tuple[np.ndarray, np.ndarray]:
-    """Jacobian singularity of ``J (N, rows, cols)``: ``(singular (N,), σ_min/σ_max (N,))``.
+def jacobian_singular(J: npt.ArrayLike, *, tol: float = JACOBIAN_TOL) -> tuple[np.ndarray, np.ndarray]:
+    """Jacobian singularity: where the inverse-kinematics Jacobian loses rank.
+
+    Singular iff ``σ_min ≤ tol · σ_max``, and always when ``J`` has fewer rows than columns
+    (fewer actuators than degrees of freedom).
+
+    Parameters
+    ----------
+    J : array_like, shape (N, rows, cols) or (rows, cols)
+        Jacobians (:func:`taut.kinematics.actuator_jacobian`).
+    tol : float, optional
+        The ratio ``σ_min / σ_max`` at or below which ``J`` is singular, in ``[0, 1)``.
+
+    Returns
+    -------
+    singular : ndarray of bool, shape (N,)
+    ratio : ndarray, shape (N,)
+        ``σ_min / σ_max`` (0 with fewer rows than columns).
+
+    Raises
+    ------
+    TautError
+        ``J`` not a finite matrix or array of matrices, a bad ``tol``.
 
     References
     ----------
     .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
        Bachelor thesis, Czech Technical University in Prague, 2020, §2.3.1, Eq. 2.3.1.
        (docs/references.bib: lieskovsky2020)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.collision import jacobian_singular
+    >>> jacobian_singular([np.eye(3), np.diag([1.0, 1.0, 1e-9])])
+    (array([False,  True]), array([1.e+00, 1.e-09]))
     """
-    J = np.asarray(J, dtype=float)
-    if J.ndim == 2:
-        J = J[None]
+    J = _matrices(J, "J")
+    if isinstance(tol, bool) or not isinstance(tol, numbers.Real) or not 0 <= tol < 1:
+        raise TautError(f"tol must be a number in [0, 1) (a ratio of singular values), got {tol!r}")
     rows, cols = J.shape[1:]
     if rows < cols:
         return np.ones(J.shape[0], bool), np.zeros(J.shape[0])
@@ -73,13 +103,48 @@ def jacobian_singular(J: npt.ArrayLike, tol: float = JACOBIAN_TOL) -> tuple[np.n
 
 
 def positive_span_lp(W: npt.ArrayLike) -> np.ndarray:
-    """Reference positive-span test (one LP per matrix): ``(N,)`` bool, see the module
-    docstring."""
+    """The reference positive-span test: one linear program (HiGHS) per matrix.
+
+    The columns (scaled to unit length) positively span ``R^m`` iff ``rank W = m`` and some
+    ``τ > 0`` has ``W τ = 0`` (Goldman & Tucker): the LP maximises the smallest tension ``t``
+    subject to ``W τ = 0``, ``t ≤ τ_i ≤ 1``.
+
+    Parameters
+    ----------
+    W : array_like, shape (N, m, n) or (m, n)
+        Structure matrices.
+
+    Returns
+    -------
+    ndarray of bool, shape (N,)
+        True where the columns positively span ``R^m`` (``t* > LP_TOL`` and
+        ``σ_min(W) > RANK_TOL σ_max(W)``).
+
+    Raises
+    ------
+    TautError
+        ``W`` not a finite matrix or array of matrices.
+
+    References
+    ----------
+    .. [1] X. Diao, O. Ma, "A method of verifying force-closure condition for general cable
+       manipulators with seven cables", Mechanism and Machine Theory 42, 2007.
+       (docs/references.bib: diao2007)
+
+    Examples
+    --------
+    At the centre of the planar robot the cables positively span the plane's wrenches; near
+    an exit they do not:
+
+    >>> from taut.model import example
+    >>> from taut.kinematics import structure_matrix
+    >>> from taut.collision import positive_span_lp
+    >>> positive_span_lp(structure_matrix(example("planar-4cable"), [[0, 0, 0], [0.9, 0.9, 0]]))
+    array([ True, False])
+    """
     import highspy
 
-    W = np.asarray(W, dtype=float)
-    if W.ndim == 2:
-        W = W[None]
+    W = _matrices(W, "W")
     N, m, n = W.shape
     out = np.zeros(N, bool)
     from taut.statics import QuietHighs
@@ -124,10 +189,27 @@ def positive_span_lp(W: npt.ArrayLike) -> np.ndarray:
     return out
 
 
-def force_closure_singular(W: npt.ArrayLike, method: str = "fast") -> np.ndarray:
-    """Force-closure singularity of the structure matrices ``W (N, m, n)``: ``(N,)`` bool,
-    true where the columns do not positively span ``R^m``.  ``method``: ``"fast"``
-    (vectorised, for grids) or ``"lp"`` (reference).
+def force_closure_singular(W: npt.ArrayLike, *, method: str = "fast") -> np.ndarray:
+    """Force-closure singularity: where the cables do not positively span the wrench space.
+
+    Parameters
+    ----------
+    W : array_like, shape (N, m, n) or (m, n)
+        Structure matrices.
+    method : {"fast", "lp"}, optional
+        ``"fast"``: the vectorised hyperplane test :func:`taut.statics.wrench_closure` (for
+        grids); ``"lp"``: the reference, :func:`positive_span_lp`.
+
+    Returns
+    -------
+    ndarray of bool, shape (N,)
+        True where the columns do not positively span ``R^m`` (configurations on the
+        boundary count as singular).
+
+    Raises
+    ------
+    TautError
+        ``W`` not a finite matrix or array of matrices, an unknown method.
 
     References
     ----------
@@ -137,9 +219,39 @@ def force_closure_singular(W: npt.ArrayLike, method: str = "fast") -> np.ndarray
     .. [2] X. Diao, O. Ma, "A method of verifying force-closure condition for general cable
        manipulators with seven cables", Mechanism and Machine Theory 42, 2007.
        (docs/references.bib: diao2007)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.kinematics import structure_matrix
+    >>> from taut.collision import force_closure_singular
+    >>> force_closure_singular(structure_matrix(example("planar-4cable"), [[0, 0, 0], [0.9, 0.9, 0]]))
+    array([False,  True])
     """
-    if method == "fast":
-        return ~wrench_closure(W)
+    check_method(method)
     if method == "lp":
         return ~positive_span_lp(W)
-    raise TautError(f"unknown force-closure method {method!r}; expected 'fast' or 'lp'")
+    return ~wrench_closure(_matrices(W, "W"))
+
+
+#: The methods of :func:`force_closure_singular`.
+METHODS = ("fast", "lp")
+
+
+def check_method(method: object) -> None:
+    """Raise :class:`TautError` unless ``method`` is one of :data:`METHODS`."""
+    if not isinstance(method, str) or method not in METHODS:
+        raise TautError(f"unknown force-closure method {method!r}; expected 'fast' or 'lp'")
+
+
+def _matrices(X: npt.ArrayLike, what: str) -> np.ndarray:
+    """``X`` as a finite float array ``(N, rows, cols)`` (one matrix gets the batch axis)."""
+    try:
+        arr = np.asarray(X, dtype=float)
+    except (TypeError, ValueError):
+        raise TautError(f"{what} must be a matrix or an array of matrices of numbers") from None
+    if arr.ndim == 2:
+        arr = arr[None]
+    if arr.ndim != 3 or not np.isfinite(arr).all():
+        raise TautError(f"{what} must be finite, of shape (rows, cols) or (N, rows, cols), got shape {arr.shape}")
+    return arr

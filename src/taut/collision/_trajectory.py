@@ -32,16 +32,19 @@ References
 from __future__ import annotations
 
 import json
+import numbers
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result, jsonable
 from taut.collision._capsules import CapsuleModel, capsule_model, capsule_segments
 from taut.collision._proximity import ProximityResult, proximity
-from taut.collision._singularity import JACOBIAN_TOL, force_closure_singular, jacobian_singular
+from taut.collision._singularity import JACOBIAN_TOL, check_method, force_closure_singular, jacobian_singular
 from taut.errors import PoseError, TautError
 from taut.kinematics import CABLE_OK, actuator_jacobian, as_poses, ik_status
 from taut.model import Robot
@@ -65,10 +68,49 @@ def _fill(robot: Robot, waypoints: np.ndarray, what: str) -> np.ndarray:
 
 
 def straight_moves(
-    robot: Robot, waypoints: npt.ArrayLike, steps: Iterable[int] | None = None, what: str = "trajectory"
+    robot: Robot, waypoints: npt.ArrayLike, steps: Iterable[int] | None = None, *, what: str = "trajectory"
 ) -> np.ndarray:
-    """Poses ``(1 + Σ steps, pose_size)`` along straight moves between ``waypoints``, with
-    ``steps[k]`` increments on move ``k`` (default :data:`DEFAULT_STEPS` each)."""
+    """Poses along straight moves between waypoints.
+
+    Parameters
+    ----------
+    robot : Robot
+    waypoints : array_like, shape (K, pose_size) or (K, d)
+        Waypoints; one of ``d`` coordinates gives a position and takes the rest of the pose
+        from the robot's first reference pose.
+    steps : sequence of int, optional
+        Increments of each move (``K − 1`` positive integers); default
+        :data:`DEFAULT_STEPS` (100) each.
+    what : str, optional
+        What the waypoints are, for messages.
+
+    Returns
+    -------
+    ndarray, shape (1 + Σ steps, pose_size)
+
+    Raises
+    ------
+    PoseError
+        Waypoints that are not numbers or of the wrong width, no waypoint, bad ``steps``, a
+        pose outside the joint limits.
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §4.2.
+       (docs/references.bib: lieskovsky2020)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.collision import straight_moves
+    >>> straight_moves(example("planar-4cable"), [[0, 0, 0], [0.2, 0.1, 0]], [4])
+    array([[0.   , 0.   , 0.   ],
+           [0.05 , 0.025, 0.   ],
+           [0.1  , 0.05 , 0.   ],
+           [0.15 , 0.075, 0.   ],
+           [0.2  , 0.1  , 0.   ]])
+    """
     try:
         wp = np.asarray(waypoints, dtype=float)
     except (TypeError, ValueError):
@@ -87,10 +129,35 @@ def straight_moves(
 
 
 def trajectory_poses(robot: Robot, name: str) -> np.ndarray:
-    """The poses of the robot's named trajectory (e.g. ``sim-c`` of ``adjustable-8cable``):
-    :func:`straight_moves` through its waypoints."""
+    """The poses of one of the robot's named trajectories (``trajectories:`` in its file).
+
+    Parameters
+    ----------
+    robot : Robot
+    name : str
+        E.g. ``sim-c`` of ``adjustable-8cable`` (Lieskovský 2020, §4.2).
+
+    Returns
+    -------
+    ndarray, shape (1 + Σ steps, pose_size)
+        Sampled by :func:`straight_moves` with the trajectory's ``steps``.
+
+    Raises
+    ------
+    TrajectoryError
+        No trajectory of that name (:func:`taut.motion.robot_trajectory`).
+
+    Examples
+    --------
+    Simulation a joins three waypoints by 100 increments each: ``X_1 … X_201``.
+
+    >>> from taut.model import example
+    >>> from taut.collision import trajectory_poses
+    >>> trajectory_poses(example("adjustable-8cable"), "sim-a").shape
+    (201, 7)
+    """
     t = robot_trajectory(robot, name)
-    return straight_moves(robot, t.waypoints, t.steps, f"trajectory {name}")
+    return straight_moves(robot, t.waypoints, t.steps, what=f"trajectory {name}")
 
 
 def _csv(text: str, robot: Robot, source: str) -> np.ndarray:
@@ -120,8 +187,43 @@ def _csv(text: str, robot: Robot, source: str) -> np.ndarray:
 
 
 def load_trajectory(robot: Robot, path: str | Path) -> np.ndarray:
-    """Poses from a trajectory file (CSV, YAML or JSON; formats in the module docstring).
-    Raises :class:`PoseError` / :class:`TautError` naming the file for bad content."""
+    """The poses of a trajectory file.
+
+    CSV: one pose per line, an optional header of the pose's coordinate names, ``#``
+    comments; YAML or JSON: a list of poses, a mapping with ``poses``, or a mapping with
+    ``waypoints`` and optional ``steps`` (sampled by :func:`straight_moves`).
+
+    Parameters
+    ----------
+    robot : Robot
+    path : str or pathlib.Path
+        A ``.csv``, ``.json`` or YAML file.
+
+    Returns
+    -------
+    ndarray, shape (N, pose_size)
+
+    Raises
+    ------
+    TautError
+        A file that cannot be read or parsed, or of another structure.
+    PoseError
+        Poses that are not numbers, of the wrong width or outside the joint limits; the
+        message names the file.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from taut.model import example
+    >>> from taut.collision import load_trajectory
+    >>> folder = tempfile.TemporaryDirectory()
+    >>> path = pathlib.Path(folder.name) / "moves.csv"
+    >>> _ = path.write_text("x,y,theta\\n0,0,0\\n0.1,0.2,0.05\\n")
+    >>> load_trajectory(example("planar-4cable"), path)
+    array([[0.  , 0.  , 0.  ],
+           [0.1 , 0.2 , 0.05]])
+    >>> folder.cleanup()
+    """
     path = Path(path)
     source = str(path)
     try:
@@ -148,7 +250,7 @@ def load_trajectory(robot: Robot, path: str | Path) -> np.ndarray:
     if isinstance(data, dict) and "poses" in data:
         data = data["poses"]
     if isinstance(data, dict) and "waypoints" in data:
-        return straight_moves(robot, data["waypoints"], data.get("steps"), source)
+        return straight_moves(robot, data["waypoints"], data.get("steps"), what=source)
     if not isinstance(data, list) or not data:
         raise TautError(f"{source}: expected a list of poses, or a mapping with 'poses' or 'waypoints'")
     try:
@@ -167,8 +269,35 @@ def load_trajectory(robot: Robot, path: str | Path) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class CheckResult:
-    """Collision and singularity verdicts at ``N`` poses (index 0 = step 1)."""
+class CheckResult(Result):
+    """Collision and singularity verdicts at ``N`` poses (:func:`check_poses`; index 0 is
+    step 1 of the sources).
+
+    Attributes
+    ----------
+    poses : ndarray, shape (N, pose_size)
+    proximity : ProximityResult
+        The capsule proximities and clearances.
+    jacobian_singular : ndarray of bool, shape (N,)
+    jacobian_ratio : ndarray, shape (N,)
+        ``σ_min / σ_max`` of the Jacobian.
+    force_closure_singular : ndarray of bool, shape (N,)
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §4.2.
+       (docs/references.bib: lieskovsky2020)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.collision import check_poses, trajectory_poses
+    >>> robot = example("adjustable-8cable")
+    >>> res = check_poses(robot, trajectory_poses(robot, "sim-b")[120:130])
+    >>> res.steps()[5]["force_closure_singular"], sorted(res.as_dict())
+    (True, ['capsules', 'jacobian_ratio', 'poses', 'steps'])
+    """
 
     poses: np.ndarray  #: ``(N, pose_size)``
     proximity: ProximityResult
@@ -178,10 +307,12 @@ class CheckResult:
 
     @property
     def model(self) -> CapsuleModel:
+        """The capsule model."""
         return self.proximity.model
 
     @property
     def collides(self) -> np.ndarray:
+        """``(N,)`` bool: some capsule pair collides."""
         return ~self.proximity.interference_free
 
     @property
@@ -190,13 +321,36 @@ class CheckResult:
         return self.collides | self.jacobian_singular | self.force_closure_singular
 
     def capsules(self, robot: Robot, k: int) -> tuple[np.ndarray, np.ndarray]:
-        """End points ``A, B`` ``(C, 3)`` of every capsule of :attr:`model` at pose ``k``
-        (0-based) of ``robot``, the robot that was checked (:func:`capsule_segments`)."""
-        A, B = capsule_segments(robot, self.poses[k : k + 1], self.model)
+        """The end points of every capsule of :attr:`model` at one checked pose.
+
+        Parameters
+        ----------
+        robot : Robot
+            The robot that was checked.
+        k : int
+            The pose's 0-based index.
+
+        Returns
+        -------
+        A, B : ndarray, shape (C, 3)
+            The capsules' end points (:func:`capsule_segments`).
+        """
+        A, B = capsule_segments(robot, self.poses[k : k + 1], model=self.model)
         return A[0], B[0]
 
     def first(self, flags: np.ndarray) -> int | None:
-        """0-based index of the first pose whose flag is true, or None."""
+        """The first pose whose flag is true.
+
+        Parameters
+        ----------
+        flags : ndarray of bool, shape (N,)
+            E.g. :attr:`problems`, :attr:`collides` or :attr:`force_closure_singular`.
+
+        Returns
+        -------
+        int or None
+            Its 0-based index, or None.
+        """
         idx = np.flatnonzero(flags)
         return int(idx[0]) if idx.size else None
 
@@ -216,32 +370,92 @@ class CheckResult:
             for k in range(len(self.poses))
         ]
 
+    def as_dict(self) -> dict[str, Any]:
+        """The result in plain JSON types: the ``capsules``' names (0-based, cables first),
+        the ``poses``, the ``jacobian_ratio`` of each pose and its record of :meth:`steps`
+        (0-based pose and capsule indices).
+
+        Returns
+        -------
+        dict
+            ``json.dumps(result.as_dict(), allow_nan=False)`` accepts it.
+        """
+        return jsonable(
+            {
+                "capsules": self.model.names,
+                "poses": self.poses,
+                "jacobian_ratio": self.jacobian_ratio,
+                "steps": self.steps(),
+            }
+        )
+
 
 def check_poses(
     robot: Robot,
     poses: npt.ArrayLike,
     *,
-    jacobian_tol: float = JACOBIAN_TOL,
+    tol: float = JACOBIAN_TOL,
     method: str = "fast",
     model: CapsuleModel | None = None,
 ) -> CheckResult:
-    """Self-collision and singularity check at each of the poses ``(N, pose_size)``.
+    """Self-collision and singularity check at each pose of a trajectory.
+
+    At every pose: the colliding capsule pairs (§3.4), the smallest clearance, and the
+    Jacobian and force-closure singularities (§2.3.1).  Poses where a cable has no direction
+    are singular.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+    tol : float, optional
+        The Jacobian singularity ratio (:func:`jacobian_singular`).
+    method : {"fast", "lp"}, optional
+        The force-closure test (:func:`force_closure_singular`).
+    model : CapsuleModel, optional
+        ``robot``'s capsule model; default :func:`capsule_model`.
+
+    Returns
+    -------
+    CheckResult
+
+    Raises
+    ------
+    PoseError
+        Poses that :func:`~taut.kinematics.as_poses` refuses.
+    TautError
+        An unknown method, a bad ``tol``, a model of another robot.
 
     References
     ----------
     .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
        Bachelor thesis, Czech Technical University in Prague, 2020, §4.2.
        (docs/references.bib: lieskovsky2020)
+
+    Examples
+    --------
+    Simulation b of the adjustable platform reaches a force-closure singularity at step 126,
+    where four cables lie in one plane:
+
+    >>> from taut.model import example
+    >>> from taut.collision import check_poses, trajectory_poses
+    >>> robot = example("adjustable-8cable")
+    >>> res = check_poses(robot, trajectory_poses(robot, "sim-b"))
+    >>> res.first(res.force_closure_singular) + 1, res.first(res.collides)
+    (126, None)
     """
+    check_method(method)
+    if isinstance(tol, bool) or not isinstance(tol, numbers.Real) or not 0 <= tol < 1:
+        raise TautError(f"tol must be a number in [0, 1) (a ratio of singular values), got {tol!r}")
     arr, _ = as_poses(robot, poses)
     model = capsule_model(robot) if model is None else model
-    prox = proximity(robot, arr, model)
+    prox = proximity(robot, arr, model=model)
     N = arr.shape[0]
     jac, ratio, fc = np.ones(N, bool), np.zeros(N), np.ones(N, bool)
     ok = (ik_status(robot, arr)[1] == CABLE_OK).all(axis=1)
     if ok.any():
         J = actuator_jacobian(robot, arr[ok])
-        jac[ok], ratio[ok] = jacobian_singular(J, jacobian_tol)
+        jac[ok], ratio[ok] = jacobian_singular(J, tol=tol)
         W = -np.swapaxes(J[:, : robot.n_cables, : robot.wrench_dim], 1, 2)  # J = [−Wᵀ, …]
-        fc[ok] = force_closure_singular(W, method)
+        fc[ok] = force_closure_singular(W, method=method)
     return CheckResult(arr, prox, jac, ratio, fc)

@@ -30,6 +30,7 @@ if TYPE_CHECKING:
     from taut.dynamics._inverse import InverseDynamicsResult, inverse_dynamics, required_wrench
     from taut.dynamics._loop import LoopModel, loop_model
     from taut.dynamics._platform import (
+        PlatformDynamics,
         bias_forces,
         coriolis_matrix,
         generalized_forces,
@@ -59,6 +60,7 @@ _LAZY = {
     "required_wrench": "taut.dynamics._inverse",
     "LoopModel": "taut.dynamics._loop",
     "loop_model": "taut.dynamics._loop",
+    "PlatformDynamics": "taut.dynamics._platform",
     "bias_forces": "taut.dynamics._platform",
     "coriolis_matrix": "taut.dynamics._platform",
     "generalized_forces": "taut.dynamics._platform",
@@ -77,6 +79,7 @@ __all__ = [
     "IntegrationError",
     "InverseDynamicsResult",
     "LoopModel",
+    "PlatformDynamics",
     "WrenchSteps",
     "acceleration",
     "bias_forces",

@@ -24,12 +24,22 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from time import perf_counter
 
 import numpy as np
 import numpy.typing as npt
 
-from taut.dynamics._platform import CONVENTION_FACTORS, SPATIAL, PlatformDynamics, as_rates, platform_dynamics
+from taut._results import Result
+from taut.dynamics._platform import (
+    CONVENTION_FACTORS,
+    SPATIAL,
+    PlatformDynamics,
+    as_rates,
+    check_callable,
+    platform_dynamics,
+    positive,
+)
 from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError
 from taut.kinematics import as_poses, robot_stiffness, tension_from_stretch
 from taut.model import MAX_MAGNITUDE, Robot
@@ -44,26 +54,68 @@ __all__ = [
     "forward_dynamics",
 ]
 
-#: Methods of :func:`forward_dynamics`: those of :func:`scipy.integrate.solve_ivp` and fixed-step ``RK4``.
+#: The integrators of :func:`forward_dynamics`: the methods of :func:`scipy.integrate.solve_ivp`
+#: (adaptive, with ``rtol`` and ``atol``) and ``RK4`` (classical Runge–Kutta, fixed steps).
 INTEGRATORS = ("RK45", "DOP853", "RK23", "Radau", "BDF", "LSODA", "RK4")
 
 
 class IntegrationError(TautError):
     """The integrator failed: a step size underflow, a singular configuration on the way
-    (gimbal lock, a zero-length cable), or a motion that leaves the representable range."""
+    (gimbal lock, a zero-length cable), or a motion that leaves the representable range.
+
+    Examples
+    --------
+    >>> from taut.dynamics import IntegrationError
+    >>> from taut.errors import TautError
+    >>> issubclass(IntegrationError, TautError)
+    True
+    """
 
 
 @dataclass(frozen=True)
-class ForwardDynamicsResult:
-    """A simulated motion at ``K`` times of a robot with ``n`` cables and ``dof`` coordinates."""
+class ForwardDynamicsResult(Result):
+    """A simulated motion at ``K`` times of a robot with ``n`` cables and ``dof`` coordinates
+    (:func:`forward_dynamics`).
 
-    time: np.ndarray  #: ``(K,)``
-    pose: np.ndarray  #: ``(K, dof)``
+    Attributes
+    ----------
+    times : ndarray, shape (K,)
+        [s].
+    poses : ndarray, shape (K, dof)
+    velocity : ndarray, shape (K, dof)
+        Pose rates ``q̇``.
+    tensions : ndarray, shape (K, n)
+        The tensions that acted [N] (elastic cables: from the stretch).
+    slack : ndarray of bool, shape (K, n)
+        Elastic cables not stretched (always False for given tensions).
+    method : str
+        The integrator.
+    evaluations : int
+        Right-hand side evaluations.
+    elapsed_s : float
+        Wall-clock seconds of the integration.
+    complete : bool
+        The motion reaches the end of its duration.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.dynamics import forward_dynamics
+    >>> res = forward_dynamics(example("planar-4cable"), np.zeros(3), np.zeros(3), 0.1, tensions=lambda t: np.zeros(4), method="RK4", step=0.05)
+    >>> res.times, res.complete, res.evaluations
+    (array([0.  , 0.05, 0.1 ]), True, 8)
+    """
+
+    times: np.ndarray  #: ``(K,)``
+    poses: np.ndarray  #: ``(K, dof)``
     velocity: np.ndarray  #: ``(K, dof)`` pose rates ``q̇``
     tensions: np.ndarray  #: ``(K, n)`` the tensions that acted (elastic cables: from the stretch)
     slack: np.ndarray  #: ``(K, n)`` bool: elastic cables not stretched (always False for given tensions)
     method: str
     evaluations: int  #: right-hand side evaluations
+    elapsed_s: float = 0.0  #: wall-clock seconds of the integration
+    complete: bool = True  #: the motion reaches the end of ``duration``
 
 
 @dataclass(frozen=True)
@@ -242,17 +294,32 @@ def acceleration(
     q: npt.ArrayLike,
     qd: npt.ArrayLike,
     tensions: npt.ArrayLike,
-    w_ext: npt.ArrayLike | None = None,
+    *,
+    wrench: npt.ArrayLike | None = None,
 ) -> np.ndarray:
-    """``q̈`` ``(N, dof)`` (``(dof,)`` for one state) of the platform at poses ``q`` with pose
-    rates ``qd`` under cable tensions ``(N, n)`` or ``(n,)`` and an external wrench ``w_ext``
-    (taut's convention: forces, then moments about ``p``, fixed frame) besides the robot's own
-    weight: the solution of ``M q̈ + C q̇ + g = Jᵀ (W τ + w_ext)``.
+    """The pose accelerations ``q̈`` of the platform under given cable tensions.
+
+    The solution of ``M q̈ + C q̇ + g = Jᵀ (W τ + w)`` (compiled Newton–Euler), with ``w`` an
+    external wrench besides the robot's own weight.
+
+    Parameters
+    ----------
+    robot : Robot
+    q, qd : array_like, shape (N, dof) or (dof,)
+        Poses and pose rates.
+    tensions : array_like, shape (N, n) or (n,)
+        Cable tensions [N].
+    wrench : array_like, shape (N, dof) or (dof,), optional
+        External wrench (taut's convention: forces, then moments about ``p``, fixed frame).
+
+    Returns
+    -------
+    ndarray, shape (N, dof) or (dof,) for one state
 
     Raises
     ------
-    PoseError
-        Bad shapes or values.
+    TautError
+        Bad shapes or values (:class:`~taut.errors.PoseError` for poses and rates).
     SingularConfigurationError
         At the gimbal lock of the orientation convention.
     InfeasiblePoseError
@@ -263,10 +330,20 @@ def acceleration(
     References
     ----------
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
-       and Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
+           and Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
+
+    Examples
+    --------
+    Equal tensions at the centre of the planar robot cancel: the platform falls at ``g``.
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.dynamics import acceleration
+    >>> acceleration(example("planar-4cable"), np.zeros(3), np.zeros(3), np.full(4, 10.0)).round(4) + 0.0
+    array([ 0.  , -9.81,  0.  ])
     """
     model = kernel_model(robot)
-    arr, vel, tau, w, single = _inputs(robot, q, qd, tensions, w_ext, "tensions")
+    arr, vel, tau, w, single = _inputs(robot, q, qd, tensions, wrench, "tensions")
     qdd, _, status = _accelerate(robot, model, arr, vel, tau, w, False)
     if status.any():
         raise _status_error(robot, status, "state")
@@ -274,13 +351,47 @@ def acceleration(
 
 
 def cable_tensions(robot: Robot, q: npt.ArrayLike, unstretched: npt.ArrayLike) -> np.ndarray:
-    """Tensions ``(N, n)`` of elastic cables of unstretched lengths ``l0`` at poses ``q``:
-    ``EA (l − l0)/l0``, zero for a slack cable (Rushton 2022, Eq. 2.15).
+    """The tensions ``EA (l − l0)/l0`` of elastic cables of unstretched lengths ``l0``, zero for
+    a slack cable (Rushton 2022, Eq. 2.15).
+
+    Parameters
+    ----------
+    robot : Robot
+        Every cable with a ``stiffness`` (``EA``).
+    q : array_like, shape (N, dof) or (dof,)
+        Poses.
+    unstretched : array_like, shape (N, n) or (n,)
+        Unstretched lengths ``l0`` [m], positive.
+
+    Returns
+    -------
+    ndarray, shape (N, n) or (n,) for one pose
+        [N].
+
+    Raises
+    ------
+    PoseError
+        Poses that :func:`~taut.kinematics.as_poses` refuses.
+    TautError
+        Lengths of the wrong shape, not positive or not finite; a cable without stiffness.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, Eq. 2.15. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    Cables of ``EA = 20`` kN stretched by 0.1 %:
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.kinematics import cable_lengths
+    >>> from taut.dynamics import cable_tensions
+    >>> robot = example("planar-4cable")
+    >>> robot = robot.model_copy(update={"cables": tuple(c.model_copy(update={"stiffness": 2e4}) for c in robot.cables)})
+    >>> cable_tensions(robot, np.zeros(3), cable_lengths(robot, np.zeros(3)) / 1.001).round(6)
+    array([20., 20., 20., 20.])
     """
     from taut.kinematics import lengths_at
 
@@ -310,17 +421,58 @@ def rk4_step(
     qd: npt.ArrayLike,
     tensions: npt.ArrayLike,
     dt: float,
-    w_ext: npt.ArrayLike | None = None,
+    *,
+    wrench: npt.ArrayLike | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """One classical Runge–Kutta (RK4) step of ``dt`` seconds from each state ``(q, q̇)``
-    (``(N, dof)`` or one ``(dof,)``) with the tensions and ``w_ext`` held over the step (a
-    zero-order hold, as a controller applies them): the new ``(q, q̇)``.  Raises as
-    :func:`acceleration` when a stage reaches a singular configuration."""
-    if not (np.isfinite(dt) and dt > 0):
-        raise TautError(f"time step must be positive and finite, got {dt!r}")
+    """One classical Runge–Kutta (RK4) step from each state, the inputs held over the step.
+
+    The tensions and the external wrench are held (a zero-order hold, as a controller applies
+    them).
+
+    Parameters
+    ----------
+    robot : Robot
+    q, qd : array_like, shape (N, dof) or (dof,)
+        Poses and pose rates.
+    tensions : array_like, shape (N, n) or (n,)
+        Cable tensions [N].
+    dt : float
+        The step [s], positive.
+    wrench : array_like, shape (N, dof) or (dof,), optional
+        External wrench besides the robot's weight.
+
+    Returns
+    -------
+    q, qd : ndarray, shape (N, dof) or (dof,) for one state
+        The state after the step.
+
+    Raises
+    ------
+    TautError
+        Bad shapes or values, a step that is not a positive number.
+    SingularConfigurationError, InfeasiblePoseError
+        When a stage reaches a singular configuration (as :func:`acceleration`).
+
+    References
+    ----------
+    .. [1] E. Hairer, S. P. Nørsett, G. Wanner, "Solving Ordinary Differential Equations I",
+       2nd ed., Springer, 1993, §II.1. (docs/references.bib: hairer1993)
+
+    Examples
+    --------
+    Slack cables: the platform falls ``g t²/2`` in ``t = 0.1`` s (RK4 is exact on a constant
+    acceleration):
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.dynamics import rk4_step
+    >>> rk4_step(example("planar-4cable"), np.zeros(3), np.zeros(3), np.zeros(4), 0.1)
+    (array([ 0.     , -0.04905,  0.     ]), array([ 0.   , -0.981,  0.   ]))
+    """
+    h = positive(dt, "the time step dt")
     model = kernel_model(robot)
-    arr, vel, tau, w, single = _inputs(robot, q, qd, tensions, w_ext, "tensions")
-    qn, vn = _rk4(robot, model, arr, vel, tau, w, float(dt), False)
+    arr, vel, tau, w, single = _inputs(robot, q, qd, tensions, wrench, "tensions")
+    qn, vn = _rk4(robot, model, arr, vel, tau, w, h, False)
     return (qn[0], vn[0]) if single else (qn, vn)
 
 
@@ -378,7 +530,7 @@ def forward_dynamics(
     *,
     tensions: Callable[[float], npt.ArrayLike] | None = None,
     lengths: Callable[[float], npt.ArrayLike] | None = None,
-    w_ext: Callable[[float], npt.ArrayLike] | None = None,
+    wrench: Callable[[float], npt.ArrayLike] | None = None,
     method: str = "DOP853",
     rtol: float = 1e-9,
     atol: float = 1e-12,
@@ -388,20 +540,46 @@ def forward_dynamics(
 ) -> ForwardDynamicsResult:
     """The platform's motion from ``(q0, q̇0)`` at ``t = 0`` over ``duration`` seconds.
 
-    Exactly one input drives the cables: ``tensions(t) -> (n,)``, or ``lengths(t) -> (n,)``,
-    the commanded unstretched lengths of elastic cables (each cable's ``stiffness`` is its
-    ``EA``; a slack cable pulls nothing).  ``w_ext(t) -> (dof,)`` is an external wrench
-    besides the robot's weight.  ``method`` is one of :data:`INTEGRATORS`: a method of
-    :func:`scipy.integrate.solve_ivp` (adaptive, tolerances ``rtol``/``atol``, output at
-    ``times``, default the integrator's own steps; ``step`` caps the step size) or ``"RK4"``
-    (fixed steps of ``step`` seconds, inputs evaluated at each step's start and held over it;
-    output at every step).
+    Exactly one input drives the cables: ``tensions(t)``, or ``lengths(t)``, the commanded
+    unstretched lengths of elastic cables (each cable's ``stiffness`` is its ``EA``; a slack
+    cable pulls nothing).
+
+    Parameters
+    ----------
+    robot : Robot
+    q0, qd0 : array_like, shape (dof,)
+        The initial pose and pose rates.
+    duration : float
+        [s], positive.
+    tensions : callable, optional
+        ``tensions(t) -> (n,)`` [N].
+    lengths : callable, optional
+        ``lengths(t) -> (n,)``: commanded unstretched lengths [m].
+    wrench : callable, optional
+        ``wrench(t) -> (dof,)``: an external wrench besides the robot's weight.
+    method : str, optional
+        One of :data:`INTEGRATORS`: a method of :func:`scipy.integrate.solve_ivp`, or
+        ``"RK4"`` (fixed steps of ``step`` seconds, inputs evaluated at each step's start and
+        held over it; output at every step).
+    rtol, atol : float, optional
+        The adaptive integrators' relative and absolute tolerances.
+    step : float, optional
+        ``RK4``: the step [s] (required); adaptive: the largest step.
+    times : array_like, shape (K,), optional
+        Adaptive: the output times, increasing, in ``[0, duration]``; default the
+        integrator's own steps.
+    progress : callable, optional
+        ``progress(done, total)``.
+
+    Returns
+    -------
+    ForwardDynamicsResult
 
     Raises
     ------
     TautError
         Bad input (no or two drives, an unknown method, a callable returning the wrong shape
-        or non-finite values).
+        or non-finite values, a non-positive duration, step or tolerance).
     IntegrationError
         When the integrator fails or the motion reaches a singular configuration.  A trial
         stage of an adaptive step that leaves the representable range (a coordinate beyond
@@ -417,15 +595,28 @@ def forward_dynamics(
        of Waterloo, 2022, Eq. 2.15. (docs/references.bib: rushton2022)
     .. [3] E. Hairer, S. P. Nørsett, G. Wanner, "Solving Ordinary Differential Equations I",
        2nd ed., Springer, 1993 (the DOP853 code). (docs/references.bib: hairer1993)
+
+    Examples
+    --------
+    Slack cables: the platform falls ``g t²/2 = 0.04905`` m in 0.1 s.
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.dynamics import forward_dynamics
+    >>> robot = example("planar-4cable")
+    >>> res = forward_dynamics(robot, np.zeros(3), np.zeros(3), 0.1, tensions=lambda t: np.zeros(4), times=[0.1])
+    >>> res.poses.round(6) + 0.0
+    array([[ 0.     , -0.04905,  0.     ]])
     """
     if (tensions is None) == (lengths is None):
         raise TautError("forward dynamics needs exactly one of tensions(t) and lengths(t)")
-    if method not in INTEGRATORS:
+    for f, what in ((tensions, "tensions"), (lengths, "lengths"), (wrench, "wrench"), (progress, "progress")):
+        check_callable(f, what)
+    if not isinstance(method, str) or method not in INTEGRATORS:
         raise TautError(f"unknown integrator {method!r}; valid methods: {', '.join(INTEGRATORS)}")
-    if not (np.isfinite(duration) and duration > 0):
-        raise TautError(f"duration must be positive and finite, got {duration!r}")
-    if step is not None and not (np.isfinite(step) and step > 0):
-        raise TautError(f"step must be positive and finite, got {step!r}")
+    duration = positive(duration, "duration")
+    step = None if step is None else positive(step, "step")
+    rtol, atol = positive(rtol, "rtol"), positive(atol, "atol")
     model = kernel_model(robot)
     elastic = lengths is not None
     if elastic:
@@ -439,17 +630,20 @@ def forward_dynamics(
         u = _call(drive, t, what, (n,))
         if elastic:
             u = _unstretched(robot, u, 1)[0]
-        w = np.zeros(dof) if w_ext is None else _call(w_ext, t, "external wrench", (dof,))
+        w = np.zeros(dof) if wrench is None else _call(wrench, t, "external wrench", (dof,))
         return u[None], w[None]
 
     x0, v0, _, _, _ = _inputs(robot, q0, qd0, np.zeros(n), None, "tensions")
     if x0.shape[0] != 1:
         raise TautError(f"{robot.name}: one initial pose, got {x0.shape[0]}")
+    started = perf_counter()
     if method == "RK4":
-        return _fixed_steps(robot, model, x0[0], v0[0], float(duration), step, inputs, elastic, progress)
-    return _adaptive(
-        robot, model, x0[0], v0[0], float(duration), inputs, elastic, method, rtol, atol, step, times, progress
-    )
+        res = _fixed_steps(robot, model, x0[0], v0[0], float(duration), step, inputs, elastic, progress)
+    else:
+        res = _adaptive(
+            robot, model, x0[0], v0[0], float(duration), inputs, elastic, method, rtol, atol, step, times, progress
+        )
+    return replace(res, elapsed_s=perf_counter() - started)
 
 
 def _fixed_steps(
@@ -511,7 +705,10 @@ def _adaptive(
     dof = q.size
     t_eval = None
     if times is not None:
-        t_eval = np.asarray(times, dtype=float)
+        try:
+            t_eval = np.asarray(times, dtype=float)
+        except (TypeError, ValueError):
+            raise TautError(f"output times must be numbers, got {times!r}") from None
         if t_eval.ndim != 1 or not np.isfinite(t_eval).all() or (np.diff(t_eval) <= 0).any():
             raise TautError("output times must be finite and increasing")
         if t_eval.size and (t_eval[0] < 0 or t_eval[-1] > duration):
@@ -590,6 +787,4 @@ def _result(
 ) -> ForwardDynamicsResult:
     slack = taus <= 0 if elastic else np.zeros(taus.shape, dtype=bool)
     t, q, v, tau, sl = (np.array(a) for a in (time, Q, V, taus, slack))
-    for a in (t, q, v, tau, sl):
-        a.setflags(write=False)
     return ForwardDynamicsResult(t, q, v, tau, sl, method=method, evaluations=nfev)

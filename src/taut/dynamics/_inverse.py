@@ -31,8 +31,9 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.dynamics._forward import KernelModel, kernel_model, quick_rows
-from taut.dynamics._platform import as_rates
+from taut.dynamics._platform import as_rates, check_callable
 from taut.errors import TautError
 from taut.kinematics import as_poses
 from taut.model import Robot
@@ -54,14 +55,42 @@ _WHY = {
 
 
 @dataclass(frozen=True)
-class InverseDynamicsResult:
-    """Tensions along ``N`` samples of a motion of a robot with ``n`` cables.
+class InverseDynamicsResult(Result):
+    """Tensions along ``N`` samples of a motion of a robot with ``n`` cables
+    (:func:`inverse_dynamics`).
 
     For a single sample the array fields have no batch axis (``docs/architecture.md`` §2.1):
     ``tensions (n,)``, ``wrench (dof,)``, and ``feasible``, ``status``, ``reasons`` and
-    ``time`` are 0-d arrays."""
+    ``times`` are 0-d arrays.
 
-    time: np.ndarray | None  #: ``(N,)`` sample times, when given
+    Attributes
+    ----------
+    times : ndarray, shape (N,), or None
+        Sample times [s], when given.
+    wrench : ndarray, shape (N, dof)
+        The wrench ``W τ`` the cables must apply (:func:`required_wrench`).
+    tensions : ndarray, shape (N, n)
+        [N]; zeros where no admissible distribution was found.
+    feasible : ndarray of bool, shape (N,)
+    status : ndarray of str, shape (N,)
+        ``"optimal"``, ``"infeasible"`` (proved), ``"not-found"`` (the method gave up) or
+        ``"undefined"`` (no structure matrix: a cable of zero length).
+    reasons : ndarray of str, shape (N,)
+        Why a sample has no admissible tensions, ``""`` where feasible.
+    method : str
+        The tension distribution method.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.dynamics import inverse_dynamics
+    >>> res = inverse_dynamics(example("planar-4cable"), np.zeros(3), np.zeros(3), [0.0, 400.0, 0.0], method="qp")
+    >>> bool(res.feasible), str(res.status), res.failures()
+    (False, 'infeasible', [(0, 'no tensions within the bounds give the required wrench (proved)')])
+    """
+
+    times: np.ndarray | None  #: ``(N,)`` sample times, when given
     wrench: np.ndarray  #: ``(N, dof)`` the wrench ``W τ`` the cables must apply
     tensions: np.ndarray  #: ``(N, n)``; zeros where no admissible distribution was found
     feasible: np.ndarray  #: ``(N,)`` bool
@@ -72,13 +101,19 @@ class InverseDynamicsResult:
     method: str
 
     def failures(self) -> list[tuple[int, str]]:
-        """``(index, reason)`` of every sample without admissible tensions (0-based)."""
+        """The samples without admissible tensions.
+
+        Returns
+        -------
+        list of (int, str)
+            ``(index, reason)``, 0-based indices.
+        """
         reasons = np.atleast_1d(self.reasons)
         return [(int(k), str(reasons[k])) for k in np.flatnonzero(~np.atleast_1d(self.feasible))]
 
     @property
     def first_failure(self) -> int | None:
-        """Index of the first sample without admissible tensions, or None."""
+        """The 0-based index of the first sample without admissible tensions, or None."""
         bad = np.flatnonzero(~np.atleast_1d(self.feasible))
         return int(bad[0]) if bad.size else None
 
@@ -101,29 +136,60 @@ def required_wrench(
     q: npt.ArrayLike,
     qd: npt.ArrayLike,
     qdd: npt.ArrayLike,
-    w_ext: npt.ArrayLike | None = None,
+    *,
+    wrench: npt.ArrayLike | None = None,
 ) -> np.ndarray:
-    """The wrench ``W τ`` ``(N, dof)`` (``(dof,)`` for one sample) the cables must apply for
-    the pose accelerations ``qdd`` at poses ``q`` with rates ``qd``, given an external wrench
-    ``w_ext`` (``(dof,)`` or ``(N, dof)``) besides the robot's own weight; taut's wrench
-    convention (forces, then moments about ``p``, fixed frame).
+    """The wrench ``W τ`` the cables must apply for a motion: Newton–Euler through the centre of
+    mass, minus the robot's own load and an external wrench.
+
+    Parameters
+    ----------
+    robot : Robot
+    q, qd, qdd : array_like, shape (N, dof) or (dof,)
+        Poses, pose rates and pose accelerations.
+    wrench : array_like, shape (N, dof) or (dof,), optional
+        External wrench besides the robot's own weight.
+
+    Returns
+    -------
+    ndarray, shape (N, dof) or (dof,) for one sample
+        taut's wrench convention: forces, then moments about ``p``, fixed frame [N, N m].
+
+    Raises
+    ------
+    TautError
+        Bad shapes or values (:class:`~taut.errors.PoseError` for poses and rates).
+    UnsupportedRobotError
+        A robot without mass (or inertia, for a rigid platform), or a jointed platform.
 
     References
     ----------
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
        and Control", Springer, 2009, §7.5. (docs/references.bib: siciliano2009)
+
+    Examples
+    --------
+    The planar platform (1 kg) at rest needs its weight held; accelerating at 1 m/s² along x
+    needs 1 N more:
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.dynamics import required_wrench
+    >>> required_wrench(example("planar-4cable"), np.zeros((2, 3)), np.zeros((2, 3)), [[0, 0, 0], [1.0, 0, 0]])
+    array([[0.  , 9.81, 0.  ],
+           [1.  , 9.81, 0.  ]])
     """
     model = kernel_model(robot)
     arr, vel, acc, single = _motion(robot, q, qd, qdd)
-    w = _ext(robot, w_ext, arr.shape[0])
-    wrench, _, _, _ = _samples(model, arr, vel, acc, w, robot.tension_bounds, closed_form=False, cables=False)
-    return wrench[0] if single else wrench
+    w = _ext(robot, wrench, arr.shape[0])
+    need, _, _, _ = _samples(model, arr, vel, acc, w, robot.tension_bounds, closed_form=False, cables=False)
+    return need[0] if single else need
 
 
-def _ext(robot: Robot, w_ext: npt.ArrayLike | None, N: int) -> np.ndarray:
-    if w_ext is None:
+def _ext(robot: Robot, wrench: npt.ArrayLike | None, N: int) -> np.ndarray:
+    if wrench is None:
         return np.zeros((N, robot.pose_size))
-    return np.ascontiguousarray(as_rates(robot, w_ext, N, "external wrenches"))
+    return np.ascontiguousarray(as_rates(robot, wrench, N, "external wrenches"))
 
 
 def _samples(
@@ -177,28 +243,45 @@ def inverse_dynamics(
     qdd: npt.ArrayLike,
     *,
     method: str = "improved-closed-form",
-    w_ext: npt.ArrayLike | None = None,
-    time: npt.ArrayLike | None = None,
+    wrench: npt.ArrayLike | None = None,
+    tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
+    times: npt.ArrayLike | None = None,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> InverseDynamicsResult:
-    """Cable tensions along a sampled motion ``(q, q̇, q̈)`` (each ``(N, dof)``, or one sample
-    ``(dof,)``: a result without the batch axis).
+    """Cable tensions along a sampled motion ``(q, q̇, q̈)``.
 
-    ``method`` is a tension distribution method of :data:`taut.statics.METHODS`
-    (``lp``, ``qp``, ``inf``, ``closed-form``, ``improved-closed-form``, ``barycentric``); the
-    bounds are ``robot.tension_bounds``.  ``w_ext`` is an external wrench besides the robot's
-    weight, ``time (N,)`` the sample times (kept in the result for plots).  Samples without an
-    admissible distribution get zero tensions, ``feasible = False`` and a reason.
+    Samples without an admissible distribution get zero tensions, ``feasible = False`` and a
+    reason.  The wrenches, structure matrices and, for ``closed-form``, the tensions are
+    computed by a compiled kernel; the samples it does not accept, and every sample of the
+    other methods, go to :func:`taut.statics.solve_tensions`, so that ``feasible`` means what
+    it means there.
 
-    The wrenches, structure matrices and, for ``closed-form``, the tensions are computed by a
-    compiled kernel (:func:`taut.dynamics._kernels.inverse_samples`); the samples it does not
-    accept, and every sample of the other methods, go to
-    :func:`taut.statics.solve_tensions`, so that ``feasible`` means what it means there.
+    Parameters
+    ----------
+    robot : Robot
+    q, qd, qdd : array_like, shape (N, dof) or (dof,)
+        Poses, pose rates and pose accelerations; one sample gives a result without the
+        batch axis.
+    method : str, optional
+        A tension distribution method of :data:`taut.statics.METHODS` (``lp``, ``qp``,
+        ``inf``, ``closed-form``, ``improved-closed-form``, ``barycentric``).
+    wrench : array_like, shape (N, dof) or (dof,), optional
+        External wrench besides the robot's weight.
+    tension_bounds : (tmin, tmax), optional
+        Each a number or one per cable [N]; default the cables' own.
+    times : array_like, shape (N,), optional
+        The sample times [s], kept in the result (for plots).
+    progress : callable, optional
+        ``progress(done, total)``, with sample counts.
+
+    Returns
+    -------
+    InverseDynamicsResult
 
     Raises
     ------
     TautError
-        Bad shapes or values, an unknown method.
+        Bad shapes or values, an unknown method, bad tension bounds or times.
     UnsupportedRobotError
         A robot without mass (or inertia, for a rigid platform), or a jointed platform.
 
@@ -210,31 +293,52 @@ def inverse_dynamics(
        of Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
     .. [3] A. Pott, T. Bruckmann, L. Mikelsons, "Closed-form force distribution for parallel
        wire robots", Computational Kinematics, Springer, 2009. (docs/references.bib: pott2009)
+
+    Examples
+    --------
+    The planar platform at rest, accelerating along x, and far too fast upwards:
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.dynamics import inverse_dynamics
+    >>> qdd = [[0, 0, 0], [1.0, 0, 0], [0, 400.0, 0]]
+    >>> res = inverse_dynamics(example("planar-4cable"), np.zeros((3, 3)), np.zeros((3, 3)), qdd, method="qp")
+    >>> res.tensions.round(3)
+    array([[1.   , 1.   , 7.757, 7.757],
+           [1.   , 1.727, 8.484, 7.757],
+           [0.   , 0.   , 0.   , 0.   ]])
+    >>> res.feasible, res.first_failure
+    (array([ True,  True, False]), 2)
     """
     from taut.statics import METHODS, solve_tensions
 
-    if method not in METHODS:
+    if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
+    check_callable(progress, "progress")
     model = kernel_model(robot)
     arr, vel, acc, single = _motion(robot, q, qd, qdd)
     N, n = arr.shape[0], robot.n_cables
-    times = None
-    if time is not None:
-        times = np.array(time, dtype=float).reshape(-1) if single else np.array(time, dtype=float)
-        if times.shape != (N,) or not np.isfinite(times).all():
-            raise TautError(f"sample times must be {N} finite numbers, got shape {times.shape}")
+    sample_times = None
+    if times is not None:
+        try:
+            sample_times = np.array(times, dtype=float)
+        except (TypeError, ValueError):
+            raise TautError(f"sample times must be numbers, got {times!r}") from None
+        sample_times = sample_times.reshape(-1) if single else sample_times
+        if sample_times.shape != (N,) or not np.isfinite(sample_times).all():
+            raise TautError(f"sample times must be {N} finite numbers, got shape {sample_times.shape}")
     from taut.dynamics._kernels import ZERO_LENGTH
 
-    w = _ext(robot, w_ext, N)
-    bounds = robot.tension_bounds
-    wrench, tensions = np.empty((N, robot.pose_size)), np.zeros((N, n))
+    w = _ext(robot, wrench, N)
+    bounds = _tension_bounds(robot, tension_bounds)
+    need, tensions = np.empty((N, robot.pose_size)), np.zeros((N, n))
     feasible = np.zeros(N, dtype=bool)
     code = np.full(N, STATUSES.index("undefined"), dtype=np.int64)
     for start in range(0, N, CHUNK):
         part = slice(start, min(start + CHUNK, N))
         closed = method == "closed-form" and model.straight
         wr, W, tau, st = _samples(model, arr[part], vel[part], acc[part], w[part], bounds, closed)
-        wrench[part] = wr
+        need[part] = wr
         ok = st != ZERO_LENGTH
         if not model.straight:
             from taut.kinematics import batch_structure_matrices
@@ -253,13 +357,32 @@ def inverse_dynamics(
             progress(part.stop, N)
     labels = np.array(STATUSES)[code]
     reasons = np.array([_reason(s, method) for s in STATUSES])[code]
-    arrays = [wrench, tensions, feasible, labels, reasons] + ([] if times is None else [times])
+    arrays = [need, tensions, feasible, labels, reasons] + ([] if sample_times is None else [sample_times])
     if single:
         arrays = [np.array(a[0]) for a in arrays]
-    for a in arrays:
-        a.setflags(write=False)
     w_, tau, ok, st, why = arrays[:5]
-    return InverseDynamicsResult(None if times is None else arrays[5], w_, tau, ok, st, why, method)
+    return InverseDynamicsResult(None if sample_times is None else arrays[5], w_, tau, ok, st, why, method)
+
+
+def _tension_bounds(
+    robot: Robot, tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] | None
+) -> tuple[np.ndarray, np.ndarray]:
+    """``(tmin, tmax)`` as C-contiguous ``(n,)`` arrays: the robot's own, or ``tension_bounds``
+    (each a number or one per cable) checked."""
+    if tension_bounds is None:
+        return robot.tension_bounds
+    n = robot.n_cables
+    try:
+        lo, hi = (np.ascontiguousarray(np.broadcast_to(np.asarray(b, dtype=float), (n,))) for b in tension_bounds)
+    except (TypeError, ValueError):
+        raise TautError(
+            f"{robot.name}: tension_bounds must be (tmin, tmax), each a number or {n} numbers, got {tension_bounds!r}"
+        ) from None
+    if not np.isfinite(lo).all() or np.isnan(hi).any() or (lo < 0).any() or (hi < lo).any():
+        raise TautError(
+            f"{robot.name}: tension bounds need 0 <= tmin <= tmax and a finite tmin, got {lo.tolist()}, {hi.tolist()}"
+        )
+    return lo, hi
 
 
 def _reason(status: str, method: str) -> str:

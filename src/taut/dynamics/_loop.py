@@ -33,8 +33,30 @@ __all__ = ["LoopModel", "loop_model"]
 
 @dataclass(frozen=True)
 class LoopModel:
-    """A robot prepared for a control loop (:func:`loop_model`).  The arrays it returns are
-    new; its buffers are its own."""
+    """A robot prepared for a control loop (:func:`loop_model`): the kernels' arguments and
+    preallocated buffers, so that one state costs little more than its arithmetic.
+
+    Not a result: its buffers are written at every call (the arrays it returns are new).
+
+    Attributes
+    ----------
+    robot : Robot
+    method : str
+        The fallback tension distribution method where the compiled closed form gives up.
+    kernels : KernelModel
+        The compiled kernels' arguments.
+    buffers : dict of str to ndarray
+        One-row work arrays.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.dynamics import loop_model
+    >>> lm = loop_model(example("planar-4cable"))
+    >>> lm.method, lm.buffers["tau"].shape
+    ('qp', (1, 4))
+    """
 
     robot: Robot
     method: str  #: fallback tension distribution method where the closed form gives up
@@ -42,18 +64,57 @@ class LoopModel:
     buffers: dict[str, np.ndarray] = field(repr=False)
 
     def tensions(
-        self, q: npt.ArrayLike, qd: npt.ArrayLike, qdd: npt.ArrayLike, w_ext: npt.ArrayLike | None = None
+        self, q: npt.ArrayLike, qd: npt.ArrayLike, qdd: npt.ArrayLike, *, wrench: npt.ArrayLike | None = None
     ) -> tuple[np.ndarray, bool]:
-        """Tensions ``(n,)`` for the pose accelerations ``qdd`` at the state ``(q, q̇)`` (each
-        ``(dof,)``) under ``w_ext`` besides the weight, and whether they are admissible (zeros
-        when not).  Raises :class:`~taut.errors.InfeasiblePoseError` where a cable has zero
-        length."""
+        """Tensions for the pose accelerations ``qdd`` at the state ``(q, q̇)``: the required wrench
+        and a tension distribution (the compiled closed form of Pott et al. 2009, else
+        :attr:`method`).
+
+        Parameters
+        ----------
+        q, qd, qdd : array_like, shape (dof,)
+            The pose, its rates and the commanded accelerations.
+        wrench : array_like, shape (dof,), optional
+            External wrench besides the weight.
+
+        Returns
+        -------
+        tensions : ndarray, shape (n,)
+            [N]; zeros when not admissible.
+        admissible : bool
+            Whether the tensions are within their bounds and give the wrench.
+
+        Raises
+        ------
+        TautError
+            Arrays of the wrong size or not numbers.
+        InfeasiblePoseError
+            Where a cable has zero length.
+
+        Examples
+        --------
+        The weight of the planar platform at rest, held by the closed form:
+
+        >>> import numpy as np
+        >>> from taut.model import example
+        >>> from taut.kinematics import structure_matrix
+        >>> from taut.dynamics import loop_model
+        >>> robot = example("planar-4cable")
+        >>> tau, ok = loop_model(robot).tensions(np.zeros(3), np.zeros(3), np.zeros(3))
+        >>> ok, (structure_matrix(robot, np.zeros(3)) @ tau).round(6) + 0.0
+        (True, array([0.  , 9.81, 0.  ]))
+        """
         from taut.dynamics._kernels import OK, ZERO_LENGTH, inverse_samples
         from taut.statics import EQUILIBRIUM_RTOL, solve_tensions
 
         b = self.buffers
-        b["q"][0], b["qd"][0], b["qdd"][0] = q, qd, qdd
-        b["w"][0] = 0.0 if w_ext is None else w_ext
+        try:
+            b["q"][0], b["qd"][0], b["qdd"][0] = q, qd, qdd
+            b["w"][0] = 0.0 if wrench is None else wrench
+        except (TypeError, ValueError):
+            raise TautError(
+                f"{self.robot.name}: q, qd, qdd and wrench must be {b['q'].shape[1]} numbers each"
+            ) from None
         lo, hi = b["lo"], b["hi"]
         ip, fp, cab = self.kernels.args
         inverse_samples(
@@ -87,19 +148,58 @@ class LoopModel:
         qd: npt.ArrayLike,
         tensions: npt.ArrayLike,
         dt: float,
-        w_ext: npt.ArrayLike | None = None,
+        *,
+        wrench: npt.ArrayLike | None = None,
     ) -> tuple[np.ndarray, np.ndarray]:
-        """One RK4 step of ``dt`` from ``(q, q̇)`` (each ``(dof,)``) with ``tensions (n,)`` and
-        ``w_ext`` held: the new ``(q, q̇)``.  Raises :class:`~taut.errors.SingularConfigurationError`
-        at the gimbal lock and :class:`~taut.errors.InfeasiblePoseError` where a cable has zero
-        length."""
+        """One RK4 step from ``(q, q̇)`` with the tensions and the external wrench held.
+
+        Parameters
+        ----------
+        q, qd : array_like, shape (dof,)
+            The state.
+        tensions : array_like, shape (n,)
+            [N].
+        dt : float
+            The step [s].
+        wrench : array_like, shape (dof,), optional
+            External wrench besides the weight.
+
+        Returns
+        -------
+        q, qd : ndarray, shape (dof,)
+            The state after the step.
+
+        Raises
+        ------
+        TautError
+            Arrays of the wrong size or not numbers, a ``dt`` that is not a number.
+        SingularConfigurationError
+            At the gimbal lock.
+        InfeasiblePoseError
+            Where a cable has zero length.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from taut.model import example
+        >>> from taut.dynamics import loop_model
+        >>> loop_model(example("planar-4cable")).step(np.zeros(3), np.zeros(3), np.zeros(4), 0.1)
+        (array([ 0.     , -0.04905,  0.     ]), array([ 0.   , -0.981,  0.   ]))
+        """
         from taut.dynamics._kernels import GIMBAL_LOCK, OK, rk4_steps
 
         b = self.buffers
-        b["q"][0], b["qd"][0], b["u"][0] = q, qd, tensions
-        b["w"][0] = 0.0 if w_ext is None else w_ext
+        try:
+            b["q"][0], b["qd"][0], b["u"][0] = q, qd, tensions
+            b["w"][0] = 0.0 if wrench is None else wrench
+            h = float(dt)
+        except (TypeError, ValueError):
+            raise TautError(
+                f"{self.robot.name}: q, qd and wrench must be {b['q'].shape[1]} numbers each, tensions "
+                f"{b['u'].shape[1]} and dt a number"
+            ) from None
         ip, fp, cab = self.kernels.args
-        rk4_steps(ip, fp, cab, False, b["q"], b["qd"], b["u"], b["w"], dt, b["q_next"], b["qd_next"], b["status"])
+        rk4_steps(ip, fp, cab, False, b["q"], b["qd"], b["u"], b["w"], h, b["q_next"], b["qd_next"], b["status"])
         status = b["status"][0]
         if status == GIMBAL_LOCK:
             raise SingularConfigurationError(
@@ -112,9 +212,19 @@ class LoopModel:
         return b["q_next"][0].copy(), b["qd_next"][0].copy()
 
 
-def loop_model(robot: Robot, method: str = "qp") -> LoopModel:
-    """``robot`` prepared for :meth:`LoopModel.tensions` and :meth:`LoopModel.step`;
-    ``method`` is the distribution used where the compiled closed form gives up.
+def loop_model(robot: Robot, *, method: str = "qp") -> LoopModel:
+    """A robot prepared for :meth:`LoopModel.tensions` and :meth:`LoopModel.step`.
+
+    Parameters
+    ----------
+    robot : Robot
+    method : str, optional
+        The distribution of :data:`taut.statics.METHODS` used where the compiled closed form
+        gives up.
+
+    Returns
+    -------
+    LoopModel
 
     Raises
     ------
@@ -123,10 +233,22 @@ def loop_model(robot: Robot, method: str = "qp") -> LoopModel:
         are not straight; use the checked functions).
     TautError
         An unknown method.
+
+    References
+    ----------
+    .. [1] A. Pott, T. Bruckmann, L. Mikelsons, "Closed-form force distribution for parallel
+       wire robots", Computational Kinematics, Springer, 2009. (docs/references.bib: pott2009)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.dynamics import loop_model
+    >>> loop_model(example("planar-4cable"), method="lp").method
+    'lp'
     """
     from taut.statics import METHODS
 
-    if method not in METHODS:
+    if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
     kernels = kernel_model(robot)
     if not kernels.straight:

@@ -47,11 +47,14 @@ References
 
 from __future__ import annotations
 
+import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.dynamics._jointed import (
     jointed_bias_forces,
     jointed_coriolis_matrix,
@@ -59,7 +62,7 @@ from taut.dynamics._jointed import (
     jointed_mass_matrix,
     twist_jacobian,
 )
-from taut.errors import UnsupportedRobotError
+from taut.errors import TautError, UnsupportedRobotError
 from taut.geometry import cross, planar_rotation, rate_matrix, rate_matrix_derivative, rotation_matrix
 from taut.kinematics import as_poses
 from taut.model import Robot
@@ -88,8 +91,38 @@ POINT_MASS, PLANAR, SPATIAL = 0, 1, 2
 
 
 @dataclass(frozen=True)
-class PlatformDynamics:
-    """The inertial data of a robot's platform, checked once (:func:`platform_dynamics`)."""
+class PlatformDynamics(Result):
+    """The inertial data of a robot's platform, checked once (:func:`platform_dynamics`).
+
+    Attributes
+    ----------
+    kind : int
+        ``POINT_MASS`` (0), ``PLANAR`` (1, rigid) or ``SPATIAL`` (2, rigid).
+    dimension : int
+        2 or 3.
+    dof : int
+        Pose coordinates (= wrench components).
+    mass : float
+        [kg].
+    com : ndarray, shape (d,)
+        Centre of mass in the platform frame [m] (zero for a point mass).
+    inertia : ndarray, shape (3, 3)
+        About the centre of mass, platform frame [kg m²] (planar: ``Izz`` at ``[2, 2]``).
+    force : ndarray, shape (d,)
+        Constant force at the centre of mass: the weight and ``platform.wrench`` [N].
+    moment : ndarray, shape (dof − d,)
+        Constant moment of ``platform.wrench`` [N m].
+    orientation : str
+        The robot's orientation convention.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.dynamics import platform_dynamics
+    >>> pd = platform_dynamics(example("planar-4cable"))
+    >>> pd.mass, pd.force, sorted(pd.as_dict())[:3]
+    (1.0, array([ 0.  , -9.81]), ['com', 'dimension', 'dof'])
+    """
 
     kind: int  #: :data:`POINT_MASS`, :data:`PLANAR` (rigid) or :data:`SPATIAL` (rigid)
     dimension: int  #: 2 or 3
@@ -103,13 +136,29 @@ class PlatformDynamics:
 
 
 def platform_dynamics(robot: Robot) -> PlatformDynamics:
-    """The platform's mass, centre of mass, inertia and constant load.
+    """The platform's mass, centre of mass, inertia and constant load, checked.
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    PlatformDynamics
 
     Raises
     ------
     UnsupportedRobotError
         For a jointed platform, a platform without ``mass``, or a rigid platform without a
-        positive definite ``inertia``."""
+        positive definite ``inertia``.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.dynamics import platform_dynamics
+    >>> round(float(platform_dynamics(example("planar-4cable")).inertia[2, 2]), 6)  # 1 kg, 0.2 m × 0.1 m
+    0.004167
+    """
     plat, d = robot.platform, robot.dimension
     if robot.n_joints:
         names = ", ".join(b.name for b in plat.bodies)
@@ -155,6 +204,20 @@ def platform_dynamics(robot: Robot) -> PlatformDynamics:
 
 def _poses(robot: Robot, q: npt.ArrayLike) -> tuple[np.ndarray, bool]:
     return as_poses(robot, q)
+
+
+def positive(value: object, what: str) -> float:
+    """``value`` as a float if it is a positive finite number, else a :class:`TautError`."""
+    x = float(value) if isinstance(value, numbers.Real) and not isinstance(value, bool) else math.nan
+    if not 0 < x < math.inf:
+        raise TautError(f"{what} must be a positive finite number, got {value!r}")
+    return x
+
+
+def check_callable(f: object, what: str) -> None:
+    """A :class:`TautError` unless ``f`` is None or callable."""
+    if f is not None and not callable(f):
+        raise TautError(f"{what} must be a function, got {type(f).__name__}")
 
 
 def as_rates(robot: Robot, qd: npt.ArrayLike, n: int, what: str = "pose velocities") -> np.ndarray:
@@ -222,11 +285,44 @@ def twist_inertia(pd: PlatformDynamics, R: np.ndarray, r: np.ndarray) -> np.ndar
 
 
 def velocity_jacobian(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
-    """``J (N, dof, dof)`` with the twist ``(ṗ, ω) = J q̇``: ``diag(1, E(φ))`` for a spatial
-    platform (:func:`taut.geometry.rate_matrix`), the identity otherwise.  The
-    generalized force of a wrench ``w`` (taut's convention: moments about ``p``) is ``Jᵀ w``.
-    A jointed platform's ``J = diag(1, E(φ), 1)`` also maps the joint rates (``(P, P)``,
-    ``P = pose_size``)."""
+    """The Jacobian ``J`` of the twist ``(ṗ, ω) = J q̇`` from the pose rates.
+
+    ``J = diag(1, E(φ))`` for a spatial platform (:func:`taut.geometry.rate_matrix`), the
+    identity otherwise; a jointed platform's ``J = diag(1, E(φ), 1)`` also maps the joint rates.
+    The generalized force of a wrench ``w`` (taut's convention: moments about ``p``) is
+    ``Jᵀ w``.
+
+    Parameters
+    ----------
+    robot : Robot
+    q : array_like, shape (N, dof) or (dof,)
+        Poses.
+
+    Returns
+    -------
+    ndarray, shape (N, dof, dof) or (dof, dof) for one pose
+
+    Raises
+    ------
+    PoseError
+        Poses that :func:`~taut.kinematics.as_poses` refuses.
+    UnsupportedRobotError
+        A robot without mass (or inertia, for a rigid platform).
+
+    References
+    ----------
+    .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
+           and Control", Springer, 2009, §3.6, Eq. 3.64. (docs/references.bib: siciliano2009)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.dynamics import velocity_jacobian
+    >>> velocity_jacobian(example("planar-4cable"), [0.1, 0.2, 0.3])
+    array([[1., 0., 0.],
+           [0., 1., 0.],
+           [0., 0., 1.]])
+    """
     arr, single = _poses(robot, q)
     J = twist_jacobian(robot, arr) if robot.n_joints else _jacobian(platform_dynamics(robot), arr)
     return J[0] if single else J
@@ -279,12 +375,42 @@ def own_load(pd: PlatformDynamics, R: np.ndarray, r: np.ndarray) -> np.ndarray:
 
 
 def mass_matrix(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
-    """``M(q) = Jᵀ M_ν J`` ``(N, dof, dof)`` (``(dof, dof)`` for one pose).
+    """The mass matrix ``M(q) = Jᵀ M_ν J`` in the pose coordinates.
+
+    Parameters
+    ----------
+    robot : Robot
+    q : array_like, shape (N, dof) or (dof,)
+        Poses.
+
+    Returns
+    -------
+    ndarray, shape (N, dof, dof) or (dof, dof) for one pose
+        Symmetric, positive definite away from the gimbal lock of the orientation convention.
+
+    Raises
+    ------
+    PoseError
+        Poses that :func:`~taut.kinematics.as_poses` refuses.
+    UnsupportedRobotError
+        A robot without mass (or inertia, for a rigid platform); a jointed body without them.
 
     References
     ----------
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
-       and Control", Springer, 2009, §7.1–7.2. (docs/references.bib: siciliano2009)
+           and Control", Springer, 2009, §7.1–7.2. (docs/references.bib: siciliano2009)
+
+    Examples
+    --------
+    The planar platform: its mass (1 kg) twice, then its moment of inertia about the centre
+    of mass (the reference point):
+
+    >>> from taut.model import example
+    >>> from taut.dynamics import mass_matrix
+    >>> mass_matrix(example("planar-4cable"), [0.0, 0.0, 0.0]).round(4)
+    array([[1.    , 0.    , 0.    ],
+           [0.    , 1.    , 0.    ],
+           [0.    , 0.    , 0.0042]])
     """
     arr, single = _poses(robot, q)
     if robot.n_joints:
@@ -298,12 +424,41 @@ def mass_matrix(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
 
 
 def coriolis_matrix(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.ndarray:
-    """``C(q, q̇) = Jᵀ (M_ν J̇ + C_ν J)`` ``(N, dof, dof)``, with ``Ṁ − 2 C`` skew-symmetric.
+    """The Coriolis matrix ``C(q, q̇) = Jᵀ (M_ν J̇ + C_ν J)``, with ``Ṁ − 2 C`` skew-symmetric.
+
+    Parameters
+    ----------
+    robot : Robot
+    q, qd : array_like, shape (N, dof) or (dof,)
+        Poses and pose rates.
+
+    Returns
+    -------
+    ndarray, shape (N, dof, dof) or (dof, dof) for one pose
+
+    Raises
+    ------
+    PoseError
+        Poses or rates of the wrong shape or not finite.
+    UnsupportedRobotError
+        A robot without mass (or inertia, for a rigid platform).
 
     References
     ----------
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
-       and Control", Springer, 2009, §7.2.1. (docs/references.bib: siciliano2009)
+           and Control", Springer, 2009, §7.2.1. (docs/references.bib: siciliano2009)
+
+    Examples
+    --------
+    With the centre of mass at the reference point a spinning planar platform has no Coriolis
+    forces:
+
+    >>> from taut.model import example
+    >>> from taut.dynamics import coriolis_matrix
+    >>> coriolis_matrix(example("planar-4cable"), [0.0, 0.0, 0.0], [0.0, 0.0, 1.0])
+    array([[0., 0., 0.],
+           [0., 0., 0.],
+           [0., 0., 0.]])
     """
     arr, single = _poses(robot, q)
     qdot = as_rates(robot, qd, arr.shape[0])
@@ -321,10 +476,42 @@ def coriolis_matrix(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.nda
 
 
 def gravity_forces(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
-    """``g(q) = −Jᵀ w₀`` ``(N, dof)``: the generalized forces of the robot's weight (and of a
-    constant ``platform.wrench``), so that a platform at rest is in equilibrium when
-    ``g = Jᵀ W τ`` — the statics of :func:`taut.statics.external_wrench` (jointed
-    platforms: also the bodies' weights, and the joint rows of :func:`taut.kinematics.joint_forces`)."""
+    """The generalized forces ``g(q) = −Jᵀ w₀`` of the robot's weight (and of a constant
+    ``platform.wrench``).
+
+    A platform at rest is in equilibrium when ``g = Jᵀ W τ``: the statics of
+    :func:`taut.statics.external_wrench` (jointed platforms: also the bodies' weights, and the
+    joint rows of :func:`taut.kinematics.joint_forces`).
+
+    Parameters
+    ----------
+    robot : Robot
+    q : array_like, shape (N, dof) or (dof,)
+        Poses.
+
+    Returns
+    -------
+    ndarray, shape (N, dof) or (dof,) for one pose
+
+    Raises
+    ------
+    PoseError
+        Poses that :func:`~taut.kinematics.as_poses` refuses.
+    UnsupportedRobotError
+        A robot without mass (or inertia, for a rigid platform).
+
+    References
+    ----------
+    .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
+           and Control", Springer, 2009, §7.2. (docs/references.bib: siciliano2009)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.dynamics import gravity_forces
+    >>> gravity_forces(example("planar-4cable"), [0.0, 0.0, 0.0]) + 0.0
+    array([0.  , 9.81, 0.  ])
+    """
     arr, single = _poses(robot, q)
     if robot.n_joints:
         g = jointed_gravity_forces(robot, arr)
@@ -336,12 +523,36 @@ def gravity_forces(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
 
 
 def bias_forces(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.ndarray:
-    """``h(q, q̇) = C(q, q̇) q̇ + g(q)`` ``(N, dof)``.
+    """The bias forces ``h(q, q̇) = C(q, q̇) q̇ + g(q)``.
+
+    Parameters
+    ----------
+    robot : Robot
+    q, qd : array_like, shape (N, dof) or (dof,)
+        Poses and pose rates.
+
+    Returns
+    -------
+    ndarray, shape (N, dof) or (dof,) for one pose
+
+    Raises
+    ------
+    PoseError
+        Poses or rates of the wrong shape or not finite.
+    UnsupportedRobotError
+        A robot without mass (or inertia, for a rigid platform).
 
     References
     ----------
     .. [1] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning
-       and Control", Springer, 2009, §7.2. (docs/references.bib: siciliano2009)
+           and Control", Springer, 2009, §7.2. (docs/references.bib: siciliano2009)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.dynamics import bias_forces
+    >>> bias_forces(example("planar-4cable"), [0.0, 0.0, 0.0], [0.0, 0.0, 1.0]) + 0.0
+    array([0.  , 9.81, 0.  ])
     """
     arr, single = _poses(robot, q)
     qdot = as_rates(robot, qd, arr.shape[0])
@@ -360,11 +571,42 @@ def bias_forces(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.ndarray
 
 
 def generalized_forces(robot: Robot, q: npt.ArrayLike, wrench: npt.ArrayLike) -> np.ndarray:
-    """``Jᵀ w`` ``(N, dof)``: the generalized forces of wrenches ``w`` in taut's convention
-    (forces, then moments about ``p`` in the fixed frame, like ``W τ``).  On a jointed platform
-    ``w`` also holds the joint forces (along, or torques about, the joint axes), as the rows of
-    :func:`taut.kinematics.jointed_structure_matrix`: the cables' generalized forces
-    are ``Jᵀ A[:, :n] τ``."""
+    """The generalized forces ``Jᵀ w`` of wrenches in taut's convention.
+
+    ``w`` holds forces, then moments about ``p`` in the fixed frame, like ``W τ``.  On a jointed
+    platform it also holds the joint forces (along, or torques about, the joint axes), as the
+    rows of :func:`taut.kinematics.jointed_structure_matrix`: the cables' generalized forces are
+    ``Jᵀ A[:, :n] τ``.
+
+    Parameters
+    ----------
+    robot : Robot
+    q : array_like, shape (N, dof) or (dof,)
+        Poses.
+    wrench : array_like, shape (N, dof) or (dof,)
+        Wrenches [N, N m].
+
+    Returns
+    -------
+    ndarray, shape (N, dof) or (dof,) for one pose
+
+    Raises
+    ------
+    PoseError
+        Poses or wrenches of the wrong shape or not finite.
+    UnsupportedRobotError
+        A robot without mass (or inertia, for a rigid platform).
+
+    Examples
+    --------
+    A moment about z on the spatial platform at ``b = 0.5`` rad (``xyz-fixed``): the angle
+    ``a`` feels ``−sin b``, the angle ``c`` all of it:
+
+    >>> from taut.model import example
+    >>> from taut.dynamics import generalized_forces
+    >>> generalized_forces(example("spatial-8cable"), [0, 0, 0, 0, 0.5, 0], [0, 0, 0, 0, 0, 1.0]).round(4) + 0.0
+    array([ 0.    ,  0.    ,  0.    , -0.4794,  0.    ,  1.    ])
+    """
     arr, single = _poses(robot, q)
     w = as_rates(robot, wrench, arr.shape[0], "wrenches")
     J = twist_jacobian(robot, arr) if robot.n_joints else _jacobian(platform_dynamics(robot), arr)

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     from taut.kinematics._jointed import actuator_jacobian, joint_forces, jointed_structure_matrix
     from taut.kinematics._paths import CABLE_OK, MIN_LENGTH, cable_paths
     from taut.kinematics._pose import anchor_points, anchors_at, as_poses, body_frames, platform_frame
-    from taut.kinematics._swivel import refuse_swivels, swivel_angles, swivel_parameters, swivel_paths
+    from taut.kinematics._swivel import SwivelPaths, refuse_swivels, swivel_angles, swivel_parameters, swivel_paths
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -50,6 +50,7 @@ _LAZY = {
     "as_poses": "taut.kinematics._pose",
     "body_frames": "taut.kinematics._pose",
     "platform_frame": "taut.kinematics._pose",
+    "SwivelPaths": "taut.kinematics._swivel",
     "refuse_swivels": "taut.kinematics._swivel",
     "swivel_angles": "taut.kinematics._swivel",
     "swivel_parameters": "taut.kinematics._swivel",
@@ -61,6 +62,7 @@ __all__ = [
     "FKResult",
     "IKResult",
     "MIN_LENGTH",
+    "SwivelPaths",
     "actuator_jacobian",
     "anchor_points",
     "anchors_at",

@@ -8,11 +8,14 @@ direct geometrico-static problem (``taut.dgp``), not this.
 
 from __future__ import annotations
 
+import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.errors import PoseError, TautError, UnreachableLengthsError
 from taut.kinematics._inverse import lengths_at
 from taut.kinematics._pose import as_poses
@@ -20,14 +23,52 @@ from taut.model import Robot
 
 
 @dataclass(frozen=True)
-class FKResult:
+class FKResult(Result):
+    """The pose of :func:`forward_kinematics`.
+
+    Attributes
+    ----------
+    pose : ndarray, shape (pose_size,)
+        The pose found.
+    residual : float
+        ``max |l_i(pose) − L_i|`` [m].
+    evaluations : int
+        Residual evaluations used.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.kinematics import cable_lengths, forward_kinematics
+    >>> robot = example("planar-4cable")
+    >>> fk = forward_kinematics(robot, cable_lengths(robot, [0.1, -0.05, 0.1]))
+    >>> sorted(fk.as_dict()), fk.residual < 1e-9
+    (['evaluations', 'pose', 'residual'], True)
+    """
+
     pose: np.ndarray  #: the pose found, ``(pose_size,)``
     residual: float  #: ``max |l_i(pose) − L_i|`` [m]
-    iterations: int  #: residual evaluations used
+    evaluations: int  #: residual evaluations used
 
 
 def default_guess(robot: Robot) -> np.ndarray:
-    """Centroid of the exit points, zero orientation, joints at mid-range."""
+    """The starting pose of :func:`forward_kinematics` when none is given: the centroid of the
+    exit points, zero orientation, joints at mid-range.
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    ndarray, shape (pose_size,)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.kinematics import default_guess
+    >>> default_guess(example("adjustable-8cable"))
+    array([5.  , 5.  , 6.  , 0.  , 0.  , 0.  , 2.45])
+    """
     pose = np.zeros(robot.pose_size)
     pose[: robot.dimension] = robot.exits.mean(axis=0)
     if robot.n_joints:
@@ -36,15 +77,56 @@ def default_guess(robot: Robot) -> np.ndarray:
 
 
 def forward_kinematics(
-    robot: Robot, lengths: npt.ArrayLike, guess: npt.ArrayLike | None = None, *, tol: float = 1e-9
+    robot: Robot, lengths: npt.ArrayLike, *, guess: npt.ArrayLike | None = None, tol: float = 1e-9
 ) -> FKResult:
-    """The pose at which the cables have ``lengths``, found from ``guess``.
+    """The pose at which the cables have the given lengths, found from a guess.
 
-    Raises :class:`UnreachableLengthsError` when no pose near the guess fits the lengths
-    to ``tol`` (lengths that violate a triangle inequality, or a guess in another basin)."""
+    Damped Newton (Levenberg–Marquardt; trust-region reflective within the joint limits of a
+    jointed platform) on the residual ``l(x) − L`` of the inverse kinematics.  The robot must
+    have at least as many cables as pose coordinates (under-constrained robots are the
+    geometrico-static problem of ``taut.dgp``).
+
+    Parameters
+    ----------
+    robot : Robot
+    lengths : array_like, shape (n,)
+        Cable lengths [m], positive.
+    guess : array_like, shape (pose_size,), optional
+        The starting pose; default :func:`default_guess`.
+    tol : float, optional
+        The largest residual ``max |l_i(x) − L_i|`` [m] accepted.
+
+    Returns
+    -------
+    FKResult
+
+    Raises
+    ------
+    TautError
+        Lengths of the wrong number, not positive or not finite, a bad ``tol``, a robot with
+        fewer cables than pose coordinates.
+    PoseError
+        A guess that :func:`as_poses` refuses.
+    UnreachableLengthsError
+        No pose near the guess fits the lengths to ``tol`` (lengths that violate a triangle
+        inequality, or a guess in another basin).
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.kinematics import cable_lengths, forward_kinematics
+    >>> robot = example("planar-4cable")
+    >>> forward_kinematics(robot, cable_lengths(robot, [0.1, -0.05, 0.1])).pose.round(6)
+    array([ 0.1 , -0.05,  0.1 ])
+    """
     from scipy.optimize import least_squares
 
-    L = np.asarray(lengths, dtype=float)
+    try:
+        L = np.asarray(lengths, dtype=float)
+    except (TypeError, ValueError):
+        raise TautError(f"{robot.name}: cable lengths must be numbers, got {lengths!r}") from None
+    if isinstance(tol, bool) or not isinstance(tol, numbers.Real) or not (0 < tol < math.inf):
+        raise TautError(f"tol must be a positive number [m], got {tol!r}")
     if L.shape != (robot.n_cables,):
         raise TautError(f"{robot.name}: expected {robot.n_cables} cable lengths, got {L.size}")
     if not np.all(np.isfinite(L)) or np.any(L <= 0):

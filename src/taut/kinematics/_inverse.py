@@ -29,6 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.errors import InfeasiblePoseError
 from taut.geometry import cross
 from taut.kinematics._paths import CABLE_OK, MIN_LENGTH, STATUS_REASONS, ZERO_LENGTH, cable_paths
@@ -41,8 +42,33 @@ BATCH_POSES = 32
 
 
 @dataclass(frozen=True)
-class IKResult:
-    """Inverse kinematics over ``N`` poses of a robot with ``n`` cables in ``d`` dimensions."""
+class IKResult(Result):
+    """Inverse kinematics over ``N`` poses of a robot with ``n`` cables in ``d`` dimensions
+    (:func:`inverse_kinematics`; without the batch axis for one pose).
+
+    Attributes
+    ----------
+    lengths : ndarray, shape (N, n)
+        Cable lengths [m], the arc on a swivelling pulley included.
+    directions : ndarray, shape (N, n, d)
+        Unit vectors ``u_i``, from the anchor towards the exit (or tangent) point.
+    anchors : ndarray, shape (N, n, d)
+        Platform anchors ``b_i`` in the fixed frame [m].
+    structure_matrix : ndarray, shape (N, m, n)
+        The wrench matrix ``W = [u_i ; (b_i − p) × u_i]``.
+    exit_points : ndarray, shape (N, n, d)
+        Where the straight part of each cable begins [m]: its exit point, or the tangent
+        point on its swivelling pulley.
+
+    Examples
+    --------
+    >>> import json
+    >>> from taut.model import example
+    >>> from taut.kinematics import inverse_kinematics
+    >>> ik = inverse_kinematics(example("planar-4cable"), [0.0, 0.0, 0.0])
+    >>> ik.lengths.flags.writeable, sorted(ik.as_dict())[:2]
+    (False, ['anchors', 'directions'])
+    """
 
     lengths: np.ndarray  #: ``(N, n)`` cable lengths
     directions: np.ndarray  #: ``(N, n, d)`` unit vectors ``u_i`` (platform → exit point)
@@ -59,11 +85,28 @@ def _infeasible(robot: Robot, status: np.ndarray) -> InfeasiblePoseError:
 
 
 def ik_status(robot: Robot, poses: np.ndarray) -> tuple[IKResult, np.ndarray]:
-    """:func:`inverse_kinematics` of ``(N, pose_size)`` poses already checked by
-    :func:`~taut.kinematics.as_poses`, without raising: the result at every pose and the
-    status ``(N, n)`` of each cable (:data:`CABLE_OK`, :data:`ZERO_LENGTH`, :data:`ON_SWIVEL_AXIS`,
-    :data:`ON_PULLEY`).  Lengths and exit points are finite everywhere; directions and the
-    structure matrix are zero for the cables and poses whose status is not :data:`CABLE_OK`.
+    """:func:`inverse_kinematics` of checked poses, without raising where it does not exist.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : ndarray, shape (N, pose_size)
+        Poses already checked by :func:`~taut.kinematics.as_poses`.
+
+    Returns
+    -------
+    result : IKResult
+        The result at every pose.  Lengths and exit points are finite everywhere;
+        directions and the structure matrix are zero for the cables and poses whose status
+        is not :data:`CABLE_OK`.
+    status : ndarray of int, shape (N, n)
+        The status of each cable: :data:`CABLE_OK`, or why its direction does not exist
+        (a zero length, an anchor on the axis or inside the circle of its swivelling pulley).
+
+    Raises
+    ------
+    PoseError
+        ``poses`` is not an ``(N, pose_size)`` array.
 
     References
     ----------
@@ -71,6 +114,18 @@ def ik_status(robot: Robot, poses: np.ndarray) -> tuple[IKResult, np.ndarray]:
        of Waterloo, 2022, §2.1.1, Eqs. 2.1, 2.8 and 2.10. (docs/references.bib: rushton2022)
     .. [2] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
        Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+
+    Examples
+    --------
+    At the second pose the anchor of cable 1 (index 0) is at its exit point:
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.kinematics import CABLE_OK, ik_status
+    >>> ik, status = ik_status(example("planar-4cable"), np.array([[0, 0, 0.0], [-0.9, -0.95, 0]]))
+    >>> status == CABLE_OK
+    array([[ True,  True,  True,  True],
+           [False,  True,  True,  True]])
     """
     d = robot.dimension
     b = anchors_at(robot, poses)
@@ -89,20 +144,61 @@ def ik_status(robot: Robot, poses: np.ndarray) -> tuple[IKResult, np.ndarray]:
 
 
 def lengths_at(robot: Robot, poses: np.ndarray) -> np.ndarray:
-    """Cable lengths ``(N, n)`` at ``(N, pose_size)`` poses without checks (solvers call it on
-    their own iterates): finite everywhere, also where :func:`ik_status` flags a cable."""
+    """Cable lengths at checked poses, without the checks of :func:`as_poses`.
+
+    Solvers call it on their own iterates.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : ndarray, shape (N, pose_size)
+        Poses already checked by :func:`~taut.kinematics.as_poses`.
+
+    Returns
+    -------
+    ndarray, shape (N, n)
+        Cable lengths [m], finite everywhere, also where :func:`ik_status` flags a cable.
+
+    Raises
+    ------
+    PoseError
+        ``poses`` is not an ``(N, pose_size)`` array.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.kinematics import lengths_at
+    >>> lengths_at(example("planar-4cable"), np.zeros((1, 3))).round(4)
+    array([[1.3086, 1.3086, 1.3086, 1.3086]])
+    """
     return cable_paths(robot, anchors_at(robot, poses))[0]
 
 
 def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
-    """Lengths, unit vectors, anchors and structure matrix at each pose.
+    """Lengths, unit vectors, anchors and structure matrix of the cables at each pose.
 
-    Robots without jointed bodies or swivelling pulleys go through the Numba kernel of
-    :mod:`taut.kinematics._batch` from :data:`BATCH_POSES` poses on; fewer poses, jointed
-    platforms and robots with swivelling pulleys (:mod:`taut.kinematics._swivel`) through NumPy.
-    Raises :class:`InfeasiblePoseError` when a cable has zero length, or its anchor is on the
-    axis or inside the circle of its swivelling pulley (its direction and the structure matrix
-    do not exist there).
+    Robots without jointed bodies or swivelling pulleys go through a Numba kernel from
+    :data:`BATCH_POSES` poses on; fewer poses, jointed platforms and robots with swivelling
+    pulleys through NumPy (the same numbers).
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+
+    Returns
+    -------
+    IKResult
+        Without the batch axis for one pose.
+
+    Raises
+    ------
+    PoseError
+        Poses that :func:`as_poses` refuses.
+    InfeasiblePoseError
+        A cable of zero length, or whose anchor is on the axis or inside the circle of its
+        swivelling pulley: its direction and the structure matrix do not exist there.
 
     References
     ----------
@@ -110,6 +206,18 @@ def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
        of Waterloo, 2022, §2.1.1, Eqs. 2.1, 2.8 and 2.10. (docs/references.bib: rushton2022)
     .. [2] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
        Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+
+    Examples
+    --------
+    At the centre of the planar robot every cable is ``‖(0.9, 0.95)‖ = 1.3086`` m long:
+
+    >>> from taut.model import example
+    >>> from taut.kinematics import inverse_kinematics
+    >>> ik = inverse_kinematics(example("planar-4cable"), [0.0, 0.0, 0.0])
+    >>> ik.lengths.round(4)
+    array([1.3086, 1.3086, 1.3086, 1.3086])
+    >>> ik.directions[0].round(3)
+    array([-0.688, -0.726])
     """
     arr, single = as_poses(robot, poses)
     d = robot.dimension
@@ -142,27 +250,120 @@ def _batched(robot: Robot, poses: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
 
 
 def cable_lengths(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
-    """Cable lengths ``(N, n)`` (``(n,)`` for one pose)."""
+    """Cable lengths at each pose: the ``lengths`` of :func:`inverse_kinematics`.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+
+    Returns
+    -------
+    ndarray, shape (N, n) or (n,) for one pose
+        Lengths [m], the arc on a swivelling pulley included.
+
+    Raises
+    ------
+    PoseError
+        Poses that :func:`as_poses` refuses.
+    InfeasiblePoseError
+        Where a cable's direction does not exist (see :func:`inverse_kinematics`).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.1, Eq. 2.1. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.kinematics import cable_lengths
+    >>> cable_lengths(example("planar-4cable"), [0.0, 0.0, 0.0]).round(4)
+    array([1.3086, 1.3086, 1.3086, 1.3086])
+    """
     return inverse_kinematics(robot, poses).lengths
 
 
 def structure_matrix(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
-    """Structure (wrench) matrix ``W`` of shape ``(N, m, n)`` (``(m, n)`` for one pose).
+    """Structure (wrench) matrix ``W = [u_i ; (b_i − p) × u_i]`` at each pose.
+
+    Equilibrium reads ``W τ + w_ext = 0`` (``docs/architecture.md`` §2.4).
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+
+    Returns
+    -------
+    ndarray, shape (N, m, n) or (m, n) for one pose
+        Forces in the first ``d`` rows, moments about the platform reference point in the
+        others (``m`` the wrench size).
+
+    Raises
+    ------
+    PoseError
+        Poses that :func:`as_poses` refuses.
+    InfeasiblePoseError
+        Where a cable's direction does not exist (see :func:`inverse_kinematics`).
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §2.1.1, Eqs. 2.8 and 2.10. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.kinematics import structure_matrix
+    >>> structure_matrix(example("planar-4cable"), [0.0, 0.0, 0.0]).round(3)
+    array([[-0.688,  0.688,  0.688, -0.688],
+           [-0.726, -0.726,  0.726,  0.726],
+           [ 0.038, -0.038,  0.038, -0.038]])
     """
     return inverse_kinematics(robot, poses).structure_matrix
 
 
 def batch_structure_matrices(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Cable lengths ``(N, n)``, structure matrices ``W (N, m, n)`` and a mask ``ok (N,)``
-    of the poses where every cable has a length of at least ``MIN_LENGTH`` and, through a
-    swivelling pulley, a tangent point (elsewhere ``W`` is zero).  Robots with jointed bodies
-    and planar robots with swivelling pulleys go through the NumPy implementation
-    (:func:`ik_status`)."""
+    """Cable lengths and structure matrices of many poses, without raising where ``W`` does not exist.
+
+    Made for workspace grids: the Numba kernel of :mod:`taut.kinematics._batch`; robots with
+    jointed bodies and planar robots with swivelling pulleys go through :func:`ik_status`.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size)
+
+    Returns
+    -------
+    lengths : ndarray, shape (N, n)
+        Cable lengths [m].
+    W : ndarray, shape (N, m, n)
+        Structure matrices; zero where ``ok`` is False.
+    ok : ndarray of bool, shape (N,)
+        The poses where every cable has a length of at least ``MIN_LENGTH`` (1e-12 m) and,
+        through a swivelling pulley, a tangent point.
+
+    Raises
+    ------
+    PoseError
+        Poses that :func:`as_poses` refuses.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.1, Eqs. 2.1, 2.8 and 2.10. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.kinematics import batch_structure_matrices
+    >>> lengths, W, ok = batch_structure_matrices(example("planar-4cable"), [[0, 0, 0], [-0.9, -0.95, 0]])
+    >>> ok, W.shape, bool(np.all(W[1] == 0))
+    (array([ True, False]), (2, 3, 4), True)
+    """
     from taut.kinematics._batch import kernel_structure_matrices, supports_batch
 
     arr, _ = as_poses(robot, poses)

@@ -101,16 +101,44 @@ def _point_derivatives(robot: Robot, arr: np.ndarray, b: np.ndarray, bodies: np.
 
 
 def actuator_jacobian(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
-    """Inverse-kinematics Jacobian ``J`` (Eq. 3.2.12): ``q̇ = J [v, ω, q̇_joints]``, shape
-    ``(N, n + n_joints, m + n_joints)`` with ``m`` the platform wrench size (9×7 for the
-    adjustable platform).  Raises :class:`~taut.errors.InfeasiblePoseError` at a
-    zero-length cable.
+    """Inverse-kinematics Jacobian ``J`` with ``q̇ = J [v, ω, q̇_joints]`` (Eq. 3.2.12).
+
+    The actuator rates ``q̇`` are the cable length rates then the joint rates; the twist is the
+    velocity of the platform reference point, the angular velocity and the joint rates.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+
+    Returns
+    -------
+    ndarray, shape (N, n + n_joints, m + n_joints), or without the batch axis for one pose
+        ``m`` is the platform wrench size (9×7 for the adjustable platform).
+
+    Raises
+    ------
+    PoseError
+        Poses that :func:`as_poses` refuses.
+    InfeasiblePoseError
+        A zero-length cable.
 
     References
     ----------
     .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
        Bachelor thesis, Czech Technical University in Prague, 2020, §3.2.2, Eqs. 3.2.6–3.2.12.
        (docs/references.bib: lieskovsky2020)
+
+    Examples
+    --------
+    The joint row of the adjustable platform is a unit row (Eq. 3.2.8):
+
+    >>> from taut.model import example
+    >>> from taut.kinematics import actuator_jacobian, default_guess
+    >>> robot = example("adjustable-8cable")
+    >>> J = actuator_jacobian(robot, default_guess(robot))
+    >>> J.shape, J[8]
+    ((9, 7), array([0., 0., 0., 0., 0., 0., 1.]))
     """
     arr, single = as_poses(robot, poses)
     ik = inverse_kinematics(robot, arr)
@@ -125,15 +153,42 @@ def actuator_jacobian(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
 
 
 def jointed_structure_matrix(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
-    """``A = [−J_cablesᵀ, J_jointsᵀ]`` of shape ``(N, m + n_joints, n + n_joints)``:
-    ``A [τ; ζ] + Q_ext = 0`` (Eqs. 3.3.7–3.3.12, sign convention in the module docstring).
-    Its top-left ``m × n`` block is the platform structure matrix ``W``.
+    """The structure matrix of a jointed platform, ``A = [−J_cablesᵀ, J_jointsᵀ]``.
+
+    Equilibrium reads ``A [τ; ζ] + Q_ext = 0`` (Eqs. 3.3.7–3.3.12; the sign convention is in the
+    module's docstring).  Its top-left ``m × n`` block is the platform structure matrix ``W``.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+
+    Returns
+    -------
+    ndarray, shape (N, m + n_joints, n + n_joints), or without the batch axis for one pose
+
+    Raises
+    ------
+    PoseError
+        Poses that :func:`as_poses` refuses.
+    InfeasiblePoseError
+        A zero-length cable.
 
     References
     ----------
     .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
        Bachelor thesis, Czech Technical University in Prague, 2020, §3.3, Eqs. 3.3.7–3.3.11.
        (docs/references.bib: lieskovsky2020)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.kinematics import default_guess, jointed_structure_matrix, structure_matrix
+    >>> robot = example("adjustable-8cable")
+    >>> A = jointed_structure_matrix(robot, default_guess(robot))
+    >>> A.shape, bool(np.allclose(A[:6, :8], structure_matrix(robot, default_guess(robot))))
+    ((7, 9), True)
     """
     J = actuator_jacobian(robot, poses)
     n = robot.n_cables
@@ -143,24 +198,59 @@ def jointed_structure_matrix(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
 
 
 def joint_forces(robot: Robot, poses: npt.ArrayLike, tensions: npt.ArrayLike) -> np.ndarray:
-    """Joint actuator forces ``ζ`` (Eq. 3.3.12) balancing the cable tensions ``τ`` and the
-    weights of the bodies (``platform.bodies[].mass``) along the joint coordinates,
-    ``(N, n_joints)``: ``ζ = −A_joints,cables τ − Q_gravity`` (positive ``ζ`` pushes the
-    child body along its joint axis; a revolute joint gets a torque about its axis).
+    """Joint actuator forces ``ζ`` balancing the cable tensions and the bodies' weights (Eq. 3.3.12).
+
+    ``ζ = −A_joints,cables τ − Q_gravity`` along the joint coordinates: a positive ``ζ``
+    pushes the child body along its joint axis; a revolute joint gets a torque about its axis.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+    tensions : array_like, shape (n,) or (N, n)
+        Cable tensions [N].
+
+    Returns
+    -------
+    ndarray, shape (N, n_joints) or (n_joints,) for one pose
+        Forces [N] (prismatic joints) or torques [N·m] (revolute joints).
+
+    Raises
+    ------
+    PoseError
+        Poses that :func:`as_poses` refuses.
+    InfeasiblePoseError
+        A zero-length cable.
+    TautError
+        Tensions that are not finite numbers of the right shape.
 
     References
     ----------
     .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
        Bachelor thesis, Czech Technical University in Prague, 2020, §3.3.2, Eq. 3.3.12.
        (docs/references.bib: lieskovsky2020)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.kinematics import default_guess, joint_forces
+    >>> robot = example("adjustable-8cable")
+    >>> joint_forces(robot, default_guess(robot), np.full(8, 100.0)).round(3)
+    array([247.014])
     """
     arr, single = as_poses(robot, poses)
     A = jointed_structure_matrix(robot, arr)
-    tau = np.asarray(tensions, dtype=float)
+    try:
+        tau = np.asarray(tensions, dtype=float)
+    except (TypeError, ValueError):
+        raise TautError(f"{robot.name}: tensions must be numbers, got {tensions!r}") from None
     if tau.shape not in ((robot.n_cables,), (arr.shape[0], robot.n_cables)):
         raise TautError(
             f"{robot.name}: tensions must have shape ({robot.n_cables},) or ({arr.shape[0]}, {robot.n_cables}), got {tau.shape}"
         )
+    if not np.isfinite(tau).all():
+        raise TautError(f"{robot.name}: tensions must be finite, got {tau.tolist()}")
     tau = np.broadcast_to(tau, (arr.shape[0], robot.n_cables))
     m, n = robot.wrench_dim, robot.n_cables
     zeta = -np.einsum("kjc,kc->kj", A[:, m:, :n], tau)

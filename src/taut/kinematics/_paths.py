@@ -13,13 +13,18 @@ from __future__ import annotations
 
 import numpy as np
 
+from taut.errors import PoseError
 from taut.kinematics._swivel import swivel_parameters, swivel_paths
 from taut.model import Robot
 
 #: A cable shorter than this [m] has no direction: the pose is rejected.
 MIN_LENGTH = 1e-12
 
-#: ``ik_status`` codes of a cable at a pose: its quantities exist, or why they do not.
+#: The status codes of a cable at a pose (:func:`~taut.kinematics.ik_status`,
+#: :func:`cable_paths`): ``CABLE_OK`` (0) its direction and structure-matrix column exist;
+#: ``ZERO_LENGTH`` (1) its anchor is at its exit point; ``ON_SWIVEL_AXIS`` (2) its anchor is on
+#: the axis of its swivelling pulley; ``ON_PULLEY`` (3) its anchor is on or inside the pulley's
+#: circle.  Only ``CABLE_OK`` is exported: test ``status == CABLE_OK``.
 CABLE_OK, ZERO_LENGTH, ON_SWIVEL_AXIS, ON_PULLEY = 0, 1, 2, 3
 
 STATUS_REASONS = {
@@ -30,9 +35,51 @@ STATUS_REASONS = {
 
 
 def cable_paths(robot: Robot, anchors: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Cable lengths ``(N, n)``, the points where their straight parts begin ``(N, n, d)``
-    (exit points, or tangent points of swivelling pulleys) and their status ``(N, n)`` (see
-    :func:`ik_status`) for the platform anchors ``(N, n, d)`` in the fixed frame."""
+    """Where each cable runs, given its platform anchor: its length, the start of its straight
+    part and whether its direction exists.
+
+    Parameters
+    ----------
+    robot : Robot
+    anchors : ndarray, shape (N, n, d)
+        Platform anchors in the fixed frame [m] (:func:`~taut.kinematics.anchors_at`).
+
+    Returns
+    -------
+    lengths : ndarray, shape (N, n)
+        Cable lengths [m], the arc on a swivelling pulley included.
+    starts : ndarray, shape (N, n, d)
+        Where the straight part of each cable begins [m]: its exit point, or the tangent
+        point of its swivelling pulley.
+    status : ndarray of int, shape (N, n)
+        :data:`CABLE_OK` or why the cable has no direction (see :func:`ik_status`).
+
+    Raises
+    ------
+    PoseError
+        ``anchors`` is not an ``(N, n, d)`` array.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.1, Eq. 2.1. (docs/references.bib: rushton2022)
+    .. [2] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+       Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.kinematics import anchors_at, cable_paths
+    >>> robot = example("planar-4cable")
+    >>> lengths, starts, status = cable_paths(robot, anchors_at(robot, np.zeros((1, 3))))
+    >>> lengths.round(4), starts[0, 0], status
+    (array([[1.3086, 1.3086, 1.3086, 1.3086]]), array([-1., -1.]), array([[0, 0, 0, 0]]))
+    """
+    if not isinstance(anchors, np.ndarray) or anchors.shape[1:] != robot.exits.shape or anchors.ndim != 3:
+        raise PoseError(
+            f"{robot.name}: expected anchors of shape (N, {robot.n_cables}, {robot.dimension}), got {np.shape(anchors)}"
+        )
     exits = np.broadcast_to(robot.exits[None], anchors.shape)
     v = exits - anchors
     lengths = np.sqrt(np.einsum("nki,nki->nk", v, v))

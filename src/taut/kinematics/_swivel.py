@@ -52,7 +52,8 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from taut.errors import InfeasiblePoseError, UnsupportedRobotError
+from taut._results import Result
+from taut.errors import InfeasiblePoseError, TautError, UnsupportedRobotError
 from taut.geometry import axis_frames
 from taut.kinematics._pose import anchors_at, as_poses
 from taut.model import Robot
@@ -63,8 +64,35 @@ SINGULAR_TOL = 1e-9
 
 
 @dataclass(frozen=True)
-class SwivelPaths:
-    """The cables through swivelling pulleys at ``N`` poses, ``s`` such cables."""
+class SwivelPaths(Result):
+    """The cables through swivelling pulleys at ``N`` poses, ``s`` such cables
+    (:func:`swivel_paths`).
+
+    Attributes
+    ----------
+    lengths : ndarray, shape (N, s)
+        Cable lengths ``r β + l_f`` [m]: the arc wound on the pulley and the free length.
+    tangent_points : ndarray, shape (N, s, d)
+        Points ``C`` where the cables leave the pulleys [m].
+    wrap : ndarray, shape (N, s)
+        Wrap angles ``β`` [rad], in ``[0, 2π)``.
+    on_axis : ndarray of bool, shape (N, s)
+        Anchors on a swivel axis (no swivel angle).
+    on_pulley : ndarray of bool, shape (N, s)
+        Anchors on or inside the pulley circle (no tangent).
+
+    References
+    ----------
+    .. [1] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+       Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+
+    Examples
+    --------
+    >>> from taut.kinematics import swivel_paths
+    >>> paths = swivel_paths([[0, 0, 0]], [[0, 0, 1]], [0.1], [[[1.0, 0, 0]]])
+    >>> sorted(paths.as_dict())
+    ['lengths', 'on_axis', 'on_pulley', 'tangent_points', 'wrap']
+    """
 
     lengths: np.ndarray  #: ``(N, s)`` cable lengths ``r β + l_f``
     tangent_points: np.ndarray  #: ``(N, s, 3)`` points ``C`` where the cables leave the pulleys
@@ -74,7 +102,32 @@ class SwivelPaths:
 
 
 def swivel_parameters(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``(indices (s,), unit axes (s, d), radii (s,))`` of the robot's swivelling pulleys."""
+    """The swivelling pulleys of a robot: which cables, their unit axes and radii.
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    indices : ndarray of int, shape (s,)
+        The 0-based cables that leave through a swivelling pulley (``robot.swivel_cables``).
+    axes : ndarray, shape (s, d)
+        Their unit swivel axes.
+    radii : ndarray, shape (s,)
+        Their pulley radii [m].
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> robot = example("spatial-8cable")
+    >>> pulleys = {"swivel": {"axis": (0, 0, 1), "radius": 0.05}}
+    >>> robot = robot.model_copy(update={"cables": tuple(c.model_copy(update=pulleys) for c in robot.cables)})
+    >>> from taut.kinematics import swivel_parameters
+    >>> indices, axes, radii = swivel_parameters(robot)
+    >>> indices, axes[0], float(radii[0])
+    (array([0, 1, 2, 3, 4, 5, 6, 7]), array([0., 0., 1.]), 0.05)
+    """
     idx = np.array(robot.swivel_cables, dtype=int)
     swivels = [robot.cables[i].swivel for i in robot.swivel_cables]
     axes = np.array([s.axis for s in swivels if s is not None], dtype=float).reshape(-1, robot.dimension)
@@ -90,13 +143,53 @@ def in_space(x: np.ndarray) -> np.ndarray:
     return np.concatenate([x, np.zeros((*x.shape[:-1], 1))], axis=-1)
 
 
-def swivel_paths(points: np.ndarray, axes: np.ndarray, radii: np.ndarray, anchors: np.ndarray) -> SwivelPaths:
-    """Lengths and tangent points of cables that run onto pulleys at ``points (s, d)`` along
-    the unit ``axes (s, d)``, pulleys of ``radii (s,)``, to the anchors ``(N, s, d)``; ``d``
-    is 3, or 2 for a planar robot (axes in its plane; tangent points ``(N, s, 2)``).
+def swivel_paths(
+    points: npt.ArrayLike, axes: npt.ArrayLike, radii: npt.ArrayLike, anchors: npt.ArrayLike
+) -> SwivelPaths:
+    """Lengths and tangent points of cables that leave through swivelling pulleys.
 
-    Every output is finite; poses flagged ``on_axis`` or ``on_pulley`` have a length (at
-    ``d = 0`` it does not depend on the pulley plane) but no meaningful tangent point."""
+    The wrap angle is ``β = atan2(x, h) + atan2(r, l_f)`` in ``[0, 2π)`` and the length
+    ``r β + l_f`` (the module's docstring derives them).  Every output is finite; poses flagged
+    ``on_axis`` or ``on_pulley`` have a length (at ``d = 0`` it does not depend on the pulley
+    plane) but no meaningful tangent point.
+
+    Parameters
+    ----------
+    points : array_like, shape (s, d)
+        Where each cable runs onto its pulley (the exit points) [m]; ``d`` is 3, or 2 for a
+        planar robot (axes in its plane).
+    axes : array_like, shape (s, d)
+        Unit swivel axes, along which the cables come from their winches.
+    radii : array_like, shape (s,)
+        Pulley radii [m].
+    anchors : array_like, shape (N, s, d)
+        Platform anchors in the fixed frame [m].
+
+    Returns
+    -------
+    SwivelPaths
+
+    Raises
+    ------
+    TautError
+        Arguments that are not numbers or not of matching shapes.
+
+    References
+    ----------
+    .. [1] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+       Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+
+    Examples
+    --------
+    An anchor 1 m from a pulley of radius 0.1 m, level with it: the cable wraps
+    ``β = π/2 + atan2(0.1, √0.8)`` and its length is ``0.1 β + √0.8``:
+
+    >>> from taut.kinematics import swivel_paths
+    >>> paths = swivel_paths([[0, 0, 0]], [[0, 0, 1]], [0.1], [[[1.0, 0, 0]]])
+    >>> paths.wrap.round(4), paths.lengths.round(4)
+    (array([[1.6821]]), array([[1.0626]]))
+    """
+    points, axes, radii, anchors = _swivel_arrays(points, axes, radii, anchors)
     d = points.shape[-1]
     if d == 2:
         # an anchor on the axis line: the pulley plane is still the robot's plane
@@ -123,9 +216,26 @@ def swivel_paths(points: np.ndarray, axes: np.ndarray, radii: np.ndarray, anchor
     return SwivelPaths(radii[None] * wrap + free, tangent[..., :d], wrap, on_axis, on_pulley)
 
 
+def _swivel_arrays(
+    points: npt.ArrayLike, axes: npt.ArrayLike, radii: npt.ArrayLike, anchors: npt.ArrayLike
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The arguments of :func:`swivel_paths` as float arrays of matching shapes."""
+    try:
+        arrays = [np.asarray(x, dtype=float) for x in (points, axes, radii, anchors)]
+    except (TypeError, ValueError):
+        raise TautError("swivel_paths takes arrays of numbers") from None
+    p, k, r, b = arrays
+    s = r.shape[0] if r.ndim == 1 else -1
+    if p.ndim != 2 or p.shape[1] not in (2, 3) or p.shape != k.shape or s != p.shape[0] or b.shape[1:] != p.shape:
+        raise TautError(
+            "swivel_paths takes points (s, d), axes (s, d), radii (s,) and anchors (N, s, d) with d = 2 or 3, got "
+            f"shapes {p.shape}, {k.shape}, {r.shape}, {b.shape}"
+        )
+    return p, k, r, b
+
+
 def swivel_angles(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
-    """The swivel angle ``γ`` [rad] of each swivelling pulley at each pose: ``(N, s)`` for
-    ``N`` poses (``(s,)`` for one), a column per cable of ``robot.swivel_cables`` in that order.
+    """The swivel angle ``γ`` of each swivelling pulley at each pose.
 
     ``γ = atan2(w·y, w·x)`` in ``[−π, π]``, where ``w`` is the anchor's offset from the exit
     point ``b − D`` and ``x``, ``y`` the first two axes of the winch frame
@@ -134,6 +244,16 @@ def swivel_angles(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     ``γ = atan2(b_y, b_x)`` in the winch frame), for a file whose winch frames are those
     taut writes.  On a planar robot ``γ`` is 0 or π: the side of the axis line the pulley
     faces.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+
+    Returns
+    -------
+    ndarray, shape (N, s) or (s,) for one pose
+        The angles [rad], a column per cable of ``robot.swivel_cables`` in that order.
 
     Raises
     ------
@@ -148,6 +268,19 @@ def swivel_angles(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
        (``CKinematics::doInverseKinematicsPulleyEx``). (docs/references.bib: wirex)
     .. [2] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
        Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+
+    Examples
+    --------
+    Cable 1 leaves ``(−1.5, −1, −1)`` for its anchor at ``(0.15, −0.1, 0.05)``: the pulley
+    turns to ``atan2(0.9, 1.65)``:
+
+    >>> from taut.model import example
+    >>> robot = example("spatial-8cable")
+    >>> pulleys = {"swivel": {"axis": (0, 0, 1), "radius": 0.05}}
+    >>> robot = robot.model_copy(update={"cables": tuple(c.model_copy(update=pulleys) for c in robot.cables)})
+    >>> from taut.kinematics import swivel_angles
+    >>> swivel_angles(robot, [0, 0, 0, 0, 0, 0])[:2].round(3)
+    array([0.499, 2.642])
     """
     if not robot.swivel_cables:
         raise UnsupportedRobotError(f"{robot.name}: no cable leaves through a swivelling pulley (cables[].swivel)")
@@ -169,8 +302,26 @@ def swivel_angles(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
 
 
 def refuse_swivels(robot: Robot, analysis: str) -> None:
-    """Raise :class:`UnsupportedRobotError` if ``robot`` has swivelling pulleys, which
-    ``analysis`` does not model (it takes each cable's exit as a fixed point)."""
+    """Refuse a robot with swivelling pulleys for an analysis that takes exits as fixed points.
+
+    Parameters
+    ----------
+    robot : Robot
+    analysis : str
+        The analysis' name, for the message (e.g. ``"the geometrico-static problem"``).
+
+    Raises
+    ------
+    UnsupportedRobotError
+        ``robot`` has cables through swivelling pulleys.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.kinematics import refuse_swivels
+    >>> refuse_swivels(example("spatial-8cable"), "this analysis") is None
+    True
+    """
     if robot.swivel_cables:
         numbers = ", ".join(str(i + 1) for i in robot.swivel_cables)
         raise UnsupportedRobotError(

@@ -28,7 +28,7 @@ __all__ = ["plot_motion_tensions", "plot_control"]
 def plot_motion_tensions(
     robot: Robot, result: InverseDynamicsResult | ForwardDynamicsResult, ax: Axes | None = None
 ) -> Axes:
-    """Plot the tensions of an inverse-dynamics result (against its ``time``, or the sample
+    """Plot the tensions of an inverse-dynamics result (against its ``times``, or the sample
     index without one) or of a simulated motion (against time; slack samples marked) on 2-D
     axes ``ax`` (``None``: a new figure) and return the ``Axes``."""
     tmin, tmax = robot.tension_bounds
@@ -36,11 +36,11 @@ def plot_motion_tensions(
     admissible: np.ndarray
     if slack is None:
         admissible = np.asarray(cast("InverseDynamicsResult", result).feasible, bool)
-        ax = plot_tensions(result.time, result.tensions, tmin, tmax, admissible, ax)
+        ax = plot_tensions(result.times, result.tensions, tmin, tmax, admissible, ax)
         what = f"inverse dynamics ({result.method})"
     else:
         admissible = np.asarray(~np.asarray(slack, bool).any(axis=1))
-        ax = plot_tensions(result.time, result.tensions, tmin, tmax, admissible, ax, mask_infeasible=False)
+        ax = plot_tensions(result.times, result.tensions, tmin, tmax, admissible, ax, mask_infeasible=False)
         what = f"simulated motion ({result.method})"
     ok = int(np.count_nonzero(admissible))
     ax.set_title(f"{robot.name}: {what}, {ok} of {len(result.tensions)} samples admissible", fontsize=10)
@@ -56,11 +56,11 @@ def plot_control(robot: Robot, result: ControlResult) -> Figure:
 
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
     plot_tensions(
-        result.time,
+        result.times,
         result.tensions,
         result.tension_min,
         result.tension_max,
-        result.admissible,
+        result.feasible,
         top,
         mask_infeasible=False,
     )
@@ -74,7 +74,7 @@ def plot_control(robot: Robot, result: ControlResult) -> Figure:
     d = robot.dimension
     for j, name in enumerate(result.pose_names):
         unit = "mm" if j < d else "mrad"
-        bottom.plot(result.time, 1e3 * result.error[:, j], label=f"{name} [{unit}]", lw=1.2)
+        bottom.plot(result.times, 1e3 * result.error[:, j], label=f"{name} [{unit}]", lw=1.2)
     bottom.axhline(0.0, color="0.6", lw=0.8)
     bottom.set_xlabel("time [s]")
     bottom.set_ylabel("tracking error q_ref − q")

@@ -36,7 +36,7 @@ import numpy as np
 
 from taut.collision import proximity
 from taut.errors import TautError
-from taut.kinematics import batch_structure_matrices
+from taut.kinematics import as_poses, batch_structure_matrices
 from taut.model import Robot
 from taut.statics import BoxWrenchSet, WrenchSet, external_wrench, static_equilibrium, wrench_closure, wrench_feasible
 
@@ -61,15 +61,46 @@ MIN_FORCE = 1.0
 class WorkspaceCondition(ABC):
     """Base interface of a workspace condition.
 
-    Subclasses set ``name`` (the registry key, used on the command line) and implement
-    :meth:`evaluate`.  Instances must be picklable: they travel to worker processes."""
+    Subclasses set ``name`` (the registry key, used on the command line) and ``description``
+    and implement :meth:`evaluate`; adding a condition is adding one class and one entry of
+    :data:`CONDITIONS`.  Instances must be picklable: they travel to worker processes.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> robot = example("planar-4cable")
+    >>> poses = np.array([[0.0, 0.0, 0.0], [0.9, 0.9, 0.0]])  # the centre, and near exit 3
+    >>> from taut.workspace import WorkspaceCondition
+    >>> class Left(WorkspaceCondition):
+    ...     name = "left"
+    ...     def evaluate(self, robot, poses):
+    ...         return np.asarray(poses)[:, 0] < 0
+    >>> Left().evaluate(robot, poses - 0.5)
+    array([ True, False])
+    """
 
     name: ClassVar[str] = ""
     description: ClassVar[str] = ""
 
     @abstractmethod
     def evaluate(self, robot: Robot, poses: np.ndarray) -> np.ndarray:
-        """``(N,)`` bool: which of the poses ``(N, pose_size)`` satisfy the condition."""
+        """Which poses satisfy the condition.
+
+        Parameters
+        ----------
+        robot : Robot
+        poses : array_like, shape (N, pose_size)
+
+        Returns
+        -------
+        ndarray of bool, shape (N,)
+        """
 
     def __repr__(self) -> str:
         return f"<{type(self).__name__} {self.name!r}>"
@@ -77,10 +108,41 @@ class WorkspaceCondition(ABC):
 
 class WrenchCondition(WorkspaceCondition):
     """A condition on the structure matrix: computes ``W`` for every pose (poses with a
-    zero-length cable are outside) and delegates to :meth:`test`."""
+    zero-length cable are outside) and delegates to :meth:`test`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> robot = example("planar-4cable")
+    >>> poses = np.array([[0.0, 0.0, 0.0], [0.9, 0.9, 0.0]])  # the centre, and near exit 3
+    >>> from taut.workspace import WrenchCondition
+    >>> class FullRank(WrenchCondition):
+    ...     name = "full-rank"
+    ...     def test(self, robot, poses, W):
+    ...         return np.linalg.matrix_rank(W) == W.shape[1]
+    >>> FullRank().evaluate(robot, poses)
+    array([ True,  True])
+    """
 
     def evaluate(self, robot: Robot, poses: np.ndarray) -> np.ndarray:
-        poses = np.asarray(poses, dtype=float)
+        """Which poses satisfy the condition (False where a cable has no direction).
+
+        Parameters
+        ----------
+        robot : Robot
+        poses : array_like, shape (N, pose_size)
+
+        Returns
+        -------
+        ndarray of bool, shape (N,)
+
+        Raises
+        ------
+        PoseError
+            Poses that :func:`~taut.kinematics.as_poses` refuses.
+        """
+        poses = as_poses(robot, poses)[0]
         _, W, ok = batch_structure_matrices(robot, poses)
         out = np.zeros(poses.shape[0], bool)
         if ok.all():
@@ -91,25 +153,79 @@ class WrenchCondition(WorkspaceCondition):
 
     @abstractmethod
     def test(self, robot: Robot, poses: np.ndarray, W: np.ndarray) -> np.ndarray:
-        """``(N,)`` bool from the structure matrices ``W (N, m, n)`` of valid poses."""
+        """The condition at valid poses, from their structure matrices.
+
+        Parameters
+        ----------
+        robot : Robot
+        poses : ndarray, shape (N, pose_size)
+        W : ndarray, shape (N, m, n)
+            The structure matrices at ``poses``.
+
+        Returns
+        -------
+        ndarray of bool, shape (N,)
+        """
 
 
 class WrenchClosure(WrenchCondition):
+    """The wrench-closure workspace (WCW): the cables positively span the wrench space, so
+    that they balance any wrench with positive tensions.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> robot = example("planar-4cable")
+    >>> poses = np.array([[0.0, 0.0, 0.0], [0.9, 0.9, 0.0]])  # the centre, and near exit 3
+    >>> from taut.workspace import WrenchClosure
+    >>> WrenchClosure().evaluate(robot, poses)
+    array([ True, False])
+    """
+
     name = "wrench-closure"
     description = "the cables positively span the wrench space (any wrench, positive tensions)"
 
     def test(self, robot: Robot, poses: np.ndarray, W: np.ndarray) -> np.ndarray:
+        """:func:`taut.statics.wrench_closure` of ``W``: ``(N,)`` bool."""
         return wrench_closure(W)
 
 
 def default_wrench_set(robot: Robot) -> BoxWrenchSet:
-    """The default required set of ``wrench-feasible``, relative to the external wrench: a
-    box centred at 0 with force half-widths ``f = max(10 % of |F|, 1 N)``, ``F`` the force
+    """The default required wrench set of ``wrench-feasible``, relative to the external wrench.
+
+    A box centred at 0 with force half-widths ``f = max(10 % of |F|, 1 N)``, ``F`` the force
     of the robot's external wrench (weights plus constant wrench), and moment half-widths
     ``max(10 % of M, f·ρ)``, where ``M = |constant moment| + |F|·|wrench point|`` bounds the
     external moment over all orientations and ``ρ`` is the platform radius (largest anchor
     distance to the reference point) — the moment of the force uncertainty applied at the
-    rim.  ``f·ρ`` falls back to 1 N·m when ``ρ = 0``."""
+    rim.  ``f·ρ`` falls back to 1 N·m when ``ρ = 0``.
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    BoxWrenchSet
+        Of the robot's wrench size.
+
+    Examples
+    --------
+    The planar robot weighs 9.81 N (``f = 1`` N) and its anchors are ``‖(0.1, 0.05)‖`` from
+    the reference point:
+
+    >>> from taut.model import example
+    >>> from taut.workspace import default_wrench_set
+    >>> box = default_wrench_set(example("planar-4cable"))
+    >>> box.upper.round(4)
+    array([1.    , 1.    , 0.1118])
+    """
     d, m = robot.dimension, robot.wrench_dim
     plat = robot.platform
     force = np.zeros(d)
@@ -128,14 +244,42 @@ def default_wrench_set(robot: Robot) -> BoxWrenchSet:
 
 
 class WrenchFeasible(WrenchCondition):
-    """Wrench-feasible workspace: every wrench of ``w_ext + wrench_set`` (or of
-    ``wrench_set`` alone with ``around_external=False``) is balanced within the tension
-    bounds.  ``wrench_set`` defaults to :func:`default_wrench_set`."""
+    """The wrench-feasible workspace (WFW): every wrench of a set is balanced within the
+    tension bounds.
+
+    Parameters
+    ----------
+    wrench_set : WrenchSet, optional
+        The required set; default :func:`default_wrench_set`.
+    around_external : bool, optional
+        True: the set is centred at the robot's external wrench (weight included), i.e. the
+        wrenches ``w_ext + w`` for ``w`` in the set; False: the set alone.
+
+    Raises
+    ------
+    TautError
+        A ``wrench_set`` that is not a :class:`~taut.statics.WrenchSet`.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> robot = example("planar-4cable")
+    >>> poses = np.array([[0.0, 0.0, 0.0], [0.9, 0.9, 0.0]])  # the centre, and near exit 3
+    >>> from taut.workspace import WrenchFeasible
+    >>> WrenchFeasible().evaluate(robot, poses)
+    array([ True, False])
+    """
 
     name = "wrench-feasible"
     description = "every wrench of a set around the external wrench is balanced within the tension bounds"
 
-    def __init__(self, wrench_set: WrenchSet | None = None, around_external: bool = True) -> None:
+    def __init__(self, wrench_set: WrenchSet | None = None, *, around_external: bool = True) -> None:
         if wrench_set is not None and not isinstance(wrench_set, WrenchSet):
             raise TautError(
                 f"wrench_set must be a WrenchSet (box, polytope, ellipsoid, single wrench), got {type(wrench_set).__name__}"
@@ -144,6 +288,22 @@ class WrenchFeasible(WrenchCondition):
         self.around_external = bool(around_external)
 
     def required_set(self, robot: Robot) -> WrenchSet:
+        """The wrench set required of ``robot``.
+
+        Parameters
+        ----------
+        robot : Robot
+
+        Returns
+        -------
+        WrenchSet
+            ``wrench_set``, or :func:`default_wrench_set` of ``robot``.
+
+        Raises
+        ------
+        TautError
+            A set whose size is not the robot's wrench size.
+        """
         ws = self.wrench_set if self.wrench_set is not None else default_wrench_set(robot)
         if ws.dim != robot.wrench_dim:
             raise TautError(
@@ -152,28 +312,64 @@ class WrenchFeasible(WrenchCondition):
         return ws
 
     def test(self, robot: Robot, poses: np.ndarray, W: np.ndarray) -> np.ndarray:
+        """:func:`taut.statics.wrench_feasible` of ``W`` and the required set: ``(N,)`` bool."""
         ws = self.required_set(robot)
         wrench = external_wrench(robot, poses) if self.around_external else None
         return wrench_feasible(W, ws, tension_bounds=robot.tension_bounds, wrench=wrench)
 
 
 class StaticEquilibrium(WrenchCondition):
+    """The static workspace: the robot's external wrench (weight included) is balanced within
+    the tension bounds — the wrench-feasible workspace of a single wrench.  It also serves
+    under-constrained robots (fewer cables than degrees of freedom).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> robot = example("planar-4cable")
+    >>> poses = np.array([[0.0, 0.0, 0.0], [0.9, 0.9, 0.0]])  # the centre, and near exit 3
+    >>> from taut.workspace import StaticEquilibrium
+    >>> StaticEquilibrium().evaluate(robot, poses)
+    array([ True, False])
+    """
+
     name = "static"
     description = "the external wrench (weight included) is balanced within the tension bounds"
 
     def test(self, robot: Robot, poses: np.ndarray, W: np.ndarray) -> np.ndarray:
+        """:func:`taut.statics.static_equilibrium` at the external wrench: ``(N,)`` bool."""
         return static_equilibrium(W, external_wrench(robot, poses), tension_bounds=robot.tension_bounds)
 
 
 class InterferenceFree(WorkspaceCondition):
+    """The interference-free workspace: no two capsules of the collision model interfere
+    (cable–cable, cable–body; :func:`taut.collision._proximity`).
+
+    References
+    ----------
+    .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+       Bachelor thesis, Czech Technical University in Prague, 2020, §3.4.
+       (docs/references.bib: lieskovsky2020)
+    """
+
     name = "interference-free"
     description = "no cable–cable or cable–platform interference of the capsule model (Lieskovský 2020, §3.4)"
 
     def evaluate(self, robot: Robot, poses: np.ndarray) -> np.ndarray:
-        return proximity(robot, np.asarray(poses, dtype=float)).interference_free
+        """Whether every checked capsule pair has a positive clearance: ``(N,)`` bool."""
+        return proximity(robot, poses).interference_free
 
 
-#: The registry: condition name → class.
+#: The registry of workspace conditions: name (as on the command line) → class:
+#: ``wrench-closure`` :class:`WrenchClosure`, ``wrench-feasible`` :class:`WrenchFeasible`,
+#: ``static`` :class:`StaticEquilibrium`, ``interference-free`` (no two capsules of the
+#: collision model interfere, :mod:`taut.collision`).
 CONDITIONS: dict[str, type[WorkspaceCondition]] = {
     cls.name: cls for cls in (WrenchClosure, WrenchFeasible, StaticEquilibrium, InterferenceFree)
 }
@@ -184,8 +380,29 @@ def make_condition(
 ) -> WorkspaceCondition:
     """A condition instance from a registry name, a class or an instance.
 
-    ``options`` (e.g. ``wrench_set``) go to the class; ``None`` values are dropped.
-    Raises :class:`TautError` for an unknown name or an option the condition does not take."""
+    Parameters
+    ----------
+    condition : str, WorkspaceCondition or type
+        A name of :data:`CONDITIONS`, a subclass of :class:`WorkspaceCondition`, or an
+        instance (returned as is).
+    **options
+        Passed to the class (e.g. ``wrench_set``); ``None`` values are dropped.
+
+    Returns
+    -------
+    WorkspaceCondition
+
+    Raises
+    ------
+    TautError
+        An unknown name, or an option the condition does not take.
+
+    Examples
+    --------
+    >>> from taut.workspace import make_condition
+    >>> make_condition("static")
+    <StaticEquilibrium 'static'>
+    """
     options = {k: v for k, v in options.items() if v is not None}
     if isinstance(condition, WorkspaceCondition):
         if options:

@@ -20,17 +20,19 @@ import os
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result, jsonable
 from taut.errors import GridSizeError, PoseError, TautError
 from taut.kinematics import as_poses
 from taut.model import Robot
 from taut.parallel import Executor, as_executor
 from taut.statics import WrenchSet
 from taut.workspace._conditions import WorkspaceCondition, make_condition
-from taut.workspace._grid import MAX_GRID_POSES, AxisSpec, PoseGrid, format_bytes, make_grid
+from taut.workspace._grid import MAX_GRID_POSES, AxisSpec, PoseGrid, flat_indices, format_bytes, make_grid
 
 __all__ = ["DEFAULT_CHUNK", "MAX_POSES", "MAX_POSE_ARRAY_BYTES", "WorkspaceResult", "evaluate_workspace"]
 
@@ -54,23 +56,54 @@ FILE_FORMAT = "taut-workspace/2"
 
 
 @dataclass(frozen=True)
-class WorkspaceResult:
-    """Verdicts of a workspace condition over a grid of poses.
+class WorkspaceResult(Result):
+    """The verdicts of a workspace condition over a grid of poses (:func:`evaluate_workspace`).
 
     Only the verdicts ``inside`` (one byte per pose) are stored: the poses of a grid are
     recomputed from ``grid`` on demand (:attr:`poses`, :meth:`poses_at`), so that a grid of
-    hundreds of millions of poses fits in memory.  ``explicit_poses`` holds the poses given
-    to :func:`evaluate_workspace` as an array (then ``grid`` is ``None``)."""
+    hundreds of millions of poses fits in memory.
+
+    Attributes
+    ----------
+    robot_name : str
+    condition : str
+        The condition's registry name.
+    inside : ndarray of bool, shape (N,)
+        The verdict of each pose, in the C order of the grid.
+    axes : tuple of ndarray
+        The coordinates of each gridded axis (position axes first); empty for explicit poses.
+    grid_shape : tuple of int
+        ``inside.reshape(grid_shape)`` indexes the grid's axes; ``(N,)`` for explicit poses.
+    elapsed_s : float
+        Wall-clock seconds of the evaluation.
+    axis_names : tuple of str
+        The gridded coordinates' names.
+    grid : PoseGrid or None
+        The grid the poses come from.
+    explicit_poses : ndarray, shape (N, pose_size), or None
+        The poses given as an array (then ``grid`` is None).
+    complete : bool
+        Every pose has its verdict.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.workspace import evaluate_workspace
+    >>> res = evaluate_workspace(example("planar-4cable"), "static", resolution=21)
+    >>> res.count, res.size, res.as_dict()["grid_shape"]
+    (330, 441, [21, 21])
+    """
 
     robot_name: str
     condition: str
     inside: np.ndarray  #: ``(N,)`` bool
     axes: tuple[np.ndarray, ...]  #: grid coordinates per gridded axis (position axes first)
     grid_shape: tuple[int, ...]  #: ``inside.reshape(grid_shape)`` in C order
-    elapsed_s: float
+    elapsed_s: float  #: wall-clock seconds of the evaluation
     axis_names: tuple[str, ...] = field(default=())
     grid: PoseGrid | None = None  #: the grid the poses come from
     explicit_poses: np.ndarray | None = None  #: ``(N, pose_size)`` poses given as an array
+    complete: bool = True  #: every pose of the grid has its verdict
 
     @property
     def size(self) -> int:
@@ -78,10 +111,23 @@ class WorkspaceResult:
         return int(self.inside.size)
 
     def poses_at(self, flat: npt.ArrayLike) -> np.ndarray:
-        """The poses ``(K, pose_size)`` of the flat indices ``flat`` (C order of the grid)."""
-        idx = np.asarray(flat, dtype=np.int64).ravel()
-        if idx.size and (idx.min() < 0 or idx.max() >= self.size):
-            raise TautError(f"pose indices must lie in [0, {self.size}), got {idx.min()} … {idx.max()}")
+        """The poses of flat indices (C order of the grid).
+
+        Parameters
+        ----------
+        flat : array_like of int, shape (K,)
+            Indices in ``[0, size)``.
+
+        Returns
+        -------
+        ndarray, shape (K, pose_size)
+
+        Raises
+        ------
+        TautError
+            Indices out of range, or a result that holds no poses.
+        """
+        idx = flat_indices(flat, self.size)
         if self.explicit_poses is not None:
             return self.explicit_poses[idx]
         if self.grid is None:
@@ -128,7 +174,14 @@ class WorkspaceResult:
         return self.count * cell
 
     def summary(self) -> dict[str, object]:
-        """JSON-ready summary: poses, inside, fraction, elapsed_s, measure, grid_shape."""
+        """The numbers of the result in JSON types, as ``taut workspace --json`` prints them.
+
+        Returns
+        -------
+        dict
+            ``poses`` (count), ``inside`` (count), ``fraction``, ``elapsed_s``, ``measure``
+            and ``grid_shape``.
+        """
         return {
             "poses": int(self.inside.size),
             "inside": self.count,
@@ -138,17 +191,41 @@ class WorkspaceResult:
             "grid_shape": [int(s) for s in self.grid_shape],
         }
 
+    def as_dict(self) -> dict[str, Any]:
+        """The result in plain JSON types: the robot's name, the condition, the
+        :meth:`summary` (the count of poses ``inside``, not the verdict of each: a grid may hold
+        a billion poses; they are :attr:`inside` and the file of :meth:`save`), the grid's
+        ``axis_names`` and ``axes``, and ``complete``.
+
+        Returns
+        -------
+        dict
+            ``json.dumps(result.as_dict(), allow_nan=False)`` accepts it.
+        """
+        data: dict[str, object] = {"robot": self.robot_name, "condition": self.condition}
+        data |= self.summary()
+        data |= {"axis_names": list(self.axis_names), "axes": self.axes, "complete": self.complete}
+        return jsonable(data)
+
     def save(self, path: str | os.PathLike[str]) -> None:
-        """Write an ``.npz`` with ``inside``, ``axis_0 …``, ``metadata`` (JSON) and the poses'
-        source: for a grid its definition (``grid_index``, ``grid_fixed``; the poses are
-        recomputed on :meth:`load`), else the array ``poses``.  The file stays the size of
-        the verdicts (compressed), whatever the grid's size."""
+        """Write the result to an ``.npz`` file.
+
+        The file holds ``inside``, ``axis_0 …``, ``metadata`` (JSON) and the poses' source: for
+        a grid its definition (``grid_index``, ``grid_fixed``; the poses are recomputed on
+        :meth:`load`), else the array ``poses``.  It stays the size of the verdicts
+        (compressed), whatever the grid's size.
+
+        Parameters
+        ----------
+        path : str or os.PathLike
+        """
         meta = {
             "robot": self.robot_name,
             "condition": self.condition,
             "grid_shape": [int(s) for s in self.grid_shape],
             "axis_names": list(self.axis_names),
             "elapsed_s": float(self.elapsed_s),
+            "complete": bool(self.complete),
             "format": FILE_FORMAT,
         }
         arrays = {f"axis_{i}": np.asarray(a) for i, a in enumerate(self.axes)}
@@ -163,7 +240,21 @@ class WorkspaceResult:
 
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> WorkspaceResult:
-        """Read a file written by :meth:`save` (also the first format, which stored ``poses``)."""
+        """Read a file written by :meth:`save` (also the first format, which stored ``poses``).
+
+        Parameters
+        ----------
+        path : str or os.PathLike
+
+        Returns
+        -------
+        WorkspaceResult
+
+        Raises
+        ------
+        TautError
+            A file that cannot be read or is not a taut workspace file.
+        """
         try:
             with np.load(path, allow_pickle=False) as f:
                 meta = json.loads(str(f["metadata"]))
@@ -183,6 +274,7 @@ class WorkspaceResult:
                     names,
                     grid,
                     f["poses"] if "poses" in f.files else None,
+                    bool(meta.get("complete", True)),
                 )
         except (OSError, KeyError, ValueError) as exc:
             raise TautError(f"{path}: not a taut workspace file ({exc})") from None
@@ -226,34 +318,80 @@ def evaluate_workspace(
 ) -> WorkspaceResult:
     """Evaluate a workspace condition over a grid of poses.
 
-    ``condition``: a name of :data:`~taut.workspace.CONDITIONS`
-    (``wrench-closure``, ``wrench-feasible``, ``static``) or a condition instance;
-    ``wrench_set`` is passed to it (``wrench-feasible``: the set around the external
-    wrench).  The poses are ``grid`` (see :func:`~taut.workspace.make_grid`: ``None``
-    for the default position grid of ``resolution`` points per axis at ``orientation``, a
-    :class:`PoseGrid`, or per-axis ``(lo, hi, n)``/coordinates), or an explicit array
-    ``poses (N, pose_size)`` (then ``axes == ()`` and ``grid_shape == (N,)``).
-
     The poses of a grid are generated chunk by chunk (``chunk`` poses, from their flat
-    indices; by default :data:`DEFAULT_CHUNK`, or fewer so that a chunk's structure
-    matrices hold at most :data:`CHUNK_ELEMENTS` numbers) where the chunk is evaluated,
-    and only the verdicts are kept: memory is one byte per pose plus a few chunks' work.
-    Chunks are mapped over ``executor`` (an executor of :func:`taut.parallel.get_executor`
-    or a ``distributed.Client``; default serial) and the verdicts do not depend on
-    ``chunk`` or the executor.
-    ``progress(done, total)`` is called with pose counts as chunks complete.
+    indices) where the chunk is evaluated, and only the verdicts are kept: memory is one
+    byte per pose plus a few chunks' work.  Chunks are mapped over ``executor``, and the
+    verdicts do not depend on ``chunk`` or the executor.
 
-    ``max_poses`` is the budget of poses (default :data:`MAX_POSES`), at most
-    :data:`~taut.workspace._grid.MAX_GRID_POSES`.
+    Parameters
+    ----------
+    robot : Robot
+    condition : str or WorkspaceCondition
+        A name of :data:`~taut.workspace.CONDITIONS` (``wrench-closure``,
+        ``wrench-feasible``, ``static``, ``interference-free``) or a condition instance.
+    grid : PoseGrid or sequence, optional
+        The poses (:func:`~taut.workspace.make_grid`): ``None`` for the default position grid
+        of ``resolution`` points per axis at ``orientation``, a :class:`PoseGrid`, or one
+        ``(lo, hi, n)`` or array of coordinates per position (or pose) coordinate.
+    poses : array_like, shape (N, pose_size), optional
+        Explicit poses instead of a grid (then ``axes == ()`` and ``grid_shape == (N,)``).
+    resolution : int, optional
+        Points per axis of the default position grid.
+    orientation : array_like, optional
+        The fixed coordinates after the position of a position grid.
+    wrench_set : WrenchSet, optional
+        Of ``wrench-feasible``: the set required around the external wrench.
+    executor : optional
+        An executor of :func:`taut.parallel.get_executor` or a ``distributed.Client``;
+        default serial.
+    progress : callable, optional
+        ``progress(done, total)``, called with pose counts as chunks complete.
+    chunk : int, optional
+        Poses per chunk; default :data:`DEFAULT_CHUNK`, or fewer so that a chunk's structure
+        matrices hold at most :data:`CHUNK_ELEMENTS` numbers.
+    max_poses : int, optional
+        The budget of poses (default :data:`MAX_POSES`), at most
+        :data:`~taut.workspace._grid.MAX_GRID_POSES` (2³⁰).
 
-    Raises :class:`~taut.errors.GridSizeError` for a grid of more than ``max_poses`` poses
-    (or :data:`~taut.workspace._grid.MAX_GRID_POSES`), before any work."""
+    Returns
+    -------
+    WorkspaceResult
+
+    Raises
+    ------
+    TautError
+        An unknown condition or option, a bad chunk, max_poses, progress or grid, poses and a grid given
+        together.
+    PoseError
+        Poses, or grid corners, that :func:`~taut.kinematics.as_poses` refuses.
+    GridSizeError
+        More than ``max_poses`` poses, or a ``max_poses`` above ``MAX_GRID_POSES``, before
+        any work.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.workspace import evaluate_workspace
+    >>> robot = example("planar-4cable")
+    >>> res = evaluate_workspace(robot, "wrench-closure", resolution=21)
+    >>> res.count, res.size, round(res.fraction, 3)
+    (361, 441, 0.819)
+    >>> evaluate_workspace(robot, "static", poses=[[0, 0, 0], [0.9, 0.9, 0]]).inside
+    array([ True, False])
+    """
     cond = make_condition(condition, wrench_set=wrench_set)
     runner: Executor = as_executor(executor)
     if chunk is None:
         chunk = max(1, min(DEFAULT_CHUNK, CHUNK_ELEMENTS // (robot.wrench_dim * max(1, robot.n_cables))))
     if isinstance(chunk, bool) or not isinstance(chunk, (int, np.integer)) or chunk < 1:
         raise TautError(f"chunk must be a positive integer, got {chunk!r}")
+    if progress is not None and not callable(progress):
+        raise TautError(f"progress must be a callable progress(done, total), got {progress!r}")
     if isinstance(max_poses, bool) or not isinstance(max_poses, (int, np.integer)) or max_poses < 1:
         raise TautError(f"max_poses must be a positive integer, got {max_poses!r}")
     if max_poses > MAX_GRID_POSES:
@@ -272,7 +410,7 @@ def evaluate_workspace(
         names: tuple[str, ...] = ()
         N = int(arr.shape[0])
     else:
-        g = make_grid(robot, grid, resolution, orientation)
+        g = make_grid(robot, grid, resolution=resolution, orientation=orientation)
         _check_grid(robot, g)
         source = g
         axes, shape, names = tuple(np.asarray(a) for a in g.axes), g.shape, g.names

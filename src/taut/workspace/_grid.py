@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.errors import GridSizeError, TautError
 from taut.model import Robot
 
@@ -77,12 +78,47 @@ def check_grid_size(counts: Sequence[int], pose_size: int) -> int:
 
 
 @dataclass(frozen=True)
-class PoseGrid:
-    """Axes ``axes[i]`` over the pose coordinates ``index[i]``; every other coordinate
-    takes its value in ``fixed`` (a full pose of which the gridded entries are ignored).
+class PoseGrid(Result):
+    """A Cartesian grid of poses: axes over some pose coordinates, the others held fixed.
 
     The poses are never stored: :meth:`poses_at` computes any of them from its flat index
-    (C order), so that a grid of any size is evaluated chunk by chunk in bounded memory."""
+    (C order), so that a grid of any size is evaluated chunk by chunk in bounded memory.
+
+    Attributes
+    ----------
+    axes : tuple of ndarray
+        The coordinates of each gridded axis.
+    index : tuple of int
+        The pose coordinate of each axis (0-based).
+    fixed : ndarray, shape (pose_size,)
+        A full pose: the coordinates that are not gridded take their values here (its gridded
+        entries are ignored).
+    names : tuple of str
+        The axes' coordinate names.
+
+    Raises
+    ------
+    TautError
+        Not one pose coordinate per axis.
+    GridSizeError
+        More than :data:`MAX_GRID_POSES` poses.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.workspace import position_grid
+    >>> grid = position_grid(example("planar-4cable"), resolution=5)
+    >>> grid.shape, grid.size, grid.names
+    ((5, 5), 25, ('x', 'y'))
+    >>> grid.poses_at([0, 24])
+    array([[-0.96, -0.96,  0.  ],
+           [ 0.96,  0.96,  0.  ]])
+    """
 
     axes: tuple[np.ndarray, ...]
     index: tuple[int, ...]
@@ -95,45 +131,130 @@ class PoseGrid:
                 f"a pose grid needs one pose coordinate per axis, got {len(self.axes)} axes, index {self.index}"
             )
         check_grid_size(self.shape, np.size(self.fixed))
+        super().__post_init__()
 
     @property
     def shape(self) -> tuple[int, ...]:
+        """The number of points of each axis."""
         return tuple(len(a) for a in self.axes)
 
     @property
     def size(self) -> int:
+        """The number of poses."""
         return math.prod(self.shape)
 
     @property
     def pose_size(self) -> int:
+        """The number of coordinates of a pose."""
         return int(np.size(self.fixed))
 
     def poses_at(self, flat: npt.ArrayLike) -> np.ndarray:
-        """The poses of flat (C-order) indices ``flat`` ``(K,)``, ``(K, pose_size)``."""
-        flat = np.asarray(flat, dtype=np.int64).ravel()
+        """The poses of flat (C-order) indices.
+
+        Parameters
+        ----------
+        flat : array_like of int, shape (K,)
+            Indices in ``[0, size)``.
+
+        Returns
+        -------
+        ndarray, shape (K, pose_size)
+
+        Raises
+        ------
+        TautError
+            Indices that are not integers or out of range.
+        """
+        flat = flat_indices(flat, self.size)
         out = np.repeat(np.asarray(self.fixed, dtype=float)[None, :], flat.size, axis=0)
         for col, axis, idx in zip(self.index, self.axes, np.unravel_index(flat, self.shape)):
             out[:, col] = axis[idx]
         return out
 
     def poses(self, start: int = 0, stop: int | None = None) -> np.ndarray:
-        """Poses ``start:stop`` of the grid (all by default), ``(K, pose_size)``, C order."""
+        """The poses ``start:stop`` of the grid (all by default), in C order.
+
+        Parameters
+        ----------
+        start, stop : int, optional
+            Flat indices, non-negative; ``stop`` beyond the grid's size means its end.
+
+        Returns
+        -------
+        ndarray, shape (K, pose_size)
+
+        Raises
+        ------
+        TautError
+            ``start`` or ``stop`` not a non-negative integer.
+        """
+        for value in (start, stop):
+            if value is not None and (isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 0):
+                raise TautError(f"start and stop must be non-negative integers, got {start!r}, {stop!r}")
         stop = self.size if stop is None else min(stop, self.size)
         return self.poses_at(np.arange(start, stop, dtype=np.int64))
 
     def corners(self) -> np.ndarray:
-        """``(2, pose_size)``: the fixed pose with every gridded coordinate at its axis' least
-        (row 0) and greatest (row 1) value — the box every pose of the grid lies in."""
+        """The box every pose of the grid lies in.
+
+        Returns
+        -------
+        ndarray, shape (2, pose_size)
+            The fixed pose with every gridded coordinate at its axis' least (row 0) and
+            greatest (row 1) value.
+        """
         out = np.repeat(np.asarray(self.fixed, dtype=float)[None, :], 2, axis=0)
         for col, axis in zip(self.index, self.axes):
             out[:, col] = (np.min(axis), np.max(axis)) if len(axis) else (np.nan, np.nan)
         return out
 
 
-def default_bounds(robot: Robot, shrink: float = DEFAULT_SHRINK) -> np.ndarray:
-    """``(d, 2)`` bounds: the bounding box of the exit points, shrunk by ``shrink`` of its
-    size on each side.  An axis along which all exits are level (a suspended robot with
-    coplanar exits) spans ``[c − E, c + E]``, ``E`` half the largest extent."""
+def flat_indices(flat: npt.ArrayLike, size: int) -> np.ndarray:
+    """``flat`` as a 1-D array of indices of a grid of ``size`` poses, each in ``[0, size)``."""
+    try:
+        idx = np.asarray(flat)
+    except (TypeError, ValueError):
+        raise TautError(f"pose indices must be integers, got {flat!r}") from None
+    if idx.size and idx.dtype.kind not in "iu":
+        raise TautError(f"pose indices must be integers, got {flat!r}")
+    idx = idx.astype(np.int64).ravel()
+    if idx.size and (idx.min() < 0 or idx.max() >= size):
+        raise TautError(f"pose indices must lie in [0, {size}), got {idx.min()} … {idx.max()}")
+    return idx
+
+
+def default_bounds(robot: Robot, *, shrink: float = DEFAULT_SHRINK) -> np.ndarray:
+    """The default bounds of a position grid: the box of the exit points, slightly shrunk.
+
+    An axis along which all exits are level (a suspended robot with coplanar exits) spans
+    ``[c − E, c + E]``, ``E`` half the largest extent.
+
+    Parameters
+    ----------
+    robot : Robot
+    shrink : float, optional
+        The fraction of the box's size cut from each side, in ``[0, 0.5)``.
+
+    Returns
+    -------
+    ndarray, shape (d, 2)
+        ``[lo, hi]`` of each position coordinate [m].
+
+    Raises
+    ------
+    TautError
+        ``shrink`` not a number in ``[0, 0.5)``.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.workspace import default_bounds
+    >>> default_bounds(example("planar-4cable"))  # exits at ±1 m, 2 % of 2 m cut per side
+    array([[-0.96,  0.96],
+           [-0.96,  0.96]])
+    """
+    if isinstance(shrink, bool) or not isinstance(shrink, numbers.Real) or not 0 <= shrink < 0.5:
+        raise TautError(f"shrink must be a number in [0, 0.5), got {shrink!r}")
     lo, hi = robot.exits.min(axis=0), robot.exits.max(axis=0)
     ext = hi - lo
     big = float(ext.max()) if ext.size else 0.0
@@ -202,18 +323,58 @@ def _axes(robot: Robot, specs: Sequence[AxisSpec]) -> tuple[np.ndarray, ...]:
 
 def position_grid(
     robot: Robot,
+    *,
     resolution: int | None = None,
     bounds: npt.ArrayLike | None = None,
     orientation: npt.ArrayLike | None = None,
 ) -> PoseGrid:
-    """Grid over the position (x, y[, z]) with ``resolution`` points per axis between
-    ``bounds`` ``(d, 2)`` (default :func:`default_bounds`), at a fixed ``orientation``
-    (the pose coordinates after the position; default :func:`default_orientation`)."""
+    """A grid over the position at a fixed orientation: a constant-orientation workspace.
+
+    Parameters
+    ----------
+    robot : Robot
+    resolution : int, optional
+        Points per axis; default 101 (planar) or 41 (spatial).
+    bounds : array_like, shape (d, 2), optional
+        ``[lo, hi]`` of each position coordinate [m]; default :func:`default_bounds`.
+    orientation : array_like, shape (pose_size − d,), optional
+        The pose coordinates after the position (angles [rad], joint coordinates); default
+        zero angles and the joints at mid-range.
+
+    Returns
+    -------
+    PoseGrid
+
+    Raises
+    ------
+    TautError
+        A resolution that is not a positive integer, bounds or orientation of the wrong shape
+        or not finite.
+    GridSizeError
+        More than :data:`MAX_GRID_POSES` poses.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.workspace import position_grid
+    >>> grid = position_grid(example("planar-4cable"), resolution=3, bounds=[[-0.5, 0.5], [0, 0.2]], orientation=[0.1])
+    >>> grid.shape, grid.poses(0, 2)
+    ((3, 3), array([[-0.5,  0. ,  0.1],
+           [-0.5,  0.1,  0.1]]))
+    """
     d = robot.dimension
     res = DEFAULT_RESOLUTION[d] if resolution is None else resolution
     if isinstance(res, bool) or not isinstance(res, numbers.Integral) or res < 1:
         raise TautError(f"resolution must be a positive integer, got {resolution!r}")
-    b = default_bounds(robot) if bounds is None else np.asarray(bounds, dtype=float)
+    try:
+        b = default_bounds(robot) if bounds is None else np.asarray(bounds, dtype=float)
+    except (TypeError, ValueError):
+        raise TautError(f"{robot.name}: bounds must be numbers, got {bounds!r}") from None
     if b.shape != (d, 2):
         raise TautError(f"{robot.name}: bounds must have shape ({d}, 2), got {b.shape}")
     axes = _axes(robot, [(float(lo), float(hi), int(res)) for lo, hi in b])
@@ -222,7 +383,36 @@ def position_grid(
 
 
 def pose_grid(robot: Robot, axes: Sequence[AxisSpec]) -> PoseGrid:
-    """Full pose grid: one axis (``(lo, hi, n)`` tuple or coordinates) per pose coordinate."""
+    """A grid over every pose coordinate.
+
+    Parameters
+    ----------
+    robot : Robot
+    axes : sequence
+        One axis per pose coordinate: ``(lo, hi, n)`` (``n`` evenly spaced points) or an
+        array of coordinates.
+
+    Returns
+    -------
+    PoseGrid
+
+    Raises
+    ------
+    TautError
+        Not one valid axis per pose coordinate.
+    GridSizeError
+        More than :data:`MAX_GRID_POSES` poses.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.workspace import pose_grid
+    >>> grid = pose_grid(example("planar-4cable"), [(-0.5, 0.5, 3), (-0.5, 0.5, 3), (0.0, 0.2, 2)])
+    >>> grid.shape, grid.poses_at([17])
+    ((3, 3, 2), array([[0.5, 0.5, 0.2]]))
+    """
+    if isinstance(axes, (str, bytes)) or not isinstance(axes, (Sequence, np.ndarray)):
+        raise TautError(f"axes must be a sequence of one axis per pose coordinate, got {axes!r}")
     if len(axes) != robot.pose_size:
         raise TautError(
             f"{robot.name}: a full pose grid needs {robot.pose_size} axes ({', '.join(robot.pose_names)}), got {len(axes)}"
@@ -235,20 +425,46 @@ def pose_grid(robot: Robot, axes: Sequence[AxisSpec]) -> PoseGrid:
 def make_grid(
     robot: Robot,
     grid: PoseGrid | Sequence[AxisSpec] | np.ndarray | None = None,
+    *,
     resolution: int | None = None,
     orientation: npt.ArrayLike | None = None,
 ) -> PoseGrid:
-    """Normalise the ``grid`` argument of :func:`taut.workspace.evaluate_workspace`:
+    """The grid of the ``grid`` argument of :func:`~taut.workspace.evaluate_workspace`.
 
-    ``None`` — :func:`position_grid` with ``resolution`` and ``orientation``; a
-    :class:`PoseGrid` — used as is; a sequence of one axis per position coordinate
-    (``(lo, hi, n)`` tuples or coordinate arrays) — a position grid at ``orientation``;
-    one axis per pose coordinate — a full pose grid.
+    Parameters
+    ----------
+    robot : Robot
+    grid : PoseGrid or sequence, optional
+        ``None``: :func:`position_grid` with ``resolution`` and ``orientation``; a
+        :class:`PoseGrid`: used as is; one axis per position coordinate (``(lo, hi, n)`` or
+        coordinates): a position grid at ``orientation``; one axis per pose coordinate: a
+        full pose grid (:func:`pose_grid`).
+    resolution : int, optional
+        Points per axis of the default position grid.
+    orientation : array_like, optional
+        The fixed coordinates after the position (not with a full pose grid).
 
-    Raises :class:`~taut.errors.GridSizeError` for a grid of more than
-    :data:`MAX_GRID_POSES` poses, before building it."""
+    Returns
+    -------
+    PoseGrid
+
+    Raises
+    ------
+    TautError
+        A grid of neither form, or an orientation with a full pose grid.
+    GridSizeError
+        More than :data:`MAX_GRID_POSES` poses, before the grid is built.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.workspace import make_grid
+    >>> grid = make_grid(example("planar-4cable"), [(-0.5, 0.5, 3), (0, 0.2, 2)], orientation=[0.1])
+    >>> grid.shape, grid.fixed
+    ((3, 2), array([0. , 0. , 0.1]))
+    """
     if grid is None:
-        return position_grid(robot, resolution, orientation=orientation)
+        return position_grid(robot, resolution=resolution, orientation=orientation)
     if isinstance(grid, PoseGrid):
         return grid
     if isinstance(grid, (str, bytes)) or not isinstance(grid, (Sequence, np.ndarray)):
