@@ -328,8 +328,8 @@ def test_bad_box_raises(box):
 
 
 def test_bad_solver_settings_raise():
-    with pytest.raises(TautError, match="eps"):
-        solve_igp(SUSPENDED, (0, 1), {"x": 1, "a": 0}, eps=0.0)
+    with pytest.raises(TautError, match="tol"):
+        solve_igp(SUSPENDED, (0, 1), {"x": 1, "a": 0}, tol=0.0)
     with pytest.raises(TautError, match="max_boxes"):
         solve_igp(SUSPENDED, (0, 1), {"x": 1, "a": 0}, max_boxes=0)
 

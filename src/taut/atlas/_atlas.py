@@ -47,7 +47,7 @@ import numpy.typing as npt
 import shapely
 from shapely.geometry import LineString, MultiPolygon, Polygon
 
-from taut.atlas._chart import Chart, chart_lengths, component_containing, structure_reachable_area
+from taut.atlas._chart import StructureChart, chart_lengths, component_containing, structure_reachable_area
 from taut.atlas._platform import fixed_collision_region, platform_outline, rotation, structure_collision_region
 from taut.atlas._reachable import ARC_STEP, cable_reachable_area
 from taut.errors import PoseError, TautError
@@ -89,7 +89,7 @@ class StructureAtlas:
     robot: Robot
     trees: list[CableStateTree] = field(repr=False)
     space: Polygon = field(repr=False)  #: the installation space (or a box around the robot)
-    charts: list[Chart]
+    charts: list[StructureChart]
     edges: list[Edge]
     start: np.ndarray
     theta: float = 0.0  #: platform orientation of the page (0 for a point mass)
@@ -114,7 +114,7 @@ class StructureAtlas:
 
     def lengths(self, chart: int, points: npt.ArrayLike) -> np.ndarray:
         """Cable lengths ``(N, n)`` at ``points`` in chart ``chart`` (Eq. 4.9)."""
-        return chart_lengths(self.trees, self.charts[chart].nodes, points, self.offsets)[0]
+        return chart_lengths(self.trees, self.charts[chart].nodes, points, offsets=self.offsets)[0]
 
 
 class _Builder:
@@ -139,7 +139,9 @@ class _Builder:
     def cable_area(self, i: int, node: int) -> Polygon | MultiPolygon:
         key = (i, node)
         if key not in self.cra:
-            self.cra[key] = cable_reachable_area(self.trees[i], node, self.space, self.arc_step)
+            self.cra[key] = cable_reachable_area(
+                self.trees[i], node, installation_space=self.space, arc_step=self.arc_step
+            )
         return self.cra[key]
 
     def area(self, nodes: tuple[int, ...]) -> Polygon | MultiPolygon:
@@ -149,7 +151,7 @@ class _Builder:
                 H = structure_collision_region(self.outline, self.trees, nodes, self.offsets, self.arc_step, self.reach)
                 pra = self.space.difference(shapely.union_all([self.fixed, H]))
             self.sra[nodes] = structure_reachable_area(
-                [self.cable_area(i, n) for i, n in enumerate(nodes)], self.offsets, pra
+                [self.cable_area(i, n) for i, n in enumerate(nodes)], offsets=self.offsets, pra=pra
             )
         return self.sra[nodes]
 
@@ -184,10 +186,11 @@ def _edge_pieces(domain: Polygon, e: np.ndarray, u: np.ndarray, reach: float) ->
 def build_atlas(
     robot: Robot,
     start: npt.ArrayLike,
+    *,
+    theta: float = 0.0,
     initial: Mapping[int, Sequence[tuple[int, int]]] | None = None,
     arc_step: float = ARC_STEP,
     max_charts: int = MAX_CHARTS,
-    theta: float = 0.0,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> StructureAtlas:
     """The structure atlas of a planar VSCR from the start point ``start`` (Alg. 5.1) —
@@ -222,7 +225,7 @@ def build_atlas(
     if space is not None and not space.covers(shapely.Point(p0)):
         raise PoseError(f"{robot.name}: the start point {p0.tolist()} is outside the installation space")
     pose0 = p0[None] if robot.is_point_mass else np.array([[p0[0], p0[1], theta]])
-    ik = wrapped_inverse_kinematics(robot, pose0, initial)
+    ik = wrapped_inverse_kinematics(robot, pose0, initial=initial)
     if space is None:  # the box of the exits, the objects and the start, grown by half its size
         x0, y0, x1, y1 = _objects_bounds(ik.trees)
         x0, y0, x1, y1 = min(x0, p0[0]), min(y0, p0[1]), max(x1, p0[0]), max(y1, p0[1])
@@ -236,7 +239,7 @@ def build_atlas(
             f"{robot.name}: the start point {p0.tolist()} is not in the reachable area of its structure "
             "(on an object, a cable is blocked there, or the platform hits something)"
         )
-    charts = [Chart(0, nodes0, q0, p0, _states(ik.trees, nodes0))]
+    charts = [StructureChart(0, nodes0, q0, p0, _states(ik.trees, nodes0))]
     edges: list[Edge] = []
     stack = [0]
     expanded = 0
@@ -275,7 +278,12 @@ def _states(trees: Sequence[CableStateTree], nodes: Sequence[int]) -> tuple[tupl
 
 
 def _find_or_build(
-    b: _Builder, charts: list[Chart], nodes: tuple[int, ...], point: np.ndarray, stack: list[int], max_charts: int
+    b: _Builder,
+    charts: list[StructureChart],
+    nodes: tuple[int, ...],
+    point: np.ndarray,
+    stack: list[int],
+    max_charts: int,
 ) -> int | None:
     for C in charts:
         if C.nodes == nodes and shapely.contains_xy(C.domain, *point):
@@ -285,6 +293,6 @@ def _find_or_build(
         return None
     if len(charts) >= max_charts:
         raise TautError(f"{b.robot.name}: more than {max_charts} charts; the atlas is too large")
-    charts.append(Chart(len(charts), nodes, q, np.asarray(point, float), _states(b.trees, nodes)))
+    charts.append(StructureChart(len(charts), nodes, q, np.asarray(point, float), _states(b.trees, nodes)))
     stack.append(len(charts) - 1)
     return len(charts) - 1

@@ -42,7 +42,7 @@ if TYPE_CHECKING:
 
 
 @dataclass
-class Chart:
+class StructureChart:
     """One chart of the structure atlas: ``nodes[i]`` is the CST node of cable ``i``."""
 
     index: int
@@ -58,7 +58,7 @@ class Chart:
 
 
 def chart_lengths(
-    trees: list[CableStateTree], nodes: Sequence[int], points: npt.ArrayLike, offsets: npt.ArrayLike | None = None
+    trees: list[CableStateTree], nodes: Sequence[int], points: npt.ArrayLike, *, offsets: npt.ArrayLike | None = None
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``(l (N, n), l_0 + ν (N, n), A (N, n, 2))`` of structure ``nodes`` at reference
     points ``points`` ``(N, 2)``: Eq. (4.9) with the chart elements of Eqs. (5.3)–(5.5),
@@ -96,7 +96,7 @@ def chart_lengths(
 
 
 def structure_reachable_area(
-    cras: list[BaseGeometry], offsets: npt.ArrayLike | None = None, pra: BaseGeometry | None = None
+    cras: list[BaseGeometry], *, offsets: npt.ArrayLike | None = None, pra: BaseGeometry | None = None
 ) -> Polygon | MultiPolygon:
     """``SRA^S = ∩_i CRA^{s_i}`` (Eq. 5.6) of the cables' reachable areas; for a rigid
     platform at orientation ``θ``, ``SRA^{S,θ} = (∩_i (CRA^{s_i} − R(θ) r_i)) ∩ PRA^{S,θ}``
@@ -118,7 +118,7 @@ def structure_reachable_area(
     return close_cracks(sra)
 
 
-def component_containing(area: BaseGeometry, point: npt.ArrayLike, tol: float = 1e-9) -> Polygon | None:
+def component_containing(area: BaseGeometry, point: npt.ArrayLike, *, tol: float = 1e-9) -> Polygon | None:
     """The component of ``area`` that contains ``point`` (within ``tol``), or ``None``."""
     parts = [g for g in getattr(area, "geoms", [area]) if isinstance(g, Polygon) and not g.is_empty]
     if not parts:

@@ -48,7 +48,7 @@ class AtlasIK:
         return self.charts >= 0
 
 
-def locate(atlas: StructureAtlas, points: npt.ArrayLike, charts: Iterable[int] | None = None) -> np.ndarray:
+def locate(atlas: StructureAtlas, points: npt.ArrayLike, *, charts: Iterable[int] | None = None) -> np.ndarray:
     """``(N,)`` index of the first chart (of ``charts``, default all) containing each point."""
     P = np.atleast_2d(np.asarray(points, float))
     out = np.full(len(P), -1, dtype=np.int64)
@@ -76,12 +76,12 @@ def _evaluate(atlas: StructureAtlas, P: np.ndarray, ch: np.ndarray) -> AtlasIK:
     exits = np.full((len(P), n, 2), np.nan)
     for c in np.unique(ch[ch >= 0]):
         sel = ch == c
-        L, _, A = chart_lengths(atlas.trees, atlas.charts[c].nodes, P[sel], atlas.offsets)
+        L, _, A = chart_lengths(atlas.trees, atlas.charts[c].nodes, P[sel], offsets=atlas.offsets)
         lengths[sel], exits[sel] = L, A
     return AtlasIK(ch, lengths, exits)
 
 
-def direct_ik(atlas: StructureAtlas, points: npt.ArrayLike, charts: Iterable[int] | None = None) -> AtlasIK:
+def direct_ik(atlas: StructureAtlas, points: npt.ArrayLike, *, charts: Iterable[int] | None = None) -> AtlasIK:
     """Alg. 5.3 at every point of ``points`` ``(N, 2)``.
 
     References
@@ -90,7 +90,7 @@ def direct_ik(atlas: StructureAtlas, points: npt.ArrayLike, charts: Iterable[int
        of Waterloo, 2022, §5.3.2, Alg. 5.3. (docs/references.bib: rushton2022)
     """
     P = np.atleast_2d(np.asarray(points, float))
-    return _evaluate(atlas, P, locate(atlas, P, charts))
+    return _evaluate(atlas, P, locate(atlas, P, charts=charts))
 
 
 def _crossings(atlas: StructureAtlas, chart: int, p1: np.ndarray, d: np.ndarray) -> Iterator[tuple[float, int]]:
@@ -131,7 +131,7 @@ def iterative_step(atlas: StructureAtlas, chart: int, p1: npt.ArrayLike, p2: npt
     raise PoseError(f"the move {p1.tolist()} → {p2.tolist()} does not settle in a chart")
 
 
-def iterative_ik(atlas: StructureAtlas, points: npt.ArrayLike, chart: int = 0) -> AtlasIK:
+def iterative_ik(atlas: StructureAtlas, points: npt.ArrayLike, *, chart: int = 0) -> AtlasIK:
     """Alg. 5.4 along the polyline ``points`` ``(T, 2)`` starting in chart ``chart``.
 
     References

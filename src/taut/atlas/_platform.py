@@ -43,6 +43,7 @@ import shapely
 import shapely.affinity
 from shapely.geometry import MultiPoint, Polygon
 
+from taut.atlas._reachable import ARC_STEP
 from taut.errors import TautError
 from taut.wrapping import CableStateTree
 
@@ -154,7 +155,8 @@ def platform_reachable_area(
     trees: Sequence[CableStateTree],
     nodes: Sequence[int],
     offsets: np.ndarray,
-    arc_step: float,
+    *,
+    arc_step: float = ARC_STEP,
     reach: float,
 ) -> BaseGeometry | None:
     """``PRA^{S,θ}`` (Eq. 5.14) of structure ``nodes`` (one CST node per cable), or

@@ -196,6 +196,7 @@ def _bbox(tree: CableStateTree, space: Polygon | None) -> np.ndarray:
 def cable_reachable_area(
     tree: CableStateTree,
     node: int,
+    *,
     installation_space: npt.ArrayLike | Polygon | None = None,
     arc_step: float = ARC_STEP,
 ) -> Polygon | MultiPolygon:

@@ -55,7 +55,7 @@ class AtlasWorkspace:
 def _feasible(atlas: StructureAtlas, cond: WrenchCondition, chart: int, P: np.ndarray) -> np.ndarray:
     if not len(P):
         return np.zeros(0, bool)
-    _, _, A = chart_lengths(atlas.trees, atlas.charts[chart].nodes, P, atlas.offsets)
+    _, _, A = chart_lengths(atlas.trees, atlas.charts[chart].nodes, P, offsets=atlas.offsets)
     off = np.zeros((A.shape[1], 2)) if atlas.offsets is None else atlas.offsets
     D = A - (P[:, None, :] + off[None])
     L = np.hypot(D[..., 0], D[..., 1])
@@ -74,6 +74,7 @@ def _feasible(atlas: StructureAtlas, cond: WrenchCondition, chart: int, P: np.nd
 def atlas_workspace(
     atlas: StructureAtlas,
     condition: str | WorkspaceCondition | type[WorkspaceCondition] = "wrench-feasible",
+    *,
     step: float | None = None,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> AtlasWorkspace:

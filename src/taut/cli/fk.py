@@ -37,7 +37,7 @@ JSON: {{"robot", "solutions": [{{"taut", "position", "orientation", "tensions", 
 
 
 def cmd_fk(ns: argparse.Namespace) -> int:
-    from taut.dgp import solve_dgp
+    from taut.dgp import MAX_BOXES, solve_dgp
     from taut.parallel import get_executor
 
     plot = A.plot_file(ns.plot)
@@ -52,7 +52,12 @@ def cmd_fk(ns: argparse.Namespace) -> int:
         progress_bar("fk", wanted(ns.json)) as progress,
     ):
         res = solve_dgp(
-            robot, lengths, max_taut=ns.max_taut, executor=executor, max_boxes=ns.max_boxes, progress=progress
+            robot,
+            lengths,
+            max_taut=ns.max_taut,
+            executor=executor,
+            max_boxes=MAX_BOXES if ns.max_boxes is None else ns.max_boxes,
+            progress=progress,
         )
     data = {
         "robot": robot.name,
@@ -109,8 +114,7 @@ def register(command: Command) -> None:
         type=int,
         default=None,
         metavar="N",
-        help="box budget of every sub-problem; the boxes left when it runs out are undecided "
-        "(default: a guard of 2000000 boxes per piece of a sub-problem)",
+        help="box budget of every sub-problem; the boxes left when it runs out are undecided (default 2000000)",
     )
     add_strict(c)
     c.add_argument("--workers", type=A.worker_count, default=1, help="local worker processes")

@@ -94,7 +94,7 @@ def cmd_igp(ns: argparse.Namespace) -> int:
     data = {
         "robot": robot.name,
         "taut": sorted(cables),
-        "assigned": res.assigned,
+        "assigned": res.fixed,
         "solutions": [numbered(s.as_dict()) for s in res.solutions],
         "complete": res.complete,
         "undecided_boxes": res.undecided,
@@ -107,7 +107,7 @@ def cmd_igp(ns: argparse.Namespace) -> int:
     def tables(con: Console, d: dict) -> None:
         from rich.table import Table
 
-        free = [k for k, name in enumerate(robot.pose_names[:6]) if name not in res.assigned]
+        free = [k for k, name in enumerate(robot.pose_names[:6]) if name not in res.fixed]
         t = Table(title="free coordinates and tensions")
         for h in ("#", *(robot.pose_names[k] for k in free), *(f"τ{i}" for i in d["taut"]), "stable"):
             t.add_column(h, justify="right")
@@ -138,7 +138,7 @@ def cmd_igp(ns: argparse.Namespace) -> int:
 
     def human(d: dict) -> None:
         con = console()
-        fixed = ", ".join(f"{k}={v:.6g}" for k, v in res.assigned.items())
+        fixed = ", ".join(f"{k}={v:.6g}" for k, v in res.fixed.items())
         con.print(
             f"[bold]{robot.name}[/]: {len(res.solutions)} equilibria with cables {d['taut']} taut at {fixed} "
             f"({res.boxes} boxes, {res.elapsed_s:.2f} s)"

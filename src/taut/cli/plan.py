@@ -109,16 +109,17 @@ def _ellipsoid(text: str | None) -> np.ndarray:
 def _run(ns: argparse.Namespace, M: WrenchFeasibleManifold, y0: np.ndarray, y1: np.ndarray) -> tuple[str, PathResult]:
     """The planner's answer: the method that gave it and its result."""
     from taut.cli.progress import progress_bar, wanted
-    from taut.planning import atlas_rrt, plan_path
+    from taut.planning import plan_path
 
     if ns.planner in ("atlasrrt", "auto"):
         radius = ns.radius or DEFAULT_RADIUS["atlasrrt"]
         with progress_bar("plan (AtlasRRT nodes)", wanted(ns.json)) as progress:
-            res = atlas_rrt(
+            res = plan_path(
                 M.implicit(),
                 y0,
                 y1,
-                radius,
+                method="atlasrrt",
+                radius=radius,
                 step=ns.step,
                 metric=M.pose_metric,
                 seed=ns.seed,
@@ -135,7 +136,8 @@ def _run(ns: argparse.Namespace, M: WrenchFeasibleManifold, y0: np.ndarray, y1: 
             M.implicit(),
             y0,
             y1,
-            ns.radius or DEFAULT_RADIUS["astar"],
+            method="astar",
+            radius=ns.radius or DEFAULT_RADIUS["astar"],
             metric=M.pose_metric,
             max_charts=ns.max_charts,
             progress=progress,

@@ -67,7 +67,7 @@ import numpy.typing as npt
 
 from taut.dgp._formulation import load
 from taut.dgp._stability import is_stable
-from taut.dgp._undecided import UndecidedBox, cause_of, scaled
+from taut.dgp._undecided import MAX_BOXES, UndecidedBox, cause_of, scaled
 from taut.errors import CableSetError, PoseError, TautError, UnsupportedRobotError
 from taut.geometry import rotation_matrix
 from taut.interval import (
@@ -127,7 +127,7 @@ class IGPSolution:
 @dataclass(frozen=True)
 class IGPResult:
     solutions: list[IGPSolution]
-    assigned: dict[str, float]  #: the assigned coordinates, by the robot's pose names
+    fixed: dict[str, float]  #: the fixed (assigned) coordinates, by the robot's pose names
     #: boxes that could not be decided (:mod:`taut.dgp._undecided`): of width < eps around a
     #: solution with a zero tension (it belongs to a smaller taut set) or a singular one (a
     #: fold, a continuum), and those left when the box budget ran out
@@ -177,13 +177,13 @@ def _check_taut(robot: Robot, taut: Iterable[int]) -> tuple[int, ...]:
     return tuple(sorted(indices))
 
 
-def _check_assigned(robot: Robot, assigned: Mapping[str, float], m: int) -> dict[int, float]:
-    """Pose index (0…5) → value of the assigned coordinates."""
+def _check_fixed(robot: Robot, fixed: Mapping[str, float], m: int) -> dict[int, float]:
+    """Pose index (0…5) → value of the fixed (assigned) coordinates."""
     names = robot.pose_names[:6]
-    if not isinstance(assigned, Mapping):
-        raise PoseError(f"assigned coordinates: expected a mapping name → value, got {assigned!r}")
+    if not isinstance(fixed, Mapping):
+        raise PoseError(f"fixed coordinates: expected a mapping name → value, got {fixed!r}")
     out: dict[int, float] = {}
-    for key, value in assigned.items():
+    for key, value in fixed.items():
         name = str(key).strip().lower().replace("_", "")
         if robot.orientation != "tilt-torsion":
             name = ALIASES.get(name, name)
@@ -402,22 +402,22 @@ def _build(
 def solve_igp(
     robot: Robot,
     taut: Iterable[int],
-    assigned: Mapping[str, float],
+    fixed: Mapping[str, float],
     *,
     box: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
-    eps: float = 1e-7,
-    max_boxes: int = 100_000,
+    tol: float = 1e-7,
+    max_boxes: int = MAX_BOXES,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> IGPResult:
     """All certified solutions of the inverse geometrico-static problem (module docstring).
 
     ``taut``: the 0-based indices of the ``m`` taut cables (``2 ≤ m ≤ 6``; the cables the
-    command line numbers 1, 2, 3 are ``[0, 1, 2]``); ``assigned``:
+    command line numbers 1, 2, 3 are ``[0, 1, 2]``); ``fixed``:
     exactly ``m`` pose coordinates by name (the robot's ``pose_names``: ``x, y, z, a, b, c``
     — ``phix, phiy, phiz`` are accepted for the ``xyz`` conventions — or
     ``phi, theta, sigma`` for tilt-and-torsion); ``box``: ``(lower, upper)`` corners of the
     search box of the free position coordinates (default: see :func:`_position_box`);
-    ``eps``: the bisection threshold of :func:`~taut.interval.branch_and_prune`;
+    ``tol``: the bisection threshold of :func:`~taut.interval.branch_and_prune`;
     ``max_boxes``: its box budget — the well-posed problems of the examples take 10²–10⁴
     boxes, a continuum of solutions (an assignment that does not fix the pose, e.g. ``x, y,
     φ`` of the Robocrane with cables 1, 3, 5 at ``x = y = 0``) would take them all, at about
@@ -433,9 +433,9 @@ def solve_igp(
     """
     _check_robot(robot)
     idx = _check_taut(robot, taut)
-    fixed = _check_assigned(robot, assigned, len(idx))
-    if not (eps > 0 and np.isfinite(eps)):
-        raise TautError(f"eps must be positive and finite, got {eps!r}")
+    values = _check_fixed(robot, fixed, len(idx))
+    if not (tol > 0 and np.isfinite(tol)):
+        raise TautError(f"tol must be positive and finite, got {tol!r}")
     if int(max_boxes) < 1:
         raise TautError(f"max_boxes must be at least 1, got {max_boxes!r}")
     pos_lo, pos_hi = _position_box(robot, idx, box)
@@ -446,31 +446,31 @@ def solve_igp(
     boxes = 0
     exhausted = False
     if np.all(pos_lo < pos_hi):  # the taut cables' reach boxes can miss each other
-        pb = _build(robot, idx, fixed, pos_lo, pos_hi)
+        pb = _build(robot, idx, values, pos_lo, pos_hi)
         res = branch_and_prune(
             pb.system,
             pb.lo,
             pb.hi,
             primary=pb.primary,
-            eps=eps,
+            eps=tol,
             filters=(pb.statics,),
             certify_width=0.5,
             max_boxes=max_boxes,
             progress=None if progress is None else _within_budget(progress, int(max_boxes)),
         )
-        solutions = [_solution(robot, idx, fixed, pb, c) for c in res.solutions]
+        solutions = [_solution(robot, idx, values, pb, c) for c in res.solutions]
         solutions.sort(key=lambda s: (not s.stable, *s.position, *s.orientation))
         # a certified solution straddling a bound (a zero tension, a domain edge) may or may
         # not be an answer: it is reported as undecided, never dropped
         undecided = tuple(
-            _undecided(robot, idx, fixed, pb, blo, bhi, cause_of(blo, bhi, eps)) for blo, bhi in res.undecided
-        ) + tuple(_undecided(robot, idx, fixed, pb, c.lo, c.hi, "domain-border") for c in res.boundary)
+            _undecided(robot, idx, values, pb, blo, bhi, cause_of(blo, bhi, tol)) for blo, bhi in res.undecided
+        ) + tuple(_undecided(robot, idx, values, pb, c.lo, c.hi, "domain-border") for c in res.boundary)
         boxes, exhausted = min(res.boxes, max_boxes), res.boxes > max_boxes
     elif progress is not None:
         progress(0, 0)
     return IGPResult(
         solutions,
-        {names[k]: v for k, v in sorted(fixed.items())},
+        {names[k]: v for k, v in sorted(values.items())},
         undecided,
         boxes,
         exhausted,

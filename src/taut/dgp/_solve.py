@@ -35,7 +35,7 @@ import numpy.typing as npt
 from taut.dgp._formulation import Subproblem, build_subproblem, load
 from taut.dgp._single_cable import single_cable_equilibria
 from taut.dgp._stability import is_stable
-from taut.dgp._undecided import UndecidedBox, cause_of, subproblem_box
+from taut.dgp._undecided import MAX_BOXES, UndecidedBox, cause_of, subproblem_box
 from taut.errors import TautError
 from taut.geometry import angles_from_matrix
 from taut.interval import (
@@ -191,13 +191,9 @@ def prepared_subproblem(
     return hit
 
 
-#: The box budget of one piece of a sub-problem when :func:`solve_dgp` is given none: a
-#: guard against a search that would never end (branch-and-prune's default).
-PIECE_BOXES = 2_000_000
-
 #: A job of :func:`solve_dgp`: robot, lengths, taut cables (0-based), eps, split, piece,
-#: box budget of the sub-problem (None: :data:`PIECE_BOXES` per piece), multi-precision.
-Job = tuple[Robot, np.ndarray, tuple[int, ...], float, int, int, int | None, bool]
+#: box budget of the sub-problem, multi-precision.
+Job = tuple[Robot, np.ndarray, tuple[int, ...], float, int, int, int, bool]
 
 
 def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], list[UndecidedBox], int]:
@@ -245,7 +241,7 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
         bisection="smear",
         tube=sp.geometry,
         filter_width=width,
-        max_boxes=PIECE_BOXES if budget is None else -(-budget // len(pieces)),
+        max_boxes=-(-budget // len(pieces)),
         starve=STARVE,
     )
     found = [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]
@@ -334,7 +330,7 @@ def solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple
     one piece, as a job an executor can map: ``(solutions, number of undecided boxes,
     boxes)``."""
     robot, lengths, taut, eps = job
-    sols, _, undecided, boxes = solve_piece((robot, lengths, taut, eps, 0, 0, None, True))
+    sols, _, undecided, boxes = solve_piece((robot, lengths, taut, eps, 0, 0, MAX_BOXES, True))
     return sols, len(undecided), boxes
 
 
@@ -368,9 +364,9 @@ def solve_dgp(
     *,
     max_taut: int | None = None,
     executor: Executor | Client | None = None,
-    eps: float = 1e-7,
+    tol: float = 1e-7,
     split: int | None = None,
-    max_boxes: int | None = None,
+    max_boxes: int = MAX_BOXES,
     progress: Callable[[int, int | None], None] | None = None,
     multiprecision: bool = True,
 ) -> DGPResult:
@@ -386,8 +382,9 @@ def solve_dgp(
     reported once (:func:`same_solution`), from the first piece in job order.  Each job is
     computed by the same code whatever the executor, so for a given ``split`` the solutions
     are bitwise identical on every executor; they are sorted by :func:`solution_key`.
-    ``max_boxes``: the box budget of every sub-problem, shared equally by its pieces (by
-    default :data:`PIECE_BOXES` per piece); the boxes left when it runs out are undecided.
+    ``max_boxes``: the box budget of every sub-problem, shared equally by its pieces; the
+    boxes left when it runs out are undecided.  ``tol``: the bisection threshold (metres
+    and scaled tensions) of :func:`~taut.interval.branch_and_prune`.
     ``progress(done, total)`` is called with the number of jobs done (pieces of
     sub-problems) out of all of them, from 0 to the total.  ``multiprecision``: the boxes
     double precision leaves too narrow to bisect (a singular or nearly double solution) are
@@ -421,15 +418,16 @@ def solve_dgp(
         split = SPLIT
     if not 0 <= split <= 10:
         raise TautError(f"split must be between 0 and 10 (up to 1024 pieces), got {split}")
-    if max_boxes is not None:
-        if int(max_boxes) < 1:
-            raise TautError(f"max_boxes must be at least 1, got {max_boxes}")
-        max_boxes = int(max_boxes)
+    if not (tol > 0 and np.isfinite(tol)):
+        raise TautError(f"tol must be positive and finite, got {tol!r}")
+    if int(max_boxes) < 1:
+        raise TautError(f"max_boxes must be at least 1, got {max_boxes}")
+    max_boxes = int(max_boxes)
     runner = as_executor(executor)
     t0 = time.perf_counter()
     subsets = [taut for m in range(top, 0, -1) for taut in combinations(range(n), m)]
     jobs = [
-        (robot, checked, taut, eps, split if len(taut) >= 3 else 0, k, max_boxes, multiprecision)
+        (robot, checked, taut, tol, split if len(taut) >= 3 else 0, k, max_boxes, multiprecision)
         for taut in subsets
         for k in range(2**split if len(taut) >= 3 else 1)
     ]

@@ -335,8 +335,8 @@ def _solution(s: _State, width: float) -> DGPSolution:
     return DGPSolution(tuple(s.taut), s.p, s.angles, s.tensions, s.stable, width, 0.0)
 
 
-def track(robot: Robot, previous_solution: DGPSolution | IGPSolution, lengths: npt.ArrayLike) -> DGPSolution:
-    """The equilibrium that continues ``previous_solution`` (a :class:`DGPSolution` or an
+def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths: npt.ArrayLike) -> DGPSolution:
+    """The equilibrium that continues ``solution`` (a :class:`DGPSolution` or an
     :class:`~taut.dgp.IGPSolution`) at the new cable ``lengths`` (see the module
     docstring); raises :class:`~taut.errors.TrackingLostError` when it
     cannot be certified.  ``certificate_width`` is the width of the Krawczyk enclosure;
@@ -349,16 +349,15 @@ def track(robot: Robot, previous_solution: DGPSolution | IGPSolution, lengths: n
        Università di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
     """
     lengths = check_lengths(robot, lengths)
-    s, width = _step(robot, _state(robot, previous_solution, lengths), lengths)
+    s, width = _step(robot, _state(robot, solution, lengths), lengths)
     return _solution(s, width)
 
 
-def track_path(
-    robot: Robot, start_solution: DGPSolution | IGPSolution, lengths_sequence: npt.ArrayLike
-) -> list[DGPSolution]:
-    """:func:`track` along a sequence of cable lengths (one solution per row)."""
+def track_path(robot: Robot, solution: DGPSolution | IGPSolution, lengths: npt.ArrayLike) -> list[DGPSolution]:
+    """:func:`track_equilibrium` from ``solution`` along a sequence of cable ``lengths``
+    (one solution per row)."""
     try:
-        rows = np.asarray(lengths_sequence, dtype=float)
+        rows = np.asarray(lengths, dtype=float)
     except ValueError as e:
         raise TautError(f"the lengths sequence is not a table of numbers: {e}") from None
     if rows.size == 0:
@@ -371,8 +370,8 @@ def track_path(
     for row in rows[~np.all(np.isfinite(rows) & (rows > 0), axis=1)][:1]:
         check_lengths(robot, row)  # raises, naming what is wrong
     out, s = [], None
-    for lengths in rows:
-        s = _state(robot, start_solution, lengths) if s is None else s
-        s, width = _step(robot, s, lengths)
+    for step in rows:
+        s = _state(robot, solution, step) if s is None else s
+        s, width = _step(robot, s, step)
         out.append(_solution(s, width))
     return out

@@ -50,10 +50,15 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TautError
-from taut.planning._continuation import Atlas, ImplicitManifold
+from taut.planning._continuation import MAX_CHARTS, Atlas, ImplicitManifold
 from taut.planning._search import PathResult, continuous
 
-__all__ = ["Tree", "atlas_rrt", "shorten_path"]
+__all__ = ["MAX_NODES", "Tree", "atlas_rrt", "shorten_path"]
+
+#: The tree-node budget of AtlasRRT when none is given: with the chart budget, it bounds
+#: the time and memory of a search that finds no path (a random search never proves that
+#: none exists).
+MAX_NODES = 20_000
 
 
 class Tree:
@@ -195,13 +200,15 @@ def shorten_path(
     atlas: Atlas,
     path: np.ndarray,
     charts: list[int],
+    *,
     step: float,
-    rng: np.random.Generator,
+    seed: int | np.random.Generator = 0,
     attempts: int = 60,
 ) -> tuple[np.ndarray, list[int]]:
     """Random shortcuts on the manifold: for two random points of ``path`` (continuous, with
     the chart of each point), walk from one toward the other on the atlas; a walk that
     arrives and is shorter than the stretch it skips replaces it."""
+    rng = np.random.default_rng(seed)
     pts = [np.asarray(p, float) for p in path]
     chs = list(charts)
     walker = _Walker(atlas, step, max_charts=len(atlas.charts) + 10 * attempts)
@@ -229,15 +236,16 @@ def atlas_rrt(
     manifold: ImplicitManifold,
     start: npt.ArrayLike,
     goal: npt.ArrayLike,
+    *,
     radius: float,
     step: float | None = None,
     epsilon: float = 0.1,
     metric: np.ndarray | None = None,
-    seed: int = 0,
+    seed: int | np.random.Generator = 0,
     bidirectional: bool = True,
     goal_bias: float = 0.1,
-    max_nodes: int = 20_000,
-    max_charts: int = 20_000,
+    max_nodes: int = MAX_NODES,
+    max_charts: int = MAX_CHARTS,
     time_limit: float | None = None,
     shorten: bool = False,
     progress: Callable[[int, int | None], None] | None = None,
@@ -265,7 +273,7 @@ def atlas_rrt(
     if np.linalg.norm(manifold.function(goal)) > 1e-6 * (1 + np.linalg.norm(goal)):
         raise TautError("the goal point is not on the manifold (|F(goal)| too large)")
     rng = np.random.default_rng(seed)
-    atlas = Atlas(manifold, start, radius, epsilon, metric=metric, vertices=False)
+    atlas = Atlas(manifold, start, radius=radius, epsilon=epsilon, metric=metric, vertices=False)
     goal_chart = atlas.add_chart(goal)
     trees = [Tree(atlas.local(0, start), 0), Tree(atlas.local(goal_chart, goal), goal_chart)]
     walker = _Walker(atlas, delta, max_charts)
@@ -323,7 +331,7 @@ def atlas_rrt(
         pts, chs = pts[::-1], chs[::-1]
     path = continuous(atlas, np.array(pts))
     if shorten:
-        path, chs = shorten_path(atlas, path, chs, delta, rng)
+        path, chs = shorten_path(atlas, path, chs, step=delta, seed=rng)
     return PathResult(
         True, path, len(atlas.charts), nodes, False, _length(atlas, path), time.perf_counter() - t0, atlas
     )

@@ -50,7 +50,7 @@ References
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import KW_ONLY, dataclass, field
 
 import numpy as np
 import numpy.typing as npt
@@ -58,9 +58,10 @@ import numpy.typing as npt
 from taut.errors import TautError
 
 __all__ = [
+    "MAX_CHARTS",
     "Atlas",
-    "Chart",
     "ImplicitManifold",
+    "ManifoldChart",
     "Polytope",
     "Symmetry",
     "graph_tangent",
@@ -68,6 +69,12 @@ __all__ = [
     "project_graph",
     "tangent_basis",
 ]
+
+
+#: The chart budget of an atlas (:meth:`Atlas.complete`) and of a path search
+#: (:func:`taut.planning.plan_path`) when none is given: charts hold a polytope each, so the
+#: budget bounds memory as well as time.
+MAX_CHARTS = 20_000
 
 
 @dataclass(frozen=True)
@@ -157,6 +164,7 @@ class ImplicitManifold:
     function: Callable[[np.ndarray], np.ndarray]  #: ``F(x)``, shape ``(n − k,)``
     jacobian: Callable[[np.ndarray], np.ndarray]  #: ``F_x(x)``, shape ``(n − k, n)``
     dim: int  #: ``k``
+    _: KW_ONLY
     lower: np.ndarray | None = None  #: box bounds, ``(n,)`` (``−∞`` for none)
     upper: np.ndarray | None = None
     symmetry: Symmetry | None = None
@@ -179,25 +187,34 @@ def project(
     manifold: ImplicitManifold,
     guess: np.ndarray,
     basis: np.ndarray,
+    *,
     tol: float = 1e-10,
-    max_iter: int = 25,
-    max_step: float = np.inf,
+    max_steps: int = 25,
+    max_distance: float = np.inf,
     newton_fallback: bool = True,
 ) -> np.ndarray | None:
     """Newton on ``[F(x); Ψᵀ (x − guess)] = 0`` from ``guess``; ``None`` if it fails.
 
-    ``max_step`` rejects solutions farther than that from ``guess`` (a jump to another
+    ``max_distance`` rejects solutions farther than that from ``guess`` (a jump to another
     sheet of the manifold).  With a ``manifold.graph``, the same point is first sought by
     :func:`project_graph` (whose iterates must stay where the graph is defined: near the
     boundary of that domain it may fail where Newton succeeds).
     """
     if manifold.graph is not None and manifold.graph_index is not None:
-        x = project_graph(manifold.graph, manifold.graph_index, guess, basis, tol, max_iter, max_step)
+        x = project_graph(
+            manifold.graph,
+            manifold.graph_index,
+            guess,
+            basis,
+            tol=tol,
+            max_steps=max_steps,
+            max_distance=max_distance,
+        )
         if x is not None or not newton_fallback:
             return x
     x = np.array(guess, dtype=float)
     n = x.size
-    for _ in range(max_iter):
+    for _ in range(max_steps):
         f = manifold.function(x)
         g = np.concatenate([f, basis.T @ (x - guess)])
         if not np.all(np.isfinite(g)):
@@ -210,11 +227,11 @@ def project(
         except np.linalg.LinAlgError:
             return None
         x = x + dx
-        if not np.all(np.isfinite(x)) or np.linalg.norm(x - guess) > max_step:
+        if not np.all(np.isfinite(x)) or np.linalg.norm(x - guess) > max_distance:
             return None
     else:
         return None
-    if x.size != n or np.linalg.norm(x - guess) > max_step:
+    if x.size != n or np.linalg.norm(x - guess) > max_distance:
         return None
     return x
 
@@ -242,9 +259,10 @@ def project_graph(
     index: np.ndarray,
     guess: np.ndarray,
     basis: np.ndarray,
+    *,
     tol: float = 1e-10,
-    max_iter: int = 25,
-    max_step: float = np.inf,
+    max_steps: int = 25,
+    max_distance: float = np.inf,
 ) -> np.ndarray | None:
     """The point ``x = graph(q)`` with ``Ψᵀ (x − guess) = 0``, by Broyden's method on ``q``.
 
@@ -259,9 +277,9 @@ def project_graph(
         return None
     r = basis.T @ (x - guess)
     scale = tol * (1.0 + float(np.linalg.norm(guess)))
-    for _ in range(max_iter):
+    for _ in range(max_steps):
         if np.linalg.norm(r) <= scale:
-            return x if np.linalg.norm(x - guess) <= max_step else None
+            return x if np.linalg.norm(x - guess) <= max_distance else None
         dq = -H @ r
         x_new = graph(q + dq)
         if x_new is None:
@@ -273,7 +291,7 @@ def project_graph(
         if denom != 0.0:  # Broyden's "good" update of the inverse
             H = H + np.outer(dq - Hdr, dq @ H) / denom
         q, x, r = q + dq, x_new, r_new
-        if np.linalg.norm(x - guess) > max_step:
+        if np.linalg.norm(x - guess) > max_distance:
             return None
     return None
 
@@ -287,7 +305,7 @@ class Polytope:
     never enumerated, and :meth:`cut` reports whether the plane crosses the cube.
     """
 
-    def __init__(self, k: int, half_side: float, vertices: bool = True):
+    def __init__(self, k: int, half_side: float, *, vertices: bool = True):
         corners = np.array(np.meshgrid(*[[-1.0, 1.0]] * k, indexing="ij")).reshape(k, -1).T
         self.k = k
         self.has_vertices = vertices
@@ -351,7 +369,7 @@ class Polytope:
 
 
 @dataclass
-class Chart:
+class ManifoldChart:
     centre: np.ndarray
     basis: np.ndarray
     radius: float
@@ -390,6 +408,7 @@ class Atlas:
         self,
         manifold: ImplicitManifold,
         x0: npt.ArrayLike,
+        *,
         radius: float,
         epsilon: float = 0.1,
         min_step: float = 0.05,
@@ -405,7 +424,7 @@ class Atlas:
         self.min_step = float(min_step)
         self.vertices = vertices
         self.metric = np.arange(x0.size) if metric is None else np.asarray(metric)
-        self.charts: list[Chart] = []
+        self.charts: list[ManifoldChart] = []
         self._centres = np.empty((0, x0.size))
         if np.linalg.norm(manifold.function(x0)) > 1e-6 * (1 + np.linalg.norm(x0)):
             raise TautError("the start point is not on the manifold (|F(x0)| too large)")
@@ -442,7 +461,7 @@ class Atlas:
         """Distance in the ``metric`` coordinates between ``y`` and the nearest image of ``x``."""
         return float(np.linalg.norm((self.near(x, y)[0][0] - y)[self.metric]))
 
-    def add_chart(self, x: np.ndarray, basis: np.ndarray | None = None) -> int:
+    def add_chart(self, x: np.ndarray, *, basis: np.ndarray | None = None) -> int:
         """Add the chart centred at (the canonical image of) ``x`` and crop it against its
         overlapping charts."""
         basis = self._basis(x) if basis is None else basis
@@ -451,8 +470,12 @@ class Atlas:
             basis = self.manifold.symmetry.tangent(basis, flipped)
         k = self.manifold.dim
         # the cube strictly encloses the ball, also for k = 1
-        chart = Chart(
-            x, basis, self.radius, Polytope(k, 1.05 * self.radius, self.vertices), frontier=not self.manifold.in_box(x)
+        chart = ManifoldChart(
+            x,
+            basis,
+            self.radius,
+            Polytope(k, 1.05 * self.radius, vertices=self.vertices),
+            frontier=not self.manifold.in_box(x),
         )
         j = len(self.charts)
         if j:
@@ -464,7 +487,7 @@ class Atlas:
         self._centres = np.vstack([self._centres, x])
         return j
 
-    def _crop_pair(self, i: int, new: Chart, j: int) -> None:
+    def _crop_pair(self, i: int, new: ManifoldChart, j: int) -> None:
         old = self.charts[i]
         near, flipped = self.near(old.centre, new.centre)
         old_basis = old.basis
@@ -506,11 +529,11 @@ class Atlas:
         while alpha >= self.min_step * chart.radius:
             u = alpha * direction
             guess = chart.centre + chart.basis @ u
-            x = project(self.manifold, guess, chart.basis, max_step=self.epsilon)
+            x = project(self.manifold, guess, chart.basis, max_distance=self.epsilon)
             if x is not None:
                 basis = self._basis(x)
                 if np.linalg.svd(chart.basis.T @ basis, compute_uv=False).min() >= 1 - self.epsilon:
-                    j = self.add_chart(x, basis)
+                    j = self.add_chart(x, basis=basis)
                     if j not in chart.neighbours:  # no cut happened (should not): force one
                         chart.polytope.cut(2 * u, float(u @ u), 2 * self.manifold.dim + j)
                         c = self.cost(x, chart.centre)
@@ -520,7 +543,7 @@ class Atlas:
             alpha *= 0.5
         return None
 
-    def complete(self, max_charts: int = 100_000) -> bool:
+    def complete(self, *, max_charts: int = MAX_CHARTS) -> bool:
         """Expand every chart until all are closed; ``False`` if ``max_charts`` was hit."""
         i = 0
         while i < len(self.charts):
@@ -537,7 +560,9 @@ class Atlas:
     def centres(self) -> np.ndarray:
         return self._centres
 
-    def chart_map(self, i: int, u: np.ndarray, newton_fallback: bool = True, tol: float = 1e-10) -> np.ndarray | None:
+    def chart_map(
+        self, i: int, u: np.ndarray, *, newton_fallback: bool = True, tol: float = 1e-10
+    ) -> np.ndarray | None:
         """The manifold point of tangent coordinates ``u`` in chart ``i`` (see :func:`project`
         for ``newton_fallback`` and ``tol``)."""
         c = self.charts[i]
@@ -546,11 +571,11 @@ class Atlas:
             c.centre + c.basis @ u,
             c.basis,
             tol=tol,
-            max_step=max(self.epsilon, 2 * float(np.linalg.norm(u))),
+            max_distance=max(self.epsilon, 2 * float(np.linalg.norm(u))),
             newton_fallback=newton_fallback,
         )
 
-    def reaches(self, i: int, x: np.ndarray, tol: float = 1e-6) -> bool:
+    def reaches(self, i: int, x: np.ndarray, *, tol: float = 1e-6) -> bool:
         """Whether the map of chart ``i`` reaches the manifold point ``x`` (or an image of it)
         within its ball."""
         c = self.charts[i]

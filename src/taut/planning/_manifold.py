@@ -45,7 +45,7 @@ References
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import KW_ONLY, dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -147,6 +147,7 @@ class WrenchFeasibleManifold:
     f_max: np.ndarray
     rho_min: np.ndarray
     rho_max: np.ndarray
+    _: KW_ONLY
     wrench_point: np.ndarray = field(default_factory=lambda: np.zeros(3))
     fixed: dict[str, float] = field(default_factory=dict)
     slack_max: float = 1e2  #: upper bound on s_i, t_i (and g_i) that keeps atlases finite
@@ -197,7 +198,7 @@ class WrenchFeasibleManifold:
 
     @classmethod
     def from_robot(
-        cls, robot: Robot, E: np.ndarray | None = None, fixed: Mapping[str, float] | None = None, **kw: Any
+        cls, robot: Robot, *, E: np.ndarray | None = None, fixed: Mapping[str, float] | None = None, **kw: Any
     ) -> WrenchFeasibleManifold:
         """The manifold of a 6-cable spatial robot file: exits ``a``, anchors ``b``, the
         platform's constant ``wrench`` about ``wrench_point`` as ``ŵ_0``, the cables'

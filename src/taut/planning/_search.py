@@ -31,9 +31,9 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import TautError
-from taut.planning._continuation import Atlas, ImplicitManifold
+from taut.planning._continuation import MAX_CHARTS, Atlas, ImplicitManifold
 
-__all__ = ["PathResult", "continuous", "plan_path", "refine_path"]
+__all__ = ["PathResult", "astar", "continuous", "refine_path"]
 
 
 @dataclass(frozen=True)
@@ -59,7 +59,7 @@ def _segment(atlas: Atlas, i: int, u0: np.ndarray, u1: np.ndarray, spacing: floa
     return pts
 
 
-def refine_path(atlas: Atlas, charts: list[int], goal: np.ndarray, spacing: float) -> np.ndarray:
+def refine_path(atlas: Atlas, charts: list[int], goal: np.ndarray, *, spacing: float) -> np.ndarray:
     """Manifold points along the chart sequence ``charts`` (starting at the start chart's
     centre), ending at ``goal`` reached through the last chart."""
     pts = [atlas.charts[charts[0]].centre]
@@ -82,14 +82,15 @@ def continuous(atlas: Atlas, pts: np.ndarray) -> np.ndarray:
     return out
 
 
-def plan_path(
+def astar(
     manifold: ImplicitManifold,
     start: npt.ArrayLike,
     goal: npt.ArrayLike,
+    *,
     radius: float,
     epsilon: float = 0.1,
     metric: np.ndarray | None = None,
-    max_charts: int = 20_000,
+    max_charts: int = MAX_CHARTS,
     spacing: float | None = None,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> PathResult:
@@ -108,7 +109,7 @@ def plan_path(
     start, goal = np.asarray(start, float), np.asarray(goal, float)
     if np.linalg.norm(manifold.function(goal)) > 1e-6 * (1 + np.linalg.norm(goal)):
         raise TautError("the goal point is not on the manifold (|F(goal)| too large)")
-    atlas = Atlas(manifold, start, radius, epsilon, metric=metric)
+    atlas = Atlas(manifold, start, radius=radius, epsilon=epsilon, metric=metric)
     h = lambda i: atlas.cost(atlas.charts[i].centre, goal)  # noqa: E731
     g = {0: 0.0}
     parent = {0: -1}
@@ -155,6 +156,6 @@ def plan_path(
     while parent[seq[-1]] >= 0:
         seq.append(parent[seq[-1]])
     seq.reverse()
-    path = refine_path(atlas, seq, goal, spacing or radius / 4)
+    path = refine_path(atlas, seq, goal, spacing=spacing or radius / 4)
     length = float(np.sum(np.linalg.norm(np.diff(path[:, atlas.metric], axis=0), axis=1)))
     return PathResult(True, path, len(atlas.charts), expanded, False, length, time.perf_counter() - t0, atlas)

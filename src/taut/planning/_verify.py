@@ -48,7 +48,9 @@ def interpolate_poses(poses: npt.ArrayLike, subdivide: int) -> np.ndarray:
     return np.vstack([inner.reshape(-1, poses.shape[1]), poses[-1:]])
 
 
-def verify_path(robot: Robot, poses: npt.ArrayLike, E: npt.ArrayLike | None = None, subdivide: int = 10) -> PathCheck:
+def verify_path(
+    robot: Robot, poses: npt.ArrayLike, *, E: npt.ArrayLike | None = None, subdivide: int = 10
+) -> PathCheck:
     """Check every interpolated pose of ``poses`` for wrench feasibility (module doc).
 
     References

@@ -24,8 +24,8 @@ if TYPE_CHECKING:
         run_trajectory,
         sample_waypoints,
     )
-    from taut.wrapping._tree import CableStateTree
-    from taut.wrapping._update import track, update_state
+    from taut.wrapping._tree import MAX_NODES, CableStateTree
+    from taut.wrapping._update import Tracking, track_cable_state, update_state
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -42,8 +42,10 @@ _LAZY = {
     "full_poses": "taut.wrapping._trajectory",
     "run_trajectory": "taut.wrapping._trajectory",
     "sample_waypoints": "taut.wrapping._trajectory",
+    "MAX_NODES": "taut.wrapping._tree",
     "CableStateTree": "taut.wrapping._tree",
-    "track": "taut.wrapping._update",
+    "Tracking": "taut.wrapping._update",
+    "track_cable_state": "taut.wrapping._update",
     "update_state": "taut.wrapping._update",
 }
 
@@ -52,7 +54,9 @@ __all__ = [
     "CableState",
     "CableStateTree",
     "DEFAULT_SPEED",
+    "MAX_NODES",
     "TrajectoryResult",
+    "Tracking",
     "WrappedIK",
     "builtin_trajectory",
     "collidable_objects",
@@ -61,7 +65,7 @@ __all__ = [
     "rebuild_path",
     "run_trajectory",
     "sample_waypoints",
-    "track",
+    "track_cable_state",
     "update_state",
     "wrapped_inverse_kinematics",
 ]

@@ -1,7 +1,7 @@
 """Inverse kinematics of planar variable-structure CDPRs (VSCRs) along a path (§4.3 of Rushton 2022).
 
 Two stages per sample (§4.3): update every cable's state for the new platform pose with
-Alg. 4.4 (:func:`taut.wrapping.track`), then turn states into lengths with
+Alg. 4.4 (:func:`taut.wrapping.track_cable_state`), then turn states into lengths with
 Eq. (4.9).  The platform anchor of cable *i* is ``b_i = p + R(θ) r_i`` (Eq. 4.8; a point
 mass has ``r_i = 0``).  Each cable's *active segment* plays the role of the straight cable
 of a standard CDPR: ``u_i`` points from ``b_i`` to the last point where the cable touches
@@ -35,7 +35,7 @@ from taut.kinematics import anchor_points, as_poses, refuse_swivels
 from taut.model import Circle, Robot
 from taut.wrapping._state import CablePath, contact_angle, rebuild_path
 from taut.wrapping._tree import DIR, OBJ, CableStateTree
-from taut.wrapping._update import track
+from taut.wrapping._update import track_cable_state
 
 
 def collidable_objects(robot: Robot) -> tuple[np.ndarray, list[np.ndarray]]:
@@ -141,7 +141,7 @@ def _reference_angle(tree: CableStateTree, node: int, b: npt.ArrayLike) -> float
 
 
 def wrapped_inverse_kinematics(
-    robot: Robot, poses: npt.ArrayLike, initial: Mapping[int, Sequence[tuple[int, int]]] | None = None
+    robot: Robot, poses: npt.ArrayLike, *, initial: Mapping[int, Sequence[tuple[int, int]]] | None = None
 ) -> WrappedIK:
     """Track every cable of a planar VSCR along ``poses`` (``(T, pose_size)``, consecutive
     poses joined by straight moves of the anchors) and compute lengths and structure
@@ -166,11 +166,11 @@ def wrapped_inverse_kinematics(
         r0 = cable.pulley.radius if cable.pulley else 0.0
         d0 = -1 if cable.pulley and cable.pulley.direction == "cw" else 1
         cc = np.vstack([circles, [[*cable.exit, r0]]])
-        probe = CableStateTree(cc, d0, polys)
+        probe = CableStateTree(cc, d0, disallowed=polys)
         start = _start_node(probe, b[0, i], initial.get(i), i)
-        tree = CableStateTree(cc, d0, polys, _reference_angle(probe, start, b[0, i]))
+        tree = CableStateTree(cc, d0, disallowed=polys, reference_angle=_reference_angle(probe, start, b[0, i]))
         start = tree.find(probe.contacts(start))
-        tr = track(tree, b[:, i], start)
+        tr = track_cable_state(tree, b[:, i], node=start)
         lengths[:, i], nodes[:, i], act[:, i] = tr.lengths, tr.nodes, tr.directions
         events.append(tr.events)
         trees.append(tree)

@@ -63,7 +63,13 @@ PARAMETRIC = {
 }
 
 
-def sample_waypoints(waypoints: npt.ArrayLike, speed: float, dwell: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
+#: Sample step [s] of a trajectory when none is given.
+DT = 0.01
+
+
+def sample_waypoints(
+    waypoints: npt.ArrayLike, *, speed: float = DEFAULT_SPEED, dwell: float = DWELL, dt: float = DT
+) -> tuple[np.ndarray, np.ndarray]:
     """``(times (T,), poses (T, k))`` of straight moves at ``speed`` between waypoints with
     a ``dwell`` at each (the first waypoint included), sampled every ``dt`` (each move and
     dwell is divided into a whole number of equal steps no longer than ``dt``)."""
@@ -96,7 +102,7 @@ def sample_waypoints(waypoints: npt.ArrayLike, speed: float, dwell: float, dt: f
 
 
 def sample_path(
-    path: Callable[[np.ndarray], npt.ArrayLike], t0: float, t1: float, dt: float
+    path: Callable[[np.ndarray], npt.ArrayLike], t0: float, t1: float, *, dt: float = DT
 ) -> tuple[np.ndarray, np.ndarray]:
     """``(times, poses)`` of a parametric path ``path(t) -> (T, k)`` every ``dt``."""
     if not (dt > 0 and t1 >= t0):
@@ -108,7 +114,12 @@ def sample_path(
 
 
 def builtin_trajectory(
-    robot: Robot, name: str | None = None, dt: float = 0.01, speed: float | None = None, dwell: float | None = None
+    robot: Robot,
+    name: str | None = None,
+    *,
+    dt: float = DT,
+    speed: float | None = None,
+    dwell: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """``(times, poses)`` of a named trajectory of ``robot`` (its first one by default):
     the parametric path of :data:`PARAMETRIC` if the name is one, else its waypoints."""
@@ -119,9 +130,11 @@ def builtin_trajectory(
         raise TautError(f"{robot.name} has no trajectory {name!r}; it has {', '.join(robot.trajectories)}")
     if name in PARAMETRIC:
         fn, t0, t1 = PARAMETRIC[name]
-        return sample_path(fn, t0, t1, dt)
+        return sample_path(fn, t0, t1, dt=dt)
     tr = robot.trajectories[name]
-    return sample_waypoints(tr.waypoints, speed or tr.speed or DEFAULT_SPEED, tr.dwell if dwell is None else dwell, dt)
+    return sample_waypoints(
+        tr.waypoints, speed=speed or tr.speed or DEFAULT_SPEED, dwell=tr.dwell if dwell is None else dwell, dt=dt
+    )
 
 
 def full_poses(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
@@ -185,6 +198,7 @@ def run_trajectory(
     robot: Robot,
     times: npt.ArrayLike,
     poses: npt.ArrayLike,
+    *,
     initial: Mapping[int, Sequence[tuple[int, int]]] | None = None,
     wrench: npt.ArrayLike | None = None,
     tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
@@ -200,7 +214,7 @@ def run_trajectory(
     P = full_poses(robot, poses)
     if len(times) != len(P):
         raise TautError(f"{len(times)} times for {len(P)} poses")
-    ik = wrapped_inverse_kinematics(robot, P, initial)
+    ik = wrapped_inverse_kinematics(robot, P, initial=initial)
     w = (
         external_wrench(robot, P)
         if wrench is None

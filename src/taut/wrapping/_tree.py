@@ -46,6 +46,10 @@ SX, SY, EX, EY, UX, UY, M, THETA_IN, L_STATIC, DIR = range(10)
 # columns of I
 PARENT, OBJ, FIRST, COUNT = range(4)
 
+#: The node budget of :meth:`CableStateTree.shortest_taut_state` when none is given: the
+#: tree of ``K`` objects has up to ``2^K K!`` nodes, so the search is bounded.
+MAX_NODES = 20_000
+
 #: Wrap angle [rad] below which a segment is not taut (round-off allowance).
 TAUT_TOL = 1e-12
 #: Distance [m] by which a segment must enter an object or a region to meet it.
@@ -70,6 +74,7 @@ class CableStateTree:
         self,
         circles: npt.ArrayLike,
         winch_direction: int = 1,
+        *,
         disallowed: Iterable[npt.ArrayLike] = (),
         reference_angle: float = 0.0,
     ) -> None:
@@ -223,7 +228,7 @@ class CableStateTree:
         self.I[node, COUNT] = n
         self.size += n
 
-    def build(self, max_depth: int | None = None) -> int:
+    def build(self, *, max_depth: int | None = None) -> int:
         """Expand the whole tree (Alg. 4.3), down to ``max_depth`` wraps; returns its size."""
         stack = [(0, 0)]
         while stack:
@@ -272,7 +277,7 @@ class CableStateTree:
             return False
         return not any(bool(segment_enters_polygon(x, b, poly, MEET_TOL)) for poly in self.disallowed)
 
-    def shortest_taut_state(self, b: npt.ArrayLike, max_nodes: int = 20000) -> int:
+    def shortest_taut_state(self, b: npt.ArrayLike, *, max_nodes: int = MAX_NODES) -> int:
         """The taut admissible state of least length with the platform end at ``b``: a
         best-first (A*) search over the lazily expanded tree, each node bounded below by
         its static length plus the distance from its entry point to ``b``.  The default

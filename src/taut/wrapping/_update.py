@@ -32,7 +32,7 @@ children whose line the cable lies on (``h_child = 0`` within round-off) do not 
 that instant (and, ``h_child`` rising, not later in the step either).  A circle of positive
 radius that touches the straightened cable does collide: the cable swings into it.  The
 kernel (Numba) stops when it reaches a node that the lazily expanded tree has not expanded
-yet; :func:`track` expands it and resumes.
+yet; :func:`track_cable_state` expands it and resumes.
 
 A rigid platform's anchor moves on a curve when the platform turns: callers sample it
 finely enough (``taut.wrapping._ik``) that the chord is the motion.
@@ -170,7 +170,7 @@ class Tracking:
     #: kind 1 = wrap onto ``node``'s object, 2 = unwrap from ``node``'s object
 
 
-def track(tree: CableStateTree, points: npt.ArrayLike, node: int = 0) -> Tracking:
+def track_cable_state(tree: CableStateTree, points: npt.ArrayLike, *, node: int = 0) -> Tracking:
     """Update the state of a cable whose platform end visits ``points`` (``(T, 2)``, a
     polyline of straight moves) from state ``node`` at ``points[0]`` (Alg. 4.4 per step).
 
@@ -226,4 +226,4 @@ def update_state(tree: CableStateTree, node: int, b0: npt.ArrayLike, b1: npt.Arr
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §4.2.2, Alg. 4.4. (docs/references.bib: rushton2022)
     """
-    return int(track(tree, np.array([b0, b1], float), node).nodes[-1])
+    return int(track_cable_state(tree, np.array([b0, b1], float), node=node).nodes[-1])

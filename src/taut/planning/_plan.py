@@ -1,0 +1,105 @@
+"""One entry point for wrench-feasible path planning: the complete A* search over a growing
+atlas (:mod:`taut.planning._search`, Bohigas et al. 2013, §4) or AtlasRRT
+(:mod:`taut.planning._atlasrrt`, Jaillet & Porta 2013), chosen by ``method``.
+
+References
+----------
+.. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+   Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
+   Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
+.. [2] L. Jaillet, J. M. Porta, "Path planning under kinematic constraints by rapidly
+   exploring manifolds", IEEE Transactions on Robotics 29(1), 2013, Algs. 1–4.
+   (docs/references.bib: jaillet2013)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+import numpy.typing as npt
+
+from taut.errors import TautError
+from taut.planning._atlasrrt import MAX_NODES, atlas_rrt
+from taut.planning._continuation import MAX_CHARTS, ImplicitManifold
+from taut.planning._search import PathResult, astar
+
+__all__ = ["METHODS", "RADIUS", "plan_path"]
+
+#: The planners of :func:`plan_path`.
+METHODS = ("astar", "atlasrrt")
+
+#: Chart radius of each planner when none is given: A* needs charts small enough to resolve
+#: the narrow passages it must prove closed; AtlasRRT walks steps of a quarter radius.
+RADIUS = {"astar": 0.2, "atlasrrt": 0.4}
+
+
+def plan_path(
+    manifold: ImplicitManifold,
+    start: npt.ArrayLike,
+    goal: npt.ArrayLike,
+    *,
+    method: str = "astar",
+    radius: float | None = None,
+    epsilon: float = 0.1,
+    metric: np.ndarray | None = None,
+    max_charts: int = MAX_CHARTS,
+    max_nodes: int = MAX_NODES,
+    spacing: float | None = None,
+    step: float | None = None,
+    seed: int | np.random.Generator = 0,
+    bidirectional: bool = True,
+    goal_bias: float = 0.1,
+    time_limit: float | None = None,
+    shorten: bool = False,
+    progress: Callable[[int, int | None], None] | None = None,
+) -> PathResult:
+    """A path on ``manifold`` from ``start`` to ``goal`` by ``method``.
+
+    ``"astar"``: A* over a growing atlas (complete: ``exhausted`` proves that no path exists
+    at the resolution ``radius``; ``spacing`` of the refined path); ``"atlasrrt"``: AtlasRRT
+    (randomised, deterministic for a ``seed``; ``step``, ``bidirectional``, ``goal_bias``,
+    ``max_nodes``, ``time_limit``, ``shorten``).  ``radius`` defaults to :data:`RADIUS`
+    of the method.
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
+    .. [2] L. Jaillet, J. M. Porta, "Path planning under kinematic constraints by rapidly
+       exploring manifolds", IEEE Transactions on Robotics 29(1), 2013, Algs. 1–4.
+       (docs/references.bib: jaillet2013)
+    """
+    if method not in METHODS:
+        raise TautError(f"unknown planning method {method!r}; expected one of {', '.join(METHODS)}")
+    r = RADIUS[method] if radius is None else float(radius)
+    if method == "astar":
+        return astar(
+            manifold,
+            start,
+            goal,
+            radius=r,
+            epsilon=epsilon,
+            metric=metric,
+            max_charts=max_charts,
+            spacing=spacing,
+            progress=progress,
+        )
+    return atlas_rrt(
+        manifold,
+        start,
+        goal,
+        radius=r,
+        step=step,
+        epsilon=epsilon,
+        metric=metric,
+        seed=seed,
+        bidirectional=bidirectional,
+        goal_bias=goal_bias,
+        max_nodes=max_nodes,
+        max_charts=max_charts,
+        time_limit=time_limit,
+        shorten=shorten,
+        progress=progress,
+    )
