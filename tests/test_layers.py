@@ -12,6 +12,7 @@ SRC = Path(__file__).parents[1] / "src" / "taut"
 LAYERS = {
     "errors": 0,
     "_lazy": 0,
+    "_results": 0,
     "geometry": 0,
     "interval": 0,
     "model": 1,

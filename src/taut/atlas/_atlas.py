@@ -38,8 +38,9 @@ References
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -47,6 +48,7 @@ import numpy.typing as npt
 import shapely
 from shapely.geometry import LineString, MultiPolygon, Polygon
 
+from taut._results import Result, jsonable
 from taut.atlas._chart import StructureChart, chart_lengths, component_containing, structure_reachable_area
 from taut.atlas._platform import fixed_collision_region, platform_outline, rotation, structure_collision_region
 from taut.atlas._reachable import ARC_STEP, cable_reachable_area
@@ -62,12 +64,13 @@ if TYPE_CHECKING:
 PROBE = 1e-6
 #: Shortest traversable edge [m] considered.
 MIN_EDGE = 1e-6
-#: Most charts built before giving up.
+#: The chart budget of :func:`build_atlas` when none is given: every chart holds the
+#: polygons of its structure, so the budget bounds memory as well as time.
 MAX_CHARTS = 5000
 
 
-@dataclass
-class Edge:
+@dataclass(frozen=True)
+class Edge(Result):
     """An adjacency of two charts: crossing ``segment`` (the traversable edge, on the
     boundary of ``charts[0]``'s domain) changes the state of ``cable`` (0-based) by a
     ``kind`` ("wrap" or "unwrap") about ``obj`` (0-based object index; the winch is the
@@ -80,20 +83,34 @@ class Edge:
     segment: np.ndarray  #: (2, 2) end points of the shared edge
     normal: np.ndarray  #: (2,) unit normal of the edge pointing into ``charts[1]``
 
+    def as_dict(self) -> dict:
+        """The edge as ``taut atlas --out`` writes it, 0-based: ``charts``, ``cable``,
+        ``kind``, ``object`` and ``segment``."""
+        return {
+            "charts": list(self.charts),
+            "cable": self.cable,
+            "kind": self.kind,
+            "object": self.obj,
+            "segment": jsonable(self.segment),
+        }
 
-@dataclass
-class StructureAtlas:
+
+@dataclass(frozen=True)
+class StructureAtlas(Result):
     """The structure atlas (SA) of a planar VSCR — for a rigid platform one page, at
     orientation ``theta`` (§5.2.2): charts and their adjacency."""
 
     robot: Robot
-    trees: list[CableStateTree] = field(repr=False)
+    trees: tuple[CableStateTree, ...] = field(repr=False)
     space: Polygon = field(repr=False)  #: the installation space (or a box around the robot)
-    charts: list[StructureChart]
-    edges: list[Edge]
+    charts: tuple[StructureChart, ...]
+    edges: tuple[Edge, ...]
     start: np.ndarray
-    theta: float = 0.0  #: platform orientation of the page (0 for a point mass)
-    offsets: np.ndarray | None = field(default=None, repr=False)  #: ``(n, 2)`` anchor offsets ``R(θ) r_i``
+    theta: float  #: platform orientation of the page (0 for a point mass)
+    offsets: np.ndarray = field(repr=False)  #: ``(n, 2)`` anchor offsets ``R(θ) r_i``
+    #: every chart reachable from the start is built (the chart budget did not run out)
+    complete: bool
+    elapsed_s: float
 
     def poses(self, points: npt.ArrayLike) -> np.ndarray:
         """Robot poses at reference points ``(N, 2)``: ``(x, y)``, or ``(x, y, θ)`` for a
@@ -116,12 +133,29 @@ class StructureAtlas:
         """Cable lengths ``(N, n)`` at ``points`` in chart ``chart`` (Eq. 4.9)."""
         return chart_lengths(self.trees, self.charts[chart].nodes, points, offsets=self.offsets)[0]
 
+    def as_dict(self) -> dict:
+        """The atlas as ``taut atlas --json --out`` prints it, with 0-based charts, cables
+        and objects: ``start``, ``theta``, ``complete``, ``elapsed_s``, ``charts`` and
+        ``edges`` (their numbers), ``reachable_area``, ``chart_list``
+        (:meth:`StructureChart.as_dict`) and ``edge_list`` (:meth:`Edge.as_dict`)."""
+        return {
+            "start": jsonable(self.start),
+            "theta": float(self.theta),
+            "complete": self.complete,
+            "elapsed_s": self.elapsed_s,
+            "charts": len(self.charts),
+            "edges": self.n_edges,
+            "reachable_area": float(self.reachable_area().area),
+            "chart_list": [c.as_dict() for c in self.charts],
+            "edge_list": [e.as_dict() for e in self.edges],
+        }
+
 
 class _Builder:
     def __init__(
         self,
         robot: Robot,
-        trees: list[CableStateTree],
+        trees: Sequence[CableStateTree],
         space: Polygon,
         arc_step: float,
         theta: float,
@@ -129,6 +163,7 @@ class _Builder:
     ) -> None:
         self.robot, self.trees, self.space, self.arc_step = robot, trees, space, arc_step
         self.offsets = offsets
+        self.full = False  #: the chart budget ran out
         self.cra: dict[tuple[int, int], Polygon | MultiPolygon] = {}
         self.sra: dict[tuple[int, ...], Polygon | MultiPolygon] = {}
         x0, y0, x1, y1 = space.bounds
@@ -205,6 +240,7 @@ def build_atlas(
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §5.1.3, Alg. 5.1; §5.2.2. (docs/references.bib: rushton2022)
     """
+    t0 = time.perf_counter()
     theta = float(theta)
     if not np.isfinite(theta):
         raise PoseError(f"{robot.name}: the orientation must be finite, got {theta}")
@@ -241,6 +277,7 @@ def build_atlas(
         )
     charts = [StructureChart(0, nodes0, q0, p0, _states(ik.trees, nodes0))]
     edges: list[Edge] = []
+    links: dict[int, dict[int, list[int]]] = {}  #: chart → adjacent chart → its edges
     stack = [0]
     expanded = 0
     while stack:
@@ -267,10 +304,13 @@ def build_atlas(
                         break
                 if target is not None and target != ci:
                     edges.append(Edge((ci, target), i, kind, obj, seg, nrm))
-                    C.neighbours.setdefault(target, []).append(len(edges) - 1)
+                    links.setdefault(ci, {}).setdefault(target, []).append(len(edges) - 1)
     if progress is not None:
         progress(expanded, expanded)
-    return StructureAtlas(robot, b.trees, space, charts, edges, p0, theta, offsets)
+    built = tuple(replace(C, neighbours={k: tuple(v) for k, v in links.get(C.index, {}).items()}) for C in charts)
+    return StructureAtlas(
+        robot, tuple(b.trees), space, built, tuple(edges), p0, theta, offsets, not b.full, time.perf_counter() - t0
+    )
 
 
 def _states(trees: Sequence[CableStateTree], nodes: Sequence[int]) -> tuple[tuple[tuple[int, int], ...], ...]:
@@ -292,7 +332,8 @@ def _find_or_build(
     if q is None or not shapely.contains_xy(q, *point):
         return None
     if len(charts) >= max_charts:
-        raise TautError(f"{b.robot.name}: more than {max_charts} charts; the atlas is too large")
+        b.full = True
+        return None
     charts.append(StructureChart(len(charts), nodes, q, np.asarray(point, float), _states(b.trees, nodes)))
     stack.append(len(charts) - 1)
     return len(charts) - 1

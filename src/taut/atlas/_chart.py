@@ -34,6 +34,7 @@ import shapely
 import shapely.affinity
 from shapely.geometry import MultiPolygon, Polygon
 
+from taut._results import Result, jsonable
 from taut.atlas._reachable import close_cracks
 from taut.wrapping import CableStateTree
 
@@ -41,8 +42,8 @@ if TYPE_CHECKING:
     from shapely.geometry.base import BaseGeometry
 
 
-@dataclass
-class StructureChart:
+@dataclass(frozen=True)
+class StructureChart(Result):
     """One chart of the structure atlas: ``nodes[i]`` is the CST node of cable ``i``."""
 
     index: int
@@ -50,15 +51,34 @@ class StructureChart:
     domain: Polygon  #: Q, the SRA component containing the seed
     seed: np.ndarray  #: the point the chart was built from
     states: tuple[tuple[tuple[int, int], ...], ...] = ()  #: per cable, the wrapped objects ``((object, ±1), ...)``
-    neighbours: dict[int, list[int]] = field(default_factory=dict)  #: adjacent chart index → transitions
+    #: adjacent chart index → the indices of the edges (transitions) to it
+    neighbours: dict[int, tuple[int, ...]] = field(default_factory=dict)
 
     @property
     def area(self) -> float:
+        """Area of the domain [m²]."""
         return float(self.domain.area)
+
+    def as_dict(self) -> dict:
+        """The chart as ``taut atlas --out`` writes it, 0-based: ``index``, ``structure``
+        (per cable, the wrapped ``[object, direction]`` pairs), ``area``, ``seed``,
+        ``domain`` (the exterior ring of each polygon) and ``neighbours``."""
+        return {
+            "index": self.index,
+            "structure": jsonable(self.states),
+            "area": self.area,
+            "seed": jsonable(self.seed),
+            "domain": [jsonable(np.asarray(g.exterior.coords)) for g in getattr(self.domain, "geoms", [self.domain])],
+            "neighbours": sorted(self.neighbours),
+        }
 
 
 def chart_lengths(
-    trees: list[CableStateTree], nodes: Sequence[int], points: npt.ArrayLike, *, offsets: npt.ArrayLike | None = None
+    trees: Sequence[CableStateTree],
+    nodes: Sequence[int],
+    points: npt.ArrayLike,
+    *,
+    offsets: npt.ArrayLike | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``(l (N, n), l_0 + ν (N, n), A (N, n, 2))`` of structure ``nodes`` at reference
     points ``points`` ``(N, 2)``: Eq. (4.9) with the chart elements of Eqs. (5.3)–(5.5),

@@ -29,6 +29,7 @@ import numpy as np
 import numpy.typing as npt
 import shapely
 
+from taut._results import Result, jsonable
 from taut.atlas._atlas import StructureAtlas
 from taut.atlas._chart import chart_lengths
 from taut.errors import PoseError
@@ -36,7 +37,7 @@ from taut.geometry import segments_intersect
 
 
 @dataclass(frozen=True)
-class AtlasIK:
+class AtlasIK(Result):
     """Inverse kinematics at ``N`` points."""
 
     charts: np.ndarray  #: ``(N,)`` active chart (``-1`` where no chart contains the point)
@@ -45,7 +46,18 @@ class AtlasIK:
 
     @property
     def found(self) -> np.ndarray:
+        """``(N,)``: a chart contains the point."""
         return self.charts >= 0
+
+    def as_dict(self) -> dict:
+        """``charts``, ``found``, ``lengths`` and ``exit_points`` in plain JSON types
+        (``None`` where no chart contains the point)."""
+        return {
+            "charts": jsonable(self.charts),
+            "found": jsonable(self.found),
+            "lengths": jsonable(self.lengths),
+            "exit_points": jsonable(self.exit_points),
+        }
 
 
 def locate(atlas: StructureAtlas, points: npt.ArrayLike, *, charts: Iterable[int] | None = None) -> np.ndarray:

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 
+from taut._results import Result, jsonable
 from taut.atlas._atlas import PROBE, StructureAtlas
 from taut.atlas._chart import chart_lengths
 from taut.errors import TautError
@@ -35,28 +36,48 @@ from taut.workspace import WorkspaceCondition, WrenchCondition, make_condition
 DEFAULT_RESOLUTION = 200
 
 
-@dataclass
-class AtlasWorkspace:
+@dataclass(frozen=True)
+class AtlasWorkspace(Result):
     """The workspace of a structure atlas (Alg. 5.2)."""
 
     condition: str
     step: float  #: grid step [m]
     points: np.ndarray  #: ``(M, 2)`` grid points of the workspace (union over charts)
-    charts: list[int]  #: the charts kept (reachable with a non-empty sub-workspace)
-    pruned: list[int]  #: the charts removed
-    sub_workspaces: dict  #: chart → ``(K, 2)`` feasible grid points
+    charts: tuple[int, ...]  #: the charts kept (reachable with a non-empty sub-workspace)
+    pruned: tuple[int, ...]  #: the charts removed
+    sub_workspaces: dict[int, np.ndarray]  #: chart → ``(K, 2)`` feasible grid points
+
+    def __post_init__(self) -> None:
+        views = {c: p.view() for c, p in self.sub_workspaces.items()}
+        for v in views.values():
+            v.flags.writeable = False
+        object.__setattr__(self, "sub_workspaces", views)
+        super().__post_init__()
 
     @property
     def area(self) -> float:
         """Workspace area: grid cells of the feasible points."""
         return float(len(self.points)) * self.step**2
 
+    def as_dict(self) -> dict:
+        """``condition``, ``step``, ``area``, ``charts`` and ``pruned`` (0-based) and the
+        workspace's grid ``points``, in plain JSON types (the sub-workspaces are the points
+        of each kept chart's domain)."""
+        return {
+            "condition": self.condition,
+            "step": self.step,
+            "area": self.area,
+            "charts": list(self.charts),
+            "pruned": list(self.pruned),
+            "points": jsonable(self.points),
+        }
+
 
 def _feasible(atlas: StructureAtlas, cond: WrenchCondition, chart: int, P: np.ndarray) -> np.ndarray:
     if not len(P):
         return np.zeros(0, bool)
     _, _, A = chart_lengths(atlas.trees, atlas.charts[chart].nodes, P, offsets=atlas.offsets)
-    off = np.zeros((A.shape[1], 2)) if atlas.offsets is None else atlas.offsets
+    off = atlas.offsets
     D = A - (P[:, None, :] + off[None])
     L = np.hypot(D[..., 0], D[..., 1])
     ok = (L > 1e-12).all(axis=1)
@@ -131,7 +152,7 @@ def atlas_workspace(
                 if _feasible(atlas, cond, c, S).any():
                     queue.append(nb)
                     break
-    pruned = [c for c in range(len(atlas.charts)) if c not in subs]
+    pruned = tuple(c for c in range(len(atlas.charts)) if c not in subs)
     if progress is not None and len(visited) < len(atlas.charts):  # the rest: pruned unvisited
         progress(len(atlas.charts), len(atlas.charts))
-    return AtlasWorkspace(cond.name, float(step), G[in_ws], sorted(kept), pruned, subs)
+    return AtlasWorkspace(cond.name, float(step), G[in_ws], tuple(sorted(kept)), pruned, subs)

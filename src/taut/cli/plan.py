@@ -189,7 +189,7 @@ def cmd_plan(ns: argparse.Namespace) -> int:
         "found": res.found,
         "path": [],
         "charts": res.charts,
-        "nodes": res.expanded if method == "atlasrrt" else None,
+        "nodes": res.nodes if method == "atlasrrt" else None,
         "elapsed_s": elapsed,
         "min_tension_margin": None,
         "expanded": res.expanded if method == "astar" else None,

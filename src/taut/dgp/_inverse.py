@@ -65,6 +65,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result, jsonable
 from taut.dgp._formulation import load
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import MAX_BOXES, UndecidedBox, cause_of, scaled
@@ -97,7 +98,7 @@ ALIASES = {"phix": "a", "phiy": "b", "phiz": "c", "φx": "a", "φy": "b", "φz":
 
 
 @dataclass(frozen=True)
-class IGPSolution:
+class IGPSolution(Result):
     taut: tuple[int, ...]  #: taut cables (0-based indices)
     position: np.ndarray
     orientation: np.ndarray  #: angles in the robot's convention
@@ -110,23 +111,24 @@ class IGPSolution:
     uniqueness_radius: float  #: half-width of the inflated box with no other solution
 
     def as_dict(self) -> dict:
+        """The solution in plain JSON types (cables 0-based)."""
         return {
             "taut": list(self.taut),
-            "position": self.position.tolist(),
-            "orientation": self.orientation.tolist(),
-            "tensions": self.tensions.tolist(),
-            "lengths": self.lengths.tolist(),
+            "position": jsonable(self.position),
+            "orientation": jsonable(self.orientation),
+            "tensions": jsonable(self.tensions),
+            "lengths": jsonable(self.lengths),
             "slack": list(self.slack),
             "length_violations": list(self.length_violations),
             "stable": bool(self.stable),
-            "certificate_width": self.certificate_width,
-            "uniqueness_radius": self.uniqueness_radius,
+            "certificate_width": jsonable(self.certificate_width),
+            "uniqueness_radius": jsonable(self.uniqueness_radius),
         }
 
 
 @dataclass(frozen=True)
-class IGPResult:
-    solutions: list[IGPSolution]
+class IGPResult(Result):
+    solutions: tuple[IGPSolution, ...]
     fixed: dict[str, float]  #: the fixed (assigned) coordinates, by the robot's pose names
     #: boxes that could not be decided (:mod:`taut.dgp._undecided`): of width < eps around a
     #: solution with a zero tension (it belongs to a smaller taut set) or a singular one (a
@@ -145,6 +147,22 @@ class IGPResult:
     def complete(self) -> bool:
         """Every solution in the domain is in ``solutions``: no box was left undecided."""
         return not self.undecided_enclosures
+
+    def as_dict(self) -> dict:
+        """The result as ``taut igp --json`` prints it, with 0-based cables (the coordinates
+        it prints as ``assigned`` are ``fixed`` here): ``fixed``, ``solutions``,
+        ``complete``, ``undecided_boxes``, ``undecided_enclosures``, ``boxes``,
+        ``exhausted``, ``elapsed_s``."""
+        return {
+            "fixed": jsonable(self.fixed),
+            "solutions": [s.as_dict() for s in self.solutions],
+            "complete": self.complete,
+            "undecided_boxes": self.undecided,
+            "undecided_enclosures": [b.as_dict() for b in self.undecided_enclosures],
+            "boxes": self.boxes,
+            "exhausted": self.exhausted,
+            "elapsed_s": self.elapsed_s,
+        }
 
 
 def _check_robot(robot: Robot) -> None:
@@ -469,7 +487,7 @@ def solve_igp(
     elif progress is not None:
         progress(0, 0)
     return IGPResult(
-        solutions,
+        tuple(solutions),
         {names[k]: v for k, v in sorted(values.items())},
         undecided,
         boxes,

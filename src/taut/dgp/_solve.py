@@ -32,6 +32,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result, freeze, jsonable
 from taut.dgp._formulation import Subproblem, build_subproblem, load
 from taut.dgp._single_cable import single_cable_equilibria
 from taut.dgp._stability import is_stable
@@ -57,7 +58,7 @@ if TYPE_CHECKING:
 
 
 @dataclass(frozen=True)
-class DGPSolution:
+class DGPSolution(Result):
     taut: tuple[int, ...]  #: taut cables (0-based indices)
     position: np.ndarray
     orientation: np.ndarray  #: angles in the robot's convention (xyz-fixed by default)
@@ -71,33 +72,41 @@ class DGPSolution:
     boundary: tuple[int, ...] | None = None
 
     def as_dict(self) -> dict:
+        """The solution in plain JSON types (cables 0-based); ``continuum`` and ``boundary``
+        only when set."""
         d = {
             "taut": list(self.taut),
-            "position": self.position.tolist(),
-            "orientation": self.orientation.tolist(),
-            "tensions": self.tensions.tolist(),
+            "position": jsonable(self.position),
+            "orientation": jsonable(self.orientation),
+            "tensions": jsonable(self.tensions),
             "stable": bool(self.stable),
-            "certificate_width": self.certificate_width,
-            "uniqueness_radius": self.uniqueness_radius,
+            "certificate_width": jsonable(self.certificate_width),
+            "uniqueness_radius": jsonable(self.uniqueness_radius),
         }
         if self.continuum is not None:
-            d["continuum"] = list(self.continuum)
+            d["continuum"] = jsonable(self.continuum)
         if self.boundary is not None:
             d["boundary"] = list(self.boundary)
         return d
 
 
 @dataclass(frozen=True)
-class DGPResult:
+class DGPResult(Result):
     """All equilibria found, in canonical order (:func:`solution_key`), and the search's
     bookkeeping."""
 
-    solutions: list[DGPSolution]
+    solutions: tuple[DGPSolution, ...]
     subproblems: int  #: taut subsets solved
     #: the boxes no solution could be excluded from (:mod:`taut.dgp._undecided`), in job order
     undecided_enclosures: tuple[UndecidedBox, ...]
     boxes: int  #: boxes processed by branch-and-prune over all sub-problems
     elapsed_s: float
+
+    def __post_init__(self) -> None:
+        # solutions computed by worker processes arrive unpickled, their arrays writeable
+        for s in self.solutions:
+            freeze(s)
+        super().__post_init__()
 
     @property
     def undecided(self) -> int:
@@ -108,6 +117,26 @@ class DGPResult:
     def complete(self) -> bool:
         """Every equilibrium is in ``solutions``: no box was left undecided."""
         return not self.undecided_enclosures
+
+    @property
+    def exhausted(self) -> bool:
+        """The box budget ran out in some sub-problem (boxes undecided for ``"budget"``)."""
+        return any(b.cause == "budget" for b in self.undecided_enclosures)
+
+    def as_dict(self) -> dict:
+        """The result as ``taut fk --json`` prints it, with 0-based cables: ``solutions``,
+        ``complete``, ``exhausted``, ``subproblems``, ``undecided_boxes``,
+        ``undecided_enclosures``, ``boxes``, ``elapsed_s``."""
+        return {
+            "solutions": [s.as_dict() for s in self.solutions],
+            "complete": self.complete,
+            "exhausted": self.exhausted,
+            "subproblems": self.subproblems,
+            "undecided_boxes": self.undecided,
+            "undecided_enclosures": [b.as_dict() for b in self.undecided_enclosures],
+            "boxes": self.boxes,
+            "elapsed_s": self.elapsed_s,
+        }
 
 
 def solution_key(solution: DGPSolution) -> tuple:
@@ -469,4 +498,4 @@ def solve_dgp(
         if not any(_same_border(sol, other) for other in solutions):
             solutions.append(sol)
     solutions.sort(key=solution_key)
-    return DGPResult(solutions, len(subsets), tuple(undecided), boxes, time.perf_counter() - t0)
+    return DGPResult(tuple(solutions), len(subsets), tuple(undecided), boxes, time.perf_counter() - t0)

@@ -28,6 +28,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from taut._results import Result
+
 if TYPE_CHECKING:
     from taut.dgp._formulation import Subproblem
 
@@ -58,7 +60,7 @@ def _bound(v: float) -> float | None:
 
 
 @dataclass(frozen=True)
-class UndecidedBox:
+class UndecidedBox(Result):
     """One undecided box of the sub-problem of the taut cables ``taut`` (0-based): the
     enclosure ``[lo, hi]`` of its pose unknowns, named by ``variables``, and of the tensions
     (N) of the taut cables, in the order of ``taut``.  ``points``: for the direct problem,
@@ -76,7 +78,9 @@ class UndecidedBox:
     points: tuple[tuple[float, float, float], ...] = ()
 
     def as_dict(self) -> dict:
-        """JSON-ready: ``None`` for an unbounded side."""
+        """The box in plain JSON types, ``None`` for an unbounded side: ``taut`` (0-based),
+        ``cause``, ``enclosure`` (unknown name → ``[lo, hi]``), ``tensions`` (``[lo, hi]``
+        per taut cable) and, for the direct problem, ``reference_points``."""
         d = {
             "taut": list(self.taut),
             "cause": self.cause,

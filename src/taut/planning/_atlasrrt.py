@@ -253,7 +253,7 @@ def atlas_rrt(
     """A path on ``manifold`` from ``start`` to ``goal`` (both on it) by AtlasRRT (module doc),
     deterministic for a ``seed``, within ``max_nodes`` tree nodes, ``max_charts`` charts and
     ``time_limit`` seconds.  ``step`` is ``δ`` (default ``radius / 4``).  The result's
-    ``expanded`` counts tree nodes; ``exhausted`` is always ``False``.
+    ``nodes`` counts tree nodes; ``exhausted`` is always ``False``.
 
     ``progress(nodes, None)`` is called every 50 iterations, ``progress(nodes, nodes)`` at the end.
 
@@ -317,11 +317,13 @@ def atlas_rrt(
             False,
             np.empty((0, start.size)),
             len(atlas.charts),
-            nodes,
+            0,
             False,
             float("nan"),
             time.perf_counter() - t0,
             atlas,
+            "atlasrrt",
+            nodes,
         )
     a, la, lb = joined
     ia, ib = trees[a].branch(la), trees[1 - a].branch(lb)[::-1]
@@ -333,5 +335,14 @@ def atlas_rrt(
     if shorten:
         path, chs = shorten_path(atlas, path, chs, step=delta, seed=rng)
     return PathResult(
-        True, path, len(atlas.charts), nodes, False, _length(atlas, path), time.perf_counter() - t0, atlas
+        True,
+        path,
+        len(atlas.charts),
+        0,
+        False,
+        _length(atlas, path),
+        time.perf_counter() - t0,
+        atlas,
+        "atlasrrt",
+        nodes,
     )

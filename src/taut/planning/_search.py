@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result, jsonable
 from taut.errors import TautError
 from taut.planning._continuation import MAX_CHARTS, Atlas, ImplicitManifold
 
@@ -37,15 +38,39 @@ __all__ = ["PathResult", "astar", "continuous", "refine_path"]
 
 
 @dataclass(frozen=True)
-class PathResult:
+class PathResult(Result):
     found: bool
     path: np.ndarray  #: ``(N, n)`` points on the manifold, start to goal (empty if not found)
     charts: int  #: charts in the atlas when the search stopped
-    expanded: int  #: charts closed by the search
+    expanded: int  #: charts closed by A* (0 for AtlasRRT)
     exhausted: bool  #: every chart closed (``found=False`` is then a proof at this resolution)
-    length: float  #: length of ``path`` in the atlas metric
+    length: float  #: length of ``path`` in the atlas metric (NaN if not found)
     elapsed_s: float
     atlas: Atlas
+    method: str  #: the planner: ``"astar"`` or ``"atlasrrt"``
+    nodes: int  #: tree nodes grown by AtlasRRT (0 for A*)
+
+    @property
+    def complete(self) -> bool:
+        """The question is settled: a path was found, or none exists at this resolution."""
+        return self.found or self.exhausted
+
+    def as_dict(self) -> dict:
+        """The result in plain JSON types (``length`` ``None`` without a path), without the
+        atlas: ``method``, ``found``, ``exhausted``, ``complete``, ``path``, ``charts``,
+        ``expanded``, ``nodes``, ``length``, ``elapsed_s``."""
+        return {
+            "method": self.method,
+            "found": self.found,
+            "exhausted": self.exhausted,
+            "complete": self.complete,
+            "path": jsonable(self.path),
+            "charts": self.charts,
+            "expanded": self.expanded,
+            "nodes": self.nodes,
+            "length": jsonable(self.length),
+            "elapsed_s": self.elapsed_s,
+        }
 
 
 def _segment(atlas: Atlas, i: int, u0: np.ndarray, u1: np.ndarray, spacing: float) -> list[np.ndarray]:
@@ -151,6 +176,8 @@ def astar(
             float("nan"),
             time.perf_counter() - t0,
             atlas,
+            "astar",
+            0,
         )
     seq = [found_at]
     while parent[seq[-1]] >= 0:
@@ -158,4 +185,6 @@ def astar(
     seq.reverse()
     path = refine_path(atlas, seq, goal, spacing=spacing or radius / 4)
     length = float(np.sum(np.linalg.norm(np.diff(path[:, atlas.metric], axis=0), axis=1)))
-    return PathResult(True, path, len(atlas.charts), expanded, False, length, time.perf_counter() - t0, atlas)
+    return PathResult(
+        True, path, len(atlas.charts), expanded, False, length, time.perf_counter() - t0, atlas, "astar", 0
+    )

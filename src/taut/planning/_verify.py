@@ -22,6 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result, jsonable
 from taut.kinematics import inverse_kinematics, platform_frame
 from taut.model import Robot
 from taut.statics import EllipsoidWrenchSet, wrench_feasible
@@ -30,14 +31,24 @@ __all__ = ["PathCheck", "interpolate_poses", "verify_path"]
 
 
 @dataclass(frozen=True)
-class PathCheck:
+class PathCheck(Result):
     poses: np.ndarray  #: ``(N, 6)`` interpolated poses
     feasible: np.ndarray  #: ``(N,)`` wrench-feasible and lengths inside their bounds
     lengths: np.ndarray  #: ``(N, 6)``
 
     @property
     def all_feasible(self) -> bool:
+        """Every interpolated pose is feasible."""
         return bool(self.feasible.all())
+
+    def as_dict(self) -> dict:
+        """``poses``, ``feasible``, ``lengths`` and ``all_feasible`` in plain JSON types."""
+        return {
+            "poses": jsonable(self.poses),
+            "feasible": jsonable(self.feasible),
+            "lengths": jsonable(self.lengths),
+            "all_feasible": self.all_feasible,
+        }
 
 
 def interpolate_poses(poses: npt.ArrayLike, subdivide: int) -> np.ndarray:

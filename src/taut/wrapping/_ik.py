@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result, jsonable
 from taut.errors import PoseError, TautError
 from taut.geometry import circles_overlap, point_in_polygon
 from taut.kinematics import anchor_points, as_poses, refuse_swivels
@@ -86,8 +87,8 @@ def _check_inside(robot: Robot, circles: np.ndarray, polys: list, anchors: np.nd
             )
 
 
-@dataclass
-class WrappedIK:
+@dataclass(frozen=True)
+class WrappedIK(Result):
     """VSCR inverse kinematics over ``T`` poses of a robot with ``n`` cables."""
 
     poses: np.ndarray  #: ``(T, pose_size)``
@@ -97,8 +98,8 @@ class WrappedIK:
     directions: np.ndarray  #: ``(T, n, 2)`` unit vectors ``u_i`` (platform → last contact)
     exit_points: np.ndarray  #: ``(T, n, 2)`` where each active segment leaves its object
     structure_matrix: np.ndarray  #: ``(T, m, n)``
-    events: list[np.ndarray]  #: per cable, ``(E, 4)`` rows ``(sample, fraction, kind, node)``
-    trees: list[CableStateTree] = field(repr=False)  #: the cable-state tree of each cable
+    events: tuple[np.ndarray, ...]  #: per cable, ``(E, 4)`` rows ``(sample, fraction, kind, node)``
+    trees: tuple[CableStateTree, ...] = field(repr=False)  #: the cable-state tree of each cable
 
     def contacts(self, sample: int, cable: int) -> tuple[tuple[int, int], ...]:
         """Objects wrapped by ``cable`` at ``sample`` (0-based), with directions."""
@@ -129,6 +130,23 @@ class WrappedIK:
                     }
                 )
         return sorted(out, key=lambda e: (e["time"], e["cable"]))
+
+    def as_dict(self) -> dict:
+        """The inverse kinematics in plain JSON types, without the trees: ``poses``,
+        ``anchors``, ``lengths``, ``directions``, ``exit_points``, ``structure_matrix``,
+        ``states`` (per sample and cable, the wrapped ``[object, direction]`` pairs, 0-based
+        objects) and ``transitions`` (:meth:`transitions`, sample numbers as times)."""
+        n = len(self.trees)
+        return {
+            "poses": jsonable(self.poses),
+            "anchors": jsonable(self.anchors),
+            "lengths": jsonable(self.lengths),
+            "directions": jsonable(self.directions),
+            "exit_points": jsonable(self.exit_points),
+            "structure_matrix": jsonable(self.structure_matrix),
+            "states": [[jsonable(self.contacts(s, i)) for i in range(n)] for s in range(len(self.poses))],
+            "transitions": self.transitions(),
+        }
 
 
 def _reference_angle(tree: CableStateTree, node: int, b: npt.ArrayLike) -> float:
@@ -187,7 +205,7 @@ def wrapped_inverse_kinematics(
         rb = b - p
         mom = rb[..., 0] * u[..., 1] - rb[..., 1] * u[..., 0]
         W = np.concatenate([W, mom[:, None, :]], axis=1)
-    return WrappedIK(arr, b, lengths, nodes, u, exits, W, events, trees)
+    return WrappedIK(arr, b, lengths, nodes, u, exits, W, tuple(events), tuple(trees))
 
 
 def _start_node(tree: CableStateTree, b: np.ndarray, contacts: Sequence[tuple[int, int]] | None, i: int) -> int:

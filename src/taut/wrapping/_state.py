@@ -31,6 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.errors import TautError
 from taut.geometry import directed_tangent
 
@@ -58,7 +59,7 @@ def wrap_angle(
 
 
 @dataclass(frozen=True)
-class CableState:
+class CableState(Result):
     """The state of one cable: the objects it wraps, in order from the winch, with their
     wrap directions (``contacts``), and the winch pulley's reference angle."""
 
@@ -71,7 +72,7 @@ class CableState:
 
 
 @dataclass(frozen=True)
-class CablePath:
+class CablePath(Result):
     """A cable's path: ``segments (m, 2, 2)`` straight pieces from the winch to ``b``
     (the last one is the active segment) and ``arcs`` — per object touched (winch pulley
     first), ``(centre x, centre y, radius, θ_in, wrap angle φ, direction)``."""

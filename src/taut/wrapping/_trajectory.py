@@ -29,6 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.errors import TautError
 from taut.model import Robot
 from taut.statics import external_wrench, solve_tensions
@@ -168,8 +169,8 @@ def length_controlled(ik: WrappedIK, m: int) -> np.ndarray:
     return mask
 
 
-@dataclass
-class TrajectoryResult:
+@dataclass(frozen=True)
+class TrajectoryResult(Result):
     """A VSCR trajectory: samples, IK, tensions and transitions."""
 
     times: np.ndarray  #: ``(T,)`` [s]
@@ -177,7 +178,8 @@ class TrajectoryResult:
     tensions: np.ndarray  #: ``(T, n)`` minimum-sum tensions (zeros where infeasible)
     feasible: np.ndarray  #: ``(T,)`` bool: a tension distribution exists
     controlled: np.ndarray  #: ``(T, n)`` bool: length-controlled cables
-    transitions: list  #: ``{"time", "sample", "cable", "kind", "object"}`` (0-based cable and object indices)
+    #: ``{"time", "sample", "cable", "kind", "object"}`` (0-based cable and object indices)
+    transitions: tuple[dict, ...]
 
     @property
     def lengths(self) -> np.ndarray:
@@ -192,6 +194,11 @@ class TrajectoryResult:
             "tension_feasible": bool(self.feasible.all()),
             "infeasible_samples": np.flatnonzero(~self.feasible).tolist(),
         }
+
+    def as_dict(self) -> dict:
+        """The trajectory as ``taut trajectory --json`` prints it, with 0-based cables and
+        objects: :meth:`summary`, ``times`` and ``length_controlled``."""
+        return self.summary() | {"times": self.times.tolist(), "length_controlled": self.controlled.tolist()}
 
 
 def run_trajectory(
@@ -223,4 +230,6 @@ def run_trajectory(
     tmin, tmax = robot.tension_bounds if tension_bounds is None else tension_bounds
     res = solve_tensions(ik.structure_matrix, w, tmin, tmax, method="lp")
     controlled = length_controlled(ik, robot.wrench_dim)
-    return TrajectoryResult(times, ik, res.tensions, np.asarray(res.feasible, bool), controlled, ik.transitions(times))
+    return TrajectoryResult(
+        times, ik, res.tensions, np.asarray(res.feasible, bool), controlled, tuple(ik.transitions(times))
+    )

@@ -52,6 +52,7 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut._results import Result
 from taut.errors import TautError
 from taut.wrapping._tree import CableStateTree
 
@@ -160,7 +161,7 @@ def _track(
 
 
 @dataclass(frozen=True)
-class Tracking:
+class Tracking(Result):
     """A cable followed along ``T`` anchor positions."""
 
     nodes: np.ndarray  #: ``(T,)`` tracked CST node at each sample
