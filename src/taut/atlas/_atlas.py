@@ -48,6 +48,7 @@ import numpy.typing as npt
 import shapely
 from shapely.geometry import LineString, MultiPolygon, Polygon
 
+from taut._checks import as_array, as_count, as_number
 from taut._results import Result, jsonable
 from taut.atlas._chart import StructureChart, chart_lengths, component_containing, structure_reachable_area
 from taut.atlas._platform import fixed_collision_region, platform_outline, rotation, structure_collision_region
@@ -241,15 +242,15 @@ def build_atlas(
        of Waterloo, 2022, §5.1.3, Alg. 5.1; §5.2.2. (docs/references.bib: rushton2022)
     """
     t0 = time.perf_counter()
-    theta = float(theta)
-    if not np.isfinite(theta):
-        raise PoseError(f"{robot.name}: the orientation must be finite, got {theta}")
+    theta = as_number(theta, f"{robot.name}: the orientation theta", error=PoseError)
+    max_charts = as_count(max_charts, "max_charts")
+    arc_step = as_number(arc_step, "arc_step", positive=True)
     if robot.is_point_mass and theta != 0.0:
         raise PoseError(f"{robot.name}: a point-mass platform has no orientation (theta must be 0)")
     refuse_swivels(robot, "the structure atlas")
     if not robot.is_point_mass and (robot.dimension != 2 or robot.n_joints):
         raise TautError(f"{robot.name}: the structure atlas is implemented for planar platforms without joints")
-    p0 = np.asarray(start, float).reshape(-1)
+    p0 = as_array(start, f"{robot.name}: the start point", finite=False, error=PoseError).reshape(-1)
     if p0.shape != (2,) or not np.isfinite(p0).all():
         raise PoseError(f"{robot.name}: the start point must be 2 finite coordinates, got {list(np.ravel(start))}")
     offsets = (

@@ -34,8 +34,10 @@ import shapely
 import shapely.affinity
 from shapely.geometry import MultiPolygon, Polygon
 
+from taut._checks import as_array
 from taut._results import Result, jsonable
 from taut.atlas._reachable import close_cracks
+from taut.errors import PoseError, TautError
 from taut.wrapping import CableStateTree
 
 if TYPE_CHECKING:
@@ -90,9 +92,13 @@ def chart_lengths(
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, Eqs. 4.9 and 5.3–5.5. (docs/references.bib: rushton2022)
     """
-    P0 = np.atleast_2d(np.asarray(points, float))
     n = len(trees)
-    off = np.zeros((n, 2)) if offsets is None else np.asarray(offsets, float).reshape(n, 2)
+    if len(nodes) != n:
+        raise TautError(f"nodes: expected one CST node per cable ({n}), got {len(nodes)}")
+    P0 = as_array(
+        np.atleast_2d(as_array(points, "points", error=PoseError)), "points", shape=(None, 2), error=PoseError
+    )
+    off = np.zeros((n, 2)) if offsets is None else as_array(offsets, "offsets", shape=(n, 2))
     L_out = np.empty((len(P0), n))
     wrapped = np.empty((len(P0), n))
     A = np.empty((len(P0), n, 2))

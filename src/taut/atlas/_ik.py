@@ -29,10 +29,11 @@ import numpy as np
 import numpy.typing as npt
 import shapely
 
+from taut._checks import as_array, as_index
 from taut._results import Result, jsonable
 from taut.atlas._atlas import StructureAtlas
 from taut.atlas._chart import chart_lengths
-from taut.errors import PoseError
+from taut.errors import PoseError, TautError
 from taut.geometry import segments_intersect
 
 
@@ -60,9 +61,24 @@ class AtlasIK(Result):
         }
 
 
+def _points(points: npt.ArrayLike) -> np.ndarray:
+    """Reference points ``(N, 2)`` (one point ``(2,)`` is one row)."""
+    return as_array(
+        np.atleast_2d(as_array(points, "points", error=PoseError)), "points", shape=(None, 2), error=PoseError
+    )
+
+
+def _charts(atlas: StructureAtlas, charts: Iterable[int]) -> list[int]:
+    try:
+        return [as_index(c, "charts", len(atlas.charts)) for c in charts]
+    except TypeError:
+        raise TautError(f"charts: expected chart indices 0..{len(atlas.charts) - 1}, got {charts!r}") from None
+
+
 def locate(atlas: StructureAtlas, points: npt.ArrayLike, *, charts: Iterable[int] | None = None) -> np.ndarray:
     """``(N,)`` index of the first chart (of ``charts``, default all) containing each point."""
-    P = np.atleast_2d(np.asarray(points, float))
+    P = _points(points)
+    charts = None if charts is None else _charts(atlas, charts)
     out = np.full(len(P), -1, dtype=np.int64)
     todo = np.arange(len(P))
     for c in range(len(atlas.charts)) if charts is None else charts:
@@ -101,7 +117,7 @@ def direct_ik(atlas: StructureAtlas, points: npt.ArrayLike, *, charts: Iterable[
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §5.3.2, Alg. 5.3. (docs/references.bib: rushton2022)
     """
-    P = np.atleast_2d(np.asarray(points, float))
+    P = _points(points)
     return _evaluate(atlas, P, locate(atlas, P, charts=charts))
 
 
@@ -124,7 +140,9 @@ def iterative_step(atlas: StructureAtlas, chart: int, p1: npt.ArrayLike, p2: npt
     new chart (several transitions at one point — e.g. two cables wrapping at a corner of
     the domain — are taken one after the other).  Raises :class:`PoseError` if the move
     leaves a chart through an edge that is not traversable."""
-    p1, p2 = np.asarray(p1, float), np.asarray(p2, float)
+    chart = as_index(chart, "chart", len(atlas.charts))
+    p1 = as_array(p1, "p1", shape=(2,), error=PoseError)
+    p2 = as_array(p2, "p2", shape=(2,), error=PoseError)
     d = p2 - p1
     t0, prev = 0.0, -1
     for _ in range(4 * len(atlas.trees) + 4):
@@ -151,9 +169,9 @@ def iterative_ik(atlas: StructureAtlas, points: npt.ArrayLike, *, chart: int = 0
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §5.3.2, Alg. 5.4. (docs/references.bib: rushton2022)
     """
-    P = np.atleast_2d(np.asarray(points, float))
+    P = _points(points)
     ch = np.empty(len(P), dtype=np.int64)
-    ch[0] = chart
+    ch[0] = as_index(chart, "chart", len(atlas.charts))
     for j in range(1, len(P)):
         ch[j] = iterative_step(atlas, int(ch[j - 1]), P[j - 1], P[j])
     return _evaluate(atlas, P, ch)

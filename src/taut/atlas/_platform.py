@@ -43,8 +43,9 @@ import shapely
 import shapely.affinity
 from shapely.geometry import MultiPoint, Polygon
 
+from taut._checks import as_number
 from taut.atlas._reachable import ARC_STEP
-from taut.errors import TautError
+from taut.errors import PoseError, TautError
 from taut.wrapping import CableStateTree
 
 if TYPE_CHECKING:
@@ -66,6 +67,7 @@ def platform_outline(robot: Robot, theta: float) -> Polygon | None:
     shape = robot.platform.shape
     if robot.is_point_mass or shape is None or not shape.polygon:
         return None
+    theta = as_number(theta, "theta", error=PoseError)
     V = np.asarray(shape.polygon, float) @ rotation(theta).T
     M = Polygon(V)
     if not M.is_valid or M.area <= 0:
@@ -168,6 +170,8 @@ def platform_reachable_area(
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §5.2.1, Eq. 5.14. (docs/references.bib: rushton2022)
     """
+    arc_step = as_number(arc_step, "arc_step", positive=True)
+    reach = as_number(reach, "reach", positive=True)
     M = platform_outline(robot, theta)
     if M is None:
         return None

@@ -44,6 +44,8 @@ import numpy.typing as npt
 import shapely
 from shapely.geometry import MultiPolygon, Polygon
 
+from taut._checks import as_array, as_index, as_number
+from taut.errors import TautError
 from taut.geometry import directed_tangent
 from taut.wrapping import CableStateTree
 
@@ -209,13 +211,16 @@ def cable_reachable_area(
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §5.1.2. (docs/references.bib: rushton2022)
     """
+    node = as_index(node, "node", tree.size)
+    arc_step = as_number(arc_step, "arc_step", positive=True)
     space = None
-    if installation_space is not None:
-        space = (
-            installation_space
-            if isinstance(installation_space, Polygon)
-            else Polygon(np.asarray(installation_space, float))
-        )
+    if isinstance(installation_space, Polygon):
+        space = installation_space
+    elif installation_space is not None:
+        ring = as_array(installation_space, "installation_space", shape=(None, 2))
+        if len(ring) < 3:
+            raise TautError(f"installation_space: a polygon needs at least 3 vertices, got {len(ring)}")
+        space = Polygon(ring)
     bbox = _bbox(tree, space)
     scene = _Scene(tree, node, bbox)
     c, r, d, a0, span = _sweep_frame(tree, node)

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 
+from taut._checks import as_number
 from taut._results import Result, jsonable
 from taut.atlas._atlas import PROBE, StructureAtlas
 from taut.atlas._chart import chart_lengths
@@ -115,10 +116,7 @@ def atlas_workspace(
             f"the atlas workspace needs a condition on the structure matrix (wrench-closure, wrench-feasible, static), got {cond.name!r}"
         )
     x0, y0, x1, y1 = atlas.reachable_area().bounds
-    if step is None:
-        step = max(x1 - x0, y1 - y0) / DEFAULT_RESOLUTION
-    if not (step > 0 and math.isfinite(step)):
-        raise TautError(f"the grid step must be > 0, got {step}")
+    step = max(x1 - x0, y1 - y0) / DEFAULT_RESOLUTION if step is None else as_number(step, "step", positive=True)
     gx = np.arange(x0 + 0.5 * step, x1, step)
     gy = np.arange(y0 + 0.5 * step, y1, step)
     G = np.stack(np.meshgrid(gx, gy, indexing="xy"), axis=-1).reshape(-1, 2)

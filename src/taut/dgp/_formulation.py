@@ -67,7 +67,8 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
-from taut.errors import SingularConfigurationError
+from taut._checks import as_array, as_index
+from taut.errors import CableSetError, SingularConfigurationError
 from taut.geometry import angles_from_matrix
 from taut.interval import Expr, LinearFilter, System, compile_system, compile_tape, const, evaluate_point, variables
 from taut.model import Robot
@@ -261,7 +262,7 @@ def secondary_coordinates(refs: np.ndarray, body: np.ndarray) -> list[Fraction]:
     return [det(cols[:j] + [rhs] + cols[j + 1 :]) / d for j in range(3)]
 
 
-def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], normal: bool = True) -> Subproblem:
+def build_subproblem(robot: Robot, lengths: npt.ArrayLike, taut: tuple[int, ...], *, normal: bool = True) -> Subproblem:
     """The square system of §2.3 for the taut cables ``taut`` (0-based), ``1 ≤ m ≤ 6``;
     ``normal``: the plane normal of the reference points is an unknown when some cable
     anchor lies off their plane (tracking leaves it out: Newton steps on a smaller system).
@@ -270,7 +271,15 @@ def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], n
     distances between reference points, exit-point differences, the load) is computed in
     exact rational arithmetic and entered as the float interval enclosing it, so the
     system holds the exact one of the data (docs/architecture.md §5: outward rounding throughout)."""
-    n, m = robot.n_cables, len(taut)
+    n = robot.n_cables
+    lengths = as_array(lengths, "cable lengths", shape=(n,))
+    try:
+        taut = tuple(as_index(i, "taut cables", n, error=CableSetError) for i in taut)
+    except TypeError:
+        raise CableSetError(f"taut cables: expected cable indices 0..{n - 1}, got {taut!r}") from None
+    if not 1 <= len(taut) <= 6 or len(set(taut)) != len(taut):
+        raise CableSetError(f"taut cables: expected 1 to 6 distinct cables, got {list(taut)}")
+    m = len(taut)
     a, r = robot.exits, robot.anchors
     _, _, gp = load(robot)
     f, mext = _exact_load(robot)

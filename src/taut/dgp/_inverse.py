@@ -65,11 +65,12 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_count, as_number
 from taut._results import Result, jsonable
 from taut.dgp._formulation import load
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import MAX_BOXES, UndecidedBox, cause_of, scaled
-from taut.errors import CableSetError, PoseError, TautError, UnsupportedRobotError
+from taut.errors import CableSetError, PoseError, UnsupportedRobotError
 from taut.geometry import rotation_matrix
 from taut.interval import (
     ONE,
@@ -452,10 +453,8 @@ def solve_igp(
     _check_robot(robot)
     idx = _check_taut(robot, taut)
     values = _check_fixed(robot, fixed, len(idx))
-    if not (tol > 0 and np.isfinite(tol)):
-        raise TautError(f"tol must be positive and finite, got {tol!r}")
-    if int(max_boxes) < 1:
-        raise TautError(f"max_boxes must be at least 1, got {max_boxes!r}")
+    tol = as_number(tol, "tol", positive=True)
+    max_boxes = as_count(max_boxes, "max_boxes")
     pos_lo, pos_hi = _position_box(robot, idx, box)
     names = robot.pose_names[:6]
     t0 = time.perf_counter()
@@ -474,7 +473,7 @@ def solve_igp(
             filters=(pb.statics,),
             certify_width=0.5,
             max_boxes=max_boxes,
-            progress=None if progress is None else _within_budget(progress, int(max_boxes)),
+            progress=None if progress is None else _within_budget(progress, max_boxes),
         )
         solutions = [_solution(robot, idx, values, pb, c) for c in res.solutions]
         solutions.sort(key=lambda s: (not s.stable, *s.position, *s.orientation))

@@ -32,6 +32,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_count, as_number
 from taut._results import Result, freeze, jsonable
 from taut.dgp._formulation import Subproblem, build_subproblem, load
 from taut.dgp._single_cable import single_cable_equilibria
@@ -145,7 +146,7 @@ def solution_key(solution: DGPSolution) -> tuple:
 
 
 def check_lengths(robot: Robot, lengths: npt.ArrayLike) -> np.ndarray:
-    arr = np.asarray(lengths, dtype=float).ravel()
+    arr = as_array(lengths, "cable lengths", finite=False).ravel()
     if arr.size != robot.n_cables:
         raise TautError(f"{robot.name} has {robot.n_cables} cables, got {arr.size} lengths")
     if not np.all(np.isfinite(arr)):
@@ -440,18 +441,12 @@ def solve_dgp(
         lengths = robot.reference.lengths
     checked = check_lengths(robot, lengths)
     n = robot.n_cables
-    top = min(n, 6) if max_taut is None else min(n, 6, int(max_taut))
-    if top < 1:
-        raise TautError(f"--max-taut must be at least 1, got {max_taut}")
-    if split is None:
-        split = SPLIT
-    if not 0 <= split <= 10:
+    top = min(n, 6) if max_taut is None else min(n, 6, as_count(max_taut, "max_taut"))
+    split = SPLIT if split is None else as_count(split, "split", minimum=0)
+    if split > 10:
         raise TautError(f"split must be between 0 and 10 (up to 1024 pieces), got {split}")
-    if not (tol > 0 and np.isfinite(tol)):
-        raise TautError(f"tol must be positive and finite, got {tol!r}")
-    if int(max_boxes) < 1:
-        raise TautError(f"max_boxes must be at least 1, got {max_boxes}")
-    max_boxes = int(max_boxes)
+    tol = as_number(tol, "tol", positive=True)
+    max_boxes = as_count(max_boxes, "max_boxes")
     runner = as_executor(executor)
     t0 = time.perf_counter()
     subsets = [taut for m in range(top, 0, -1) for taut in combinations(range(n), m)]

@@ -48,6 +48,7 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut._checks import as_array
 from taut.dgp._formulation import Subproblem, build_subproblem, frame_from_points, load
 from taut.dgp._inverse import IGPSolution
 from taut.dgp._solve import DGPSolution, check_lengths
@@ -319,6 +320,8 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
     refuse_swivels(robot, "tracking")
     if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
         raise TautError("tracking handles spatial rigid platforms without joints")
+    if not isinstance(sol, (DGPSolution, IGPSolution)):
+        raise TautError(f"tracking starts from a DGPSolution or an IGPSolution, got a {type(sol).__name__}")
     tau = np.asarray(sol.tensions, float)
     if tau.shape != (robot.n_cables,):
         raise TautError(f"{robot.name} has {robot.n_cables} cables, the solution has {tau.size} tensions")
@@ -356,10 +359,7 @@ def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths
 def track_path(robot: Robot, solution: DGPSolution | IGPSolution, lengths: npt.ArrayLike) -> list[DGPSolution]:
     """:func:`track_equilibrium` from ``solution`` along a sequence of cable ``lengths``
     (one solution per row)."""
-    try:
-        rows = np.asarray(lengths, dtype=float)
-    except ValueError as e:
-        raise TautError(f"the lengths sequence is not a table of numbers: {e}") from None
+    rows = as_array(lengths, "the lengths sequence", finite=False)
     if rows.size == 0:
         return []
     if rows.ndim != 2 or rows.shape[1] != robot.n_cables:

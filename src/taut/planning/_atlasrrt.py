@@ -49,6 +49,7 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_count, as_number, as_rng
 from taut.errors import TautError
 from taut.planning._continuation import MAX_CHARTS, Atlas, ImplicitManifold
 from taut.planning._search import PathResult, continuous
@@ -208,7 +209,12 @@ def shorten_path(
     """Random shortcuts on the manifold: for two random points of ``path`` (continuous, with
     the chart of each point), walk from one toward the other on the atlas; a walk that
     arrives and is shorter than the stretch it skips replaces it."""
-    rng = np.random.default_rng(seed)
+    rng = as_rng(seed)
+    step = as_number(step, "step", positive=True)
+    attempts = as_count(attempts, "attempts", minimum=0)
+    path = as_array(path, "path", shape=(None, atlas.centres.shape[1]))
+    if len(charts) != len(path) or any(not 0 <= c < len(atlas.charts) for c in charts):
+        raise TautError(f"charts: expected one chart of the atlas (0..{len(atlas.charts) - 1}) per point of the path")
     pts = [np.asarray(p, float) for p in path]
     chs = list(charts)
     walker = _Walker(atlas, step, max_charts=len(atlas.charts) + 10 * attempts)
@@ -272,7 +278,7 @@ def atlas_rrt(
         raise TautError("AtlasRRT needs max_nodes >= 2 and max_charts >= 2")
     if np.linalg.norm(manifold.function(goal)) > 1e-6 * (1 + np.linalg.norm(goal)):
         raise TautError("the goal point is not on the manifold (|F(goal)| too large)")
-    rng = np.random.default_rng(seed)
+    rng = as_rng(seed)
     atlas = Atlas(manifold, start, radius=radius, epsilon=epsilon, metric=metric, vertices=False)
     goal_chart = atlas.add_chart(goal)
     trees = [Tree(atlas.local(0, start), 0), Tree(atlas.local(goal_chart, goal), goal_chart)]

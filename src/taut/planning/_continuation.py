@@ -55,6 +55,7 @@ from dataclasses import KW_ONLY, dataclass, field
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_count, as_number
 from taut.errors import TautError
 
 __all__ = [
@@ -92,6 +93,15 @@ class Symmetry:
     flip: tuple[int, int] | None = None
 
     def __post_init__(self) -> None:
+        try:
+            periods = tuple((int(i), float(p), float(low)) for i, p, low in self.periods)
+            flip = None if self.flip is None else (int(self.flip[0]), int(self.flip[1]))
+        except (TypeError, ValueError):
+            raise TautError(
+                f"symmetry: expected periods ((index, period, low), ...) and a flip (a, b), got {self.periods}, {self.flip}"
+            ) from None
+        object.__setattr__(self, "periods", periods)
+        object.__setattr__(self, "flip", flip)
         idx = [i for i, _, _ in self.periods]
         if any(p <= 0 for _, p, _ in self.periods) or len(set(idx)) != len(idx):
             raise TautError(f"symmetry periods must be positive, one per coordinate: {self.periods}")
@@ -179,6 +189,10 @@ class ImplicitManifold:
 
 def tangent_basis(jac: np.ndarray, k: int) -> np.ndarray:
     """Orthonormal basis ``(n, k)`` of the null space of ``jac`` (complete QR of ``jacᵀ``)."""
+    jac = as_array(jac, "jacobian", shape=(None, None))
+    k = as_count(k, "k")
+    if k > jac.shape[1]:
+        raise TautError(f"k: a null space of dimension {k} in R^{jac.shape[1]} does not exist")
     q, _ = np.linalg.qr(jac.T, mode="complete")
     return q[:, q.shape[1] - k :]
 
@@ -200,6 +214,10 @@ def project(
     :func:`project_graph` (whose iterates must stay where the graph is defined: near the
     boundary of that domain it may fail where Newton succeeds).
     """
+    guess = as_array(guess, "guess", shape=(None,))
+    basis = as_array(basis, "basis", shape=(guess.size, None))
+    tol = as_number(tol, "tol", positive=True)
+    max_steps = as_count(max_steps, "max_steps")
     if manifold.graph is not None and manifold.graph_index is not None:
         x = project_graph(
             manifold.graph,
@@ -306,6 +324,7 @@ class Polytope:
     """
 
     def __init__(self, k: int, half_side: float, *, vertices: bool = True):
+        k, half_side = as_count(k, "k"), as_number(half_side, "half_side", positive=True)
         corners = np.array(np.meshgrid(*[[-1.0, 1.0]] * k, indexing="ij")).reshape(k, -1).T
         self.k = k
         self.has_vertices = vertices
@@ -383,6 +402,14 @@ class ManifoldChart:
         return self.frontier or self.polytope.exterior(self.radius).size == 0
 
 
+def _metric(metric: npt.ArrayLike, n: int) -> np.ndarray:
+    """The ``metric`` coordinates as indices into points of ``R^n``."""
+    idx = np.asarray(metric)
+    if idx.ndim != 1 or idx.size == 0 or idx.dtype.kind not in "iu" or idx.min() < 0 or idx.max() >= n:
+        raise TautError(f"metric: expected indices of coordinates 0..{n - 1}, got {metric!r}")
+    return idx
+
+
 class Atlas:
     """A growing atlas of ``manifold`` started at ``x0`` (Henderson's method, see module doc).
 
@@ -415,18 +442,27 @@ class Atlas:
         metric: np.ndarray | None = None,
         vertices: bool = True,
     ) -> None:
-        x0 = np.asarray(x0, dtype=float)
+        x0 = as_array(x0, "the start point", shape=(None,))
+        radius, epsilon = as_number(radius, "radius"), as_number(epsilon, "epsilon")
         if radius <= 0 or not 0 < epsilon < 1:
             raise TautError(f"atlas needs radius > 0 and 0 < epsilon < 1, got {radius}, {epsilon}")
+        min_step = as_number(min_step, "min_step", positive=True)
+        for bound in (manifold.lower, manifold.upper):
+            if bound is not None and np.shape(bound) != x0.shape:
+                raise TautError(f"the start point has {x0.size} coordinates, the manifold's box {np.shape(bound)}")
         self.manifold = manifold
         self.radius = float(radius)
         self.epsilon = float(epsilon)
         self.min_step = float(min_step)
         self.vertices = vertices
-        self.metric = np.arange(x0.size) if metric is None else np.asarray(metric)
+        self.metric = np.arange(x0.size) if metric is None else _metric(metric, x0.size)
         self.charts: list[ManifoldChart] = []
         self._centres = np.empty((0, x0.size))
-        if np.linalg.norm(manifold.function(x0)) > 1e-6 * (1 + np.linalg.norm(x0)):
+        try:
+            residual = np.linalg.norm(manifold.function(x0))
+        except (TypeError, ValueError, IndexError) as e:
+            raise TautError(f"the manifold's function fails at the start point {x0.tolist()}: {e}") from None
+        if residual > 1e-6 * (1 + np.linalg.norm(x0)):
             raise TautError("the start point is not on the manifold (|F(x0)| too large)")
         self.add_chart(x0)
 

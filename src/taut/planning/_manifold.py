@@ -51,6 +51,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_number
 from taut.errors import InfeasiblePoseError, PoseError, TautError
 from taut.kinematics import refuse_swivels
 from taut.planning._continuation import ImplicitManifold, Symmetry
@@ -120,6 +121,18 @@ def _rotation(tau: np.ndarray) -> np.ndarray:
     return _rz(phi)[0] @ _ry(theta)[0] @ _rz(sigma - phi)[0]
 
 
+def _block(value: object, what: str, shape: tuple[int, ...], *, finite: bool = True) -> np.ndarray:
+    """``value`` as a float array of ``shape`` (given flat, or a scalar for every entry when
+    ``shape`` is one axis)."""
+    arr = as_array(value, what, finite=finite)
+    size = int(np.prod(shape))
+    if arr.size == 1 and len(shape) == 1:
+        return np.full(shape, float(arr.reshape(())))
+    if arr.size != size:
+        raise TautError(f"{what}: expected {size} numbers {shape}, got shape {arr.shape}")
+    return arr.reshape(shape).copy()
+
+
 def _skew(v: np.ndarray) -> np.ndarray:
     return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
 
@@ -149,7 +162,7 @@ class WrenchFeasibleManifold:
     rho_max: np.ndarray
     _: KW_ONLY
     wrench_point: np.ndarray = field(default_factory=lambda: np.zeros(3))
-    fixed: dict[str, float] = field(default_factory=dict)
+    fixed: Mapping[str, float] = field(default_factory=dict)
     slack_max: float = 1e2  #: upper bound on s_i, t_i (and g_i) that keeps atlases finite
     #: weights of the variable blocks (p, τ, R, u, ρ, g, f_0, v, s, t) in the coordinates of
     #: :meth:`implicit`: a linear change of variables that keeps chart steps in pose space
@@ -160,19 +173,22 @@ class WrenchFeasibleManifold:
     phi_window: tuple[float, float] = (-np.pi, np.pi)
 
     def __post_init__(self) -> None:
-        self.a = np.asarray(self.a, float).reshape(6, 3)
-        self.b = np.asarray(self.b, float).reshape(6, 3)
-        self.c = self.b - np.asarray(self.wrench_point, float)
-        self.w0 = np.asarray(self.w0, float).reshape(6)
-        self.E = np.asarray(self.E, float).reshape(6, 6)
+        self.a = _block(self.a, "exit points a", (6, 3))
+        self.b = _block(self.b, "platform points b", (6, 3))
+        self.c = self.b - _block(self.wrench_point, "wrench_point", (3,))
+        self.w0 = _block(self.w0, "nominal wrench w0", (6,))
+        self.E = _block(self.E, "wrench ellipsoid matrix E", (6, 6))
         if not (np.allclose(self.E, self.E.T) and np.all(np.linalg.eigvalsh(self.E) > 0)):
             raise TautError("the wrench ellipsoid matrix E must be symmetric positive definite")
         self._E_inv = np.linalg.inv(self.E)
         for name in ("f_min", "f_max", "rho_min", "rho_max"):
-            setattr(self, name, np.broadcast_to(np.asarray(getattr(self, name), float), (6,)).copy())
+            setattr(self, name, _block(getattr(self, name), name, (6,), finite=False))
+        if not isinstance(self.fixed, Mapping):
+            raise PoseError(f"fixed: expected a mapping of pose coordinates to values, got {self.fixed!r}")
         bad = set(self.fixed) - set(POSE_NAMES)
         if bad:
             raise PoseError(f"cannot fix {sorted(bad)}: pose coordinates are {', '.join(POSE_NAMES)}")
+        self.fixed = {n: as_number(v, f"fixed {n}", error=PoseError) for n, v in self.fixed.items()}
         if not (
             np.all(self.rho_min > 0)
             and np.all(self.rho_max > self.rho_min)
@@ -223,7 +239,7 @@ class WrenchFeasibleManifold:
             rho_min=np.maximum([lo for lo, _ in lengths], 1e-6),
             rho_max=np.array([hi for _, hi in lengths], float),
             wrench_point=np.zeros(3) if plat.wrench_point is None else np.asarray(plat.wrench_point, float),
-            fixed=dict(fixed or {}),
+            fixed=fixed or {},
             **kw,
         )
 
@@ -430,7 +446,7 @@ class WrenchFeasibleManifold:
         """The free vector of the point of the slice over ``pose`` (Eqs. 1–8 solved in closed
         form, angles made :meth:`canonical`); :class:`InfeasiblePoseError` if the pose is not
         wrench-feasible."""
-        q = np.asarray(pose, float).reshape(-1)
+        q = as_array(pose, "pose", finite=False, error=PoseError).reshape(-1)
         if q.size != 6 or not np.all(np.isfinite(q)):
             raise PoseError(f"a pose is [x, y, z, phi, theta, sigma], got {pose!r}")
         if not {"phi", "theta"} & set(self.fixed):

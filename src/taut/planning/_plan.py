@@ -19,6 +19,7 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_count, as_number, as_rng
 from taut.errors import TautError
 from taut.planning._atlasrrt import MAX_NODES, atlas_rrt
 from taut.planning._continuation import MAX_CHARTS, ImplicitManifold
@@ -71,9 +72,22 @@ def plan_path(
        exploring manifolds", IEEE Transactions on Robotics 29(1), 2013, Algs. 1–4.
        (docs/references.bib: jaillet2013)
     """
-    if method not in METHODS:
+    if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown planning method {method!r}; expected one of {', '.join(METHODS)}")
-    r = RADIUS[method] if radius is None else float(radius)
+    r = RADIUS[method] if radius is None else as_number(radius, "radius", positive=True)
+    start = as_array(start, "the start point", shape=(None,))
+    goal = as_array(goal, "the goal point", shape=start.shape)
+    max_charts = as_count(max_charts, "max_charts", minimum=2)
+    max_nodes = as_count(max_nodes, "max_nodes", minimum=2)
+    if spacing is not None:
+        spacing = as_number(spacing, "spacing", positive=True)
+    if step is not None:
+        step = as_number(step, "step", positive=True)
+    if time_limit is not None:
+        time_limit = as_number(time_limit, "time_limit", positive=True)
+    goal_bias = as_number(goal_bias, "goal_bias")
+    if not 0.0 <= goal_bias <= 1.0:
+        raise TautError(f"goal_bias: expected a probability in [0, 1], got {goal_bias}")
     if method == "astar":
         return astar(
             manifold,
@@ -94,7 +108,7 @@ def plan_path(
         step=step,
         epsilon=epsilon,
         metric=metric,
-        seed=seed,
+        seed=as_rng(seed),
         bidirectional=bidirectional,
         goal_bias=goal_bias,
         max_nodes=max_nodes,

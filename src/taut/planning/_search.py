@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_number
 from taut._results import Result, jsonable
 from taut.errors import TautError
 from taut.planning._continuation import MAX_CHARTS, Atlas, ImplicitManifold
@@ -87,6 +88,12 @@ def _segment(atlas: Atlas, i: int, u0: np.ndarray, u1: np.ndarray, spacing: floa
 def refine_path(atlas: Atlas, charts: list[int], goal: np.ndarray, *, spacing: float) -> np.ndarray:
     """Manifold points along the chart sequence ``charts`` (starting at the start chart's
     centre), ending at ``goal`` reached through the last chart."""
+    spacing = as_number(spacing, "spacing", positive=True)
+    goal = as_array(goal, "the goal point", shape=(atlas.centres.shape[1],))
+    if not charts or any(not 0 <= c < len(atlas.charts) for c in charts):
+        raise TautError(
+            f"charts: expected a sequence of charts of the atlas (0..{len(atlas.charts) - 1}), got {charts}"
+        )
     pts = [atlas.charts[charts[0]].centre]
     for a, b in zip(charts[:-1], charts[1:]):
         ub = atlas.coordinates(a, atlas.charts[b].centre)

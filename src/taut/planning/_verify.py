@@ -22,7 +22,9 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_count
 from taut._results import Result, jsonable
+from taut.errors import PoseError
 from taut.kinematics import inverse_kinematics, platform_frame
 from taut.model import Robot
 from taut.statics import EllipsoidWrenchSet, wrench_feasible
@@ -71,8 +73,10 @@ def verify_path(
        Mechanisms and Machine Science 12, Springer, 2013, §5, Fig. 6.
        (docs/references.bib: bohigas2013)
     """
-    E = 1e4 * np.eye(6) if E is None else np.asarray(E, float)
-    q = interpolate_poses(poses, subdivide)
+    E = 1e4 * np.eye(6) if E is None else as_array(E, "E", shape=(6, 6))
+    P = as_array(poses, "poses", error=PoseError)
+    P = as_array(P[None] if P.ndim == 1 else P, "poses", shape=(None, 6), error=PoseError)
+    q = interpolate_poses(P, as_count(subdivide, "subdivide"))
     ik = inverse_kinematics(robot, q)
     W = ik.structure_matrix.copy()
     pm = np.zeros(3) if robot.platform.wrench_point is None else np.asarray(robot.platform.wrench_point, float)

@@ -30,7 +30,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut._results import Result, jsonable
-from taut.errors import PoseError, TautError
+from taut.errors import CableSetError, PoseError, TautError
 from taut.geometry import circles_overlap, point_in_polygon
 from taut.kinematics import anchor_points, as_poses, refuse_swivels
 from taut.model import Circle, Robot
@@ -172,6 +172,13 @@ def wrapped_inverse_kinematics(
        of Waterloo, 2022, §4.3, Alg. 4.4, Eq. 4.9. (docs/references.bib: rushton2022)
     """
     arr, _ = as_poses(robot, poses)
+    initial = initial or {}
+    if not isinstance(initial, Mapping) or any(
+        isinstance(i, bool) or not isinstance(i, (int, np.integer)) or not 0 <= i < robot.n_cables for i in initial
+    ):
+        raise CableSetError(
+            f"initial: expected a mapping of cable indices 0..{robot.n_cables - 1} to states, got {initial!r}"
+        )
     circles, polys = collidable_objects(robot)
     b = np.asarray(anchor_points(robot, arr), float)
     _check_inside(robot, circles, polys, b, robot.name)
@@ -179,7 +186,6 @@ def wrapped_inverse_kinematics(
     lengths, nodes = np.zeros((T, n)), np.zeros((T, n), dtype=np.int64)
     act, exits = np.zeros((T, n, 2)), np.zeros((T, n, 2))
     events, trees = [], []
-    initial = initial or {}
     for i, cable in enumerate(robot.cables):
         r0 = cable.pulley.radius if cable.pulley else 0.0
         d0 = -1 if cable.pulley and cable.pulley.direction == "cw" else 1
@@ -211,7 +217,7 @@ def wrapped_inverse_kinematics(
 def _start_node(tree: CableStateTree, b: np.ndarray, contacts: Sequence[tuple[int, int]] | None, i: int) -> int:
     if contacts is None:
         return tree.shortest_taut_state(b)
-    node = tree.find([(int(k), int(d)) for k, d in contacts])
+    node = tree.find(contacts)
     if not tree.is_taut(node, b):
         raise TautError(
             f"cable {i + 1}: the start state {list(contacts)} is not taut at {[round(float(x), 6) for x in b]} "

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array
 from taut._results import Result
 from taut.errors import TautError
 from taut.geometry import directed_tangent
@@ -99,10 +100,12 @@ def rebuild_path(circles: npt.ArrayLike, winch_direction: int, state: CableState
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §4.1.1, Alg. 4.1. (docs/references.bib: rushton2022)
     """
-    circles = np.asarray(circles, float)
+    circles = as_array(circles, "circles", shape=(None, 3))
     K = len(circles) - 1
+    if any(not 0 <= k < K for k in state.objects):
+        raise TautError(f"the state {list(state.contacts)} wraps objects that are not among the {K} circles")
     chain = [(K, winch_direction)] + [(int(k), int(d)) for k, d in state.contacts]
-    ends = [(np.asarray(b, float), 0.0, 1)]
+    ends = [(as_array(b, "the platform end b", shape=(2,)), 0.0, 1)]
     segs, arcs = [], []
     theta_in = state.reference_angle
     length = 0.0
@@ -130,4 +133,8 @@ def rebuild_path(circles: npt.ArrayLike, winch_direction: int, state: CableState
 def contacts_text(contacts: Iterable[tuple[int, int]]) -> str:
     """A cable's contacts as users read them: 1-based object numbers with the wrap
     direction, e.g. ``"2+ 3-"`` (empty for a straight cable)."""
-    return " ".join(f"{k + 1}{'+' if d > 0 else '-'}" for k, d in contacts)
+    try:
+        pairs = [(int(k), int(d)) for k, d in contacts]
+    except (TypeError, ValueError):
+        raise TautError(f"contacts: expected [(object, direction ±1), ...], got {contacts!r}") from None
+    return " ".join(f"{k + 1}{'+' if d > 0 else '-'}" for k, d in pairs)

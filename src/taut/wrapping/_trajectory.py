@@ -29,8 +29,9 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_number
 from taut._results import Result
-from taut.errors import TautError
+from taut.errors import PoseError, TautError
 from taut.model import Robot
 from taut.statics import external_wrench, solve_tensions
 from taut.wrapping._ik import WrappedIK, wrapped_inverse_kinematics
@@ -74,11 +75,13 @@ def sample_waypoints(
     """``(times (T,), poses (T, k))`` of straight moves at ``speed`` between waypoints with
     a ``dwell`` at each (the first waypoint included), sampled every ``dt`` (each move and
     dwell is divided into a whole number of equal steps no longer than ``dt``)."""
-    W = np.asarray(waypoints, float)
+    W = as_array(waypoints, "waypoints")
     if W.ndim != 2 or len(W) < 1:
         raise TautError("a trajectory needs at least one waypoint")
-    if not (dt > 0 and speed > 0 and dwell >= 0):
-        raise TautError(f"dt, speed must be > 0 and dwell >= 0, got dt={dt}, speed={speed}, dwell={dwell}")
+    dt, speed = as_number(dt, "dt", positive=True), as_number(speed, "speed", positive=True)
+    dwell = as_number(dwell, "dwell")
+    if dwell < 0:
+        raise TautError(f"dwell must be >= 0, got {dwell}")
     moves = [float(np.linalg.norm(b[:2] - a[:2])) / speed if len(a) >= 2 else 0.0 for a, b in zip(W[:-1], W[1:])]
     _check_samples(1 + len(W) * (dwell / dt + 1) + sum(d / dt + 1 for d in moves), dt)
     times, poses, t = [np.zeros(1)], [W[:1]], 0.0
@@ -106,8 +109,9 @@ def sample_path(
     path: Callable[[np.ndarray], npt.ArrayLike], t0: float, t1: float, *, dt: float = DT
 ) -> tuple[np.ndarray, np.ndarray]:
     """``(times, poses)`` of a parametric path ``path(t) -> (T, k)`` every ``dt``."""
-    if not (dt > 0 and t1 >= t0):
-        raise TautError(f"dt must be > 0 and t1 >= t0, got dt={dt}, t0={t0}, t1={t1}")
+    dt = as_number(dt, "dt", positive=True)
+    if not t1 >= t0:
+        raise TautError(f"the path needs t1 >= t0, got t0={t0}, t1={t1}")
     _check_samples((t1 - t0) / dt + 1, dt)
     k = max(1, math.ceil((t1 - t0) / dt - 1e-9))
     t = t0 + (t1 - t0) * np.arange(k + 1) / k
@@ -140,7 +144,9 @@ def builtin_trajectory(
 
 def full_poses(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     """Waypoints given as positions become poses with zero orientation and joints."""
-    P = np.atleast_2d(np.asarray(poses, float))
+    P = np.atleast_2d(as_array(poses, "waypoints", error=PoseError))
+    if P.ndim != 2:
+        raise PoseError(f"{robot.name}: waypoints are rows of coordinates, got an array of shape {P.shape}")
     if P.shape[1] == robot.pose_size:
         return P
     if P.shape[1] == robot.dimension:
@@ -217,16 +223,19 @@ def run_trajectory(
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §4.4, §6.2. (docs/references.bib: rushton2022)
     """
-    times = np.asarray(times, float)
+    times = as_array(times, "times", shape=(None,))
+    if tension_bounds is not None and (not isinstance(tension_bounds, (tuple, list)) or len(tension_bounds) != 2):
+        raise TautError(f"tension_bounds: expected a pair (tmin, tmax), got {tension_bounds!r}")
     P = full_poses(robot, poses)
     if len(times) != len(P):
         raise TautError(f"{len(times)} times for {len(P)} poses")
     ik = wrapped_inverse_kinematics(robot, P, initial=initial)
-    w = (
-        external_wrench(robot, P)
-        if wrench is None
-        else np.broadcast_to(np.asarray(wrench, float), (len(P), robot.wrench_dim))
-    )
+    w = external_wrench(robot, P) if wrench is None else as_array(wrench, "wrench")
+    if w.shape not in ((robot.wrench_dim,), (len(P), robot.wrench_dim)):
+        raise TautError(
+            f"wrench: expected ({robot.wrench_dim},) or ({len(P)}, {robot.wrench_dim}) for {robot.name}, got shape {w.shape}"
+        )
+    w = np.broadcast_to(w, (len(P), robot.wrench_dim))
     tmin, tmax = robot.tension_bounds if tension_bounds is None else tension_bounds
     res = solve_tensions(ik.structure_matrix, w, tmin, tmax, method="lp")
     controlled = length_controlled(ik, robot.wrench_dim)

@@ -37,6 +37,7 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_count, as_index
 from taut.errors import TautError
 from taut.geometry import directed_tangent, segment_enters_polygon, segment_meets_circle, segments_intersect
 from taut.wrapping._state import WINCH_LOW, WRAP_LOW, CableState, contact_angle, wrap_angle
@@ -54,6 +55,20 @@ MAX_NODES = 20_000
 TAUT_TOL = 1e-12
 #: Distance [m] by which a segment must enter an object or a region to meet it.
 MEET_TOL = 1e-9
+
+
+def checked_contacts(contacts: object, n_objects: int) -> list[tuple[int, int]]:
+    """A cable state's contacts as ``[(object, direction), ...]`` with objects
+    ``0..n_objects − 1`` and directions ``±1``; :class:`TautError` otherwise."""
+    try:
+        pairs = [(k, d) for k, d in contacts]  # type: ignore[attr-defined]
+    except (TypeError, ValueError):
+        raise TautError(f"cable state: expected [(object, direction ±1), ...], got {contacts!r}") from None
+    for k, d in pairs:
+        as_index(k, "cable state: object", n_objects)
+        if isinstance(d, bool) or d not in (1, -1):
+            raise TautError(f"cable state: the direction about object {k + 1} must be +1 or -1, got {d!r}")
+    return [(int(k), int(d)) for k, d in pairs]
 
 
 class CableStateTree:
@@ -78,11 +93,15 @@ class CableStateTree:
         disallowed: Iterable[npt.ArrayLike] = (),
         reference_angle: float = 0.0,
     ) -> None:
-        self.circles = np.ascontiguousarray(circles, dtype=float)
+        self.circles = np.ascontiguousarray(as_array(circles, "circles", shape=(None, 3)))
+        if not len(self.circles) or np.any(self.circles[:, 2] < 0):
+            raise TautError("circles: expected rows (x, y, r >= 0) of the objects and the winch pulley last")
         self.n_objects = len(self.circles) - 1
+        if winch_direction not in (1, -1):
+            raise TautError(f"winch_direction: expected +1 or -1, got {winch_direction!r}")
         self.winch_direction = int(winch_direction)
-        self.disallowed = [np.asarray(p, float) for p in disallowed]
-        self.reference_angle = float(reference_angle)
+        self.disallowed = [as_array(p, "a disallowed polygon", shape=(None, 2)) for p in disallowed]
+        self.reference_angle = float(as_array(reference_angle, "reference_angle", shape=()))
         self.F = np.zeros((64, 10))
         self.I = np.full((64, 4), -1, dtype=np.int64)
         c = self.circles[-1]
@@ -156,6 +175,7 @@ class CableStateTree:
     def find(self, contacts: Sequence[tuple[int, int]]) -> int:
         """The node of a cable state given as ``[(object, direction), ...]``; raises
         :class:`TautError` if that sequence of wraps is not reachable."""
+        contacts = checked_contacts(contacts, self.n_objects)
         node = 0
         for j, (k, d) in enumerate(contacts):
             kids = self.children(node)
@@ -282,7 +302,8 @@ class CableStateTree:
         best-first (A*) search over the lazily expanded tree, each node bounded below by
         its static length plus the distance from its entry point to ``b``.  The default
         initial state of a cable, and the naive from-scratch state computation."""
-        b = np.asarray(b, float)
+        b = as_array(b, "the platform end b", shape=(2,))
+        max_nodes = as_count(max_nodes, "max_nodes")
         heap = [(0.0, 0)]
         best, best_node, popped = np.inf, -1, 0
         while heap and heap[0][0] < best:

@@ -52,6 +52,7 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut._checks import as_array, as_index
 from taut._results import Result
 from taut.errors import TautError
 from taut.wrapping._tree import CableStateTree
@@ -180,7 +181,8 @@ def track_cable_state(tree: CableStateTree, points: npt.ArrayLike, *, node: int 
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §4.2.2, Alg. 4.4. (docs/references.bib: rushton2022)
     """
-    P = np.ascontiguousarray(points, dtype=float)
+    P = np.ascontiguousarray(as_array(points, "points", shape=(None, 2)))
+    node = as_index(node, "node", tree.size)
     T = len(P)
     nodes = np.zeros(T, dtype=np.int64)
     lengths = np.zeros(T)
@@ -227,4 +229,5 @@ def update_state(tree: CableStateTree, node: int, b0: npt.ArrayLike, b1: npt.Arr
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §4.2.2, Alg. 4.4. (docs/references.bib: rushton2022)
     """
-    return int(track_cable_state(tree, np.array([b0, b1], float), node=node).nodes[-1])
+    ends = [as_array(b, "the platform end", shape=(2,)) for b in (b0, b1)]
+    return int(track_cable_state(tree, np.array(ends), node=node).nodes[-1])
