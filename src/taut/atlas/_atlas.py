@@ -72,10 +72,40 @@ MAX_CHARTS = 5000
 
 @dataclass(frozen=True)
 class Edge(Result):
-    """An adjacency of two charts: crossing ``segment`` (the traversable edge, on the
-    boundary of ``charts[0]``'s domain) changes the state of ``cable`` (0-based) by a
-    ``kind`` ("wrap" or "unwrap") about ``obj`` (0-based object index; the winch is the
-    last one)."""
+    """An adjacency of two charts: crossing its segment changes one cable's state (§5.1.3).
+
+    Attributes
+    ----------
+    charts : (int, int)
+        The chart whose domain the segment bounds, and the chart across it.
+    cable : int
+        The cable whose state changes (0-based).
+    kind : str
+        ``"wrap"`` or ``"unwrap"``.
+    obj : int
+        The object wrapped or unwrapped (0-based; the winch is the last one).
+    segment : ndarray, shape (2, 2)
+        End points [m] of the traversable edge.
+    normal : ndarray, shape (2,)
+        Unit normal of the edge pointing into ``charts[1]``.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.1.2–5.1.3. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.atlas import build_atlas
+    >>> from taut.model import example
+    >>> robot = example("vscr-t-shaped")
+    >>> start = robot.reference.poses["initial"]
+    >>> atlas = build_atlas(robot, start)
+    >>> e = atlas.edges[0]
+    >>> e.charts, e.cable, e.kind, e.obj
+    ((0, 1), 2, 'wrap', 0)
+    """
 
     charts: tuple[int, int]
     cable: int
@@ -98,8 +128,45 @@ class Edge(Result):
 
 @dataclass(frozen=True)
 class StructureAtlas(Result):
-    """The structure atlas (SA) of a planar VSCR — for a rigid platform one page, at
-    orientation ``theta`` (§5.2.2): charts and their adjacency."""
+    """The structure atlas of a planar VSCR — for a rigid platform one page, at orientation
+    ``theta`` (§5.2.2): charts and their adjacency (:func:`build_atlas`).
+
+    Attributes
+    ----------
+    robot : Robot
+    trees : tuple of CableStateTree
+        Each cable's state tree (the charts' ``nodes`` index them).
+    space : shapely.Polygon
+        The installation space (or a box around the robot).
+    charts : tuple of StructureChart
+    edges : tuple of Edge
+    start : ndarray, shape (2,)
+        The start point [m].
+    theta : float
+        Platform orientation [rad] of the page (0 for a point mass).
+    offsets : ndarray, shape (n, 2)
+        Anchor offsets ``R(θ) r_i`` [m].
+    complete : bool
+        Every chart reachable from the start is built (the chart budget did not run out).
+    elapsed_s : float
+        Wall-clock time [s].
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.1.3, Alg. 5.1; §5.2.2. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.atlas import build_atlas
+    >>> from taut.model import example
+    >>> robot = example("vscr-t-shaped")
+    >>> start = robot.reference.poses["initial"]
+    >>> atlas = build_atlas(robot, start)
+    >>> len(atlas.charts), atlas.n_edges, atlas.complete, round(atlas.reachable_area().area, 4)
+    (31, 44, True, 0.9012)
+    """
 
     robot: Robot
     trees: tuple[CableStateTree, ...] = field(repr=False)
@@ -229,17 +296,61 @@ def build_atlas(
     max_charts: int = MAX_CHARTS,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> StructureAtlas:
-    """The structure atlas of a planar VSCR from the start point ``start`` (Alg. 5.1) —
-    for a rigid platform the page of orientation ``theta`` (§5.2.2), ``start`` being the
-    platform reference point.  ``initial`` maps a 0-based cable index to its starting
-    state (see :func:`taut.wrapping.wrapped_inverse_kinematics`).
-    ``progress(expanded, None)`` is called as charts are expanded (how many there are is
-    not known in advance) and ``progress(charts, charts)`` at the end.
+    """The structure atlas of a planar variable-structure robot (Alg. 5.1): the charts
+    reachable from a start point — for a rigid platform, the page of one orientation
+    (§5.2.2).
+
+    Parameters
+    ----------
+    robot : Robot
+        A planar robot without joints.
+    start : array_like, shape (2,)
+        The start point [m] (the platform reference point of a rigid platform).
+    theta : float, optional
+        Orientation [rad] of the page of a rigid platform (0 for a point mass).
+    initial : mapping of int to sequence of (int, int), optional
+        0-based cable index → its starting state (see
+        :func:`taut.wrapping.wrapped_inverse_kinematics`).
+    arc_step : float, optional
+        Angular step [rad] of the chords of circular arcs in the reachable areas.
+    max_charts : int, optional
+        Chart budget (default :data:`MAX_CHARTS`): when it runs out the atlas is returned
+        with ``complete`` false.
+    progress : callable, optional
+        ``progress(expanded, None)`` as charts are expanded (how many there are is not
+        known in advance) and ``progress(expanded, expanded)`` at the end.
+
+    Returns
+    -------
+    StructureAtlas
+
+    Raises
+    ------
+    PoseError
+        A start point or orientation that is not finite, outside the installation space or
+        not in the reachable area of its structure.
+    TautError
+        A spatial or jointed robot, or bad options.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §5.1.3, Alg. 5.1; §5.2.2. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    The T-shaped robot of §6.3 from its initial point; a budget of 3 charts stops early.
+
+    >>> import numpy as np
+    >>> from taut.atlas import build_atlas
+    >>> from taut.model import example
+    >>> robot = example("vscr-t-shaped")
+    >>> start = robot.reference.poses["initial"]
+    >>> atlas = build_atlas(robot, start)
+    >>> len(atlas.charts), atlas.complete
+    (31, True)
+    >>> build_atlas(robot, start, max_charts=3).complete
+    False
     """
     t0 = time.perf_counter()
     theta = as_number(theta, f"{robot.name}: the orientation theta", error=PoseError)

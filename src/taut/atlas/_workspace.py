@@ -39,7 +39,40 @@ DEFAULT_RESOLUTION = 200
 
 @dataclass(frozen=True)
 class AtlasWorkspace(Result):
-    """The workspace of a structure atlas (Alg. 5.2)."""
+    """The workspace of a structure atlas (Alg. 5.2, :func:`atlas_workspace`).
+
+    Attributes
+    ----------
+    condition : str
+        The workspace condition's name.
+    step : float
+        Grid step [m].
+    points : ndarray, shape (M, 2)
+        The grid points of the workspace (union over the charts).
+    charts : tuple of int
+        The charts kept: reachable from the first, with a non-empty sub-workspace.
+    pruned : tuple of int
+        The charts removed.
+    sub_workspaces : dict of int to ndarray, shape (K, 2)
+        Chart → its feasible grid points.
+    area : float
+        Workspace area [m²]: grid cells of the feasible points (a property).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.3.1, Alg. 5.2. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> from taut.atlas import atlas_workspace, build_atlas
+    >>> from taut.model import example
+    >>> robot = example("vscr-t-shaped")
+    >>> atlas = build_atlas(robot, robot.reference.poses["initial"])
+    >>> ws = atlas_workspace(atlas, "static", step=0.05)
+    >>> len(ws.charts), len(ws.pruned), round(ws.area, 4)
+    (5, 26, 0.5775)
+    """
 
     condition: str
     step: float  #: grid step [m]
@@ -100,15 +133,46 @@ def atlas_workspace(
     step: float | None = None,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> AtlasWorkspace:
-    """Alg. 5.2: the workspace under ``condition`` (a name or a
-    :class:`~taut.workspace.WrenchCondition`) and the pruned chart list.
-    ``progress(done, charts)`` is called as charts are decided (visited, or pruned
-    unvisited at the end).
+    """The workspace of a structure atlas and its pruned charts (Alg. 5.2): each chart's
+    domain on a grid, visited from the first chart across edges that hold a feasible point.
+
+    Parameters
+    ----------
+    atlas : StructureAtlas
+    condition : str or WorkspaceCondition, optional
+        A condition on the structure matrix (``wrench-closure``, ``wrench-feasible``,
+        ``static``), by name or as a :class:`~taut.workspace.WrenchCondition`.
+    step : float, optional
+        Grid step [m] (default the atlas's extent over :data:`DEFAULT_RESOLUTION`).
+    progress : callable, optional
+        ``progress(done, charts)`` as charts are decided (visited, or pruned unvisited at
+        the end).
+
+    Returns
+    -------
+    AtlasWorkspace
+
+    Raises
+    ------
+    TautError
+        A condition that does not test structure matrices, or a bad ``step``.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §5.3.1, Alg. 5.2. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    The static workspace of the T-shaped robot: most charts are pruned.
+
+    >>> from taut.atlas import atlas_workspace, build_atlas
+    >>> from taut.model import example
+    >>> robot = example("vscr-t-shaped")
+    >>> atlas = build_atlas(robot, robot.reference.poses["initial"])
+    >>> ws = atlas_workspace(atlas, "static", step=0.05)
+    >>> sorted(ws.charts + ws.pruned) == list(range(len(atlas.charts))), ws.condition
+    (True, 'static')
     """
     cond = make_condition(condition)
     if not isinstance(cond, WrenchCondition):

@@ -100,6 +100,49 @@ ALIASES = {"phix": "a", "phiy": "b", "phiz": "c", "φx": "a", "φy": "b", "φz":
 
 @dataclass(frozen=True)
 class IGPSolution(Result):
+    """One certified solution of the inverse geometrico-static problem.
+
+    Attributes
+    ----------
+    taut : tuple of int
+        The taut cables (0-based indices).
+    position : ndarray, shape (3,)
+        Platform reference point [m].
+    orientation : ndarray, shape (3,)
+        Angles [rad] in the robot's orientation convention.
+    tensions : ndarray, shape (n,)
+        Every cable's tension [N] (0 for slack ones).
+    lengths : ndarray, shape (n,)
+        The length [m] to command for a taut cable; for a slack one its span, the least
+        length it must be paid out to.
+    slack : tuple of int
+        The slack cables (0-based indices).
+    length_violations : tuple of int
+        Cables (0-based indices) outside the robot's length bounds.
+    stable : bool
+        The reduced Hessian is positive definite (:func:`is_stable`).
+    certificate_width : float
+        Width of the Krawczyk box proven to hold this solution.
+    uniqueness_radius : float
+        Half-width of the inflated box holding no other solution.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.dgp import solve_igp
+    >>> from taut.model import example
+    >>> res = solve_igp(example("suspended-3cable"), [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061})
+    >>> s = res.solutions[0]
+    >>> s.stable, np.round(s.orientation, 3), np.round(s.lengths, 3)
+    (True, array([3.006, 0.342, 0.109]), array([ 7.5, 10. ,  9.5]))
+    """
+
     taut: tuple[int, ...]  #: taut cables (0-based indices)
     position: np.ndarray
     orientation: np.ndarray  #: angles in the robot's convention
@@ -129,6 +172,44 @@ class IGPSolution(Result):
 
 @dataclass(frozen=True)
 class IGPResult(Result):
+    """Every certified solution of the inverse geometrico-static problem in the search
+    domain (:func:`solve_igp`), stable ones first.
+
+    Attributes
+    ----------
+    solutions : tuple of IGPSolution
+    fixed : dict
+        The fixed pose coordinates by the robot's pose names (``taut igp --json`` prints
+        them as ``"assigned"``).
+    undecided_enclosures : tuple of UndecidedBox
+        The boxes that could not be decided: narrower than ``tol`` around a solution with a
+        zero tension (it belongs to a smaller taut set) or a singular one (a fold, a
+        continuum), and those left when the box budget ran out.
+    boxes : int
+        Boxes processed.
+    exhausted : bool
+        The box budget ran out (typically on a continuum of solutions).
+    elapsed_s : float
+        Wall-clock time [s].
+    complete : bool
+        No box was left undecided (a property).
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.dgp import solve_igp
+    >>> from taut.model import example
+    >>> res = solve_igp(example("suspended-3cable"), [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061})
+    >>> len(res.solutions), res.complete, res.fixed
+    (4, True, {'x': 2.7505, 'y': 3.9798, 'z': 5.5061})
+    """
+
     solutions: tuple[IGPSolution, ...]
     fixed: dict[str, float]  #: the fixed (assigned) coordinates, by the robot's pose names
     #: boxes that could not be decided (:mod:`taut.dgp._undecided`): of width < eps around a
@@ -428,27 +509,69 @@ def solve_igp(
     max_boxes: int = MAX_BOXES,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> IGPResult:
-    """All certified solutions of the inverse geometrico-static problem (module docstring).
+    """All certified solutions of the inverse geometrico-static problem: the free pose
+    coordinates and the tensions of ``m`` taut cables for ``m`` fixed pose coordinates
+    (module docstring).
 
-    ``taut``: the 0-based indices of the ``m`` taut cables (``2 ≤ m ≤ 6``; the cables the
-    command line numbers 1, 2, 3 are ``[0, 1, 2]``); ``fixed``:
-    exactly ``m`` pose coordinates by name (the robot's ``pose_names``: ``x, y, z, a, b, c``
-    — ``phix, phiy, phiz`` are accepted for the ``xyz`` conventions — or
-    ``phi, theta, sigma`` for tilt-and-torsion); ``box``: ``(lower, upper)`` corners of the
-    search box of the free position coordinates (default: see :func:`_position_box`);
-    ``tol``: the bisection threshold of :func:`~taut.interval.branch_and_prune`;
-    ``max_boxes``: its box budget — the well-posed problems of the examples take 10²–10⁴
-    boxes, a continuum of solutions (an assignment that does not fix the pose, e.g. ``x, y,
-    φ`` of the Robocrane with cables 1, 3, 5 at ``x = y = 0``) would take them all, at about
-    1 ms per box; what is left when it runs out is ``undecided`` and ``exhausted`` is set.
-    ``progress(boxes, None)`` is called as the boxes are processed (their number is not
-    known in advance) and ``progress(boxes, boxes)`` at the end.
+    Parameters
+    ----------
+    robot : Robot
+        A spatial rigid platform without joints or swivelling pulleys.
+    taut : iterable of int
+        The 0-based indices of the ``m`` taut cables, ``2 ≤ m ≤ 6`` (the cables the command
+        line numbers 1, 2, 3 are ``[0, 1, 2]``).
+    fixed : mapping of str to float
+        Exactly ``m`` pose coordinates by name [m, rad]: the robot's ``pose_names``
+        (``x, y, z, a, b, c``; ``phix, phiy, phiz`` are accepted for the ``xyz``
+        conventions; ``phi, theta, sigma`` for tilt-and-torsion).
+    box : (array_like, array_like), optional
+        Lower and upper corners [m] of the search box of the free position coordinates;
+        default the intersection of the taut cables' reach.
+    tol : float, optional
+        Bisection threshold of :func:`~taut.interval.branch_and_prune` (metres, cosines and
+        scaled tensions).
+    max_boxes : int, optional
+        Box budget (default :data:`MAX_BOXES`): the well-posed problems of the examples take
+        10²–10⁴ boxes; a continuum of solutions (fixed coordinates that do not fix the pose,
+        e.g. ``x, y, φ`` of the Robocrane with cables 1, 3, 5 at ``x = y = 0``) would take
+        them all, at about 1 ms a box.  What is left when it runs out is undecided and
+        ``exhausted`` is set.
+    progress : callable, optional
+        ``progress(boxes, None)`` as the boxes are processed (their number is not known in
+        advance) and ``progress(boxes, boxes)`` at the end.
+
+    Returns
+    -------
+    IGPResult
+
+    Raises
+    ------
+    CableSetError
+        Taut cables that are not 2 to 6 distinct cables of the robot.
+    PoseError
+        Fixed coordinates that are not ``m`` distinct pose coordinates with finite values,
+        or a bad ``box``.
+    UnsupportedRobotError
+        A planar, point-mass or jointed robot, or a swivelling pulley.
+    TautError
+        A bad ``tol`` or ``max_boxes``.
 
     References
     ----------
     .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
        interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
        Università di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    The stable pose of Table 4.3 of Berti (2015) at its position: four equilibria there.
+
+    >>> import numpy as np
+    >>> from taut.dgp import solve_igp
+    >>> from taut.model import example
+    >>> res = solve_igp(example("suspended-3cable"), [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061})
+    >>> [s.stable for s in res.solutions]
+    [True, False, False, False]
     """
     _check_robot(robot)
     idx = _check_taut(robot, taut)

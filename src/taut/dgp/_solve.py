@@ -60,6 +60,52 @@ if TYPE_CHECKING:
 
 @dataclass(frozen=True)
 class DGPSolution(Result):
+    """One certified equilibrium of the direct geometrico-static problem.
+
+    Attributes
+    ----------
+    taut : tuple of int
+        The taut cables (0-based indices).
+    position : ndarray, shape (3,)
+        Platform reference point [m].
+    orientation : ndarray, shape (3,)
+        Angles [rad] in the robot's orientation convention.
+    tensions : ndarray, shape (n,)
+        Every cable's tension [N] (0 for slack ones).
+    stable : bool
+        The reduced Hessian is positive definite (:func:`is_stable`).
+    certificate_width : float
+        Width of the Krawczyk box proven to hold this solution (0 for one taut cable).
+    uniqueness_radius : float
+        Half-width of the inflated box holding no other solution.
+    continuum : tuple of float or None
+        For one taut cable, the arc ``(ϑ_lo, ϑ_hi)`` of spins about the cable that are all
+        equilibria (the solution is its middle).
+    boundary : tuple of int or None
+        A border equilibrium: the cables of ``boundary`` not in ``taut`` are at their
+        lengths with zero tension, to within the certificate.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, Ch. 2, Eq. 2.1. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    The stable equilibrium of Table 4.3 of Berti (2015), tracked from the inverse problem's
+    solution at its reference lengths:
+
+    >>> import numpy as np
+    >>> from taut.dgp import solve_igp, track_equilibrium
+    >>> from taut.model import example
+    >>> robot = example("suspended-3cable")
+    >>> start = solve_igp(robot, [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061}).solutions[0]
+    >>> s = track_equilibrium(robot, start, robot.reference.lengths)
+    >>> s.taut, np.round(s.position, 3), np.round(s.tensions, 3)
+    ((0, 1, 2), array([2.751, 3.98 , 5.506]), array([0.526, 0.512, 0.581]))
+    """
+
     taut: tuple[int, ...]  #: taut cables (0-based indices)
     position: np.ndarray
     orientation: np.ndarray  #: angles in the robot's convention (xyz-fixed by default)
@@ -94,7 +140,40 @@ class DGPSolution(Result):
 @dataclass(frozen=True)
 class DGPResult(Result):
     """All equilibria found, in canonical order (:func:`solution_key`), and the search's
-    bookkeeping."""
+    bookkeeping (:func:`solve_dgp`).
+
+    Attributes
+    ----------
+    solutions : tuple of DGPSolution
+        The certified equilibria.
+    subproblems : int
+        Taut subsets solved.
+    undecided_enclosures : tuple of UndecidedBox
+        The boxes no solution could be excluded from, in job order: every equilibrium not
+        in ``solutions`` lies in one of them.
+    boxes : int
+        Boxes processed by branch-and-prune over all sub-problems.
+    elapsed_s : float
+        Wall-clock time [s].
+    complete : bool
+        No box was left undecided (a property).
+    exhausted : bool
+        A sub-problem's box budget ran out (a property).
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, Chs. 2–3. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> from taut.dgp import solve_dgp
+    >>> from taut.model import example
+    >>> res = solve_dgp(example("suspended-3cable"), max_taut=2)
+    >>> res.subproblems, len(res.solutions), res.complete, sorted(res.as_dict())[:3]
+    (6, 0, True, ['boxes', 'complete', 'elapsed_s'])
+    """
 
     solutions: tuple[DGPSolution, ...]
     subproblems: int  #: taut subsets solved
@@ -356,9 +435,39 @@ def _reach(c: Certificate) -> float:
 
 
 def solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple[list[DGPSolution], int, int]:
-    """The whole sub-problem of the taut cables of ``job = (robot, lengths, taut, eps)``, in
-    one piece, as a job an executor can map: ``(solutions, number of undecided boxes,
-    boxes)``."""
+    """The whole sub-problem of one taut subset, in one piece, as a job an executor can map.
+
+    Parameters
+    ----------
+    job : tuple
+        ``(robot, lengths, taut, tol)``: a spatial :class:`~taut.model.Robot`, the cable
+        lengths ``(n,)`` [m], the taut cables (0-based) and the bisection threshold.
+
+    Returns
+    -------
+    solutions : list of DGPSolution
+        The sub-problem's certified equilibria with non-negative tensions.
+    undecided : int
+        How many boxes were left undecided (budget :data:`MAX_BOXES`).
+    boxes : int
+        Boxes processed.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, Ch. 3. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.dgp import solve_subset
+    >>> from taut.model import example
+    >>> robot = example("suspended-3cable")
+    >>> sols, undecided, boxes = solve_subset((robot, np.array(robot.reference.lengths), (0, 1), 1e-7))
+    >>> len(sols), undecided
+    (0, 0)
+    """
     robot, lengths, taut, eps = job
     sols, _, undecided, boxes = solve_piece((robot, lengths, taut, eps, 0, 0, MAX_BOXES, True))
     return sols, len(undecided), boxes
@@ -400,30 +509,59 @@ def solve_dgp(
     progress: Callable[[int, int | None], None] | None = None,
     multiprecision: bool = True,
 ) -> DGPResult:
-    """All admissible equilibria (``τ ≥ 0``) for the cable lengths (default: the robot's
-    ``reference.lengths``), each with its stability flag and certificate.
+    """All admissible equilibria (``τ ≥ 0``) for given cable lengths, each certified and
+    classified by stability.
 
-    ``executor``: where the jobs run, as for
-    :func:`~taut.workspace.evaluate_workspace` — ``None`` (serial), an executor of
-    :func:`taut.parallel.get_executor`, or a ``distributed.Client``; it is not closed.
-    ``split``: the domain of every sub-problem with at least 3 taut cables is cut into
-    ``2**split`` pieces solved as separate jobs (default :data:`SPLIT`), so that one hard
-    sub-problem is shared by the workers; a solution found by two neighbouring pieces is
-    reported once (:func:`same_solution`), from the first piece in job order.  Each job is
-    computed by the same code whatever the executor, so for a given ``split`` the solutions
-    are bitwise identical on every executor; they are sorted by :func:`solution_key`.
-    ``max_boxes``: the box budget of every sub-problem, shared equally by its pieces; the
-    boxes left when it runs out are undecided.  ``tol``: the bisection threshold (metres
-    and scaled tensions) of :func:`~taut.interval.branch_and_prune`.
-    ``progress(done, total)`` is called with the number of jobs done (pieces of
-    sub-problems) out of all of them, from 0 to the total.  ``multiprecision``: the boxes
-    double precision leaves too narrow to bisect (a singular or nearly double solution) are
-    searched again in multi-precision balls when python-flint is installed
-    (:mod:`taut.interval._precise`); without it, or with ``False``, they stay undecided.
+    The taut subsets of ``m = 1 … min(n, 6, max_taut)`` cables are solved as jobs of
+    ``executor``; a solution found by two neighbouring pieces of a domain is reported once,
+    from the first piece in job order.  Each job is computed by the same code whatever the
+    executor, so for a given ``split`` the solutions are bitwise identical on every
+    executor; they are sorted by :func:`solution_key`.
 
-    The result is :attr:`~DGPResult.complete` when no box was left undecided; otherwise
-    every equilibrium it does not list lies in one of its
-    :attr:`~DGPResult.undecided_enclosures` (:mod:`taut.dgp._undecided`).
+    Parameters
+    ----------
+    robot : Robot
+        A spatial rigid platform without joints or swivelling pulleys.
+    lengths : array_like, shape (n,), optional
+        Cable lengths [m]; default the robot's ``reference.lengths``.
+    max_taut : int, optional
+        Largest taut subset searched (default ``min(n, 6)``).
+    executor : Executor or distributed.Client, optional
+        Where the jobs run, as for :func:`~taut.workspace.evaluate_workspace`: ``None``
+        (serial), an executor of :func:`taut.parallel.get_executor`, or a
+        ``distributed.Client``; it is not closed.
+    tol : float, optional
+        Bisection threshold of :func:`~taut.interval.branch_and_prune`, in metres (the
+        reference points) and scaled tensions.
+    split : int, optional
+        The domain of every sub-problem with at least 3 taut cables is cut into
+        ``2**split`` pieces (0 to 10; default :data:`SPLIT`), solved as separate jobs, so
+        that one hard sub-problem is shared by the workers.
+    max_boxes : int, optional
+        Box budget of every sub-problem, shared equally by its pieces (default
+        :data:`MAX_BOXES`); the boxes left when it runs out are undecided.
+    progress : callable, optional
+        ``progress(done, total)`` with the number of jobs done (pieces of sub-problems) out
+        of all of them, from 0 to the total.
+    multiprecision : bool, optional
+        Search again, in multi-precision balls, the boxes double precision leaves too narrow
+        to bisect (a singular or nearly double solution) when python-flint is installed
+        (:mod:`taut.interval._precise`); without it, or with ``False``, they stay undecided.
+
+    Returns
+    -------
+    DGPResult
+        :attr:`~DGPResult.complete` when no box was left undecided; otherwise every
+        equilibrium it does not list lies in one of its
+        :attr:`~DGPResult.undecided_enclosures` (:mod:`taut.dgp._undecided`).
+
+    Raises
+    ------
+    TautError
+        A planar, point-mass or jointed robot, lengths that are not ``n`` positive numbers,
+        no reference lengths to default to, or a bad option.
+    UnsupportedRobotError
+        A cable with a swivelling pulley.
 
     References
     ----------
@@ -431,6 +569,16 @@ def solve_dgp(
        interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
        Università di Bologna, 2015, Chs. 2–3, §4.2 (Tables 4.3–4.6).
        (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    Table 4.3 of Berti (2015): six equilibria, one of them stable.
+
+    >>> from taut.dgp import solve_dgp
+    >>> from taut.model import example
+    >>> res = solve_dgp(example("suspended-3cable"))
+    >>> len(res.solutions), sum(s.stable for s in res.solutions), res.complete
+    (6, 1, True)
     """
     refuse_swivels(robot, "the DGP solver")
     if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:

@@ -339,17 +339,50 @@ def _solution(s: _State, width: float) -> DGPSolution:
 
 
 def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths: npt.ArrayLike) -> DGPSolution:
-    """The equilibrium that continues ``solution`` (a :class:`DGPSolution` or an
-    :class:`~taut.dgp.IGPSolution`) at the new cable ``lengths`` (see the module
-    docstring); raises :class:`~taut.errors.TrackingLostError` when it
-    cannot be certified.  ``certificate_width`` is the width of the Krawczyk enclosure;
-    ``uniqueness_radius`` is not computed (0).
+    """The equilibrium that continues ``solution`` at new cable lengths (module docstring).
+
+    Parameters
+    ----------
+    robot : Robot
+        A spatial rigid platform without joints or swivelling pulleys.
+    solution : DGPSolution or IGPSolution
+        The equilibrium before the change.
+    lengths : array_like, shape (n,)
+        The new cable lengths [m].
+
+    Returns
+    -------
+    DGPSolution
+        Certified: ``certificate_width`` is the width of the Krawczyk enclosure;
+        ``uniqueness_radius`` is not computed (0).
+
+    Raises
+    ------
+    TrackingLostError
+        The new equilibrium cannot be certified (it left the branch, or one taut cable is
+        left: a continuum).
+    TautError
+        A planar, point-mass or jointed robot, lengths that are not ``n`` positive numbers,
+        or a ``solution`` that is not one.
 
     References
     ----------
     .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
        interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
        Università di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    The stable pose of Table 4.3 of Berti (2015), with cable 1 paid out by 1 cm.
+
+    >>> import numpy as np
+    >>> from taut.dgp import solve_igp, track_equilibrium, track_path
+    >>> from taut.model import example
+    >>> robot = example("suspended-3cable")
+    >>> start = solve_igp(robot, [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061}).solutions[0]
+    >>> moved = track_equilibrium(robot, start, np.array(robot.reference.lengths) + [0.01, 0, 0])
+    >>> moved.taut, np.round(moved.position, 3), moved.stable
+    ((0, 1, 2), array([2.753, 3.984, 5.511]), True)
     """
     lengths = check_lengths(robot, lengths)
     s, width = _step(robot, _state(robot, solution, lengths), lengths)
@@ -357,8 +390,46 @@ def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths
 
 
 def track_path(robot: Robot, solution: DGPSolution | IGPSolution, lengths: npt.ArrayLike) -> list[DGPSolution]:
-    """:func:`track_equilibrium` from ``solution`` along a sequence of cable ``lengths``
-    (one solution per row)."""
+    """:func:`track_equilibrium` from ``solution`` along a sequence of cable lengths.
+
+    Parameters
+    ----------
+    robot : Robot
+    solution : DGPSolution or IGPSolution
+        The equilibrium at the start.
+    lengths : array_like, shape (T, n)
+        One row of cable lengths [m] per update.
+
+    Returns
+    -------
+    list of DGPSolution
+        One per row.
+
+    Raises
+    ------
+    TrackingLostError
+        An update cannot be certified.
+    TautError
+        Lengths that are not rows of ``n`` positive numbers.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.dgp import solve_igp, track_equilibrium, track_path
+    >>> from taut.model import example
+    >>> robot = example("suspended-3cable")
+    >>> start = solve_igp(robot, [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061}).solutions[0]
+    >>> rows = np.array(robot.reference.lengths) + np.linspace(0, 0.02, 5)[:, None] * [1, 0, 0]
+    >>> path = track_path(robot, start, rows)
+    >>> len(path), np.round(path[-1].position, 3)
+    (5, array([2.756, 3.988, 5.515]))
+    """
     rows = as_array(lengths, "the lengths sequence", finite=False)
     if rows.size == 0:
         return []

@@ -206,9 +206,59 @@ def shorten_path(
     seed: int | np.random.Generator = 0,
     attempts: int = 60,
 ) -> tuple[np.ndarray, list[int]]:
-    """Random shortcuts on the manifold: for two random points of ``path`` (continuous, with
-    the chart of each point), walk from one toward the other on the atlas; a walk that
-    arrives and is shorter than the stretch it skips replaces it."""
+    """A path shortened by random shortcuts on the manifold: for two random points of the
+    path, walk from one toward the other on the atlas; a walk that arrives and is shorter
+    than the stretch it skips replaces it.
+
+    Parameters
+    ----------
+    atlas : Atlas
+        An atlas covering the path.
+    path : array_like, shape (N, n)
+        Manifold points, continuous across its symmetry.
+    charts : list of int
+        The chart of each point.
+    step : float
+        Step ``δ`` of the walks, in tangent coordinates.
+    seed : int or numpy.random.Generator, optional
+        The random shortcuts.
+    attempts : int, optional
+        Shortcuts tried.
+
+    Returns
+    -------
+    path : ndarray, shape (M, n)
+        The shortened path, with the same ends.
+    charts : list of int
+        The chart of each point.
+
+    Raises
+    ------
+    TautError
+        A path and charts that do not match, or bad options.
+
+    References
+    ----------
+    .. [1] L. Jaillet, J. M. Porta, "Path planning under kinematic constraints by rapidly
+       exploring manifolds", IEEE Transactions on Robotics 29(1), 2013.
+       (docs/references.bib: jaillet2013)
+
+    Examples
+    --------
+    A detour near the north pole of the unit sphere, in one chart:
+
+    >>> import numpy as np
+    >>> from taut.planning import Atlas, ImplicitManifold, shorten_path
+    >>> sphere = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
+    >>> atlas = Atlas(sphere, [0, 0, 1.0], radius=0.5, vertices=False)
+    >>> xy = np.array([[0, 0], [0.1, 0.15], [0.2, 0.2], [0.3, 0.15], [0.4, 0.0]])
+    >>> path = np.column_stack([xy, np.sqrt(1 - (xy**2).sum(axis=1))])
+    >>> short, charts = shorten_path(atlas, path, [0] * 5, step=0.05, seed=0)
+    >>> def length(p):
+    ...     return round(float(np.linalg.norm(np.diff(p, axis=0), axis=1).sum()), 3)
+    >>> length(path), length(short), np.allclose(short[-1], path[-1])
+    (0.591, 0.411, True)
+    """
     rng = as_rng(seed)
     step = as_number(step, "step", positive=True)
     attempts = as_count(attempts, "attempts", minimum=0)

@@ -87,6 +87,35 @@ class Symmetry:
     ``flip = (a, b)`` is given, the half-turn ``x[a] += period_a / 2``, ``x[b] → −x[b]``
     (both ``a`` and ``b`` periodic), whose canonical representatives have
     ``x[b] ∈ [0, period_b / 2]``: the tilt-and-torsion identity ``(φ, θ) ≡ (φ + π, −θ)``.
+
+    Parameters
+    ----------
+    periods : tuple of (int, float, float)
+        ``(coordinate, period, low)`` of every periodic coordinate.
+    flip : (int, int), optional
+        The coordinates ``(a, b)`` of the half-turn.
+
+    Raises
+    ------
+    TautError
+        Periods that are not positive, one per coordinate, or a flip of coordinates that are
+        not both periodic.
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    An angle of period 2π with canonical window ``[−π, π)``:
+
+    >>> import numpy as np
+    >>> from taut.planning import Symmetry
+    >>> x, flipped = Symmetry(((0, 2 * np.pi, -np.pi),)).canonical(np.array([4.0, 1.0]))
+    >>> np.round(x, 4), flipped
+    (array([-2.2832,  1.    ]), False)
     """
 
     periods: tuple[tuple[int, float, float], ...]
@@ -166,9 +195,37 @@ class Symmetry:
 class ImplicitManifold:
     """The solution set of ``F(x) = 0`` with ``F: R^n → R^(n−k)``, inside a box.
 
-    ``symmetry`` is a group of isometries under which ``F = 0`` and the box are invariant;
-    ``graph`` (optional) maps ``k`` coordinates ``x[graph_index]`` in closed form to the
-    point of the manifold over them (``None`` where there is none).
+    Parameters
+    ----------
+    function : callable
+        ``F(x)``, shape ``(n − k,)``.
+    jacobian : callable
+        ``F_x(x)``, shape ``(n − k, n)``.
+    dim : int
+        The manifold's dimension ``k``.
+    lower, upper : ndarray, shape (n,), optional
+        The box (``±∞`` for no bound); charts centred outside it are never expanded.
+    symmetry : Symmetry, optional
+        A group of isometries under which ``F = 0`` and the box are invariant.
+    graph : callable, optional
+        Maps the ``k`` coordinates ``x[graph_index]`` in closed form to the point of the
+        manifold over them (``None`` where there is none): projections then solve for those
+        coordinates alone.
+    graph_index : ndarray of int, shape (k,), optional
+
+    References
+    ----------
+    .. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
+       k-manifolds", International Journal of Bifurcation and Chaos 12(3), 2002.
+       (docs/references.bib: henderson2002)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.planning import ImplicitManifold
+    >>> sphere = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
+    >>> sphere.in_box(np.array([0.0, 0.0, 1.0]))
+    True
     """
 
     function: Callable[[np.ndarray], np.ndarray]  #: ``F(x)``, shape ``(n − k,)``
@@ -182,13 +239,48 @@ class ImplicitManifold:
     graph_index: np.ndarray | None = None
 
     def in_box(self, x: np.ndarray) -> bool:
+        """Whether the point ``x`` ``(n,)`` lies in the box."""
         lo = -np.inf if self.lower is None else self.lower
         hi = np.inf if self.upper is None else self.upper
         return bool(np.all(x >= lo) and np.all(x <= hi))
 
 
 def tangent_basis(jac: np.ndarray, k: int) -> np.ndarray:
-    """Orthonormal basis ``(n, k)`` of the null space of ``jac`` (complete QR of ``jacᵀ``)."""
+    """An orthonormal basis of the null space of a Jacobian: the tangent space of a manifold.
+
+    Parameters
+    ----------
+    jac : array_like, shape (n − k, n)
+        The Jacobian ``F_x`` at a point.
+    k : int
+        The dimension of the null space.
+
+    Returns
+    -------
+    ndarray, shape (n, k)
+        The last ``k`` columns of the complete QR factorisation of ``jacᵀ``.
+
+    Raises
+    ------
+    TautError
+        A ``jac`` that is not a matrix, or ``k`` larger than ``n``.
+
+    References
+    ----------
+    .. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
+       k-manifolds", International Journal of Bifurcation and Chaos 12(3), 2002.
+       (docs/references.bib: henderson2002)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.planning import tangent_basis
+    >>> Q = tangent_basis(np.array([[0.0, 0.0, 1.0]]), 2)
+    >>> np.abs(np.round(Q, 3))
+    array([[0., 1.],
+           [1., 0.],
+           [0., 0.]])
+    """
     jac = as_array(jac, "jacobian", shape=(None, None))
     k = as_count(k, "k")
     if k > jac.shape[1]:
@@ -207,12 +299,54 @@ def project(
     max_distance: float = np.inf,
     newton_fallback: bool = True,
 ) -> np.ndarray | None:
-    """Newton on ``[F(x); Ψᵀ (x − guess)] = 0`` from ``guess``; ``None`` if it fails.
+    """The projection of a point onto a manifold orthogonally to a tangent basis: Newton on
+    ``[F(x); Ψᵀ (x − guess)] = 0`` from ``guess``.
 
-    ``max_distance`` rejects solutions farther than that from ``guess`` (a jump to another
-    sheet of the manifold).  With a ``manifold.graph``, the same point is first sought by
-    :func:`project_graph` (whose iterates must stay where the graph is defined: near the
-    boundary of that domain it may fail where Newton succeeds).
+    With a ``manifold.graph``, the same point is first sought by :func:`project_graph`
+    (whose iterates must stay where the graph is defined: near the boundary of that domain
+    it may fail where Newton succeeds).
+
+    Parameters
+    ----------
+    manifold : ImplicitManifold
+    guess : array_like, shape (n,)
+        The point to project.
+    basis : array_like, shape (n, k)
+        The tangent basis ``Ψ``; the projection moves orthogonally to it.
+    tol : float, optional
+        ``‖F(x)‖ ≤ tol (1 + ‖x‖)`` ends the iteration.
+    max_steps : int, optional
+        Newton steps before giving up.
+    max_distance : float, optional
+        Solutions farther than this from ``guess`` are rejected (a jump to another sheet of
+        the manifold).
+    newton_fallback : bool, optional
+        Try Newton on ``F`` when the graph's projection fails.
+
+    Returns
+    -------
+    ndarray, shape (n,) or None
+        The manifold point, or ``None`` when the iteration fails.
+
+    Raises
+    ------
+    TautError
+        Arrays of mismatched shapes, or a bad ``tol`` or ``max_steps``.
+
+    References
+    ----------
+    .. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
+       k-manifolds", International Journal of Bifurcation and Chaos 12(3), 2002.
+       (docs/references.bib: henderson2002)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.planning import ImplicitManifold
+    >>> sphere = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
+    >>> from taut.planning import project
+    >>> project(sphere, np.array([0.0, 0.0, 1.2]), np.eye(3)[:, :2])
+    array([0., 0., 1.])
     """
     guess = as_array(guess, "guess", shape=(None,))
     basis = as_array(basis, "basis", shape=(guess.size, None))
@@ -321,6 +455,36 @@ class Polytope:
     With ``vertices=False`` only the planes are kept (enough for :meth:`contains`, all that
     AtlasRRT asks of a polytope): the vertex lists, which a 6-D polytope makes long, are
     never enumerated, and :meth:`cut` reports whether the plane crosses the cube.
+
+    Parameters
+    ----------
+    k : int
+        Dimension.
+    half_side : float
+        The polytope starts as the cube ``[−half_side, half_side]^k``.
+    vertices : bool, optional
+        Keep the vertex lists.
+
+    Raises
+    ------
+    TautError
+        ``k < 1`` or ``half_side ≤ 0``.
+
+    References
+    ----------
+    .. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
+       k-manifolds", International Journal of Bifurcation and Chaos 12(3), 2002.
+       (docs/references.bib: henderson2002)
+
+    Examples
+    --------
+    The square ``[−1, 1]²`` loses its corner ``(1, 1)`` to the plane ``u + v ≤ 1``:
+
+    >>> import numpy as np
+    >>> from taut.planning import Polytope
+    >>> P = Polytope(2, 1.0)
+    >>> P.cut(np.array([1.0, 1.0]), 1.0, 4), len(P.vertices), P.contains(np.array([0.9, 0.9]))
+    (True, 5, False)
     """
 
     def __init__(self, k: int, half_side: float, *, vertices: bool = True):
@@ -389,6 +553,43 @@ class Polytope:
 
 @dataclass
 class ManifoldChart:
+    """A chart of an :class:`Atlas`: a tangent space at a point of the manifold, a ball
+    and the polytope its neighbours crop.
+
+    Attributes
+    ----------
+    centre : ndarray, shape (n,)
+        The point of the manifold (canonical under its symmetry).
+    basis : ndarray, shape (n, k)
+        Orthonormal basis ``Ψ`` of the tangent space at ``centre``.
+    radius : float
+        Radius of the ball of tangent coordinates.
+    polytope : Polytope
+        The tangent coordinates the chart covers.
+    frontier : bool
+        Centre outside the box, or no step forward: never expanded.
+    neighbours : dict of int to float
+        Chart index → edge cost (distance in the atlas metric).
+    expanded : bool
+        :meth:`Atlas.grow` has expanded it.
+
+    References
+    ----------
+    .. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
+       k-manifolds", International Journal of Bifurcation and Chaos 12(3), 2002.
+       (docs/references.bib: henderson2002)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.planning import Atlas, ImplicitManifold
+    >>> circle = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 1)
+    >>> atlas = Atlas(circle, [1.0, 0.0], radius=0.5)
+    >>> chart = atlas.charts[0]
+    >>> chart.centre, np.abs(chart.basis.ravel()), chart.closed
+    (array([1., 0.]), array([0., 1.]), False)
+    """
+
     centre: np.ndarray
     basis: np.ndarray
     radius: float
@@ -399,6 +600,7 @@ class ManifoldChart:
 
     @property
     def closed(self) -> bool:
+        """No vertex of the polytope lies outside the ball (or the chart is a frontier)."""
         return self.frontier or self.polytope.exterior(self.radius).size == 0
 
 
@@ -421,6 +623,28 @@ class Atlas:
     polytopes as planes only (:class:`Polytope`): charts can then be tested for membership
     but not expanded (:meth:`grow`), as AtlasRRT uses them.
 
+    Parameters
+    ----------
+    manifold : ImplicitManifold
+    x0 : array_like, shape (n,)
+        A point of the manifold: the centre of the first chart.
+    radius : float
+        Chart radius (the resolution of the atlas).
+    epsilon : float, optional
+        ``0 < epsilon < 1``: the largest distance between a tangent point and its
+        projection, and tangent-space change, of a chart and its child.
+    min_step : float, optional
+        The fraction of ``radius`` below which a direction is abandoned.
+    metric : array_like of int, optional
+        The coordinates in which edge costs are measured (default all).
+    vertices : bool, optional
+        Keep the polytopes' vertices, as :meth:`grow` needs.
+
+    Raises
+    ------
+    TautError
+        ``x0`` not on the manifold (or not a point of its box's size), or bad options.
+
     References
     ----------
     .. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
@@ -429,6 +653,17 @@ class Atlas:
     .. [2] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
        Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
        Mechanisms and Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    The unit circle covered by charts of radius 0.5 (steps shrink with the curvature):
+
+    >>> import numpy as np
+    >>> from taut.planning import Atlas, ImplicitManifold
+    >>> circle = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 1)
+    >>> atlas = Atlas(circle, [1.0, 0.0], radius=0.5)
+    >>> atlas.complete(), len(atlas.charts)
+    (True, 24)
     """
 
     def __init__(

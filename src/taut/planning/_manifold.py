@@ -61,6 +61,7 @@ if TYPE_CHECKING:
 
 __all__ = ["POSE_NAMES", "WrenchFeasibleManifold", "rotation_derivatives"]
 
+#: Names of the pose coordinates of the planner: position, then tilt-and-torsion angles.
 POSE_NAMES = ("x", "y", "z", "phi", "theta", "sigma")
 
 # variable blocks of x
@@ -144,12 +145,57 @@ class WrenchFeasibleManifold:
     (the set ``(ŵ − ŵ_0)ᵀ E (ŵ − ŵ_0) ≤ 1``), tension and length bounds, and the pose
     coordinates ``fixed`` (names of :data:`POSE_NAMES` → value) of a slice.
 
+    Parameters
+    ----------
+    a, b : array_like, shape (6, 3)
+        Base (exit) points and platform points [m].
+    w0 : array_like, shape (6,)
+        Nominal wrench ``ŵ_0`` on the platform, about ``wrench_point``.
+    E : array_like, shape (6, 6)
+        Symmetric positive definite matrix of the wrench ellipsoid.
+    f_min, f_max : array_like, shape (6,) or scalar
+        Tension bounds [N] (``f_max`` finite).
+    rho_min, rho_max : array_like, shape (6,) or scalar
+        Length bounds [m], ``0 < ρ_min < ρ_max``.
+    wrench_point : array_like, shape (3,), optional
+        Platform point of the nominal wrench.
+    fixed : mapping of str to float, optional
+        The fixed pose coordinates of a slice.
+    slack_max : float, optional
+        Upper bound of ``s_i, t_i, g_i`` that keeps atlases finite.
+    weights : tuple of float, optional
+        Scales of the variable blocks in the coordinates of :meth:`implicit`.
+    phi_window : (float, float), optional
+        Canonical window of ``φ``, of length 2π.
+
+    Raises
+    ------
+    TautError
+        Arrays of the wrong size, an ``E`` that is not positive definite, or bounds that do
+        not bracket a feasible set.
+    PoseError
+        Fixed coordinates that are not pose coordinates with finite values.
+
     References
     ----------
     .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
        Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
        Mechanisms and Machine Science 12, Springer, 2013, §2–3, Eqs. 1–8.
        (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    The slice of the Robocrane's experiment 1 (§5): position and torsion fixed, ``(φ, θ)``
+    free.
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.planning import WrenchFeasibleManifold
+    >>> robot = example("robocrane")
+    >>> M = WrenchFeasibleManifold.from_robot(robot, fixed=dict(x=0.0, y=0.0, z=2.0, sigma=7 * np.pi / 36))
+    >>> y = M.lift(robot.reference.poses["q1"])
+    >>> M.dim, np.round(M.pose(y), 4)
+    (2, array([ 0.    ,  0.    ,  2.    , -0.5   ,  0.9   ,  0.6109]))
     """
 
     a: np.ndarray
@@ -216,10 +262,32 @@ class WrenchFeasibleManifold:
     def from_robot(
         cls, robot: Robot, *, E: np.ndarray | None = None, fixed: Mapping[str, float] | None = None, **kw: Any
     ) -> WrenchFeasibleManifold:
-        """The manifold of a 6-cable spatial robot file: exits ``a``, anchors ``b``, the
+        """The manifold of a 6-cable spatial robot: exits ``a``, anchors ``b``, the
         platform's constant ``wrench`` about ``wrench_point`` as ``ŵ_0``, the cables'
         tension and length bounds (a zero lower length bound becomes 1e-6: Eq. (8) needs
-        ``ρ_min > 0``), and ``E`` (default ``10⁴ I``, §5)."""
+        ``ρ_min > 0``).
+
+        Parameters
+        ----------
+        robot : Robot
+            A rigid 6-cable spatial robot in tilt-and-torsion angles with a constant
+            platform wrench.
+        E : array_like, shape (6, 6), optional
+            The wrench ellipsoid matrix (default ``10⁴ I``, §5).
+        fixed : mapping of str to float, optional
+            The fixed pose coordinates of a slice (:data:`POSE_NAMES`).
+        **kw
+            Further fields (``slack_max``, ``weights``, ``phi_window``).
+
+        Returns
+        -------
+        WrenchFeasibleManifold
+
+        Raises
+        ------
+        TautError
+            A robot the planner does not handle.
+        """
         refuse_swivels(robot, "wrench-feasible path planning")
         if robot.dimension != 3 or robot.n_cables != 6 or robot.is_point_mass or robot.n_joints:
             raise TautError(f"{robot.name}: wrench-feasible path planning needs a rigid 6-cable spatial robot")

@@ -55,13 +55,59 @@ def plan_path(
     shorten: bool = False,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> PathResult:
-    """A path on ``manifold`` from ``start`` to ``goal`` by ``method``.
+    """A path on a manifold between two of its points, by A* over a growing atlas or by
+    AtlasRRT.
 
-    ``"astar"``: A* over a growing atlas (complete: ``exhausted`` proves that no path exists
-    at the resolution ``radius``; ``spacing`` of the refined path); ``"atlasrrt"``: AtlasRRT
-    (randomised, deterministic for a ``seed``; ``step``, ``bidirectional``, ``goal_bias``,
-    ``max_nodes``, ``time_limit``, ``shorten``).  ``radius`` defaults to :data:`RADIUS`
-    of the method.
+    Parameters
+    ----------
+    manifold : ImplicitManifold
+        E.g. :meth:`WrenchFeasibleManifold.implicit`.
+    start, goal : array_like, shape (n,)
+        Points of the manifold (:meth:`WrenchFeasibleManifold.lift` of two poses).
+    method : {"astar", "atlasrrt"}, optional
+        ``"astar"`` (:data:`METHODS`): A* over the charts of a growing atlas, complete —
+        when the start's component is exhausted without reaching the goal, no path exists
+        at the resolution ``radius`` (``exhausted``).  ``"atlasrrt"``: rapidly exploring
+        trees grown on an atlas, randomised, deterministic for a ``seed``; it cannot prove
+        that no path exists.
+    radius : float, optional
+        Chart radius (default :data:`RADIUS` of the method).
+    epsilon : float, optional
+        Validity of a chart: distance between a tangent point and its projection, and
+        tangent-space change (:class:`Atlas`).
+    metric : array_like of int, optional
+        The coordinates in which lengths are measured (e.g.
+        :attr:`WrenchFeasibleManifold.pose_metric`; default all).
+    max_charts : int, optional
+        Chart budget (default :data:`MAX_CHARTS`).
+    max_nodes : int, optional
+        AtlasRRT's tree-node budget (default :data:`MAX_NODES`).
+    spacing : float, optional
+        A*: the largest step of the refined path (default ``radius / 4``).
+    step : float, optional
+        AtlasRRT: the step ``δ`` of the trees (default ``radius / 4``).
+    seed : int or numpy.random.Generator, optional
+        AtlasRRT: the random samples.
+    bidirectional : bool, optional
+        AtlasRRT: grow a tree from the goal too (RRT-Connect).
+    goal_bias : float, optional
+        AtlasRRT, one tree: the probability of extending toward the goal.
+    time_limit : float, optional
+        AtlasRRT: seconds before giving up.
+    shorten : bool, optional
+        AtlasRRT: shorten the path by random shortcuts (:func:`shorten_path`).
+    progress : callable, optional
+        ``progress(done, None)`` as the search goes (charts expanded by A*, tree nodes of
+        AtlasRRT), ``progress(done, done)`` at the end.
+
+    Returns
+    -------
+    PathResult
+
+    Raises
+    ------
+    TautError
+        An unknown method, start or goal off the manifold, or a bad option.
 
     References
     ----------
@@ -71,6 +117,17 @@ def plan_path(
     .. [2] L. Jaillet, J. M. Porta, "Path planning under kinematic constraints by rapidly
        exploring manifolds", IEEE Transactions on Robotics 29(1), 2013, Algs. 1–4.
        (docs/references.bib: jaillet2013)
+
+    Examples
+    --------
+    A quarter of a great circle of the unit sphere (length π/2 ≈ 1.571):
+
+    >>> import numpy as np
+    >>> from taut.planning import ImplicitManifold, plan_path
+    >>> sphere = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
+    >>> a, b = [1.0, 0, 0], [0, 1.0, 0]
+    >>> [round(plan_path(sphere, a, b, method=m, radius=0.3).length, 3) for m in ("astar", "atlasrrt")]
+    [1.859, 1.571]
     """
     if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown planning method {method!r}; expected one of {', '.join(METHODS)}")

@@ -40,6 +40,54 @@ __all__ = ["PathResult", "astar", "continuous", "refine_path"]
 
 @dataclass(frozen=True)
 class PathResult(Result):
+    """A path on a manifold, or why there is none (:func:`taut.planning.plan_path`).
+
+    Attributes
+    ----------
+    found : bool
+        A path from the start to the goal was found.
+    path : ndarray, shape (N, n)
+        Points on the manifold, start to goal, continuous across its symmetry (empty if
+        not found).
+    charts : int
+        Charts in the atlas when the search stopped.
+    expanded : int
+        Charts closed by A* (0 for AtlasRRT).
+    exhausted : bool
+        A* closed every chart of the start's component: ``found=False`` is then a proof
+        that no path exists at the resolution of the chart radius.
+    length : float
+        Length of ``path`` in the atlas metric (NaN when not found).
+    elapsed_s : float
+        Wall-clock time [s].
+    atlas : Atlas
+        The atlas the search grew.
+    method : str
+        ``"astar"`` or ``"atlasrrt"``.
+    nodes : int
+        Tree nodes grown by AtlasRRT (0 for A*).
+    complete : bool
+        The question is settled: ``found`` or ``exhausted`` (a property).
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
+    .. [2] L. Jaillet, J. M. Porta, "Path planning under kinematic constraints by rapidly
+       exploring manifolds", IEEE Transactions on Robotics 29(1), 2013, Algs. 1–4.
+       (docs/references.bib: jaillet2013)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.planning import ImplicitManifold, plan_path
+    >>> sphere = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
+    >>> res = plan_path(sphere, [1.0, 0, 0], [0, 1.0, 0], radius=0.3)
+    >>> res.found, res.complete, res.method, round(res.length, 3)
+    (True, True, 'astar', 1.859)
+    """
+
     found: bool
     path: np.ndarray  #: ``(N, n)`` points on the manifold, start to goal (empty if not found)
     charts: int  #: charts in the atlas when the search stopped
@@ -86,8 +134,48 @@ def _segment(atlas: Atlas, i: int, u0: np.ndarray, u1: np.ndarray, spacing: floa
 
 
 def refine_path(atlas: Atlas, charts: list[int], goal: np.ndarray, *, spacing: float) -> np.ndarray:
-    """Manifold points along the chart sequence ``charts`` (starting at the start chart's
-    centre), ending at ``goal`` reached through the last chart."""
+    """Manifold points along a sequence of charts, ending at a goal reached through the
+    last one (module docstring).
+
+    Parameters
+    ----------
+    atlas : Atlas
+    charts : list of int
+        Chart indices, each adjacent to the next; the path starts at the first one's
+        centre.
+    goal : array_like, shape (n,)
+        A manifold point covered by the last chart.
+    spacing : float
+        Largest step between points, in tangent coordinates.
+
+    Returns
+    -------
+    ndarray, shape (N, n)
+        Continuous across the manifold's symmetry, ending at ``goal``.
+
+    Raises
+    ------
+    TautError
+        Charts that are not the atlas's, a bad ``spacing``, or a chart map that fails.
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.planning import Atlas, ImplicitManifold, refine_path
+    >>> sphere = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
+    >>> atlas = Atlas(sphere, [0, 0, 1.0], radius=0.5)
+    >>> np.round(refine_path(atlas, [0], [0.3, 0, np.sqrt(0.91)], spacing=0.1), 3)
+    array([[0.   , 0.   , 1.   ],
+           [0.1  , 0.   , 0.995],
+           [0.2  , 0.   , 0.98 ],
+           [0.3  , 0.   , 0.954]])
+    """
     spacing = as_number(spacing, "spacing", positive=True)
     goal = as_array(goal, "the goal point", shape=(atlas.centres.shape[1],))
     if not charts or any(not 0 <= c < len(atlas.charts) for c in charts):

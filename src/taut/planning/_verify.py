@@ -34,6 +34,37 @@ __all__ = ["PathCheck", "interpolate_poses", "verify_path"]
 
 @dataclass(frozen=True)
 class PathCheck(Result):
+    """The independent check of a path (:func:`verify_path`).
+
+    Attributes
+    ----------
+    poses : ndarray, shape (N, 6)
+        The interpolated poses.
+    feasible : ndarray of bool, shape (N,)
+        Wrench-feasible, with the cable lengths strictly inside their bounds.
+    lengths : ndarray, shape (N, 6)
+        Cable lengths [m].
+    all_feasible : bool
+        Every pose is feasible (a property).
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §5, Fig. 6.
+       (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.planning import verify_path
+    >>> robot = example("robocrane")
+    >>> q = robot.reference.poses
+    >>> check = verify_path(robot, [q["q1"], q["q2"]], subdivide=4)
+    >>> check.poses.shape, check.feasible.tolist()
+    ((5, 6), [True, False, False, False, True])
+    """
+
     poses: np.ndarray  #: ``(N, 6)`` interpolated poses
     feasible: np.ndarray  #: ``(N,)`` wrench-feasible and lengths inside their bounds
     lengths: np.ndarray  #: ``(N, 6)``
@@ -64,7 +95,30 @@ def interpolate_poses(poses: npt.ArrayLike, subdivide: int) -> np.ndarray:
 def verify_path(
     robot: Robot, poses: npt.ArrayLike, *, E: npt.ArrayLike | None = None, subdivide: int = 10
 ) -> PathCheck:
-    """Check every interpolated pose of ``poses`` for wrench feasibility (module doc).
+    """Check every interpolated pose of a path for wrench feasibility (module docstring),
+    independently of the planner's equations.
+
+    Parameters
+    ----------
+    robot : Robot
+        A rigid 6-cable spatial robot with a constant platform wrench.
+    poses : array_like, shape (M, 6) or (6,)
+        The path's poses ``x, y, z, φ, θ, σ`` [m, rad].
+    E : array_like, shape (6, 6), optional
+        The wrench ellipsoid ``(ŵ − ŵ_0)ᵀ E (ŵ − ŵ_0) ≤ 1`` (default ``10⁴ I``, §5).
+    subdivide : int, optional
+        Poses per segment of the path, linearly interpolated (its end included).
+
+    Returns
+    -------
+    PathCheck
+
+    Raises
+    ------
+    PoseError
+        Poses that are not rows of six finite numbers.
+    TautError
+        A bad ``E`` or ``subdivide``.
 
     References
     ----------
@@ -72,6 +126,18 @@ def verify_path(
        Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
        Mechanisms and Machine Science 12, Springer, 2013, §5, Fig. 6.
        (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    The reference pose q1 of the Robocrane is wrench-feasible; the straight line to q2 is
+    not (Bohigas et al. 2013, §5).
+
+    >>> from taut.model import example
+    >>> from taut.planning import verify_path
+    >>> robot = example("robocrane")
+    >>> q = robot.reference.poses
+    >>> verify_path(robot, q["q1"]).all_feasible, verify_path(robot, [q["q1"], q["q2"]]).all_feasible
+    (True, False)
     """
     E = 1e4 * np.eye(6) if E is None else as_array(E, "E", shape=(6, 6))
     P = as_array(poses, "poses", error=PoseError)

@@ -40,10 +40,41 @@ from taut.wrapping._update import track_cable_state
 
 
 def collidable_objects(robot: Robot) -> tuple[np.ndarray, list[np.ndarray]]:
-    """``(circles (K, 3), disallowed polygons)`` of a planar robot: circle obstacles,
-    polygon obstacles as zero-radius vertices plus their interior, and the robot's
-    disallowed regions.  Raises :class:`TautError` if two objects overlap or an object
-    overlaps a winch pulley."""
+    """The objects a planar robot's cables can wrap, and the regions they must not enter.
+
+    Parameters
+    ----------
+    robot : Robot
+        A planar robot.
+
+    Returns
+    -------
+    circles : ndarray, shape (K, 3)
+        ``(x, y, r)`` [m]: the circle obstacles, then every vertex of each polygon obstacle
+        as a zero-radius object (§4.1).
+    disallowed : list of ndarray, shape (V, 2)
+        The robot's disallowed regions, then the interior of each polygon obstacle.
+
+    Raises
+    ------
+    TautError
+        A spatial robot, two objects that overlap, or an object overlapping a winch pulley.
+    UnsupportedRobotError
+        A swivelling pulley.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.1. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.wrapping import collidable_objects
+    >>> circles, disallowed = collidable_objects(example("vscr-single-cable"))
+    >>> circles.shape, len(disallowed)
+    ((3, 3), 0)
+    """
     refuse_swivels(robot, "cable wrapping")
     if robot.dimension != 2:
         raise TautError(f"{robot.name}: cable wrapping is implemented for planar robots (dimension 2)")
@@ -89,7 +120,43 @@ def _check_inside(robot: Robot, circles: np.ndarray, polys: list, anchors: np.nd
 
 @dataclass(frozen=True)
 class WrappedIK(Result):
-    """VSCR inverse kinematics over ``T`` poses of a robot with ``n`` cables."""
+    """VSCR inverse kinematics over ``T`` poses of a robot with ``n`` cables
+    (:func:`wrapped_inverse_kinematics`).
+
+    Attributes
+    ----------
+    poses : ndarray, shape (T, pose_size)
+    anchors : ndarray, shape (T, n, 2)
+        Platform anchors ``b_i`` [m].
+    lengths : ndarray, shape (T, n)
+        Cable lengths [m] (Eq. 4.9).
+    nodes : ndarray of int, shape (T, n)
+        The tracked node of each cable's state tree.
+    directions : ndarray, shape (T, n, 2)
+        Unit vectors ``u_i`` from the anchor to the last contact.
+    exit_points : ndarray, shape (T, n, 2)
+        Where each active segment leaves its last object.
+    structure_matrix : ndarray, shape (T, m, n)
+    events : tuple of ndarray, shape (E, 4)
+        Per cable, rows ``(sample, fraction, kind, node)`` (:class:`Tracking`).
+    trees : tuple of CableStateTree
+        Each cable's state tree.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.3, Eqs. 4.8–4.9. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.wrapping import wrapped_inverse_kinematics
+    >>> robot = example("vscr-single-cable")
+    >>> ik = wrapped_inverse_kinematics(robot, [[0.0, 2.0], [4.0, 0.5]])
+    >>> np.round(ik.lengths[:, 0], 4), ik.contacts(1, 0)
+    (array([2.    , 4.8683]), ((0, -1),))
+    """
 
     poses: np.ndarray  #: ``(T, pose_size)``
     anchors: np.ndarray  #: ``(T, n, 2)`` platform anchors ``b_i``
@@ -161,15 +228,49 @@ def _reference_angle(tree: CableStateTree, node: int, b: npt.ArrayLike) -> float
 def wrapped_inverse_kinematics(
     robot: Robot, poses: npt.ArrayLike, *, initial: Mapping[int, Sequence[tuple[int, int]]] | None = None
 ) -> WrappedIK:
-    """Track every cable of a planar VSCR along ``poses`` (``(T, pose_size)``, consecutive
-    poses joined by straight moves of the anchors) and compute lengths and structure
-    matrices (§4.3).  ``initial`` maps a 0-based cable index to its starting state
-    ``[(object index, ±1), ...]``; a start state that is not taut raises :class:`TautError`.
+    """Inverse kinematics of a planar variable-structure robot along a path: every cable's
+    state tracked, its length and the structure matrix (§4.3).
+
+    Parameters
+    ----------
+    robot : Robot
+        A planar robot.
+    poses : array_like, shape (T, pose_size)
+        Consecutive poses, joined by straight moves of the anchors.
+    initial : mapping of int to sequence of (int, int), optional
+        0-based cable index → its starting state ``[(object index, ±1), ...]``; by default
+        the shortest taut state at the first pose.
+
+    Returns
+    -------
+    WrappedIK
+
+    Raises
+    ------
+    PoseError
+        Bad poses, or an anchor inside an object.
+    CableSetError
+        ``initial`` of cables the robot does not have.
+    TautError
+        A start state that is not taut or not a state of the cable, or overlapping objects.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §4.3, Alg. 4.4, Eq. 4.9. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    The single-cable robot of §4.4 moving straight from ``(0, 2)`` to ``(4, 0.5)``: its
+    cable wraps the first disc clockwise.
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.wrapping import wrapped_inverse_kinematics
+    >>> robot = example("vscr-single-cable")
+    >>> ik = wrapped_inverse_kinematics(robot, [[0.0, 2.0], [4.0, 0.5]])
+    >>> ik.contacts(0, 0), ik.contacts(1, 0), ik.structure_matrix.shape
+    ((), ((0, -1),), (2, 2, 1))
     """
     arr, _ = as_poses(robot, poses)
     initial = initial or {}

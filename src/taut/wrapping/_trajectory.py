@@ -72,9 +72,45 @@ DT = 0.01
 def sample_waypoints(
     waypoints: npt.ArrayLike, *, speed: float = DEFAULT_SPEED, dwell: float = DWELL, dt: float = DT
 ) -> tuple[np.ndarray, np.ndarray]:
-    """``(times (T,), poses (T, k))`` of straight moves at ``speed`` between waypoints with
-    a ``dwell`` at each (the first waypoint included), sampled every ``dt`` (each move and
-    dwell is divided into a whole number of equal steps no longer than ``dt``)."""
+    """Samples of straight moves at constant speed between waypoints, with a rest at each
+    (§6.2).
+
+    Parameters
+    ----------
+    waypoints : array_like, shape (K, k)
+        Positions or poses; the moves' lengths are measured in the first two coordinates.
+    speed : float, optional
+        [m/s] (default :data:`DEFAULT_SPEED`).
+    dwell : float, optional
+        Rest [s] at each waypoint, the first one included (default 1 s, as in §6.2).
+    dt : float, optional
+        Largest sample step [s]: each move and rest is divided into a whole number of equal
+        steps no longer than ``dt``.
+
+    Returns
+    -------
+    times : ndarray, shape (T,)
+        [s], from 0.
+    poses : ndarray, shape (T, k)
+
+    Raises
+    ------
+    TautError
+        No waypoint, numbers that are not finite, bad options, or more than
+        :data:`MAX_SAMPLES` samples.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §6.2. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> from taut.wrapping import sample_waypoints
+    >>> times, poses = sample_waypoints([[0, 0], [0.2, 0]], speed=0.1, dwell=0.0, dt=0.5)
+    >>> times.tolist(), poses[:, 0].tolist()
+    ([0.0, 0.5, 1.0, 1.5, 2.0], [0.0, 0.05, 0.1, 0.15, 0.2])
+    """
     W = as_array(waypoints, "waypoints")
     if W.ndim != 2 or len(W) < 1:
         raise TautError("a trajectory needs at least one waypoint")
@@ -126,8 +162,49 @@ def builtin_trajectory(
     speed: float | None = None,
     dwell: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """``(times, poses)`` of a named trajectory of ``robot`` (its first one by default):
-    the parametric path of :data:`PARAMETRIC` if the name is one, else its waypoints."""
+    """The samples of one of a robot's named trajectories: the parametric path of
+    :data:`PARAMETRIC` (Eqs. 4.12–4.13) if the name is one, else its waypoints
+    (:func:`sample_waypoints`).
+
+    Parameters
+    ----------
+    robot : Robot
+    name : str, optional
+        A key of ``robot.trajectories`` (default the first one).
+    dt : float, optional
+        Largest sample step [s].
+    speed : float, optional
+        [m/s] of a waypoint trajectory (default its own, else :data:`DEFAULT_SPEED`).
+    dwell : float, optional
+        Rest [s] at each waypoint (default its own).
+
+    Returns
+    -------
+    times : ndarray, shape (T,)
+    poses : ndarray, shape (T, k)
+
+    Raises
+    ------
+    TautError
+        No trajectory of that name, or bad options.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.4 (Eqs. 4.12–4.13), §6.2. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    Eq. (4.12) of the single-cable robot, ``p(t) = (t, 1 + cos(2πt/3))`` for ``0 ≤ t ≤ 4``:
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.wrapping import builtin_trajectory, run_trajectory
+    >>> robot = example("vscr-single-cable")
+    >>> times, poses = builtin_trajectory(robot, dt=0.05)
+    >>> len(times), poses[0].tolist(), np.round(poses[-1], 3)
+    (81, [0.0, 2.0], array([4. , 0.5]))
+    """
     if not robot.trajectories:
         raise TautError(f"{robot.name} has no built-in trajectory; give --waypoints FILE")
     name = name or next(iter(robot.trajectories))
@@ -143,7 +220,29 @@ def builtin_trajectory(
 
 
 def full_poses(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
-    """Waypoints given as positions become poses with zero orientation and joints."""
+    """Waypoints given as positions become poses with zero orientation and joints.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (K, dimension) or (K, pose_size)
+
+    Returns
+    -------
+    ndarray, shape (K, pose_size)
+
+    Raises
+    ------
+    PoseError
+        Rows that are neither positions nor poses of the robot.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.wrapping import full_poses
+    >>> full_poses(example("vscr-rigid-t-shaped"), [[0.1, 0.2]])
+    array([[0.1, 0.2, 0. ]])
+    """
     P = np.atleast_2d(as_array(poses, "waypoints", error=PoseError))
     if P.ndim != 2:
         raise PoseError(f"{robot.name}: waypoints are rows of coordinates, got an array of shape {P.shape}")
@@ -177,7 +276,40 @@ def length_controlled(ik: WrappedIK, m: int) -> np.ndarray:
 
 @dataclass(frozen=True)
 class TrajectoryResult(Result):
-    """A VSCR trajectory: samples, IK, tensions and transitions."""
+    """A VSCR trajectory: samples, inverse kinematics, tensions and transitions
+    (:func:`run_trajectory`).
+
+    Attributes
+    ----------
+    times : ndarray, shape (T,)
+        [s].
+    ik : WrappedIK
+    tensions : ndarray, shape (T, n)
+        Minimum-sum tensions [N] (zeros where infeasible).
+    feasible : ndarray of bool, shape (T,)
+        A tension distribution exists.
+    controlled : ndarray of bool, shape (T, n)
+        The length-controlled cables (§6.1.2).
+    transitions : tuple of dict
+        Wraps and unwraps in time order: ``{"time", "sample", "cable", "kind", "object"}``
+        (0-based cable and object indices).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.4, §6.2. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.wrapping import builtin_trajectory, run_trajectory
+    >>> robot = example("vscr-single-cable")
+    >>> times, poses = builtin_trajectory(robot, dt=0.05)
+    >>> res = run_trajectory(robot, times, poses)
+    >>> [(e["kind"], e["object"]) for e in res.transitions], bool(res.feasible.all())
+    ([('wrap', 0), ('wrap', 1), ('wrap', 2)], True)
+    """
 
     times: np.ndarray  #: ``(T,)`` [s]
     ik: WrappedIK
@@ -189,9 +321,13 @@ class TrajectoryResult(Result):
 
     @property
     def lengths(self) -> np.ndarray:
+        """``(T, n)`` cable lengths [m]."""
         return self.ik.lengths
 
     def summary(self) -> dict:
+        """What ``taut trajectory`` reports, with 0-based cables and objects: ``samples``,
+        ``duration``, ``lengths``, ``transitions``, ``tension_feasible`` and
+        ``infeasible_samples``."""
         return {
             "samples": int(len(self.times)),
             "duration": float(self.times[-1] - self.times[0]),
@@ -216,12 +352,51 @@ def run_trajectory(
     wrench: npt.ArrayLike | None = None,
     tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
 ) -> TrajectoryResult:
-    """IK, length-control assignment and LP tensions at every sample of ``(times, poses)``.
+    """Inverse kinematics, length-controlled cables and tensions at every sample of a
+    trajectory of a planar variable-structure robot (§6.1.2).
+
+    Parameters
+    ----------
+    robot : Robot
+        A planar robot.
+    times : array_like, shape (T,)
+        [s].
+    poses : array_like, shape (T, pose_size) or (T, dimension)
+        Poses, or positions (zero orientation and joints).
+    initial : mapping of int to sequence of (int, int), optional
+        Starting cable states (:func:`wrapped_inverse_kinematics`).
+    wrench : array_like, shape (m,) or (T, m), optional
+        External wrench on the platform (default the robot's own).
+    tension_bounds : (array_like, array_like), optional
+        ``(tmin, tmax)`` (default the cables' own).
+
+    Returns
+    -------
+    TrajectoryResult
+
+    Raises
+    ------
+    PoseError
+        Bad poses, or an anchor inside an object.
+    TautError
+        Times that do not match the poses, a bad wrench or tension bounds, or a start state
+        that is not taut.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
-       of Waterloo, 2022, §4.4, §6.2. (docs/references.bib: rushton2022)
+       of Waterloo, 2022, §4.4, §6.1.2, §6.2. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.wrapping import builtin_trajectory, run_trajectory
+    >>> robot = example("vscr-single-cable")
+    >>> times, poses = builtin_trajectory(robot, dt=0.05)
+    >>> res = run_trajectory(robot, times, poses)
+    >>> np.round(res.lengths[[0, -1], 0], 3), len(res.transitions)
+    (array([2.   , 5.191]), 3)
     """
     times = as_array(times, "times", shape=(None,))
     if tension_bounds is not None and (not isinstance(tension_bounds, (tuple, list)) or len(tension_bounds) != 2):

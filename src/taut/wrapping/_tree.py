@@ -72,17 +72,43 @@ def checked_contacts(contacts: object, n_objects: int) -> list[tuple[int, int]]:
 
 
 class CableStateTree:
-    """The CST of one cable.
+    """The cable-state tree of one cable (module docstring), expanded as needed.
 
-    ``circles`` ``(K + 1, 3)``: ``(x, y, r)`` of the ``K`` collidable objects followed by
-    the winch pulley (radius 0 for a point exit); ``winch_direction`` ``±1``;
-    ``disallowed`` a list of polygons ``(V, 2)``; ``reference_angle`` the winch-pulley
-    angle from which the pulley arc is counted (:mod:`taut.wrapping._state`).
+    Parameters
+    ----------
+    circles : array_like, shape (K + 1, 3)
+        ``(x, y, r)`` [m] of the ``K`` collidable objects followed by the winch pulley
+        (radius 0 for a point exit).
+    winch_direction : int, optional
+        +1 (counter-clockwise) or −1.
+    disallowed : iterable of array_like, shape (V, 2), optional
+        Polygons the cable must not enter.
+    reference_angle : float, optional
+        Winch-pulley angle [rad] from which the pulley arc is counted
+        (:mod:`taut.wrapping._state`).
+
+    Raises
+    ------
+    TautError
+        Circles that are not rows ``(x, y, r ≥ 0)``, or a bad direction or polygon.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §4.2.1, Algs. 4.2–4.3. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    The root (node 0) has two children, the disc wrapped either way; the cable to ``(0, 2)``
+    must wrap it:
+
+    >>> from taut.wrapping import CableStateTree
+    >>> tree = CableStateTree([[0.0, 1.0, 0.2], [0.0, 0.0, 0.0]])  # one disc, then a point winch
+    >>> [tree.contacts(int(c)) for c in tree.children(0)]
+    [((0, 1),), ((0, -1),)]
+    >>> node = tree.shortest_taut_state([0.0, 2.0])
+    >>> tree.contacts(node), round(tree.length(node, [0.0, 2.0]), 4)
+    (((0, 1),), 2.0401)
     """
 
     def __init__(
@@ -158,6 +184,7 @@ class CableStateTree:
         return tuple((int(self.I[n, OBJ]), int(self.F[n, DIR])) for n in self.path(node)[1:])
 
     def state(self, node: int) -> CableState:
+        """The cable state of ``node``."""
         return CableState(self.contacts(node), self.reference_angle)
 
     def static_segments(self, node: int) -> np.ndarray:
