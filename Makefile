@@ -20,14 +20,18 @@ install: $(STAMP)
 demo: $(STAMP)
 	$(VENV)/bin/taut demo --out report
 
+# pytest-xdist: one worker per core (-n auto); worksteal hands the tail of a worker's queue to
+# whichever worker is idle, so that the minute-long tests do not leave a core waiting
+XDIST := -n auto --dist worksteal
+
 test: $(STAMP)
-	$(PY) -m pytest -q
+	$(PY) -m pytest -q $(XDIST) --durations=20
 
 test-slow: $(STAMP)
-	$(PY) -m pytest -q -m slow
+	$(PY) -m pytest -q $(XDIST) --durations=20 -m slow
 
 test-all: $(STAMP)
-	$(PY) -m pytest -q -m ''
+	$(PY) -m pytest -q $(XDIST) --durations=20 -m ''
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks

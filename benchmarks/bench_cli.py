@@ -20,7 +20,7 @@ import sys
 import time
 
 #: The console script ``taut`` does exactly this: import the CLI and call its entry point.
-TAUT = [sys.executable, "-c", "from taut.cli.main import entry; entry()"]
+TAUT = [sys.executable, "-c", "from taut.cli._main import entry; entry()"]
 
 COMMANDS = [
     ("taut --help", ["--help"], 0.3),

@@ -240,3 +240,78 @@ def test_no_import_cycles():
 def test_cycles_are_detected():
     graph = {"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}, "e": set()}
     assert cycles(graph) == [["a", "b", "c"]]
+
+
+#: What a viz module may import at run time (§1, the row of viz): the robot and the geometry
+#: of a pose.  The results it draws come in as arguments; their classes are named in
+#: annotations only, imported under ``if TYPE_CHECKING:``.  So viz cannot run a solver.
+VIZ_RUNTIME = {"_lazy", "errors", "geometry", "model", "kinematics", "viz"}
+
+
+def _is_type_checking(test: ast.expr) -> bool:
+    return ast.unparse(test) in ("TYPE_CHECKING", "typing.TYPE_CHECKING")
+
+
+def _runtime_imports(source: str):
+    """``(line, taut module, names)`` of every import of taut in ``source`` that runs:
+    module level and inside functions, not the body of ``if TYPE_CHECKING:``."""
+    found = []
+
+    def visit(node: ast.AST) -> None:
+        if isinstance(node, ast.If) and _is_type_checking(node.test):
+            for child in node.orelse:
+                visit(child)
+            return
+        if isinstance(node, ast.ImportFrom) and node.module and node.module.split(".")[0] == "taut":
+            found.append((node.lineno, node.module, [a.name for a in node.names]))
+        elif isinstance(node, ast.Import):
+            found.extend((node.lineno, a.name, []) for a in node.names if a.name.split(".")[0] == "taut")
+        for child in ast.iter_child_nodes(node):
+            visit(child)
+
+    visit(ast.parse(source))
+    return found
+
+
+def _viz_violations(source: str) -> list[str]:
+    bad = []
+    for line, module, names in _runtime_imports(source):
+        parts = module.split(".")
+        if len(parts) == 1:  # ``from taut import __version__``: dunder names of the package only
+            ok = bool(names) and all(n.startswith("__") for n in names)
+        else:
+            ok = parts[1] in VIZ_RUNTIME
+        if not ok:
+            bad.append(f"line {line}: {module} {names}")
+    return bad
+
+
+def test_viz_rule_is_detected():
+    source = (
+        "from typing import TYPE_CHECKING\n"
+        "from taut.model import Robot\n"
+        "from taut import __version__\n"
+        "if TYPE_CHECKING:\n"
+        "    from taut.dgp import DGPSolution\n"
+        "else:\n"
+        "    import taut.planning\n"
+        "def f():\n"
+        "    from taut.dgp import solve_dgp\n"
+        "    from taut import example\n"
+    )
+    assert _viz_violations(source) == [
+        "line 7: taut.planning []",
+        "line 9: taut.dgp ['solve_dgp']",
+        "line 10: taut ['example']",
+    ]
+
+
+VIZ = [p for p in FILES if _top(p) == "viz"]
+
+
+@pytest.mark.parametrize("path", VIZ, ids=[str(p.relative_to(SRC)) for p in VIZ])
+def test_viz_only_draws(path):
+    """viz imports no solver, planner, simulation or atlas builder (§1): the demo and the
+    command line compute, viz draws what they pass."""
+    bad = _viz_violations(path.read_text())
+    assert not bad, f"{path.relative_to(SRC)} imports at run time beyond {sorted(VIZ_RUNTIME)}: {bad}"

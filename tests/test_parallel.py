@@ -24,11 +24,21 @@ def _fail(x):
     return x
 
 
-def _reference():
+@pytest.fixture(scope="module")
+def reference():
+    """The serial workspaces that every executor must reproduce."""
     return {
         "planar": evaluate_workspace(PLANAR, "wrench-feasible", resolution=40),
         "spatial": evaluate_workspace(SPATIAL, "static", resolution=9),
     }
+
+
+@pytest.fixture(scope="module")
+def cluster():
+    """One local dask cluster of two worker processes for the module (it takes seconds to start)."""
+    distributed = pytest.importorskip("distributed")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as c:
+        yield c
 
 
 def _run_all(executor):
@@ -79,51 +89,49 @@ def test_unreachable_scheduler_is_a_clear_error():
         get_executor(scheduler="tcp://127.0.0.1:9", timeout=1.0)
 
 
-def test_processes_give_identical_results():
-    ref = _reference()
+def test_processes_give_identical_results(reference):
     with get_executor(workers=2) as ex:
         seen = []
         assert ex.map(_square, range(6), callback=seen.append) == [0, 1, 4, 9, 16, 25]
         assert sorted(seen) == list(range(6))
         with pytest.raises(TautError, match="item 3"):
             ex.map(_fail, range(5))
-        _assert_same(_run_all(ex), ref)
+        _assert_same(_run_all(ex), reference)
 
 
-def test_dask_local_cluster_gives_identical_results():
-    distributed = pytest.importorskip("distributed")
-    ref = _reference()
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
-        ex = get_executor(scheduler=cluster.scheduler_address)
-        try:
-            assert isinstance(ex, DaskExecutor)
-            calls = []
-            got = {
-                "planar": evaluate_workspace(
-                    PLANAR,
-                    "wrench-feasible",
-                    resolution=40,
-                    executor=ex,
-                    chunk=300,
-                    progress=lambda d, t: calls.append((d, t)),
-                ),
-                "spatial": evaluate_workspace(SPATIAL, "static", resolution=9, executor=ex, chunk=100),
-            }
-            _assert_same(got, ref)
-            assert calls[-1] == (1600, 1600) and len(calls) == 1 + 6
-            with pytest.raises(TautError, match="item 3"):
-                ex.map(_fail, range(5))
-        finally:
-            ex.close()
-        with pytest.raises(TautError, match="closed"):
-            ex.map(_square, [1])
-        with distributed.Client(cluster) as client:  # an existing client is used as is
-            ex2 = get_executor(scheduler=client)
-            assert ex2.map(_square, [1, 2, 3]) == [1, 4, 9]
-            ex2.close()
-            assert client.status == "running"
-            direct = evaluate_workspace(SPATIAL, "static", resolution=9, executor=client, chunk=250)
-            assert np.array_equal(direct.inside, ref["spatial"].inside)
+def test_dask_local_cluster_gives_identical_results(reference, cluster):
+    import distributed
+
+    ex = get_executor(scheduler=cluster.scheduler_address)
+    try:
+        assert isinstance(ex, DaskExecutor)
+        calls = []
+        got = {
+            "planar": evaluate_workspace(
+                PLANAR,
+                "wrench-feasible",
+                resolution=40,
+                executor=ex,
+                chunk=300,
+                progress=lambda d, t: calls.append((d, t)),
+            ),
+            "spatial": evaluate_workspace(SPATIAL, "static", resolution=9, executor=ex, chunk=100),
+        }
+        _assert_same(got, reference)
+        assert calls[-1] == (1600, 1600) and len(calls) == 1 + 6
+        with pytest.raises(TautError, match="item 3"):
+            ex.map(_fail, range(5))
+    finally:
+        ex.close()
+    with pytest.raises(TautError, match="closed"):
+        ex.map(_square, [1])
+    with distributed.Client(cluster) as client:  # an existing client is used as is
+        ex2 = get_executor(scheduler=client)
+        assert ex2.map(_square, [1, 2, 3]) == [1, 4, 9]
+        ex2.close()
+        assert client.status == "running"
+        direct = evaluate_workspace(SPATIAL, "static", resolution=9, executor=client, chunk=250)
+        assert np.array_equal(direct.inside, reference["spatial"].inside)
 
 
 SUSPENDED = taut.example("suspended-3cable")
@@ -144,10 +152,11 @@ def _assert_table_4_3(res):
         assert np.allclose(lengths, SUSPENDED.reference.lengths, atol=1e-9)
 
 
-def test_dgp_serial_processes_and_dask_agree_bitwise():
+def test_dgp_serial_processes_and_dask_agree_bitwise(cluster):
     """solve_dgp takes the executors evaluate_workspace takes; the solution lists are the same
     to the bit and in the same order (canonical: taut set, then pose)."""
-    distributed = pytest.importorskip("distributed")
+    import distributed
+
     from taut.dgp import solve_dgp
 
     calls = []
@@ -160,13 +169,12 @@ def test_dgp_serial_processes_and_dask_agree_bitwise():
     assert [d for d, _ in calls] == list(range(total + 1)) and {t for _, t in calls} == {total}
     with get_executor(workers=2) as ex:
         processes = solve_dgp(SUSPENDED, executor=ex)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
-        with distributed.Client(cluster) as client:
-            on_dask = [
-                solve_dgp(SUSPENDED, executor=client),  # a client as is, as evaluate_workspace takes it
-                solve_dgp(SUSPENDED, executor=get_executor(scheduler=client)),
-            ]
-            assert client.status == "running"  # not closed by solve_dgp
+    with distributed.Client(cluster) as client:
+        on_dask = [
+            solve_dgp(SUSPENDED, executor=client),  # a client as is, as evaluate_workspace takes it
+            solve_dgp(SUSPENDED, executor=get_executor(scheduler=client)),
+        ]
+        assert client.status == "running"  # not closed by solve_dgp
     for res in (processes, *on_dask):
         assert [s.taut for s in res.solutions] == [s.taut for s in serial.solutions]
         assert np.array_equal(_poses(res), _poses(serial))

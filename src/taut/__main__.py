@@ -1,6 +1,12 @@
 """``python -m taut``: the ``taut`` command line."""
 
-from taut.cli.main import entry
+import sys
+
+try:
+    from taut.cli import entry
+except KeyboardInterrupt:  # Ctrl-C while the command line loads: exit as it would have
+    print("taut: interrupted", file=sys.stderr)
+    raise SystemExit(130) from None
 
 if __name__ == "__main__":
     entry()

@@ -10,7 +10,8 @@ def test_igp_json_table_4_3(cli):
     code = cli.main(["igp", "suspended-3cable", "--taut", "3,1,2", "--fix", "x=2.7505,y=3.9798,z=5.5061", "--json"])
     out, err = cli.readouterr()
     assert code == 0, err
-    d = json.loads(out)
+    assert "Traceback" not in err and "Warning" not in err
+    d = json.loads(out)  # stdout is the JSON document alone (tests/cli/test_json_stdout.py)
     assert d["robot"] == "suspended 3-cable robot" and d["taut"] == [1, 2, 3] and d["elapsed_s"] > 0
     assert d["assigned"] == {"x": 2.7505, "y": 3.9798, "z": 5.5061}
     assert d["undecided_boxes"] == 0 and not d["exhausted"] and len(d["solutions"]) == 4

@@ -12,7 +12,7 @@ from itertools import combinations
 import pytest
 from fold_robot import fold_robot
 
-from taut.cli.incomplete import CAUSE_TEXT, NAMED, warning
+from taut.cli._incomplete import CAUSE_TEXT, NAMED, warning
 from taut.dgp import CAUSES, UndecidedBox
 from taut.model import save_robot
 

@@ -228,9 +228,11 @@ def test_any_three_coordinates_of_a_solution_give_it_back(fixture, names, reques
 
 def test_a_continuum_exhausts_the_budget_and_says_so():
     """x = y = 0 and φ of a Robocrane solution: the platform can slide along a curve of
-    equilibria (z, θ and σ − φ change together), so no isolated solution is proven there."""
+    equilibria (z, θ and σ − φ change together), so no isolated solution is proven there.
+    The certifications tried along it are charged to the budget too (``CERTIFY_BOXES`` boxes
+    each), so fewer than 3000 boxes are processed."""
     res = solve_igp(ROBOCRANE, (0, 2, 4), {"x": 0, "y": 0, "phi": 2.8797932657906435}, max_boxes=3000)
-    assert res.exhausted and res.boxes == 3000 and res.undecided > 0 and not res.complete
+    assert res.exhausted and 2000 < res.boxes < 3000 and res.undecided > 0 and not res.complete
 
 
 @settings(max_examples=25, deadline=None)

@@ -232,3 +232,45 @@ def test_bad_input(robot, motion):
     far = np.array([0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
     with pytest.raises(InfeasiblePoseError, match="start"):
         simulate_control(robot, motion, disturbance=None, q0=far, kp=1e7, kd=0, qd0=np.full(6, 50.0))
+
+
+def test_blocks_and_decimation_change_nothing_but_what_is_kept(robot, monkeypatch):
+    """The updates are simulated in blocks (the reference, disturbance and arrays of one
+    block at a time): blocks of 37 updates, with failures of the distribution (the fast move
+    of the test above) and a disturbance step across their borders, give the motion of one
+    block to the bit; ``decimate`` keeps every 7th update and the last, with the statistics
+    of all of them."""
+    from taut.dynamics import _control as control
+
+    fast = trajectory_from_waypoints(robot, [[0] * 6, [0.6, 0.3, 0.4, 0, 0, 0], [0] * 6], duration=0.3)
+    kwargs = dict(disturbance=WrenchSteps.step(0.1, [5.0, -3.0, 0.0, 0.0, 0.2, 0.0]))
+    whole = simulate_control(robot, fast, **kwargs)
+    assert whole.updates == 301 and 0 < whole.failures < 301 and whole.disturbance.any()
+    monkeypatch.setattr(control, "BLOCK_UPDATES", 37)
+    blocks = simulate_control(robot, fast, **kwargs)
+    kept = simulate_control(robot, fast, decimate=7, **kwargs)
+    every = np.r_[np.arange(0, 301, 7), 300]
+    for name in ("time", "pose", "velocity", "error", "command", "tensions", "admissible", "disturbance"):
+        np.testing.assert_array_equal(getattr(blocks, name), getattr(whole, name))
+        np.testing.assert_array_equal(getattr(kept, name), getattr(whole, name)[every])
+    for res in (blocks, kept):
+        np.testing.assert_array_equal(res.tracking_error_max, np.abs(whole.error).max(axis=0))
+        np.testing.assert_allclose(res.tracking_error_rms, np.sqrt((whole.error**2).mean(axis=0)), rtol=1e-12)
+        assert res.position_error_max == whole.position_error.max()
+        assert res.rotation_error_max == whole.rotation_error.max()
+        assert res.lower_margin == (whole.tensions - whole.tension_min).min()
+        assert res.upper_margin == (whole.tension_max - whole.tensions).min()
+        assert res.slack_events == whole.slack.any(axis=1).sum()
+        assert res.failures == (~whole.admissible).sum() and res.first_failure_time == whole.first_failure_time
+    assert kept.time.size == every.size == 44 and kept.decimate == 7 and kept.updates == 301
+
+
+def test_kept_samples_are_bounded_before_the_simulation(robot, motion):
+    """A day at 1 kHz: 86.4 M updates of 377 bytes each would be 30 GiB."""
+    day = trajectory_from_waypoints(robot, WAYPOINTS[:2], duration=86_400.0)
+    with pytest.raises(TautError, match=r"86,400,001 control updates keep .* decimate >= 486 "):
+        simulate_control(robot, day, rate_hz=1000)
+    with pytest.raises(TautError, match="at most 1e"):
+        simulate_control(robot, day, rate_hz=2000)
+    with pytest.raises(TautError, match="decimate"):
+        simulate_control(robot, motion, decimate=0)

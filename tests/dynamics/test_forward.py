@@ -204,6 +204,49 @@ def test_slack_cable_pulls_nothing(spatial):
     np.testing.assert_allclose(res.tensions[:, 1:], ref.tensions, rtol=1e-7, atol=1e-7)
 
 
+def elastic_energy(robot, q, qd, l0, ea):
+    """Kinetic, gravitational and elastic energy: a stretched cable stores
+    ``EA (l − l0)² / (2 l0)`` (the integral of ``τ = EA (l − l0)/l0``), a slack one nothing."""
+    T, V, _, _ = spatial_state_quantities(robot, q, qd)
+    stretch = np.maximum(cable_lengths(robot, q) - l0, 0.0)
+    return T + V + float(np.sum(ea * stretch**2 / (2 * l0)))
+
+
+def test_rejected_trial_stages_do_not_stop_the_motion(spatial):
+    """Stiff cables released slack: the platform falls and the cables catch it.  A trial stage
+    of a step that the controller rejects lands far out of range (angles beyond 1e9); the
+    motion goes on (it stopped there, "left the representable range", when the range was
+    checked in the right-hand side) and is scipy's DOP853 on ``acceleration`` directly, a
+    trial stage that ``acceleration`` refuses returning NaN so that its step is rejected; the
+    energy is conserved (no damping)."""
+    from scipy.integrate import solve_ivp
+
+    ea = 1e5
+    robot = with_stiffness(spatial, ea)
+    q0 = np.array([0.05, -0.03, 0.08, 0.05, -0.04, 0.1])
+    l0 = cable_lengths(robot, q0) * 1.01
+    res = forward_dynamics(robot, q0, np.zeros(6), 0.5, lengths=lambda t: l0, times=np.linspace(0, 0.5, 51))
+    refused = []
+
+    def rhs(t, y):
+        try:
+            tau = cable_tensions(robot, y[:6], l0)
+            return np.concatenate([y[6:], acceleration(robot, y[:6], y[6:], tau)])
+        except TautError:
+            refused.append(t)
+            return np.full(12, np.nan)
+
+    ref = solve_ivp(rhs, (0, 0.5), np.concatenate([q0, np.zeros(6)]), method="DOP853", rtol=1e-9, atol=1e-12)
+    assert ref.success and refused  # trial stages were refused, and rejected
+    assert res.slack[0].all() and not res.slack.all()  # released slack, then caught
+    # measured 2e-8 and 7e-8: the two take slightly different steps (rtol 1e-9)
+    np.testing.assert_allclose(res.pose[-1], ref.y[:6, -1], atol=1e-6)
+    np.testing.assert_allclose(res.velocity[-1], ref.y[6:, -1], atol=1e-6)
+    e0 = elastic_energy(robot, q0, np.zeros(6), l0, ea)
+    for q, qd in zip(res.pose, res.velocity):
+        assert abs(elastic_energy(robot, q, qd, l0, ea) - e0) <= 1e-7 * abs(e0)  # measured 3e-9
+
+
 def test_elastic_rk4_matches_adaptive(spatial):
     robot = with_stiffness(spatial, 2e4)
     q = np.array([0.05, -0.02, 0.1, 0.02, -0.03, 0.05])

@@ -16,7 +16,7 @@ from taut.dynamics import inverse_dynamics, required_wrench  # noqa: E402
 from taut.errors import TautError, UnsupportedRobotError  # noqa: E402
 from taut.kinematics import structure_matrix  # noqa: E402
 from taut.statics import solve_tensions  # noqa: E402
-from taut.viz.dynamics import plot_motion_tensions  # noqa: E402
+from taut.viz import plot_motion_tensions  # noqa: E402
 
 
 def sinusoid(robot, n, amplitude, omega):

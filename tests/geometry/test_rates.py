@@ -5,6 +5,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from taut.errors import ArgumentError
 from taut.geometry._rates import angular_acceleration, angular_velocity, rate_matrix
 from taut.geometry._rotation import CONVENTIONS, rotation_matrix
 
@@ -37,9 +38,16 @@ def test_velocity_and_acceleration_match_finite_differences(convention, q, qd, q
 
 def test_batched_shapes_and_gimbal_lock():
     rng = np.random.default_rng(0)
-    q = rng.uniform(-1, 1, (4, 5, 3))
-    assert rate_matrix(q, "xyz-moving").shape == (4, 5, 3, 3)
-    assert angular_velocity(q, q, "xyz-fixed").shape == (4, 5, 3)
+    q, qd = rng.uniform(-1, 1, (2, 4, 5, 3))
+    E = rate_matrix(q, "xyz-moving")
+    w = angular_velocity(q, qd, "xyz-fixed")
+    assert E.shape == (4, 5, 3, 3) and w.shape == (4, 5, 3)
+    for i, j in np.ndindex(4, 5):
+        zero = np.zeros(3)
+        np.testing.assert_allclose(
+            E[i, j] @ qd[i, j], _omega_fd(q[i, j], qd[i, j], zero, 0.0, "xyz-moving")[0], atol=1e-7
+        )
+        np.testing.assert_allclose(w[i, j], _omega_fd(q[i, j], qd[i, j], zero, 0.0, "xyz-fixed")[0], atol=1e-7)
     # xyz-fixed locks at b = ±π/2 and tilt-torsion at θ = 0: E loses rank exactly there
     assert np.linalg.matrix_rank(rate_matrix([0.3, np.pi / 2, 0.2], "xyz-fixed")) == 2
     assert np.linalg.matrix_rank(rate_matrix([0.3, 0.0, 0.2], "tilt-torsion")) == 2
@@ -47,5 +55,5 @@ def test_batched_shapes_and_gimbal_lock():
 
 
 def test_unknown_convention():
-    with pytest.raises(ValueError, match="unknown orientation convention"):
+    with pytest.raises(ArgumentError, match="unknown orientation convention"):
         rate_matrix([0, 0, 0], "zyz")

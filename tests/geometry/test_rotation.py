@@ -4,6 +4,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
+from taut.errors import ArgumentError
 from taut.geometry import CONVENTIONS, angles_from_matrix, planar_rotation, rotation_matrix
 
 angles = arrays(float, (3,), elements=st.floats(-1.4, 1.4))
@@ -45,8 +46,12 @@ def test_angles_round_trip(convention, v):
 
 def test_batches_and_planar():
     v = np.random.default_rng(0).uniform(-1, 1, (5, 4, 3))
-    assert rotation_matrix(v).shape == (5, 4, 3, 3)
+    R = rotation_matrix(v)
+    assert R.shape == (5, 4, 3, 3)
+    for i, j in np.ndindex(5, 4):
+        a, b, c = v[i, j]
+        np.testing.assert_allclose(R[i, j], _rz(c) @ _ry(b) @ _rx(a), atol=1e-14)
     R = planar_rotation(np.pi / 2)
     np.testing.assert_allclose(R @ [1, 0], [0, 1], atol=1e-15)
-    with pytest.raises(ValueError, match="unknown orientation"):
+    with pytest.raises(ArgumentError, match="unknown orientation"):
         rotation_matrix([0, 0, 0], "zyz")

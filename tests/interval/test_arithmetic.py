@@ -7,6 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from taut.errors import ArgumentError
 from taut.interval import Interval
 
 finite = st.floats(min_value=-1e6, max_value=1e6, allow_nan=False, allow_infinity=False)
@@ -77,7 +78,7 @@ def test_sqr_is_sharper_than_product_and_infinities_are_safe():
 
 
 def test_negative_power_is_rejected():
-    with pytest.raises(ValueError):
+    with pytest.raises(ArgumentError):
         Interval(1.0, 2.0) ** -1
 
 

@@ -7,6 +7,7 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
+from taut.errors import ArgumentError
 from taut.interval import (
     branch_and_prune,
     certify,
@@ -235,7 +236,7 @@ def test_tube_solves_for_the_variables_that_are_not_primary():
         lo, hi = p - 0.01, p + 0.01
         assert _tube(CIRCLE, 2, lo, hi, 1, np.array(primary)) == 1
         assert list(hi - lo < 0.02 * (1 - 1e-3)) == shrinks
-    with pytest.raises(ValueError, match="cannot all be solved for"):
+    with pytest.raises(ArgumentError, match="cannot all be solved for"):
         _tube(CIRCLE, 1, lo, hi, 1, np.array([False, False, True]))
 
 
@@ -246,9 +247,9 @@ def test_branch_and_prune_with_a_tube_finds_the_same_solutions(method):
     assert key(res[2]) == key(res[0]) and len(res[0].solutions) == 2
     assert not res[2].undecided
     x, y = variables(2)
-    with pytest.raises(ValueError, match="under-determined"):  # the first equation has one variable
+    with pytest.raises(ArgumentError, match="under-determined"):  # the first equation has one variable
         branch_and_prune(compile_system(2, [x - 1, x + y]), [-3.0, -3.0], [3.0, 3.0], tube=1)
-    with pytest.raises(ValueError, match="tube must be"):
+    with pytest.raises(ArgumentError, match="tube must be"):
         branch_and_prune(CIRCLES, [-3.0, -3.0], [3.0, 3.0], tube=2)
 
 
@@ -303,7 +304,7 @@ def test_smear_bisection_finds_the_same_solutions_with_fewer_boxes_on_a_badly_sc
     assert key(res["smear"]) == key(res["width"]) == [(0.5, -s), (0.5, s)]
     assert not res["smear"].undecided
     assert res["smear"].boxes < res["width"].boxes
-    with pytest.raises(ValueError, match="bisection"):
+    with pytest.raises(ArgumentError, match="bisection"):
         branch_and_prune(sys, [-3.0, -300.0], [3.0, 300.0], bisection="largest")
 
 
@@ -384,7 +385,7 @@ def test_compiled_loop_with_a_linear_filter_matches_the_python_filter():
         assert not r.undecided
     b_lo, b_hi = np.array([0.5, 0.5, 0.0]), np.array([0.75, 0.75, np.inf])
     assert filt(b_lo, b_hi) and 2 / (1 + 0.75**2) * (1 - 1e-12) <= b_lo[2] and b_hi[2] <= 2 / 1.25 * (1 + 1e-12)
-    with pytest.raises(ValueError):
+    with pytest.raises(ArgumentError):
         branch_and_prune(sys, lo, hi, filters=(lambda lo, hi: True,), method="numba")
 
 

@@ -1,5 +1,6 @@
 import numpy as np
 import pytest
+from axis_rotations import rx, ry, rz
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
@@ -14,6 +15,7 @@ from taut.kinematics import (
     tension_from_stretch,
     unstretched_length,
 )
+from taut.kinematics._inverse import BATCH_POSES
 from taut.model import robot_from_dict
 
 SPATIAL = taut.example("spatial-8cable")
@@ -69,13 +71,36 @@ def test_forward_rejects_unreachable_lengths():
         forward_kinematics(SPATIAL, [1, 1])
 
 
-def test_batches_match_single_poses():
-    poses = np.random.default_rng(1).uniform(-0.3, 0.3, (7, 6))
-    ik = inverse_kinematics(SPATIAL, poses)
-    assert ik.structure_matrix.shape == (7, 6, 8)
-    for k in range(7):
-        np.testing.assert_allclose(inverse_kinematics(SPATIAL, poses[k]).structure_matrix, ik.structure_matrix[k])
-    np.testing.assert_allclose(np.linalg.norm(ik.directions, axis=-1), 1.0)
+def _ik_by_hand(robot, pose):
+    """Lengths, unit vectors, anchors and structure matrix at one pose from Eqs. 2.1 and 2.8 of
+    Rushton (2022), with the rotations written out (xyz-fixed: R = Rz(c) Ry(b) Rx(a))."""
+    if robot.dimension == 3:
+        p, R = np.asarray(pose[:3]), rz(pose[5]) @ ry(pose[4]) @ rx(pose[3])
+    else:
+        p, R = np.asarray(pose[:2]), rz(pose[2])[:2, :2]
+    b = p + robot.anchors @ R.T
+    v = robot.exits - b
+    lengths = np.linalg.norm(v, axis=1)
+    u = v / lengths[:, None]
+    r = b - p
+    moments = np.cross(r, u) if robot.dimension == 3 else r[:, 0] * u[:, 1] - r[:, 1] * u[:, 0]
+    return lengths, u, b, np.vstack([u.T, np.atleast_2d(moments.T)])
+
+
+@pytest.mark.parametrize("size", [7, BATCH_POSES - 1, BATCH_POSES, BATCH_POSES + 1, 100])
+@pytest.mark.parametrize("robot", [SPATIAL, PLANAR], ids=["spatial", "planar"])
+def test_batches_match_the_equations_on_both_sides_of_the_kernel_threshold(robot, size):
+    """From :data:`BATCH_POSES` poses on, rigid platforms go through the Numba kernel."""
+    rng = np.random.default_rng(size)
+    poses = rng.uniform(-0.3, 0.3, (size, robot.pose_size))
+    ik = inverse_kinematics(robot, poses)
+    assert ik.structure_matrix.shape == (size, robot.wrench_dim, robot.n_cables)
+    for k, pose in enumerate(poses):
+        lengths, u, b, W = _ik_by_hand(robot, pose)
+        np.testing.assert_allclose(ik.lengths[k], lengths, rtol=1e-13)
+        np.testing.assert_allclose(ik.directions[k], u, rtol=0, atol=1e-13)
+        np.testing.assert_allclose(ik.anchors[k], b, rtol=0, atol=1e-13)
+        np.testing.assert_allclose(ik.structure_matrix[k], W, rtol=0, atol=1e-13)
 
 
 def test_bad_poses_are_typed_errors():

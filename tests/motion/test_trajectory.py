@@ -3,6 +3,7 @@ points, jointed platforms, robot-file trajectories, sampling and bad input."""
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -15,7 +16,7 @@ import taut
 from taut.errors import TautError, TrajectoryError
 from taut.geometry import rotation_matrix
 from taut.model import Trajectory, robot_from_dict
-from taut.motion import Motion, trajectory_from_robot, trajectory_from_waypoints, unwrap_angles
+from taut.motion import Motion, robot_trajectory, trajectory_from_robot, trajectory_from_waypoints, unwrap_angles
 
 SPATIAL = taut.example("spatial-8cable")  # xyz-fixed
 JOINTED = taut.example("adjustable-8cable")  # xyz-moving, prismatic joint s23
@@ -65,6 +66,81 @@ def test_angular_velocity_and_acceleration_match_rotation_matrices(convention, o
     alpha = Rdd @ np.swapaxes(R0, 1, 2) + Rd @ np.swapaxes(Rd, 1, 2)
     scale = 1 + np.abs(s.angular_acceleration).max()
     assert np.allclose(s.angular_acceleration, _skew(alpha), atol=1e-3 * scale)
+
+
+@pytest.mark.parametrize("convention", sorted(ROBOTS))
+@settings(max_examples=15, deadline=None)
+@given(
+    orientations=st.lists(angles, min_size=2, max_size=4),
+    law=st.sampled_from(["linear", "cubic", "quintic", "trapezoidal"]),
+)
+def test_axis_rotation_turns_about_one_axis(convention, orientations, law):
+    """``rotation="axis"``: each segment is ``R_s Exp(σ(t) θ k)`` with ``θ k`` the rotation
+    vector of ``R_sᵀ R_e`` (scipy) and ``σ`` the time law's fraction (the positions' own),
+    the angles continuous, ``ω`` along the fixed axis ``R_s k`` and equal to ``Ṙ Rᵀ``."""
+    from scipy.spatial.transform import Rotation
+
+    robot = ROBOTS[convention]
+    W = _spatial_waypoints(robot, orientations)
+    try:
+        m = trajectory_from_waypoints(robot, W, 1.0, law=law, rotation="axis")
+    except TrajectoryError as e:  # a turn through the gimbal lock is refused, by name
+        assert "gimbal lock" in str(e)
+        return
+    assert m.rotation == "axis"
+    assert np.allclose(
+        rotation_matrix(m.waypoints[:, 3:6], convention), rotation_matrix(W[:, 3:6], convention), atol=1e-9
+    )
+    h = 1e-5
+    for k in range(len(W) - 1):
+        t = np.linspace(k + 2 * h, k + 1 - 2 * h, 9)
+        s = m.at(t)
+        Rs, Re = rotation_matrix(W[k, 3:6], convention), rotation_matrix(W[k + 1, 3:6], convention)
+        rotvec = Rotation.from_matrix(Rs.T @ Re).as_rotvec()
+        d = W[k + 1, 0] - W[k, 0]
+        sigma = (s.pose[:, 0] - W[k, 0]) / d  # x moves by the same time law
+        want = Rs @ Rotation.from_rotvec(sigma[:, None] * rotvec).as_matrix()
+        assert np.allclose(rotation_matrix(s.pose[:, 3:6], convention), want, atol=1e-9)
+        axis = Rs @ rotvec
+        assert np.allclose(s.angular_velocity, np.outer(s.velocity[:, 0] / d, axis), atol=1e-9)
+        assert np.allclose(s.angular_acceleration, np.outer(s.acceleration[:, 0] / d, axis), atol=1e-9)
+        Rd = (
+            rotation_matrix(m.at(t + h).pose[:, 3:6], convention)
+            - rotation_matrix(m.at(t - h).pose[:, 3:6], convention)
+        ) / (2 * h)
+        omega = Rd @ np.swapaxes(rotation_matrix(s.pose[:, 3:6], convention), 1, 2)
+        assert np.allclose(s.angular_velocity, _skew(omega), atol=1e-5 * (1 + np.abs(s.angular_velocity).max()))
+    # continuous: no 2π jump (each sample step within the largest rate times the time step;
+    # near the gimbal lock the angles do move fast)
+    dense = m.at(np.linspace(0, m.duration, 2001))
+    step = np.abs(np.diff(dense.pose[:, 3:6], axis=0)).max()
+    assert step <= 1.5 * np.abs(dense.velocity[:, 3:6]).max() * m.duration / 2000 + 1e-12
+
+
+def test_axis_rotation_refusals():
+    W = _spatial_waypoints(SPATIAL, [[0.0, 1.4, 0.0], [math.pi, math.pi - 1.8, math.pi]])  # Ry(1.4) → Ry(1.8)
+    with pytest.raises(TrajectoryError, match="segment 1 turns through the gimbal lock of the xyz-fixed angles"):
+        trajectory_from_waypoints(SPATIAL, W, 1.0, rotation="axis")
+    W = _spatial_waypoints(SPATIAL, [[0.0, 0.1, 0.0], [0.2, 0.3, 0.1]])
+    for kwargs, message in [
+        (dict(law="cubic", via="average", rotation="axis"), "rotation='axis' stops the turn at every waypoint"),
+        (
+            dict(law="cubic", velocities=[[0, 0, 0, 0.1, 0, 0], [0] * 6], rotation="axis"),
+            "velocities at waypoint 1: with rotation='axis'",
+        ),
+        (dict(rotation="quaternion"), "unknown rotation 'quaternion'"),
+    ]:
+        with pytest.raises(TrajectoryError, match=message):
+            trajectory_from_waypoints(SPATIAL, W, 1.0, **kwargs)
+    with pytest.raises(TrajectoryError, match="stops the turn at every waypoint and is timed by durations"):
+        trajectory_from_waypoints(SPATIAL, W, rotation="axis", max_velocity=1.0, max_acceleration=1.0)
+    with pytest.raises(TrajectoryError, match="rotation='axis' turns a spatial rigid platform"):
+        trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0.0], [0.4, 0.3, 1.0]], 1.0, rotation="axis")
+    # translations may move through a waypoint while the turn stops there
+    m = trajectory_from_waypoints(
+        SPATIAL, W, 1.0, law="cubic", velocities=[[0.1, 0, 0, 0, 0, 0], [0] * 6], rotation="axis"
+    )
+    assert m.at([0.0]).velocity[0] == pytest.approx([0.1, 0, 0, 0, 0, 0])
 
 
 def test_planar_and_point_mass_angular_rates():
@@ -214,6 +290,53 @@ def test_robot_trajectory_with_speed_and_dwell():
     assert m.duration == pytest.approx(10.0) and len(m.times) == len(AGRICULTURE.trajectories["table-6.2"].waypoints)
     with pytest.raises(TrajectoryError, match="no trajectory 'nope'"):
         trajectory_from_robot(JOINTED, "nope", duration=1.0)
+
+
+def test_robot_trajectory_reads_the_file_once_for_every_user():
+    """:func:`robot_trajectory` is the one reader of ``trajectories:``: waypoints as poses
+    (positions completed from the first reference pose), steps, speed, dwell; the timed
+    motion, the collision checks' pose sequence and the wrapping cables' samples start from
+    it and refuse an unknown name with its one message."""
+    from taut.collision import straight_moves, trajectory_poses
+    from taut.wrapping import builtin_trajectory, timed_moves
+
+    sim = robot_trajectory(JOINTED, "sim-a")
+    assert sim.name == "sim-a" and sim.steps == (100, 100) and sim.speed is None and sim.dwell == 0.0
+    assert sim.waypoints.tolist() == [[5, 5, 4.5, 0, 0, 0, 2], [5, 5, 2.5, 0, 0, 0, 2], [5, 5, 0.5, 0, 0, 0, 4]]
+    assert not sim.waypoints.flags.writeable and "Simulation a)" in sim.description
+    assert json.loads(json.dumps(sim.as_dict(), allow_nan=False))["steps"] == [100, 100]
+    assert robot_trajectory(JOINTED).name == next(iter(JOINTED.trajectories))  # the first by default
+    # positions only: the rest of the pose from the first reference pose (orientation, s23 = 2)
+    moved = Trajectory(waypoints=((5, 5, 4), (5, 4, 3)), speed=0.5, dwell=1.0)
+    robot = JOINTED.model_copy(update={"trajectories": {"moved": moved}})
+    tr = robot_trajectory(robot, "moved")
+    assert tr.waypoints.tolist() == [[5, 5, 4, 0, 0, 0, 2], [5, 4, 3, 0, 0, 0, 2]]
+    assert (tr.speed, tr.dwell) == (0.5, 1.0)
+    # its users: 201 poses on straight moves, a timed motion, time samples at speed with dwell
+    poses = trajectory_poses(JOINTED, "sim-a")
+    assert np.array_equal(poses, straight_moves(JOINTED, sim.waypoints, sim.steps)) and len(poses) == 201
+    assert np.allclose(poses[100], sim.waypoints[1]) and np.allclose(
+        poses[50], (sim.waypoints[0] + sim.waypoints[1]) / 2
+    )
+    assert trajectory_from_robot(robot, "moved").duration == pytest.approx(2 * 1.0 + math.sqrt(2) / 0.5)
+    agri = robot_trajectory(AGRICULTURE, "table-6.2")
+    t, P = builtin_trajectory(AGRICULTURE, "table-6.2", speed=0.2)
+    t2, P2 = timed_moves(agri.waypoints, speed=0.2, dwell=agri.dwell, dt=0.01)
+    assert np.array_equal(t, t2) and np.array_equal(P, P2) and np.allclose(P[-1], agri.waypoints[-1])
+    moves = np.linalg.norm(np.diff(agri.waypoints, axis=0), axis=1).sum() / 0.2
+    assert t[-1] == pytest.approx(moves + len(agri.waypoints) * agri.dwell)
+    for read in (
+        lambda: robot_trajectory(JOINTED, "nope"),
+        lambda: trajectory_from_robot(JOINTED, "nope", duration=1.0),
+        lambda: trajectory_poses(JOINTED, "nope"),
+        lambda: builtin_trajectory(JOINTED, "nope"),
+    ):
+        with pytest.raises(
+            TrajectoryError, match=r"adjustable.*: no trajectory 'nope' \(it has: sim-a, sim-b, sim-c, sim-d\)"
+        ):
+            read()
+    with pytest.raises(TrajectoryError, match="has no trajectories"):
+        robot_trajectory(SPATIAL)
 
 
 def test_samples_and_immutability():

@@ -49,6 +49,49 @@ def test_polytope_cut_keeps_halfspace_and_vertex_count():
     assert not P.cut(np.array([1.0, 0, 0]), 5.0, 11)
 
 
+def _brute_force_vertices(k, half, normals, offsets):
+    """Every point where k of the constraints (cube faces, cutting planes) are active and
+    all hold: the vertices of the polytope, by enumeration."""
+    import itertools
+
+    A = np.vstack([np.eye(k), -np.eye(k), normals])
+    b = np.concatenate([np.full(2 * k, half), offsets])
+    out = []
+    for rows in itertools.combinations(range(len(A)), k):
+        M = A[list(rows)]
+        if np.linalg.svd(M, compute_uv=False)[-1] < 1e-9:
+            continue
+        x = np.linalg.solve(M, b[list(rows)])
+        if np.all(A @ x <= b + 1e-9):
+            out.append(x)
+    return np.unique(np.round(out, 7), axis=0)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.integers(2, 4),
+    st.lists(
+        st.tuples(st.lists(st.floats(-1, 1), min_size=4, max_size=4), st.floats(0.2, 1.3)), min_size=1, max_size=6
+    ),
+)
+def test_polytope_cuts_give_the_vertices_of_the_intersection(k, cuts):
+    """The vertices after a sequence of cuts (each crossing edge found by the constraints its
+    two ends share) are those of the intersection of the cube and the half-spaces."""
+    P = Polytope(k, 1.0)
+    normals, offsets = [], []
+    for c, (normal, offset) in enumerate(cuts):
+        a = np.array(normal[:k])
+        if np.linalg.norm(a) < 0.1:
+            continue
+        P.cut(a, offset, 2 * k + c)
+        normals.append(P.normals[-1] if len(P.normals) > len(normals) else a / np.linalg.norm(a))
+        offsets.append(P.offsets[-1] if len(P.offsets) > len(offsets) else offset / np.linalg.norm(a))
+    expected = _brute_force_vertices(k, 1.0, np.reshape(normals, (-1, k)), np.array(offsets))
+    got = np.unique(np.round(P.vertices, 7), axis=0)
+    assert got.shape == expected.shape and np.allclose(got, expected, atol=1e-6)
+    assert P.active.shape == (len(P.vertices), k)
+
+
 def test_circle_atlas_spacing():
     a = Atlas(CIRCLE, [1.0, 0.0], radius=0.1)
     assert a.complete()
@@ -110,6 +153,21 @@ def test_boxed_component_gives_no_path_with_exhaustion():
     res = plan_path(box, [0, 0, 1.0], [0, 0, -1.0], radius=0.2)
     assert not res.found and res.exhausted and res.charts > 5
     assert res.atlas.centres[:, 2].min() > 0.5 - 0.2
+
+
+def test_the_chart_budget_stops_a_search_within_an_expansion():
+    """Budgets of 3 and 9 charts (an expansion of a sphere's chart creates four): the
+    atlas stops at the budget exactly, the chart being grown stays open, and the answer is
+    no path, without a proof."""
+    for budget in (3, 9):
+        res = plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], radius=0.2, max_charts=budget)
+        assert res.charts == budget and not res.found and not res.exhausted
+        assert sum(c.expanded for c in res.atlas.charts) == res.expanded < budget
+    a = Atlas(SPHERE, [0, 0, 1.0], radius=0.2)
+    assert a.grow(0, max_charts=4) == [1, 2, 3] and not a.charts[0].expanded
+    assert a.grow(0) == [4] and a.charts[0].expanded  # grown again, the chart closes
+    with pytest.raises(TautError, match="max_charts"):
+        plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], radius=0.2, max_charts=1)
 
 
 def test_start_off_manifold_is_rejected():

@@ -270,3 +270,52 @@ def test_bad_inputs():
         wrench_feasible(W, [0, 0], [1, 1], SingleWrench([0.0, 0.0]), offset=np.zeros((3, 2)))
     with pytest.raises(TautError):
         wrench_closure(np.full((1, 2, 3), np.nan))
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(problems(m_choices=(2, 3, 6)), st.lists(st.integers(0, 2).map(lambda k: k / 4), min_size=6, max_size=6))
+def test_the_lp_method_agrees_with_the_oracles(prob, half):
+    """``method="lp"`` (what robots with many cables get): the closure by one LP, a box by
+    one LP per vertex, whatever the rank of ``W``."""
+    W, tmin, tmax, w = prob
+    m = W.shape[0]
+    assert wrench_closure(W[None], method="lp")[0] == lp_closure(W)
+    assert static_equilibrium(W[None], tmin, tmax, w[None], method="lp")[0] == lp_equilibrium(W, tmin, tmax, w)
+    box = BoxWrenchSet.around(np.zeros(m), half[:m])
+    expected = all(lp_equilibrium(W, tmin, tmax, w + v) for v in np.unique(box.vertices(), axis=0))
+    assert wrench_feasible(W[None], tmin, tmax, box, offset=w, method="lp")[0] == expected
+
+
+def test_many_cables_are_decided_by_lps_and_an_ellipsoid_is_refused_there():
+    """2000 cables in the plane of a point mass: C(2000, 1) normals, the facets; with m = 3
+    C(2000, 2) = 2 M normals per pose, LPs decide (the same verdicts as the oracle)."""
+    rng = np.random.default_rng(11)
+    W = rng.normal(size=(4, 3, 2000))
+    W[0] = np.abs(W[0])  # every column in one octant: no closure
+    tau = rng.uniform(1.0, 2.0, (4, 2000))
+    w = -np.einsum("kij,kj->ki", W, tau)
+    assert wrench_closure(W).tolist() == [lp_closure(W[k]) for k in range(4)] == [False, True, True, True]
+    got = static_equilibrium(W, 1.0, 2.0, w)
+    assert got.tolist() == [lp_equilibrium(W[k], np.ones(2000), np.full(2000, 2.0), w[k]) for k in range(4)]
+    assert got.all()
+    ellipsoid = EllipsoidWrenchSet(np.zeros(3), np.eye(3))
+    with pytest.raises(TautError, match=r"C\(2000, 2\) = 2e\+06 .* box, polytope"):
+        wrench_feasible(W, 1.0, 2.0, ellipsoid, w)
+    with pytest.raises(TautError, match="unknown method"):
+        wrench_closure(W, method="simplex")
+
+
+def test_under_constrained_poses_are_decided_in_one_closed_form():
+    """Fewer cables than wrench components: the tensions balancing a wrench are unique where
+    the columns are independent; a batch of such poses, half in range(W) exactly, half off
+    it by 1e-3, with tensions on both sides of their bounds, against the LP oracle."""
+    rng = np.random.default_rng(2)
+    K, m, n = 400, 6, 3
+    W = rng.normal(size=(K, m, n))
+    tau = rng.uniform(-0.5, 2.0, (K, n))
+    w = -np.einsum("kmn,kn->km", W, tau)
+    w[::2] += 1e-3 * rng.normal(size=(K // 2, m))
+    got = static_equilibrium(W, 0.0, 1.5, w)
+    expected = [lp_equilibrium(W[k], np.zeros(n), np.full(n, 1.5), w[k]) for k in range(K)]
+    assert got.tolist() == expected
+    assert 20 < got.sum() < K // 2

@@ -27,18 +27,23 @@ from taut.dgp import (  # noqa: E402
     build_subproblem,  # noqa: E402
     track_path,
 )
+from taut.errors import ArgumentError, TautError  # noqa: E402
 from taut.geometry import rotation_matrix  # noqa: E402
 from taut.interval import certify  # noqa: E402
 from taut.model import example, robot_from_dict  # noqa: E402
-from taut.planning import WrenchFeasibleManifold, plan_path  # noqa: E402
-from taut.viz.atlas import plot_atlas  # noqa: E402
-from taut.viz.check import plot_check  # noqa: E402
-from taut.viz.dgp import plot_equilibria, plot_tracking  # noqa: E402
-from taut.viz.plan import plot_plan, slice_map  # noqa: E402
-from taut.viz.robot import draw_robot, draw_scene_2d, draw_scene_3d, scene_points_3d  # noqa: E402
-from taut.viz.tensions import plot_tensions  # noqa: E402
-from taut.viz.trajectory import draw_wrapped_cables, plot_trajectory  # noqa: E402
-from taut.viz.workspace import plot_workspace  # noqa: E402
+from taut.planning import (  # noqa: E402
+    WrenchFeasibleManifold,  # noqa: E402
+    plan_path,
+    slice_map,
+)
+from taut.viz._atlas import plot_atlas  # noqa: E402
+from taut.viz._check import plot_check  # noqa: E402
+from taut.viz._dgp import plot_equilibria, plot_tracking  # noqa: E402
+from taut.viz._plan import plot_plan  # noqa: E402
+from taut.viz._robot import draw_robot, draw_scene_2d, draw_scene_3d, scene_points_3d  # noqa: E402
+from taut.viz._tensions import plot_tensions  # noqa: E402
+from taut.viz._trajectory import draw_wrapped_cables, plot_trajectory  # noqa: E402
+from taut.viz._workspace import plot_workspace  # noqa: E402
 from taut.workspace import evaluate_workspace  # noqa: E402
 from taut.wrapping import builtin_trajectory, run_trajectory  # noqa: E402
 
@@ -184,11 +189,11 @@ def test_without_axes_a_new_figure_is_made(name, data):
 
 
 @pytest.mark.parametrize("name", AX_PLOTS)
-def test_axes_of_the_other_kind_raise_type_error_and_stay_empty(name, data):
+def test_axes_of_the_other_kind_raise_argument_error_and_stay_empty(name, data):
     three_d, draw = AX_PLOTS[name]
     fig = plt.figure()
     wrong = fig.add_subplot() if three_d else fig.add_subplot(projection="3d")
-    with pytest.raises(TypeError, match="3-D axes" if three_d else "2-D axes"):
+    with pytest.raises(ArgumentError, match="3-D axes" if three_d else "2-D axes"):
         draw(wrong, data)
     assert _artists(wrong) == 0 and plt.get_fignums() == [fig.number]
 
@@ -220,7 +225,7 @@ def test_a_figure_that_has_axes_is_refused(name, data):
     draw, _ = FIG_PLOTS[name]
     fig = plt.figure()
     ax = fig.add_subplot()
-    with pytest.raises(ValueError, match="empty figure"):
+    with pytest.raises(ArgumentError, match="empty figure"):
         draw(fig, data)
     assert fig.axes == [ax] and _artists(ax) == 0
 
@@ -262,13 +267,14 @@ def test_plot_plan_on_a_slice_with_a_free_position_coordinate():
         metric=M.pose_metric,
     )
     assert res.found
-    with pytest.raises(ValueError, match="limits for x"):
-        slice_map(M, M.pose(res.path[0]), ("x", "phi"))
-    fig = plot_plan(M, res, axes=("x", "phi"))
+    start = M.pose(res.path[0])
+    with pytest.raises(TautError, match="limits for x"):
+        slice_map(M, start, axes=("x", "phi"))
+    centres = M.pose(res.atlas.centres)
+    fig = plot_plan(M, res, slice_map(M, start, axes=("x", "phi"), span=centres, resolution=(12, 8)))
     ax = fig.axes[0]
-    centres = M.pose(res.atlas.centres)[:, 0]
     x0, x1 = ax.get_xlim()
-    assert x0 < centres.min() and centres.max() < x1
+    assert x0 < centres[:, 0].min() and centres[:, 0].max() < x1
     np.testing.assert_allclose(ax.get_ylim(), M.phi_window)
     path = next(ln for ln in ax.lines if ln.get_gid() == "path").get_xydata()
     np.testing.assert_allclose(path[[0, -1]], [[0.0, 0.3], [0.1, 0.3]], atol=1e-9)

@@ -11,8 +11,9 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import taut  # noqa: E402
+from taut.errors import ArgumentError  # noqa: E402
 from taut.motion import trajectory_from_robot  # noqa: E402
-from taut.viz.motion import plot_motion  # noqa: E402
+from taut.viz._motion import plot_motion  # noqa: E402
 
 
 def test_three_panels_hold_pose_velocity_and_acceleration(tmp_path):
@@ -33,6 +34,6 @@ def test_three_panels_hold_pose_velocity_and_acceleration(tmp_path):
     assert axes[2].get_xlabel() == "time [s]"
     fig.savefig(tmp_path / "motion.png")
     assert (tmp_path / "motion.png").stat().st_size > 0
-    with pytest.raises(ValueError, match="empty figure"):
+    with pytest.raises(ArgumentError, match="empty figure"):
         plot_motion(s, fig=fig)
     plt.close("all")

@@ -17,6 +17,7 @@ from matplotlib.patches import Circle  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
 import taut  # noqa: E402
+from taut.errors import ArgumentError  # noqa: E402
 from taut.kinematics import anchor_points  # noqa: E402
 from taut.model import robot_from_dict  # noqa: E402
 from taut.viz import Report, draw_robot, plot_tensions, plot_workspace  # noqa: E402
@@ -152,9 +153,9 @@ def test_spatial_robot():
 
 def test_axes_of_the_wrong_kind_are_refused():
     fig = plt.figure()
-    with pytest.raises(TypeError, match="3-D axes"):
+    with pytest.raises(ArgumentError, match="3-D axes"):
         draw_robot(SPATIAL, None, ax=fig.add_subplot())
-    with pytest.raises(TypeError, match="2-D axes"):
+    with pytest.raises(ArgumentError, match="2-D axes"):
         draw_robot(PLANAR, None, ax=fig.add_subplot(projection="3d"))
 
 
@@ -234,11 +235,13 @@ def test_spatial_workspace_scatter_and_subsampling():
 
 def test_spatial_slice_is_an_image():
     axes = (np.linspace(-1, 1, 10), np.linspace(-0.5, 0.5, 6), np.array([0.25]))
-    res = grid_result(SPATIAL, axes, lambda p: p[:, 0] > 0, orientation=[0, 0, 0])
+    res = grid_result(SPATIAL, axes, lambda p: (p[:, 0] > 0) & (p[:, 1] > 0.1), orientation=[0, 0, 0])
     ax = plot_workspace(res, SPATIAL)
     assert ax.name != "3d"
     (im,) = ax.get_images()
-    assert np.asarray(im.get_array()).shape == (6, 10)
+    arr = np.asarray(im.get_array())
+    assert arr.shape == (6, 10)  # rows = y, columns = x
+    np.testing.assert_array_equal(arr.astype(bool), (axes[1][:, None] > 0.1) & (axes[0][None, :] > 0))
     assert "z=0.25" in ax.get_title()
 
 
@@ -314,7 +317,7 @@ def test_report_writes_html_with_existing_pngs_and_escapes_text(tmp_path):
 def test_report_rejects_bad_or_duplicate_file_names():
     report = Report("r")
     report.add_section("a", figures=[(plt.figure(), "one.png")])
-    with pytest.raises(ValueError, match="used twice"):
+    with pytest.raises(ArgumentError, match="used twice"):
         report.add_section("b", figures=[(plt.figure(), "one.png")])
-    with pytest.raises(ValueError, match="plain file name"):
+    with pytest.raises(ArgumentError, match="plain file name"):
         report.add_section("c", figures=[(plt.figure(), "../escape.png")])

@@ -20,7 +20,7 @@ if TYPE_CHECKING:
     from taut.collision._capsules import CapsuleModel, capsule_model, capsule_segments
     from taut.collision._proximity import ProximityResult, proximity
     from taut.collision._singularity import force_closure_singular, jacobian_singular, positive_span_lp
-    from taut.collision._trajectory import CheckResult, check_poses, load_trajectory, sample_waypoints, trajectory_poses
+    from taut.collision._trajectory import CheckResult, check_poses, load_trajectory, straight_moves, trajectory_poses
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -35,7 +35,7 @@ _LAZY = {
     "CheckResult": "taut.collision._trajectory",
     "check_poses": "taut.collision._trajectory",
     "load_trajectory": "taut.collision._trajectory",
-    "sample_waypoints": "taut.collision._trajectory",
+    "straight_moves": "taut.collision._trajectory",
     "trajectory_poses": "taut.collision._trajectory",
 }
 
@@ -51,7 +51,7 @@ __all__ = [
     "load_trajectory",
     "positive_span_lp",
     "proximity",
-    "sample_waypoints",
+    "straight_moves",
     "trajectory_poses",
 ]
 

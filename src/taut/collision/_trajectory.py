@@ -2,8 +2,10 @@
 Lieskovský (2020): simulations a–d of the adjustable platform).
 
 A trajectory is a sequence of poses ``X_1 … X_N`` (1-based steps, as in §4.2).  A named
-trajectory of a robot (``trajectories:`` in its file) is sampled by joining its waypoints
-with straight moves of ``steps[k]`` increments each (:data:`DEFAULT_STEPS` when not given),
+trajectory of a robot (``trajectories:`` in its file, read by
+:func:`taut.motion.robot_trajectory`) is sampled by joining its waypoints with straight
+moves of ``steps[k]`` increments each (:func:`straight_moves`; :data:`DEFAULT_STEPS` when
+not given),
 so that simulation a (``steps: [100, 100]``) gives the 201 configurations ``X_1 … X_201`` of
 Eqs. 4.2.1–4.2.6.  Waypoints that give only a position take the rest of the pose from the
 robot's first reference pose (zeros, joints at mid-range, without one).
@@ -37,15 +39,15 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
-from taut.collision._capsules import CapsuleModel, capsule_model
+from taut.collision._capsules import CapsuleModel, capsule_model, capsule_segments
 from taut.collision._proximity import ProximityResult, proximity
 from taut.collision._singularity import JACOBIAN_TOL, force_closure_singular, jacobian_singular
 from taut.errors import PoseError, TautError
 from taut.kinematics import CABLE_OK, actuator_jacobian, as_poses, ik_status
 from taut.model import Robot
-from taut.motion import complete_waypoints
+from taut.motion import complete_waypoints, robot_trajectory
 
-__all__ = ["CheckResult", "check_poses", "load_trajectory", "sample_waypoints", "trajectory_poses"]
+__all__ = ["CheckResult", "check_poses", "load_trajectory", "straight_moves", "trajectory_poses"]
 
 #: Increments per move of a named trajectory that gives no ``steps``.
 DEFAULT_STEPS = 100
@@ -62,7 +64,7 @@ def _fill(robot: Robot, waypoints: np.ndarray, what: str) -> np.ndarray:
     return complete_waypoints(robot, waypoints, what)
 
 
-def sample_waypoints(
+def straight_moves(
     robot: Robot, waypoints: npt.ArrayLike, steps: Iterable[int] | None = None, what: str = "trajectory"
 ) -> np.ndarray:
     """Poses ``(1 + Σ steps, pose_size)`` along straight moves between ``waypoints``, with
@@ -85,12 +87,10 @@ def sample_waypoints(
 
 
 def trajectory_poses(robot: Robot, name: str) -> np.ndarray:
-    """The poses of the robot's named trajectory (e.g. ``sim-c`` of ``adjustable-8cable``)."""
-    if name not in robot.trajectories:
-        known = ", ".join(robot.trajectories) or "none"
-        raise TautError(f"{robot.name}: no built-in trajectory {name!r} (built-in: {known})")
-    t = robot.trajectories[name]
-    return sample_waypoints(robot, t.waypoints, t.steps, f"trajectory {name}")
+    """The poses of the robot's named trajectory (e.g. ``sim-c`` of ``adjustable-8cable``):
+    :func:`straight_moves` through its waypoints."""
+    t = robot_trajectory(robot, name)
+    return straight_moves(robot, t.waypoints, t.steps, f"trajectory {name}")
 
 
 def _csv(text: str, robot: Robot, source: str) -> np.ndarray:
@@ -148,7 +148,7 @@ def load_trajectory(robot: Robot, path: str | Path) -> np.ndarray:
     if isinstance(data, dict) and "poses" in data:
         data = data["poses"]
     if isinstance(data, dict) and "waypoints" in data:
-        return sample_waypoints(robot, data["waypoints"], data.get("steps"), source)
+        return straight_moves(robot, data["waypoints"], data.get("steps"), source)
     if not isinstance(data, list) or not data:
         raise TautError(f"{source}: expected a list of poses, or a mapping with 'poses' or 'waypoints'")
     try:
@@ -188,6 +188,12 @@ class CheckResult:
     def problems(self) -> np.ndarray:
         """``(N,)`` bool: a collision or a singularity."""
         return self.collides | self.jacobian_singular | self.force_closure_singular
+
+    def capsules(self, robot: Robot, k: int) -> tuple[np.ndarray, np.ndarray]:
+        """End points ``A, B`` ``(C, 3)`` of every capsule of :attr:`model` at pose ``k``
+        (0-based) of ``robot``, the robot that was checked (:func:`capsule_segments`)."""
+        A, B = capsule_segments(robot, self.poses[k : k + 1], self.model)
+        return A[0], B[0]
 
     def first(self, flags: np.ndarray) -> int | None:
         """0-based index of the first pose whose flag is true, or None."""

@@ -605,7 +605,7 @@ def solve_igp(
         undecided = tuple(
             _undecided(robot, idx, values, pb, blo, bhi, cause_of(blo, bhi, tol)) for blo, bhi in res.undecided
         ) + tuple(_undecided(robot, idx, values, pb, c.lo, c.hi, "domain-border") for c in res.boundary)
-        boxes, exhausted = min(res.boxes, max_boxes), res.boxes > max_boxes
+        boxes, exhausted = min(res.boxes, max_boxes), res.exhausted
     elif progress is not None:
         progress(0, 0)
     return IGPResult(

@@ -224,6 +224,28 @@ def solution_key(solution: DGPSolution) -> tuple:
     return (solution.taut, *solution.position.tolist(), *solution.orientation.tolist())
 
 
+#: Largest coordinate of a search domain, in units of the solver's ``tol``: beyond
+#: ``2**40 tol`` (110 km for ``tol = 1e-7`` m) ``tol`` spans fewer than 4096 units in the
+#: last place of the coordinates, and the rounding of the squared lengths (``L²``, an ulp
+#: of ``L²`` moves a point by about ``L 2⁻⁵³``) leaves boxes of width ``tol`` that neither
+#: shrink nor certify: a search of hours that proves nothing.
+MAX_SCALE = 2.0**40
+
+
+def check_scale(robot: Robot, lengths: np.ndarray, tol: float) -> None:
+    """Refuse lengths that put the platform where double precision cannot resolve ``tol``
+    (:data:`MAX_SCALE`): a reference point lies within its cable's length of the exit."""
+    reach = float(np.max(np.abs(robot.exits).max(axis=1) + lengths)) + float(
+        np.linalg.norm(robot.anchors, axis=1).max()
+    )
+    if reach > MAX_SCALE * tol:
+        raise TautError(
+            f"cable lengths up to {lengths.max():.3g} m put the platform up to {reach:.3g} m from the origin, where "
+            f"doubles are {np.spacing(reach):.2g} m apart: the solver cannot resolve tol = {tol:g} m there "
+            f"(it takes coordinates up to {MAX_SCALE * tol:.3g} m)"
+        )
+
+
 def check_lengths(robot: Robot, lengths: npt.ArrayLike) -> np.ndarray:
     arr = as_array(lengths, "cable lengths", finite=False).ravel()
     if arr.size != robot.n_cables:
@@ -539,7 +561,9 @@ def solve_dgp(
         that one hard sub-problem is shared by the workers.
     max_boxes : int, optional
         Box budget of every sub-problem, shared equally by its pieces (default
-        :data:`MAX_BOXES`); the boxes left when it runs out are undecided.
+        :data:`MAX_BOXES`); a certification counts as
+        :data:`~taut.interval._branch_prune.CERTIFY_BOXES` boxes, so that the budget bounds
+        the time; the boxes left when it runs out are undecided.
     progress : callable, optional
         ``progress(done, total)`` with the number of jobs done (pieces of sub-problems) out
         of all of them, from 0 to the total.
@@ -559,7 +583,9 @@ def solve_dgp(
     ------
     TautError
         A planar, point-mass or jointed robot, lengths that are not ``n`` positive numbers,
-        no reference lengths to default to, or a bad option.
+        no reference lengths to default to, lengths that put the platform beyond
+        :data:`MAX_SCALE` ``tol`` from the origin (where double precision cannot resolve
+        ``tol``), or a bad option.
     UnsupportedRobotError
         A cable with a swivelling pulley.
 
@@ -588,12 +614,13 @@ def solve_dgp(
             raise TautError(f"{robot.name} has no reference lengths: give the cable lengths")
         lengths = robot.reference.lengths
     checked = check_lengths(robot, lengths)
+    tol = as_number(tol, "tol", positive=True)
+    check_scale(robot, checked, tol)
     n = robot.n_cables
     top = min(n, 6) if max_taut is None else min(n, 6, as_count(max_taut, "max_taut"))
     split = SPLIT if split is None else as_count(split, "split", minimum=0)
     if split > 10:
         raise TautError(f"split must be between 0 and 10 (up to 1024 pieces), got {split}")
-    tol = as_number(tol, "tol", positive=True)
     max_boxes = as_count(max_boxes, "max_boxes")
     runner = as_executor(executor)
     t0 = time.perf_counter()

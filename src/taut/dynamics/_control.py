@@ -65,12 +65,14 @@ import numpy.typing as npt
 from taut.dynamics._forward import IntegrationError
 from taut.dynamics._loop import LoopModel, loop_model
 from taut.errors import InfeasiblePoseError, TautError
-from taut.model import Robot
+from taut.model import MAX_MAGNITUDE, Robot
 from taut.motion import Motion, angle_columns
 
 __all__ = [
     "DEFAULT_KP",
     "DEFAULT_KD",
+    "MAX_RESULT_BYTES",
+    "MAX_STEPS",
     "ControlResult",
     "WrenchSteps",
     "simulate_control",
@@ -89,6 +91,15 @@ SLACK_RTOL = 1e-6
 
 #: Control updates between progress reports.
 PROGRESS_EVERY = 2000
+#: Control updates simulated per block: the reference and the disturbance of a block are
+#: computed at once and its updates folded into the result, so that the memory does not
+#: grow with the duration.
+BLOCK_UPDATES = 1 << 15
+#: Bytes of the samples a :class:`ControlResult` holds (the updates kept: every
+#: ``decimate``-th and the last), checked before the simulation starts.
+MAX_RESULT_BYTES = 1 << 26
+#: Most control updates :func:`simulate_control` simulates (its time budget).
+MAX_STEPS = 100_000_000
 
 
 @dataclass(frozen=True)
@@ -127,24 +138,26 @@ class WrenchSteps:
 
 @dataclass(frozen=True)
 class ControlResult:
-    """A controlled motion sampled at the ``K + 1`` control updates ``time`` (read-only arrays).
+    """A controlled motion: ``updates`` control updates, of which the kept ones (every
+    ``decimate``-th and the last) are sampled at ``time`` (read-only arrays); the
+    statistics (errors, margins, slack events, failures) cover every update.
 
     At update ``k`` the controller saw ``pose[k]``, ``velocity[k]`` against ``reference[k]``,
     commanded ``command[k]`` (``q̈_cmd``) and applied ``tensions[k]`` until the next update
     (``admissible[k]`` False: the distribution failed and the last admissible tensions were
     held)."""
 
-    time: np.ndarray  #: ``(K + 1,)``
-    reference: np.ndarray  #: ``(K + 1, dof)`` the reference pose
-    pose: np.ndarray  #: ``(K + 1, dof)``
-    velocity: np.ndarray  #: ``(K + 1, dof)``
-    error: np.ndarray  #: ``(K + 1, dof)`` ``q_r − q``, angles wrapped into ``[−π, π)``
-    position_error: np.ndarray  #: ``(K + 1,)`` ``‖p_r − p‖`` [m]
-    rotation_error: np.ndarray  #: ``(K + 1,)`` the angle of ``R_rᵀ R`` [rad] (zeros for a point mass)
-    command: np.ndarray  #: ``(K + 1, dof)`` the commanded pose accelerations ``q̈_cmd``
-    tensions: np.ndarray  #: ``(K + 1, n)`` the tensions applied from each update
-    admissible: np.ndarray  #: ``(K + 1,)`` bool: the distribution found admissible tensions
-    disturbance: np.ndarray  #: ``(K + 1, dof)`` the external wrench at each update
+    time: np.ndarray  #: ``(S,)`` the times of the kept updates
+    reference: np.ndarray  #: ``(S, dof)`` the reference pose
+    pose: np.ndarray  #: ``(S, dof)``
+    velocity: np.ndarray  #: ``(S, dof)``
+    error: np.ndarray  #: ``(S, dof)`` ``q_r − q``, angles wrapped into ``[−π, π)``
+    position_error: np.ndarray  #: ``(S,)`` ``‖p_r − p‖`` [m]
+    rotation_error: np.ndarray  #: ``(S,)`` the angle of ``R_rᵀ R`` [rad] (zeros for a point mass)
+    command: np.ndarray  #: ``(S, dof)`` the commanded pose accelerations ``q̈_cmd``
+    tensions: np.ndarray  #: ``(S, n)`` the tensions applied from each update
+    admissible: np.ndarray  #: ``(S,)`` bool: the distribution found admissible tensions
+    disturbance: np.ndarray  #: ``(S, dof)`` the external wrench at each update
     tension_min: np.ndarray  #: ``(n,)``
     tension_max: np.ndarray  #: ``(n,)`` (``inf`` where a cable has no upper limit)
     pose_names: tuple[str, ...]
@@ -153,26 +166,17 @@ class ControlResult:
     rate_hz: float
     substeps: int
     method: str  #: the distribution used where the closed form gives up
-
-    @property
-    def tracking_error_max(self) -> np.ndarray:
-        """``(dof,)`` the largest ``|e|`` of each coordinate."""
-        return np.abs(self.error).max(axis=0)
-
-    @property
-    def tracking_error_rms(self) -> np.ndarray:
-        """``(dof,)`` the root mean square of ``e`` of each coordinate over the updates."""
-        return np.sqrt(np.mean(self.error**2, axis=0))
-
-    @property
-    def lower_margin(self) -> float:
-        """The smallest ``τ − τ_min`` over updates and cables [N]."""
-        return float((self.tensions - self.tension_min).min())
-
-    @property
-    def upper_margin(self) -> float:
-        """The smallest ``τ_max − τ`` [N] (``inf`` without upper limits)."""
-        return float((self.tension_max - self.tensions).min())
+    updates: int  #: control updates simulated, ``K + 1``
+    decimate: int  #: every ``decimate``-th update is kept (and the last)
+    tracking_error_max: np.ndarray  #: ``(dof,)`` the largest ``|e|`` of each coordinate
+    tracking_error_rms: np.ndarray  #: ``(dof,)`` the root mean square of ``e`` over the updates
+    position_error_max: float  #: the largest ``‖p_r − p‖`` [m]
+    rotation_error_max: float  #: the largest rotation error [rad]
+    lower_margin: float  #: the smallest ``τ − τ_min`` over updates and cables [N]
+    upper_margin: float  #: the smallest ``τ_max − τ`` [N] (``inf`` without upper limits)
+    slack_events: int  #: updates at which some commanded tension is at or below its minimum
+    failures: int  #: updates at which the distribution failed (the last tensions were held)
+    first_failure_time: float | None  #: time of the first failed update [s], or None
 
     @property
     def min_tension_margin(self) -> float:
@@ -181,31 +185,19 @@ class ControlResult:
 
     @property
     def slack(self) -> np.ndarray:
-        """``(K + 1, n)`` bool: the commanded tension is at or below its minimum (the cable
-        has no margin left to stay taut; at a minimum of 0, it is slack)."""
-        tol = SLACK_RTOL * np.maximum(1.0, np.abs(self.tension_min))
-        return self.tensions <= self.tension_min + tol
-
-    @property
-    def slack_events(self) -> int:
-        """Updates at which some cable's commanded tension is at or below its minimum."""
-        return int(np.count_nonzero(self.slack.any(axis=1)))
-
-    @property
-    def failures(self) -> int:
-        """Updates at which the distribution failed (the last admissible tensions were held)."""
-        return int(np.count_nonzero(~self.admissible))
-
-    @property
-    def first_failure_time(self) -> float | None:
-        """Time of the first failed update [s], or None."""
-        bad = np.flatnonzero(~self.admissible)
-        return float(self.time[bad[0]]) if bad.size else None
+        """``(S, n)`` bool, at the kept updates: the commanded tension is at or below its
+        minimum (the cable has no margin left to stay taut; at a minimum of 0, it is slack)."""
+        return _slack(self.tensions, self.tension_min)
 
     @property
     def feasible(self) -> bool:
         """Every update found admissible tensions."""
-        return bool(self.admissible.all())
+        return self.failures == 0
+
+
+def _slack(tensions: np.ndarray, tmin: np.ndarray) -> np.ndarray:
+    tol = SLACK_RTOL * np.maximum(1.0, np.abs(tmin))
+    return tensions <= tmin + tol
 
 
 def with_mass_error(robot: Robot, error: float) -> Robot:
@@ -258,6 +250,8 @@ def _tabulate(f: Callable[[float], npt.ArrayLike] | None, time: np.ndarray, subs
             t = float(time[k] + s * h)
             try:
                 w = np.asarray(f(t), dtype=float)
+            except TautError:
+                raise
             except (TypeError, ValueError) as e:
                 raise TautError(f"disturbance at t = {t:g} s: not numbers ({e})") from None
             if w.shape != (dof,) or not np.isfinite(w).all():
@@ -320,7 +314,7 @@ def _update(
             q, qd = plant.step(q, qd, last, h, D[k, s])
         except TautError as exc:
             raise IntegrationError(f"RK4 failed at t = {t + s * h:g} s: {exc}") from None
-    if not (np.isfinite(q).all() and np.isfinite(qd).all()) or np.abs(q).max() > 1e9:
+    if not (np.isfinite(q).all() and np.isfinite(qd).all()) or np.abs(q).max() > MAX_MAGNITUDE:
         raise IntegrationError(
             f"the controlled motion diverged at t = {float(time[k + 1]):g} s from pose "
             f"{np.round(state[0], 6).tolist()} (an RK4 step of {h:g} s too large for the dynamics there?)"
@@ -343,6 +337,7 @@ def simulate_control(
     predict: bool = True,
     q0: npt.ArrayLike | None = None,
     qd0: npt.ArrayLike | None = None,
+    decimate: int = 1,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> ControlResult:
     """Simulate ``robot`` tracking ``motion`` under computed-torque control with the tension
@@ -357,13 +352,17 @@ def simulate_control(
     RK4 step.  ``method``: the distribution where the closed form gives up (a method of
     :data:`taut.statics.METHODS`).  ``predict``: evaluate the law half a period ahead
     (see the module's docstring; False: at the sampled state).  ``q0``, ``qd0``: the initial
-    state (default the reference's).  ``progress(done, total)`` is called with the updates
-    done.
+    state (default the reference's).  ``decimate``: every ``decimate``-th update is kept in
+    the result (and the last), the statistics cover all of them; the updates are simulated
+    in blocks of :data:`BLOCK_UPDATES`, so that the memory is that of the kept samples,
+    at most :data:`MAX_RESULT_BYTES`.  ``progress(done, total)`` is called with the
+    updates done.
 
     Raises
     ------
     TautError
-        Bad gains, rate, model or disturbance.
+        Bad gains, rate, model or disturbance; more than :data:`MAX_STEPS` updates; kept
+        samples beyond :data:`MAX_RESULT_BYTES` (a larger ``decimate`` keeps fewer).
     UnsupportedRobotError
         A robot without mass or inertia, a jointed platform, cables through swivelling pulleys.
     InfeasiblePoseError
@@ -407,100 +406,162 @@ def simulate_control(
     ctrl = plant if model is None else loop_model(model, method)
     duration = motion.duration
     K = max(1, math.ceil(duration * rate_hz - 1e-9))
-    if K > 100_000_000:
-        raise TautError(f"{K} control updates: at most 1e8 are simulated")
-    time = np.minimum(np.arange(K + 1) / rate_hz, duration)
-    samples = motion.at(time)
-    qr, qdr, qddr = samples.pose, samples.velocity, samples.acceleration
-    mid = motion.at(0.5 * (time[1:] + time[:-1]))
-    q = np.array(qr[0]) if q0 is None else np.array(as_poses(robot, q0)[0][0])
-    qd = np.array(qdr[0]) if qd0 is None else np.array(as_rates(robot, qd0, 1)[0])
+    if K > MAX_STEPS:
+        raise TautError(f"{K} control updates: at most {MAX_STEPS:.0e} are simulated")
+    if isinstance(decimate, bool) or int(decimate) != decimate or decimate < 1:
+        raise TautError(f"decimate must be a whole number >= 1, got {decimate!r}")
+    every = int(decimate)
+    kept = K // every + 1 + (K % every != 0)
+    per_sample = 8 * (1 + 6 * dof + n + 2) + 1
+    if kept * per_sample > MAX_RESULT_BYTES:
+        need = math.ceil((K + 1) * per_sample / MAX_RESULT_BYTES)
+        raise TautError(
+            f"{K + 1:,} control updates keep {kept:,} samples of {per_sample} bytes with decimate={every}: "
+            f"{kept * per_sample / 2**20:,.0f} MiB, more than {MAX_RESULT_BYTES / 2**20:,.0f} MiB; keep fewer: "
+            f"decimate >= {need} (taut simulate: --sample-rate at most {rate_hz / need:.3g} Hz)"
+        )
+    first = motion.at([0.0])
+    q = np.array(first.pose[0]) if q0 is None else np.array(as_poses(robot, q0)[0][0])
+    qd = np.array(first.velocity[0]) if qd0 is None else np.array(as_rates(robot, qd0, 1)[0])
     angles = angle_columns(robot)
-    D = _tabulate(disturbance, time, int(substeps), dof)
-    Q, V, E, A = (np.zeros((K + 1, dof)) for _ in range(4))
-    T = np.zeros((K + 1, n))
-    ok_all = np.ones(K + 1, dtype=bool)
+    d = robot.dimension
+    lo, hi = robot.tension_bounds
+    gains = np.array([kp_, kd_])
+    columns = np.array([angles.start, angles.stop], np.int64)
     # q, q̇ (advanced in place), then q, q̇, e, q̈_cmd at the start of an update done here
     state = np.array([q, qd, q, qd, q, q])
     last = np.full(n, np.nan)
-    lo, hi = robot.tension_bounds
-    ref = np.array([qr, qdr, qddr])
-    ahead = np.array([mid.pose, mid.velocity, mid.acceleration])
-    gains = np.array([kp_, kd_])
-    columns = np.array([angles.start, angles.stop], np.int64)
-    k = 0
-    while k <= K:
-        stop = min(k + PROGRESS_EVERY, K + 1)
-        k = control_updates(
-            *plant.kernels.args[:2],
-            *ctrl.kernels.args,
-            k,
-            stop,
-            time,
-            ref,
-            ahead,
-            gains,
-            columns,
-            predict,
-            D,
-            lo,
-            hi,
-            EQUILIBRIUM_RTOL,
-            state,
-            last,
-            Q,
-            V,
-            E,
-            A,
-            T,
-        )
-        if progress is not None:
-            progress(k, K + 1)
-        if k == stop:
-            continue
-        # the closed form gave up, or a step failed: this update here, with the fallback
-        # distribution, and the checked step that names a failure
-        previous = V[k - 1] if k else V[0]
-        ok_all[k] = _update(
-            robot, (plant, ctrl), k, time, (ref, ahead), gains, angles, predict, D, state, previous, last
-        )
-        Q[k], V[k], T[k] = state[2], state[3], last
-        E[k], A[k] = state[4], state[5]
-        k += 1
-    d = robot.dimension
-    pos_err = np.linalg.norm(E[:, :d], axis=1)
-    rot_err = np.zeros(K + 1)
-    if angles.stop > angles.start:
-        if d == 2:
-            rot_err = np.abs(E[:, 2])
-        else:
-            Rr, R = rotation_matrix(qr[:, 3:6], robot.orientation), rotation_matrix(Q[:, 3:6], robot.orientation)
-            cos = (np.einsum("kij,kij->k", Rr, R) - 1.0) / 2.0
-            rot_err = np.arccos(np.clip(cos, -1.0, 1.0))
-    lo, hi = robot.tension_bounds
-    for a in (time, Q, V, E, pos_err, rot_err, A, T, ok_all, kp_, kd_):
-        a.setflags(write=False)
-    frozen = [np.array(a) for a in (qr, D[:, 0], lo, hi)]
-    for a in frozen:
+    out_t = np.empty(kept)
+    out_ref, out_q, out_v, out_e, out_a, out_d = (np.empty((kept, dof)) for _ in range(6))
+    out_pos, out_rot = np.empty(kept), np.empty(kept)
+    out_tau = np.empty((kept, n))
+    out_ok = np.empty(kept, bool)
+    stored = 0
+    err_max, err_sq = np.zeros(dof), np.zeros(dof)
+    pos_max = rot_max = 0.0
+    lower = upper = math.inf
+    slack_events = failures = 0
+    first_failure: float | None = None
+    v_prev = np.zeros(dof)
+    for k0 in range(0, K + 1, BLOCK_UPDATES):
+        k1 = min(k0 + BLOCK_UPDATES, K + 1)
+        # the block's rows: the update before it (its velocity: the measured acceleration),
+        # its own, and the next one's time (the last step of the block)
+        g0 = k0 - 1 if k0 else 0
+        g = np.arange(g0, min(k1 + 1, K + 1))
+        time = np.minimum(g / rate_hz, duration)
+        samples = motion.at(time)
+        mid = motion.at(0.5 * (time[1:] + time[:-1]))
+        ref = np.array([samples.pose, samples.velocity, samples.acceleration])
+        ahead = np.array([mid.pose, mid.velocity, mid.acceleration])
+        D = _tabulate(disturbance, time, int(substeps), dof)
+        Q, V, E, A = (np.zeros((g.size, dof)) for _ in range(4))
+        T = np.zeros((g.size, n))
+        ok_all = np.ones(g.size, dtype=bool)
+        V[0] = v_prev
+        k, end = k0 - g0, k1 - g0
+        while k < end:
+            stop = min(k + PROGRESS_EVERY, end)
+            k = control_updates(
+                *plant.kernels.args[:2],
+                *ctrl.kernels.args,
+                k,
+                stop,
+                time,
+                ref,
+                ahead,
+                gains,
+                columns,
+                predict,
+                D,
+                lo,
+                hi,
+                EQUILIBRIUM_RTOL,
+                state,
+                last,
+                Q,
+                V,
+                E,
+                A,
+                T,
+            )
+            if progress is not None:
+                progress(g0 + k, K + 1)
+            if k == stop:
+                continue
+            # the closed form gave up, or a step failed: this update here, with the fallback
+            # distribution, and the checked step that names a failure
+            previous = V[k - 1] if k else V[0]
+            ok_all[k] = _update(
+                robot, (plant, ctrl), k, time, (ref, ahead), gains, angles, predict, D, state, previous, last
+            )
+            Q[k], V[k], T[k] = state[2], state[3], last
+            E[k], A[k] = state[4], state[5]
+            k += 1
+        new = slice(k0 - g0, end)
+        Eb, Tb, okb, tb = E[new], T[new], ok_all[new], time[new]
+        pos = np.linalg.norm(Eb[:, :d], axis=1)
+        rot = np.zeros(pos.size)
+        if angles.stop > angles.start:
+            if d == 2:
+                rot = np.abs(Eb[:, 2])
+            else:
+                Rr = rotation_matrix(ref[0, new, 3:6], robot.orientation)
+                R = rotation_matrix(Q[new, 3:6], robot.orientation)
+                rot = np.arccos(np.clip((np.einsum("kij,kij->k", Rr, R) - 1.0) / 2.0, -1.0, 1.0))
+        err_max = np.maximum(err_max, np.abs(Eb).max(axis=0))
+        err_sq += (Eb**2).sum(axis=0)
+        pos_max, rot_max = max(pos_max, float(pos.max())), max(rot_max, float(rot.max()))
+        lower = min(lower, float((Tb - lo).min()))
+        upper = min(upper, float((hi - Tb).min()))
+        slack_events += int(np.count_nonzero(_slack(Tb, lo).any(axis=1)))
+        bad = np.flatnonzero(~okb)
+        failures += bad.size
+        if first_failure is None and bad.size:
+            first_failure = float(tb[bad[0]])
+        keep = np.flatnonzero((g[new] % every == 0) | (g[new] == K))
+        rows = keep + new.start
+        at = slice(stored, stored + keep.size)
+        out_t[at], out_ref[at], out_q[at], out_v[at] = time[rows], ref[0, rows], Q[rows], V[rows]
+        out_e[at], out_a[at], out_d[at], out_tau[at] = E[rows], A[rows], D[rows, 0], T[rows]
+        out_pos[at], out_rot[at], out_ok[at] = pos[keep], rot[keep], ok_all[rows]
+        stored += keep.size
+        v_prev = V[end - 1].copy()
+    assert stored == kept, "every kept update is stored once"
+    frozen = [out_t, out_ref, out_q, out_v, out_e, out_pos, out_rot, out_a, out_tau, out_ok, out_d, kp_, kd_]
+    tmin, tmax = np.array(lo, float), np.array(hi, float)
+    rms = np.sqrt(err_sq / (K + 1))
+    for a in (*frozen, tmin, tmax, err_max, rms):
         a.setflags(write=False)
     return ControlResult(
-        time=time,
-        reference=frozen[0],
-        pose=Q,
-        velocity=V,
-        error=E,
-        position_error=pos_err,
-        rotation_error=rot_err,
-        command=A,
-        tensions=T,
-        admissible=ok_all,
-        disturbance=frozen[1],
-        tension_min=frozen[2],
-        tension_max=frozen[3],
+        time=out_t,
+        reference=out_ref,
+        pose=out_q,
+        velocity=out_v,
+        error=out_e,
+        position_error=out_pos,
+        rotation_error=out_rot,
+        command=out_a,
+        tensions=out_tau,
+        admissible=out_ok,
+        disturbance=out_d,
+        tension_min=tmin,
+        tension_max=tmax,
         pose_names=tuple(robot.pose_names),
         kp=kp_,
         kd=kd_,
         rate_hz=float(rate_hz),
         substeps=int(substeps),
         method=method,
+        updates=K + 1,
+        decimate=every,
+        tracking_error_max=err_max,
+        tracking_error_rms=rms,
+        position_error_max=pos_max,
+        rotation_error_max=rot_max,
+        lower_margin=lower,
+        upper_margin=upper,
+        slack_events=slack_events,
+        failures=failures,
+        first_failure_time=first_failure,
     )

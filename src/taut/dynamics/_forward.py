@@ -32,7 +32,7 @@ import numpy.typing as npt
 from taut.dynamics._platform import CONVENTION_FACTORS, SPATIAL, PlatformDynamics, as_rates, platform_dynamics
 from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError
 from taut.kinematics import as_poses, robot_stiffness, tension_from_stretch
-from taut.model import Robot
+from taut.model import MAX_MAGNITUDE, Robot
 
 __all__ = [
     "IntegrationError",
@@ -146,7 +146,7 @@ def quick_rows(
 ) -> tuple[list[np.ndarray], bool] | None:
     """Poses ``q`` and per-pose arrays ``others`` (value, width; None for zeros) as
     C-contiguous ``(N, ·)`` arrays, and whether ``q`` was one pose, when the shapes are right
-    and every value is finite (and the poses within 1e9, like
+    and every value is finite (and the poses within ``MAX_MAGNITUDE``, like
     :func:`~taut.kinematics.as_poses`) — checked in a few operations, because a control
     loop calls this every step; None otherwise, and the caller's full checks name the problem.
     Not for jointed platforms (no joint limits are checked)."""
@@ -359,6 +359,8 @@ def _rk4(
 def _call(f: Callable[[float], npt.ArrayLike], t: float, what: str, shape: tuple[int, ...]) -> np.ndarray:
     try:
         v = np.asarray(f(t), dtype=float)
+    except TautError:
+        raise
     except (TypeError, ValueError) as e:
         raise TautError(f"{what} at t = {t:g} s: not numbers ({e})") from None
     if v.shape != shape:
@@ -401,7 +403,11 @@ def forward_dynamics(
         Bad input (no or two drives, an unknown method, a callable returning the wrong shape
         or non-finite values).
     IntegrationError
-        When the integrator fails or the motion reaches a singular configuration.
+        When the integrator fails or the motion reaches a singular configuration.  A trial
+        stage of an adaptive step that leaves the representable range (a coordinate beyond
+        :data:`~taut.kinematics._pose.MAX_MAGNITUDE`) or reaches a singular configuration
+        only makes the step controller reject that step; the range is checked on the
+        accepted steps.
 
     References
     ----------
@@ -477,7 +483,7 @@ def _fixed_steps(
             x, v = _rk4(robot, model, x, v, u, w, float(time[k + 1] - time[k]), elastic)
         except TautError as e:
             raise IntegrationError(f"RK4 failed at t = {time[k]:g} s: {e}") from None
-        if not (np.isfinite(x).all() and np.isfinite(v).all()) or np.abs(x).max() > 1e9:
+        if not (np.isfinite(x).all() and np.isfinite(v).all()) or np.abs(x).max() > MAX_MAGNITUDE:
             raise IntegrationError(f"RK4 diverged at t = {time[k + 1]:g} s (step {step:g} s too large?)")
         Q[k + 1], V[k + 1] = x[0], v[0]
         if progress is not None:
@@ -500,7 +506,7 @@ def _adaptive(
     times: npt.ArrayLike | None,
     progress: Callable[[int, int | None], None] | None,
 ) -> ForwardDynamicsResult:
-    from scipy.integrate import solve_ivp
+    from scipy import integrate
 
     dof = q.size
     t_eval = None
@@ -510,41 +516,66 @@ def _adaptive(
             raise TautError("output times must be finite and increasing")
         if t_eval.size and (t_eval[0] < 0 or t_eval[-1] > duration):
             raise TautError(f"output times must lie in [0, {duration:g}] s")
-    failure: list[str] = []
+    failures: list[str] = []
 
     def rhs(t: float, y: np.ndarray) -> np.ndarray:
+        # A trial stage of an adaptive step may leave the representable range or reach a
+        # singular configuration; NaN makes the step controller reject the step (its error
+        # norm is NaN), and only a failure of the integrator itself is reported.
         x, v = y[None, :dof], y[None, dof:]
         u, w = inputs(t)
-        if not (np.isfinite(y).all() and np.abs(x).max() <= 1e9):
-            failure.append(f"the motion left the representable range at t = {t:g} s")
-            return np.zeros_like(y)
+        if not (np.isfinite(y).all() and np.abs(x).max() <= MAX_MAGNITUDE):
+            failures.append(f"the motion left the representable range at t = {t:g} s")
+            return np.full_like(y, np.nan)
         try:
             a, _, status = _accelerate(robot, model, np.ascontiguousarray(x), np.ascontiguousarray(v), u, w, elastic)
         except TautError as e:
-            failure.append(f"at t = {t:g} s: {e}")
-            return np.zeros_like(y)
+            failures.append(f"at t = {t:g} s: {e}")
+            return np.full_like(y, np.nan)
         if status[0]:
-            failure.append(f"at t = {t:g} s: {_status_error(robot, status, 'state')}")
-            return np.zeros_like(y)
-        if progress is not None:
-            progress(min(int(t / duration * 1000), 1000), 1000)
+            failures.append(f"at t = {t:g} s: {_status_error(robot, status, 'state')}")
+            return np.full_like(y, np.nan)
         return np.concatenate([v[0], a[0]])
 
-    kwargs: dict[str, object] = {"rtol": rtol, "atol": atol}
+    y0 = np.concatenate([q, qd])
+    if not np.isfinite(rhs(0.0, y0)).all():
+        raise IntegrationError(f"{method} failed: {failures[-1]}")
+    options: dict[str, float] = {"rtol": rtol, "atol": atol}
     if step is not None:
-        kwargs["max_step"] = step
-    sol = solve_ivp(rhs, (0.0, duration), np.concatenate([q, qd]), method=method, t_eval=t_eval, **kwargs)
-    if failure:
-        raise IntegrationError(f"{method} failed: {failure[0]}")
-    if not sol.success:
-        raise IntegrationError(f"{method} failed: {sol.message}")
-    Y = sol.y.T
+        options["max_step"] = step
+    solver = getattr(integrate, method)(rhs, 0.0, y0, duration, **options)
+    out_t: list[float] = []
+    out_y: list[np.ndarray] = []
+    if t_eval is None or (t_eval.size and t_eval[0] == 0.0):
+        out_t.append(0.0)
+        out_y.append(y0)
+    while solver.status == "running":
+        t_old = solver.t
+        message = solver.step()
+        if solver.status == "failed":
+            raise IntegrationError(f"{method} failed: {failures[-1] if failures else message}")
+        t, y = float(solver.t), solver.y
+        # the range is checked on accepted steps only
+        if not (np.isfinite(y).all() and np.abs(y[:dof]).max() <= MAX_MAGNITUDE):
+            raise IntegrationError(f"{method} failed: the motion left the representable range at t = {t:g} s")
+        if t_eval is None:
+            out_t.append(t)
+            out_y.append(y.copy())
+        else:
+            inside = t_eval[(t_eval > t_old) & (t_eval <= t)]
+            if inside.size:
+                out_t.extend(inside.tolist())
+                out_y.extend(np.atleast_2d(solver.dense_output()(inside).T))
+        if progress is not None:
+            progress(min(int(t / duration * 1000), 1000), 1000)
+    Y = np.array(out_y, dtype=float).reshape(len(out_t), 2 * dof)
     if not np.isfinite(Y).all():
         raise IntegrationError(f"{method} failed: the solution is not finite")
-    taus = np.array([inputs(float(t))[0][0] for t in sol.t]).reshape(len(sol.t), robot.n_cables)
+    times_out = np.array(out_t, dtype=float)
+    taus = np.array([inputs(float(t))[0][0] for t in times_out]).reshape(len(times_out), robot.n_cables)
     if elastic:
-        taus = cable_tensions(robot, Y[:, :dof], taus) if len(sol.t) else taus
-    return _result(robot, sol.t, Y[:, :dof], Y[:, dof:], taus, elastic, method, int(sol.nfev))
+        taus = cable_tensions(robot, Y[:, :dof], taus) if len(times_out) else taus
+    return _result(robot, times_out, Y[:, :dof], Y[:, dof:], taus, elastic, method, int(solver.nfev) + 1)
 
 
 def _result(

@@ -32,10 +32,12 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from taut.geometry import rotate_about_axis
+from taut.kinematics import MIN_LENGTH
+from taut.model import MAX_MAGNITUDE
+
 #: Below this ``|det U|`` the rate matrix counts as singular (gimbal lock).
 GIMBAL_TOL = 1e-9
-#: A cable shorter than this [m] has no direction.
-MIN_LENGTH = 1e-12
 
 OK, GIMBAL_LOCK, ZERO_LENGTH = 0, 1, 2
 
@@ -50,17 +52,6 @@ FLOAT_LAYOUT = {
     "T": slice(28, 37),
     "Tinv": slice(37, 46),
 }
-
-
-@njit(cache=True, nogil=True)
-def _rotate_axis(axis: int, t: float, P: np.ndarray, out: np.ndarray) -> None:
-    """``out = P @ Rot(axis, t)``."""
-    c, s = np.cos(t), np.sin(t)
-    i, j = (axis + 1) % 3, (axis + 2) % 3
-    for r in range(3):
-        out[r, axis] = P[r, axis]
-        out[r, i] = c * P[r, i] + s * P[r, j]
-        out[r, j] = -s * P[r, i] + c * P[r, j]
 
 
 @njit(cache=True, nogil=True)
@@ -151,7 +142,7 @@ def acceleration_one(
             for i in range(3):
                 Edq[i] += cr[i] * td[k]
                 omega[i] += U[i, k] * td[k]
-            _rotate_axis(ax, t[k], R, tmp)
+            rotate_about_axis(ax, t[k], R, tmp)
             R[:, :] = tmp
     p[:] = 0.0
     F[:] = 0.0
@@ -375,7 +366,7 @@ def wrench_one(
             for i in range(3):
                 alpha[i] += U[i, k] * tdd[k] + cr[i] * td[k]
                 omega[i] += U[i, k] * td[k]
-            _rotate_axis(ax, t[k], R, tmp)
+            rotate_about_axis(ax, t[k], R, tmp)
             R[:, :] = tmp
     _matvec(R, com, rc)
     if kind != 0:
@@ -620,7 +611,7 @@ def control_updates(
             for j in range(dof):
                 q2[0, j], qd2[0, j] = qn[0, j], qdn[0, j]
         for j in range(dof):
-            if not (np.isfinite(q2[0, j]) and np.isfinite(qd2[0, j]) and abs(q2[0, j]) <= 1e9):
+            if not (np.isfinite(q2[0, j]) and np.isfinite(qd2[0, j]) and abs(q2[0, j]) <= MAX_MAGNITUDE):
                 return k
         for j in range(dof):
             state[0, j], state[1, j] = q2[0, j], qd2[0, j]

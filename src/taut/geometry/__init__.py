@@ -15,28 +15,32 @@ if TYPE_CHECKING:
         segment_meets_circle,
         segments_intersect,
     )
-    from taut.geometry._rates import rate_matrix, rate_matrix_derivative
+    from taut.geometry._rates import angular_acceleration, angular_velocity, rate_matrix, rate_matrix_derivative
     from taut.geometry._rotation import CONVENTIONS, angles_from_matrix, planar_rotation, rotation_matrix
-    from taut.geometry._rotation_kernels import matrix_angles
+    from taut.geometry._rotation_kernels import matrix_angles, rotate_about_axis, rotation_into
     from taut.geometry._segments import segment_distance, segment_distance_scalar
     from taut.geometry._tangents import directed_tangent
     from taut.geometry._vectors import cross
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
-    "matrix_angles": "taut.geometry._rotation_kernels",
     "axis_frames": "taut.geometry._frames",
     "circles_overlap": "taut.geometry._intersections",
     "point_in_polygon": "taut.geometry._intersections",
     "segment_enters_polygon": "taut.geometry._intersections",
     "segment_meets_circle": "taut.geometry._intersections",
     "segments_intersect": "taut.geometry._intersections",
+    "angular_acceleration": "taut.geometry._rates",
+    "angular_velocity": "taut.geometry._rates",
     "rate_matrix": "taut.geometry._rates",
     "rate_matrix_derivative": "taut.geometry._rates",
     "CONVENTIONS": "taut.geometry._rotation",
     "angles_from_matrix": "taut.geometry._rotation",
     "planar_rotation": "taut.geometry._rotation",
     "rotation_matrix": "taut.geometry._rotation",
+    "matrix_angles": "taut.geometry._rotation_kernels",
+    "rotate_about_axis": "taut.geometry._rotation_kernels",
+    "rotation_into": "taut.geometry._rotation_kernels",
     "segment_distance": "taut.geometry._segments",
     "segment_distance_scalar": "taut.geometry._segments",
     "directed_tangent": "taut.geometry._tangents",
@@ -44,17 +48,21 @@ _LAZY = {
 }
 
 __all__ = [
-    "matrix_angles",
     "CONVENTIONS",
     "angles_from_matrix",
+    "angular_acceleration",
+    "angular_velocity",
     "axis_frames",
     "circles_overlap",
     "cross",
     "directed_tangent",
+    "matrix_angles",
     "planar_rotation",
     "point_in_polygon",
     "rate_matrix",
     "rate_matrix_derivative",
+    "rotate_about_axis",
+    "rotation_into",
     "rotation_matrix",
     "segment_distance",
     "segment_distance_scalar",

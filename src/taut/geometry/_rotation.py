@@ -26,12 +26,29 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from taut.errors import ArgumentError
+
 CONVENTIONS = ("xyz-fixed", "xyz-moving", "tilt-torsion")
 
 
+def check_convention(convention: str) -> None:
+    """Raise :class:`~taut.errors.ArgumentError` unless ``convention`` is one of :data:`CONVENTIONS`."""
+    if convention not in CONVENTIONS:
+        raise ArgumentError(f"unknown orientation convention {convention!r}; expected one of {', '.join(CONVENTIONS)}")
+
+
+def _numbers(values: npt.ArrayLike, what: str) -> np.ndarray:
+    try:
+        return np.asarray(values, dtype=float)
+    except (TypeError, ValueError):
+        raise ArgumentError(f"{what} must be numbers, got {values!r}") from None
+
+
 def planar_rotation(theta: npt.ArrayLike) -> np.ndarray:
-    """``R(θ)`` of shape ``(..., 2, 2)`` for angles of shape ``(...)``."""
-    theta = np.asarray(theta, dtype=float)
+    """``R(θ)`` of shape ``(..., 2, 2)`` for angles of shape ``(...)``.
+
+    Raises :class:`~taut.errors.ArgumentError` for angles that are not numbers."""
+    theta = _numbers(theta, "planar rotation angles")
     c, s = np.cos(theta), np.sin(theta)
     return np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)
 
@@ -49,6 +66,9 @@ def _axis(k: int, t: np.ndarray) -> np.ndarray:
 def rotation_matrix(angles: npt.ArrayLike, convention: str = "xyz-fixed") -> np.ndarray:
     """Rotation matrices ``(..., 3, 3)`` from three angles ``(..., 3)`` in ``convention``.
 
+    Raises :class:`~taut.errors.ArgumentError` for an unknown convention or angles that are
+    not numbers ``(..., 3)``.
+
     References
     ----------
     .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
@@ -62,9 +82,11 @@ def rotation_matrix(angles: npt.ArrayLike, convention: str = "xyz-fixed") -> np.
        Mechanisms and Machine Science 12, Springer, 2013, Eq. 1.
        (docs/references.bib: bohigas2013)
     """
-    if convention not in CONVENTIONS:
-        raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
-    a, b, c = np.moveaxis(np.asarray(angles, dtype=float), -1, 0)
+    check_convention(convention)
+    arr = _numbers(angles, "rotation angles")
+    if arr.ndim == 0 or arr.shape[-1] != 3:
+        raise ArgumentError(f"a rotation takes three angles (..., 3), got shape {arr.shape}")
+    a, b, c = np.moveaxis(arr, -1, 0)
     if convention == "xyz-fixed":
         return _axis(2, c) @ _axis(1, b) @ _axis(0, a)
     if convention == "xyz-moving":
@@ -74,10 +96,13 @@ def rotation_matrix(angles: npt.ArrayLike, convention: str = "xyz-fixed") -> np.
 
 def angles_from_matrix(R: npt.ArrayLike, convention: str = "xyz-fixed") -> np.ndarray:
     """Inverse of :func:`rotation_matrix`: angles ``(..., 3)`` with the middle angle in
-    ``[-π/2, π/2]`` (``[0, π]`` for tilt-and-torsion)."""
-    if convention not in CONVENTIONS:
-        raise ValueError(f"unknown orientation convention {convention!r}; expected one of {CONVENTIONS}")
-    R = np.asarray(R, dtype=float)
+    ``[-π/2, π/2]`` (``[0, π]`` for tilt-and-torsion).  Raises
+    :class:`~taut.errors.ArgumentError` for an unknown convention or matrices that are not
+    ``(..., 3, 3)``."""
+    check_convention(convention)
+    R = _numbers(R, "rotation matrices")
+    if R.shape[-2:] != (3, 3):
+        raise ArgumentError(f"rotation matrices are (..., 3, 3), got shape {R.shape}")
     flat = np.ascontiguousarray(R.reshape(-1, 3, 3))
     from taut.geometry._rotation_kernels import matrix_angles
 

@@ -40,6 +40,8 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut.errors import ArgumentError
+
 __all__ = ["segment_distance"]
 
 #: ``a e − b² ≤ PARALLEL_TOL · a e`` counts as parallel.
@@ -128,7 +130,7 @@ def _as3(x: np.ndarray) -> np.ndarray:
         return x
     if x.shape[-1] == 2:
         return np.concatenate([x, np.zeros(x.shape[:-1] + (1,))], axis=-1)
-    raise ValueError(f"segment end points must be 2-D or 3-D, got {x.shape[-1]} coordinates")
+    raise ArgumentError(f"segment end points must be 2-D or 3-D, got {x.shape[-1]} coordinates")
 
 
 @overload
@@ -147,6 +149,8 @@ def segment_distance(
     The end points are arrays ``(..., 2)`` or ``(..., 3)`` that broadcast together; returns
     ``δ`` of the broadcast shape, and with ``parameters=True`` also ``ξ_i, ξ_j ∈ [0, 1]``
     locating a closest pair of points ``a1 + ξ_i (b1 − a1)`` and ``a2 + ξ_j (b2 − a2)``.
+    Raises :class:`~taut.errors.ArgumentError` for end points that are not numbers, do not
+    broadcast or are not 2-D or 3-D.
 
     References
     ----------
@@ -154,7 +158,14 @@ def segment_distance(
        Bachelor thesis, Czech Technical University in Prague, 2020, §3.5, Eq. 3.5.1.
        (docs/references.bib: lieskovsky2020)
     """
-    arrs = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (a1, b1, a2, b2)))
+    try:
+        arrs = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (a1, b1, a2, b2)))
+    except (TypeError, ValueError):
+        raise ArgumentError(
+            "segment end points must be numbers in arrays (..., 2) or (..., 3) that broadcast"
+        ) from None
+    if arrs[0].ndim == 0:
+        raise ArgumentError("segment end points must be arrays (..., 2) or (..., 3), got scalars")
     shape = arrs[0].shape[:-1]
     flat = [np.ascontiguousarray(_as3(x).reshape(-1, 3)) for x in arrs]
     M = flat[0].shape[0]

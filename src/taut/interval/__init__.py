@@ -18,6 +18,7 @@ from taut._lazy import lazy_exports
 if TYPE_CHECKING:
     from taut.interval._arithmetic import Interval, centred_form
     from taut.interval._branch_prune import (
+        CERTIFY_BOXES,
         Box,
         BranchAndPruneResult,
         bisect,
@@ -46,12 +47,11 @@ if TYPE_CHECKING:
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
-    "solve_precise": "taut.interval._precise",
-    "precise_available": "taut.interval._precise",
     "Interval": "taut.interval._arithmetic",
     "centred_form": "taut.interval._arithmetic",
     "Box": "taut.interval._branch_prune",
     "BranchAndPruneResult": "taut.interval._branch_prune",
+    "CERTIFY_BOXES": "taut.interval._branch_prune",
     "bisect": "taut.interval._branch_prune",
     "branch_and_prune": "taut.interval._branch_prune",
     "file_certificate": "taut.interval._branch_prune",
@@ -81,11 +81,14 @@ _LAZY = {
     "LinearFilter": "taut.interval._linear",
     "interval_gauss": "taut.interval._linear",
     "preconditioned_solve": "taut.interval._linear",
+    "precise_available": "taut.interval._precise",
+    "solve_precise": "taut.interval._precise",
 }
 
 __all__ = [
     "Box",
     "BranchAndPruneResult",
+    "CERTIFY_BOXES",
     "CONST",
     "Certificate",
     "Expr",

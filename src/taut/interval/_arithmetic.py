@@ -23,6 +23,7 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut.errors import ArgumentError
 from taut.interval import _kernels as K
 
 
@@ -79,9 +80,12 @@ class Interval:
     __array_priority__ = 1000  # ``ndarray + Interval`` defers to Interval.__radd__
 
     def __init__(self, lo: npt.ArrayLike, hi: npt.ArrayLike | None = None) -> None:
-        lo = np.asarray(lo, dtype=np.float64)
-        hi = lo if hi is None else np.asarray(hi, dtype=np.float64)
-        shape = np.broadcast_shapes(lo.shape, hi.shape)
+        try:
+            lo = np.asarray(lo, dtype=np.float64)
+            hi = lo if hi is None else np.asarray(hi, dtype=np.float64)
+            shape = np.broadcast_shapes(lo.shape, hi.shape)
+        except (TypeError, ValueError):
+            raise ArgumentError("interval end points must be numbers in arrays that broadcast together") from None
         self.lo = np.broadcast_to(lo, shape).copy()
         self.hi = np.broadcast_to(hi, shape).copy()
 
@@ -171,7 +175,7 @@ class Interval:
 
     def __pow__(self, n: int) -> Interval:
         if int(n) != n or n < 0:
-            raise ValueError(f"interval powers take a non-negative integer exponent, got {n!r}")
+            raise ArgumentError(f"interval powers take a non-negative integer exponent, got {n!r}")
         return self._unary(_pow, int(n))
 
     def sum(self) -> Interval:

@@ -29,6 +29,8 @@ from fractions import Fraction
 
 import numpy as np
 
+from taut.errors import ArgumentError
+
 # Opcodes shared with taut.interval._hc4.
 VAR, CONST, ADD, SUB, MUL, NEG, SQR, POW, SQRT, DIV = range(10)
 
@@ -99,7 +101,7 @@ class Expr:
 
     def __pow__(self, n: int) -> Expr:
         if int(n) != n or n < 0:
-            raise ValueError(f"expressions take non-negative integer powers, got {n!r}")
+            raise ArgumentError(f"expressions take non-negative integer powers, got {n!r}")
         n = int(n)
         if n == 0:
             return ONE
@@ -356,7 +358,7 @@ def compile_system(
     (pairs ``(expr, (lo, hi))``) over the unknowns ``x_0 … x_{n-1}``."""
     equations = [_coerce(e) for e in equations]
     if len(equations) != n:
-        raise ValueError(f"a square system needs {n} equations, got {len(equations)}")
+        raise ArgumentError(f"a square system needs {n} equations, got {len(equations)}")
     exprs = list(equations) + [_coerce(e) for e, _ in constraints]
     bounds = [(0.0, 0.0)] * n + [tuple(map(float, bd)) for _, bd in constraints]
     tape = compile_tape(exprs, bounds)

@@ -20,7 +20,7 @@ if TYPE_CHECKING:
         structure_matrix,
     )
     from taut.kinematics._jointed import actuator_jacobian, joint_forces, jointed_structure_matrix
-    from taut.kinematics._paths import CABLE_OK, cable_paths
+    from taut.kinematics._paths import CABLE_OK, MIN_LENGTH, cable_paths
     from taut.kinematics._pose import anchor_points, anchors_at, as_poses, body_frames, platform_frame
     from taut.kinematics._swivel import refuse_swivels, swivel_angles, swivel_parameters, swivel_paths
 
@@ -43,6 +43,7 @@ _LAZY = {
     "joint_forces": "taut.kinematics._jointed",
     "jointed_structure_matrix": "taut.kinematics._jointed",
     "CABLE_OK": "taut.kinematics._paths",
+    "MIN_LENGTH": "taut.kinematics._paths",
     "cable_paths": "taut.kinematics._paths",
     "anchor_points": "taut.kinematics._pose",
     "anchors_at": "taut.kinematics._pose",
@@ -59,6 +60,7 @@ __all__ = [
     "CABLE_OK",
     "FKResult",
     "IKResult",
+    "MIN_LENGTH",
     "actuator_jacobian",
     "anchor_points",
     "anchors_at",

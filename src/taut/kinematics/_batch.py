@@ -22,74 +22,10 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from taut.geometry import CONVENTIONS, axis_frames
+from taut.geometry import CONVENTIONS, axis_frames, rotation_into
 from taut.kinematics._paths import MIN_LENGTH
 from taut.kinematics._swivel import SINGULAR_TOL, swivel_parameters
 from taut.model import Robot
-
-
-@njit(cache=True, nogil=True)
-def _rot_axis(axis: int, t: float, out: np.ndarray) -> None:
-    c = np.cos(t)
-    s = np.sin(t)
-    for i in range(3):
-        for j in range(3):
-            out[i, j] = 0.0
-    if axis == 0:
-        out[0, 0] = 1.0
-        out[1, 1] = c
-        out[1, 2] = -s
-        out[2, 1] = s
-        out[2, 2] = c
-    elif axis == 1:
-        out[0, 0] = c
-        out[0, 2] = s
-        out[1, 1] = 1.0
-        out[2, 0] = -s
-        out[2, 2] = c
-    else:
-        out[0, 0] = c
-        out[0, 1] = -s
-        out[1, 0] = s
-        out[1, 1] = c
-        out[2, 2] = 1.0
-
-
-@njit(cache=True, nogil=True)
-def _mul3(X: np.ndarray, Y: np.ndarray, out: np.ndarray) -> None:
-    for i in range(3):
-        for j in range(3):
-            out[i, j] = X[i, 0] * Y[0, j] + X[i, 1] * Y[1, j] + X[i, 2] * Y[2, j]
-
-
-@njit(cache=True, nogil=True)
-def _rotation(
-    conv: int,
-    a: float,
-    b: float,
-    c: float,
-    R: np.ndarray,
-    T1: np.ndarray,
-    T2: np.ndarray,
-    T3: np.ndarray,
-    T4: np.ndarray,
-) -> None:
-    """``R`` for the angles ``(a, b, c)``: 0 ``xyz-fixed`` ``Rz(c)Ry(b)Rx(a)``,
-    1 ``xyz-moving`` ``Rx(a)Ry(b)Rz(c)``, 2 ``tilt-torsion`` ``Rz(a)Ry(b)Rz(c−a)``."""
-    if conv == 0:
-        _rot_axis(2, c, T1)
-        _rot_axis(1, b, T2)
-        _rot_axis(0, a, T3)
-    elif conv == 1:
-        _rot_axis(0, a, T1)
-        _rot_axis(1, b, T2)
-        _rot_axis(2, c, T3)
-    else:
-        _rot_axis(2, a, T1)
-        _rot_axis(1, b, T2)
-        _rot_axis(2, c - a, T3)
-    _mul3(T1, T2, T4)
-    _mul3(T4, T3, R)
 
 
 @njit(cache=True, nogil=True)
@@ -147,10 +83,7 @@ def _ik_kernel(
     N = poses.shape[0]
     n = exits.shape[0]
     R = np.zeros((3, 3))
-    T1 = np.empty((3, 3))
-    T2 = np.empty((3, 3))
-    T3 = np.empty((3, 3))
-    T4 = np.empty((3, 3))
+    work = np.empty((3, 3))
     arm = np.zeros(3)
     u = np.zeros(3)
     b = np.zeros(3)
@@ -164,7 +97,7 @@ def _ik_kernel(
                 R[1, 0] = st
                 R[1, 1] = ct
             else:
-                _rotation(conv, poses[k, 3], poses[k, 4], poses[k, 5], R, T1, T2, T3, T4)
+                rotation_into(conv, poses[k, 3], poses[k, 4], poses[k, 5], R, work)
         good = True
         for i in range(n):
             for r in range(dim):

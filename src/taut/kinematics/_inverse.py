@@ -31,7 +31,6 @@ import numpy.typing as npt
 
 from taut.errors import InfeasiblePoseError
 from taut.geometry import cross
-from taut.kinematics._batch import kernel_structure_matrices, supports_batch
 from taut.kinematics._paths import CABLE_OK, MIN_LENGTH, STATUS_REASONS, ZERO_LENGTH, cable_paths
 from taut.kinematics._pose import anchors_at, as_poses
 from taut.model import Robot
@@ -137,6 +136,8 @@ def _batched(robot: Robot, poses: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
     swivelling pulleys (the kernel does not return their tangent points)."""
     if poses.shape[0] < BATCH_POSES or robot.swivel_cables:
         return None
+    from taut.kinematics._batch import kernel_structure_matrices, supports_batch  # Numba, for large batches only
+
     return kernel_structure_matrices(robot, poses) if supports_batch(robot) else None
 
 
@@ -162,6 +163,8 @@ def batch_structure_matrices(robot: Robot, poses: npt.ArrayLike) -> tuple[np.nda
     swivelling pulley, a tangent point (elsewhere ``W`` is zero).  Robots with jointed bodies
     and planar robots with swivelling pulleys go through the NumPy implementation
     (:func:`ik_status`)."""
+    from taut.kinematics._batch import kernel_structure_matrices, supports_batch
+
     arr, _ = as_poses(robot, poses)
     if not supports_batch(robot):
         ik, status = ik_status(robot, arr)

@@ -13,7 +13,7 @@ import numpy.typing as npt
 
 from taut.errors import PoseError
 from taut.geometry import planar_rotation, rotation_matrix
-from taut.model import Robot
+from taut.model import MAX_MAGNITUDE, Robot
 
 
 def as_poses(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, bool]:
@@ -34,9 +34,11 @@ def as_poses(robot: Robot, poses: npt.ArrayLike) -> tuple[np.ndarray, bool]:
     if not np.all(np.isfinite(arr)):
         bad = np.argwhere(~np.isfinite(arr))[0]
         raise PoseError(f"{robot.name}: pose {bad[0] + 1}, coordinate {robot.pose_names[bad[1]]} is not finite")
-    if arr.size and np.abs(arr).max() > 1e9:
+    if arr.size and np.abs(arr).max() > MAX_MAGNITUDE:
         k, j = np.unravel_index(np.argmax(np.abs(arr)), arr.shape)
-        raise PoseError(f"{robot.name}: pose {k + 1}, coordinate {robot.pose_names[j]} = {arr[k, j]:g} is beyond 1e9")
+        raise PoseError(
+            f"{robot.name}: pose {k + 1}, coordinate {robot.pose_names[j]} = {arr[k, j]:g} is beyond {MAX_MAGNITUDE:g}"
+        )
     if robot.n_joints:
         q = arr[:, robot.wrench_dim :]
         lo, hi = robot.joint_limits[:, 0], robot.joint_limits[:, 1]

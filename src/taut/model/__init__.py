@@ -9,7 +9,7 @@ from taut._lazy import lazy_exports
 if TYPE_CHECKING:
     from taut.model._caspr import BODIES_SUFFIX, parse_xml, read_caspr, write_caspr
     from taut.model._examples import example, example_descriptions, example_names
-    from taut.model._formats import format_of, load_robot, write_robot
+    from taut.model._formats import FORMATS, format_of, load_robot, supported, write_robot
     from taut.model._io import parse_robot, read_text, robot_from_dict, robot_to_dict, save_robot
     from taut.model._limits import MAX_MAGNITUDE
     from taut.model._mjcf import mjcf_text, pose_to_qpos, write_mjcf
@@ -40,8 +40,10 @@ _LAZY = {
     "example": "taut.model._examples",
     "example_descriptions": "taut.model._examples",
     "example_names": "taut.model._examples",
+    "FORMATS": "taut.model._formats",
     "format_of": "taut.model._formats",
     "load_robot": "taut.model._formats",
+    "supported": "taut.model._formats",
     "write_robot": "taut.model._formats",
     "parse_robot": "taut.model._io",
     "read_text": "taut.model._io",
@@ -76,6 +78,7 @@ __all__ = [
     "Cable",
     "Capsule",
     "Circle",
+    "FORMATS",
     "Joint",
     "MAX_MAGNITUDE",
     "Platform",
@@ -103,6 +106,7 @@ __all__ = [
     "robot_to_dict",
     "save_robot",
     "schema_text",
+    "supported",
     "write_caspr",
     "write_mjcf",
     "write_robot",

@@ -18,8 +18,8 @@ Lieskovský 2020). Each further link hangs from the platform link or a later lin
 actuated (``actuated="true"``) one-degree-of-freedom joint: ``R_X``, ``R_Y``, ``R_Z``, ``R_AXIS``
 (taut's ``revolute`` about that axis) or ``P_X``, ``P_AXIS`` (``prismatic``), with
 ``origin`` = its ``<parent><location>``, ``limits`` = ``q_min``/``q_max`` (CASPR's defaults
-±π for revolute joints when not given; an unbounded prismatic joint gets ±1e9, the largest
-pose coordinate taut accepts, so the same poses) and its ``mass``, ``com_location`` and
+±π for revolute joints when not given; an unbounded prismatic joint gets ±1e9
+(``MAX_MAGNITUDE``), the largest pose coordinate taut accepts, so the same poses) and its ``mass``, ``com_location`` and
 inertia as the body's ``mass``, ``com`` and ``inertia``. taut's pose is CASPR's ``q``: the
 platform's coordinates, then the joint coordinates in link order. Cables attached to a
 further link get its name as ``body`` (``link k`` for an unnamed or repeated name). On a
@@ -89,6 +89,7 @@ from pathlib import Path
 import numpy as np
 
 from taut.errors import RobotFileError, UnsupportedRobotError
+from taut.model._limits import MAX_MAGNITUDE
 from taut.model._robot import STANDARD_GRAVITY, Robot
 
 #: CASPR's gravitational acceleration [m/s²], along its −z axis.
@@ -141,7 +142,7 @@ _AXIS_JOINTS = ("R_AXIS", "P_AXIS")
 _DEFAULT_LIMITS = {"revolute": (-math.pi, math.pi), "prismatic": (-math.inf, math.inf)}
 #: taut refuses pose coordinates beyond this (``taut.kinematics.as_poses``): an
 #: unbounded CASPR joint gets these limits, which admit the same poses.
-_UNBOUNDED = 1e9
+_UNBOUNDED = MAX_MAGNITUDE
 _CABLE_TYPES = ("cable_ideal", "cable_linear_spring")
 _INERTIA = ("Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz")
 

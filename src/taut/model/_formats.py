@@ -7,6 +7,9 @@ Adding a format is one entry in :data:`FORMATS`: a name pattern, a reader (or No
 from __future__ import annotations
 
 import fnmatch
+import os
+import stat
+import tempfile
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -109,7 +112,10 @@ def format_of(path: str | Path, kind: str = "read") -> Format:
     name = Path(path).name.lower()
     for fmt in FORMATS:
         able = fmt.reader if kind == "read" else fmt.writer
-        if able is not None and any(fnmatch.fnmatchcase(name, p) for p in fmt.patterns):
+        match = next((p for p in fmt.patterns if fnmatch.fnmatchcase(name, p)), None) if able else None
+        if match is not None:
+            if kind == "write" and name == match.removeprefix("*"):
+                raise RobotFileError(f"{path}: the file name is only the extension; give a name before it")
             return fmt
     verb = "read" if kind == "read" else "write"
     raise RobotFileError(f"{path}: taut cannot {verb} this kind of file; supported: {supported(kind)}")
@@ -122,14 +128,51 @@ def read_robot(path: Path, text: str, cable_set: str | None = None) -> Robot:
     return reader(path, text, cable_set)
 
 
+def _check_target(path: Path) -> None:
+    """Refuse a file to write that cannot be replaced by a regular file: a directory, a FIFO
+    or a device (opening those could block or write elsewhere), a dangling link, a path in
+    a directory that does not exist."""
+    try:
+        mode = path.stat().st_mode
+    except FileNotFoundError:
+        if path.is_symlink():
+            raise RobotFileError(f"{path}: a symbolic link to nothing; cannot write the file") from None
+        mode = None
+    if mode is not None and stat.S_ISDIR(mode):
+        raise RobotFileError(f"{path}: a directory; cannot write the file")
+    if mode is not None and not stat.S_ISREG(mode):
+        raise RobotFileError(f"{path}: exists and is not a regular file; cannot write the file")
+    if not path.parent.is_dir():
+        raise RobotFileError(f"{path}: the directory {str(path.parent)!r} does not exist")
+
+
 def write_robot(robot: Robot, path: str | Path) -> str:
-    """Write ``robot`` to ``path`` in the format its name selects; return the format's name."""
+    """Write ``robot`` to ``path`` in the format its name selects; return the format's name.
+
+    The file and its companions (a CASPR model's ``*_cables.xml``) are written in a
+    temporary directory beside ``path`` and moved into place only when every one is
+    written, so that a failure leaves no file written and none overwritten.
+
+    Raises
+    ------
+    RobotFileError
+        If no format writes such a name, if a file to write is a directory, a FIFO, a device
+        or a dangling link, or if writing fails (a full disk).
+    """
+    path = Path(path)
     fmt = format_of(path, "write")
     assert fmt.writer is not None, "format_of returns a format able to write"
+    _check_target(path)
     try:
-        fmt.writer(robot, Path(path))
+        with tempfile.TemporaryDirectory(dir=path.parent, prefix=f".{path.name}.", ignore_cleanup_errors=True) as tmp:
+            fmt.writer(robot, Path(tmp) / path.name)
+            written = sorted(Path(tmp).iterdir())
+            for f in written:
+                _check_target(path.parent / f.name)
+            for f in written:
+                os.replace(f, path.parent / f.name)
     except OSError as exc:
-        raise RobotFileError(f"{path}: cannot write the file: {exc}") from None
+        raise RobotFileError(f"{path}: cannot write the file: {exc.strerror or exc}") from None
     return fmt.name
 
 

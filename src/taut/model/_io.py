@@ -88,6 +88,8 @@ def parse_robot(text: str, source: str = "<robot>", *, json_text: bool = False) 
                 raise RobotFileError(f"{source}: not valid YAML/JSON{at}: {getattr(exc, 'problem', exc)}") from None
     except RecursionError:
         raise RobotFileError(f"{source}: nested too deeply (at most {MAX_DEPTH} levels)") from None
+    except RobotFileError:
+        raise
     except ValueError:  # an integer of thousands of digits: beyond Python's int conversion limit
         raise RobotFileError(f"{source}: a number has too many digits to be read") from None
     return robot_from_dict(data, source)

@@ -37,17 +37,21 @@ def _message(err: ErrorDetails) -> str:
 
 
 def validation_message(source: str, exc: ValidationError) -> str:
-    """Turn a pydantic error into lines ``SOURCE: FIELD: what is wrong``."""
-    lines = []
-    for err in exc.errors():
-        loc = tuple(err["loc"])
-        msg = _message(err)
-        field = _field(loc)
-        if (
-            field == "(top level)"
-            and ": " in msg
-            and msg.split(": ", 1)[0].replace(".", "").replace("[", "").replace("]", "").replace("_", "").isalnum()
-        ):
-            field, msg = msg.split(": ", 1)
-        lines.append(f"{source}: {field}: {msg}")
-    return "\n".join(lines)
+    """Turn a pydantic error into one line ``SOURCE: FIELD: what is wrong`` naming the first
+    problem (and how many more there are).  An error of a container whose items failed
+    (pydantic's "at least 1 item after validation" once every cable is refused) is a
+    consequence of those items' errors, not a problem of its own, and is left out."""
+    errors = exc.errors()
+    locs = [tuple(err["loc"]) for err in errors]
+    own = [err for err, loc in zip(errors, locs) if not any(len(o) > len(loc) and o[: len(loc)] == loc for o in locs)]
+    err = own[0]
+    msg = _message(err)
+    field = _field(tuple(err["loc"]))
+    if (
+        field == "(top level)"
+        and ": " in msg
+        and msg.split(": ", 1)[0].replace(".", "").replace("[", "").replace("]", "").replace("_", "").isalnum()
+    ):
+        field, msg = msg.split(": ", 1)
+    more = f" (and {len(own) - 1} more {'problem' if len(own) == 2 else 'problems'})" if len(own) > 1 else ""
+    return f"{source}: {field}: {msg}{more}"

@@ -5,8 +5,9 @@ platform anchor ``r_i`` in the frame of the body it is attached to, tension and 
 bounds, axial stiffness), the platform (point mass or rigid, extra bodies joined by
 joints, the external wrench), collidable obstacles and the installation space of
 variable-structure robots, reference data from the sources and named trajectories.
-Validation errors are raised by pydantic and turned into :class:`taut.RobotFileError`
-by :mod:`taut.model._io`.
+The validators raise :class:`taut.RobotFileError` (a ``ValueError``, which pydantic
+collects into one ``ValidationError``), and :mod:`taut.model._io` turns that back into one
+:class:`taut.RobotFileError` naming every field.
 
 References
 ----------
@@ -28,6 +29,7 @@ from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError,
 
 from taut.errors import RobotFileError
 from taut.geometry import CONVENTIONS
+from taut.model._limits import MAX_MAGNITUDE
 
 FORMAT: Literal["taut/1"] = "taut/1"
 
@@ -37,8 +39,8 @@ STANDARD_GRAVITY = 9.81
 
 Number = Annotated[float, Field(allow_inf_nan=True)]
 Finite = Annotated[float, Field(allow_inf_nan=False)]
-#: Coordinates [m]: beyond a million kilometres squares overflow, and no robot is that large.
-Coordinate = Annotated[float, Field(allow_inf_nan=False, ge=-1e9, le=1e9)]
+#: Coordinates [m], within :data:`~taut.model._limits.MAX_MAGNITUDE`.
+Coordinate = Annotated[float, Field(allow_inf_nan=False, ge=-MAX_MAGNITUDE, le=MAX_MAGNITUDE)]
 
 Derived = TypeVar("Derived", np.ndarray, tuple[np.ndarray, np.ndarray])
 
@@ -93,23 +95,23 @@ def _check_inertia(values: tuple[float, ...], d: int, where: str) -> None:
     """Raise ``ValueError`` unless ``values`` is an inertia of a ``d``-dimensional body: one
     ``Izz`` (planar) or six numbers (spatial) of a positive semi-definite tensor."""
     if len(values) != (1 if d == 2 else 6):
-        raise ValueError(f"{where}.inertia: expected {1 if d == 2 else 6} numbers, got {len(values)}")
+        raise RobotFileError(f"{where}.inertia: expected {1 if d == 2 else 6} numbers, got {len(values)}")
     tensor = _inertia_matrix(values)
     # rounding leaves a singular tensor (a rod, a point) slightly negative
     if np.linalg.eigvalsh(tensor).min() < -1e-12 * max(1.0, float(np.abs(tensor).max())):
-        raise ValueError(f"{where}.inertia: not a positive semi-definite inertia tensor, got {list(values)}")
+        raise RobotFileError(f"{where}.inertia: not a positive semi-definite inertia tensor, got {list(values)}")
 
 
 def _check_bounds(v: tuple[float, float], what: str) -> tuple[float, float]:
     lo, hi = v
     if math.isnan(lo) or math.isnan(hi):
-        raise ValueError(f"{what} bounds must be numbers, got {list(v)}")
+        raise RobotFileError(f"{what} bounds must be numbers, got {list(v)}")
     if lo < 0:
-        raise ValueError(f"{what} lower bound must be >= 0, got {lo}")
+        raise RobotFileError(f"{what} lower bound must be >= 0, got {lo}")
     if lo > hi:
-        raise ValueError(f"{what} bounds are inverted: lower {lo} > upper {hi}")
+        raise RobotFileError(f"{what} bounds are inverted: lower {lo} > upper {hi}")
     if math.isinf(lo):
-        raise ValueError(f"{what} lower bound must be finite, got {lo}")
+        raise RobotFileError(f"{what} lower bound must be finite, got {lo}")
     return (float(lo), float(hi))
 
 
@@ -149,13 +151,15 @@ class SwivelPulley(_Strict):
         "leaves on: the pulley swivels to face the anchor (its centre on the anchor's side of the axis) "
         "and the cable, running along this direction, wraps around it until it heads for the anchor",
     )
-    radius: Finite = Field(gt=0, le=1e9, description="pulley radius [m] (to the cable's centre line in the groove)")
+    radius: Finite = Field(
+        gt=0, le=MAX_MAGNITUDE, description="pulley radius [m] (to the cable's centre line in the groove)"
+    )
 
     @field_validator("axis")
     @classmethod
     def _axis(cls, v: tuple[float, ...]) -> tuple[float, ...]:
         if not math.hypot(*v) > 0:
-            raise ValueError(f"swivel axis must be a non-zero vector, got {list(v)}")
+            raise RobotFileError(f"swivel axis must be a non-zero vector, got {list(v)}")
         return v
 
 
@@ -209,14 +213,14 @@ class Joint(_Strict):
     @classmethod
     def _axis(cls, v: tuple[float, ...]) -> tuple[float, ...]:
         if not any(abs(x) > 0 for x in v):
-            raise ValueError("joint axis must be a non-zero vector")
+            raise RobotFileError("joint axis must be a non-zero vector")
         return v
 
     @field_validator("limits")
     @classmethod
     def _limits(cls, v: tuple[float, float]) -> tuple[float, float]:
         if v[0] > v[1]:
-            raise ValueError(f"joint limits are inverted: lower {v[0]} > upper {v[1]}")
+            raise RobotFileError(f"joint limits are inverted: lower {v[0]} > upper {v[1]}")
         return v
 
 
@@ -293,7 +297,7 @@ class Polygon(_Strict):
     @classmethod
     def _vertices(cls, v: tuple[tuple[float, ...], ...]) -> tuple[tuple[float, ...], ...]:
         if len(v) < 3:
-            raise ValueError(f"a polygon needs at least 3 vertices, got {len(v)}")
+            raise RobotFileError(f"a polygon needs at least 3 vertices, got {len(v)}")
         return v
 
 
@@ -346,7 +350,7 @@ class Robot(_Strict):
     @classmethod
     def _orientation(cls, v: str) -> str:
         if v not in CONVENTIONS:
-            raise ValueError(f"unknown orientation convention {v!r}; expected one of {', '.join(CONVENTIONS)}")
+            raise RobotFileError(f"unknown orientation convention {v!r}; expected one of {', '.join(CONVENTIONS)}")
         return v
 
     @model_validator(mode="after")
@@ -357,35 +361,37 @@ class Robot(_Strict):
 
         def need(vec: tuple[float, ...] | None, n: int, where: str) -> None:
             if vec is not None and len(vec) != n:
-                raise ValueError(f"{where}: expected {n} numbers, got {len(vec)}")
+                raise RobotFileError(f"{where}: expected {n} numbers, got {len(vec)}")
 
         for i, c in enumerate(self.cables, 1):
             need(c.exit, d, f"cables[{i}].exit")
             need(c.anchor, d, f"cables[{i}].anchor")
             if pm and c.anchor is not None and any(x != 0 for x in c.anchor):
-                raise ValueError(
+                raise RobotFileError(
                     f"cables[{i}].anchor: a point-mass platform has all anchors at its origin, got {c.anchor}"
                 )
             if c.swivel is not None and len(c.swivel.axis) != d:
                 axis = list(c.swivel.axis)
                 if d == 3:
-                    raise ValueError(f"cables[{i}].swivel.axis: expected 3 numbers, got {axis}")
+                    raise RobotFileError(f"cables[{i}].swivel.axis: expected 3 numbers, got {axis}")
                 out = " points out of the robot's plane" if axis[2] != 0 else " gives a third (z) number"
-                raise ValueError(
+                raise RobotFileError(
                     f"cables[{i}].swivel.axis {axis}{out}: a planar robot's swivelling pulley turns about an "
                     "axis in its plane (give x, y), so that the pulley and the cable stay in the plane"
                 )
             if c.swivel is not None and c.pulley is not None:
-                raise ValueError(
+                raise RobotFileError(
                     f"cables[{i}]: give either swivel (swivelling pulley) or pulley (planar winch), not both"
                 )
             if c.body is not None and c.body not in bodies:
-                raise ValueError(f"cables[{i}].body: unknown body {c.body!r}; expected one of {sorted(bodies)}")
+                raise RobotFileError(f"cables[{i}].body: unknown body {c.body!r}; expected one of {sorted(bodies)}")
         keys: dict[tuple[tuple[float, ...], tuple[float, ...], str], int] = {}
         for i, c in enumerate(self.cables, 1):
             key = (tuple(c.exit), tuple(c.anchor or [0.0] * d), c.body or "platform")
             if key in keys:
-                raise ValueError(f"cables[{i}]: same exit point and anchor as cables[{keys[key]}] (a duplicated cable)")
+                raise RobotFileError(
+                    f"cables[{i}]: same exit point and anchor as cables[{keys[key]}] (a duplicated cable)"
+                )
             keys[key] = i
         p = self.platform
         need(p.wrench, self.wrench_dim, "platform.wrench")
@@ -393,26 +399,26 @@ class Robot(_Strict):
         need(p.wrench_point, d, "platform.wrench_point")
         if p.inertia is not None:
             if pm:
-                raise ValueError("platform.inertia: a point-mass platform has no rotational inertia")
+                raise RobotFileError("platform.inertia: a point-mass platform has no rotational inertia")
             if p.mass is None:
-                raise ValueError("platform.inertia is given without platform.mass")
+                raise RobotFileError("platform.inertia is given without platform.mass")
             _check_inertia(p.inertia, d, "platform")
         if p.gravity is not None and p.mass is None and not any(b.mass is not None for b in p.bodies):
-            raise ValueError("platform.gravity is given without platform.mass (or a mass of platform.bodies)")
+            raise RobotFileError("platform.gravity is given without platform.mass (or a mass of platform.bodies)")
         if pm and p.bodies:
-            raise ValueError("platform.bodies: a point-mass platform cannot carry jointed bodies")
+            raise RobotFileError("platform.bodies: a point-mass platform cannot carry jointed bodies")
         seen = {"platform"}
         for j, b in enumerate(p.bodies, 1):
             if b.name in seen:
-                raise ValueError(f"platform.bodies[{j}].name: duplicate body name {b.name!r}")
+                raise RobotFileError(f"platform.bodies[{j}].name: duplicate body name {b.name!r}")
             if b.parent not in seen:
-                raise ValueError(f"platform.bodies[{j}].parent: unknown or later body {b.parent!r}")
+                raise RobotFileError(f"platform.bodies[{j}].parent: unknown or later body {b.parent!r}")
             seen.add(b.name)
             need(b.joint.axis, d if d == 3 or b.joint.kind == "prismatic" else 1, f"platform.bodies[{j}].joint.axis")
             need(b.joint.origin, d, f"platform.bodies[{j}].joint.origin")
             need(b.com, d, f"platform.bodies[{j}].com")
             if b.mass is None and (b.com is not None or b.inertia is not None):
-                raise ValueError(f"platform.bodies[{j}]: com or inertia is given without mass")
+                raise RobotFileError(f"platform.bodies[{j}]: com or inertia is given without mass")
             if b.inertia is not None:
                 _check_inertia(b.inertia, d, f"platform.bodies[{j}]")
         for k, o in enumerate(self.obstacles, 1):
@@ -422,19 +428,19 @@ class Robot(_Strict):
         for name, t in self.trajectories.items():
             width = len(t.waypoints[0]) if t.waypoints else 0
             if width not in (d, self.pose_size):
-                raise ValueError(
+                raise RobotFileError(
                     f"trajectories.{name}.waypoints: expected {d} (position) or {self.pose_size} (pose) coordinates, got {width}"
                 )
             for w in t.waypoints:
                 need(w, width, f"trajectories.{name}.waypoints")
             if t.steps is not None and len(t.steps) != len(t.waypoints) - 1:
-                raise ValueError(
+                raise RobotFileError(
                     f"trajectories.{name}.steps: expected one count per move ({len(t.waypoints) - 1}), got {len(t.steps)}"
                 )
         if self.reference is not None and self.reference.lengths is not None:
             need(self.reference.lengths, self.n_cables, "reference.lengths")
             if any(x <= 0 for x in self.reference.lengths):
-                raise ValueError("reference.lengths: cable lengths must be positive")
+                raise RobotFileError("reference.lengths: cable lengths must be positive")
         for name, pose in self.reference.poses.items() if self.reference else []:
             need(pose, self.pose_size, f"reference.poses.{name}")
         return self

@@ -21,11 +21,27 @@ CASPR element                               taut
 ``parabolic_blend_trajectory``              ``law="trapezoidal"``, blend time
                                             ``blend_time_default`` or the point's
                                             ``blend_time`` (for the segment ending there)
+``file_trajectory``                         not read (samples of a ``.traj`` file)
 ==========================================  ==============================================
 
-CASPR interpolates each coordinate separately, angles included, without unwrapping; so does
-the reader unless ``unwrap=True``.  Operational-space trajectories
-(``<operational_trajectories>``) are not read.
+Orientation.  CASPR's spherical joints (``SPATIAL_EULER_XYZ``, ``S_EULER_XYZ``,
+``S_FIXED_XYZ``: taut's spatial rigid platforms) turn the platform about one axis from each
+point's orientation to the next's, the spline timing the angle turned (``SphericalEulerXYZ``'s
+``generateTrajectory…Spline`` through ``Quaternion.…Interpolation``); so does the reader
+(``rotation="axis"`` of :func:`~taut.motion.trajectory_from_waypoints`, :mod:`taut.motion._axis`).
+Those joints take only zero angle velocities and accelerations at the points (CASPR asserts
+it), so a cubic or quintic trajectory with others, or an average-velocity one whose averages
+turn the angles, is not read.  The other coordinates (positions, a planar angle, the joints of
+jointed bodies) are interpolated each separately, angles without unwrapping as CASPR does,
+unless ``unwrap=True``.
+
+Unsupported trajectories.  CASPR loads a trajectory by its id, so one it cannot build leaves
+the others usable; likewise the reader skips a trajectory it does not read (a
+``file_trajectory``, an element it does not know, nonzero angle velocities of a spherical
+joint), with a :class:`~taut.errors.TautWarning` naming it, and asking for it by id raises a
+:class:`~taut.errors.TrajectoryError` saying why (:class:`CasprTrajectories`).  Malformed
+trajectories (a missing id, numbers that are not, times that do not increase) are errors.
+Operational-space trajectories (``<operational_trajectories>``) are not read.
 
 References
 ----------
@@ -38,19 +54,21 @@ References
 from __future__ import annotations
 
 import math
+import warnings
 import xml.etree.ElementTree as ET
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from taut.errors import TrajectoryError
+from taut.errors import TautWarning, TrajectoryError
 from taut.model import BODIES_SUFFIX, Robot, parse_xml, read_caspr, read_text
 from taut.motion._trajectory import Motion, trajectory_from_waypoints
 from taut.motion._vias import average_velocities
-from taut.motion._waypoints import unwrap_angles, validate_waypoints
+from taut.motion._waypoints import angle_columns, unwrap_angles, validate_waypoints
 
-__all__ = ["KINDS", "TRAJECTORIES_SUFFIX", "CasprTrajectory", "read_caspr_trajectories"]
+__all__ = ["KINDS", "TRAJECTORIES_SUFFIX", "CasprTrajectories", "CasprTrajectory", "read_caspr_trajectories"]
 
 TRAJECTORIES_SUFFIX = "_trajectories.xml"
 
@@ -62,6 +80,14 @@ KINDS = {
     "cubic_spline_average_velocity_trajectory": "cubic",
     "parabolic_blend_trajectory": "trapezoidal",
 }
+
+#: CASPR's joint trajectory elements taut does not read, and what they are.
+UNREAD = {"file_trajectory": "samples read from a .traj file"}
+
+_SPHERICAL = (
+    "CASPR's spherical joints take only zero angle velocities and accelerations at the points "
+    "(CASPR refuses this trajectory too)"
+)
 
 
 @dataclass(frozen=True)
@@ -76,6 +102,41 @@ class CasprTrajectory:
     kind: str
     motion: Motion
     time_step: float
+
+
+class CasprTrajectories(Mapping[str, CasprTrajectory]):
+    """The trajectories of a CASPR file that taut reads, by id (a read-only mapping), and
+    ``skipped``: the id of each trajectory it does not read and why.  Asking for a skipped
+    id raises :class:`~taut.errors.TrajectoryError` with the reason; an id the file does not
+    have raises ``KeyError``."""
+
+    def __init__(self, source: str, trajectories: dict[str, CasprTrajectory], skipped: dict[str, str]) -> None:
+        self.source = source
+        self._trajectories = dict(trajectories)
+        self.skipped = dict(skipped)
+
+    def __getitem__(self, key: str) -> CasprTrajectory:
+        if key in self._trajectories:
+            return self._trajectories[key]
+        if key in self.skipped:
+            raise TrajectoryError(f"{self.source}: trajectory {key!r} is not read: {self.skipped[key]}")
+        raise KeyError(key)
+
+    def __contains__(self, key: object) -> bool:
+        return key in self._trajectories
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._trajectories)
+
+    def __len__(self) -> int:
+        return len(self._trajectories)
+
+    def __repr__(self) -> str:
+        return f"CasprTrajectories({self.source!r}, read={list(self)}, skipped={list(self.skipped)})"
+
+
+class _Unsupported(Exception):
+    """A trajectory the reader skips (the message says why)."""
 
 
 def _vector(point: ET.Element, tag: str, n: int, where: str) -> np.ndarray | None:
@@ -111,6 +172,12 @@ def _required(vectors: list[np.ndarray | None], tag: str, where: str) -> np.ndar
     if missing:
         raise TrajectoryError(f"{where}: point {missing[0] + 1} has no <{tag}>")
     return np.array(vectors)
+
+
+def _still(vectors: np.ndarray, robot: Robot, axis: bool) -> None:
+    """Refuse nonzero angle velocities or accelerations of a spherical joint."""
+    if axis and np.any(vectors[:, angle_columns(robot)] != 0):
+        raise _Unsupported(_SPHERICAL)
 
 
 def _read_one(elem: ET.Element, robot: Robot, flip: bool, unwrap: bool, source: str) -> CasprTrajectory:
@@ -152,15 +219,20 @@ def _read_one(elem: ET.Element, robot: Robot, flip: bool, unwrap: bool, source: 
     W = W * sign
     if unwrap:
         W = unwrap_angles(robot, W)
+    axis = robot.dimension == 3 and not robot.is_point_mass
     velocities = accelerations = blends = None
     if elem.tag == "cubic_spline_trajectory":
         velocities = _required(qd, "q_dot", where) * sign
+        _still(velocities, robot, axis)
     elif elem.tag == "quintic_spline_trajectory":
         velocities = _required(qd, "q_dot", where) * sign
         accelerations = _required(qdd, "q_ddot", where) * sign
+        _still(velocities, robot, axis)
+        _still(accelerations, robot, axis)
     elif elem.tag == "cubic_spline_average_velocity_trajectory":
         ends = _required([qd[0], qd[-1]], "q_dot", f"{where} (first and last points)") * sign
         velocities = average_velocities(np.array(times), W, ends[0], ends[-1])
+        _still(velocities, robot, axis)
     elif elem.tag == "parabolic_blend_trajectory":
         default = elem.get("blend_time_default")
         blends = []
@@ -179,19 +251,22 @@ def _read_one(elem: ET.Element, robot: Robot, flip: bool, unwrap: bool, source: 
         accelerations=accelerations,
         blend=blends,
         unwrap=False,
+        rotation="axis" if axis else "angles",
     )
     return CasprTrajectory(ident, elem.tag, motion, time_step)
 
 
 def read_caspr_trajectories(
     path: str | Path, bodies: str | Path | None = None, *, unwrap: bool = False
-) -> tuple[Robot, dict[str, CasprTrajectory]]:
+) -> tuple[Robot, CasprTrajectories]:
     """The robot of the CASPR model and the joint-space trajectories of its
     ``X_trajectories.xml`` ``path``, by id (see the module docstring).
 
     ``bodies`` is the model's ``X_bodies.xml`` (default: the one beside ``path``), read by
-    :func:`taut.model.read_caspr`.  Raises :class:`~taut.errors.TrajectoryError` for a
-    malformed trajectory (and the model's errors for the model)."""
+    :func:`taut.model._caspr.read_caspr`.  A trajectory taut does not read is skipped with a
+    :class:`~taut.errors.TautWarning` and listed in the result's ``skipped``.  Raises
+    :class:`~taut.errors.TrajectoryError` for a malformed trajectory, or a file without one
+    that taut reads (and the model's errors for the model)."""
     path = Path(path)
     if bodies is None:
         if not path.name.lower().endswith(TRAJECTORIES_SUFFIX):
@@ -206,16 +281,27 @@ def read_caspr_trajectories(
     if root.tag != "trajectories":
         raise TrajectoryError(f"{source}: expected a <trajectories> CASPR trajectory file, got <{root.tag}>")
     out: dict[str, CasprTrajectory] = {}
+    skipped: dict[str, str] = {}
     for group in root.findall("joint_trajectories"):
         for elem in group:
-            if elem.tag not in KINDS:
-                raise TrajectoryError(
-                    f"{source}: unknown joint trajectory <{elem.tag}> (expected one of {', '.join(KINDS)})"
+            ident = elem.get("id") or ""
+            if ident and (ident in out or ident in skipped):
+                raise TrajectoryError(f"{source}: two trajectories have the id {ident!r}")
+            try:
+                if elem.tag in UNREAD:
+                    raise _Unsupported(f"<{elem.tag}> ({UNREAD[elem.tag]}) is not read by taut")
+                if elem.tag not in KINDS:
+                    raise _Unsupported(f"unknown joint trajectory <{elem.tag}> (taut reads {', '.join(KINDS)})")
+                out[ident] = _read_one(elem, robot, flip, unwrap, source)
+            except _Unsupported as e:
+                skipped[ident] = str(e)
+                warnings.warn(
+                    f"{source}: skipped <{elem.tag} id={ident!r}>: {e}; the other trajectories are read",
+                    TautWarning,
+                    stacklevel=2,
                 )
-            tr = _read_one(elem, robot, flip, unwrap, source)
-            if tr.id in out:
-                raise TrajectoryError(f"{source}: two trajectories have the id {tr.id!r}")
-            out[tr.id] = tr
     if not out:
+        if skipped:
+            raise TrajectoryError(f"{source}: no trajectory taut reads ({'; '.join(skipped.values())})")
         raise TrajectoryError(f"{source}: no <joint_trajectories> (operational-space trajectories are not read)")
-    return robot, out
+    return robot, CasprTrajectories(source, out, skipped)

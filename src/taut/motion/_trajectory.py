@@ -11,8 +11,11 @@ at most 5 whose :meth:`Motion.at` and :meth:`Motion.sample` give pose ``q``, vel
 and acceleration ``q̈`` in pose coordinates and, for a rigid platform, the angular velocity
 ``ω`` and acceleration ``α`` in the fixed frame (:class:`MotionSamples`).
 
-Orientation.  The angles are interpolated as coordinates, after :func:`~taut.motion.unwrap_angles`
-has made each take the short way between waypoints.  ``ω = E(q) q̇`` and
+Orientation.  With ``rotation="angles"`` (the default) the angles are interpolated as
+coordinates, after :func:`~taut.motion._waypoints.unwrap_angles` has made each take the short
+way between waypoints.  With ``rotation="axis"`` a spatial platform turns about one axis from
+each waypoint's orientation to the next's, the short way, the time law timing the angle turned
+(CASPR's spherical joints; :mod:`taut.motion._axis`).  ``ω = E(q) q̇`` and
 ``α = E(q) q̈ + Ė(q, q̇) q̇`` come from the rate matrix of the robot's convention
 (:mod:`taut.geometry._rates`), never from angle differences; a planar platform has ``ω = θ̇``.
 At a gimbal lock (``b = ±π/2`` in the ``xyz`` conventions, tilt ``θ = 0`` in
@@ -44,6 +47,7 @@ import numpy.typing as npt
 from taut.errors import TrajectoryError
 from taut.geometry import rate_matrix, rate_matrix_derivative
 from taut.model import Robot
+from taut.motion._axis import AxisTurns, axis_turns
 from taut.motion._laws import (
     DEGREE,
     LAWS,
@@ -53,12 +57,14 @@ from taut.motion._laws import (
     quintic_piece,
     trapezoidal_pieces,
 )
+from taut.motion._named import robot_trajectory
 from taut.motion._vias import VIAS, average_velocities, spline_velocities
 from taut.motion._waypoints import angle_columns, complete_waypoints, unwrap_angles, validate_waypoints
 
 __all__ = [
     "DEFAULT_BLEND",
     "MAX_SAMPLES",
+    "ROTATIONS",
     "Motion",
     "MotionSamples",
     "trajectory_from_robot",
@@ -68,6 +74,9 @@ __all__ = [
 #: Blend fraction ``t_b / T`` of a trapezoidal segment timed by a duration: cruise at 1.5 times
 #: the average velocity.
 DEFAULT_BLEND = 1.0 / 3.0
+
+#: How the orientation moves between waypoints: each angle as a coordinate, or about one axis.
+ROTATIONS = ("angles", "axis")
 
 #: Most samples :meth:`Motion.sample` and :meth:`Motion.at` give in one call.
 MAX_SAMPLES = 10_000_000
@@ -115,8 +124,10 @@ class Motion:
     :attr:`duration`, with the time ``law`` and the velocities at via points ``via`` (one of
     :data:`~taut.motion.VIAS`, or ``"given"`` when they were given).  At a break the
     piece that ends there is evaluated (as CASPR samples a segment up to its end), which
-    matters only where the law's velocity or acceleration jumps.  Build it with
-    :func:`trajectory_from_waypoints`."""
+    matters only where the law's velocity or acceleration jumps.  With ``rotation="axis"``
+    the angle columns of the polynomials hold the rotation vector turned since the segment's
+    start, and ``turns`` (:class:`~taut.motion._axis.AxisTurns`) gives the angles.  Build it
+    with :func:`trajectory_from_waypoints`."""
 
     robot: Robot
     law: str
@@ -125,6 +136,8 @@ class Motion:
     waypoints: np.ndarray
     breaks: np.ndarray
     coefficients: np.ndarray
+    rotation: str = "angles"
+    turns: AxisTurns | None = None
 
     def __post_init__(self) -> None:
         for name in ("times", "waypoints", "breaks", "coefficients"):
@@ -154,7 +167,15 @@ class Motion:
         t = np.clip(t, 0.0, self.duration)
         q, qd, qdd = self._evaluate(t)
         cols = angle_columns(self.robot)
-        if self.robot.dimension == 3 and not self.robot.is_point_mass:
+        if self.turns is not None:
+            segment = np.clip(np.searchsorted(self.times, t, side="left") - 1, 0, len(self.times) - 2)
+            w, a = np.empty((len(t), 3)), np.empty((len(t), 3))
+            for s in range(0, len(t), _CHUNK):
+                part = slice(s, s + _CHUNK)
+                q[part, cols], qd[part, cols], qdd[part, cols], w[part], a[part] = self.turns.evaluate(
+                    self.robot.orientation, segment[part], q[part, cols], qd[part, cols], qdd[part, cols]
+                )
+        elif self.robot.dimension == 3 and not self.robot.is_point_mass:
             # ω = E q̇, α = E q̈ + Ė q̇: E built once for both
             angles, rates = q[:, cols], qd[:, cols]
             E = rate_matrix(angles, self.robot.orientation)
@@ -304,6 +325,7 @@ def trajectory_from_waypoints(
     velocities: npt.ArrayLike | None = None,
     accelerations: npt.ArrayLike | None = None,
     unwrap: bool = True,
+    rotation: str = "angles",
 ) -> Motion:
     """A trajectory of ``robot`` through ``waypoints`` ``(N ≥ 2, pose_size)`` (positions
     ``(N, dimension)`` are completed by :func:`~taut.motion.complete_waypoints`).
@@ -330,6 +352,15 @@ def trajectory_from_waypoints(
     (default :data:`DEFAULT_BLEND`).  ``unwrap=False`` keeps the angles as given (e.g. a full
     turn from 0 to 2π).
 
+    ``rotation`` (one of :data:`ROTATIONS`): ``"angles"`` interpolates each orientation angle
+    as a coordinate; ``"axis"`` turns a spatial rigid platform about one axis from each
+    waypoint's orientation to the next's, the short way (at most π), the time law timing the
+    angle turned — CASPR's spherical joints (:mod:`taut.motion._axis`).  The turn stops at
+    every waypoint (``via="stop"``, the angles' columns of ``velocities`` and
+    ``accelerations`` zero), is timed by ``durations``, ``duration`` or ``times``, and takes
+    the short way whatever ``unwrap``; the motion's waypoints hold the angles the turns
+    arrive with.
+
     Raises :class:`~taut.errors.TrajectoryError` for bad input, and when a joint coordinate
     leaves its limits between waypoints (a spline can overshoot).
     """
@@ -337,8 +368,13 @@ def trajectory_from_waypoints(
         raise TrajectoryError(f"unknown time law {law!r}; expected one of {', '.join(LAWS)}")
     if via not in VIAS:
         raise TrajectoryError(f"unknown via-point velocities {via!r}; expected one of {', '.join(VIAS)}")
+    if rotation not in ROTATIONS:
+        raise TrajectoryError(f"unknown rotation {rotation!r}; expected one of {', '.join(ROTATIONS)}")
+    axis = rotation == "axis"
+    if axis and (robot.dimension != 3 or robot.is_point_mass):
+        raise TrajectoryError("rotation='axis' turns a spatial rigid platform; this robot's angles are coordinates")
     W = validate_waypoints(robot, complete_waypoints(robot, waypoints))
-    if unwrap:
+    if unwrap and not axis:
         W = unwrap_angles(robot, W)
     N, n = len(W), len(W) - 1
     limited = max_velocity is not None or max_acceleration is not None
@@ -363,6 +399,11 @@ def trajectory_from_waypoints(
         raise TrajectoryError("accelerations at the waypoints are given to the quintic law")
     if blend is not None and (law != "trapezoidal" or limited):
         raise TrajectoryError("blend is the blend fraction of a trapezoidal law timed by durations, duration or times")
+    if axis and (via != "stop" or limited):
+        raise TrajectoryError(
+            "rotation='axis' stops the turn at every waypoint and is timed by durations, duration or times: "
+            "give via='stop' and no velocity or acceleration limits"
+        )
 
     blends = None
     if limited:
@@ -393,6 +434,19 @@ def trajectory_from_waypoints(
     else:
         V = zeros
     Acc = zeros if accelerations is None else _state_array(robot, accelerations, N, "accelerations")
+    begin, finish = W[:-1].copy(), W[1:].copy()
+    turns = None
+    if axis:
+        cols = angle_columns(robot)
+        for what, given in (("velocities", V), ("accelerations", Acc)):
+            moving = np.flatnonzero(np.any(given[:, cols] != 0, axis=1))
+            if len(moving):
+                raise TrajectoryError(
+                    f"{what} at waypoint {moving[0] + 1}: with rotation='axis' the turn stops at every waypoint, "
+                    "the angles' velocities and accelerations are zero there"
+                )
+        W, rotvecs, turns = axis_turns(W, cols, robot.orientation)
+        begin[:, cols], finish[:, cols] = 0.0, rotvecs
 
     starts: list[float] = []
     pieces: list[np.ndarray] = []
@@ -400,14 +454,14 @@ def trajectory_from_waypoints(
     with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
         for k in range(n):
             if law == "linear":
-                segment = [(0.0, linear_piece(W[k], W[k + 1], h[k]))]
+                segment = [(0.0, linear_piece(begin[k], finish[k], h[k]))]
             elif law == "cubic":
-                segment = [(0.0, cubic_piece(W[k], V[k], W[k + 1], V[k + 1], h[k]))]
+                segment = [(0.0, cubic_piece(begin[k], V[k], finish[k], V[k + 1], h[k]))]
             elif law == "quintic":
-                segment = [(0.0, quintic_piece(W[k], V[k], Acc[k], W[k + 1], V[k + 1], Acc[k + 1], h[k]))]
+                segment = [(0.0, quintic_piece(begin[k], V[k], Acc[k], finish[k], V[k + 1], Acc[k + 1], h[k]))]
             else:
                 assert blends is not None
-                segment = trapezoidal_pieces(W[k], W[k + 1], h[k], float(blends[k]))
+                segment = trapezoidal_pieces(begin[k], finish[k], h[k], float(blends[k]))
             for start, c in segment:
                 starts.append(t[k] + start)
                 pieces.append(c)
@@ -426,6 +480,8 @@ def trajectory_from_waypoints(
         waypoints=W,
         breaks=np.append(starts, t[-1]),
         coefficients=coefficients,
+        rotation=rotation,
+        turns=turns,
     )
     _check_joint_limits(motion)
     return motion
@@ -472,13 +528,11 @@ def trajectory_from_robot(
     move of a pose sequence; by their lengths without steps) and ``speed``/``dwell`` are not
     used.  Without it the file's ``speed`` [m/s] times each move by the distance its position
     travels, and ``dwell`` holds the pose at every waypoint, the first included (as
-    ``taut trajectory`` does); a trajectory without ``speed`` needs ``duration``."""
-    if name not in robot.trajectories:
-        known = ", ".join(robot.trajectories) or "none"
-        raise TrajectoryError(f"{robot.name}: no trajectory {name!r} (it has: {known})")
-    tr = robot.trajectories[name]
+    ``taut trajectory`` does); a trajectory without ``speed`` needs ``duration``.  The file's
+    trajectory is read by :func:`~taut.motion._named.robot_trajectory`."""
+    tr = robot_trajectory(robot, name)
     what = f"trajectory {name}"
-    W = complete_waypoints(robot, tr.waypoints, what)
+    W = tr.waypoints
     if len(W) < 2:
         raise TrajectoryError(f"{what}: a trajectory needs at least 2 waypoints, got {len(W)}")
     if duration is not None:

@@ -1,7 +1,7 @@
 """Wrench-feasible path planning (Bohigas et al. 2013): higher-dimensional
-continuation (:mod:`.continuation`), and :func:`plan_path` by A* over its charts
+continuation (:mod:`.continuation`), :func:`plan_path` by A* over its charts
 (``method="astar"``, complete) or AtlasRRT (Jaillet & Porta 2013, ``method="atlasrrt"``,
-randomised).
+randomised), and the classified grid of a two-dimensional slice (:func:`slice_map`, Fig. 5).
 
 References
 ----------
@@ -34,7 +34,8 @@ if TYPE_CHECKING:
     from taut.planning._manifold import POSE_NAMES, WrenchFeasibleManifold
     from taut.planning._plan import METHODS, RADIUS, plan_path
     from taut.planning._search import PathResult, refine_path
-    from taut.planning._verify import PathCheck, verify_path
+    from taut.planning._slices import SliceMap, slice_map
+    from taut.planning._verify import MAX_POSES, PathCheck, verify_path
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -55,6 +56,9 @@ _LAZY = {
     "plan_path": "taut.planning._plan",
     "PathResult": "taut.planning._search",
     "refine_path": "taut.planning._search",
+    "SliceMap": "taut.planning._slices",
+    "slice_map": "taut.planning._slices",
+    "MAX_POSES": "taut.planning._verify",
     "PathCheck": "taut.planning._verify",
     "verify_path": "taut.planning._verify",
 }
@@ -62,6 +66,7 @@ _LAZY = {
 __all__ = [
     "MAX_CHARTS",
     "MAX_NODES",
+    "MAX_POSES",
     "METHODS",
     "POSE_NAMES",
     "RADIUS",
@@ -71,12 +76,14 @@ __all__ = [
     "PathCheck",
     "PathResult",
     "Polytope",
+    "SliceMap",
     "Symmetry",
     "WrenchFeasibleManifold",
     "plan_path",
     "project",
     "refine_path",
     "shorten_path",
+    "slice_map",
     "tangent_basis",
     "verify_path",
 ]

@@ -54,12 +54,15 @@ from taut.errors import TautError
 from taut.planning._continuation import MAX_CHARTS, Atlas, ImplicitManifold
 from taut.planning._search import PathResult, continuous
 
-__all__ = ["MAX_NODES", "Tree", "atlas_rrt", "shorten_path"]
+__all__ = ["MAX_NODES", "MIN_STEP", "Tree", "atlas_rrt", "shorten_path"]
 
 #: The tree-node budget of AtlasRRT when none is given: with the chart budget, it bounds
 #: the time and memory of a search that finds no path (a random search never proves that
-#: none exists).
+#: none exists); every step of a walk is a node, one point and one projection.
 MAX_NODES = 20_000
+#: Smallest step ``δ`` as a fraction of the chart radius: a walk across one chart takes up
+#: to ``2 / MIN_STEP`` steps, each a projection on the manifold and a node of the tree.
+MIN_STEP = 1e-3
 
 
 class Tree:
@@ -307,9 +310,11 @@ def atlas_rrt(
     progress: Callable[[int, int | None], None] | None = None,
 ) -> PathResult:
     """A path on ``manifold`` from ``start`` to ``goal`` (both on it) by AtlasRRT (module doc),
-    deterministic for a ``seed``, within ``max_nodes`` tree nodes, ``max_charts`` charts and
-    ``time_limit`` seconds.  ``step`` is ``δ`` (default ``radius / 4``).  The result's
-    ``nodes`` counts tree nodes; ``exhausted`` is always ``False``.
+    deterministic for a ``seed``, within ``max_nodes`` tree nodes (every step of a walk is
+    a node: the budget bounds the projections, hence the time and the memory),
+    ``max_charts`` charts and ``time_limit`` seconds.  ``step`` is ``δ`` (default
+    ``radius / 4``, at least :data:`MIN_STEP` times the radius).  The result's ``nodes``
+    counts tree nodes; ``exhausted`` is always ``False``.
 
     ``progress(nodes, None)`` is called every 50 iterations, ``progress(nodes, nodes)`` at the end.
 
@@ -324,6 +329,11 @@ def atlas_rrt(
     delta = radius / 4 if step is None else float(step)
     if not 0 < delta <= radius:
         raise TautError(f"AtlasRRT needs 0 < step <= radius, got step {delta:g}, radius {radius:g}")
+    if delta < MIN_STEP * radius:
+        raise TautError(
+            f"AtlasRRT step {delta:g} is below {MIN_STEP:g} times the chart radius {radius:g}: "
+            f"a walk across one chart would take more than {2 / MIN_STEP:.0f} steps; give a step of at least {MIN_STEP * radius:g}"
+        )
     if max_nodes < 2 or max_charts < 2:
         raise TautError("AtlasRRT needs max_nodes >= 2 and max_charts >= 2")
     if np.linalg.norm(manifold.function(goal)) > 1e-6 * (1 + np.linalg.norm(goal)):
@@ -340,7 +350,9 @@ def atlas_rrt(
     def extend(t: int, target: np.ndarray, max_steps: int) -> int:
         tree = trees[t]
         n = _nearest(atlas, tree, target)
-        pts, chs, _ = walker.walk(tree.points[n], int(tree.chart[n]), target, max_steps)
+        # a walk adds one node per step: it stops where the node budget does
+        left = max_nodes - trees[0].size - trees[1].size
+        pts, chs, _ = walker.walk(tree.points[n], int(tree.chart[n]), target, min(max_steps, left))
         for x, c in zip(pts, chs):
             n = tree.add(x, n, c)
         return n

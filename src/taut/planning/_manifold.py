@@ -46,7 +46,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import KW_ONLY, dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 import numpy.typing as npt
@@ -197,6 +197,9 @@ class WrenchFeasibleManifold:
     >>> M.dim, np.round(M.pose(y), 4)
     (2, array([ 0.    ,  0.    ,  2.    , -0.5   ,  0.9   ,  0.6109]))
     """
+
+    #: names of the pose coordinates, in the order of a pose ``(6,)``
+    pose_names: ClassVar[tuple[str, ...]] = POSE_NAMES
 
     a: np.ndarray
     b: np.ndarray

@@ -217,8 +217,12 @@ def astar(
     """A path on ``manifold`` from ``start`` to ``goal`` (both on it), or proof that the
     connected component of ``start`` does not reach ``goal`` at resolution ``radius``.
 
-    ``progress(expanded, None)`` is called as charts are expanded (how many the search
-    needs is not known in advance) and ``progress(expanded, expanded)`` when it stops.
+    ``max_charts`` bounds the atlas (no chart is created beyond it, also in the middle of
+    an expansion), hence the time and the memory: when it runs out the answer is
+    ``found=False, exhausted=False``.  ``progress(expanded, None)`` is called as charts are
+    expanded (how many the search needs is not known in advance) and
+    ``progress(expanded, expanded)`` when it stops.
+
     References
     ----------
     .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
@@ -237,6 +241,9 @@ def astar(
     done: set[int] = set()
     found_at = None
     expanded = 0
+    if isinstance(max_charts, bool) or not isinstance(max_charts, (int, np.integer)) or max_charts < 2:
+        raise TautError(f"max_charts must be an integer >= 2, got {max_charts!r}")
+    stopped = False  # the chart budget ran out
     while heap:
         f, i = heapq.heappop(heap)
         if i in done:
@@ -244,10 +251,14 @@ def astar(
         if atlas.reaches(i, goal):
             found_at = i
             break
-        done.add(i)
         if len(atlas.charts) >= max_charts:
+            stopped = True
             break
-        atlas.grow(i)
+        atlas.grow(i, max_charts)
+        if not atlas.charts[i].expanded:
+            stopped = True
+            break
+        done.add(i)
         expanded += 1
         if progress is not None:
             progress(expanded, None)
@@ -258,7 +269,7 @@ def astar(
             if gj < g.get(j, np.inf):
                 g[j], parent[j] = gj, i
                 heapq.heappush(heap, (gj + h(j), j))
-    exhausted = found_at is None and not heap
+    exhausted = found_at is None and not stopped and not heap
     if progress is not None:
         progress(expanded, expanded)
     if found_at is None:

@@ -24,12 +24,18 @@ import numpy.typing as npt
 
 from taut._checks import as_array, as_count
 from taut._results import Result, jsonable
-from taut.errors import PoseError
+from taut.errors import PoseError, TautError
 from taut.kinematics import inverse_kinematics, platform_frame
 from taut.model import Robot
 from taut.statics import EllipsoidWrenchSet, wrench_feasible
 
-__all__ = ["PathCheck", "interpolate_poses", "verify_path"]
+__all__ = ["MAX_POSES", "PathCheck", "interpolate_poses", "verify_path"]
+
+#: Interpolated poses :func:`verify_path` checks when no ``max_poses`` is given: their
+#: :class:`PathCheck` holds 97 bytes each (97 MB at the limit), a few seconds of work.
+MAX_POSES = 1_000_000
+#: Poses checked at once: the structure matrices of a chunk take 19 MB.
+CHUNK = 1 << 16
 
 
 @dataclass(frozen=True)
@@ -93,10 +99,15 @@ def interpolate_poses(poses: npt.ArrayLike, subdivide: int) -> np.ndarray:
 
 
 def verify_path(
-    robot: Robot, poses: npt.ArrayLike, *, E: npt.ArrayLike | None = None, subdivide: int = 10
+    robot: Robot,
+    poses: npt.ArrayLike,
+    *,
+    E: npt.ArrayLike | None = None,
+    subdivide: int = 10,
+    max_poses: int = MAX_POSES,
 ) -> PathCheck:
     """Check every interpolated pose of a path for wrench feasibility (module docstring),
-    independently of the planner's equations.
+    independently of the planner's equations, in chunks of :data:`CHUNK` poses.
 
     Parameters
     ----------
@@ -108,6 +119,8 @@ def verify_path(
         The wrench ellipsoid ``(ŵ − ŵ_0)ᵀ E (ŵ − ŵ_0) ≤ 1`` (default ``10⁴ I``, §5).
     subdivide : int, optional
         Poses per segment of the path, linearly interpolated (its end included).
+    max_poses : int, optional
+        Budget of interpolated poses (default :data:`MAX_POSES`).
 
     Returns
     -------
@@ -118,7 +131,8 @@ def verify_path(
     PoseError
         Poses that are not rows of six finite numbers.
     TautError
-        A bad ``E`` or ``subdivide``.
+        A bad ``E`` or ``subdivide``, or more interpolated poses (``subdivide`` per segment,
+        and the last) than ``max_poses``, before any work.
 
     References
     ----------
@@ -141,19 +155,31 @@ def verify_path(
     """
     E = 1e4 * np.eye(6) if E is None else as_array(E, "E", shape=(6, 6))
     P = as_array(poses, "poses", error=PoseError)
-    P = as_array(P[None] if P.ndim == 1 else P, "poses", shape=(None, 6), error=PoseError)
-    q = interpolate_poses(P, as_count(subdivide, "subdivide"))
-    ik = inverse_kinematics(robot, q)
-    W = ik.structure_matrix.copy()
-    pm = np.zeros(3) if robot.platform.wrench_point is None else np.asarray(robot.platform.wrench_point, float)
-    _, R = platform_frame(robot, q)
-    arm = R @ pm  # moments about P_m: M_m = M_p − (R p_m) × F
-    W[:, 3:, :] -= np.cross(arm[:, None, :], W[:, :3, :].transpose(0, 2, 1)).transpose(0, 2, 1)
+    path = as_array(P[None] if P.ndim == 1 else P, "poses", shape=(None, 6), error=PoseError)
+    subdivide = as_count(subdivide, "subdivide")
+    total = (len(path) - 1) * subdivide + 1
+    if total > max_poses:
+        raise TautError(
+            f"the path's {len(path) - 1} steps at {subdivide} poses each make {total:,} poses to check, more than "
+            f"{max_poses:,} (max_poses): give a subdivide of at most {max(1, (max_poses - 1) // max(1, len(path) - 1))}"
+        )
+    q = interpolate_poses(path, subdivide)
     ws = EllipsoidWrenchSet(np.asarray(robot.platform.wrench, float), np.linalg.inv(E))
     tmin = np.array([c.tension[0] for c in robot.cables], float)
     tmax = np.array([c.tension[1] for c in robot.cables], float)
-    ok = wrench_feasible(W, tmin, tmax, ws)
     lo = np.array([c.length[0] if c.length else 0.0 for c in robot.cables])
     hi = np.array([c.length[1] if c.length else np.inf for c in robot.cables])
-    ok &= np.all((ik.lengths > lo) & (ik.lengths < hi), axis=1)
-    return PathCheck(q, ok, ik.lengths)
+    pm = np.zeros(3) if robot.platform.wrench_point is None else np.asarray(robot.platform.wrench_point, float)
+    ok = np.zeros(len(q), bool)
+    lengths = np.zeros((len(q), robot.n_cables))
+    for s in range(0, len(q), CHUNK):
+        part = q[s : s + CHUNK]
+        ik = inverse_kinematics(robot, part)
+        W = ik.structure_matrix.copy()
+        _, R = platform_frame(robot, part)
+        arm = R @ pm  # moments about P_m: M_m = M_p − (R p_m) × F
+        W[:, 3:, :] -= np.cross(arm[:, None, :], W[:, :3, :].transpose(0, 2, 1)).transpose(0, 2, 1)
+        inside = np.all((ik.lengths > lo) & (ik.lengths < hi), axis=1)
+        ok[s : s + CHUNK] = wrench_feasible(W, tmin, tmax, ws) & inside
+        lengths[s : s + CHUNK] = ik.lengths
+    return PathCheck(q, ok, lengths)

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 from taut._lazy import lazy_exports
 
 if TYPE_CHECKING:
-    from taut.statics._feasibility import static_equilibrium, wrench_closure, wrench_feasible
+    from taut.statics._feasibility import FEASIBILITY_METHODS, static_equilibrium, wrench_closure, wrench_feasible
     from taut.statics._highs import QuietHighs
     from taut.statics._tension import EQUILIBRIUM_RTOL, METHODS, TensionResult, distribute_tensions, solve_tensions
     from taut.statics._wrench import (
@@ -22,12 +22,13 @@ if TYPE_CHECKING:
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
+    "FEASIBILITY_METHODS": "taut.statics._feasibility",
+    "METHODS": "taut.statics._tension",
     "static_equilibrium": "taut.statics._feasibility",
     "wrench_closure": "taut.statics._feasibility",
     "wrench_feasible": "taut.statics._feasibility",
     "QuietHighs": "taut.statics._highs",
     "EQUILIBRIUM_RTOL": "taut.statics._tension",
-    "METHODS": "taut.statics._tension",
     "TensionResult": "taut.statics._tension",
     "distribute_tensions": "taut.statics._tension",
     "solve_tensions": "taut.statics._tension",
@@ -43,6 +44,7 @@ __all__ = [
     "BoxWrenchSet",
     "EQUILIBRIUM_RTOL",
     "EllipsoidWrenchSet",
+    "FEASIBILITY_METHODS",
     "METHODS",
     "PolytopeWrenchSet",
     "QuietHighs",

@@ -33,11 +33,20 @@ Any direction gives a valid *necessary* condition ``h_A(n) ≤ h_Z(n)``, so a sp
 normal from a nearly dependent set of columns can never turn an infeasible pose into a
 feasible one.  When ``rank W < m`` (``Z`` is flat — always for under-constrained robots
 with fewer cables than degrees of freedom) the facet test does not apply: a single
-wrench, a box or a polytope is then decided exactly by linear programs (``highspy``, one
-per vertex of the set); a full-dimensional set cannot fit in a flat ``Z`` and is
+wrench, a box or a polytope is then decided exactly, one point of the set (vertex) after
+the other — where the columns of ``W`` are independent (condition number below
+``FLAT_COND``) the tensions balancing a point are unique, ``τ = W⁺ r``, and are checked in
+one batched closed form (residual and bounds within the slack below); elsewhere by linear
+programs (``highspy``); a full-dimensional set cannot fit in a flat ``Z`` and is
 infeasible; an ellipsoid that is flat but not a point, or a set known only by its support
 function, is treated conservatively as infeasible there (such poses have measure zero for
 robots with ``n ≥ m`` cables).
+
+Many cables: the facet test enumerates ``C(n, m − 1)`` normals per pose (2 million for
+2000 cables and ``m = 3``); above ``FACET_WORK`` (normals times cables) linear programs
+decide every pose instead, warm started: the closure by ``rank W = m`` and some
+``τ ≥ 1`` with ``W τ = 0``, feasibility by one LP per vertex of the set (a set known
+only by its support function, such as an ellipsoid, is then refused).
 Cables with ``τ_min = τ_max`` carry a known tension: their wrench is moved into ``o`` and
 their columns dropped, so that the remaining generators all have positive length.
 
@@ -61,6 +70,7 @@ References
 
 from __future__ import annotations
 
+import math
 import threading
 from typing import TYPE_CHECKING
 
@@ -90,6 +100,15 @@ ZERO_TOL = 1e-12
 SLACK = 1e-9
 #: Relative margin for "a column strictly on each side" in the closure test.
 CLOSURE_TOL = 1e-10
+#: Facet normals times cables per pose (``C(n, m − 1) n``, the work of the facet test)
+#: above which linear programs decide instead: one per pose for the closure, one per
+#: vertex of the wrench set for feasibility, warm started.  An LP costs about a
+#: millisecond, as much as the facets of 60 cables for m = 3 or 16 for m = 6 (1.1e5 and
+#: 7e4); 2000 cables would need 2e6 (m = 3) or 2.6e14 (m = 6) normals per pose.
+FACET_WORK = 2**17
+#: Largest condition number of the columns of a flat ``W`` decided in closed form
+#: (``τ = W⁺ r``); a worse conditioned one is decided by a linear program.
+FLAT_COND = 1e8
 
 # status codes of the kernels
 _OUT, _IN, _FLAT = 0, 1, 2
@@ -394,11 +413,13 @@ def _set_dimension(ws: WrenchSet, m: int) -> int | None:
 
 
 def _lp_feasible(W: np.ndarray, tmin: np.ndarray, tmax: np.ndarray, rhs: np.ndarray) -> bool:
-    """Is there ``τ_min ≤ τ ≤ τ_max`` with ``W τ = rhs``?  One LP solved by HiGHS."""
+    """Is there ``τ_min ≤ τ ≤ τ_max`` with ``W τ = rhs``, for every row of ``rhs`` (``(m,)``
+    or ``(K, m)``)?  One LP per row, solved by HiGHS, each warm started from the last."""
     import highspy
 
     h = _highs()
     m, n = W.shape
+    rows = np.atleast_2d(np.asarray(rhs, dtype=float))
     lp = highspy.HighsLp()
     lp.num_col_ = n
     lp.num_row_ = m
@@ -406,16 +427,21 @@ def _lp_feasible(W: np.ndarray, tmin: np.ndarray, tmax: np.ndarray, rhs: np.ndar
     inf = highspy.kHighsInf
     lp.col_lower_ = tmin
     lp.col_upper_ = np.where(np.isinf(tmax), inf, tmax)
-    lp.row_lower_ = rhs
-    lp.row_upper_ = rhs
+    lp.row_lower_ = rows[0]
+    lp.row_upper_ = rows[0]
     lp.a_matrix_.format_ = highspy.MatrixFormat.kColwise
     lp.a_matrix_.start_ = np.arange(0, m * n + 1, m, dtype=np.int32)
     lp.a_matrix_.index_ = np.tile(np.arange(m, dtype=np.int32), n)
     lp.a_matrix_.value_ = np.ascontiguousarray(W.T).ravel()
     h.clearModel()
     h.passModel(lp)
-    h.run()
-    return h.getModelStatus() == highspy.HighsModelStatus.kOptimal
+    for k, r in enumerate(rows):
+        for i in range(m) if k else ():
+            h.changeRowBounds(i, r[i], r[i])
+        h.run()
+        if h.getModelStatus() != highspy.HighsModelStatus.kOptimal:
+            return False
+    return True
 
 
 _LOCAL = threading.local()
@@ -432,19 +458,50 @@ def _highs() -> highspy.Highs:
     return h
 
 
-def _flat_feasible(Wk: np.ndarray, tmin: np.ndarray, tmax: np.ndarray, ws: WrenchSet, off: np.ndarray, m: int) -> bool:
-    """Exact decision at a pose where ``rank W < m``."""
+def _flat_feasible(W: np.ndarray, tmin: np.ndarray, tmax: np.ndarray, ws: WrenchSet, off: np.ndarray) -> np.ndarray:
+    """Exact decisions ``(K,)`` at poses ``W (K, m, n)`` where ``rank W < m`` (``off`` ``(1, m)``
+    or ``(K, m)``).  Where the columns are independent and well conditioned (every pose of a
+    robot with fewer cables than wrench components, in general) the tensions that balance a
+    wrench are unique, ``τ = W⁺ r``: a batched closed form; the other poses get one LP per
+    point of the set."""
+    K, m, n = W.shape
+    out = np.zeros(K, bool)
     dim = _set_dimension(ws, m)
-    if dim is None or dim >= m:
-        return False
+    if K == 0 or dim is None or dim >= m:
+        return out
     pts: np.ndarray | None
     if isinstance(ws, EllipsoidWrenchSet):
         if dim > 0:
-            return False  # conservative: a flat, non-degenerate ellipsoid (module docstring)
+            return out  # conservative: a flat, non-degenerate ellipsoid (module docstring)
         pts = ws.center_wrench[None]
     else:
         pts = _set_points(ws)
-    return pts is not None and all(_lp_feasible(Wk, tmin, tmax, -(off + p)) for p in pts)
+    if pts is None:
+        return out
+    off = np.broadcast_to(off, (K, m))
+    sv = np.linalg.svd(W, compute_uv=False)
+    closed = (n <= m) & (sv[:, -1] > sv[:, 0] / FLAT_COND)
+    if closed.any():
+        Wc = W[closed]
+        pinv = np.linalg.pinv(Wc)
+        norms = np.linalg.norm(Wc, axis=1)  # ‖w_j‖, (Kc, n)
+        ok = np.ones(len(Wc), bool)
+        for p in pts:
+            r = -(off[closed] + p)
+            tau = np.einsum("knm,km->kn", pinv, r)
+            resid = np.linalg.norm(np.einsum("kmn,kn->km", Wc, tau) - r, axis=1)
+            scale = np.linalg.norm(r, axis=1) + (norms * np.abs(tau)).sum(axis=1)
+            ok &= resid <= SLACK * scale
+            # the tensions' own round-off: relative to them, and to ‖r‖ / ‖w_j‖
+            slack = SLACK * (np.abs(tau) + np.linalg.norm(r, axis=1)[:, None] / norms)
+            with np.errstate(invalid="ignore"):
+                ok &= np.all(
+                    (tau >= tmin - slack - SLACK * np.abs(tmin)) & (tau <= tmax + slack + SLACK * np.abs(tmax)), axis=1
+                )
+        out[closed] = ok
+    for k in np.flatnonzero(~closed):
+        out[k] = _lp_feasible(W[k], tmin, tmax, -(off[k] + pts))
+    return out
 
 
 def _fix_constant(
@@ -522,13 +579,15 @@ def facet_normals(
     return normals, hz, valid
 
 
-def wrench_closure(W: npt.ArrayLike) -> np.ndarray:
+def wrench_closure(W: npt.ArrayLike, *, method: str = "auto") -> np.ndarray:
     """Wrench closure: the columns of each ``W`` ``(N, m, n)`` positively span ``R^m``
     (Rushton 2022, §2.1.4, the wrench-closure workspace).  Returns ``(N,)`` bool.
 
-    Hyperplane shifting with zero lower and unit upper bounds: ``0`` is interior to
-    ``W·[0, 1]^n`` iff ``rank W = m`` and every facet normal has a column strictly on
-    each side (relative margin ``CLOSURE_TOL``).
+    ``method="facets"``: hyperplane shifting with zero lower and unit upper bounds: ``0``
+    is interior to ``W·[0, 1]^n`` iff ``rank W = m`` and every facet normal has a column
+    strictly on each side (relative margin ``CLOSURE_TOL``).  ``"lp"``: one linear program
+    per pose, ``rank W = m`` and some ``τ ≥ 1`` with ``W τ = 0``.  ``"auto"`` (default):
+    the facets up to :data:`FACET_WORK` work per pose (``C(n, m − 1) n``), else LPs.
 
     References
     ----------
@@ -540,8 +599,11 @@ def wrench_closure(W: npt.ArrayLike) -> np.ndarray:
     """
     W = _as_W(W)
     N, m, n = W.shape
+    lp = _use_lp(method, m, n)
     if m == 1:
         return (W[:, 0, :].max(axis=1) > 0) & (W[:, 0, :].min(axis=1) < 0)
+    if n > m and lp:
+        return _closure_lp(W)
     status = np.zeros(N, np.int8)
     if n > m:  # positive spanning needs at least m + 1 columns
         _run(W, np.zeros(n), np.ones(n), MODE_CLOSURE, np.zeros((1, m)), _no_set(m), status)
@@ -554,6 +616,8 @@ def wrench_feasible(
     tmax: npt.ArrayLike,
     wrench_set: WrenchSet,
     offset: npt.ArrayLike | None = None,
+    *,
+    method: str = "auto",
 ) -> np.ndarray:
     """Wrench feasibility: for every ``w`` in ``offset[k] + wrench_set`` there are tensions
     ``tmin ≤ τ ≤ tmax`` with ``W[k] τ + w = 0`` (Rushton 2022, §2.1.4, the wrench-feasible
@@ -561,8 +625,11 @@ def wrench_feasible(
 
     ``W`` is ``(N, m, n)``; ``tmin``, ``tmax`` ``(n,)`` (``tmax`` may be ``+inf``);
     ``offset`` ``(m,)`` or ``(N, m)`` (default 0), typically the external wrench.
-    Returns ``(N,)`` bool.  Poses where ``rank W < m`` are decided by linear programs
-    (see the module docstring).
+    Returns ``(N,)`` bool.  Poses where ``rank W < m`` are decided in closed form or by
+    linear programs (see the module docstring).  ``method``: ``"facets"`` (hyperplane
+    shifting), ``"lp"`` (one linear program per vertex of the set, which must then be a
+    single wrench, a box or a polytope) or ``"auto"`` (default: the facets up to
+    :data:`FACET_WORK` work per pose, ``C(n, m − 1) n``, else LPs).
 
     References
     ----------
@@ -574,6 +641,7 @@ def wrench_feasible(
     """
     W = _as_W(W)
     N, m, n = W.shape
+    lp = _use_lp(method, m, n)
     if not isinstance(wrench_set, WrenchSet):
         raise TautError(f"wrench_set must be a WrenchSet, got {type(wrench_set).__name__}")
     if wrench_set.dim != m:
@@ -587,6 +655,8 @@ def wrench_feasible(
         raise TautError(f"offset must have shape ({m},) or ({N}, {m}), got {given}")
     if not np.all(np.isfinite(off)):
         raise TautError("offset must be finite")
+    if m >= 2 and n >= m and lp:
+        return _feasible_lp(W, tmin, tmax, wrench_set, off)
     W0, tmin0, tmax0, off0 = W, tmin, tmax, off
     W, tmin, tmax, off = _fix_constant(W, tmin, tmax, off)
     n = W.shape[2]
@@ -598,8 +668,81 @@ def wrench_feasible(
         else:
             _generic_status(W, tmin, tmax, off, wrench_set, status)
     out = status == _IN
-    for k in np.flatnonzero(status == _FLAT):  # rank W < m: rare for n >= m; every pose if n < m
-        out[k] = _flat_feasible(W0[k], tmin0, tmax0, wrench_set, off0[k if off0.shape[0] > 1 else 0], m)
+    flat = np.flatnonzero(status == _FLAT)  # rank W < m: rare for n >= m; every pose if n < m
+    if flat.size:
+        out[flat] = _flat_feasible(W0[flat], tmin0, tmax0, wrench_set, off0[flat] if off0.shape[0] > 1 else off0)
+    return out
+
+
+#: The ``method`` of :func:`wrench_closure` and :func:`wrench_feasible`.
+FEASIBILITY_METHODS = ("auto", "facets", "lp")
+
+
+def _use_lp(method: str, m: int, n: int) -> bool:
+    """Whether ``method`` decides by LPs: ``"lp"``, or ``"auto"`` where the facet test would
+    cost more than :data:`FACET_WORK` (``C(n, m − 1)`` normals times ``n`` cables a pose)."""
+    if method not in FEASIBILITY_METHODS:
+        raise TautError(f"unknown method {method!r}; expected one of {', '.join(FEASIBILITY_METHODS)}")
+    return method == "lp" or (method == "auto" and math.comb(n, m - 1) * n > FACET_WORK)
+
+
+def _projected(W: np.ndarray, start: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """``τ = start + W⁺ (rhs − W start)`` ``(K, n)``: the tensions nearest ``start`` that
+    solve ``W τ = rhs`` at poses where ``W`` ``(K, m, n)`` has full row rank."""
+    gram = np.einsum("kin,kjn->kij", W, W)
+    miss = rhs - np.einsum("kmn,n->km", W, start)
+    return start + np.einsum("kmn,km->kn", W, np.linalg.solve(gram, miss[..., None])[..., 0])
+
+
+def _closure_lp(W: np.ndarray) -> np.ndarray:
+    """Wrench closure by one LP per pose: ``rank W = m`` and some ``τ ≥ 1`` with ``W τ = 0``
+    (then ``0 = W (τ / max τ)`` with ``τ / max τ`` interior to ``[0, 1]^n``).  Two
+    certificates spare most LPs: the null vector nearest ``(1, …, 1)``, when positive,
+    proves the closure; a direction ``v ≠ 0`` (the sum of the unit columns) with
+    ``v·w_j ≥ 0`` for every column disproves it (no tensions pull along ``−v``)."""
+    N, m, n = W.shape
+    sv = np.linalg.svd(W, compute_uv=False)
+    full = np.flatnonzero(sv[:, -1] > RANK_TOL * sv[:, 0])
+    out = np.zeros(N, bool)
+    ones, unbounded, zero = np.ones(n), np.full(n, np.inf), np.zeros(m)
+    tau = _projected(W[full], ones, np.zeros((full.size, m)))
+    proven = tau.min(axis=1) > CLOSURE_TOL * np.abs(tau).max(axis=1)
+    out[full[proven]] = True
+    rest = full[~proven]
+    U = W[rest] / np.maximum(np.linalg.norm(W[rest], axis=1), 1e-300)[:, None, :]
+    v = U.sum(axis=2)
+    side = (np.einsum("km,kmn->kn", v, U) >= 0.0).all(axis=1) & (np.linalg.norm(v, axis=1) > ZERO_TOL * n)
+    for k in rest[~side]:
+        out[k] = _lp_feasible(W[k], ones, unbounded, zero)
+    return out
+
+
+def _feasible_lp(W: np.ndarray, tmin: np.ndarray, tmax: np.ndarray, ws: WrenchSet, off: np.ndarray) -> np.ndarray:
+    """Wrench feasibility by LPs, one per point of the set and pose: exact for a set that
+    is the hull of finitely many points (a convex set lies in the zonotope iff they do).
+    The tensions nearest the middle of the bounds that balance each point
+    (:func:`_projected`), when within the bounds, prove a pose feasible without an LP."""
+    N, m, n = W.shape
+    pts = _set_points(ws)
+    if pts is None:
+        raise TautError(
+            f"{type(ws).__name__} is decided by the facets of the available wrench set: "
+            f"C({n}, {m - 1}) = {math.comb(n, m - 1):.3g} of them per pose with {n} cables; "
+            "give a box, polytope or single wrench (decided by linear programs)"
+        )
+    rhs = -(np.broadcast_to(off, (N, m))[:, None, :] + pts[None])
+    start = np.where(np.isfinite(tmax), 0.5 * (tmin + tmax), tmin + np.maximum(1.0, np.abs(tmin)))
+    sv = np.linalg.svd(W, compute_uv=False)
+    full = np.flatnonzero(sv[:, -1] > RANK_TOL * sv[:, 0])
+    proven = np.zeros(N, bool)
+    inside = np.ones(full.size, bool)
+    for p in range(len(pts)):
+        tau = _projected(W[full], start, rhs[full, p])
+        inside &= np.all((tau >= tmin) & (tau <= tmax), axis=1)
+    proven[full[inside]] = True
+    out = proven.copy()
+    for k in np.flatnonzero(~proven):
+        out[k] = _lp_feasible(W[k], tmin, tmax, rhs[k])
     return out
 
 
@@ -636,11 +779,13 @@ def _generic_status(
         status[s:e] = np.where(bad.any(axis=1), _OUT, np.where(full, _IN, _FLAT))
 
 
-def static_equilibrium(W: npt.ArrayLike, tmin: npt.ArrayLike, tmax: npt.ArrayLike, w: npt.ArrayLike) -> np.ndarray:
+def static_equilibrium(
+    W: npt.ArrayLike, tmin: npt.ArrayLike, tmax: npt.ArrayLike, w: npt.ArrayLike, *, method: str = "auto"
+) -> np.ndarray:
     """Static equilibrium ``W[k] τ + w[k] = 0`` with ``tmin ≤ τ ≤ tmax`` for one wrench per
     pose (``w`` ``(N, m)`` or ``(m,)``): the single-wrench case of the wrench-feasible
-    workspace (Rushton 2022, §2.1.4), by the same hyperplane-shifting test, with an exact LP
-    where ``rank W < m`` (e.g. every pose of a robot with fewer cables than DOF).
+    workspace (Rushton 2022, §2.1.4), by the same test (``method`` as there), exact where
+    ``rank W < m`` too (e.g. every pose of a robot with fewer cables than DOF).
 
     References
     ----------
@@ -649,4 +794,4 @@ def static_equilibrium(W: npt.ArrayLike, tmin: npt.ArrayLike, tmax: npt.ArrayLik
     """
     W = _as_W(W)
     m = W.shape[1]
-    return wrench_feasible(W, tmin, tmax, SingleWrench(np.zeros(m)), offset=w)
+    return wrench_feasible(W, tmin, tmax, SingleWrench(np.zeros(m)), offset=w, method=method)

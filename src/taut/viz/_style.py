@@ -1,5 +1,6 @@
 """Shared look of taut's figures (one colour per cable, the same in every figure) and the
-checks of the axes and figures that the plotting functions are given."""
+checks of the axes, figures and arrays that the plotting functions are given (each raises
+:class:`~taut.errors.ArgumentError`)."""
 
 from __future__ import annotations
 
@@ -7,6 +8,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
+
+from taut.errors import ArgumentError
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -40,7 +43,7 @@ def cable_color(i: int) -> str:
 
 
 def axes_2d(ax: Axes | None, what: str, figsize: tuple[float, float] = (6.0, 6.0)) -> Axes:
-    """``ax`` if it is 2-D, else a ``TypeError`` naming ``what`` is drawn; with ``ax=None``
+    """``ax`` if it is 2-D, else an ``ArgumentError`` naming ``what`` is drawn; with ``ax=None``
     the axes of a new figure (through pyplot, so that it shows in notebooks)."""
     import matplotlib.pyplot as plt
     from mpl_toolkits.mplot3d.axes3d import Axes3D
@@ -48,12 +51,12 @@ def axes_2d(ax: Axes | None, what: str, figsize: tuple[float, float] = (6.0, 6.0
     if ax is None:
         return plt.figure(figsize=figsize).add_subplot()
     if isinstance(ax, Axes3D):
-        raise TypeError(f"{what} is drawn on 2-D axes, got 3-D axes (projection='3d')")
+        raise ArgumentError(f"{what} is drawn on 2-D axes, got 3-D axes (projection='3d')")
     return ax
 
 
 def axes_3d(ax: Axes | None, what: str, figsize: tuple[float, float] = (7.0, 6.0)) -> Axes3D:
-    """``ax`` if it is a 3-D ``Axes3D`` (``projection="3d"``), else a ``TypeError`` naming
+    """``ax`` if it is a 3-D ``Axes3D`` (``projection="3d"``), else an ``ArgumentError`` naming
     ``what`` is drawn; with ``ax=None`` the 3-D axes of a new figure."""
     import matplotlib.pyplot as plt
     from mpl_toolkits.mplot3d.axes3d import Axes3D
@@ -61,12 +64,12 @@ def axes_3d(ax: Axes | None, what: str, figsize: tuple[float, float] = (7.0, 6.0
     if ax is None:
         ax = plt.figure(figsize=figsize).add_subplot(projection="3d")
     if not isinstance(ax, Axes3D):
-        raise TypeError(f"{what} is drawn on 3-D axes (projection='3d'), got 2-D axes")
+        raise ArgumentError(f"{what} is drawn on 3-D axes (projection='3d'), got 2-D axes")
     return ax
 
 
 def empty_figure(fig: Figure | None, what: str, figsize: tuple[float, float]) -> Figure:
-    """``fig`` if it holds no axes yet, else a ``ValueError`` naming ``what`` is drawn (its
+    """``fig`` if it holds no axes yet, else an ``ArgumentError`` naming ``what`` is drawn (its
     panels are laid out over the whole figure); with ``fig=None`` a new figure of
     ``figsize`` through pyplot."""
     import matplotlib.pyplot as plt
@@ -74,8 +77,16 @@ def empty_figure(fig: Figure | None, what: str, figsize: tuple[float, float]) ->
     if fig is None:
         return plt.figure(figsize=figsize)
     if fig.axes:
-        raise ValueError(f"{what} lays out its panels on an empty figure, the given one has {len(fig.axes)} axes")
+        raise ArgumentError(f"{what} lays out its panels on an empty figure, the given one has {len(fig.axes)} axes")
     return fig
+
+
+def numbers(values: npt.ArrayLike, what: str) -> np.ndarray:
+    """``values`` as a float array, else an ``ArgumentError`` naming ``what`` they are."""
+    try:
+        return np.asarray(values, dtype=float)
+    except (TypeError, ValueError):
+        raise ArgumentError(f"{what} must be numbers, got {values!r}") from None
 
 
 def set_equal_3d(ax: Axes3D, points: npt.ArrayLike, margin: float = 0.05) -> None:

@@ -26,7 +26,7 @@ if TYPE_CHECKING:
         make_condition,
     )
     from taut.workspace._evaluate import WorkspaceResult, evaluate_workspace
-    from taut.workspace._grid import PoseGrid, default_bounds, make_grid, pose_grid, position_grid
+    from taut.workspace._grid import MAX_GRID_POSES, PoseGrid, default_bounds, make_grid, pose_grid, position_grid
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -40,6 +40,7 @@ _LAZY = {
     "make_condition": "taut.workspace._conditions",
     "WorkspaceResult": "taut.workspace._evaluate",
     "evaluate_workspace": "taut.workspace._evaluate",
+    "MAX_GRID_POSES": "taut.workspace._grid",
     "PoseGrid": "taut.workspace._grid",
     "default_bounds": "taut.workspace._grid",
     "make_grid": "taut.workspace._grid",
@@ -49,6 +50,7 @@ _LAZY = {
 
 __all__ = [
     "CONDITIONS",
+    "MAX_GRID_POSES",
     "PoseGrid",
     "StaticEquilibrium",
     "WorkspaceCondition",

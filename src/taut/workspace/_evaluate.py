@@ -30,15 +30,23 @@ from taut.model import Robot
 from taut.parallel import Executor, as_executor
 from taut.statics import WrenchSet
 from taut.workspace._conditions import WorkspaceCondition, make_condition
-from taut.workspace._grid import AxisSpec, PoseGrid, format_bytes, make_grid
+from taut.workspace._grid import MAX_GRID_POSES, AxisSpec, PoseGrid, format_bytes, make_grid
 
-__all__ = ["DEFAULT_CHUNK", "MAX_POSE_ARRAY_BYTES", "WorkspaceResult", "evaluate_workspace"]
+__all__ = ["DEFAULT_CHUNK", "MAX_POSES", "MAX_POSE_ARRAY_BYTES", "WorkspaceResult", "evaluate_workspace"]
 
 #: Poses per chunk: large enough to amortise the per-call overhead, small enough to bound memory.
 DEFAULT_CHUNK = 16384
+#: Entries of the structure matrices of one chunk (16 MiB): a robot with many cables gets
+#: fewer poses per chunk (174 for 2000 cables in 6-D), so that its memory stays bounded and
+#: its progress is reported as often.
+CHUNK_ELEMENTS = 1 << 21
 #: Poses handed to the executor per call of its ``map``: the verdicts of one such batch are
 #: the only per-chunk results held at once before they are copied into the result.
 BATCH_POSES = 1 << 22
+#: Poses :func:`evaluate_workspace` evaluates when no ``max_poses`` is given: a budget of
+#: minutes (10 µs a pose for the wrench closure of 8 cables in 6-D, on one core), where
+#: :data:`~taut.workspace._grid.MAX_GRID_POSES` bounds the memory of the verdicts.
+MAX_POSES = 10_000_000
 #: Largest ``(N, pose_size)`` float array that :attr:`WorkspaceResult.poses` materialises.
 MAX_POSE_ARRAY_BYTES = 1 << 30
 #: Format tag of the files written by :meth:`WorkspaceResult.save`.
@@ -213,7 +221,8 @@ def evaluate_workspace(
     wrench_set: WrenchSet | None = None,
     executor: object = None,
     progress: Callable[[int, int | None], None] | None = None,
-    chunk: int = DEFAULT_CHUNK,
+    chunk: int | None = None,
+    max_poses: int = MAX_POSES,
 ) -> WorkspaceResult:
     """Evaluate a workspace condition over a grid of poses.
 
@@ -226,18 +235,29 @@ def evaluate_workspace(
     ``poses (N, pose_size)`` (then ``axes == ()`` and ``grid_shape == (N,)``).
 
     The poses of a grid are generated chunk by chunk (``chunk`` poses, from their flat
-    indices) where the chunk is evaluated, and only the verdicts are kept: memory is one
-    byte per pose plus a few chunks' work.  Chunks are mapped over ``executor`` (an
-    executor of :func:`taut.parallel.get_executor` or a ``distributed.Client``; default
-    serial) and the verdicts do not depend on ``chunk`` or the executor.
+    indices; by default :data:`DEFAULT_CHUNK`, or fewer so that a chunk's structure
+    matrices hold at most :data:`CHUNK_ELEMENTS` numbers) where the chunk is evaluated,
+    and only the verdicts are kept: memory is one byte per pose plus a few chunks' work.
+    Chunks are mapped over ``executor`` (an executor of :func:`taut.parallel.get_executor`
+    or a ``distributed.Client``; default serial) and the verdicts do not depend on
+    ``chunk`` or the executor.
     ``progress(done, total)`` is called with pose counts as chunks complete.
 
-    Raises :class:`~taut.errors.GridSizeError` for a grid of more than
-    :data:`~taut.workspace._grid.MAX_GRID_POSES` poses, before any work."""
+    ``max_poses`` is the budget of poses (default :data:`MAX_POSES`), at most
+    :data:`~taut.workspace._grid.MAX_GRID_POSES`.
+
+    Raises :class:`~taut.errors.GridSizeError` for a grid of more than ``max_poses`` poses
+    (or :data:`~taut.workspace._grid.MAX_GRID_POSES`), before any work."""
     cond = make_condition(condition, wrench_set=wrench_set)
     runner: Executor = as_executor(executor)
+    if chunk is None:
+        chunk = max(1, min(DEFAULT_CHUNK, CHUNK_ELEMENTS // (robot.wrench_dim * max(1, robot.n_cables))))
     if isinstance(chunk, bool) or not isinstance(chunk, (int, np.integer)) or chunk < 1:
         raise TautError(f"chunk must be a positive integer, got {chunk!r}")
+    if isinstance(max_poses, bool) or not isinstance(max_poses, (int, np.integer)) or max_poses < 1:
+        raise TautError(f"max_poses must be a positive integer, got {max_poses!r}")
+    if max_poses > MAX_GRID_POSES:
+        raise GridSizeError(f"max_poses {max_poses:,} is more than the {MAX_GRID_POSES:,} poses taut evaluates")
     step = int(chunk)
     g: PoseGrid | None = None
     arr: np.ndarray | None = None
@@ -257,6 +277,11 @@ def evaluate_workspace(
         source = g
         axes, shape, names = tuple(np.asarray(a) for a in g.axes), g.shape, g.names
         N = g.size
+    if N > max_poses:
+        raise GridSizeError(
+            f"{N:,} poses to evaluate, more than the budget of {int(max_poses):,} (max_poses, taut workspace "
+            f"--max-poses; at most {MAX_GRID_POSES:,}): raise it to evaluate them all, or give fewer points per axis"
+        )
     inside = np.zeros(N, dtype=bool)
     done = 0
     t0 = time.perf_counter()

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
         builtin_trajectory,
         full_poses,
         run_trajectory,
-        sample_waypoints,
+        timed_moves,
     )
     from taut.wrapping._tree import MAX_NODES, CableStateTree
     from taut.wrapping._update import Tracking, track_cable_state, update_state
@@ -41,7 +41,7 @@ _LAZY = {
     "builtin_trajectory": "taut.wrapping._trajectory",
     "full_poses": "taut.wrapping._trajectory",
     "run_trajectory": "taut.wrapping._trajectory",
-    "sample_waypoints": "taut.wrapping._trajectory",
+    "timed_moves": "taut.wrapping._trajectory",
     "MAX_NODES": "taut.wrapping._tree",
     "CableStateTree": "taut.wrapping._tree",
     "Tracking": "taut.wrapping._update",
@@ -64,7 +64,7 @@ __all__ = [
     "full_poses",
     "rebuild_path",
     "run_trajectory",
-    "sample_waypoints",
+    "timed_moves",
     "track_cable_state",
     "update_state",
     "wrapped_inverse_kinematics",

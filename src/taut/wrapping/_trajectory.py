@@ -33,6 +33,7 @@ from taut._checks import as_array, as_number
 from taut._results import Result
 from taut.errors import PoseError, TautError
 from taut.model import Robot
+from taut.motion import robot_trajectory
 from taut.statics import external_wrench, solve_tensions
 from taut.wrapping._ik import WrappedIK, wrapped_inverse_kinematics
 from taut.wrapping._tree import OBJ
@@ -42,15 +43,16 @@ DWELL = 1.0
 #: Speed [m/s] used when a waypoint trajectory gives none (§6.2 prints none).
 DEFAULT_SPEED = 0.1
 
-#: Most samples of one trajectory: each carries a pose, lengths, tensions and cable states
+#: Most samples of one trajectory of a VSCR (a timed motion has its own budget, ``MAX_SAMPLES``
+#: of :mod:`taut.motion._trajectory`): each carries a pose, lengths, tensions and cable states
 #: (about a kilobyte); at the default 0.01 s step this is close to three hours of motion.
-MAX_SAMPLES = 1_000_000
+MAX_WRAPPING_SAMPLES = 1_000_000
 
 
 def _check_samples(count: float, dt: float) -> None:
-    if not count <= MAX_SAMPLES:  # also refuses an infinite or NaN count
+    if not count <= MAX_WRAPPING_SAMPLES:  # also refuses an infinite or NaN count
         raise TautError(
-            f"sampling every {dt:g} s gives {count:.3g} samples, more than {MAX_SAMPLES:,}: choose a larger dt"
+            f"sampling every {dt:g} s gives {count:.3g} samples, more than {MAX_WRAPPING_SAMPLES:,}: choose a larger dt"
         )
 
 
@@ -69,7 +71,7 @@ PARAMETRIC = {
 DT = 0.01
 
 
-def sample_waypoints(
+def timed_moves(
     waypoints: npt.ArrayLike, *, speed: float = DEFAULT_SPEED, dwell: float = DWELL, dt: float = DT
 ) -> tuple[np.ndarray, np.ndarray]:
     """Samples of straight moves at constant speed between waypoints, with a rest at each
@@ -106,8 +108,8 @@ def sample_waypoints(
 
     Examples
     --------
-    >>> from taut.wrapping import sample_waypoints
-    >>> times, poses = sample_waypoints([[0, 0], [0.2, 0]], speed=0.1, dwell=0.0, dt=0.5)
+    >>> from taut.wrapping import timed_moves
+    >>> times, poses = timed_moves([[0, 0], [0.2, 0]], speed=0.1, dwell=0.0, dt=0.5)
     >>> times.tolist(), poses[:, 0].tolist()
     ([0.0, 0.5, 1.0, 1.5, 2.0], [0.0, 0.05, 0.1, 0.15, 0.2])
     """
@@ -164,7 +166,7 @@ def builtin_trajectory(
 ) -> tuple[np.ndarray, np.ndarray]:
     """The samples of one of a robot's named trajectories: the parametric path of
     :data:`PARAMETRIC` (Eqs. 4.12–4.13) if the name is one, else its waypoints
-    (:func:`sample_waypoints`).
+    (:func:`timed_moves`), read by :func:`taut.motion.robot_trajectory`.
 
     Parameters
     ----------
@@ -205,16 +207,11 @@ def builtin_trajectory(
     >>> len(times), poses[0].tolist(), np.round(poses[-1], 3)
     (81, [0.0, 2.0], array([4. , 0.5]))
     """
-    if not robot.trajectories:
-        raise TautError(f"{robot.name} has no built-in trajectory; give --waypoints FILE")
-    name = name or next(iter(robot.trajectories))
-    if name not in robot.trajectories:
-        raise TautError(f"{robot.name} has no trajectory {name!r}; it has {', '.join(robot.trajectories)}")
-    if name in PARAMETRIC:
-        fn, t0, t1 = PARAMETRIC[name]
+    tr = robot_trajectory(robot, name)
+    if tr.name in PARAMETRIC:
+        fn, t0, t1 = PARAMETRIC[tr.name]
         return sample_path(fn, t0, t1, dt=dt)
-    tr = robot.trajectories[name]
-    return sample_waypoints(
+    return timed_moves(
         tr.waypoints, speed=speed or tr.speed or DEFAULT_SPEED, dwell=tr.dwell if dwell is None else dwell, dt=dt
     )
 

@@ -1,0 +1,117 @@
+"""``taut fk ROBOT [--lengths L1,...,Ln] [--max-taut K] [--max-boxes N] [--strict] [--workers N]
+[--scheduler ADDRESS] [--plot FILE] [--json]``:
+all equilibrium poses for given cable lengths (the direct geometrico-static problem,
+:func:`taut.dgp.solve_dgp`).  Without ``--lengths`` the robot's ``reference.lengths`` are
+used.  No equilibrium is an empty list, not an error."""
+
+from __future__ import annotations
+
+import argparse
+
+from taut.cli import _args as A
+from taut.cli._cables import cable_numbers, numbered
+from taut.cli._incomplete import EXIT_STATUS, add_strict, enclosures, report
+from taut.cli._output import console, emit, print_table, save_figure, table
+from taut.cli._progress import progress_bar, wanted
+
+SUMMARY = "all equilibria for given cable lengths (direct geometrico-static problem)"
+ROBOT = True
+
+DESCRIPTION = f"""All equilibrium poses of the platform for given cable lengths, every one certified
+(interval branch-and-prune, Krawczyk).  A box double precision leaves too small to split
+(a double or nearly double solution) is searched again in 256-bit balls when python-flint is
+installed (pip install 'taut[precise]').  A box that could be neither discarded nor
+certified (too small to split even so; or left when the --max-boxes budget ran out) is
+undecided: the list of equilibria is then possibly incomplete, JSON "complete" is false,
+"undecided_enclosures" holds every such box (its sub-problem's taut cables, the cause, the
+enclosure of the unknowns: the fixed-frame coordinates q1_x ... q3_z of the platform's
+reference points, given in the body frame as "reference_points", and the normal n_x, n_y,
+n_z of their plane; and the taut cables' tensions, null for an unbounded side), and one
+warning line on stderr names the sub-problems.  Every equilibrium not listed lies in one of
+those boxes.  An equilibrium on the border of two taut sets (a taut cable at zero tension,
+or a slack one exactly at its length) is listed once, under the smaller set, with "boundary"
+naming the larger one.
+{EXIT_STATUS}
+JSON: {{"robot", "solutions": [{{"taut", "position", "orientation", "tensions", "stable", "boundary"?, ...}}],
+"complete", "subproblems", "undecided_boxes", "undecided_enclosures": [{{"taut", "cause",
+"enclosure": {{name: [lo, hi]}}, "tensions": [[lo, hi], ...], "reference_points"}}], "boxes",
+"elapsed_s"}}."""
+
+
+def run(ns: argparse.Namespace) -> int:
+    from taut.dgp import MAX_BOXES, solve_dgp
+    from taut.parallel import get_executor
+
+    plot = A.plot_file(ns.plot)
+    robot = A.load(ns.robot, ns.cable_set)
+    lengths = A.vector(ns.lengths, "--lengths") if ns.lengths is not None else None
+    with (
+        get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor,
+        progress_bar("fk", wanted(ns.json)) as progress,
+    ):
+        res = solve_dgp(
+            robot,
+            lengths,
+            max_taut=ns.max_taut,
+            executor=executor,
+            max_boxes=MAX_BOXES if ns.max_boxes is None else ns.max_boxes,
+            progress=progress,
+        )
+    data = {
+        "robot": robot.name,
+        "solutions": [numbered(s.as_dict()) for s in res.solutions],
+        "subproblems": res.subproblems,
+        "undecided_boxes": res.undecided,
+        "undecided_enclosures": enclosures(res.undecided_enclosures),
+        "complete": res.complete,
+        "boxes": res.boxes,
+        "elapsed_s": res.elapsed_s,
+    }
+    if plot is not None:
+        from taut.viz import plot_equilibria
+
+        save_figure(plot_equilibria(robot, res.solutions), plot, data)
+    status = report(res.undecided_enclosures, "equilibria", ns.strict, multiprecision_hint=True)
+
+    def human(d: dict) -> None:
+        con = console()
+        t = table(
+            f"{robot.name}: {len(res.solutions)} equilibria ({res.subproblems} sub-problems, {res.elapsed_s:.2f} s)"
+            + ("" if res.complete else f", incomplete: {res.undecided} boxes undecided"),
+            ["taut", *robot.pose_names, *(f"τ{i + 1}" for i in range(robot.n_cables)), "stable"],
+            [
+                [
+                    ",".join(map(str, cable_numbers(s.taut))),
+                    *(f"{v:.4f}" for v in s.position),
+                    *(f"{v:.4f}" for v in s.orientation),
+                    *(f"{v:.4f}" for v in s.tensions),
+                    "yes" if s.stable else "no",
+                ]
+                for s in res.solutions
+            ],
+        )
+        print_table(con, t)
+
+    emit(data, ns.json, human)
+    return status
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--lengths", help="cable lengths L1,...,Ln (default: the robot's reference lengths)")
+    parser.add_argument(
+        "--max-taut",
+        type=A.count(),
+        default=None,
+        metavar="K",
+        help="largest number of taut cables (default min(n, 6))",
+    )
+    parser.add_argument(
+        "--max-boxes",
+        type=A.count(),
+        default=None,
+        metavar="N",
+        help="box budget of every sub-problem; the boxes left when it runs out are undecided (default 2000000)",
+    )
+    add_strict(parser)
+    A.add_parallel(parser, workers=1)
+    parser.add_argument("--plot", metavar="FILE.png", help="the robot in every equilibrium found")

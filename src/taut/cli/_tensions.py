@@ -1,0 +1,61 @@
+"""``taut tensions ROBOT [--pose POSE] [--wrench W] [--method M]``: a tension distribution
+balancing the wrench at one pose; an infeasible pose is an answer (``docs/architecture.md`` §4.3)."""
+
+from __future__ import annotations
+
+import argparse
+
+from taut.cli import _args as A
+from taut.cli._output import console, emit, fmt, print_table, table
+from taut.errors import TautError
+
+SUMMARY = "tension distribution at a pose"
+ROBOT = True
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--pose", help=A.POSE_HELP)
+    parser.add_argument("--wrench", help="external wrench (default: the robot's own, weight included)")
+    parser.add_argument(
+        "--method", default="lp", help="lp | qp | inf | closed-form | improved-closed-form | barycentric"
+    )
+
+
+def run(ns: argparse.Namespace) -> int:
+    from taut.statics import distribute_tensions
+
+    robot = A.load(ns.robot, ns.cable_set)
+    pose = A.pose(robot, ns.pose) if ns.pose is not None else A.default_pose(robot)
+    wrench = None
+    if ns.wrench is not None:
+        wrench = A.vector(ns.wrench, "--wrench")
+        if wrench.size != robot.wrench_dim:
+            raise TautError(
+                f"--wrench: {robot.name} takes a wrench of {robot.wrench_dim} components, got {wrench.size}"
+            )
+    res = distribute_tensions(robot, pose, wrench=wrench, method=ns.method)
+    feasible = bool(res.feasible)
+    data = {
+        "robot": robot.name,
+        "pose": pose.tolist(),
+        "tensions": res.tensions.tolist() if feasible else None,
+        "feasible": feasible,
+        "status": str(res.status),
+        "method": res.method,
+    }
+
+    def human(d: dict) -> None:
+        con = console()
+        if not feasible:
+            why = (
+                "no tension distribution exists"
+                if d["status"] == "infeasible"
+                else f"method {ns.method} found no solution"
+            )
+            con.print(f"[bold red]infeasible[/]: {why} at this pose within the tension bounds")
+            return
+        rows = [[str(i + 1), fmt(t)] for i, t in enumerate(res.tensions)]
+        print_table(con, table(f"tensions ({res.method})", ["cable", "tension [N]"], rows))
+
+    emit(data, ns.json, human)
+    return 0
