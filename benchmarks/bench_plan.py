@@ -7,7 +7,7 @@ chart reaches the goal.  q3, q4 are the wrench-feasible replacements of the file
 (robocrane.yaml, reference.notes): the published τ_3, τ_4 are not feasible under our
 reading of §5, so the 280 s ratio compares queries of the same kind, not the same query.
 
-AtlasRRT (Jaillet & Porta 2013, :func:`taut.planning.atlas_rrt`, bidirectional, chart
+AtlasRRT (Jaillet & Porta 2013, :func:`taut.planning.plan_path` with ``method="atlasrrt"``, bidirectional, chart
 radius ``--rrt-radius``, step ``--rrt-step``) on the same queries, ``--seeds`` seeds
 (0, 1, ...), against the paper's times and, when the optional peer OMPL is installed
 (``pip install ompl``, or ``pip install -e '.[bench]'``), RRTConnect on the same slice,
@@ -39,7 +39,7 @@ import numpy as np
 from _common import best_of  # first: it pins the thread pools to one core
 
 import taut
-from taut.planning import Atlas, WrenchFeasibleManifold, atlas_rrt, plan_path, verify_path
+from taut.planning import Atlas, WrenchFeasibleManifold, plan_path, verify_path
 
 PAPER_S = {("q1", "q2"): 20.0, ("q3", "q4"): 280.0}
 FREE = (3, 4)  # φ, θ in a pose [x, y, z, φ, θ, σ]
@@ -175,13 +175,13 @@ def main():
         print(f"robocrane {a} -> {b}")
         if ns.astar:
             t_astar, res = best_of(
-                lambda: plan_path(mf, y1, y2, ns.radius, metric=M.pose_metric, max_charts=ns.max_charts),  # noqa: B023
+                lambda: plan_path(mf, y1, y2, radius=ns.radius, metric=M.pose_metric, max_charts=ns.max_charts),  # noqa: B023
                 ns.repeat,
             )
             check = verify_path(robot, M.pose(res.path), subdivide=10) if res.found else None
 
             def breadth_first(y1=y1, y2=y2):
-                atlas = Atlas(mf, y1, ns.radius, metric=M.pose_metric)
+                atlas = Atlas(mf, y1, radius=ns.radius, metric=M.pose_metric)
                 i = 0
                 while i < len(atlas.charts) and len(atlas.charts) < ns.max_charts:
                     if atlas.reaches(i, y2):
@@ -217,8 +217,16 @@ def main():
         have_ompl = ns.peers
         for seed in range(ns.seeds):
             t = time.perf_counter()
-            r = atlas_rrt(
-                mf, y1, y2, ns.rrt_radius, step=ns.rrt_step, metric=M.pose_metric, seed=seed, shorten=ns.simplify
+            r = plan_path(
+                mf,
+                y1,
+                y2,
+                method="atlasrrt",
+                radius=ns.rrt_radius,
+                step=ns.rrt_step,
+                metric=M.pose_metric,
+                seed=seed,
+                shorten=ns.simplify,
             )
             dt = time.perf_counter() - t
             if r.found:
@@ -280,7 +288,9 @@ def six_d(robot, P, ns):
     times, lengths, charts, ok = [], [], [], []
     for seed in range(ns.seeds):
         t = time.perf_counter()
-        r = atlas_rrt(mf, y1, y2, ns.rrt_radius, step=ns.rrt_step, metric=M.pose_metric, seed=seed)
+        r = plan_path(
+            mf, y1, y2, method="atlasrrt", radius=ns.rrt_radius, step=ns.rrt_step, metric=M.pose_metric, seed=seed
+        )
         times.append(time.perf_counter() - t)
         if r.found:
             lengths.append(r.length)

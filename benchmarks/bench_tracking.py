@@ -1,7 +1,7 @@
 """Time per update of tracking forward kinematics (Berti 2015, §4.1.2) on the
 suspended 3-cable robot, from the stable Table 4.3 equilibrium along 200 steps of 2 mm,
 against the 4 ms the source reports as typical for its real-time DGP update (7 ms worst):
-the mean over a ``track_path`` run, then the median and the slowest of single ``track``
+the mean over a ``track_path`` run, then the median and the slowest of single ``track_equilibrium``
 calls, one per control cycle as a real-time loop would make them.
 
     python benchmarks/bench_tracking.py [--repeat R]
@@ -13,7 +13,7 @@ import time
 import numpy as np
 from _common import best_of  # first: it pins the thread pools to one core
 
-from taut.dgp import DGPSolution, build_subproblem, track, track_path
+from taut.dgp import DGPSolution, build_subproblem, track_equilibrium, track_path
 from taut.geometry import rotation_matrix
 from taut.interval import certify
 from taut.model import load_robot
@@ -49,11 +49,11 @@ def main():
     calls, sol = [], start
     for lengths in path:
         t0 = time.perf_counter()
-        sol = track(robot, sol, lengths)
+        sol = track_equilibrium(robot, sol, lengths)
         calls.append(time.perf_counter() - t0)
     med, worst = 1e3 * np.median(calls), 1e3 * max(calls)
     print(
-        f"single track() calls: median {med:.3f} ms, slowest {worst:.3f} ms   source worst: {SOURCE_WORST_MS:.0f} ms   "
+        f"single track_equilibrium() calls: median {med:.3f} ms, slowest {worst:.3f} ms   source worst: {SOURCE_WORST_MS:.0f} ms   "
         f"ratio source/taut (worst): {SOURCE_WORST_MS / worst:.1f}x"
     )
 

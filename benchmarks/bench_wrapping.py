@@ -9,7 +9,7 @@ import numpy as np
 from _common import best_of  # first: it pins the thread pools to one core
 
 from taut.model import example
-from taut.wrapping import CableStateTree, collidable_objects, track
+from taut.wrapping import CableStateTree, collidable_objects, track_cable_state
 
 
 def main():
@@ -21,13 +21,13 @@ def main():
     t = np.linspace(0.0, 5.0, args.samples)
     P = np.column_stack([0.75 * np.cos(np.pi * t / 5), -0.5 + 0.75 * np.sin(np.pi * t / 5)])
     P = np.vstack([P, P[::-1]])
-    trees = [CableStateTree(np.vstack([circles, [[*c.exit, 0.0]]]), 1, polys) for c in robot.cables]
+    trees = [CableStateTree(np.vstack([circles, [[*c.exit, 0.0]]]), 1, disallowed=polys) for c in robot.cables]
     starts = [tr.shortest_taut_state(P[0]) for tr in trees]
     for tr, s in zip(trees, starts):
-        track(tr, P[:10], s)  # compile / expand
+        track_cable_state(tr, P[:10], node=s)  # compile / expand
     rates = []
     for tr, s in zip(trees, starts):
-        sec, _ = best_of(lambda: track(tr, P, s))  # noqa: B023 — called at once
+        sec, _ = best_of(lambda: track_cable_state(tr, P, node=s))  # noqa: B023 — called at once
         rates.append(len(P) / sec)
     sub = P[:: max(1, len(P) // 200)]
     naive_sec, _ = best_of(lambda: [trees[0].shortest_taut_state(b) for b in sub], repeat=1)

@@ -13,6 +13,7 @@ LAYERS = {
     "errors": 0,
     "_lazy": 0,
     "_results": 0,
+    "_checks": 0,
     "geometry": 0,
     "interval": 0,
     "model": 1,

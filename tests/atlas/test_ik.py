@@ -25,7 +25,7 @@ def test_iterative_ik_equals_tracking_along_table_6_6(t_atlas):
     robot = t_atlas.robot
     P = _polyline(robot.trajectories["table-6.6"].waypoints)
     ref = wrapped_inverse_kinematics(robot, P)
-    it = iterative_ik(t_atlas, P, 0)
+    it = iterative_ik(t_atlas, P, chart=0)
     assert np.abs(it.lengths - ref.lengths).max() < 1e-9
     assert all(t_atlas.charts[c].nodes == tuple(ref.nodes[j]) for j, c in enumerate(it.charts))
     assert len(np.unique(it.charts)) >= 4
@@ -50,7 +50,7 @@ def test_direct_ik_equals_tracking_inside_each_chart(t_atlas, seed):
         for p in seg_in:
             path = np.linspace(c.seed, p, 30)
             init = {i: t_atlas.trees[i].contacts(n) for i, n in enumerate(c.nodes)}
-            ref = wrapped_inverse_kinematics(robot, path, init)
+            ref = wrapped_inverse_kinematics(robot, path, initial=init)
             d = direct_ik(t_atlas, path, charts=[c.index])
             assert d.found.all()
             # tracking counts the winch arc from its own first pose: compare length changes
@@ -73,4 +73,4 @@ def test_direct_ik_finds_a_chart_everywhere_reachable(t_atlas):
 
 def test_iterative_ik_rejects_a_move_through_an_obstacle(t_atlas):
     with pytest.raises(PoseError):
-        iterative_ik(t_atlas, [[0.8128, -0.2032], [0.8128, 0.3]], 0)  # out of the T
+        iterative_ik(t_atlas, [[0.8128, -0.2032], [0.8128, 0.3]], chart=0)  # out of the T

@@ -39,7 +39,7 @@ def test_cra_matches_brute_force(name, start):
     checked = 0
     for robot, tree, node in _states(name, start):
         space = robot.installation_space
-        A = cable_reachable_area(tree, node, space)
+        A = cable_reachable_area(tree, node, installation_space=space)
         x0, y0, x1, y1 = Polygon(space).bounds if space else A.bounds
         P = rng.uniform([x0, y0], [x1, y1], (600, 2))
         if space:
@@ -60,7 +60,7 @@ def test_cra_of_free_cable_is_whole_space():
     tree = ik.trees[0]
     tree.circles[:-1, 2] = 0.0  # shrink the idlers to points: nothing blocks
     tree.disallowed = []
-    A = cable_reachable_area(tree, 0, robot.installation_space)
+    A = cable_reachable_area(tree, 0, installation_space=robot.installation_space)
     full = Polygon(robot.installation_space).difference(shapely.Point(robot.cables[0].exit).buffer(0.025, 256))
     assert A.symmetric_difference(full).area < 1e-6
 
@@ -99,7 +99,7 @@ def test_cra_random_circles(objects, pulley, direction):
     nodes = [0] + [int(c) for c in tree.children(0)]
     nodes += [int(g) for c in nodes[1:3] for g in tree.children(c)][:2]
     for node in nodes:
-        A = cable_reachable_area(tree, node, space)
+        A = cable_reachable_area(tree, node, installation_space=space)
         ref = np.array([tree.is_taut(node, p) for p in P])
         got = shapely.contains_xy(A, P[:, 0], P[:, 1])
         far = shapely.distance(A.boundary, shapely.points(P)) > BOUNDARY

@@ -103,10 +103,12 @@ def test_domains_follow_eq_5_15(page):
     """Q = the component of (∩_i (CRA_i − R r_i)) ∩ PRA containing the seed."""
     for c in page.charts[:6]:
         cras = [
-            shapely.affinity.translate(cable_reachable_area(t, n, page.space), *(-page.offsets[i]))
+            shapely.affinity.translate(cable_reachable_area(t, n, installation_space=page.space), *(-page.offsets[i]))
             for i, (t, n) in enumerate(zip(page.trees, c.nodes))
         ]
-        pra = platform_reachable_area(page.robot, page.theta, page.space, page.trees, c.nodes, page.offsets, 0.01, 20.0)
+        pra = platform_reachable_area(
+            page.robot, page.theta, page.space, page.trees, c.nodes, page.offsets, arc_step=0.01, reach=20.0
+        )
         sra = shapely.intersection_all(cras + [pra])
         assert c.domain.difference(sra.buffer(1e-7)).area < 1e-9
         part = [g for g in getattr(sra, "geoms", [sra]) if g.distance(shapely.Point(c.seed)) < 1e-7]
@@ -129,7 +131,7 @@ def test_direct_ik_equals_tracking_inside_each_chart(page):
         for p in [p for p in P if dom.covers(shapely.LineString([c.seed, p]))][:3]:
             path = np.linspace(c.seed, p, 30)
             init = {i: page.trees[i].contacts(n) for i, n in enumerate(c.nodes)}
-            ref = wrapped_inverse_kinematics(robot, page.poses(path), init)
+            ref = wrapped_inverse_kinematics(robot, page.poses(path), initial=init)
             d = direct_ik(page, path, charts=[c.index])
             assert d.found.all()
             assert np.abs((d.lengths - d.lengths[0]) - (ref.lengths - ref.lengths[0])).max() < 1e-9
@@ -146,7 +148,7 @@ def test_iterative_ik_equals_tracking_along_table_6_6():
     W = np.array(robot.trajectories["table-6.6"].waypoints)
     poses = np.concatenate([np.linspace(a, b, 150, endpoint=False) for a, b in zip(W[:-1], W[1:])] + [W[-1:]])
     ref = wrapped_inverse_kinematics(robot, poses)
-    it = iterative_ik(atlas, poses[:, :2], 0)
+    it = iterative_ik(atlas, poses[:, :2], chart=0)
     assert np.abs(it.lengths - ref.lengths).max() < 1e-9
     assert all(atlas.charts[c].nodes == tuple(ref.nodes[j]) for j, c in enumerate(it.charts))
     assert len(np.unique(it.charts)) >= 4

@@ -77,10 +77,10 @@ def test_a_grid_beyond_the_pose_budget_is_refused_and_the_budget_can_be_raised()
 
 def test_lengths_beyond_double_precision_are_refused():
     """Lengths of 1e9 m hang the platform 1e9 m below the exits, where doubles are 1.2e-7 m
-    apart: the DGP's eps of 1e-7 m cannot be resolved there (hours of boxes that never
+    apart: the DGP's tol of 1e-7 m cannot be resolved there (hours of boxes that never
     certify)."""
     line = taut("fk", "suspended-3cable", "--lengths=1e9,1e9,1e9", "--json").error_line()
-    assert f"{np.spacing(1e9):.2g} m apart" in line and "eps = 1e-07 m" in line
+    assert f"{np.spacing(1e9):.2g} m apart" in line and "tol = 1e-07 m" in line
 
 
 SLICE = "x=0,y=0,z=2,sigma=35deg"

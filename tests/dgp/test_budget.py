@@ -16,7 +16,7 @@ ROBOT = load_robot("suspended-3cable")
 
 def test_certifications_are_charged_to_the_box_budget():
     """Lengths of 1e9 m, two taut cables: the pose unknowns near 1e9 are 1.2e-7 apart, so
-    boxes of width ``eps`` that Krawczyk cannot prove anything in are reached all along the
+    boxes of width ``tol`` that Krawczyk cannot prove anything in are reached all along the
     solution curve, and every one is a candidate for Newton; the budget stops them all the
     same (without the charge: 20,000 boxes and thousands of certifications)."""
     sp = build_subproblem(ROBOT, np.full(3, 1e9), (0, 1))
@@ -45,8 +45,8 @@ def test_certifications_are_charged_to_the_box_budget():
 
 @pytest.mark.parametrize("length", [1e9, 2e5])
 def test_lengths_double_precision_cannot_resolve_are_refused(length):
-    with pytest.raises(TautError, match=r"cannot resolve eps = 1e-07 m .* up to 1\.1e\+05 m"):
+    with pytest.raises(TautError, match=r"cannot resolve tol = 1e-07 m .* up to 1\.1e\+05 m"):
         solve_dgp(ROBOT, np.full(3, length))
-    # the limit is relative to eps: 2**40 eps
-    with pytest.raises(TautError, match=r"eps = 1e-12 m there \(it takes coordinates up to 1\.1 m\)"):
-        solve_dgp(ROBOT, np.full(3, 10.0), eps=1e-12)
+    # the limit is relative to tol: 2**40 tol
+    with pytest.raises(TautError, match=r"tol = 1e-12 m there \(it takes coordinates up to 1\.1 m\)"):
+        solve_dgp(ROBOT, np.full(3, 10.0), tol=1e-12)

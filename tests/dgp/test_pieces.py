@@ -5,7 +5,7 @@ Berti (2015) lies in one of them."""
 import numpy as np
 import pytest
 
-from taut.dgp import solve_dgp
+from taut.dgp import MAX_BOXES, solve_dgp
 from taut.dgp._formulation import build_subproblem
 from taut.dgp._solve import PREPARED_SIZE, domain_pieces, prepared_subproblem, solve_piece
 from taut.errors import TautError
@@ -74,6 +74,6 @@ def test_a_box_that_reached_eps_beside_a_solution_certified_later_is_not_undecid
     solution (1.5e-8 from it, not holding it) reaches eps before the solution is certified;
     it lies in the solution's uniqueness box, so it holds no other solution."""
     robot = load_robot("teaching-prototype")
-    job = (robot, np.array(robot.reference.lengths), (1, 4, 5), 1e-7, 4, 14, None, True)
+    job = (robot, np.array(robot.reference.lengths), (1, 4, 5), 1e-7, 4, 14, MAX_BOXES, True)
     sols, certs, undecided, boxes = solve_piece(job)
     assert undecided == [] and len(certs) <= 1 and boxes > 0

@@ -50,7 +50,7 @@ def test_each_row_is_certified_from_the_printed_values_with_its_stability(pose, 
 
 def test_no_equilibrium_with_one_or_two_taut_cables():
     res = solve_dgp(ROBOT, max_taut=2)
-    assert res.subproblems == 6 and res.solutions == [] and res.undecided == 0
+    assert res.subproblems == 6 and res.solutions == () and res.undecided == 0
 
 
 @pytest.mark.slow

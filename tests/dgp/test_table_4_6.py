@@ -41,7 +41,7 @@ def test_table_4_6_six_taut_cables():
 
 def test_table_4_6_no_equilibrium_with_one_or_two_taut_cables():
     res = solve_dgp(ROBOT, max_taut=2)  # the table's rows all have 3 to 6 taut cables
-    assert res.subproblems == 21 and res.undecided == 0 and res.solutions == []
+    assert res.subproblems == 21 and res.undecided == 0 and res.solutions == ()
 
 
 #: the tolerances of the module docstring

@@ -6,7 +6,7 @@ import pytest
 
 from taut.dgp._formulation import build_subproblem, load
 from taut.dgp._solve import DGPSolution
-from taut.dgp._tracking import track, track_path
+from taut.dgp._tracking import track_equilibrium, track_path
 from taut.errors import TautError, TrackingLostError
 from taut.geometry import rotation_matrix
 from taut.interval import certify
@@ -75,21 +75,21 @@ def test_a_cable_going_slack_switches_sub_problem_and_back(start):
 
 def test_single_track_step_matches_track_path(start):
     lengths = LENGTHS + 0.001 * DIRECTION
-    one = track(ROBOT, start, lengths)
+    one = track_equilibrium(ROBOT, start, lengths)
     _assert_equilibrium(one, lengths)
     assert np.allclose(one.position, track_path(ROBOT, start, [lengths])[0].position, atol=1e-12)
 
 
 def test_lengths_no_pose_fits_lose_tracking(start):
     with pytest.raises(TrackingLostError, match="Krawczyk|Newton|cycles"):
-        track(ROBOT, start, 0.3 * LENGTHS)  # cables 1 and 2 together shorter than their 10 m gap
+        track_equilibrium(ROBOT, start, 0.3 * LENGTHS)  # cables 1 and 2 together shorter than their 10 m gap
 
 
 def test_bad_lengths(start):
     with pytest.raises(TautError):
-        track(ROBOT, start, LENGTHS[:2])
+        track_equilibrium(ROBOT, start, LENGTHS[:2])
     with pytest.raises(TautError):
-        track(ROBOT, start, [1.0, -1.0, 1.0])
+        track_equilibrium(ROBOT, start, [1.0, -1.0, 1.0])
     assert track_path(ROBOT, start, []) == []
     for bad in ([LENGTHS, LENGTHS[:2]], [LENGTHS[:2], LENGTHS[:2]], [LENGTHS, [1.0, np.nan, 1.0]], LENGTHS):
         with pytest.raises(TautError, match="cables|lengths|table"):

@@ -316,11 +316,11 @@ def test_analyses_that_do_not_model_pulleys_refuse_them() -> None:
         solve_dgp(robot, [1.0, 1.0, 1.0])
     with pytest.raises(UnsupportedRobotError, match="inverse geometrico-static"):
         solve_igp(robot, [0, 1, 2], {})
-    from taut.dgp import DGPSolution, track
+    from taut.dgp import DGPSolution, track_equilibrium
 
     previous = DGPSolution((0, 1, 2), np.zeros(3), np.zeros(3), np.ones(3), True, 0.0, 0.0)
     with pytest.raises(UnsupportedRobotError, match="tracking"):
-        track(robot, previous, [1.0, 1.0, 1.0])
+        track_equilibrium(robot, previous, [1.0, 1.0, 1.0])
 
 
 @pytest.mark.parametrize(

@@ -322,7 +322,7 @@ def test_robot_trajectory_reads_the_file_once_for_every_user():
     assert trajectory_from_robot(robot, "moved").duration == pytest.approx(2 * 1.0 + math.sqrt(2) / 0.5)
     agri = robot_trajectory(AGRICULTURE, "table-6.2")
     t, P = builtin_trajectory(AGRICULTURE, "table-6.2", speed=0.2)
-    t2, P2 = timed_moves(agri.waypoints, 0.2, agri.dwell, 0.01)
+    t2, P2 = timed_moves(agri.waypoints, speed=0.2, dwell=agri.dwell, dt=0.01)
     assert np.array_equal(t, t2) and np.array_equal(P, P2) and np.allclose(P[-1], agri.waypoints[-1])
     moves = np.linalg.norm(np.diff(agri.waypoints, axis=0), axis=1).sum() / 0.2
     assert t[-1] == pytest.approx(moves + len(agri.waypoints) * agri.dwell)

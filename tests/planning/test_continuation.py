@@ -93,7 +93,7 @@ def test_polytope_cuts_give_the_vertices_of_the_intersection(k, cuts):
 
 
 def test_circle_atlas_spacing():
-    a = Atlas(CIRCLE, [1.0, 0.0], 0.1)
+    a = Atlas(CIRCLE, [1.0, 0.0], radius=0.1)
     assert a.complete()
     n = len(a.charts)
     assert 0.95 * 2 * np.pi / 0.1 <= n <= 1.2 * 2 * np.pi / 0.1  # one chart per step r
@@ -113,7 +113,7 @@ def test_circle_atlas_spacing():
 )
 def test_complete_atlas_covers_the_surface(manifold, x0, points, area, factor):
     r = 0.2
-    a = Atlas(manifold, x0, r)
+    a = Atlas(manifold, x0, radius=r)
     assert a.complete()
     assert all(abs(manifold.function(c)[0]) < 1e-9 for c in a.centres)  # centres on M
     assert not any(c.frontier for c in a.charts)
@@ -126,7 +126,7 @@ def test_complete_atlas_covers_the_surface(manifold, x0, points, area, factor):
 
 
 def test_sphere_antipodes_path_close_to_geodesic():
-    res = plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], 0.2)
+    res = plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], radius=0.2)
     assert res.found
     assert np.allclose(res.path[0], [0, 0, 1]) and np.allclose(res.path[-1], [0, 0, -1])
     assert np.allclose(np.linalg.norm(res.path, axis=1), 1, atol=1e-9)
@@ -136,7 +136,7 @@ def test_sphere_antipodes_path_close_to_geodesic():
 
 def test_torus_path_around_the_hole_and_over_the_tube():
     start, goal = [R0 + R1, 0, 0], [-(R0 - R1), 0, 0]  # outer equator → inner equator, opposite side
-    res = plan_path(TORUS, start, goal, 0.1)
+    res = plan_path(TORUS, start, goal, radius=0.1)
     assert res.found
     assert np.abs([_torus_f(p)[0] for p in res.path]).max() < 1e-9
     # geodesic ≥ the planar distance, and the path cannot cross the hole
@@ -150,7 +150,7 @@ def test_boxed_component_gives_no_path_with_exhaustion():
     box = ImplicitManifold(
         SPHERE.function, SPHERE.jacobian, 2, lower=np.array([-2, -2, 0.5]), upper=np.array([2, 2, 2])
     )
-    res = plan_path(box, [0, 0, 1.0], [0, 0, -1.0], 0.2)
+    res = plan_path(box, [0, 0, 1.0], [0, 0, -1.0], radius=0.2)
     assert not res.found and res.exhausted and res.charts > 5
     assert res.atlas.centres[:, 2].min() > 0.5 - 0.2
 
@@ -160,24 +160,26 @@ def test_the_chart_budget_stops_a_search_within_an_expansion():
     atlas stops at the budget exactly, the chart being grown stays open, and the answer is
     no path, without a proof."""
     for budget in (3, 9):
-        res = plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], 0.2, max_charts=budget)
+        res = plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], radius=0.2, max_charts=budget)
         assert res.charts == budget and not res.found and not res.exhausted
         assert sum(c.expanded for c in res.atlas.charts) == res.expanded < budget
-    a = Atlas(SPHERE, [0, 0, 1.0], 0.2)
+    a = Atlas(SPHERE, [0, 0, 1.0], radius=0.2)
     assert a.grow(0, max_charts=4) == [1, 2, 3] and not a.charts[0].expanded
     assert a.grow(0) == [4] and a.charts[0].expanded  # grown again, the chart closes
     with pytest.raises(TautError, match="max_charts"):
-        plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], 0.2, max_charts=1)
+        plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], radius=0.2, max_charts=1)
 
 
 def test_start_off_manifold_is_rejected():
     with pytest.raises(TautError):
-        Atlas(SPHERE, [0, 0, 2.0], 0.2)
+        Atlas(SPHERE, [0, 0, 2.0], radius=0.2)
 
 
 def test_progress_counts_the_charts_expanded():
     calls = []
-    res = plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], 0.2, progress=lambda done, total: calls.append((done, total)))
+    res = plan_path(
+        SPHERE, [0, 0, 1.0], [0, 0, -1.0], radius=0.2, progress=lambda done, total: calls.append((done, total))
+    )
     assert res.found and res.expanded > 1
     assert calls == [(k, None) for k in range(1, res.expanded + 1)] + [(res.expanded, res.expanded)]
 

@@ -90,7 +90,7 @@ def test_robocrane_q1_q2_path_is_wrench_feasible_where_the_straight_line_is_not(
     M = WrenchFeasibleManifold.from_robot(ROBOT, fixed=SLICE)
     straight = verify_path(ROBOT, np.array([POSES["q1"], POSES["q2"]]), subdivide=50)
     assert not straight.all_feasible
-    res = plan_path(M.implicit(), M.lift(POSES["q1"]), M.lift(POSES["q2"]), 0.2, metric=M.pose_metric)
+    res = plan_path(M.implicit(), M.lift(POSES["q1"]), M.lift(POSES["q2"]), radius=0.2, metric=M.pose_metric)
     assert res.found and res.charts < 1000
     q = M.pose(res.path)
     # the path may end at other angles of the same orientation (here through θ = 0)
@@ -112,7 +112,7 @@ def test_continuation_on_the_full_six_dimensional_c_space():
     M = WrenchFeasibleManifold.from_robot(robot)
     manifold = M.implicit()
     assert manifold.dim == 6
-    atlas = Atlas(manifold, M.lift(np.asarray(robot.reference.poses["q1"])), 0.2, metric=M.pose_metric)
+    atlas = Atlas(manifold, M.lift(np.asarray(robot.reference.poses["q1"])), radius=0.2, metric=M.pose_metric)
     atlas.grow(0)
     assert len(atlas.charts) >= 1 + 2 * 6
     residual = max(np.linalg.norm(manifold.function(c)) for c in atlas.centres)

@@ -130,7 +130,11 @@ def test_atlas_of_a_slice_completes_and_proves_that_no_path_exists():
     assert comp(-0.5, 0.9) == comp(2.0, 0.9) != comp(*start)  # q1, q2: one component
     M = WrenchFeasibleManifold.from_robot(ROBOT, fixed=SLICE)
     res = plan_path(
-        M.implicit(), M.lift([0, 0, 2, *start, SIGMA]), M.lift([0, 0, 2, *goal, SIGMA]), 0.3, metric=M.pose_metric
+        M.implicit(),
+        M.lift([0, 0, 2, *start, SIGMA]),
+        M.lift([0, 0, 2, *goal, SIGMA]),
+        radius=0.3,
+        metric=M.pose_metric,
     )
     assert not res.found and res.exhausted and res.expanded == res.charts
     poses = M.pose(res.atlas.centres)
@@ -140,7 +144,7 @@ def test_atlas_of_a_slice_completes_and_proves_that_no_path_exists():
 
 def _plan_and_verify(fixed, q_start, q_goal, radius):
     M = WrenchFeasibleManifold.from_robot(ROBOT, fixed=fixed)
-    res = plan_path(M.implicit(), M.lift(q_start), M.lift(q_goal), radius, metric=M.pose_metric)
+    res = plan_path(M.implicit(), M.lift(q_start), M.lift(q_goal), radius=radius, metric=M.pose_metric)
     assert res.found
     poses = M.pose(res.path)
     np.testing.assert_allclose(poses[0], q_start, atol=1e-9)

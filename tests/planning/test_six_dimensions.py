@@ -10,7 +10,7 @@ import pytest
 
 from taut.kinematics import platform_frame
 from taut.model import load_robot, save_robot
-from taut.planning import atlas_rrt
+from taut.planning import plan_path
 from taut.planning._manifold import WrenchFeasibleManifold
 from taut.planning._verify import verify_path
 
@@ -43,7 +43,16 @@ def test_six_dimensional_query(robot, start, goal):
     assert M.dim == 6
     # the straight line leaves the wrench-feasible C-space: the query is not trivial
     assert not verify_path(robot, np.array([start, goal]), subdivide=50).all_feasible
-    res = atlas_rrt(M.implicit(), M.lift(start), M.lift(goal), 0.4, metric=M.pose_metric, seed=0, max_nodes=3000)
+    res = plan_path(
+        M.implicit(),
+        M.lift(start),
+        M.lift(goal),
+        method="atlasrrt",
+        radius=0.4,
+        metric=M.pose_metric,
+        seed=0,
+        max_nodes=3000,
+    )
     assert res.found and res.charts >= 2
     poses = M.pose(res.path)
     assert same_pose(robot, poses[0], start) and same_pose(robot, poses[-1], goal)

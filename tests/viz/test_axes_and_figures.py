@@ -102,7 +102,7 @@ def data() -> dict[str, Any]:
     q1, q2 = (np.array(robocrane.reference.poses[k]) for k in ("q1", "q2"))
     M = WrenchFeasibleManifold.from_robot(robocrane, fixed=dict(x=0.0, y=0.0, z=2.0, sigma=float(q1[5])))
     out["manifold"] = M
-    out["plan"] = plan_path(M.implicit(), M.lift(q1), M.lift(q2), 0.2, metric=M.pose_metric)
+    out["plan"] = plan_path(M.implicit(), M.lift(q1), M.lift(q2), radius=0.2, metric=M.pose_metric)
     out["plan_grid"] = slice_map(M, q1, resolution=(8, 5))
     return out
 
@@ -260,7 +260,11 @@ def test_plot_plan_on_a_slice_with_a_free_position_coordinate():
     robocrane = example("robocrane")
     M = WrenchFeasibleManifold.from_robot(robocrane, fixed=dict(y=0.0, z=2.0, theta=0.6, sigma=0.6))
     res = plan_path(
-        M.implicit(), M.lift([0, 0, 2, 0.3, 0.6, 0.6]), M.lift([0.1, 0, 2, 0.3, 0.6, 0.6]), 0.2, metric=M.pose_metric
+        M.implicit(),
+        M.lift([0, 0, 2, 0.3, 0.6, 0.6]),
+        M.lift([0.1, 0, 2, 0.3, 0.6, 0.6]),
+        radius=0.2,
+        metric=M.pose_metric,
     )
     assert res.found
     start = M.pose(res.path[0])

@@ -11,7 +11,7 @@ import pytest
 
 from taut.geometry import segment_enters_polygon
 from taut.wrapping._tree import DIR, EX, EY, OBJ, PARENT, UX, UY, CableStateTree
-from taut.wrapping._update import track
+from taut.wrapping._update import track_cable_state
 
 SQUARE = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]])  # A, B, C, D (ccw)
 A, B = 0, 1
@@ -72,11 +72,11 @@ def test_unwrapping_a_corner_does_not_rewrap_it_the_other_way(samples):
     P = np.linspace([2.5, -1.3], [2.0, -5.0], samples)
     n0 = tree.shortest_taut_state(P[0])
     assert tree.contacts(n0) == ((A, 1),)
-    tr = track(tree, P, n0)
+    tr = track_cable_state(tree, P, node=n0)
     assert tr.events[:, 2].tolist() == [2]  # one unwrap, nothing else
     assert tree.contacts(int(tr.nodes[-1])) == ()
     _check_physical(tree, P, tr, n0)
-    back = track(tree, P[::-1], int(tr.nodes[-1]))
+    back = track_cable_state(tree, P[::-1], node=int(tr.nodes[-1]))
     assert back.nodes[-1] == n0
     assert back.events[:, 2].tolist() == [1]
     np.testing.assert_allclose(back.lengths, tr.lengths[::-1], atol=1e-9)
@@ -88,11 +88,11 @@ def test_sweep_around_two_corners_and_back(samples):
     P = np.linspace([-0.5, -3.0], [3.0, -0.3], samples)
     n0 = tree.shortest_taut_state(P[0])
     assert tree.contacts(n0) == ()
-    tr = track(tree, P, n0)
+    tr = track_cable_state(tree, P, node=n0)
     assert [(int(k), tree.contacts(int(n))[-1]) for _, _, k, n in tr.events] == [(1, (A, 1)), (1, (B, 1))]
     assert tree.contacts(int(tr.nodes[-1])) == ((A, 1), (B, 1))
     _check_physical(tree, P, tr, n0)
-    back = track(tree, P[::-1], int(tr.nodes[-1]))
+    back = track_cable_state(tree, P[::-1], node=int(tr.nodes[-1]))
     assert [(int(k), tree.contacts(int(n))[-1]) for _, _, k, n in back.events] == [(2, (B, 1)), (2, (A, 1))]
     assert back.nodes[-1] == n0
     _check_physical(tree, P[::-1], back, int(tr.nodes[-1]))
@@ -112,8 +112,8 @@ def test_random_straight_moves_below_the_square():
         tree = _tree()
         P = np.linspace(b0, b1, int(rng.integers(2, 30)))
         n0 = tree.shortest_taut_state(P[0])
-        tr = track(tree, P, n0)
+        tr = track_cable_state(tree, P, node=n0)
         _check_physical(tree, P, tr, n0)
-        back = track(tree, P[::-1], int(tr.nodes[-1]))
+        back = track_cable_state(tree, P[::-1], node=int(tr.nodes[-1]))
         assert back.nodes[-1] == n0
         done += 1

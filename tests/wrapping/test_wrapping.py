@@ -11,7 +11,7 @@ from taut.model import example
 from taut.wrapping._state import CableState, rebuild_path
 from taut.wrapping._trajectory import builtin_trajectory, run_trajectory
 from taut.wrapping._tree import CableStateTree
-from taut.wrapping._update import track, update_state
+from taut.wrapping._update import track_cable_state, update_state
 
 VSCR = ["vscr-single-cable", "vscr-four-cable", "vscr-agriculture", "vscr-rehabilitation", "vscr-t-shaped"]
 
@@ -83,7 +83,7 @@ def test_idlers_keep_cables_out_of_the_protected_regions(runs, name):
 def test_reversing_the_trajectory_returns_every_cable_to_its_initial_state(runs, name):
     r, t, P, res = runs[name]
     for i, tree in enumerate(res.ik.trees):
-        back = track(tree, res.ik.anchors[::-1, i], int(res.ik.nodes[-1, i]))
+        back = track_cable_state(tree, res.ik.anchors[::-1, i], node=int(res.ik.nodes[-1, i]))
         assert back.nodes[-1] == res.ik.nodes[0, i]
         assert np.allclose(back.lengths[::-1], res.lengths[:, i], atol=1e-12)
         assert np.array_equal(back.nodes[::-1], res.ik.nodes[:, i])
@@ -94,7 +94,7 @@ def test_single_cable_wraps_the_three_objects_in_turn():
     tree = _single_tree()
     t = np.linspace(0, 4, 401)
     P = np.column_stack([t, 1 + np.cos(2 * np.pi * t / 3)])
-    tr = track(tree, P, tree.shortest_taut_state(P[0]))
+    tr = track_cable_state(tree, P, node=tree.shortest_taut_state(P[0]))
     assert tree.contacts(int(tr.nodes[0])) == ()
     assert tree.contacts(int(tr.nodes[-1])) == ((0, -1), (1, 1), (2, -1))
     assert tr.events[:, 2].tolist() == [1, 1, 1]
@@ -132,8 +132,8 @@ def test_lazy_expansion_matches_the_full_tree():
     assert n > 10
     t = np.linspace(0, 4, 201)
     P = np.column_stack([t, 1 + np.cos(2 * np.pi * t / 3)])
-    a = track(full, P, 0)
-    b = track(lazy, P, 0)
+    a = track_cable_state(full, P, node=0)
+    b = track_cable_state(lazy, P, node=0)
     assert lazy.size < n
     assert [full.contacts(int(k)) for k in a.nodes] == [lazy.contacts(int(k)) for k in b.nodes]
     assert np.allclose(a.lengths, b.lengths)
@@ -146,7 +146,7 @@ def test_tree_rejects_blocked_and_disallowed_segments():
     assert {int(tree.I[c, 1]) for c in tree.children(0)} == {1}
     poly = np.array([[0.4, -0.5], [0.6, -0.5], [0.6, 0.5], [0.4, 0.5]])
     assert tree.children(0).size == 2
-    assert CableStateTree(circ, 1, [poly]).children(0).size == 0
+    assert CableStateTree(circ, 1, disallowed=[poly]).children(0).size == 0
 
 
 @settings(max_examples=40, deadline=None)
@@ -160,10 +160,10 @@ def test_random_walks_stay_continuous_and_reversible(points):
     )
     if through.any():  # the platform end may not pass through an object
         return
-    tr = track(tree, P, 0)
+    tr = track_cable_state(tree, P, node=0)
     db = np.linalg.norm(np.diff(P, axis=0), axis=1)
     assert (np.abs(np.diff(tr.lengths)) <= db + 1e-9).all()
-    back = track(tree, P[::-1], int(tr.nodes[-1]))
+    back = track_cable_state(tree, P[::-1], node=int(tr.nodes[-1]))
     assert back.nodes[-1] == 0
     for k in tr.nodes:
         path = rebuild_path(tree.circles, 1, CableState(tree.contacts(int(k))), P[0])

@@ -17,7 +17,7 @@ from taut._lazy import lazy_exports
 
 if TYPE_CHECKING:
     from taut.atlas._atlas import Edge, StructureAtlas, build_atlas
-    from taut.atlas._chart import Chart, chart_lengths, structure_reachable_area
+    from taut.atlas._chart import StructureChart, chart_lengths, structure_reachable_area
     from taut.atlas._ik import AtlasIK, direct_ik, iterative_ik, iterative_step, locate
     from taut.atlas._platform import platform_outline, platform_reachable_area
     from taut.atlas._reachable import cable_reachable_area
@@ -28,7 +28,7 @@ _LAZY = {
     "Edge": "taut.atlas._atlas",
     "StructureAtlas": "taut.atlas._atlas",
     "build_atlas": "taut.atlas._atlas",
-    "Chart": "taut.atlas._chart",
+    "StructureChart": "taut.atlas._chart",
     "chart_lengths": "taut.atlas._chart",
     "structure_reachable_area": "taut.atlas._chart",
     "AtlasIK": "taut.atlas._ik",
@@ -46,9 +46,9 @@ _LAZY = {
 __all__ = [
     "AtlasIK",
     "AtlasWorkspace",
-    "Chart",
     "Edge",
     "StructureAtlas",
+    "StructureChart",
     "atlas_workspace",
     "build_atlas",
     "cable_reachable_area",

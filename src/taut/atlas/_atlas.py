@@ -38,8 +38,9 @@ References
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -47,7 +48,9 @@ import numpy.typing as npt
 import shapely
 from shapely.geometry import LineString, MultiPolygon, Polygon
 
-from taut.atlas._chart import Chart, chart_lengths, component_containing, structure_reachable_area
+from taut._checks import as_array, as_count, as_number
+from taut._results import Result, jsonable
+from taut.atlas._chart import StructureChart, chart_lengths, component_containing, structure_reachable_area
 from taut.atlas._platform import fixed_collision_region, platform_outline, rotation, structure_collision_region
 from taut.atlas._reachable import ARC_STEP, cable_reachable_area
 from taut.errors import PoseError, TautError
@@ -62,16 +65,47 @@ if TYPE_CHECKING:
 PROBE = 1e-6
 #: Shortest traversable edge [m] considered.
 MIN_EDGE = 1e-6
-#: Most charts built before giving up.
+#: The chart budget of :func:`build_atlas` when none is given: every chart holds the
+#: polygons of its structure, so the budget bounds memory as well as time.
 MAX_CHARTS = 5000
 
 
-@dataclass
-class Edge:
-    """An adjacency of two charts: crossing ``segment`` (the traversable edge, on the
-    boundary of ``charts[0]``'s domain) changes the state of ``cable`` (0-based) by a
-    ``kind`` ("wrap" or "unwrap") about ``obj`` (0-based object index; the winch is the
-    last one)."""
+@dataclass(frozen=True)
+class Edge(Result):
+    """An adjacency of two charts: crossing its segment changes one cable's state (§5.1.3).
+
+    Attributes
+    ----------
+    charts : (int, int)
+        The chart whose domain the segment bounds, and the chart across it.
+    cable : int
+        The cable whose state changes (0-based).
+    kind : str
+        ``"wrap"`` or ``"unwrap"``.
+    obj : int
+        The object wrapped or unwrapped (0-based; the winch is the last one).
+    segment : ndarray, shape (2, 2)
+        End points [m] of the traversable edge.
+    normal : ndarray, shape (2,)
+        Unit normal of the edge pointing into ``charts[1]``.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.1.2–5.1.3. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.atlas import build_atlas
+    >>> from taut.model import example
+    >>> robot = example("vscr-t-shaped")
+    >>> start = robot.reference.poses["initial"]
+    >>> atlas = build_atlas(robot, start)
+    >>> e = atlas.edges[0]
+    >>> e.charts, e.cable, e.kind, e.obj
+    ((0, 1), 2, 'wrap', 0)
+    """
 
     charts: tuple[int, int]
     cable: int
@@ -80,20 +114,71 @@ class Edge:
     segment: np.ndarray  #: (2, 2) end points of the shared edge
     normal: np.ndarray  #: (2,) unit normal of the edge pointing into ``charts[1]``
 
+    def as_dict(self) -> dict:
+        """The edge as ``taut atlas --out`` writes it, 0-based: ``charts``, ``cable``,
+        ``kind``, ``object`` and ``segment``."""
+        return {
+            "charts": list(self.charts),
+            "cable": self.cable,
+            "kind": self.kind,
+            "object": self.obj,
+            "segment": jsonable(self.segment),
+        }
 
-@dataclass
-class StructureAtlas:
-    """The structure atlas (SA) of a planar VSCR — for a rigid platform one page, at
-    orientation ``theta`` (§5.2.2): charts and their adjacency."""
+
+@dataclass(frozen=True)
+class StructureAtlas(Result):
+    """The structure atlas of a planar VSCR — for a rigid platform one page, at orientation
+    ``theta`` (§5.2.2): charts and their adjacency (:func:`build_atlas`).
+
+    Attributes
+    ----------
+    robot : Robot
+    trees : tuple of CableStateTree
+        Each cable's state tree (the charts' ``nodes`` index them).
+    space : shapely.Polygon
+        The installation space (or a box around the robot).
+    charts : tuple of StructureChart
+    edges : tuple of Edge
+    start : ndarray, shape (2,)
+        The start point [m].
+    theta : float
+        Platform orientation [rad] of the page (0 for a point mass).
+    offsets : ndarray, shape (n, 2)
+        Anchor offsets ``R(θ) r_i`` [m].
+    complete : bool
+        Every chart reachable from the start is built (the chart budget did not run out).
+    elapsed_s : float
+        Wall-clock time [s].
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.1.3, Alg. 5.1; §5.2.2. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.atlas import build_atlas
+    >>> from taut.model import example
+    >>> robot = example("vscr-t-shaped")
+    >>> start = robot.reference.poses["initial"]
+    >>> atlas = build_atlas(robot, start)
+    >>> len(atlas.charts), atlas.n_edges, atlas.complete, round(atlas.reachable_area().area, 4)
+    (31, 44, True, 0.9012)
+    """
 
     robot: Robot
-    trees: list[CableStateTree] = field(repr=False)
+    trees: tuple[CableStateTree, ...] = field(repr=False)
     space: Polygon = field(repr=False)  #: the installation space (or a box around the robot)
-    charts: list[Chart]
-    edges: list[Edge]
+    charts: tuple[StructureChart, ...]
+    edges: tuple[Edge, ...]
     start: np.ndarray
-    theta: float = 0.0  #: platform orientation of the page (0 for a point mass)
-    offsets: np.ndarray | None = field(default=None, repr=False)  #: ``(n, 2)`` anchor offsets ``R(θ) r_i``
+    theta: float  #: platform orientation of the page (0 for a point mass)
+    offsets: np.ndarray = field(repr=False)  #: ``(n, 2)`` anchor offsets ``R(θ) r_i``
+    #: every chart reachable from the start is built (the chart budget did not run out)
+    complete: bool
+    elapsed_s: float
 
     def poses(self, points: npt.ArrayLike) -> np.ndarray:
         """Robot poses at reference points ``(N, 2)``: ``(x, y)``, or ``(x, y, θ)`` for a
@@ -114,14 +199,31 @@ class StructureAtlas:
 
     def lengths(self, chart: int, points: npt.ArrayLike) -> np.ndarray:
         """Cable lengths ``(N, n)`` at ``points`` in chart ``chart`` (Eq. 4.9)."""
-        return chart_lengths(self.trees, self.charts[chart].nodes, points, self.offsets)[0]
+        return chart_lengths(self.trees, self.charts[chart].nodes, points, offsets=self.offsets)[0]
+
+    def as_dict(self) -> dict:
+        """The atlas as ``taut atlas --json --out`` prints it, with 0-based charts, cables
+        and objects: ``start``, ``theta``, ``complete``, ``elapsed_s``, ``charts`` and
+        ``edges`` (their numbers), ``reachable_area``, ``chart_list``
+        (:meth:`StructureChart.as_dict`) and ``edge_list`` (:meth:`Edge.as_dict`)."""
+        return {
+            "start": jsonable(self.start),
+            "theta": float(self.theta),
+            "complete": self.complete,
+            "elapsed_s": self.elapsed_s,
+            "charts": len(self.charts),
+            "edges": self.n_edges,
+            "reachable_area": float(self.reachable_area().area),
+            "chart_list": [c.as_dict() for c in self.charts],
+            "edge_list": [e.as_dict() for e in self.edges],
+        }
 
 
 class _Builder:
     def __init__(
         self,
         robot: Robot,
-        trees: list[CableStateTree],
+        trees: Sequence[CableStateTree],
         space: Polygon,
         arc_step: float,
         theta: float,
@@ -129,6 +231,7 @@ class _Builder:
     ) -> None:
         self.robot, self.trees, self.space, self.arc_step = robot, trees, space, arc_step
         self.offsets = offsets
+        self.full = False  #: the chart budget ran out
         self.cra: dict[tuple[int, int], Polygon | MultiPolygon] = {}
         self.sra: dict[tuple[int, ...], Polygon | MultiPolygon] = {}
         x0, y0, x1, y1 = space.bounds
@@ -139,7 +242,9 @@ class _Builder:
     def cable_area(self, i: int, node: int) -> Polygon | MultiPolygon:
         key = (i, node)
         if key not in self.cra:
-            self.cra[key] = cable_reachable_area(self.trees[i], node, self.space, self.arc_step)
+            self.cra[key] = cable_reachable_area(
+                self.trees[i], node, installation_space=self.space, arc_step=self.arc_step
+            )
         return self.cra[key]
 
     def area(self, nodes: tuple[int, ...]) -> Polygon | MultiPolygon:
@@ -149,7 +254,7 @@ class _Builder:
                 H = structure_collision_region(self.outline, self.trees, nodes, self.offsets, self.arc_step, self.reach)
                 pra = self.space.difference(shapely.union_all([self.fixed, H]))
             self.sra[nodes] = structure_reachable_area(
-                [self.cable_area(i, n) for i, n in enumerate(nodes)], self.offsets, pra
+                [self.cable_area(i, n) for i, n in enumerate(nodes)], offsets=self.offsets, pra=pra
             )
         return self.sra[nodes]
 
@@ -184,33 +289,79 @@ def _edge_pieces(domain: Polygon, e: np.ndarray, u: np.ndarray, reach: float) ->
 def build_atlas(
     robot: Robot,
     start: npt.ArrayLike,
+    *,
+    theta: float = 0.0,
     initial: Mapping[int, Sequence[tuple[int, int]]] | None = None,
     arc_step: float = ARC_STEP,
     max_charts: int = MAX_CHARTS,
-    theta: float = 0.0,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> StructureAtlas:
-    """The structure atlas of a planar VSCR from the start point ``start`` (Alg. 5.1) —
-    for a rigid platform the page of orientation ``theta`` (§5.2.2), ``start`` being the
-    platform reference point.  ``initial`` maps a 0-based cable index to its starting
-    state (see :func:`taut.wrapping.wrapped_inverse_kinematics`).
-    ``progress(expanded, None)`` is called as charts are expanded (how many there are is
-    not known in advance) and ``progress(charts, charts)`` at the end.
+    """The structure atlas of a planar variable-structure robot (Alg. 5.1): the charts
+    reachable from a start point — for a rigid platform, the page of one orientation
+    (§5.2.2).
+
+    Parameters
+    ----------
+    robot : Robot
+        A planar robot without joints.
+    start : array_like, shape (2,)
+        The start point [m] (the platform reference point of a rigid platform).
+    theta : float, optional
+        Orientation [rad] of the page of a rigid platform (0 for a point mass).
+    initial : mapping of int to sequence of (int, int), optional
+        0-based cable index → its starting state (see
+        :func:`taut.wrapping.wrapped_inverse_kinematics`).
+    arc_step : float, optional
+        Angular step [rad] of the chords of circular arcs in the reachable areas.
+    max_charts : int, optional
+        Chart budget (default :data:`MAX_CHARTS`): when it runs out the atlas is returned
+        with ``complete`` false.
+    progress : callable, optional
+        ``progress(expanded, None)`` as charts are expanded (how many there are is not
+        known in advance) and ``progress(expanded, expanded)`` at the end.
+
+    Returns
+    -------
+    StructureAtlas
+
+    Raises
+    ------
+    PoseError
+        A start point or orientation that is not finite, outside the installation space or
+        not in the reachable area of its structure.
+    TautError
+        A spatial or jointed robot, or bad options.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §5.1.3, Alg. 5.1; §5.2.2. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    The T-shaped robot of §6.3 from its initial point; a budget of 3 charts stops early.
+
+    >>> import numpy as np
+    >>> from taut.atlas import build_atlas
+    >>> from taut.model import example
+    >>> robot = example("vscr-t-shaped")
+    >>> start = robot.reference.poses["initial"]
+    >>> atlas = build_atlas(robot, start)
+    >>> len(atlas.charts), atlas.complete
+    (31, True)
+    >>> build_atlas(robot, start, max_charts=3).complete
+    False
     """
-    theta = float(theta)
-    if not np.isfinite(theta):
-        raise PoseError(f"{robot.name}: the orientation must be finite, got {theta}")
+    t0 = time.perf_counter()
+    theta = as_number(theta, f"{robot.name}: the orientation theta", error=PoseError)
+    max_charts = as_count(max_charts, "max_charts")
+    arc_step = as_number(arc_step, "arc_step", positive=True)
     if robot.is_point_mass and theta != 0.0:
         raise PoseError(f"{robot.name}: a point-mass platform has no orientation (theta must be 0)")
     refuse_swivels(robot, "the structure atlas")
     if not robot.is_point_mass and (robot.dimension != 2 or robot.n_joints):
         raise TautError(f"{robot.name}: the structure atlas is implemented for planar platforms without joints")
-    p0 = np.asarray(start, float).reshape(-1)
+    p0 = as_array(start, f"{robot.name}: the start point", finite=False, error=PoseError).reshape(-1)
     if p0.shape != (2,) or not np.isfinite(p0).all():
         raise PoseError(f"{robot.name}: the start point must be 2 finite coordinates, got {list(np.ravel(start))}")
     offsets = (
@@ -222,7 +373,7 @@ def build_atlas(
     if space is not None and not space.covers(shapely.Point(p0)):
         raise PoseError(f"{robot.name}: the start point {p0.tolist()} is outside the installation space")
     pose0 = p0[None] if robot.is_point_mass else np.array([[p0[0], p0[1], theta]])
-    ik = wrapped_inverse_kinematics(robot, pose0, initial)
+    ik = wrapped_inverse_kinematics(robot, pose0, initial=initial)
     if space is None:  # the box of the exits, the objects and the start, grown by half its size
         x0, y0, x1, y1 = _objects_bounds(ik.trees)
         x0, y0, x1, y1 = min(x0, p0[0]), min(y0, p0[1]), max(x1, p0[0]), max(y1, p0[1])
@@ -236,8 +387,9 @@ def build_atlas(
             f"{robot.name}: the start point {p0.tolist()} is not in the reachable area of its structure "
             "(on an object, a cable is blocked there, or the platform hits something)"
         )
-    charts = [Chart(0, nodes0, q0, p0, _states(ik.trees, nodes0))]
+    charts = [StructureChart(0, nodes0, q0, p0, _states(ik.trees, nodes0))]
     edges: list[Edge] = []
+    links: dict[int, dict[int, list[int]]] = {}  #: chart → adjacent chart → its edges
     stack = [0]
     expanded = 0
     while stack:
@@ -264,10 +416,13 @@ def build_atlas(
                         break
                 if target is not None and target != ci:
                     edges.append(Edge((ci, target), i, kind, obj, seg, nrm))
-                    C.neighbours.setdefault(target, []).append(len(edges) - 1)
+                    links.setdefault(ci, {}).setdefault(target, []).append(len(edges) - 1)
     if progress is not None:
         progress(expanded, expanded)
-    return StructureAtlas(robot, b.trees, space, charts, edges, p0, theta, offsets)
+    built = tuple(replace(C, neighbours={k: tuple(v) for k, v in links.get(C.index, {}).items()}) for C in charts)
+    return StructureAtlas(
+        robot, tuple(b.trees), space, built, tuple(edges), p0, theta, offsets, not b.full, time.perf_counter() - t0
+    )
 
 
 def _states(trees: Sequence[CableStateTree], nodes: Sequence[int]) -> tuple[tuple[tuple[int, int], ...], ...]:
@@ -275,7 +430,12 @@ def _states(trees: Sequence[CableStateTree], nodes: Sequence[int]) -> tuple[tupl
 
 
 def _find_or_build(
-    b: _Builder, charts: list[Chart], nodes: tuple[int, ...], point: np.ndarray, stack: list[int], max_charts: int
+    b: _Builder,
+    charts: list[StructureChart],
+    nodes: tuple[int, ...],
+    point: np.ndarray,
+    stack: list[int],
+    max_charts: int,
 ) -> int | None:
     for C in charts:
         if C.nodes == nodes and shapely.contains_xy(C.domain, *point):
@@ -284,7 +444,8 @@ def _find_or_build(
     if q is None or not shapely.contains_xy(q, *point):
         return None
     if len(charts) >= max_charts:
-        raise TautError(f"{b.robot.name}: more than {max_charts} charts; the atlas is too large")
-    charts.append(Chart(len(charts), nodes, q, np.asarray(point, float), _states(b.trees, nodes)))
+        b.full = True
+        return None
+    charts.append(StructureChart(len(charts), nodes, q, np.asarray(point, float), _states(b.trees, nodes)))
     stack.append(len(charts) - 1)
     return len(charts) - 1

@@ -43,7 +43,9 @@ import shapely
 import shapely.affinity
 from shapely.geometry import MultiPoint, Polygon
 
-from taut.errors import TautError
+from taut._checks import as_number
+from taut.atlas._reachable import ARC_STEP
+from taut.errors import PoseError, TautError
 from taut.wrapping import CableStateTree
 
 if TYPE_CHECKING:
@@ -61,10 +63,44 @@ def rotation(theta: float) -> np.ndarray:
 
 
 def platform_outline(robot: Robot, theta: float) -> Polygon | None:
-    """``M^θ``: the platform polygon rotated by ``θ`` (``None`` without a polygon)."""
+    """``M^θ``: the platform's outline rotated by ``θ`` about its reference point (§5.2.1).
+
+    Parameters
+    ----------
+    robot : Robot
+    theta : float
+        Orientation [rad].
+
+    Returns
+    -------
+    shapely.Polygon or None
+        Counter-clockwise; ``None`` for a point mass or a platform without
+        ``shape.polygon``.
+
+    Raises
+    ------
+    TautError
+        A polygon that is not simple or has no area.
+    PoseError
+        An orientation that is not a finite number.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §5.2.1. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> from taut.atlas import build_atlas, platform_outline, platform_reachable_area
+    >>> from taut.model import example
+    >>> robot = example("vscr-rigid-t-shaped")
+    >>> round(platform_outline(robot, 0.0).area, 6)
+    0.0032
+    """
     shape = robot.platform.shape
     if robot.is_point_mass or shape is None or not shape.polygon:
         return None
+    theta = as_number(theta, "theta", error=PoseError)
     V = np.asarray(shape.polygon, float) @ rotation(theta).T
     M = Polygon(V)
     if not M.is_valid or M.area <= 0:
@@ -154,18 +190,62 @@ def platform_reachable_area(
     trees: Sequence[CableStateTree],
     nodes: Sequence[int],
     offsets: np.ndarray,
-    arc_step: float,
+    *,
+    arc_step: float = ARC_STEP,
     reach: float,
 ) -> BaseGeometry | None:
-    """``PRA^{S,θ}`` (Eq. 5.14) of structure ``nodes`` (one CST node per cable), or
-    ``None`` when the platform has no outline (only its anchors, which the cable-reachable
-    areas already keep in the installation space).
+    """The platform-reachable area ``PRA^{S,θ}`` (Eq. 5.14) of a structure: the reference
+    points where the platform's outline meets no object, no border and no cable.
+
+    Parameters
+    ----------
+    robot : Robot
+    theta : float
+        Orientation [rad] of the page.
+    space : shapely.Polygon
+        The installation space.
+    trees : sequence of CableStateTree
+        Each cable's state tree.
+    nodes : sequence of int
+        The structure: a node of each tree.
+    offsets : ndarray, shape (n, 2)
+        Anchor offsets ``R(θ) r_i`` [m].
+    arc_step : float, optional
+        Angular step [rad] of the chords of circular arcs.
+    reach : float
+        Length [m] beyond which the active segments are cut (longer than any cable).
+
+    Returns
+    -------
+    shapely geometry or None
+        ``None`` when the platform has no outline (only its anchors, which the
+        cable-reachable areas already keep in the installation space).
+
+    Raises
+    ------
+    TautError
+        Bad ``arc_step`` or ``reach``, or an anchor off the platform's outline.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §5.2.1, Eq. 5.14. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    The first chart of the rigid T-shaped robot's page at its initial orientation:
+
+    >>> from taut.atlas import build_atlas, platform_outline, platform_reachable_area
+    >>> from taut.model import example
+    >>> robot = example("vscr-rigid-t-shaped")
+    >>> x, y, theta = robot.reference.poses["initial"]
+    >>> page = build_atlas(robot, [x, y], theta=theta)
+    >>> args = (page.theta, page.space, page.trees, page.charts[0].nodes, page.offsets)
+    >>> round(platform_reachable_area(robot, *args, reach=20.0).area, 4)
+    0.7509
     """
+    arc_step = as_number(arc_step, "arc_step", positive=True)
+    reach = as_number(reach, "reach", positive=True)
     M = platform_outline(robot, theta)
     if M is None:
         return None

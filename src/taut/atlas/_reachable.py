@@ -44,6 +44,8 @@ import numpy.typing as npt
 import shapely
 from shapely.geometry import MultiPolygon, Polygon
 
+from taut._checks import as_array, as_index, as_number
+from taut.errors import TautError
 from taut.geometry import directed_tangent
 from taut.wrapping import CableStateTree
 
@@ -196,25 +198,61 @@ def _bbox(tree: CableStateTree, space: Polygon | None) -> np.ndarray:
 def cable_reachable_area(
     tree: CableStateTree,
     node: int,
+    *,
     installation_space: npt.ArrayLike | Polygon | None = None,
     arc_step: float = ARC_STEP,
 ) -> Polygon | MultiPolygon:
-    """The CRA of the cable whose state is CST node ``node`` (§5.1.2), as a shapely
-    (Multi)Polygon clipped to ``installation_space`` (vertices ``(V, 2)`` or a shapely
-    polygon; without one the region is bounded by a box around the objects).
+    """The cable-reachable area of a cable in one state (§5.1.2, module docstring): where its
+    platform end can go without changing the state.
+
+    Parameters
+    ----------
+    tree : CableStateTree
+        The cable's state tree.
+    node : int
+        The state: a node of the tree.
+    installation_space : array_like, shape (V, 2), or shapely.Polygon, optional
+        Clips the area; without one it is bounded by a box around the objects.
+    arc_step : float, optional
+        Angular step [rad] of the chords that polygonise circular arcs.
+
+    Returns
+    -------
+    shapely.Polygon or shapely.MultiPolygon
+
+    Raises
+    ------
+    TautError
+        A node not in the tree, a bad installation space or ``arc_step``.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §5.1.2. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    A straight cable from the origin, a disc at ``(0, 1)`` in the way, in a 4 m square:
+
+    >>> import shapely
+    >>> from taut.atlas import cable_reachable_area
+    >>> from taut.wrapping import CableStateTree
+    >>> tree = CableStateTree([[0.0, 1.0, 0.2], [0.0, 0.0, 0.0]])
+    >>> square = [[-2, -2], [2, -2], [2, 2], [-2, 2]]
+    >>> area = cable_reachable_area(tree, 0, installation_space=square)
+    >>> area.contains(shapely.Point(1.0, 1.0)), area.contains(shapely.Point(0.0, 1.5))
+    (True, False)
     """
+    node = as_index(node, "node", tree.size)
+    arc_step = as_number(arc_step, "arc_step", positive=True)
     space = None
-    if installation_space is not None:
-        space = (
-            installation_space
-            if isinstance(installation_space, Polygon)
-            else Polygon(np.asarray(installation_space, float))
-        )
+    if isinstance(installation_space, Polygon):
+        space = installation_space
+    elif installation_space is not None:
+        ring = as_array(installation_space, "installation_space", shape=(None, 2))
+        if len(ring) < 3:
+            raise TautError(f"installation_space: a polygon needs at least 3 vertices, got {len(ring)}")
+        space = Polygon(ring)
     bbox = _bbox(tree, space)
     scene = _Scene(tree, node, bbox)
     c, r, d, a0, span = _sweep_frame(tree, node)

@@ -85,6 +85,8 @@ def run(ns: argparse.Namespace) -> int:
     t0 = time.perf_counter()
     with progress_bar("atlas (charts expanded)", wanted(ns.json)) as progress:
         atlas = build_atlas(robot, start, theta=theta, progress=progress)
+    if not atlas.complete:
+        raise TautError(f"{robot.name}: more than {len(atlas.charts)} charts; the atlas is too large")
     with progress_bar("workspace (charts)", wanted(ns.json)) as progress:
         ws = atlas_workspace(atlas, ns.condition, progress=progress)
     data = {

@@ -39,7 +39,7 @@ JSON: {{"robot", "solutions": [{{"taut", "position", "orientation", "tensions", 
 
 
 def run(ns: argparse.Namespace) -> int:
-    from taut.dgp import solve_dgp
+    from taut.dgp import MAX_BOXES, solve_dgp
     from taut.parallel import get_executor
 
     plot = A.plot_file(ns.plot)
@@ -50,7 +50,12 @@ def run(ns: argparse.Namespace) -> int:
         progress_bar("fk", wanted(ns.json)) as progress,
     ):
         res = solve_dgp(
-            robot, lengths, max_taut=ns.max_taut, executor=executor, max_boxes=ns.max_boxes, progress=progress
+            robot,
+            lengths,
+            max_taut=ns.max_taut,
+            executor=executor,
+            max_boxes=MAX_BOXES if ns.max_boxes is None else ns.max_boxes,
+            progress=progress,
         )
     data = {
         "robot": robot.name,
@@ -105,8 +110,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         type=A.count(),
         default=None,
         metavar="N",
-        help="box budget of every sub-problem; the boxes left when it runs out are undecided "
-        "(default: a guard of 2000000 boxes per piece of a sub-problem)",
+        help="box budget of every sub-problem; the boxes left when it runs out are undecided (default 2000000)",
     )
     add_strict(parser)
     A.add_parallel(parser, workers=1)

@@ -90,7 +90,7 @@ def run(ns: argparse.Namespace) -> int:
     data = {
         "robot": robot.name,
         "taut": sorted(cables),
-        "assigned": res.assigned,
+        "assigned": res.fixed,
         "solutions": [numbered(s.as_dict()) for s in res.solutions],
         "complete": res.complete,
         "undecided_boxes": res.undecided,
@@ -101,7 +101,7 @@ def run(ns: argparse.Namespace) -> int:
     }
 
     def tables(con: Console, d: dict) -> None:
-        free = [k for k, name in enumerate(robot.pose_names[:6]) if name not in res.assigned]
+        free = [k for k, name in enumerate(robot.pose_names[:6]) if name not in res.fixed]
         rows = []
         for k, s in enumerate(res.solutions, 1):
             pose = [*s.position, *s.orientation]
@@ -133,7 +133,7 @@ def run(ns: argparse.Namespace) -> int:
 
     def human(d: dict) -> None:
         con = console()
-        fixed = ", ".join(f"{k}={v:.6g}" for k, v in res.assigned.items())
+        fixed = ", ".join(f"{k}={v:.6g}" for k, v in res.fixed.items())
         con.print(
             f"[bold]{markup(robot.name)}[/]: {len(res.solutions)} equilibria with cables {d['taut']} taut at {fixed} "
             f"({res.boxes} boxes, {res.elapsed_s:.2f} s)"

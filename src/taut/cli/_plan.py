@@ -116,17 +116,18 @@ def _ellipsoid(text: str | None) -> np.ndarray:
 def _run(ns: argparse.Namespace, M: WrenchFeasibleManifold, y0: np.ndarray, y1: np.ndarray) -> tuple[str, PathResult]:
     """The planner's answer: the method that gave it and its result."""
     from taut.cli._progress import progress_bar, wanted
-    from taut.planning import atlas_rrt, plan_path
+    from taut.planning import plan_path
 
     charts = {} if ns.max_charts is None else {"max_charts": ns.max_charts}
     if ns.planner in ("atlasrrt", "auto"):
         radius = ns.radius or DEFAULT_RADIUS["atlasrrt"]
         with progress_bar("plan (AtlasRRT nodes)", wanted(ns.json)) as progress:
-            res = atlas_rrt(
+            res = plan_path(
                 M.implicit(),
                 y0,
                 y1,
-                radius,
+                method="atlasrrt",
+                radius=radius,
                 step=ns.step,
                 metric=M.pose_metric,
                 seed=ns.seed,
@@ -144,7 +145,8 @@ def _run(ns: argparse.Namespace, M: WrenchFeasibleManifold, y0: np.ndarray, y1: 
             M.implicit(),
             y0,
             y1,
-            ns.radius or DEFAULT_RADIUS["astar"],
+            method="astar",
+            radius=ns.radius or DEFAULT_RADIUS["astar"],
             metric=M.pose_metric,
             progress=progress,
             **charts,
@@ -161,9 +163,6 @@ def run(ns: argparse.Namespace) -> int:
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)
-    if ns.radius is not None:
-        if ns.radius < MIN_RADIUS:
-            raise TautError(f"--radius {ns.radius:g} is below {MIN_RADIUS:g}: the search could not cover the space")
     if (ns.max_charts is not None and ns.max_charts < 2) or ns.subdivide < 1:
         raise TautError("--max-charts must be at least 2 and --subdivide at least 1")
     if ns.subdivide >= MAX_POSES:
@@ -203,7 +202,7 @@ def run(ns: argparse.Namespace) -> int:
         "found": res.found,
         "path": [],
         "charts": res.charts,
-        "nodes": res.expanded if method == "atlasrrt" else None,
+        "nodes": res.nodes if method == "atlasrrt" else None,
         "elapsed_s": elapsed,
         "min_tension_margin": None,
         "expanded": res.expanded if method == "astar" else None,

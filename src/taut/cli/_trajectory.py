@@ -87,7 +87,7 @@ def run(ns: argparse.Namespace) -> int:
         t, P = builtin_trajectory(robot, name, dt=ns.dt, speed=ns.speed, dwell=ns.dwell)
     else:
         W = full_poses(robot, W)
-        t, P = timed_moves(W, ns.speed or DEFAULT_SPEED, 1.0 if ns.dwell is None else ns.dwell, ns.dt)
+        t, P = timed_moves(W, speed=ns.speed or DEFAULT_SPEED, dwell=1.0 if ns.dwell is None else ns.dwell, dt=ns.dt)
     res = run_trajectory(robot, t, P)
     data = {"robot": robot.name} | res.summary()
     # users read 1-based cable and object numbers

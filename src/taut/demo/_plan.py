@@ -35,7 +35,7 @@ def plan_section(report: Report, radius: float = 0.2) -> PathResult:
     fixed = dict(x=0.0, y=0.0, z=2.0, sigma=float(q["q1"][5]))
     M = WrenchFeasibleManifold.from_robot(robot, fixed=fixed)
     t0 = time.perf_counter()
-    res = plan_path(M.implicit(), M.lift(q["q1"]), M.lift(q["q2"]), radius, metric=M.pose_metric)
+    res = plan_path(M.implicit(), M.lift(q["q1"]), M.lift(q["q2"]), radius=radius, metric=M.pose_metric)
     elapsed = time.perf_counter() - t0
     check = verify_path(robot, M.pose(res.path), subdivide=5) if res.found else None
     centres = M.pose(res.atlas.centres)

@@ -21,8 +21,8 @@ if TYPE_CHECKING:
     from taut.dgp._inverse import IGPResult, IGPSolution, solve_igp
     from taut.dgp._solve import DGPResult, DGPSolution, solve_dgp, solve_subset
     from taut.dgp._stability import is_stable, reduced_hessian
-    from taut.dgp._tracking import track, track_path
-    from taut.dgp._undecided import CAUSES, UndecidedBox
+    from taut.dgp._tracking import track_equilibrium, track_path
+    from taut.dgp._undecided import CAUSES, MAX_BOXES, UndecidedBox
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -38,9 +38,10 @@ _LAZY = {
     "solve_subset": "taut.dgp._solve",
     "is_stable": "taut.dgp._stability",
     "reduced_hessian": "taut.dgp._stability",
-    "track": "taut.dgp._tracking",
+    "track_equilibrium": "taut.dgp._tracking",
     "track_path": "taut.dgp._tracking",
     "CAUSES": "taut.dgp._undecided",
+    "MAX_BOXES": "taut.dgp._undecided",
     "UndecidedBox": "taut.dgp._undecided",
 }
 
@@ -50,6 +51,7 @@ __all__ = [
     "DGPSolution",
     "IGPResult",
     "IGPSolution",
+    "MAX_BOXES",
     "UndecidedBox",
     "build_subproblem",
     "is_stable",
@@ -59,7 +61,7 @@ __all__ = [
     "solve_dgp",
     "solve_igp",
     "solve_subset",
-    "track",
+    "track_equilibrium",
     "track_path",
 ]
 

@@ -67,7 +67,8 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
-from taut.errors import SingularConfigurationError
+from taut._checks import as_array, as_index
+from taut.errors import CableSetError, SingularConfigurationError
 from taut.geometry import angles_from_matrix
 from taut.interval import Expr, LinearFilter, System, compile_system, compile_tape, const, evaluate_point, variables
 from taut.model import Robot
@@ -83,8 +84,36 @@ OTHER_POLES_UP_TO = 4
 
 
 def load(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``(f, m_ext, g')``: constant force and moment (fixed frame) and the body-frame point
-    where they act."""
+    """The constant load on the platform of the geometrico-static model (Eq. 2.3): the
+    platform's ``wrench`` plus its weight.
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    f : ndarray, shape (3,)
+        Force [N], fixed frame.
+    m_ext : ndarray, shape (3,)
+        Moment [N m], fixed frame.
+    g : ndarray, shape (3,)
+        Body-frame point [m] where the force acts (``wrench_point``).
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §2.1, Eq. 2.3. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> from taut.dgp import load
+    >>> from taut.model import example
+    >>> f, m, g = load(example("suspended-3cable"))
+    >>> f.tolist(), m.tolist(), g.tolist()
+    ([0.0, 0.0, 1.0], [0.0, 0.0, 0.0], [0.0, 0.0, -0.577])
+    """
     plat = robot.platform
     w = np.zeros(6)
     if plat.wrench is not None:
@@ -195,7 +224,42 @@ def reference_choice(robot: Robot, taut: tuple[int, ...], gp: np.ndarray) -> tup
     Eq. 3.5 weighs most), plus :data:`NON_TAUT_REFERENCE` per reference point that is not a
     taut anchor.  Two reference points a few millimetres apart (paired anchors, as on
     MARIONET-VR and the teaching prototype) would multiply every secondary point's interval
-    by hundreds.  Returns their labels (cable index or "G") and body coordinates."""
+    by hundreds.
+
+    Parameters
+    ----------
+    robot : Robot
+    taut : tuple of int
+        The taut cables (0-based).
+    gp : ndarray, shape (3,)
+        Body-frame load point ``G`` (:func:`load`).
+
+    Returns
+    -------
+    labels : list of int or str
+        The three reference points: a cable index (its anchor) or ``"G"``.
+    points : ndarray, shape (3, 3)
+        Their body-frame coordinates [m].
+
+    Raises
+    ------
+    SingularConfigurationError
+        Every three platform points are collinear.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §3.1.1, Eq. 3.5. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> from taut.dgp import load, reference_choice
+    >>> from taut.model import example
+    >>> robot = example("suspended-3cable")
+    >>> reference_choice(robot, (0, 1, 2), load(robot)[2])[0]
+    [0, 1, 2]
+    """
     r = robot.anchors
     points = [(i, r[i]) for i in taut] + [("G", gp)] + [(k, r[k]) for k in range(robot.n_cables) if k not in taut]
     scale = max(1e-12, max(float(np.linalg.norm(c[1] - points[0][1])) for c in points))
@@ -261,16 +325,67 @@ def secondary_coordinates(refs: np.ndarray, body: np.ndarray) -> list[Fraction]:
     return [det(cols[:j] + [rhs] + cols[j + 1 :]) / d for j in range(3)]
 
 
-def build_subproblem(robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], normal: bool = True) -> Subproblem:
-    """The square system of §2.3 for the taut cables ``taut`` (0-based), ``1 ≤ m ≤ 6``;
-    ``normal``: the plane normal of the reference points is an unknown when some cable
-    anchor lies off their plane (tracking leaves it out: Newton steps on a smaller system).
+def build_subproblem(robot: Robot, lengths: npt.ArrayLike, taut: tuple[int, ...], *, normal: bool = True) -> Subproblem:
+    """The square system of one taut subset (§2.3, module docstring), its initial box and
+    the map back to poses.
 
     Every constant derived from the robot's data (the ``β`` of secondary points, squared
     distances between reference points, exit-point differences, the load) is computed in
     exact rational arithmetic and entered as the float interval enclosing it, so the
-    system holds the exact one of the data (docs/architecture.md §5: outward rounding throughout)."""
-    n, m = robot.n_cables, len(taut)
+    system holds the exact one of the data (docs/architecture.md §5: outward rounding
+    throughout).
+
+    Parameters
+    ----------
+    robot : Robot
+    lengths : array_like, shape (n,)
+        Cable lengths [m].
+    taut : tuple of int
+        The taut cables (0-based), ``1 ≤ m ≤ 6``.
+    normal : bool, optional
+        Make the plane normal of the reference points an unknown when some cable anchor lies
+        off their plane (tracking leaves it out: Newton steps on a smaller system).
+
+    Returns
+    -------
+    Subproblem
+        The system (``system``), the initial box (``lo``, ``hi``), the statics filter and
+        the maps between unknowns and poses (``pose``, ``unknowns``, ``tensions``).
+
+    Raises
+    ------
+    CableSetError
+        Taut cables that are not 1 to 6 distinct cables of the robot.
+    TautError
+        Lengths that are not ``n`` finite numbers.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §2.3.1–2.3.6, §3.1.1, §3.1.3. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    Three taut cables whose anchors are coplanar: 9 reference-point coordinates (no normal)
+    and 3 scaled tensions.
+
+    >>> from taut.dgp import build_subproblem
+    >>> from taut.model import example
+    >>> robot = example("suspended-3cable")
+    >>> sp = build_subproblem(robot, robot.reference.lengths, (0, 1, 2))
+    >>> sp.system.n, sp.pose_unknowns
+    (12, 9)
+    """
+    n = robot.n_cables
+    lengths = as_array(lengths, "cable lengths", shape=(n,))
+    try:
+        taut = tuple(as_index(i, "taut cables", n, error=CableSetError) for i in taut)
+    except TypeError:
+        raise CableSetError(f"taut cables: expected cable indices 0..{n - 1}, got {taut!r}") from None
+    if not 1 <= len(taut) <= 6 or len(set(taut)) != len(taut):
+        raise CableSetError(f"taut cables: expected 1 to 6 distinct cables, got {list(taut)}")
+    m = len(taut)
     a, r = robot.exits, robot.anchors
     _, _, gp = load(robot)
     f, mext = _exact_load(robot)

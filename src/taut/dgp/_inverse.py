@@ -65,10 +65,12 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_count, as_number
+from taut._results import Result, jsonable
 from taut.dgp._formulation import load
 from taut.dgp._stability import is_stable
-from taut.dgp._undecided import UndecidedBox, cause_of, scaled
-from taut.errors import CableSetError, PoseError, TautError, UnsupportedRobotError
+from taut.dgp._undecided import MAX_BOXES, UndecidedBox, cause_of, scaled
+from taut.errors import CableSetError, PoseError, UnsupportedRobotError
 from taut.geometry import rotation_matrix
 from taut.interval import (
     ONE,
@@ -97,7 +99,50 @@ ALIASES = {"phix": "a", "phiy": "b", "phiz": "c", "φx": "a", "φy": "b", "φz":
 
 
 @dataclass(frozen=True)
-class IGPSolution:
+class IGPSolution(Result):
+    """One certified solution of the inverse geometrico-static problem.
+
+    Attributes
+    ----------
+    taut : tuple of int
+        The taut cables (0-based indices).
+    position : ndarray, shape (3,)
+        Platform reference point [m].
+    orientation : ndarray, shape (3,)
+        Angles [rad] in the robot's orientation convention.
+    tensions : ndarray, shape (n,)
+        Every cable's tension [N] (0 for slack ones).
+    lengths : ndarray, shape (n,)
+        The length [m] to command for a taut cable; for a slack one its span, the least
+        length it must be paid out to.
+    slack : tuple of int
+        The slack cables (0-based indices).
+    length_violations : tuple of int
+        Cables (0-based indices) outside the robot's length bounds.
+    stable : bool
+        The reduced Hessian is positive definite (:func:`is_stable`).
+    certificate_width : float
+        Width of the Krawczyk box proven to hold this solution.
+    uniqueness_radius : float
+        Half-width of the inflated box holding no other solution.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.dgp import solve_igp
+    >>> from taut.model import example
+    >>> res = solve_igp(example("suspended-3cable"), [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061})
+    >>> s = res.solutions[0]
+    >>> s.stable, np.round(s.orientation, 3), np.round(s.lengths, 3)
+    (True, array([3.006, 0.342, 0.109]), array([ 7.5, 10. ,  9.5]))
+    """
+
     taut: tuple[int, ...]  #: taut cables (0-based indices)
     position: np.ndarray
     orientation: np.ndarray  #: angles in the robot's convention
@@ -110,24 +155,63 @@ class IGPSolution:
     uniqueness_radius: float  #: half-width of the inflated box with no other solution
 
     def as_dict(self) -> dict:
+        """The solution in plain JSON types (cables 0-based)."""
         return {
             "taut": list(self.taut),
-            "position": self.position.tolist(),
-            "orientation": self.orientation.tolist(),
-            "tensions": self.tensions.tolist(),
-            "lengths": self.lengths.tolist(),
+            "position": jsonable(self.position),
+            "orientation": jsonable(self.orientation),
+            "tensions": jsonable(self.tensions),
+            "lengths": jsonable(self.lengths),
             "slack": list(self.slack),
             "length_violations": list(self.length_violations),
             "stable": bool(self.stable),
-            "certificate_width": self.certificate_width,
-            "uniqueness_radius": self.uniqueness_radius,
+            "certificate_width": jsonable(self.certificate_width),
+            "uniqueness_radius": jsonable(self.uniqueness_radius),
         }
 
 
 @dataclass(frozen=True)
-class IGPResult:
-    solutions: list[IGPSolution]
-    assigned: dict[str, float]  #: the assigned coordinates, by the robot's pose names
+class IGPResult(Result):
+    """Every certified solution of the inverse geometrico-static problem in the search
+    domain (:func:`solve_igp`), stable ones first.
+
+    Attributes
+    ----------
+    solutions : tuple of IGPSolution
+    fixed : dict
+        The fixed pose coordinates by the robot's pose names (``taut igp --json`` prints
+        them as ``"assigned"``).
+    undecided_enclosures : tuple of UndecidedBox
+        The boxes that could not be decided: narrower than ``tol`` around a solution with a
+        zero tension (it belongs to a smaller taut set) or a singular one (a fold, a
+        continuum), and those left when the box budget ran out.
+    boxes : int
+        Boxes processed.
+    exhausted : bool
+        The box budget ran out (typically on a continuum of solutions).
+    elapsed_s : float
+        Wall-clock time [s].
+    complete : bool
+        No box was left undecided (a property).
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.dgp import solve_igp
+    >>> from taut.model import example
+    >>> res = solve_igp(example("suspended-3cable"), [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061})
+    >>> len(res.solutions), res.complete, res.fixed
+    (4, True, {'x': 2.7505, 'y': 3.9798, 'z': 5.5061})
+    """
+
+    solutions: tuple[IGPSolution, ...]
+    fixed: dict[str, float]  #: the fixed (assigned) coordinates, by the robot's pose names
     #: boxes that could not be decided (:mod:`taut.dgp._undecided`): of width < eps around a
     #: solution with a zero tension (it belongs to a smaller taut set) or a singular one (a
     #: fold, a continuum), and those left when the box budget ran out
@@ -145,6 +229,22 @@ class IGPResult:
     def complete(self) -> bool:
         """Every solution in the domain is in ``solutions``: no box was left undecided."""
         return not self.undecided_enclosures
+
+    def as_dict(self) -> dict:
+        """The result as ``taut igp --json`` prints it, with 0-based cables (the coordinates
+        it prints as ``assigned`` are ``fixed`` here): ``fixed``, ``solutions``,
+        ``complete``, ``undecided_boxes``, ``undecided_enclosures``, ``boxes``,
+        ``exhausted``, ``elapsed_s``."""
+        return {
+            "fixed": jsonable(self.fixed),
+            "solutions": [s.as_dict() for s in self.solutions],
+            "complete": self.complete,
+            "undecided_boxes": self.undecided,
+            "undecided_enclosures": [b.as_dict() for b in self.undecided_enclosures],
+            "boxes": self.boxes,
+            "exhausted": self.exhausted,
+            "elapsed_s": self.elapsed_s,
+        }
 
 
 def _check_robot(robot: Robot) -> None:
@@ -177,13 +277,13 @@ def _check_taut(robot: Robot, taut: Iterable[int]) -> tuple[int, ...]:
     return tuple(sorted(indices))
 
 
-def _check_assigned(robot: Robot, assigned: Mapping[str, float], m: int) -> dict[int, float]:
-    """Pose index (0…5) → value of the assigned coordinates."""
+def _check_fixed(robot: Robot, fixed: Mapping[str, float], m: int) -> dict[int, float]:
+    """Pose index (0…5) → value of the fixed (assigned) coordinates."""
     names = robot.pose_names[:6]
-    if not isinstance(assigned, Mapping):
-        raise PoseError(f"assigned coordinates: expected a mapping name → value, got {assigned!r}")
+    if not isinstance(fixed, Mapping):
+        raise PoseError(f"fixed coordinates: expected a mapping name → value, got {fixed!r}")
     out: dict[int, float] = {}
-    for key, value in assigned.items():
+    for key, value in fixed.items():
         name = str(key).strip().lower().replace("_", "")
         if robot.orientation != "tilt-torsion":
             name = ALIASES.get(name, name)
@@ -402,42 +502,82 @@ def _build(
 def solve_igp(
     robot: Robot,
     taut: Iterable[int],
-    assigned: Mapping[str, float],
+    fixed: Mapping[str, float],
     *,
     box: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
-    eps: float = 1e-7,
-    max_boxes: int = 100_000,
+    tol: float = 1e-7,
+    max_boxes: int = MAX_BOXES,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> IGPResult:
-    """All certified solutions of the inverse geometrico-static problem (module docstring).
+    """All certified solutions of the inverse geometrico-static problem: the free pose
+    coordinates and the tensions of ``m`` taut cables for ``m`` fixed pose coordinates
+    (module docstring).
 
-    ``taut``: the 0-based indices of the ``m`` taut cables (``2 ≤ m ≤ 6``; the cables the
-    command line numbers 1, 2, 3 are ``[0, 1, 2]``); ``assigned``:
-    exactly ``m`` pose coordinates by name (the robot's ``pose_names``: ``x, y, z, a, b, c``
-    — ``phix, phiy, phiz`` are accepted for the ``xyz`` conventions — or
-    ``phi, theta, sigma`` for tilt-and-torsion); ``box``: ``(lower, upper)`` corners of the
-    search box of the free position coordinates (default: see :func:`_position_box`);
-    ``eps``: the bisection threshold of :func:`~taut.interval.branch_and_prune`;
-    ``max_boxes``: its box budget — the well-posed problems of the examples take 10²–10⁴
-    boxes, a continuum of solutions (an assignment that does not fix the pose, e.g. ``x, y,
-    φ`` of the Robocrane with cables 1, 3, 5 at ``x = y = 0``) would take them all, at about
-    1 ms per box; what is left when it runs out is ``undecided`` and ``exhausted`` is set.
-    ``progress(boxes, None)`` is called as the boxes are processed (their number is not
-    known in advance) and ``progress(boxes, boxes)`` at the end.
+    Parameters
+    ----------
+    robot : Robot
+        A spatial rigid platform without joints or swivelling pulleys.
+    taut : iterable of int
+        The 0-based indices of the ``m`` taut cables, ``2 ≤ m ≤ 6`` (the cables the command
+        line numbers 1, 2, 3 are ``[0, 1, 2]``).
+    fixed : mapping of str to float
+        Exactly ``m`` pose coordinates by name [m, rad]: the robot's ``pose_names``
+        (``x, y, z, a, b, c``; ``phix, phiy, phiz`` are accepted for the ``xyz``
+        conventions; ``phi, theta, sigma`` for tilt-and-torsion).
+    box : (array_like, array_like), optional
+        Lower and upper corners [m] of the search box of the free position coordinates;
+        default the intersection of the taut cables' reach.
+    tol : float, optional
+        Bisection threshold of :func:`~taut.interval.branch_and_prune` (metres, cosines and
+        scaled tensions).
+    max_boxes : int, optional
+        Box budget (default :data:`MAX_BOXES`): the well-posed problems of the examples take
+        10²–10⁴ boxes; a continuum of solutions (fixed coordinates that do not fix the pose,
+        e.g. ``x, y, φ`` of the Robocrane with cables 1, 3, 5 at ``x = y = 0``) would take
+        them all, at about 1 ms a box.  What is left when it runs out is undecided and
+        ``exhausted`` is set.
+    progress : callable, optional
+        ``progress(boxes, None)`` as the boxes are processed (their number is not known in
+        advance) and ``progress(boxes, boxes)`` at the end.
+
+    Returns
+    -------
+    IGPResult
+
+    Raises
+    ------
+    CableSetError
+        Taut cables that are not 2 to 6 distinct cables of the robot.
+    PoseError
+        Fixed coordinates that are not ``m`` distinct pose coordinates with finite values,
+        or a bad ``box``.
+    UnsupportedRobotError
+        A planar, point-mass or jointed robot, or a swivelling pulley.
+    TautError
+        A bad ``tol`` or ``max_boxes``.
 
     References
     ----------
     .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
        interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
        Università di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    The stable pose of Table 4.3 of Berti (2015) at its position: four equilibria there.
+
+    >>> import numpy as np
+    >>> from taut.dgp import solve_igp
+    >>> from taut.model import example
+    >>> res = solve_igp(example("suspended-3cable"), [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061})
+    >>> [s.stable for s in res.solutions]
+    [True, False, False, False]
     """
     _check_robot(robot)
     idx = _check_taut(robot, taut)
-    fixed = _check_assigned(robot, assigned, len(idx))
-    if not (eps > 0 and np.isfinite(eps)):
-        raise TautError(f"eps must be positive and finite, got {eps!r}")
-    if int(max_boxes) < 1:
-        raise TautError(f"max_boxes must be at least 1, got {max_boxes!r}")
+    values = _check_fixed(robot, fixed, len(idx))
+    tol = as_number(tol, "tol", positive=True)
+    max_boxes = as_count(max_boxes, "max_boxes")
     pos_lo, pos_hi = _position_box(robot, idx, box)
     names = robot.pose_names[:6]
     t0 = time.perf_counter()
@@ -446,31 +586,31 @@ def solve_igp(
     boxes = 0
     exhausted = False
     if np.all(pos_lo < pos_hi):  # the taut cables' reach boxes can miss each other
-        pb = _build(robot, idx, fixed, pos_lo, pos_hi)
+        pb = _build(robot, idx, values, pos_lo, pos_hi)
         res = branch_and_prune(
             pb.system,
             pb.lo,
             pb.hi,
             primary=pb.primary,
-            tol=eps,
+            tol=tol,
             filters=(pb.statics,),
             certify_width=0.5,
             max_boxes=max_boxes,
-            progress=None if progress is None else _within_budget(progress, int(max_boxes)),
+            progress=None if progress is None else _within_budget(progress, max_boxes),
         )
-        solutions = [_solution(robot, idx, fixed, pb, c) for c in res.solutions]
+        solutions = [_solution(robot, idx, values, pb, c) for c in res.solutions]
         solutions.sort(key=lambda s: (not s.stable, *s.position, *s.orientation))
         # a certified solution straddling a bound (a zero tension, a domain edge) may or may
         # not be an answer: it is reported as undecided, never dropped
         undecided = tuple(
-            _undecided(robot, idx, fixed, pb, blo, bhi, cause_of(blo, bhi, eps)) for blo, bhi in res.undecided
-        ) + tuple(_undecided(robot, idx, fixed, pb, c.lo, c.hi, "domain-border") for c in res.boundary)
+            _undecided(robot, idx, values, pb, blo, bhi, cause_of(blo, bhi, tol)) for blo, bhi in res.undecided
+        ) + tuple(_undecided(robot, idx, values, pb, c.lo, c.hi, "domain-border") for c in res.boundary)
         boxes, exhausted = min(res.boxes, max_boxes), res.exhausted
     elif progress is not None:
         progress(0, 0)
     return IGPResult(
-        solutions,
-        {names[k]: v for k, v in sorted(fixed.items())},
+        tuple(solutions),
+        {names[k]: v for k, v in sorted(values.items())},
         undecided,
         boxes,
         exhausted,

@@ -32,10 +32,12 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_count, as_number
+from taut._results import Result, freeze, jsonable
 from taut.dgp._formulation import Subproblem, build_subproblem, load
 from taut.dgp._single_cable import single_cable_equilibria
 from taut.dgp._stability import is_stable
-from taut.dgp._undecided import UndecidedBox, cause_of, subproblem_box
+from taut.dgp._undecided import MAX_BOXES, UndecidedBox, cause_of, subproblem_box
 from taut.errors import TautError
 from taut.geometry import angles_from_matrix
 from taut.interval import (
@@ -57,7 +59,53 @@ if TYPE_CHECKING:
 
 
 @dataclass(frozen=True)
-class DGPSolution:
+class DGPSolution(Result):
+    """One certified equilibrium of the direct geometrico-static problem.
+
+    Attributes
+    ----------
+    taut : tuple of int
+        The taut cables (0-based indices).
+    position : ndarray, shape (3,)
+        Platform reference point [m].
+    orientation : ndarray, shape (3,)
+        Angles [rad] in the robot's orientation convention.
+    tensions : ndarray, shape (n,)
+        Every cable's tension [N] (0 for slack ones).
+    stable : bool
+        The reduced Hessian is positive definite (:func:`is_stable`).
+    certificate_width : float
+        Width of the Krawczyk box proven to hold this solution (0 for one taut cable).
+    uniqueness_radius : float
+        Half-width of the inflated box holding no other solution.
+    continuum : tuple of float or None
+        For one taut cable, the arc ``(ϑ_lo, ϑ_hi)`` of spins about the cable that are all
+        equilibria (the solution is its middle).
+    boundary : tuple of int or None
+        A border equilibrium: the cables of ``boundary`` not in ``taut`` are at their
+        lengths with zero tension, to within the certificate.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, Ch. 2, Eq. 2.1. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    The stable equilibrium of Table 4.3 of Berti (2015), tracked from the inverse problem's
+    solution at its reference lengths:
+
+    >>> import numpy as np
+    >>> from taut.dgp import solve_igp, track_equilibrium
+    >>> from taut.model import example
+    >>> robot = example("suspended-3cable")
+    >>> start = solve_igp(robot, [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061}).solutions[0]
+    >>> s = track_equilibrium(robot, start, robot.reference.lengths)
+    >>> s.taut, np.round(s.position, 3), np.round(s.tensions, 3)
+    ((0, 1, 2), array([2.751, 3.98 , 5.506]), array([0.526, 0.512, 0.581]))
+    """
+
     taut: tuple[int, ...]  #: taut cables (0-based indices)
     position: np.ndarray
     orientation: np.ndarray  #: angles in the robot's convention (xyz-fixed by default)
@@ -71,33 +119,74 @@ class DGPSolution:
     boundary: tuple[int, ...] | None = None
 
     def as_dict(self) -> dict:
+        """The solution in plain JSON types (cables 0-based); ``continuum`` and ``boundary``
+        only when set."""
         d = {
             "taut": list(self.taut),
-            "position": self.position.tolist(),
-            "orientation": self.orientation.tolist(),
-            "tensions": self.tensions.tolist(),
+            "position": jsonable(self.position),
+            "orientation": jsonable(self.orientation),
+            "tensions": jsonable(self.tensions),
             "stable": bool(self.stable),
-            "certificate_width": self.certificate_width,
-            "uniqueness_radius": self.uniqueness_radius,
+            "certificate_width": jsonable(self.certificate_width),
+            "uniqueness_radius": jsonable(self.uniqueness_radius),
         }
         if self.continuum is not None:
-            d["continuum"] = list(self.continuum)
+            d["continuum"] = jsonable(self.continuum)
         if self.boundary is not None:
             d["boundary"] = list(self.boundary)
         return d
 
 
 @dataclass(frozen=True)
-class DGPResult:
+class DGPResult(Result):
     """All equilibria found, in canonical order (:func:`solution_key`), and the search's
-    bookkeeping."""
+    bookkeeping (:func:`solve_dgp`).
 
-    solutions: list[DGPSolution]
+    Attributes
+    ----------
+    solutions : tuple of DGPSolution
+        The certified equilibria.
+    subproblems : int
+        Taut subsets solved.
+    undecided_enclosures : tuple of UndecidedBox
+        The boxes no solution could be excluded from, in job order: every equilibrium not
+        in ``solutions`` lies in one of them.
+    boxes : int
+        Boxes processed by branch-and-prune over all sub-problems.
+    elapsed_s : float
+        Wall-clock time [s].
+    complete : bool
+        No box was left undecided (a property).
+    exhausted : bool
+        A sub-problem's box budget ran out (a property).
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, Chs. 2–3. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> from taut.dgp import solve_dgp
+    >>> from taut.model import example
+    >>> res = solve_dgp(example("suspended-3cable"), max_taut=2)
+    >>> res.subproblems, len(res.solutions), res.complete, sorted(res.as_dict())[:3]
+    (6, 0, True, ['boxes', 'complete', 'elapsed_s'])
+    """
+
+    solutions: tuple[DGPSolution, ...]
     subproblems: int  #: taut subsets solved
     #: the boxes no solution could be excluded from (:mod:`taut.dgp._undecided`), in job order
     undecided_enclosures: tuple[UndecidedBox, ...]
     boxes: int  #: boxes processed by branch-and-prune over all sub-problems
     elapsed_s: float
+
+    def __post_init__(self) -> None:
+        # solutions computed by worker processes arrive unpickled, their arrays writeable
+        for s in self.solutions:
+            freeze(s)
+        super().__post_init__()
 
     @property
     def undecided(self) -> int:
@@ -109,36 +198,56 @@ class DGPResult:
         """Every equilibrium is in ``solutions``: no box was left undecided."""
         return not self.undecided_enclosures
 
+    @property
+    def exhausted(self) -> bool:
+        """The box budget ran out in some sub-problem (boxes undecided for ``"budget"``)."""
+        return any(b.cause == "budget" for b in self.undecided_enclosures)
+
+    def as_dict(self) -> dict:
+        """The result as ``taut fk --json`` prints it, with 0-based cables: ``solutions``,
+        ``complete``, ``exhausted``, ``subproblems``, ``undecided_boxes``,
+        ``undecided_enclosures``, ``boxes``, ``elapsed_s``."""
+        return {
+            "solutions": [s.as_dict() for s in self.solutions],
+            "complete": self.complete,
+            "exhausted": self.exhausted,
+            "subproblems": self.subproblems,
+            "undecided_boxes": self.undecided,
+            "undecided_enclosures": [b.as_dict() for b in self.undecided_enclosures],
+            "boxes": self.boxes,
+            "elapsed_s": self.elapsed_s,
+        }
+
 
 def solution_key(solution: DGPSolution) -> tuple:
     """The canonical order of solutions: by taut set, then position and orientation."""
     return (solution.taut, *solution.position.tolist(), *solution.orientation.tolist())
 
 
-#: Largest coordinate of a search domain, in units of the solver's ``eps``: beyond
-#: ``2**40 eps`` (110 km for ``eps = 1e-7`` m) ``eps`` spans fewer than 4096 units in the
+#: Largest coordinate of a search domain, in units of the solver's ``tol``: beyond
+#: ``2**40 tol`` (110 km for ``tol = 1e-7`` m) ``tol`` spans fewer than 4096 units in the
 #: last place of the coordinates, and the rounding of the squared lengths (``L²``, an ulp
-#: of ``L²`` moves a point by about ``L 2⁻⁵³``) leaves boxes of width ``eps`` that neither
+#: of ``L²`` moves a point by about ``L 2⁻⁵³``) leaves boxes of width ``tol`` that neither
 #: shrink nor certify: a search of hours that proves nothing.
 MAX_SCALE = 2.0**40
 
 
-def check_scale(robot: Robot, lengths: np.ndarray, eps: float) -> None:
-    """Refuse lengths that put the platform where double precision cannot resolve ``eps``
+def check_scale(robot: Robot, lengths: np.ndarray, tol: float) -> None:
+    """Refuse lengths that put the platform where double precision cannot resolve ``tol``
     (:data:`MAX_SCALE`): a reference point lies within its cable's length of the exit."""
     reach = float(np.max(np.abs(robot.exits).max(axis=1) + lengths)) + float(
         np.linalg.norm(robot.anchors, axis=1).max()
     )
-    if reach > MAX_SCALE * eps:
+    if reach > MAX_SCALE * tol:
         raise TautError(
             f"cable lengths up to {lengths.max():.3g} m put the platform up to {reach:.3g} m from the origin, where "
-            f"doubles are {np.spacing(reach):.2g} m apart: the solver cannot resolve eps = {eps:g} m there "
-            f"(it takes coordinates up to {MAX_SCALE * eps:.3g} m)"
+            f"doubles are {np.spacing(reach):.2g} m apart: the solver cannot resolve tol = {tol:g} m there "
+            f"(it takes coordinates up to {MAX_SCALE * tol:.3g} m)"
         )
 
 
 def check_lengths(robot: Robot, lengths: npt.ArrayLike) -> np.ndarray:
-    arr = np.asarray(lengths, dtype=float).ravel()
+    arr = as_array(lengths, "cable lengths", finite=False).ravel()
     if arr.size != robot.n_cables:
         raise TautError(f"{robot.name} has {robot.n_cables} cables, got {arr.size} lengths")
     if not np.all(np.isfinite(arr)):
@@ -213,13 +322,9 @@ def prepared_subproblem(
     return hit
 
 
-#: The box budget of one piece of a sub-problem when :func:`solve_dgp` is given none: a
-#: guard against a search that would never end (branch-and-prune's default).
-PIECE_BOXES = 2_000_000
-
 #: A job of :func:`solve_dgp`: robot, lengths, taut cables (0-based), eps, split, piece,
-#: box budget of the sub-problem (None: :data:`PIECE_BOXES` per piece), multi-precision.
-Job = tuple[Robot, np.ndarray, tuple[int, ...], float, int, int, int | None, bool]
+#: box budget of the sub-problem, multi-precision.
+Job = tuple[Robot, np.ndarray, tuple[int, ...], float, int, int, int, bool]
 
 
 def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], list[UndecidedBox], int]:
@@ -267,7 +372,7 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
         bisection="smear",
         tube=sp.geometry,
         filter_width=width,
-        max_boxes=PIECE_BOXES if budget is None else -(-budget // len(pieces)),
+        max_boxes=-(-budget // len(pieces)),
         starve=STARVE,
     )
     found = [(c, False) for c in res.solutions] + [(c, True) for c in res.boundary]
@@ -352,11 +457,41 @@ def _reach(c: Certificate) -> float:
 
 
 def solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple[list[DGPSolution], int, int]:
-    """The whole sub-problem of the taut cables of ``job = (robot, lengths, taut, eps)``, in
-    one piece, as a job an executor can map: ``(solutions, number of undecided boxes,
-    boxes)``."""
+    """The whole sub-problem of one taut subset, in one piece, as a job an executor can map.
+
+    Parameters
+    ----------
+    job : tuple
+        ``(robot, lengths, taut, tol)``: a spatial :class:`~taut.model.Robot`, the cable
+        lengths ``(n,)`` [m], the taut cables (0-based) and the bisection threshold.
+
+    Returns
+    -------
+    solutions : list of DGPSolution
+        The sub-problem's certified equilibria with non-negative tensions.
+    undecided : int
+        How many boxes were left undecided (budget :data:`MAX_BOXES`).
+    boxes : int
+        Boxes processed.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, Ch. 3. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.dgp import solve_subset
+    >>> from taut.model import example
+    >>> robot = example("suspended-3cable")
+    >>> sols, undecided, boxes = solve_subset((robot, np.array(robot.reference.lengths), (0, 1), 1e-7))
+    >>> len(sols), undecided
+    (0, 0)
+    """
     robot, lengths, taut, eps = job
-    sols, _, undecided, boxes = solve_piece((robot, lengths, taut, eps, 0, 0, None, True))
+    sols, _, undecided, boxes = solve_piece((robot, lengths, taut, eps, 0, 0, MAX_BOXES, True))
     return sols, len(undecided), boxes
 
 
@@ -390,40 +525,69 @@ def solve_dgp(
     *,
     max_taut: int | None = None,
     executor: Executor | Client | None = None,
-    eps: float = 1e-7,
+    tol: float = 1e-7,
     split: int | None = None,
-    max_boxes: int | None = None,
+    max_boxes: int = MAX_BOXES,
     progress: Callable[[int, int | None], None] | None = None,
     multiprecision: bool = True,
 ) -> DGPResult:
-    """All admissible equilibria (``τ ≥ 0``) for the cable lengths (default: the robot's
-    ``reference.lengths``), each with its stability flag and certificate.
+    """All admissible equilibria (``τ ≥ 0``) for given cable lengths, each certified and
+    classified by stability.
 
-    ``executor``: where the jobs run, as for
-    :func:`~taut.workspace.evaluate_workspace` — ``None`` (serial), an executor of
-    :func:`taut.parallel.get_executor`, or a ``distributed.Client``; it is not closed.
-    ``split``: the domain of every sub-problem with at least 3 taut cables is cut into
-    ``2**split`` pieces solved as separate jobs (default :data:`SPLIT`), so that one hard
-    sub-problem is shared by the workers; a solution found by two neighbouring pieces is
-    reported once (:func:`same_solution`), from the first piece in job order.  Each job is
-    computed by the same code whatever the executor, so for a given ``split`` the solutions
-    are bitwise identical on every executor; they are sorted by :func:`solution_key`.
-    ``max_boxes``: the box budget of every sub-problem, shared equally by its pieces (by
-    default :data:`PIECE_BOXES` per piece); a certification counts as
-    :data:`~taut.interval._branch_prune.CERTIFY_BOXES` boxes, so that the budget bounds the
-    time; the boxes left when it runs out are undecided.
-    ``progress(done, total)`` is called with the number of jobs done (pieces of
-    sub-problems) out of all of them, from 0 to the total.  ``multiprecision``: the boxes
-    double precision leaves too narrow to bisect (a singular or nearly double solution) are
-    searched again in multi-precision balls when python-flint is installed
-    (:mod:`taut.interval._precise`); without it, or with ``False``, they stay undecided.
+    The taut subsets of ``m = 1 … min(n, 6, max_taut)`` cables are solved as jobs of
+    ``executor``; a solution found by two neighbouring pieces of a domain is reported once,
+    from the first piece in job order.  Each job is computed by the same code whatever the
+    executor, so for a given ``split`` the solutions are bitwise identical on every
+    executor; they are sorted by :func:`solution_key`.
 
-    Raises :class:`~taut.errors.TautError` for lengths that put the platform beyond
-    :data:`MAX_SCALE` ``eps`` from the origin, where double precision cannot resolve ``eps``.
+    Parameters
+    ----------
+    robot : Robot
+        A spatial rigid platform without joints or swivelling pulleys.
+    lengths : array_like, shape (n,), optional
+        Cable lengths [m]; default the robot's ``reference.lengths``.
+    max_taut : int, optional
+        Largest taut subset searched (default ``min(n, 6)``).
+    executor : Executor or distributed.Client, optional
+        Where the jobs run, as for :func:`~taut.workspace.evaluate_workspace`: ``None``
+        (serial), an executor of :func:`taut.parallel.get_executor`, or a
+        ``distributed.Client``; it is not closed.
+    tol : float, optional
+        Bisection threshold of :func:`~taut.interval.branch_and_prune`, in metres (the
+        reference points) and scaled tensions.
+    split : int, optional
+        The domain of every sub-problem with at least 3 taut cables is cut into
+        ``2**split`` pieces (0 to 10; default :data:`SPLIT`), solved as separate jobs, so
+        that one hard sub-problem is shared by the workers.
+    max_boxes : int, optional
+        Box budget of every sub-problem, shared equally by its pieces (default
+        :data:`MAX_BOXES`); a certification counts as
+        :data:`~taut.interval._branch_prune.CERTIFY_BOXES` boxes, so that the budget bounds
+        the time; the boxes left when it runs out are undecided.
+    progress : callable, optional
+        ``progress(done, total)`` with the number of jobs done (pieces of sub-problems) out
+        of all of them, from 0 to the total.
+    multiprecision : bool, optional
+        Search again, in multi-precision balls, the boxes double precision leaves too narrow
+        to bisect (a singular or nearly double solution) when python-flint is installed
+        (:mod:`taut.interval._precise`); without it, or with ``False``, they stay undecided.
 
-    The result is :attr:`~DGPResult.complete` when no box was left undecided; otherwise
-    every equilibrium it does not list lies in one of its
-    :attr:`~DGPResult.undecided_enclosures` (:mod:`taut.dgp._undecided`).
+    Returns
+    -------
+    DGPResult
+        :attr:`~DGPResult.complete` when no box was left undecided; otherwise every
+        equilibrium it does not list lies in one of its
+        :attr:`~DGPResult.undecided_enclosures` (:mod:`taut.dgp._undecided`).
+
+    Raises
+    ------
+    TautError
+        A planar, point-mass or jointed robot, lengths that are not ``n`` positive numbers,
+        no reference lengths to default to, lengths that put the platform beyond
+        :data:`MAX_SCALE` ``tol`` from the origin (where double precision cannot resolve
+        ``tol``), or a bad option.
+    UnsupportedRobotError
+        A cable with a swivelling pulley.
 
     References
     ----------
@@ -431,6 +595,16 @@ def solve_dgp(
        interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
        Università di Bologna, 2015, Chs. 2–3, §4.2 (Tables 4.3–4.6).
        (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    Table 4.3 of Berti (2015): six equilibria, one of them stable.
+
+    >>> from taut.dgp import solve_dgp
+    >>> from taut.model import example
+    >>> res = solve_dgp(example("suspended-3cable"))
+    >>> len(res.solutions), sum(s.stable for s in res.solutions), res.complete
+    (6, 1, True)
     """
     refuse_swivels(robot, "the DGP solver")
     if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
@@ -440,26 +614,19 @@ def solve_dgp(
             raise TautError(f"{robot.name} has no reference lengths: give the cable lengths")
         lengths = robot.reference.lengths
     checked = check_lengths(robot, lengths)
-    if not (np.isfinite(eps) and eps > 0):
-        raise TautError(f"eps must be a number > 0, got {eps!r}")
-    check_scale(robot, checked, eps)
+    tol = as_number(tol, "tol", positive=True)
+    check_scale(robot, checked, tol)
     n = robot.n_cables
-    top = min(n, 6) if max_taut is None else min(n, 6, int(max_taut))
-    if top < 1:
-        raise TautError(f"--max-taut must be at least 1, got {max_taut}")
-    if split is None:
-        split = SPLIT
-    if not 0 <= split <= 10:
+    top = min(n, 6) if max_taut is None else min(n, 6, as_count(max_taut, "max_taut"))
+    split = SPLIT if split is None else as_count(split, "split", minimum=0)
+    if split > 10:
         raise TautError(f"split must be between 0 and 10 (up to 1024 pieces), got {split}")
-    if max_boxes is not None:
-        if int(max_boxes) < 1:
-            raise TautError(f"max_boxes must be at least 1, got {max_boxes}")
-        max_boxes = int(max_boxes)
+    max_boxes = as_count(max_boxes, "max_boxes")
     runner = as_executor(executor)
     t0 = time.perf_counter()
     subsets = [taut for m in range(top, 0, -1) for taut in combinations(range(n), m)]
     jobs = [
-        (robot, checked, taut, eps, split if len(taut) >= 3 else 0, k, max_boxes, multiprecision)
+        (robot, checked, taut, tol, split if len(taut) >= 3 else 0, k, max_boxes, multiprecision)
         for taut in subsets
         for k in range(2**split if len(taut) >= 3 else 1)
     ]
@@ -501,4 +668,4 @@ def solve_dgp(
         if not any(_same_border(sol, other) for other in solutions):
             solutions.append(sol)
     solutions.sort(key=solution_key)
-    return DGPResult(solutions, len(subsets), tuple(undecided), boxes, time.perf_counter() - t0)
+    return DGPResult(tuple(solutions), len(subsets), tuple(undecided), boxes, time.perf_counter() - t0)

@@ -23,8 +23,26 @@ from numba import njit
 
 @njit(cache=True)
 def reduced_hessian(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray, rho: np.ndarray) -> np.ndarray:
-    """``H_r`` for the taut cables: exit points ``a``, anchors ``b`` (``(m, 3)``), load point
-    ``g``.  Compiled: the tracking update calls it once per step.
+    """The reduced Hessian ``H_r = Nᵀ H N`` of an equilibrium (module docstring).  Compiled:
+    the tracking update calls it once per step.
+
+    Parameters
+    ----------
+    a : ndarray, shape (m, 3)
+        Exit points [m] of the taut cables.
+    b : ndarray, shape (m, 3)
+        Their platform anchors [m] at the equilibrium, fixed frame.
+    g : ndarray, shape (3,)
+        Load point [m], fixed frame.
+    tau : ndarray, shape (m,)
+        Tensions [N].
+    rho : ndarray, shape (m,)
+        Cable lengths [m].
+
+    Returns
+    -------
+    ndarray, shape (k, k)
+        ``k = 6 − rank J``: the motions that keep the taut lengths.
 
     References
     ----------
@@ -34,6 +52,23 @@ def reduced_hessian(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray
     .. [2] M. Carricato, J.-P. Merlet, "Stability Analysis of Underconstrained Cable-Driven
        Parallel Robots", IEEE Transactions on Robotics 29(1), 2013.
        (docs/references.bib: carricato2013)
+
+    Examples
+    --------
+    The stable pose of Table 4.3 of Berti (2015): three taut cables leave three motions.
+
+    >>> import numpy as np
+    >>> from taut.dgp import is_stable, load, reduced_hessian, solve_igp
+    >>> from taut.geometry import rotation_matrix
+    >>> from taut.model import example
+    >>> robot = example("suspended-3cable")
+    >>> s = solve_igp(robot, [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061}).solutions[0]
+    >>> R = rotation_matrix(s.orientation, robot.orientation)
+    >>> b = s.position + robot.anchors @ R.T
+    >>> g = s.position + R @ load(robot)[2]
+    >>> H = reduced_hessian(robot.exits, b, g, s.tensions, s.lengths)
+    >>> H.shape, bool(np.linalg.eigvalsh(0.5 * (H + H.T)).min() > 0)
+    ((3, 3), True)
     """
     H = np.zeros((6, 6))
     Jt = np.zeros((tau.size, 6))
@@ -75,13 +110,44 @@ def smallest_eigenvalue(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.nda
 
 
 def is_stable(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray, rho: np.ndarray) -> bool:
-    """Positive-definite reduced Hessian (sufficient condition of §3.2.2); a fully
-    constrained equilibrium (empty null space) is stable.
+    """Whether an equilibrium is stable: its reduced Hessian is positive definite (the
+    sufficient condition of §3.2.2); a fully constrained equilibrium (empty null space) is.
+
+    Parameters
+    ----------
+    a : ndarray, shape (m, 3)
+        Exit points [m] of the taut cables.
+    b : ndarray, shape (m, 3)
+        Their platform anchors [m] at the equilibrium, fixed frame.
+    g : ndarray, shape (3,)
+        Load point [m], fixed frame.
+    tau : ndarray, shape (m,)
+        Tensions [N].
+    rho : ndarray, shape (m,)
+        Cable lengths [m].
+
+    Returns
+    -------
+    bool
 
     References
     ----------
     .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
        interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
        Università di Bologna, 2015, §3.2.2. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.dgp import is_stable, load, reduced_hessian, solve_igp
+    >>> from taut.geometry import rotation_matrix
+    >>> from taut.model import example
+    >>> robot = example("suspended-3cable")
+    >>> s = solve_igp(robot, [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061}).solutions[0]
+    >>> R = rotation_matrix(s.orientation, robot.orientation)
+    >>> b = s.position + robot.anchors @ R.T
+    >>> g = s.position + R @ load(robot)[2]
+    >>> is_stable(robot.exits, b, g, s.tensions, s.lengths)
+    True
     """
     return bool(smallest_eigenvalue(*(np.ascontiguousarray(v, dtype=float) for v in (a, b, g, tau, rho))) > 0.0)

@@ -48,6 +48,7 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut._checks import as_array
 from taut.dgp._formulation import Subproblem, build_subproblem, frame_from_points, load
 from taut.dgp._inverse import IGPSolution
 from taut.dgp._solve import DGPSolution, check_lengths
@@ -319,6 +320,8 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
     refuse_swivels(robot, "tracking")
     if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
         raise TautError("tracking handles spatial rigid platforms without joints")
+    if not isinstance(sol, (DGPSolution, IGPSolution)):
+        raise TautError(f"tracking starts from a DGPSolution or an IGPSolution, got a {type(sol).__name__}")
     tau = np.asarray(sol.tensions, float)
     if tau.shape != (robot.n_cables,):
         raise TautError(f"{robot.name} has {robot.n_cables} cables, the solution has {tau.size} tensions")
@@ -335,32 +338,99 @@ def _solution(s: _State, width: float) -> DGPSolution:
     return DGPSolution(tuple(s.taut), s.p, s.angles, s.tensions, s.stable, width, 0.0)
 
 
-def track(robot: Robot, previous_solution: DGPSolution | IGPSolution, lengths: npt.ArrayLike) -> DGPSolution:
-    """The equilibrium that continues ``previous_solution`` (a :class:`DGPSolution` or an
-    :class:`~taut.dgp.IGPSolution`) at the new cable ``lengths`` (see the module
-    docstring); raises :class:`~taut.errors.TrackingLostError` when it
-    cannot be certified.  ``certificate_width`` is the width of the Krawczyk enclosure;
-    ``uniqueness_radius`` is not computed (0).
+def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths: npt.ArrayLike) -> DGPSolution:
+    """The equilibrium that continues ``solution`` at new cable lengths (module docstring).
+
+    Parameters
+    ----------
+    robot : Robot
+        A spatial rigid platform without joints or swivelling pulleys.
+    solution : DGPSolution or IGPSolution
+        The equilibrium before the change.
+    lengths : array_like, shape (n,)
+        The new cable lengths [m].
+
+    Returns
+    -------
+    DGPSolution
+        Certified: ``certificate_width`` is the width of the Krawczyk enclosure;
+        ``uniqueness_radius`` is not computed (0).
+
+    Raises
+    ------
+    TrackingLostError
+        The new equilibrium cannot be certified (it left the branch, or one taut cable is
+        left: a continuum).
+    TautError
+        A planar, point-mass or jointed robot, lengths that are not ``n`` positive numbers,
+        or a ``solution`` that is not one.
 
     References
     ----------
     .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
        interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
        Università di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    The stable pose of Table 4.3 of Berti (2015), with cable 1 paid out by 1 cm.
+
+    >>> import numpy as np
+    >>> from taut.dgp import solve_igp, track_equilibrium, track_path
+    >>> from taut.model import example
+    >>> robot = example("suspended-3cable")
+    >>> start = solve_igp(robot, [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061}).solutions[0]
+    >>> moved = track_equilibrium(robot, start, np.array(robot.reference.lengths) + [0.01, 0, 0])
+    >>> moved.taut, np.round(moved.position, 3), moved.stable
+    ((0, 1, 2), array([2.753, 3.984, 5.511]), True)
     """
     lengths = check_lengths(robot, lengths)
-    s, width = _step(robot, _state(robot, previous_solution, lengths), lengths)
+    s, width = _step(robot, _state(robot, solution, lengths), lengths)
     return _solution(s, width)
 
 
-def track_path(
-    robot: Robot, start_solution: DGPSolution | IGPSolution, lengths_sequence: npt.ArrayLike
-) -> list[DGPSolution]:
-    """:func:`track` along a sequence of cable lengths (one solution per row)."""
-    try:
-        rows = np.asarray(lengths_sequence, dtype=float)
-    except ValueError as e:
-        raise TautError(f"the lengths sequence is not a table of numbers: {e}") from None
+def track_path(robot: Robot, solution: DGPSolution | IGPSolution, lengths: npt.ArrayLike) -> list[DGPSolution]:
+    """:func:`track_equilibrium` from ``solution`` along a sequence of cable lengths.
+
+    Parameters
+    ----------
+    robot : Robot
+    solution : DGPSolution or IGPSolution
+        The equilibrium at the start.
+    lengths : array_like, shape (T, n)
+        One row of cable lengths [m] per update.
+
+    Returns
+    -------
+    list of DGPSolution
+        One per row.
+
+    Raises
+    ------
+    TrackingLostError
+        An update cannot be certified.
+    TautError
+        Lengths that are not rows of ``n`` positive numbers.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §4.1.2. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.dgp import solve_igp, track_equilibrium, track_path
+    >>> from taut.model import example
+    >>> robot = example("suspended-3cable")
+    >>> start = solve_igp(robot, [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061}).solutions[0]
+    >>> rows = np.array(robot.reference.lengths) + np.linspace(0, 0.02, 5)[:, None] * [1, 0, 0]
+    >>> path = track_path(robot, start, rows)
+    >>> len(path), np.round(path[-1].position, 3)
+    (5, array([2.756, 3.988, 5.515]))
+    """
+    rows = as_array(lengths, "the lengths sequence", finite=False)
     if rows.size == 0:
         return []
     if rows.ndim != 2 or rows.shape[1] != robot.n_cables:
@@ -371,8 +441,8 @@ def track_path(
     for row in rows[~np.all(np.isfinite(rows) & (rows > 0), axis=1)][:1]:
         check_lengths(robot, row)  # raises, naming what is wrong
     out, s = [], None
-    for lengths in rows:
-        s = _state(robot, start_solution, lengths) if s is None else s
-        s, width = _step(robot, s, lengths)
+    for step in rows:
+        s = _state(robot, solution, step) if s is None else s
+        s, width = _step(robot, s, step)
         out.append(_solution(s, width))
     return out

@@ -28,6 +28,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from taut._results import Result
+
 if TYPE_CHECKING:
     from taut.dgp._formulation import Subproblem
 
@@ -41,6 +43,12 @@ if TYPE_CHECKING:
 #: cable is slack at its length (not the border of two taut subsets).
 CAUSES = ("narrow", "singular", "budget", "tension-sign", "domain-border")
 
+#: The box budget of one certified search when none is given — of every sub-problem of the
+#: direct problem (shared by its pieces) and of the inverse problem's search: a bound on
+#: the time and memory of a search that would not end (a continuum of solutions); the
+#: boxes left when it runs out are undecided (``"budget"``).
+MAX_BOXES = 2_000_000
+
 #: Names of the reference-point unknowns of :mod:`taut.dgp._formulation`: the fixed-frame
 #: coordinates of the three reference points, then the normal of their plane.
 REFERENCE_UNKNOWNS = (*(f"q{i}_{c}" for i in (1, 2, 3) for c in "xyz"), "n_x", "n_y", "n_z")
@@ -52,13 +60,45 @@ def _bound(v: float) -> float | None:
 
 
 @dataclass(frozen=True)
-class UndecidedBox:
-    """One undecided box of the sub-problem of the taut cables ``taut`` (0-based): the
-    enclosure ``[lo, hi]`` of its pose unknowns, named by ``variables``, and of the tensions
-    (N) of the taut cables, in the order of ``taut``.  ``points``: for the direct problem,
-    the body-frame coordinates of the reference points ``q1, q2, q3`` whose fixed-frame
-    coordinates are the unknowns ``q1_x … q3_z`` (a pose ``(p, R)`` puts them at
-    ``p + R @ point``); the normal ``n_x, n_y, n_z`` is ``(q2 − q1) × (q3 − q1)``."""
+class UndecidedBox(Result):
+    """One undecided box of a sub-problem: where a solution the result does not list may lie.
+
+    Attributes
+    ----------
+    taut : tuple of int
+        The sub-problem's taut cables (0-based).
+    cause : str
+        One of :data:`CAUSES`.
+    variables : tuple of str
+        Names of the pose unknowns: for the direct problem the fixed-frame coordinates
+        ``q1_x … q3_z`` of the reference points (and the normal ``n_x, n_y, n_z =
+        (q2 − q1) × (q3 − q1)``); for the inverse problem the free position coordinates and
+        the cosine and sine of each free angle.
+    lo, hi : tuple of float
+        The enclosure of the pose unknowns.
+    tension_lo, tension_hi : tuple of float
+        The enclosure of the taut cables' tensions [N], in the order of ``taut``.
+    points : tuple of tuple of float
+        Direct problem: the body-frame coordinates [m] of the reference points ``q1, q2,
+        q3`` (a pose ``(p, R)`` puts them at ``p + R @ point``); empty otherwise.
+
+    References
+    ----------
+    .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
+       interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and
+       Università di Bologna, 2015, §3.1.4–3.2.1. (docs/references.bib: berti2015)
+
+    Examples
+    --------
+    A box budget too small for the inverse problem leaves boxes undecided:
+
+    >>> from taut.dgp import solve_igp
+    >>> from taut.model import example
+    >>> res = solve_igp(example("suspended-3cable"), [0, 1, 2], {"x": 2.75, "y": 3.98, "z": 5.51}, max_boxes=50)
+    >>> box = res.undecided_enclosures[0]
+    >>> res.complete, box.cause, box.variables[:2]
+    (False, 'budget', ('cos(a)', 'sin(a)'))
+    """
 
     taut: tuple[int, ...]
     cause: str  #: one of :data:`CAUSES`
@@ -70,7 +110,9 @@ class UndecidedBox:
     points: tuple[tuple[float, float, float], ...] = ()
 
     def as_dict(self) -> dict:
-        """JSON-ready: ``None`` for an unbounded side."""
+        """The box in plain JSON types, ``None`` for an unbounded side: ``taut`` (0-based),
+        ``cause``, ``enclosure`` (unknown name → ``[lo, hi]``), ``tensions`` (``[lo, hi]``
+        per taut cable) and, for the direct problem, ``reference_points``."""
         d = {
             "taut": list(self.taut),
             "cause": self.cause,

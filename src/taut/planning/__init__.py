@@ -1,7 +1,7 @@
 """Wrench-feasible path planning (Bohigas et al. 2013): higher-dimensional
-continuation (:mod:`.continuation`), A* over its charts (:mod:`.search`, complete),
-AtlasRRT (Jaillet & Porta 2013, :mod:`.atlasrrt`, randomised), and the classified grid of a
-two-dimensional slice (:func:`slice_map`, Fig. 5).
+continuation (:mod:`.continuation`), :func:`plan_path` by A* over its charts
+(``method="astar"``, complete) or AtlasRRT (Jaillet & Porta 2013, ``method="atlasrrt"``,
+randomised), and the classified grid of a two-dimensional slice (:func:`slice_map`, Fig. 5).
 
 References
 ----------
@@ -20,47 +20,65 @@ from typing import TYPE_CHECKING
 from taut._lazy import lazy_exports
 
 if TYPE_CHECKING:
-    from taut.planning._atlasrrt import atlas_rrt, shorten_path
-    from taut.planning._continuation import Atlas, Chart, ImplicitManifold, Polytope, Symmetry, project, tangent_basis
+    from taut.planning._atlasrrt import MAX_NODES, shorten_path
+    from taut.planning._continuation import (
+        MAX_CHARTS,
+        Atlas,
+        ImplicitManifold,
+        ManifoldChart,
+        Polytope,
+        Symmetry,
+        project,
+        tangent_basis,
+    )
     from taut.planning._manifold import POSE_NAMES, WrenchFeasibleManifold
-    from taut.planning._search import PathResult, plan_path, refine_path
+    from taut.planning._plan import METHODS, RADIUS, plan_path
+    from taut.planning._search import PathResult, refine_path
     from taut.planning._slices import SliceMap, slice_map
-    from taut.planning._verify import MAX_POSES, verify_path
+    from taut.planning._verify import MAX_POSES, PathCheck, verify_path
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
-    "atlas_rrt": "taut.planning._atlasrrt",
+    "MAX_NODES": "taut.planning._atlasrrt",
     "shorten_path": "taut.planning._atlasrrt",
     "Atlas": "taut.planning._continuation",
-    "Chart": "taut.planning._continuation",
     "ImplicitManifold": "taut.planning._continuation",
+    "MAX_CHARTS": "taut.planning._continuation",
+    "ManifoldChart": "taut.planning._continuation",
     "Polytope": "taut.planning._continuation",
     "Symmetry": "taut.planning._continuation",
     "project": "taut.planning._continuation",
     "tangent_basis": "taut.planning._continuation",
     "POSE_NAMES": "taut.planning._manifold",
     "WrenchFeasibleManifold": "taut.planning._manifold",
+    "METHODS": "taut.planning._plan",
+    "RADIUS": "taut.planning._plan",
+    "plan_path": "taut.planning._plan",
     "PathResult": "taut.planning._search",
-    "plan_path": "taut.planning._search",
     "refine_path": "taut.planning._search",
     "SliceMap": "taut.planning._slices",
     "slice_map": "taut.planning._slices",
     "MAX_POSES": "taut.planning._verify",
+    "PathCheck": "taut.planning._verify",
     "verify_path": "taut.planning._verify",
 }
 
 __all__ = [
     "Atlas",
-    "Chart",
     "ImplicitManifold",
+    "MAX_CHARTS",
+    "MAX_NODES",
     "MAX_POSES",
+    "METHODS",
+    "ManifoldChart",
     "POSE_NAMES",
+    "PathCheck",
     "PathResult",
     "Polytope",
+    "RADIUS",
     "SliceMap",
     "Symmetry",
     "WrenchFeasibleManifold",
-    "atlas_rrt",
     "plan_path",
     "project",
     "refine_path",

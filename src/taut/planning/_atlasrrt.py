@@ -49,14 +49,16 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_count, as_number, as_rng
 from taut.errors import TautError
-from taut.planning._continuation import Atlas, ImplicitManifold
+from taut.planning._continuation import MAX_CHARTS, Atlas, ImplicitManifold
 from taut.planning._search import PathResult, continuous
 
 __all__ = ["MAX_NODES", "MIN_STEP", "Tree", "atlas_rrt", "shorten_path"]
 
-#: Tree nodes of :func:`atlas_rrt` when no ``max_nodes`` is given: the budget bounds its
-#: memory (one point per node) and its time (one projection per node).
+#: The tree-node budget of AtlasRRT when none is given: with the chart budget, it bounds
+#: the time and memory of a search that finds no path (a random search never proves that
+#: none exists); every step of a walk is a node, one point and one projection.
 MAX_NODES = 20_000
 #: Smallest step ``δ`` as a fraction of the chart radius: a walk across one chart takes up
 #: to ``2 / MIN_STEP`` steps, each a projection on the manifold and a node of the tree.
@@ -202,13 +204,70 @@ def shorten_path(
     atlas: Atlas,
     path: np.ndarray,
     charts: list[int],
+    *,
     step: float,
-    rng: np.random.Generator,
+    seed: int | np.random.Generator = 0,
     attempts: int = 60,
 ) -> tuple[np.ndarray, list[int]]:
-    """Random shortcuts on the manifold: for two random points of ``path`` (continuous, with
-    the chart of each point), walk from one toward the other on the atlas; a walk that
-    arrives and is shorter than the stretch it skips replaces it."""
+    """A path shortened by random shortcuts on the manifold: for two random points of the
+    path, walk from one toward the other on the atlas; a walk that arrives and is shorter
+    than the stretch it skips replaces it.
+
+    Parameters
+    ----------
+    atlas : Atlas
+        An atlas covering the path.
+    path : array_like, shape (N, n)
+        Manifold points, continuous across its symmetry.
+    charts : list of int
+        The chart of each point.
+    step : float
+        Step ``δ`` of the walks, in tangent coordinates.
+    seed : int or numpy.random.Generator, optional
+        The random shortcuts.
+    attempts : int, optional
+        Shortcuts tried.
+
+    Returns
+    -------
+    path : ndarray, shape (M, n)
+        The shortened path, with the same ends.
+    charts : list of int
+        The chart of each point.
+
+    Raises
+    ------
+    TautError
+        A path and charts that do not match, or bad options.
+
+    References
+    ----------
+    .. [1] L. Jaillet, J. M. Porta, "Path planning under kinematic constraints by rapidly
+       exploring manifolds", IEEE Transactions on Robotics 29(1), 2013.
+       (docs/references.bib: jaillet2013)
+
+    Examples
+    --------
+    A detour near the north pole of the unit sphere, in one chart:
+
+    >>> import numpy as np
+    >>> from taut.planning import Atlas, ImplicitManifold, shorten_path
+    >>> sphere = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
+    >>> atlas = Atlas(sphere, [0, 0, 1.0], radius=0.5, vertices=False)
+    >>> xy = np.array([[0, 0], [0.1, 0.15], [0.2, 0.2], [0.3, 0.15], [0.4, 0.0]])
+    >>> path = np.column_stack([xy, np.sqrt(1 - (xy**2).sum(axis=1))])
+    >>> short, charts = shorten_path(atlas, path, [0] * 5, step=0.05, seed=0)
+    >>> def length(p):
+    ...     return round(float(np.linalg.norm(np.diff(p, axis=0), axis=1).sum()), 3)
+    >>> length(path), length(short), np.allclose(short[-1], path[-1])
+    (0.591, 0.411, True)
+    """
+    rng = as_rng(seed)
+    step = as_number(step, "step", positive=True)
+    attempts = as_count(attempts, "attempts", minimum=0)
+    path = as_array(path, "path", shape=(None, atlas.centres.shape[1]))
+    if len(charts) != len(path) or any(not 0 <= c < len(atlas.charts) for c in charts):
+        raise TautError(f"charts: expected one chart of the atlas (0..{len(atlas.charts) - 1}) per point of the path")
     pts = [np.asarray(p, float) for p in path]
     chs = list(charts)
     walker = _Walker(atlas, step, max_charts=len(atlas.charts) + 10 * attempts)
@@ -236,15 +295,16 @@ def atlas_rrt(
     manifold: ImplicitManifold,
     start: npt.ArrayLike,
     goal: npt.ArrayLike,
+    *,
     radius: float,
     step: float | None = None,
     epsilon: float = 0.1,
     metric: np.ndarray | None = None,
-    seed: int = 0,
+    seed: int | np.random.Generator = 0,
     bidirectional: bool = True,
     goal_bias: float = 0.1,
     max_nodes: int = MAX_NODES,
-    max_charts: int = 20_000,
+    max_charts: int = MAX_CHARTS,
     time_limit: float | None = None,
     shorten: bool = False,
     progress: Callable[[int, int | None], None] | None = None,
@@ -253,7 +313,7 @@ def atlas_rrt(
     deterministic for a ``seed``, within ``max_nodes`` tree nodes (every step of a walk is
     a node: the budget bounds the projections, hence the time and the memory),
     ``max_charts`` charts and ``time_limit`` seconds.  ``step`` is ``δ`` (default
-    ``radius / 4``, at least :data:`MIN_STEP` times the radius).  The result's ``expanded``
+    ``radius / 4``, at least :data:`MIN_STEP` times the radius).  The result's ``nodes``
     counts tree nodes; ``exhausted`` is always ``False``.
 
     ``progress(nodes, None)`` is called every 50 iterations, ``progress(nodes, nodes)`` at the end.
@@ -278,8 +338,8 @@ def atlas_rrt(
         raise TautError("AtlasRRT needs max_nodes >= 2 and max_charts >= 2")
     if np.linalg.norm(manifold.function(goal)) > 1e-6 * (1 + np.linalg.norm(goal)):
         raise TautError("the goal point is not on the manifold (|F(goal)| too large)")
-    rng = np.random.default_rng(seed)
-    atlas = Atlas(manifold, start, radius, epsilon, metric=metric, vertices=False)
+    rng = as_rng(seed)
+    atlas = Atlas(manifold, start, radius=radius, epsilon=epsilon, metric=metric, vertices=False)
     goal_chart = atlas.add_chart(goal)
     trees = [Tree(atlas.local(0, start), 0), Tree(atlas.local(goal_chart, goal), goal_chart)]
     walker = _Walker(atlas, delta, max_charts)
@@ -325,11 +385,13 @@ def atlas_rrt(
             False,
             np.empty((0, start.size)),
             len(atlas.charts),
-            nodes,
+            0,
             False,
             float("nan"),
             time.perf_counter() - t0,
             atlas,
+            "atlasrrt",
+            nodes,
         )
     a, la, lb = joined
     ia, ib = trees[a].branch(la), trees[1 - a].branch(lb)[::-1]
@@ -339,7 +401,16 @@ def atlas_rrt(
         pts, chs = pts[::-1], chs[::-1]
     path = continuous(atlas, np.array(pts))
     if shorten:
-        path, chs = shorten_path(atlas, path, chs, delta, rng)
+        path, chs = shorten_path(atlas, path, chs, step=delta, seed=rng)
     return PathResult(
-        True, path, len(atlas.charts), nodes, False, _length(atlas, path), time.perf_counter() - t0, atlas
+        True,
+        path,
+        len(atlas.charts),
+        0,
+        False,
+        _length(atlas, path),
+        time.perf_counter() - t0,
+        atlas,
+        "atlasrrt",
+        nodes,
     )

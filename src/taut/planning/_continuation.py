@@ -50,17 +50,19 @@ References
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import KW_ONLY, dataclass, field
 
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_count, as_number
 from taut.errors import TautError
 
 __all__ = [
+    "MAX_CHARTS",
     "Atlas",
-    "Chart",
     "ImplicitManifold",
+    "ManifoldChart",
     "Polytope",
     "Symmetry",
     "graph_tangent",
@@ -68,6 +70,14 @@ __all__ = [
     "project_graph",
     "tangent_basis",
 ]
+
+
+#: The chart budget of an atlas (:meth:`Atlas.complete`) and of a path search
+#: (:func:`taut.planning.plan_path`) when none is given: charts hold a polytope each, so the
+#: budget bounds memory as well as time.  A chart costs a few projections on the manifold and
+#: the cropping of its neighbours' polytopes: milliseconds on a 2-D slice, about 0.2 s in six
+#: dimensions, where a chart has dozens of neighbours.
+MAX_CHARTS = 20_000
 
 
 @dataclass(frozen=True)
@@ -79,12 +89,50 @@ class Symmetry:
     ``flip = (a, b)`` is given, the half-turn ``x[a] += period_a / 2``, ``x[b] → −x[b]``
     (both ``a`` and ``b`` periodic), whose canonical representatives have
     ``x[b] ∈ [0, period_b / 2]``: the tilt-and-torsion identity ``(φ, θ) ≡ (φ + π, −θ)``.
+
+    Parameters
+    ----------
+    periods : tuple of (int, float, float)
+        ``(coordinate, period, low)`` of every periodic coordinate.
+    flip : (int, int), optional
+        The coordinates ``(a, b)`` of the half-turn.
+
+    Raises
+    ------
+    TautError
+        Periods that are not positive, one per coordinate, or a flip of coordinates that are
+        not both periodic.
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    An angle of period 2π with canonical window ``[−π, π)``:
+
+    >>> import numpy as np
+    >>> from taut.planning import Symmetry
+    >>> x, flipped = Symmetry(((0, 2 * np.pi, -np.pi),)).canonical(np.array([4.0, 1.0]))
+    >>> np.round(x, 4), flipped
+    (array([-2.2832,  1.    ]), False)
     """
 
     periods: tuple[tuple[int, float, float], ...]
     flip: tuple[int, int] | None = None
 
     def __post_init__(self) -> None:
+        try:
+            periods = tuple((int(i), float(p), float(low)) for i, p, low in self.periods)
+            flip = None if self.flip is None else (int(self.flip[0]), int(self.flip[1]))
+        except (TypeError, ValueError):
+            raise TautError(
+                f"symmetry: expected periods ((index, period, low), ...) and a flip (a, b), got {self.periods}, {self.flip}"
+            ) from None
+        object.__setattr__(self, "periods", periods)
+        object.__setattr__(self, "flip", flip)
         idx = [i for i, _, _ in self.periods]
         if any(p <= 0 for _, p, _ in self.periods) or len(set(idx)) != len(idx):
             raise TautError(f"symmetry periods must be positive, one per coordinate: {self.periods}")
@@ -149,14 +197,43 @@ class Symmetry:
 class ImplicitManifold:
     """The solution set of ``F(x) = 0`` with ``F: R^n → R^(n−k)``, inside a box.
 
-    ``symmetry`` is a group of isometries under which ``F = 0`` and the box are invariant;
-    ``graph`` (optional) maps ``k`` coordinates ``x[graph_index]`` in closed form to the
-    point of the manifold over them (``None`` where there is none).
+    Parameters
+    ----------
+    function : callable
+        ``F(x)``, shape ``(n − k,)``.
+    jacobian : callable
+        ``F_x(x)``, shape ``(n − k, n)``.
+    dim : int
+        The manifold's dimension ``k``.
+    lower, upper : ndarray, shape (n,), optional
+        The box (``±∞`` for no bound); charts centred outside it are never expanded.
+    symmetry : Symmetry, optional
+        A group of isometries under which ``F = 0`` and the box are invariant.
+    graph : callable, optional
+        Maps the ``k`` coordinates ``x[graph_index]`` in closed form to the point of the
+        manifold over them (``None`` where there is none): projections then solve for those
+        coordinates alone.
+    graph_index : ndarray of int, shape (k,), optional
+
+    References
+    ----------
+    .. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
+       k-manifolds", International Journal of Bifurcation and Chaos 12(3), 2002.
+       (docs/references.bib: henderson2002)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.planning import ImplicitManifold
+    >>> sphere = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
+    >>> sphere.in_box(np.array([0.0, 0.0, 1.0]))
+    True
     """
 
     function: Callable[[np.ndarray], np.ndarray]  #: ``F(x)``, shape ``(n − k,)``
     jacobian: Callable[[np.ndarray], np.ndarray]  #: ``F_x(x)``, shape ``(n − k, n)``
     dim: int  #: ``k``
+    _: KW_ONLY
     lower: np.ndarray | None = None  #: box bounds, ``(n,)`` (``−∞`` for none)
     upper: np.ndarray | None = None
     symmetry: Symmetry | None = None
@@ -164,13 +241,52 @@ class ImplicitManifold:
     graph_index: np.ndarray | None = None
 
     def in_box(self, x: np.ndarray) -> bool:
+        """Whether the point ``x`` ``(n,)`` lies in the box."""
         lo = -np.inf if self.lower is None else self.lower
         hi = np.inf if self.upper is None else self.upper
         return bool(np.all(x >= lo) and np.all(x <= hi))
 
 
 def tangent_basis(jac: np.ndarray, k: int) -> np.ndarray:
-    """Orthonormal basis ``(n, k)`` of the null space of ``jac`` (complete QR of ``jacᵀ``)."""
+    """An orthonormal basis of the null space of a Jacobian: the tangent space of a manifold.
+
+    Parameters
+    ----------
+    jac : array_like, shape (n − k, n)
+        The Jacobian ``F_x`` at a point.
+    k : int
+        The dimension of the null space.
+
+    Returns
+    -------
+    ndarray, shape (n, k)
+        The last ``k`` columns of the complete QR factorisation of ``jacᵀ``.
+
+    Raises
+    ------
+    TautError
+        A ``jac`` that is not a matrix, or ``k`` larger than ``n``.
+
+    References
+    ----------
+    .. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
+       k-manifolds", International Journal of Bifurcation and Chaos 12(3), 2002.
+       (docs/references.bib: henderson2002)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.planning import tangent_basis
+    >>> Q = tangent_basis(np.array([[0.0, 0.0, 1.0]]), 2)
+    >>> np.abs(np.round(Q, 3))
+    array([[0., 1.],
+           [1., 0.],
+           [0., 0.]])
+    """
+    jac = as_array(jac, "jacobian", shape=(None, None))
+    k = as_count(k, "k")
+    if k > jac.shape[1]:
+        raise TautError(f"k: a null space of dimension {k} in R^{jac.shape[1]} does not exist")
     q, _ = np.linalg.qr(jac.T, mode="complete")
     return q[:, q.shape[1] - k :]
 
@@ -179,25 +295,80 @@ def project(
     manifold: ImplicitManifold,
     guess: np.ndarray,
     basis: np.ndarray,
+    *,
     tol: float = 1e-10,
-    max_iter: int = 25,
-    max_step: float = np.inf,
+    max_steps: int = 25,
+    max_distance: float = np.inf,
     newton_fallback: bool = True,
 ) -> np.ndarray | None:
-    """Newton on ``[F(x); Ψᵀ (x − guess)] = 0`` from ``guess``; ``None`` if it fails.
+    """The projection of a point onto a manifold orthogonally to a tangent basis: Newton on
+    ``[F(x); Ψᵀ (x − guess)] = 0`` from ``guess``.
 
-    ``max_step`` rejects solutions farther than that from ``guess`` (a jump to another
-    sheet of the manifold).  With a ``manifold.graph``, the same point is first sought by
-    :func:`project_graph` (whose iterates must stay where the graph is defined: near the
-    boundary of that domain it may fail where Newton succeeds).
+    With a ``manifold.graph``, the same point is first sought by :func:`project_graph`
+    (whose iterates must stay where the graph is defined: near the boundary of that domain
+    it may fail where Newton succeeds).
+
+    Parameters
+    ----------
+    manifold : ImplicitManifold
+    guess : array_like, shape (n,)
+        The point to project.
+    basis : array_like, shape (n, k)
+        The tangent basis ``Ψ``; the projection moves orthogonally to it.
+    tol : float, optional
+        ``‖F(x)‖ ≤ tol (1 + ‖x‖)`` ends the iteration.
+    max_steps : int, optional
+        Newton steps before giving up.
+    max_distance : float, optional
+        Solutions farther than this from ``guess`` are rejected (a jump to another sheet of
+        the manifold).
+    newton_fallback : bool, optional
+        Try Newton on ``F`` when the graph's projection fails.
+
+    Returns
+    -------
+    ndarray, shape (n,) or None
+        The manifold point, or ``None`` when the iteration fails.
+
+    Raises
+    ------
+    TautError
+        Arrays of mismatched shapes, or a bad ``tol`` or ``max_steps``.
+
+    References
+    ----------
+    .. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
+       k-manifolds", International Journal of Bifurcation and Chaos 12(3), 2002.
+       (docs/references.bib: henderson2002)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.planning import ImplicitManifold
+    >>> sphere = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
+    >>> from taut.planning import project
+    >>> project(sphere, np.array([0.0, 0.0, 1.2]), np.eye(3)[:, :2])
+    array([0., 0., 1.])
     """
+    guess = as_array(guess, "guess", shape=(None,))
+    basis = as_array(basis, "basis", shape=(guess.size, None))
+    tol = as_number(tol, "tol", positive=True)
+    max_steps = as_count(max_steps, "max_steps")
     if manifold.graph is not None and manifold.graph_index is not None:
-        x = project_graph(manifold.graph, manifold.graph_index, guess, basis, tol, max_iter, max_step)
+        x = project_graph(
+            manifold.graph,
+            manifold.graph_index,
+            guess,
+            basis,
+            tol=tol,
+            max_steps=max_steps,
+            max_distance=max_distance,
+        )
         if x is not None or not newton_fallback:
             return x
     x = np.array(guess, dtype=float)
     n = x.size
-    for _ in range(max_iter):
+    for _ in range(max_steps):
         f = manifold.function(x)
         g = np.concatenate([f, basis.T @ (x - guess)])
         if not np.all(np.isfinite(g)):
@@ -210,11 +381,11 @@ def project(
         except np.linalg.LinAlgError:
             return None
         x = x + dx
-        if not np.all(np.isfinite(x)) or np.linalg.norm(x - guess) > max_step:
+        if not np.all(np.isfinite(x)) or np.linalg.norm(x - guess) > max_distance:
             return None
     else:
         return None
-    if x.size != n or np.linalg.norm(x - guess) > max_step:
+    if x.size != n or np.linalg.norm(x - guess) > max_distance:
         return None
     return x
 
@@ -242,9 +413,10 @@ def project_graph(
     index: np.ndarray,
     guess: np.ndarray,
     basis: np.ndarray,
+    *,
     tol: float = 1e-10,
-    max_iter: int = 25,
-    max_step: float = np.inf,
+    max_steps: int = 25,
+    max_distance: float = np.inf,
 ) -> np.ndarray | None:
     """The point ``x = graph(q)`` with ``Ψᵀ (x − guess) = 0``, by Broyden's method on ``q``.
 
@@ -259,9 +431,9 @@ def project_graph(
         return None
     r = basis.T @ (x - guess)
     scale = tol * (1.0 + float(np.linalg.norm(guess)))
-    for _ in range(max_iter):
+    for _ in range(max_steps):
         if np.linalg.norm(r) <= scale:
-            return x if np.linalg.norm(x - guess) <= max_step else None
+            return x if np.linalg.norm(x - guess) <= max_distance else None
         dq = -H @ r
         x_new = graph(q + dq)
         if x_new is None:
@@ -273,7 +445,7 @@ def project_graph(
         if denom != 0.0:  # Broyden's "good" update of the inverse
             H = H + np.outer(dq - Hdr, dq @ H) / denom
         q, x, r = q + dq, x_new, r_new
-        if np.linalg.norm(x - guess) > max_step:
+        if np.linalg.norm(x - guess) > max_distance:
             return None
     return None
 
@@ -291,9 +463,40 @@ class Polytope:
     With ``vertices=False`` only the planes are kept (enough for :meth:`contains`, all that
     AtlasRRT asks of a polytope): the vertex lists, which a 6-D polytope makes long, are
     never enumerated, and :meth:`cut` reports whether the plane crosses the cube.
+
+    Parameters
+    ----------
+    k : int
+        Dimension.
+    half_side : float
+        The polytope starts as the cube ``[−half_side, half_side]^k``.
+    vertices : bool, optional
+        Keep the vertex lists.
+
+    Raises
+    ------
+    TautError
+        ``k < 1`` or ``half_side ≤ 0``.
+
+    References
+    ----------
+    .. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
+       k-manifolds", International Journal of Bifurcation and Chaos 12(3), 2002.
+       (docs/references.bib: henderson2002)
+
+    Examples
+    --------
+    The square ``[−1, 1]²`` loses its corner ``(1, 1)`` to the plane ``u + v ≤ 1``:
+
+    >>> import numpy as np
+    >>> from taut.planning import Polytope
+    >>> P = Polytope(2, 1.0)
+    >>> P.cut(np.array([1.0, 1.0]), 1.0, 4), len(P.vertices), P.contains(np.array([0.9, 0.9]))
+    (True, 5, False)
     """
 
-    def __init__(self, k: int, half_side: float, vertices: bool = True):
+    def __init__(self, k: int, half_side: float, *, vertices: bool = True):
+        k, half_side = as_count(k, "k"), as_number(half_side, "half_side", positive=True)
         corners = np.array(np.meshgrid(*[[-1.0, 1.0]] * k, indexing="ij")).reshape(k, -1).T
         self.k = k
         self.has_vertices = vertices
@@ -376,7 +579,44 @@ class Polytope:
 
 
 @dataclass
-class Chart:
+class ManifoldChart:
+    """A chart of an :class:`Atlas`: a tangent space at a point of the manifold, a ball
+    and the polytope its neighbours crop.
+
+    Attributes
+    ----------
+    centre : ndarray, shape (n,)
+        The point of the manifold (canonical under its symmetry).
+    basis : ndarray, shape (n, k)
+        Orthonormal basis ``Ψ`` of the tangent space at ``centre``.
+    radius : float
+        Radius of the ball of tangent coordinates.
+    polytope : Polytope
+        The tangent coordinates the chart covers.
+    frontier : bool
+        Centre outside the box, or no step forward: never expanded.
+    neighbours : dict of int to float
+        Chart index → edge cost (distance in the atlas metric).
+    expanded : bool
+        :meth:`Atlas.grow` has expanded it.
+
+    References
+    ----------
+    .. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
+       k-manifolds", International Journal of Bifurcation and Chaos 12(3), 2002.
+       (docs/references.bib: henderson2002)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.planning import Atlas, ImplicitManifold
+    >>> circle = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 1)
+    >>> atlas = Atlas(circle, [1.0, 0.0], radius=0.5)
+    >>> chart = atlas.charts[0]
+    >>> chart.centre, np.abs(chart.basis.ravel()), chart.closed
+    (array([1., 0.]), array([0., 1.]), False)
+    """
+
     centre: np.ndarray
     basis: np.ndarray
     radius: float
@@ -387,7 +627,16 @@ class Chart:
 
     @property
     def closed(self) -> bool:
+        """No vertex of the polytope lies outside the ball (or the chart is a frontier)."""
         return self.frontier or self.polytope.exterior(self.radius).size == 0
+
+
+def _metric(metric: npt.ArrayLike, n: int) -> np.ndarray:
+    """The ``metric`` coordinates as indices into points of ``R^n``."""
+    idx = np.asarray(metric)
+    if idx.ndim != 1 or idx.size == 0 or idx.dtype.kind not in "iu" or idx.min() < 0 or idx.max() >= n:
+        raise TautError(f"metric: expected indices of coordinates 0..{n - 1}, got {metric!r}")
+    return idx
 
 
 class Atlas:
@@ -401,6 +650,28 @@ class Atlas:
     polytopes as planes only (:class:`Polytope`): charts can then be tested for membership
     but not expanded (:meth:`grow`), as AtlasRRT uses them.
 
+    Parameters
+    ----------
+    manifold : ImplicitManifold
+    x0 : array_like, shape (n,)
+        A point of the manifold: the centre of the first chart.
+    radius : float
+        Chart radius (the resolution of the atlas).
+    epsilon : float, optional
+        ``0 < epsilon < 1``: the largest distance between a tangent point and its
+        projection, and tangent-space change, of a chart and its child.
+    min_step : float, optional
+        The fraction of ``radius`` below which a direction is abandoned.
+    metric : array_like of int, optional
+        The coordinates in which edge costs are measured (default all).
+    vertices : bool, optional
+        Keep the polytopes' vertices, as :meth:`grow` needs.
+
+    Raises
+    ------
+    TautError
+        ``x0`` not on the manifold (or not a point of its box's size), or bad options.
+
     References
     ----------
     .. [1] M. E. Henderson, "Multiple parameter continuation: Computing implicitly defined
@@ -409,30 +680,51 @@ class Atlas:
     .. [2] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
        Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
        Mechanisms and Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    The unit circle covered by charts of radius 0.5 (steps shrink with the curvature):
+
+    >>> import numpy as np
+    >>> from taut.planning import Atlas, ImplicitManifold
+    >>> circle = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 1)
+    >>> atlas = Atlas(circle, [1.0, 0.0], radius=0.5)
+    >>> atlas.complete(), len(atlas.charts)
+    (True, 24)
     """
 
     def __init__(
         self,
         manifold: ImplicitManifold,
         x0: npt.ArrayLike,
+        *,
         radius: float,
         epsilon: float = 0.1,
         min_step: float = 0.05,
         metric: np.ndarray | None = None,
         vertices: bool = True,
     ) -> None:
-        x0 = np.asarray(x0, dtype=float)
+        x0 = as_array(x0, "the start point", shape=(None,))
+        radius, epsilon = as_number(radius, "radius"), as_number(epsilon, "epsilon")
         if radius <= 0 or not 0 < epsilon < 1:
             raise TautError(f"atlas needs radius > 0 and 0 < epsilon < 1, got {radius}, {epsilon}")
+        min_step = as_number(min_step, "min_step", positive=True)
+        for bound in (manifold.lower, manifold.upper):
+            if bound is not None and np.shape(bound) != x0.shape:
+                raise TautError(f"the start point has {x0.size} coordinates, the manifold's box {np.shape(bound)}")
         self.manifold = manifold
         self.radius = float(radius)
         self.epsilon = float(epsilon)
         self.min_step = float(min_step)
         self.vertices = vertices
-        self.metric = np.arange(x0.size) if metric is None else np.asarray(metric)
-        self.charts: list[Chart] = []
+        self.metric = np.arange(x0.size) if metric is None else _metric(metric, x0.size)
+        self.charts: list[ManifoldChart] = []
         self._centres = np.empty((0, x0.size))
-        if np.linalg.norm(manifold.function(x0)) > 1e-6 * (1 + np.linalg.norm(x0)):
+        try:
+            residual = np.linalg.norm(manifold.function(x0))
+        except (TypeError, ValueError, IndexError) as e:
+            raise TautError(f"the manifold's function fails at the start point {x0.tolist()}: {e}") from None
+        if residual > 1e-6 * (1 + np.linalg.norm(x0)):
             raise TautError("the start point is not on the manifold (|F(x0)| too large)")
         self.add_chart(x0)
 
@@ -467,7 +759,7 @@ class Atlas:
         """Distance in the ``metric`` coordinates between ``y`` and the nearest image of ``x``."""
         return float(np.linalg.norm((self.near(x, y)[0][0] - y)[self.metric]))
 
-    def add_chart(self, x: np.ndarray, basis: np.ndarray | None = None) -> int:
+    def add_chart(self, x: np.ndarray, *, basis: np.ndarray | None = None) -> int:
         """Add the chart centred at (the canonical image of) ``x`` and crop it against its
         overlapping charts."""
         basis = self._basis(x) if basis is None else basis
@@ -476,8 +768,12 @@ class Atlas:
             basis = self.manifold.symmetry.tangent(basis, flipped)
         k = self.manifold.dim
         # the cube strictly encloses the ball, also for k = 1
-        chart = Chart(
-            x, basis, self.radius, Polytope(k, 1.05 * self.radius, self.vertices), frontier=not self.manifold.in_box(x)
+        chart = ManifoldChart(
+            x,
+            basis,
+            self.radius,
+            Polytope(k, 1.05 * self.radius, vertices=self.vertices),
+            frontier=not self.manifold.in_box(x),
         )
         j = len(self.charts)
         if j:
@@ -489,7 +785,7 @@ class Atlas:
         self._centres = np.vstack([self._centres, x])
         return j
 
-    def _crop_pair(self, i: int, new: Chart, j: int) -> None:
+    def _crop_pair(self, i: int, new: ManifoldChart, j: int) -> None:
         old = self.charts[i]
         near, flipped = self.near(old.centre, new.centre)
         old_basis = old.basis
@@ -538,11 +834,11 @@ class Atlas:
         while alpha >= self.min_step * chart.radius:
             u = alpha * direction
             guess = chart.centre + chart.basis @ u
-            x = project(self.manifold, guess, chart.basis, max_step=self.epsilon)
+            x = project(self.manifold, guess, chart.basis, max_distance=self.epsilon)
             if x is not None:
                 basis = self._basis(x)
                 if np.linalg.svd(chart.basis.T @ basis, compute_uv=False).min() >= 1 - self.epsilon:
-                    j = self.add_chart(x, basis)
+                    j = self.add_chart(x, basis=basis)
                     if j not in chart.neighbours:  # no cut happened (should not): force one
                         chart.polytope.cut(2 * u, float(u @ u), 2 * self.manifold.dim + j)
                         c = self.cost(x, chart.centre)
@@ -552,7 +848,7 @@ class Atlas:
             alpha *= 0.5
         return None
 
-    def complete(self, max_charts: int = 100_000) -> bool:
+    def complete(self, *, max_charts: int = MAX_CHARTS) -> bool:
         """Expand every chart until all are closed; ``False`` if ``max_charts`` was hit."""
         i = 0
         while i < len(self.charts):
@@ -569,7 +865,9 @@ class Atlas:
     def centres(self) -> np.ndarray:
         return self._centres
 
-    def chart_map(self, i: int, u: np.ndarray, newton_fallback: bool = True, tol: float = 1e-10) -> np.ndarray | None:
+    def chart_map(
+        self, i: int, u: np.ndarray, *, newton_fallback: bool = True, tol: float = 1e-10
+    ) -> np.ndarray | None:
         """The manifold point of tangent coordinates ``u`` in chart ``i`` (see :func:`project`
         for ``newton_fallback`` and ``tol``)."""
         c = self.charts[i]
@@ -578,11 +876,11 @@ class Atlas:
             c.centre + c.basis @ u,
             c.basis,
             tol=tol,
-            max_step=max(self.epsilon, 2 * float(np.linalg.norm(u))),
+            max_distance=max(self.epsilon, 2 * float(np.linalg.norm(u))),
             newton_fallback=newton_fallback,
         )
 
-    def reaches(self, i: int, x: np.ndarray, tol: float = 1e-6) -> bool:
+    def reaches(self, i: int, x: np.ndarray, *, tol: float = 1e-6) -> bool:
         """Whether the map of chart ``i`` reaches the manifold point ``x`` (or an image of it)
         within its ball."""
         c = self.charts[i]

@@ -45,12 +45,13 @@ References
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import KW_ONLY, dataclass, field
 from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_number
 from taut.errors import InfeasiblePoseError, PoseError, TautError
 from taut.kinematics import refuse_swivels
 from taut.planning._continuation import ImplicitManifold, Symmetry
@@ -60,6 +61,7 @@ if TYPE_CHECKING:
 
 __all__ = ["POSE_NAMES", "WrenchFeasibleManifold", "rotation_derivatives"]
 
+#: Names of the pose coordinates of the planner: position, then tilt-and-torsion angles.
 POSE_NAMES = ("x", "y", "z", "phi", "theta", "sigma")
 
 # variable blocks of x
@@ -120,6 +122,18 @@ def _rotation(tau: np.ndarray) -> np.ndarray:
     return _rz(phi)[0] @ _ry(theta)[0] @ _rz(sigma - phi)[0]
 
 
+def _block(value: object, what: str, shape: tuple[int, ...], *, finite: bool = True) -> np.ndarray:
+    """``value`` as a float array of ``shape`` (given flat, or a scalar for every entry when
+    ``shape`` is one axis)."""
+    arr = as_array(value, what, finite=finite)
+    size = int(np.prod(shape))
+    if arr.size == 1 and len(shape) == 1:
+        return np.full(shape, float(arr.reshape(())))
+    if arr.size != size:
+        raise TautError(f"{what}: expected {size} numbers {shape}, got shape {arr.shape}")
+    return arr.reshape(shape).copy()
+
+
 def _skew(v: np.ndarray) -> np.ndarray:
     return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
 
@@ -131,12 +145,57 @@ class WrenchFeasibleManifold:
     (the set ``(ŵ − ŵ_0)ᵀ E (ŵ − ŵ_0) ≤ 1``), tension and length bounds, and the pose
     coordinates ``fixed`` (names of :data:`POSE_NAMES` → value) of a slice.
 
+    Parameters
+    ----------
+    a, b : array_like, shape (6, 3)
+        Base (exit) points and platform points [m].
+    w0 : array_like, shape (6,)
+        Nominal wrench ``ŵ_0`` on the platform, about ``wrench_point``.
+    E : array_like, shape (6, 6)
+        Symmetric positive definite matrix of the wrench ellipsoid.
+    f_min, f_max : array_like, shape (6,) or scalar
+        Tension bounds [N] (``f_max`` finite).
+    rho_min, rho_max : array_like, shape (6,) or scalar
+        Length bounds [m], ``0 < ρ_min < ρ_max``.
+    wrench_point : array_like, shape (3,), optional
+        Platform point of the nominal wrench.
+    fixed : mapping of str to float, optional
+        The fixed pose coordinates of a slice.
+    slack_max : float, optional
+        Upper bound of ``s_i, t_i, g_i`` that keeps atlases finite.
+    weights : tuple of float, optional
+        Scales of the variable blocks in the coordinates of :meth:`implicit`.
+    phi_window : (float, float), optional
+        Canonical window of ``φ``, of length 2π.
+
+    Raises
+    ------
+    TautError
+        Arrays of the wrong size, an ``E`` that is not positive definite, or bounds that do
+        not bracket a feasible set.
+    PoseError
+        Fixed coordinates that are not pose coordinates with finite values.
+
     References
     ----------
     .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
        Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
        Mechanisms and Machine Science 12, Springer, 2013, §2–3, Eqs. 1–8.
        (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    The slice of the Robocrane's experiment 1 (§5): position and torsion fixed, ``(φ, θ)``
+    free.
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.planning import WrenchFeasibleManifold
+    >>> robot = example("robocrane")
+    >>> M = WrenchFeasibleManifold.from_robot(robot, fixed=dict(x=0.0, y=0.0, z=2.0, sigma=7 * np.pi / 36))
+    >>> y = M.lift(robot.reference.poses["q1"])
+    >>> M.dim, np.round(M.pose(y), 4)
+    (2, array([ 0.    ,  0.    ,  2.    , -0.5   ,  0.9   ,  0.6109]))
     """
 
     #: names of the pose coordinates, in the order of a pose ``(6,)``
@@ -150,8 +209,9 @@ class WrenchFeasibleManifold:
     f_max: np.ndarray
     rho_min: np.ndarray
     rho_max: np.ndarray
+    _: KW_ONLY
     wrench_point: np.ndarray = field(default_factory=lambda: np.zeros(3))
-    fixed: dict[str, float] = field(default_factory=dict)
+    fixed: Mapping[str, float] = field(default_factory=dict)
     slack_max: float = 1e2  #: upper bound on s_i, t_i (and g_i) that keeps atlases finite
     #: weights of the variable blocks (p, τ, R, u, ρ, g, f_0, v, s, t) in the coordinates of
     #: :meth:`implicit`: a linear change of variables that keeps chart steps in pose space
@@ -162,19 +222,22 @@ class WrenchFeasibleManifold:
     phi_window: tuple[float, float] = (-np.pi, np.pi)
 
     def __post_init__(self) -> None:
-        self.a = np.asarray(self.a, float).reshape(6, 3)
-        self.b = np.asarray(self.b, float).reshape(6, 3)
-        self.c = self.b - np.asarray(self.wrench_point, float)
-        self.w0 = np.asarray(self.w0, float).reshape(6)
-        self.E = np.asarray(self.E, float).reshape(6, 6)
+        self.a = _block(self.a, "exit points a", (6, 3))
+        self.b = _block(self.b, "platform points b", (6, 3))
+        self.c = self.b - _block(self.wrench_point, "wrench_point", (3,))
+        self.w0 = _block(self.w0, "nominal wrench w0", (6,))
+        self.E = _block(self.E, "wrench ellipsoid matrix E", (6, 6))
         if not (np.allclose(self.E, self.E.T) and np.all(np.linalg.eigvalsh(self.E) > 0)):
             raise TautError("the wrench ellipsoid matrix E must be symmetric positive definite")
         self._E_inv = np.linalg.inv(self.E)
         for name in ("f_min", "f_max", "rho_min", "rho_max"):
-            setattr(self, name, np.broadcast_to(np.asarray(getattr(self, name), float), (6,)).copy())
+            setattr(self, name, _block(getattr(self, name), name, (6,), finite=False))
+        if not isinstance(self.fixed, Mapping):
+            raise PoseError(f"fixed: expected a mapping of pose coordinates to values, got {self.fixed!r}")
         bad = set(self.fixed) - set(POSE_NAMES)
         if bad:
             raise PoseError(f"cannot fix {sorted(bad)}: pose coordinates are {', '.join(POSE_NAMES)}")
+        self.fixed = {n: as_number(v, f"fixed {n}", error=PoseError) for n, v in self.fixed.items()}
         if not (
             np.all(self.rho_min > 0)
             and np.all(self.rho_max > self.rho_min)
@@ -200,12 +263,34 @@ class WrenchFeasibleManifold:
 
     @classmethod
     def from_robot(
-        cls, robot: Robot, E: np.ndarray | None = None, fixed: Mapping[str, float] | None = None, **kw: Any
+        cls, robot: Robot, *, E: np.ndarray | None = None, fixed: Mapping[str, float] | None = None, **kw: Any
     ) -> WrenchFeasibleManifold:
-        """The manifold of a 6-cable spatial robot file: exits ``a``, anchors ``b``, the
+        """The manifold of a 6-cable spatial robot: exits ``a``, anchors ``b``, the
         platform's constant ``wrench`` about ``wrench_point`` as ``ŵ_0``, the cables'
         tension and length bounds (a zero lower length bound becomes 1e-6: Eq. (8) needs
-        ``ρ_min > 0``), and ``E`` (default ``10⁴ I``, §5)."""
+        ``ρ_min > 0``).
+
+        Parameters
+        ----------
+        robot : Robot
+            A rigid 6-cable spatial robot in tilt-and-torsion angles with a constant
+            platform wrench.
+        E : array_like, shape (6, 6), optional
+            The wrench ellipsoid matrix (default ``10⁴ I``, §5).
+        fixed : mapping of str to float, optional
+            The fixed pose coordinates of a slice (:data:`POSE_NAMES`).
+        **kw
+            Further fields (``slack_max``, ``weights``, ``phi_window``).
+
+        Returns
+        -------
+        WrenchFeasibleManifold
+
+        Raises
+        ------
+        TautError
+            A robot the planner does not handle.
+        """
         refuse_swivels(robot, "wrench-feasible path planning")
         if robot.dimension != 3 or robot.n_cables != 6 or robot.is_point_mass or robot.n_joints:
             raise TautError(f"{robot.name}: wrench-feasible path planning needs a rigid 6-cable spatial robot")
@@ -225,7 +310,7 @@ class WrenchFeasibleManifold:
             rho_min=np.maximum([lo for lo, _ in lengths], 1e-6),
             rho_max=np.array([hi for _, hi in lengths], float),
             wrench_point=np.zeros(3) if plat.wrench_point is None else np.asarray(plat.wrench_point, float),
-            fixed=dict(fixed or {}),
+            fixed=fixed or {},
             **kw,
         )
 
@@ -432,7 +517,7 @@ class WrenchFeasibleManifold:
         """The free vector of the point of the slice over ``pose`` (Eqs. 1–8 solved in closed
         form, angles made :meth:`canonical`); :class:`InfeasiblePoseError` if the pose is not
         wrench-feasible."""
-        q = np.asarray(pose, float).reshape(-1)
+        q = as_array(pose, "pose", finite=False, error=PoseError).reshape(-1)
         if q.size != 6 or not np.all(np.isfinite(q)):
             raise PoseError(f"a pose is [x, y, z, phi, theta, sigma], got {pose!r}")
         if not {"phi", "theta"} & set(self.fixed):

@@ -30,27 +30,96 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_number
+from taut._results import Result, jsonable
 from taut.errors import TautError
-from taut.planning._continuation import Atlas, ImplicitManifold
+from taut.planning._continuation import MAX_CHARTS, Atlas, ImplicitManifold
 
-__all__ = ["MAX_CHARTS", "PathResult", "continuous", "plan_path", "refine_path"]
-
-#: Charts of :func:`plan_path` when no ``max_charts`` is given.  A chart costs a few
-#: projections on the manifold and the cropping of its neighbours' polytopes: milliseconds
-#: on a 2-D slice, about 0.2 s in six dimensions, where a chart has dozens of neighbours.
-MAX_CHARTS = 20_000
+__all__ = ["PathResult", "astar", "continuous", "refine_path"]
 
 
 @dataclass(frozen=True)
-class PathResult:
+class PathResult(Result):
+    """A path on a manifold, or why there is none (:func:`taut.planning.plan_path`).
+
+    Attributes
+    ----------
+    found : bool
+        A path from the start to the goal was found.
+    path : ndarray, shape (N, n)
+        Points on the manifold, start to goal, continuous across its symmetry (empty if
+        not found).
+    charts : int
+        Charts in the atlas when the search stopped.
+    expanded : int
+        Charts closed by A* (0 for AtlasRRT).
+    exhausted : bool
+        A* closed every chart of the start's component: ``found=False`` is then a proof
+        that no path exists at the resolution of the chart radius.
+    length : float
+        Length of ``path`` in the atlas metric (NaN when not found).
+    elapsed_s : float
+        Wall-clock time [s].
+    atlas : Atlas
+        The atlas the search grew.
+    method : str
+        ``"astar"`` or ``"atlasrrt"``.
+    nodes : int
+        Tree nodes grown by AtlasRRT (0 for A*).
+    complete : bool
+        The question is settled: ``found`` or ``exhausted`` (a property).
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
+    .. [2] L. Jaillet, J. M. Porta, "Path planning under kinematic constraints by rapidly
+       exploring manifolds", IEEE Transactions on Robotics 29(1), 2013, Algs. 1–4.
+       (docs/references.bib: jaillet2013)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.planning import ImplicitManifold, plan_path
+    >>> sphere = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
+    >>> res = plan_path(sphere, [1.0, 0, 0], [0, 1.0, 0], radius=0.3)
+    >>> res.found, res.complete, res.method, round(res.length, 3)
+    (True, True, 'astar', 1.859)
+    """
+
     found: bool
     path: np.ndarray  #: ``(N, n)`` points on the manifold, start to goal (empty if not found)
     charts: int  #: charts in the atlas when the search stopped
-    expanded: int  #: charts closed by the search
+    expanded: int  #: charts closed by A* (0 for AtlasRRT)
     exhausted: bool  #: every chart closed (``found=False`` is then a proof at this resolution)
-    length: float  #: length of ``path`` in the atlas metric
+    length: float  #: length of ``path`` in the atlas metric (NaN if not found)
     elapsed_s: float
     atlas: Atlas
+    method: str  #: the planner: ``"astar"`` or ``"atlasrrt"``
+    nodes: int  #: tree nodes grown by AtlasRRT (0 for A*)
+
+    @property
+    def complete(self) -> bool:
+        """The question is settled: a path was found, or none exists at this resolution."""
+        return self.found or self.exhausted
+
+    def as_dict(self) -> dict:
+        """The result in plain JSON types (``length`` ``None`` without a path), without the
+        atlas: ``method``, ``found``, ``exhausted``, ``complete``, ``path``, ``charts``,
+        ``expanded``, ``nodes``, ``length``, ``elapsed_s``."""
+        return {
+            "method": self.method,
+            "found": self.found,
+            "exhausted": self.exhausted,
+            "complete": self.complete,
+            "path": jsonable(self.path),
+            "charts": self.charts,
+            "expanded": self.expanded,
+            "nodes": self.nodes,
+            "length": jsonable(self.length),
+            "elapsed_s": self.elapsed_s,
+        }
 
 
 def _segment(atlas: Atlas, i: int, u0: np.ndarray, u1: np.ndarray, spacing: float) -> list[np.ndarray]:
@@ -64,9 +133,55 @@ def _segment(atlas: Atlas, i: int, u0: np.ndarray, u1: np.ndarray, spacing: floa
     return pts
 
 
-def refine_path(atlas: Atlas, charts: list[int], goal: np.ndarray, spacing: float) -> np.ndarray:
-    """Manifold points along the chart sequence ``charts`` (starting at the start chart's
-    centre), ending at ``goal`` reached through the last chart."""
+def refine_path(atlas: Atlas, charts: list[int], goal: np.ndarray, *, spacing: float) -> np.ndarray:
+    """Manifold points along a sequence of charts, ending at a goal reached through the
+    last one (module docstring).
+
+    Parameters
+    ----------
+    atlas : Atlas
+    charts : list of int
+        Chart indices, each adjacent to the next; the path starts at the first one's
+        centre.
+    goal : array_like, shape (n,)
+        A manifold point covered by the last chart.
+    spacing : float
+        Largest step between points, in tangent coordinates.
+
+    Returns
+    -------
+    ndarray, shape (N, n)
+        Continuous across the manifold's symmetry, ending at ``goal``.
+
+    Raises
+    ------
+    TautError
+        Charts that are not the atlas's, a bad ``spacing``, or a chart map that fails.
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §4. (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.planning import Atlas, ImplicitManifold, refine_path
+    >>> sphere = ImplicitManifold(lambda x: np.array([x @ x - 1]), lambda x: 2 * x[None, :], 2)
+    >>> atlas = Atlas(sphere, [0, 0, 1.0], radius=0.5)
+    >>> np.round(refine_path(atlas, [0], [0.3, 0, np.sqrt(0.91)], spacing=0.1), 3)
+    array([[0.   , 0.   , 1.   ],
+           [0.1  , 0.   , 0.995],
+           [0.2  , 0.   , 0.98 ],
+           [0.3  , 0.   , 0.954]])
+    """
+    spacing = as_number(spacing, "spacing", positive=True)
+    goal = as_array(goal, "the goal point", shape=(atlas.centres.shape[1],))
+    if not charts or any(not 0 <= c < len(atlas.charts) for c in charts):
+        raise TautError(
+            f"charts: expected a sequence of charts of the atlas (0..{len(atlas.charts) - 1}), got {charts}"
+        )
     pts = [atlas.charts[charts[0]].centre]
     for a, b in zip(charts[:-1], charts[1:]):
         ub = atlas.coordinates(a, atlas.charts[b].centre)
@@ -87,10 +202,11 @@ def continuous(atlas: Atlas, pts: np.ndarray) -> np.ndarray:
     return out
 
 
-def plan_path(
+def astar(
     manifold: ImplicitManifold,
     start: npt.ArrayLike,
     goal: npt.ArrayLike,
+    *,
     radius: float,
     epsilon: float = 0.1,
     metric: np.ndarray | None = None,
@@ -117,7 +233,7 @@ def plan_path(
     start, goal = np.asarray(start, float), np.asarray(goal, float)
     if np.linalg.norm(manifold.function(goal)) > 1e-6 * (1 + np.linalg.norm(goal)):
         raise TautError("the goal point is not on the manifold (|F(goal)| too large)")
-    atlas = Atlas(manifold, start, radius, epsilon, metric=metric)
+    atlas = Atlas(manifold, start, radius=radius, epsilon=epsilon, metric=metric)
     h = lambda i: atlas.cost(atlas.charts[i].centre, goal)  # noqa: E731
     g = {0: 0.0}
     parent = {0: -1}
@@ -166,11 +282,15 @@ def plan_path(
             float("nan"),
             time.perf_counter() - t0,
             atlas,
+            "astar",
+            0,
         )
     seq = [found_at]
     while parent[seq[-1]] >= 0:
         seq.append(parent[seq[-1]])
     seq.reverse()
-    path = refine_path(atlas, seq, goal, spacing or radius / 4)
+    path = refine_path(atlas, seq, goal, spacing=spacing or radius / 4)
     length = float(np.sum(np.linalg.norm(np.diff(path[:, atlas.metric], axis=0), axis=1)))
-    return PathResult(True, path, len(atlas.charts), expanded, False, length, time.perf_counter() - t0, atlas)
+    return PathResult(
+        True, path, len(atlas.charts), expanded, False, length, time.perf_counter() - t0, atlas, "astar", 0
+    )

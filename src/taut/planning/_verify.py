@@ -22,7 +22,9 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from taut.errors import TautError
+from taut._checks import as_array, as_count
+from taut._results import Result, jsonable
+from taut.errors import PoseError, TautError
 from taut.kinematics import inverse_kinematics, platform_frame
 from taut.model import Robot
 from taut.statics import EllipsoidWrenchSet, wrench_feasible
@@ -37,14 +39,55 @@ CHUNK = 1 << 16
 
 
 @dataclass(frozen=True)
-class PathCheck:
+class PathCheck(Result):
+    """The independent check of a path (:func:`verify_path`).
+
+    Attributes
+    ----------
+    poses : ndarray, shape (N, 6)
+        The interpolated poses.
+    feasible : ndarray of bool, shape (N,)
+        Wrench-feasible, with the cable lengths strictly inside their bounds.
+    lengths : ndarray, shape (N, 6)
+        Cable lengths [m].
+    all_feasible : bool
+        Every pose is feasible (a property).
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §5, Fig. 6.
+       (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.planning import verify_path
+    >>> robot = example("robocrane")
+    >>> q = robot.reference.poses
+    >>> check = verify_path(robot, [q["q1"], q["q2"]], subdivide=4)
+    >>> check.poses.shape, check.feasible.tolist()
+    ((5, 6), [True, False, False, False, True])
+    """
+
     poses: np.ndarray  #: ``(N, 6)`` interpolated poses
     feasible: np.ndarray  #: ``(N,)`` wrench-feasible and lengths inside their bounds
     lengths: np.ndarray  #: ``(N, 6)``
 
     @property
     def all_feasible(self) -> bool:
+        """Every interpolated pose is feasible."""
         return bool(self.feasible.all())
+
+    def as_dict(self) -> dict:
+        """``poses``, ``feasible``, ``lengths`` and ``all_feasible`` in plain JSON types."""
+        return {
+            "poses": jsonable(self.poses),
+            "feasible": jsonable(self.feasible),
+            "lengths": jsonable(self.lengths),
+            "all_feasible": self.all_feasible,
+        }
 
 
 def interpolate_poses(poses: npt.ArrayLike, subdivide: int) -> np.ndarray:
@@ -58,16 +101,38 @@ def interpolate_poses(poses: npt.ArrayLike, subdivide: int) -> np.ndarray:
 def verify_path(
     robot: Robot,
     poses: npt.ArrayLike,
+    *,
     E: npt.ArrayLike | None = None,
     subdivide: int = 10,
-    *,
     max_poses: int = MAX_POSES,
 ) -> PathCheck:
-    """Check every interpolated pose of ``poses`` for wrench feasibility (module doc), in
-    chunks of :data:`CHUNK` poses.
+    """Check every interpolated pose of a path for wrench feasibility (module docstring),
+    independently of the planner's equations, in chunks of :data:`CHUNK` poses.
 
-    Raises :class:`~taut.errors.TautError` when the interpolated poses (``subdivide`` per
-    segment, and the last) are more than ``max_poses``, before any work.
+    Parameters
+    ----------
+    robot : Robot
+        A rigid 6-cable spatial robot with a constant platform wrench.
+    poses : array_like, shape (M, 6) or (6,)
+        The path's poses ``x, y, z, φ, θ, σ`` [m, rad].
+    E : array_like, shape (6, 6), optional
+        The wrench ellipsoid ``(ŵ − ŵ_0)ᵀ E (ŵ − ŵ_0) ≤ 1`` (default ``10⁴ I``, §5).
+    subdivide : int, optional
+        Poses per segment of the path, linearly interpolated (its end included).
+    max_poses : int, optional
+        Budget of interpolated poses (default :data:`MAX_POSES`).
+
+    Returns
+    -------
+    PathCheck
+
+    Raises
+    ------
+    PoseError
+        Poses that are not rows of six finite numbers.
+    TautError
+        A bad ``E`` or ``subdivide``, or more interpolated poses (``subdivide`` per segment,
+        and the last) than ``max_poses``, before any work.
 
     References
     ----------
@@ -75,18 +140,30 @@ def verify_path(
        Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
        Mechanisms and Machine Science 12, Springer, 2013, §5, Fig. 6.
        (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    The reference pose q1 of the Robocrane is wrench-feasible; the straight line to q2 is
+    not (Bohigas et al. 2013, §5).
+
+    >>> from taut.model import example
+    >>> from taut.planning import verify_path
+    >>> robot = example("robocrane")
+    >>> q = robot.reference.poses
+    >>> verify_path(robot, q["q1"]).all_feasible, verify_path(robot, [q["q1"], q["q2"]]).all_feasible
+    (True, False)
     """
-    E = 1e4 * np.eye(6) if E is None else np.asarray(E, float)
-    path = np.asarray(poses, float)
-    if isinstance(subdivide, bool) or int(subdivide) != subdivide or subdivide < 1:
-        raise TautError(f"subdivide must be a whole number >= 1, got {subdivide!r}")
-    total = (len(path) - 1) * int(subdivide) + 1
+    E = 1e4 * np.eye(6) if E is None else as_array(E, "E", shape=(6, 6))
+    P = as_array(poses, "poses", error=PoseError)
+    path = as_array(P[None] if P.ndim == 1 else P, "poses", shape=(None, 6), error=PoseError)
+    subdivide = as_count(subdivide, "subdivide")
+    total = (len(path) - 1) * subdivide + 1
     if total > max_poses:
         raise TautError(
             f"the path's {len(path) - 1} steps at {subdivide} poses each make {total:,} poses to check, more than "
             f"{max_poses:,} (max_poses): give a subdivide of at most {max(1, (max_poses - 1) // max(1, len(path) - 1))}"
         )
-    q = interpolate_poses(path, int(subdivide))
+    q = interpolate_poses(path, subdivide)
     ws = EllipsoidWrenchSet(np.asarray(robot.platform.wrench, float), np.linalg.inv(E))
     tmin = np.array([c.tension[0] for c in robot.cables], float)
     tmax = np.array([c.tension[1] for c in robot.cables], float)

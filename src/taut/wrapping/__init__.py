@@ -24,8 +24,8 @@ if TYPE_CHECKING:
         run_trajectory,
         timed_moves,
     )
-    from taut.wrapping._tree import CableStateTree
-    from taut.wrapping._update import track, update_state
+    from taut.wrapping._tree import MAX_NODES, CableStateTree
+    from taut.wrapping._update import Tracking, track_cable_state, update_state
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -43,7 +43,9 @@ _LAZY = {
     "run_trajectory": "taut.wrapping._trajectory",
     "timed_moves": "taut.wrapping._trajectory",
     "CableStateTree": "taut.wrapping._tree",
-    "track": "taut.wrapping._update",
+    "MAX_NODES": "taut.wrapping._tree",
+    "Tracking": "taut.wrapping._update",
+    "track_cable_state": "taut.wrapping._update",
     "update_state": "taut.wrapping._update",
 }
 
@@ -52,6 +54,8 @@ __all__ = [
     "CableState",
     "CableStateTree",
     "DEFAULT_SPEED",
+    "MAX_NODES",
+    "Tracking",
     "TrajectoryResult",
     "WrappedIK",
     "builtin_trajectory",
@@ -61,7 +65,7 @@ __all__ = [
     "rebuild_path",
     "run_trajectory",
     "timed_moves",
-    "track",
+    "track_cable_state",
     "update_state",
     "wrapped_inverse_kinematics",
 ]

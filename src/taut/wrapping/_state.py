@@ -31,6 +31,8 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array
+from taut._results import Result
 from taut.errors import TautError
 from taut.geometry import directed_tangent
 
@@ -58,23 +60,66 @@ def wrap_angle(
 
 
 @dataclass(frozen=True)
-class CableState:
-    """The state of one cable: the objects it wraps, in order from the winch, with their
-    wrap directions (``contacts``), and the winch pulley's reference angle."""
+class CableState(Result):
+    """The state of one cable (§4.1.1): the objects it wraps, in order from the winch, with
+    their wrap directions, and the winch pulley's reference angle.
+
+    Attributes
+    ----------
+    contacts : tuple of (int, int)
+        ``(object index, wrap direction)`` (0-based objects; +1 counter-clockwise, −1
+        clockwise).
+    reference_angle : float
+        Winch-pulley angle [rad] from which its arc is counted.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.1.1. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> from taut.wrapping import CableState
+    >>> CableState(((0, 1), (2, -1))).objects
+    (0, 2)
+    """
 
     contacts: tuple[tuple[int, int], ...]  #: ``(object index, wrap direction ±1)``
     reference_angle: float = 0.0  #: winch-pulley angle where its arc is counted from
 
     @property
     def objects(self) -> tuple[int, ...]:
+        """The wrapped objects, in order from the winch."""
         return tuple(k for k, _ in self.contacts)
 
 
 @dataclass(frozen=True)
-class CablePath:
-    """A cable's path: ``segments (m, 2, 2)`` straight pieces from the winch to ``b``
-    (the last one is the active segment) and ``arcs`` — per object touched (winch pulley
-    first), ``(centre x, centre y, radius, θ_in, wrap angle φ, direction)``."""
+class CablePath(Result):
+    """A cable's path (:func:`rebuild_path`).
+
+    Attributes
+    ----------
+    segments : ndarray, shape (m, 2, 2)
+        Straight pieces from the winch to the platform end (the last one is the active
+        segment).
+    arcs : ndarray, shape (m, 6)
+        Per object touched, winch pulley first: ``(centre x, centre y, radius, θ_in, wrap
+        angle φ, direction)``.
+    length : float
+        The cable length [m] (Eq. 4.9).
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.1.1, Eqs. 4.9–4.11. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> from taut.wrapping import CableState, rebuild_path
+    >>> path = rebuild_path([[0.0, 1.0, 0.2], [0.0, 0.0, 0.0]], 1, CableState(((0, 1),)), [0.0, 2.0])
+    >>> path.segments.shape, round(path.length, 4)
+    ((2, 2, 2), 2.0401)
+    """
 
     segments: np.ndarray
     arcs: np.ndarray
@@ -88,20 +133,48 @@ class CablePath:
 
 
 def rebuild_path(circles: npt.ArrayLike, winch_direction: int, state: CableState, b: npt.ArrayLike) -> CablePath:
-    """The path of a cable in ``state`` whose platform end is at ``b`` (§4.1.1).
+    """The path of a cable in a given state (§4.1.1, Alg. 4.1).
 
-    ``circles`` is ``(K + 1, 3)``: ``(x, y, r)`` of the objects, the winch pulley last.
-    Raises :class:`TautError` if a tangent does not exist (``b`` inside an object).
+    Parameters
+    ----------
+    circles : array_like, shape (K + 1, 3)
+        ``(x, y, r)`` [m] of the objects, the winch pulley last.
+    winch_direction : int
+        +1 (counter-clockwise) or −1.
+    state : CableState
+    b : array_like, shape (2,)
+        The platform end [m].
+
+    Returns
+    -------
+    CablePath
+
+    Raises
+    ------
+    TautError
+        A tangent does not exist (``b`` inside an object), or a state that wraps objects
+        not among ``circles``.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §4.1.1, Alg. 4.1. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    A cable from the origin over the left side of a disc (counter-clockwise) to ``(0, 2)``:
+
+    >>> from taut.wrapping import CableState, rebuild_path
+    >>> path = rebuild_path([[0.0, 1.0, 0.2], [0.0, 0.0, 0.0]], 1, CableState(((0, 1),)), [0.0, 2.0])
+    >>> round(path.length, 4), path.arcs.shape
+    (2.0401, (2, 6))
     """
-    circles = np.asarray(circles, float)
+    circles = as_array(circles, "circles", shape=(None, 3))
     K = len(circles) - 1
+    if any(not 0 <= k < K for k in state.objects):
+        raise TautError(f"the state {list(state.contacts)} wraps objects that are not among the {K} circles")
     chain = [(K, winch_direction)] + [(int(k), int(d)) for k, d in state.contacts]
-    ends = [(np.asarray(b, float), 0.0, 1)]
+    ends = [(as_array(b, "the platform end b", shape=(2,)), 0.0, 1)]
     segs, arcs = [], []
     theta_in = state.reference_angle
     length = 0.0
@@ -123,10 +196,40 @@ def rebuild_path(circles: npt.ArrayLike, winch_direction: int, state: CableState
         segs.append((x1, x2))
         length += phi * r1 + float(L)
         theta_in = float(contact_angle(u, nd))
-    return CablePath(np.array(segs, float), np.array(arcs, float), length)
+    return CablePath(np.array(segs, float), np.array(arcs, float), float(length))
 
 
 def contacts_text(contacts: Iterable[tuple[int, int]]) -> str:
-    """A cable's contacts as users read them: 1-based object numbers with the wrap
-    direction, e.g. ``"2+ 3-"`` (empty for a straight cable)."""
-    return " ".join(f"{k + 1}{'+' if d > 0 else '-'}" for k, d in contacts)
+    """A cable's contacts as users read them: 1-based object numbers with the wrap direction.
+
+    Parameters
+    ----------
+    contacts : iterable of (int, int)
+        ``(object index, direction ±1)`` (0-based objects).
+
+    Returns
+    -------
+    str
+        Empty for a straight cable.
+
+    Raises
+    ------
+    TautError
+        Contacts that are not pairs of integers.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.1. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> from taut.wrapping import contacts_text
+    >>> contacts_text([(1, 1), (2, -1)])
+    '2+ 3-'
+    """
+    try:
+        pairs = [(int(k), int(d)) for k, d in contacts]
+    except (TypeError, ValueError):
+        raise TautError(f"contacts: expected [(object, direction ±1), ...], got {contacts!r}") from None
+    return " ".join(f"{k + 1}{'+' if d > 0 else '-'}" for k, d in pairs)

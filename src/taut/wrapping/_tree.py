@@ -37,6 +37,7 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array, as_count, as_index
 from taut.errors import TautError
 from taut.geometry import directed_tangent, segment_enters_polygon, segment_meets_circle, segments_intersect
 from taut.wrapping._state import WINCH_LOW, WRAP_LOW, CableState, contact_angle, wrap_angle
@@ -46,38 +47,87 @@ SX, SY, EX, EY, UX, UY, M, THETA_IN, L_STATIC, DIR = range(10)
 # columns of I
 PARENT, OBJ, FIRST, COUNT = range(4)
 
+#: The node budget of :meth:`CableStateTree.shortest_taut_state` when none is given: the
+#: tree of ``K`` objects has up to ``2^K K!`` nodes, so the search is bounded.
+MAX_NODES = 20_000
+
 #: Wrap angle [rad] below which a segment is not taut (round-off allowance).
 TAUT_TOL = 1e-12
 #: Distance [m] by which a segment must enter an object or a region to meet it.
 MEET_TOL = 1e-9
 
 
-class CableStateTree:
-    """The CST of one cable.
+def checked_contacts(contacts: object, n_objects: int) -> list[tuple[int, int]]:
+    """A cable state's contacts as ``[(object, direction), ...]`` with objects
+    ``0..n_objects − 1`` and directions ``±1``; :class:`TautError` otherwise."""
+    try:
+        pairs = [(k, d) for k, d in contacts]  # type: ignore[attr-defined]
+    except (TypeError, ValueError):
+        raise TautError(f"cable state: expected [(object, direction ±1), ...], got {contacts!r}") from None
+    for k, d in pairs:
+        as_index(k, "cable state: object", n_objects)
+        if isinstance(d, bool) or d not in (1, -1):
+            raise TautError(f"cable state: the direction about object {k + 1} must be +1 or -1, got {d!r}")
+    return [(int(k), int(d)) for k, d in pairs]
 
-    ``circles`` ``(K + 1, 3)``: ``(x, y, r)`` of the ``K`` collidable objects followed by
-    the winch pulley (radius 0 for a point exit); ``winch_direction`` ``±1``;
-    ``disallowed`` a list of polygons ``(V, 2)``; ``reference_angle`` the winch-pulley
-    angle from which the pulley arc is counted (:mod:`taut.wrapping._state`).
+
+class CableStateTree:
+    """The cable-state tree of one cable (module docstring), expanded as needed.
+
+    Parameters
+    ----------
+    circles : array_like, shape (K + 1, 3)
+        ``(x, y, r)`` [m] of the ``K`` collidable objects followed by the winch pulley
+        (radius 0 for a point exit).
+    winch_direction : int, optional
+        +1 (counter-clockwise) or −1.
+    disallowed : iterable of array_like, shape (V, 2), optional
+        Polygons the cable must not enter.
+    reference_angle : float, optional
+        Winch-pulley angle [rad] from which the pulley arc is counted
+        (:mod:`taut.wrapping._state`).
+
+    Raises
+    ------
+    TautError
+        Circles that are not rows ``(x, y, r ≥ 0)``, or a bad direction or polygon.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §4.2.1, Algs. 4.2–4.3. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    The root (node 0) has two children, the disc wrapped either way; the cable to ``(0, 2)``
+    must wrap it:
+
+    >>> from taut.wrapping import CableStateTree
+    >>> tree = CableStateTree([[0.0, 1.0, 0.2], [0.0, 0.0, 0.0]])  # one disc, then a point winch
+    >>> [tree.contacts(int(c)) for c in tree.children(0)]
+    [((0, 1),), ((0, -1),)]
+    >>> node = tree.shortest_taut_state([0.0, 2.0])
+    >>> tree.contacts(node), round(tree.length(node, [0.0, 2.0]), 4)
+    (((0, 1),), 2.0401)
     """
 
     def __init__(
         self,
         circles: npt.ArrayLike,
         winch_direction: int = 1,
+        *,
         disallowed: Iterable[npt.ArrayLike] = (),
         reference_angle: float = 0.0,
     ) -> None:
-        self.circles = np.ascontiguousarray(circles, dtype=float)
+        self.circles = np.ascontiguousarray(as_array(circles, "circles", shape=(None, 3)))
+        if not len(self.circles) or np.any(self.circles[:, 2] < 0):
+            raise TautError("circles: expected rows (x, y, r >= 0) of the objects and the winch pulley last")
         self.n_objects = len(self.circles) - 1
+        if winch_direction not in (1, -1):
+            raise TautError(f"winch_direction: expected +1 or -1, got {winch_direction!r}")
         self.winch_direction = int(winch_direction)
-        self.disallowed = [np.asarray(p, float) for p in disallowed]
-        self.reference_angle = float(reference_angle)
+        self.disallowed = [as_array(p, "a disallowed polygon", shape=(None, 2)) for p in disallowed]
+        self.reference_angle = float(as_array(reference_angle, "reference_angle", shape=()))
         self.F = np.zeros((64, 10))
         self.I = np.full((64, 4), -1, dtype=np.int64)
         c = self.circles[-1]
@@ -134,6 +184,7 @@ class CableStateTree:
         return tuple((int(self.I[n, OBJ]), int(self.F[n, DIR])) for n in self.path(node)[1:])
 
     def state(self, node: int) -> CableState:
+        """The cable state of ``node``."""
         return CableState(self.contacts(node), self.reference_angle)
 
     def static_segments(self, node: int) -> np.ndarray:
@@ -151,6 +202,7 @@ class CableStateTree:
     def find(self, contacts: Sequence[tuple[int, int]]) -> int:
         """The node of a cable state given as ``[(object, direction), ...]``; raises
         :class:`TautError` if that sequence of wraps is not reachable."""
+        contacts = checked_contacts(contacts, self.n_objects)
         node = 0
         for j, (k, d) in enumerate(contacts):
             kids = self.children(node)
@@ -223,7 +275,7 @@ class CableStateTree:
         self.I[node, COUNT] = n
         self.size += n
 
-    def build(self, max_depth: int | None = None) -> int:
+    def build(self, *, max_depth: int | None = None) -> int:
         """Expand the whole tree (Alg. 4.3), down to ``max_depth`` wraps; returns its size."""
         stack = [(0, 0)]
         while stack:
@@ -272,12 +324,13 @@ class CableStateTree:
             return False
         return not any(bool(segment_enters_polygon(x, b, poly, tol=MEET_TOL)) for poly in self.disallowed)
 
-    def shortest_taut_state(self, b: npt.ArrayLike, max_nodes: int = 20000) -> int:
+    def shortest_taut_state(self, b: npt.ArrayLike, *, max_nodes: int = MAX_NODES) -> int:
         """The taut admissible state of least length with the platform end at ``b``: a
         best-first (A*) search over the lazily expanded tree, each node bounded below by
         its static length plus the distance from its entry point to ``b``.  The default
         initial state of a cable, and the naive from-scratch state computation."""
-        b = np.asarray(b, float)
+        b = as_array(b, "the platform end b", shape=(2,))
+        max_nodes = as_count(max_nodes, "max_nodes")
         heap = [(0.0, 0)]
         best, best_node, popped = np.inf, -1, 0
         while heap and heap[0][0] < best:

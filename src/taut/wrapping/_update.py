@@ -32,7 +32,7 @@ children whose line the cable lies on (``h_child = 0`` within round-off) do not 
 that instant (and, ``h_child`` rising, not later in the step either).  A circle of positive
 radius that touches the straightened cable does collide: the cable swings into it.  The
 kernel (Numba) stops when it reaches a node that the lazily expanded tree has not expanded
-yet; :func:`track` expands it and resumes.
+yet; :func:`track_cable_state` expands it and resumes.
 
 A rigid platform's anchor moves on a curve when the platform turns: callers sample it
 finely enough (``taut.wrapping._ik``) that the chord is the motion.
@@ -52,6 +52,8 @@ import numpy as np
 import numpy.typing as npt
 from numba import njit
 
+from taut._checks import as_array, as_index
+from taut._results import Result
 from taut.errors import TautError
 from taut.wrapping._tree import CableStateTree
 
@@ -160,8 +162,35 @@ def _track(
 
 
 @dataclass(frozen=True)
-class Tracking:
-    """A cable followed along ``T`` anchor positions."""
+class Tracking(Result):
+    """A cable followed along ``T`` positions of its platform end (:func:`track_cable_state`).
+
+    Attributes
+    ----------
+    nodes : ndarray of int, shape (T,)
+        The tracked node of the cable-state tree at each sample.
+    lengths : ndarray, shape (T,)
+        Cable length [m] (Eq. 4.9).
+    directions : ndarray, shape (T, 2)
+        Unit direction of the active segment, towards the platform end.
+    events : ndarray, shape (E, 4)
+        Rows ``(sample j, fraction τ of the step j−1 → j, kind, node)``: kind 1 wraps onto
+        ``node``'s object, kind 2 unwraps from it.
+
+    References
+    ----------
+    .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
+       of Waterloo, 2022, §4.2.2, Alg. 4.4. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.wrapping import CableStateTree, track_cable_state, update_state
+    >>> tree = CableStateTree([[0.0, 1.0, 0.2], [0.0, 0.0, 0.0]])  # one disc, then a point winch
+    >>> tr = track_cable_state(tree, [[1.0, 2.0], [-1.0, 2.0]])
+    >>> tr.nodes.tolist(), np.round(tr.lengths, 4), tr.events[:, [0, 2, 3]].tolist()
+    ([0, 1], array([2.2361, 2.6055]), [[1.0, 1.0, 1.0]])
+    """
 
     nodes: np.ndarray  #: ``(T,)`` tracked CST node at each sample
     lengths: np.ndarray  #: ``(T,)`` cable length (Eq. 4.9)
@@ -170,16 +199,47 @@ class Tracking:
     #: kind 1 = wrap onto ``node``'s object, 2 = unwrap from ``node``'s object
 
 
-def track(tree: CableStateTree, points: npt.ArrayLike, node: int = 0) -> Tracking:
-    """Update the state of a cable whose platform end visits ``points`` (``(T, 2)``, a
-    polyline of straight moves) from state ``node`` at ``points[0]`` (Alg. 4.4 per step).
+def track_cable_state(tree: CableStateTree, points: npt.ArrayLike, *, node: int = 0) -> Tracking:
+    """The states of a cable whose platform end moves along a polyline (Alg. 4.4 per step,
+    exact for straight moves: module docstring).
+
+    Parameters
+    ----------
+    tree : CableStateTree
+    points : array_like, shape (T, 2)
+        The platform end's positions [m], joined by straight moves.
+    node : int, optional
+        The tree node of the cable's state at ``points[0]`` (default the straight cable).
+
+    Returns
+    -------
+    Tracking
+
+    Raises
+    ------
+    TautError
+        Points that are not rows of two finite numbers, a node not in the tree, the
+        platform end inside an object, or a state that does not settle.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §4.2.2, Alg. 4.4. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    The platform end moves from ``(1, 2)`` to ``(−1, 2)``: the cable wraps the disc
+    counter-clockwise on the way.
+
+    >>> import numpy as np
+    >>> from taut.wrapping import CableStateTree, track_cable_state, update_state
+    >>> tree = CableStateTree([[0.0, 1.0, 0.2], [0.0, 0.0, 0.0]])  # one disc, then a point winch
+    >>> tr = track_cable_state(tree, [[1.0, 2.0], [-1.0, 2.0]])
+    >>> tree.contacts(int(tr.nodes[-1]))
+    ((0, 1),)
     """
-    P = np.ascontiguousarray(points, dtype=float)
+    P = np.ascontiguousarray(as_array(points, "points", shape=(None, 2)))
+    node = as_index(node, "node", tree.size)
     T = len(P)
     nodes = np.zeros(T, dtype=np.int64)
     lengths = np.zeros(T)
@@ -219,11 +279,39 @@ def track(tree: CableStateTree, points: npt.ArrayLike, node: int = 0) -> Trackin
 
 
 def update_state(tree: CableStateTree, node: int, b0: npt.ArrayLike, b1: npt.ArrayLike) -> int:
-    """One state update (Alg. 4.4): the tracked node after the platform end moves ``b0 → b1``.
+    """One state update (Alg. 4.4): the tracked node after a straight move of the platform end.
+
+    Parameters
+    ----------
+    tree : CableStateTree
+    node : int
+        The tree node of the cable's state at ``b0``.
+    b0, b1 : array_like, shape (2,)
+        The platform end before and after the move [m].
+
+    Returns
+    -------
+    int
+        The tree node at ``b1``.
+
+    Raises
+    ------
+    TautError
+        As :func:`track_cable_state`.
 
     References
     ----------
     .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
        of Waterloo, 2022, §4.2.2, Alg. 4.4. (docs/references.bib: rushton2022)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.wrapping import CableStateTree, track_cable_state, update_state
+    >>> tree = CableStateTree([[0.0, 1.0, 0.2], [0.0, 0.0, 0.0]])  # one disc, then a point winch
+    >>> node = update_state(tree, 0, [1.0, 2.0], [-1.0, 2.0])
+    >>> tree.contacts(node)
+    ((0, 1),)
     """
-    return int(track(tree, np.array([b0, b1], float), node).nodes[-1])
+    ends = [as_array(b, "the platform end", shape=(2,)) for b in (b0, b1)]
+    return int(track_cable_state(tree, np.array(ends), node=node).nodes[-1])
