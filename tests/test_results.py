@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
 from taut._results import Result, freeze, jsonable
+from taut.errors import TautError
 
 
 @dataclasses.dataclass(frozen=True)
@@ -68,8 +69,8 @@ def test_nested_results_use_their_as_dict():
     }
 
 
-def test_no_json_form_is_a_type_error():
-    with pytest.raises(TypeError, match="function"):
+def test_no_json_form_is_a_taut_error():
+    with pytest.raises(TautError, match="function"):
         jsonable({"f": lambda: 0})
 
 

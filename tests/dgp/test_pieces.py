@@ -5,12 +5,12 @@ Berti (2015) lies in one of them."""
 import numpy as np
 import pytest
 
-from taut.dgp import MAX_BOXES, solve_dgp
+from taut.dgp import solve_dgp
 from taut.dgp._formulation import build_subproblem
 from taut.dgp._solve import PREPARED_SIZE, domain_pieces, prepared_subproblem, solve_piece
 from taut.errors import TautError
 from taut.geometry import rotation_matrix
-from taut.interval import Certificate, certify, same_solution
+from taut.interval import MAX_BOXES, Certificate, certify, same_solution
 from taut.model import load_robot
 
 ROBOT = load_robot("suspended-3cable")

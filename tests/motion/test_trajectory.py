@@ -139,7 +139,7 @@ def test_axis_rotation_refusals():
         trajectory_from_waypoints(PLANAR, [[0.3, 0.3, 0.0], [0.4, 0.3, 1.0]], durations=1.0, rotation="axis")
     # translations may move through a waypoint while the turn stops there
     m = trajectory_from_waypoints(
-        SPATIAL, W, 1.0, law="cubic", velocities=[[0.1, 0, 0, 0, 0, 0], [0] * 6], rotation="axis"
+        SPATIAL, W, durations=1.0, law="cubic", velocities=[[0.1, 0, 0, 0, 0, 0], [0] * 6], rotation="axis"
     )
     assert m.at([0.0]).velocity[0] == pytest.approx([0.1, 0, 0, 0, 0, 0])
 

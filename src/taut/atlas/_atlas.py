@@ -67,7 +67,7 @@ PROBE = 1e-6
 MIN_EDGE = 1e-6
 #: The chart budget of :func:`build_atlas` when none is given: every chart holds the
 #: polygons of its structure, so the budget bounds memory as well as time.
-MAX_CHARTS = 5000
+MAX_STRUCTURE_CHARTS = 5000
 
 
 @dataclass(frozen=True)
@@ -293,7 +293,7 @@ def build_atlas(
     theta: float = 0.0,
     initial: Mapping[int, Sequence[tuple[int, int]]] | None = None,
     arc_step: float = ARC_STEP,
-    max_charts: int = MAX_CHARTS,
+    max_charts: int = MAX_STRUCTURE_CHARTS,
     progress: Callable[[int, int | None], None] | None = None,
 ) -> StructureAtlas:
     """The structure atlas of a planar variable-structure robot (Alg. 5.1): the charts
@@ -314,7 +314,7 @@ def build_atlas(
     arc_step : float, optional
         Angular step [rad] of the chords of circular arcs in the reachable areas.
     max_charts : int, optional
-        Chart budget (default :data:`MAX_CHARTS`): when it runs out the atlas is returned
+        Chart budget (default :data:`MAX_STRUCTURE_CHARTS`): when it runs out the atlas is returned
         with ``complete`` false.
     progress : callable, optional
         ``progress(expanded, None)`` as charts are expanded (how many there are is not

@@ -39,7 +39,7 @@ JSON: {{"robot", "solutions": [{{"taut", "position", "orientation", "tensions", 
 
 
 def run(ns: argparse.Namespace) -> int:
-    from taut.dgp import MAX_BOXES, solve_dgp
+    from taut.dgp import MAX_SUBPROBLEM_BOXES, solve_dgp
     from taut.parallel import get_executor
 
     plot = A.plot_file(ns.plot)
@@ -54,7 +54,7 @@ def run(ns: argparse.Namespace) -> int:
             lengths,
             max_taut=ns.max_taut,
             executor=executor,
-            max_boxes=MAX_BOXES if ns.max_boxes is None else ns.max_boxes,
+            max_boxes=MAX_SUBPROBLEM_BOXES if ns.max_boxes is None else ns.max_boxes,
             progress=progress,
         )
     data = {

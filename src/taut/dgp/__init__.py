@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     from taut.dgp._solve import DGPResult, DGPSolution, solve_dgp, solve_subset
     from taut.dgp._stability import is_stable, reduced_hessian
     from taut.dgp._tracking import track_equilibrium, track_path
-    from taut.dgp._undecided import CAUSES, MAX_BOXES, UndecidedBox
+    from taut.dgp._undecided import CAUSES, MAX_SUBPROBLEM_BOXES, UndecidedBox
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -41,7 +41,7 @@ _LAZY = {
     "track_equilibrium": "taut.dgp._tracking",
     "track_path": "taut.dgp._tracking",
     "CAUSES": "taut.dgp._undecided",
-    "MAX_BOXES": "taut.dgp._undecided",
+    "MAX_SUBPROBLEM_BOXES": "taut.dgp._undecided",
     "UndecidedBox": "taut.dgp._undecided",
 }
 
@@ -51,7 +51,7 @@ __all__ = [
     "DGPSolution",
     "IGPResult",
     "IGPSolution",
-    "MAX_BOXES",
+    "MAX_SUBPROBLEM_BOXES",
     "UndecidedBox",
     "build_subproblem",
     "is_stable",

@@ -69,10 +69,11 @@ from taut._checks import as_count, as_number
 from taut._results import Result, jsonable
 from taut.dgp._formulation import load
 from taut.dgp._stability import is_stable
-from taut.dgp._undecided import MAX_BOXES, UndecidedBox, cause_of, scaled
+from taut.dgp._undecided import UndecidedBox, cause_of, scaled
 from taut.errors import CableSetError, PoseError, UnsupportedRobotError
 from taut.geometry import rotation_matrix
 from taut.interval import (
+    MAX_BOXES,
     ONE,
     ZERO,
     Certificate,
@@ -531,7 +532,7 @@ def solve_igp(
         Bisection threshold of :func:`~taut.interval.branch_and_prune` (metres, cosines and
         scaled tensions).
     max_boxes : int, optional
-        Box budget (default :data:`MAX_BOXES`): the well-posed problems of the examples take
+        Box budget (default :data:`taut.interval.MAX_BOXES`): the well-posed problems of the examples take
         10²–10⁴ boxes; a continuum of solutions (fixed coordinates that do not fix the pose,
         e.g. ``x, y, φ`` of the Robocrane with cables 1, 3, 5 at ``x = y = 0``) would take
         them all, at about 1 ms a box.  What is left when it runs out is undecided and

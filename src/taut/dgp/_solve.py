@@ -37,10 +37,11 @@ from taut._results import Result, freeze, jsonable
 from taut.dgp._formulation import Subproblem, build_subproblem, load
 from taut.dgp._single_cable import single_cable_equilibria
 from taut.dgp._stability import is_stable
-from taut.dgp._undecided import MAX_BOXES, UndecidedBox, cause_of, subproblem_box
+from taut.dgp._undecided import MAX_SUBPROBLEM_BOXES, UndecidedBox, cause_of, subproblem_box
 from taut.errors import TautError
 from taut.geometry import angles_from_matrix
 from taut.interval import (
+    MAX_BOXES,
     Box,
     Certificate,
     bisect,
@@ -470,7 +471,7 @@ def solve_subset(job: tuple[Robot, np.ndarray, tuple[int, ...], float]) -> tuple
     solutions : list of DGPSolution
         The sub-problem's certified equilibria with non-negative tensions.
     undecided : int
-        How many boxes were left undecided (budget :data:`MAX_BOXES`).
+        How many boxes were left undecided (budget :data:`taut.interval.MAX_BOXES`).
     boxes : int
         Boxes processed.
 
@@ -527,7 +528,7 @@ def solve_dgp(
     executor: Executor | Client | None = None,
     tol: float = 1e-7,
     split: int | None = None,
-    max_boxes: int = MAX_BOXES,
+    max_boxes: int = MAX_SUBPROBLEM_BOXES,
     progress: Callable[[int, int | None], None] | None = None,
     multiprecision: bool = True,
 ) -> DGPResult:
@@ -561,7 +562,7 @@ def solve_dgp(
         that one hard sub-problem is shared by the workers.
     max_boxes : int, optional
         Box budget of every sub-problem, shared equally by its pieces (default
-        :data:`MAX_BOXES`); a certification counts as
+        :data:`MAX_SUBPROBLEM_BOXES`); a certification counts as
         :data:`~taut.interval._branch_prune.CERTIFY_BOXES` boxes, so that the budget bounds
         the time; the boxes left when it runs out are undecided.
     progress : callable, optional

@@ -43,11 +43,12 @@ if TYPE_CHECKING:
 #: cable is slack at its length (not the border of two taut subsets).
 CAUSES = ("narrow", "singular", "budget", "tension-sign", "domain-border")
 
-#: The box budget of one certified search when none is given — of every sub-problem of the
-#: direct problem (shared by its pieces) and of the inverse problem's search: a bound on
-#: the time and memory of a search that would not end (a continuum of solutions); the
-#: boxes left when it runs out are undecided (``"budget"``).
-MAX_BOXES = 2_000_000
+#: The box budget of every sub-problem of the direct problem when none is given, shared by
+#: its pieces: :data:`taut.interval.MAX_BOXES` for each of the up to 16 pieces (the budget
+#: the published tables were reproduced with).  It bounds the time and memory of a search
+#: that would not end (a continuum of solutions); the boxes left when it runs out are
+#: undecided (``"budget"``).
+MAX_SUBPROBLEM_BOXES = 32_000_000
 
 #: Names of the reference-point unknowns of :mod:`taut.dgp._formulation`: the fixed-frame
 #: coordinates of the three reference points, then the normal of their plane.

@@ -35,7 +35,7 @@ if TYPE_CHECKING:
     from taut.planning._plan import METHODS, RADIUS, plan_path
     from taut.planning._search import PathResult, refine_path
     from taut.planning._slices import SliceMap, slice_map
-    from taut.planning._verify import MAX_POSES, PathCheck, verify_path
+    from taut.planning._verify import MAX_PATH_POSES, PathCheck, verify_path
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -58,7 +58,7 @@ _LAZY = {
     "refine_path": "taut.planning._search",
     "SliceMap": "taut.planning._slices",
     "slice_map": "taut.planning._slices",
-    "MAX_POSES": "taut.planning._verify",
+    "MAX_PATH_POSES": "taut.planning._verify",
     "PathCheck": "taut.planning._verify",
     "verify_path": "taut.planning._verify",
 }
@@ -68,7 +68,7 @@ __all__ = [
     "ImplicitManifold",
     "MAX_CHARTS",
     "MAX_NODES",
-    "MAX_POSES",
+    "MAX_PATH_POSES",
     "METHODS",
     "ManifoldChart",
     "POSE_NAMES",

@@ -29,11 +29,11 @@ from taut.kinematics import inverse_kinematics, platform_frame
 from taut.model import Robot
 from taut.statics import EllipsoidWrenchSet, wrench_feasible
 
-__all__ = ["MAX_POSES", "PathCheck", "interpolate_poses", "verify_path"]
+__all__ = ["MAX_PATH_POSES", "PathCheck", "interpolate_poses", "verify_path"]
 
 #: Interpolated poses :func:`verify_path` checks when no ``max_poses`` is given: their
 #: :class:`PathCheck` holds 97 bytes each (97 MB at the limit), a few seconds of work.
-MAX_POSES = 1_000_000
+MAX_PATH_POSES = 1_000_000
 #: Poses checked at once: the structure matrices of a chunk take 19 MB.
 CHUNK = 1 << 16
 
@@ -104,7 +104,7 @@ def verify_path(
     *,
     E: npt.ArrayLike | None = None,
     subdivide: int = 10,
-    max_poses: int = MAX_POSES,
+    max_poses: int = MAX_PATH_POSES,
 ) -> PathCheck:
     """Check every interpolated pose of a path for wrench feasibility (module docstring),
     independently of the planner's equations, in chunks of :data:`CHUNK` poses.
@@ -120,7 +120,7 @@ def verify_path(
     subdivide : int, optional
         Poses per segment of the path, linearly interpolated (its end included).
     max_poses : int, optional
-        Budget of interpolated poses (default :data:`MAX_POSES`).
+        Budget of interpolated poses (default :data:`MAX_PATH_POSES`).
 
     Returns
     -------

@@ -24,7 +24,7 @@ if TYPE_CHECKING:
         run_trajectory,
         timed_moves,
     )
-    from taut.wrapping._tree import MAX_NODES, CableStateTree
+    from taut.wrapping._tree import MAX_TREE_NODES, CableStateTree
     from taut.wrapping._update import Tracking, track_cable_state, update_state
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
@@ -43,7 +43,7 @@ _LAZY = {
     "run_trajectory": "taut.wrapping._trajectory",
     "timed_moves": "taut.wrapping._trajectory",
     "CableStateTree": "taut.wrapping._tree",
-    "MAX_NODES": "taut.wrapping._tree",
+    "MAX_TREE_NODES": "taut.wrapping._tree",
     "Tracking": "taut.wrapping._update",
     "track_cable_state": "taut.wrapping._update",
     "update_state": "taut.wrapping._update",
@@ -54,7 +54,7 @@ __all__ = [
     "CableState",
     "CableStateTree",
     "DEFAULT_SPEED",
-    "MAX_NODES",
+    "MAX_TREE_NODES",
     "Tracking",
     "TrajectoryResult",
     "WrappedIK",

@@ -49,7 +49,7 @@ PARENT, OBJ, FIRST, COUNT = range(4)
 
 #: The node budget of :meth:`CableStateTree.shortest_taut_state` when none is given: the
 #: tree of ``K`` objects has up to ``2^K K!`` nodes, so the search is bounded.
-MAX_NODES = 20_000
+MAX_TREE_NODES = 20_000
 
 #: Wrap angle [rad] below which a segment is not taut (round-off allowance).
 TAUT_TOL = 1e-12
@@ -324,7 +324,7 @@ class CableStateTree:
             return False
         return not any(bool(segment_enters_polygon(x, b, poly, tol=MEET_TOL)) for poly in self.disallowed)
 
-    def shortest_taut_state(self, b: npt.ArrayLike, *, max_nodes: int = MAX_NODES) -> int:
+    def shortest_taut_state(self, b: npt.ArrayLike, *, max_nodes: int = MAX_TREE_NODES) -> int:
         """The taut admissible state of least length with the platform end at ``b``: a
         best-first (A*) search over the lazily expanded tree, each node bounded below by
         its static length plus the distance from its entry point to ``b``.  The default
