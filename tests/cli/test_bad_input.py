@@ -240,18 +240,17 @@ def test_scheduler_that_is_an_http_server(http_server, taut_cli):
 
 
 @pytest.mark.slow
-def test_fk_with_undecided_boxes_says_incomplete(taut_cli):
-    """Lengths of a thousand kilometres are within the magnitude limit: input to answer,
-    not to refuse.  The solver cannot certify every box around their singular solutions, and
-    the answer says so (JSON complete: false and one warning line), never a silent exit 0."""
+def test_fk_lengths_beyond_what_tol_resolves_are_refused(taut_cli):
+    """Lengths of a thousand kilometres put the platform where neighbouring doubles are
+    wider apart than ``tol`` allows to certify: no box could be decided there, so the
+    command refuses them in one line (exit 2) before searching, instead of a search that
+    ends with every box undecided; a length the solver resolves is still answered."""
     run = taut_cli("fk", "suspended-3cable", "--lengths=1e6,1e6,1e6", "--json", timeout=600)
-    assert run.code == 0, run.err
-    d = json.loads(run.out)
-    assert not d["complete"] and d["undecided_boxes"] == len(d["undecided_enclosures"]) > 0
+    assert run.code == 2 and run.out == ""
     lines = run.err.splitlines()
-    assert len(lines) == 1 and lines[0].startswith("taut: warning: ") and "incomplete" in lines[0]
-    strict = taut_cli("fk", "suspended-3cable", "--lengths=1e6,1e6,1e6", "--strict", "--json", timeout=600)
-    assert strict.code == 3 and json.loads(strict.out)["undecided_boxes"] == d["undecided_boxes"]
+    assert len(lines) == 1 and lines[0].startswith("taut: error: ") and "cannot resolve" in lines[0]
+    ok = taut_cli("fk", "suspended-3cable", "--lengths=7.5,10,9.5", "--json", timeout=600)
+    assert ok.code == 0 and json.loads(ok.out)["complete"] is True
 
 
 @pytest.mark.slow
