@@ -163,15 +163,11 @@ def run(ns: argparse.Namespace) -> int:
 
     out = A.output_file(ns.out, "--out")
     plot = A.plot_file(ns.plot)
-    if (ns.max_charts is not None and ns.max_charts < 2) or ns.subdivide < 1:
-        raise TautError("--max-charts must be at least 2 and --subdivide at least 1")
     if ns.subdivide >= MAX_PATH_POSES:
         raise TautError(
             f"--subdivide {ns.subdivide} checks more than {MAX_PATH_POSES:,} poses on any path (of one step or more); "
             "give a smaller --subdivide"
         )
-    if ns.max_nodes is not None and ns.max_nodes < 2:
-        raise TautError(f"--max-nodes must be at least 2, got {ns.max_nodes}")
     if ns.step is not None:
         radius = ns.radius or DEFAULT_RADIUS["atlasrrt"]
         if ns.step > radius:

@@ -26,6 +26,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array
 from taut.errors import ArgumentError
 
 #: The orientation conventions of three angles (docs/architecture.md §2.3), by name.
@@ -39,10 +40,7 @@ def check_convention(convention: str) -> None:
 
 
 def _numbers(values: npt.ArrayLike, what: str) -> np.ndarray:
-    try:
-        return np.asarray(values, dtype=float)
-    except (TypeError, ValueError):
-        raise ArgumentError(f"{what} must be numbers, got {values!r}") from None
+    return as_array(values, what, finite=False, error=ArgumentError)
 
 
 def planar_rotation(theta: npt.ArrayLike) -> np.ndarray:

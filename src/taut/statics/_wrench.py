@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array
 from taut.errors import TautError
 from taut.geometry import cross
 from taut.kinematics import as_poses, body_frames, platform_frame
@@ -46,10 +47,7 @@ def bounds_pair(tension_bounds: object) -> tuple[npt.ArrayLike, npt.ArrayLike]:
 
 def as_floats(value: object, what: str) -> np.ndarray:
     """``value`` as a float array; :class:`TautError` naming ``what`` when it holds no numbers."""
-    try:
-        return np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise TautError(f"{what} must be numbers, got {value!r}") from None
+    return as_array(value, what, finite=False)
 
 
 def external_wrench(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
