@@ -47,7 +47,7 @@ DESCRIPTION = """Plan a path along which the cables balance every wrench of the 
 (w - w0)^T E (w - w0) <= 1 with tensions and lengths strictly inside their bounds.
 Planners (--planner):
   astar     higher-dimensional continuation + A* (Bohigas et al. 2013, §4): complete, it
-            proves that no path exists when the start's component is exhausted at the
+            proves that no path exists when it covers the start's component at the
             chart radius (--radius, default 0.2);
   atlasrrt  AtlasRRT (Jaillet & Porta 2013), bidirectional unless --unidirectional: random
             trees grown on an atlas of the same manifold (--radius, default 0.4; --step,
@@ -56,16 +56,16 @@ Planners (--planner):
             free coordinates only with an explicit --max-charts: its atlas would need
             millions of charts).
 --max-charts bounds the atlas of either planner (default 20000); A* then answers
-"found": false, "exhausted": false.
+"found": false, "no_path": false.
 --shorten shortens an AtlasRRT path by random shortcuts on the manifold.
 Angles are periodic: a path may cross phi = +-pi or theta = 0, so its last pose is the goal
 or the same orientation written with other angles (phi +- 2pi, or phi + pi with -theta).
 POSE is x,y,z,phi,theta,sigma (tilt-and-torsion; 35deg, pi/8 accepted) or the name of a
 reference pose of the robot (e.g. q1).  The path is checked independently at --subdivide
 interpolated points per step (taut.statics._feasibility).  No path is an answer (exit 0):
-"found": false, with "exhausted": true for a proof (A*), false when a budget ran out.
+"found": false, with "no_path": true for a proof (A*), false when a budget ran out.
 JSON: {"planner", "method", "found", "path": [[x,y,z,phi,theta,sigma], ...], "charts",
-"nodes", "elapsed_s", "min_tension_margin", "expanded", "exhausted", "length", "verified"}."""
+"nodes", "elapsed_s", "min_tension_margin", "expanded", "no_path", "length", "verified"}."""
 
 
 def _pose(robot: Robot, text: str, what: str) -> np.ndarray:
@@ -202,7 +202,7 @@ def run(ns: argparse.Namespace) -> int:
         "elapsed_s": elapsed,
         "min_tension_margin": None,
         "expanded": res.expanded if method == "astar" else None,
-        "exhausted": res.exhausted,
+        "no_path": res.no_path,
         "length": None,
         "verified": None,
         "fixed": fixed,
@@ -230,8 +230,8 @@ def run(ns: argparse.Namespace) -> int:
                 f"{'feasible' if d['verified'] else 'NOT feasible'} at every interpolated pose"
             )
         else:
-            if d["exhausted"]:
-                why = "proved: the start's component is exhausted at the chart radius"
+            if d["no_path"]:
+                why = "proved: the start's component, covered at the chart radius, does not reach the goal"
             elif d["method"] == "atlasrrt":
                 why = f"not a proof: AtlasRRT's budget of {d['nodes']} nodes ran out"
             else:
