@@ -10,7 +10,7 @@ import argparse
 
 from taut.cli import _args as A
 from taut.cli._cables import cable_numbers, numbered
-from taut.cli._incomplete import EXIT_STATUS, add_strict, enclosures, report
+from taut.cli._incomplete import EXIT_STATUS, add_strict, report
 from taut.cli._output import console, emit, print_table, save_figure, table
 from taut.cli._progress import progress_bar, wanted
 
@@ -33,7 +33,7 @@ or a slack one exactly at its length) is listed once, under the smaller set, wit
 naming the larger one.
 {EXIT_STATUS}
 JSON: {{"robot", "solutions": [{{"taut", "position", "orientation", "tensions", "stable", "boundary"?, ...}}],
-"complete", "subproblems", "undecided_boxes", "undecided_enclosures": [{{"taut", "cause",
+"complete", "exhausted", "subproblems", "undecided_boxes", "undecided_enclosures": [{{"taut", "cause",
 "enclosure": {{name: [lo, hi]}}, "tensions": [[lo, hi], ...], "reference_points"}}], "boxes",
 "elapsed_s"}}."""
 
@@ -57,16 +57,7 @@ def run(ns: argparse.Namespace) -> int:
             max_boxes=MAX_SUBPROBLEM_BOXES if ns.max_boxes is None else ns.max_boxes,
             progress=progress,
         )
-    data = {
-        "robot": robot.name,
-        "solutions": [numbered(s.as_dict()) for s in res.solutions],
-        "subproblems": res.subproblems,
-        "undecided_boxes": res.undecided,
-        "undecided_enclosures": enclosures(res.undecided_enclosures),
-        "complete": res.complete,
-        "boxes": res.boxes,
-        "elapsed_s": res.elapsed_s,
-    }
+    data = {"robot": robot.name} | numbered(res.as_dict())
     if plot is not None:
         from taut.viz import plot_equilibria
 

@@ -15,7 +15,7 @@ import argparse
 from typing import TYPE_CHECKING
 
 from taut.cli import _args as A
-from taut.cli._incomplete import EXIT_STATUS, add_strict, enclosures, report
+from taut.cli._incomplete import EXIT_STATUS, add_strict, report
 from taut.cli._output import console, emit, markup, print_table, table
 from taut.errors import CableSetError, PoseError
 
@@ -87,18 +87,9 @@ def run(ns: argparse.Namespace) -> int:
             max_boxes=ns.max_boxes,
             progress=progress,
         )
-    data = {
-        "robot": robot.name,
-        "taut": sorted(cables),
-        "assigned": res.fixed,
-        "solutions": [numbered(s.as_dict()) for s in res.solutions],
-        "complete": res.complete,
-        "undecided_boxes": res.undecided,
-        "undecided_enclosures": enclosures(res.undecided_enclosures),
-        "boxes": res.boxes,
-        "exhausted": res.exhausted,
-        "elapsed_s": res.elapsed_s,
-    }
+    result = numbered(res.as_dict())
+    # the coordinates the library calls fixed, the command's JSON prints as assigned
+    data = {"robot": robot.name, "taut": sorted(cables), "assigned": result.pop("fixed")} | result
 
     def tables(con: Console, d: dict) -> None:
         free = [k for k, name in enumerate(robot.pose_names[:6]) if name not in res.fixed]

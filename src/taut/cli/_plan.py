@@ -65,7 +65,7 @@ reference pose of the robot (e.g. q1).  The path is checked independently at --s
 interpolated points per step (taut.statics._feasibility).  No path is an answer (exit 0):
 "found": false, with "no_path": true for a proof (A*), false when a budget ran out.
 JSON: {"planner", "method", "found", "path": [[x,y,z,phi,theta,sigma], ...], "charts",
-"nodes", "elapsed_s", "min_tension_margin", "expanded", "no_path", "length", "verified"}."""
+"nodes", "elapsed_s", "min_tension_margin", "expanded", "no_path", "complete", "length", "verified"}."""
 
 
 def _pose(robot: Robot, text: str, what: str) -> np.ndarray:
@@ -191,31 +191,28 @@ def run(ns: argparse.Namespace) -> int:
     t0 = time.perf_counter()
     method, res = _run(ns, M, y0, y1)
     elapsed = time.perf_counter() - t0
-    data = {
-        "robot": robot.name,
-        "planner": ns.planner,
-        "method": method,
-        "found": res.found,
-        "path": [],
-        "charts": res.charts,
-        "nodes": res.nodes if method == "atlasrrt" else None,
-        "elapsed_s": elapsed,
-        "min_tension_margin": None,
-        "expanded": res.expanded if method == "astar" else None,
-        "no_path": res.no_path,
-        "length": None,
-        "verified": None,
-        "fixed": fixed,
-    }
+    # the path as poses (not the manifold's points), the count of the planner that ran (None
+    # for the other's), and the time of both planners of auto
+    data = (
+        {"robot": robot.name, "planner": ns.planner}
+        | res.as_dict()
+        | {
+            "path": [],
+            "nodes": res.nodes if method == "atlasrrt" else None,
+            "expanded": res.expanded if method == "astar" else None,
+            "elapsed_s": elapsed,
+            "min_tension_margin": None,
+            "verified": None,
+            "fixed": fixed,
+        }
+    )
     table = None  # the path's poses and extreme tensions, one row per pose
     if res.found:
         poses = M.align(M.pose(res.path), start)  # begins at --start as written
         lo, hi = M.tension_range(res.path)
         margin = np.minimum(lo - M.f_min, M.f_max - hi).min()
         check = verify_path(robot, poses, E=M.E, subdivide=ns.subdivide)
-        data.update(
-            path=poses.tolist(), min_tension_margin=float(margin), length=res.length, verified=check.all_feasible
-        )
+        data.update(path=poses.tolist(), min_tension_margin=float(margin), verified=check.all_feasible)
         table = np.hstack([poses, lo, hi])
 
     def human(d: dict) -> None:

@@ -21,10 +21,10 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 
+from taut._results import Result
 from taut.errors import TrajectoryError
 from taut.model import Robot
 from taut.motion._waypoints import complete_waypoints
@@ -33,7 +33,7 @@ __all__ = ["RobotTrajectory", "robot_trajectory"]
 
 
 @dataclass(frozen=True)
-class RobotTrajectory:
+class RobotTrajectory(Result):
     """A named trajectory of a robot file.
 
     ``waypoints`` ``(N, pose_size)`` (read-only; positions completed to poses), ``steps`` the
@@ -48,20 +48,8 @@ class RobotTrajectory:
     description: str | None
 
     def __post_init__(self) -> None:
-        w = np.array(self.waypoints, dtype=float)
-        w.setflags(write=False)
-        object.__setattr__(self, "waypoints", w)
-
-    def as_dict(self) -> dict[str, Any]:
-        """The trajectory as plain JSON types."""
-        return {
-            "name": self.name,
-            "description": self.description,
-            "waypoints": self.waypoints.tolist(),
-            "steps": None if self.steps is None else list(self.steps),
-            "speed": self.speed,
-            "dwell": self.dwell,
-        }
+        object.__setattr__(self, "waypoints", np.asarray(self.waypoints, dtype=float))
+        super().__post_init__()
 
 
 def robot_trajectory(robot: Robot, name: str | None = None) -> RobotTrajectory:
