@@ -34,11 +34,30 @@ __all__ = ["RobotTrajectory", "robot_trajectory"]
 
 @dataclass(frozen=True)
 class RobotTrajectory(Result):
-    """A named trajectory of a robot file.
+    """A named trajectory of a robot file (:func:`robot_trajectory`).
 
-    ``waypoints`` ``(N, pose_size)`` (read-only; positions completed to poses), ``steps`` the
-    increments of each of the ``N − 1`` moves or None, ``speed`` [m/s] or None, ``dwell`` [s]
-    at each waypoint, and the file's ``description``."""
+    Attributes
+    ----------
+    name : str
+    waypoints : ndarray, shape (N, pose_size)
+        Read-only; positions completed to poses.
+    steps : tuple of int or None
+        The increments of each of the ``N − 1`` moves.
+    speed : float or None
+        [m/s].
+    dwell : float
+        [s] at each waypoint.
+    description : str or None
+        The file's description.
+
+    Examples
+    --------
+    >>> import taut
+    >>> from taut.motion import robot_trajectory
+    >>> tr = robot_trajectory(taut.example("adjustable-8cable"), "sim-a")
+    >>> tr.waypoints.flags.writeable, tr.as_dict()["steps"]
+    (False, [100, 100])
+    """
 
     name: str
     waypoints: np.ndarray
