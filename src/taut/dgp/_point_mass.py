@@ -291,15 +291,20 @@ class PointMassTracker:
     def update(
         self, lengths: np.ndarray, s: _Tracked
     ) -> tuple[int, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, float, float]:
-        """Newton from the state ``s`` at the new ``lengths``, then Krawczyk on the box that
-        covers the step (:func:`taut.interval.certified_step`).  Returns ``(status, p, R,
+        """Newton from the state ``s``'s position at the new ``lengths`` (the tensions from the
+        statics there), then Krawczyk on the box that covers the step (:func:`taut.interval.certified_step`).  Returns ``(status, p, R,
         angles, tensions, spans, smallest eigenvalue of the reduced Hessian, box width)``."""
         robot, taut = self.robot, self.taut
         d, n = robot.dimension, robot.n_cables
         idx = list(taut)
         sp = build_point_mass(robot, lengths, taut)
         system = sp.system
-        x0 = np.concatenate([np.asarray(s.p, float), np.asarray(s.tensions, float)[idx] / lengths[idx]])
+        p0 = np.asarray(s.p, float)
+        # the tensions are linear at a given position: start from the least-squares ones of this
+        # subset, not from the previous subset's (a cable that just became taut has none)
+        f, _ = point_mass_load(robot)
+        t0 = np.linalg.lstsq((robot.exits[idx] - p0).T, -f, rcond=None)[0]
+        x0 = np.concatenate([p0, t0])
         status, x, lo, hi = certified_step(
             *system.tape.arrays[:7],
             system.n_equations,
