@@ -269,8 +269,11 @@ def point_mass_stable(exits: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.n
 
 
 class _Tracked(Protocol):
-    p: np.ndarray
-    tensions: np.ndarray
+    @property
+    def p(self) -> np.ndarray: ...
+
+    @property
+    def tensions(self) -> np.ndarray: ...
 
 
 #: Newton's relative tolerance, steps and Krawczyk inflations of a tracking update (as the

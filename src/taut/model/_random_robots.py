@@ -209,7 +209,7 @@ def random_point_mass_robot(
             f"{'Spatial' if dimension == 3 else 'Planar'} point mass; lengths from the position "
             f"{np.round(position, 4).tolist()} perturbed by {perturbation:g} (taut.model._random_robots)."
         ),
-        dimension=dimension,
+        dimension=3 if dimension == 3 else 2,
         platform=Platform(kind="point-mass", mass=mass),
         cables=tuple(Cable(exit=tuple(float(c) for c in e)) for e in exits),
         reference=Reference(source="taut.model._random_robots", lengths=tuple(float(x) for x in lengths)),
