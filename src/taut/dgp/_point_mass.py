@@ -332,6 +332,28 @@ class PointMassTracker:
         return status, p, np.eye(d), np.zeros(0), tau, spans, eig, width
 
 
+def pivot(
+    robot: Robot, p: np.ndarray, tensions: np.ndarray, lengths: np.ndarray, taut: tuple[int, ...], add: int
+) -> tuple[int, ...]:
+    """The taut set after cable ``add`` becomes taut beside the ``d`` cables of ``taut`` at the
+    position ``p``: the ``d + 1`` cables' scaled tensions that balance the load form a line
+    ``t + λ n`` (``n`` spanning the null space of the statics); from the current ones
+    (``add``'s zero) ``λ`` grows until another tension reaches zero — that cable goes slack
+    (the simplex method's ratio test).  ``taut + add`` when no tension decreases."""
+    cables = sorted((*taut, add))
+    A = (robot.exits[cables] - p).T
+    n = np.linalg.svd(A)[2][-1]
+    k = cables.index(add)
+    if n[k] < 0:
+        n = -n
+    t = np.asarray(tensions, float)[cables] / lengths[cables]
+    steps = [(t[j] / -n[j], i) for j, i in enumerate(cables) if i != add and n[j] < 0]
+    if not steps:
+        return tuple(cables)
+    drop = min(steps)[1]
+    return tuple(i for i in cables if i != drop)
+
+
 def point_mass_igp(
     robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo: np.ndarray, pos_hi: np.ndarray
 ) -> tuple[System, LinearFilter, np.ndarray, np.ndarray, np.ndarray, list[int]]:

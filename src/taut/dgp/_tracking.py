@@ -43,7 +43,6 @@ from __future__ import annotations
 
 import weakref
 from dataclasses import dataclass, field
-from itertools import combinations
 
 import numpy as np
 import numpy.typing as npt
@@ -52,7 +51,7 @@ from numba import njit
 from taut._checks import as_array
 from taut.dgp._formulation import Subproblem, build_subproblem, frame_from_points, load
 from taut.dgp._inverse import IGPSolution
-from taut.dgp._point_mass import PointMassTracker
+from taut.dgp._point_mass import PointMassTracker, pivot
 from taut.dgp._solve import DGPSolution, check_lengths
 from taut.dgp._stability import smallest_eigenvalue
 from taut.errors import TautError, TrackingLostError
@@ -311,8 +310,7 @@ def _advance(robot: Robot, s: _State, lengths: np.ndarray) -> tuple[_State, floa
             nxt = tuple(sorted(taut + (add,)))
             if robot.is_point_mass and len(nxt) > robot.dimension:
                 # a point hangs on at most d cables: the added one takes the place of one of them
-                swaps = [c for c in combinations(nxt, robot.dimension) if add in c and c not in tried]
-                nxt = swaps[0] if swaps else nxt
+                nxt = pivot(robot, new.p, new.tensions, lengths, taut, add)
         if nxt in tried:
             raise TrackingLostError(
                 f"tracking lost at lengths {lengths.tolist()}: the taut set cycles through "
