@@ -362,6 +362,22 @@ def test_cli_fk_inconsistent_lengths_no_equilibrium(taut_cli):
     assert run.code == 0, run.err
     data = run.json()
     assert data["solutions"] == [] and data["complete"] is True
+    # apart, firmware's least-squares fit: a position, far from fitting these lengths
+    fit = data["least_squares"]
+    a = taut.example("camera-4cable").exits
+    residuals = np.linalg.norm(a - np.array(fit["position"]), axis=1) - [10.0, 30.0, 10.0, 30.0]
+    np.testing.assert_allclose(fit["residuals"], residuals, atol=1e-9)
+    assert fit["rms_residual"] == pytest.approx(np.sqrt(np.mean(residuals**2))) and fit["rms_residual"] > 1.0
+
+
+def test_least_squares_fit_is_apart_and_only_for_point_masses():
+    """The camera's rounded lengths: the fit lands within a millimetre of the certified
+    equilibrium (every cable nearly taut), a rigid robot has none."""
+    robot = taut.example("camera-4cable")
+    res = solve_dgp(robot)
+    assert res.least_squares is not None and "least_squares" in res.as_dict()
+    np.testing.assert_allclose(res.least_squares.position, res.solutions[0].position, atol=1e-3)
+    assert solve_dgp(taut.example("suspended-3cable"), max_taut=1).least_squares is None
 
 
 @pytest.mark.parametrize("lengths", ["1,2,3", "1,2,3,-4", "1,2,nan,4", "1,2,3,4,5"])

@@ -35,7 +35,11 @@ naming the larger one.
 JSON: {{"robot", "solutions": [{{"taut", "position", "orientation", "tensions", "stable", "boundary"?, ...}}],
 "complete", "subproblems", "undecided_boxes", "undecided_enclosures": [{{"taut", "cause",
 "enclosure": {{name: [lo, hi]}}, "tensions": [[lo, hi], ...], "reference_points"}}], "boxes",
-"elapsed_s"}}."""
+"elapsed_s", "least_squares"?: {{"position", "residuals", "rms_residual"}}}}.  A point mass
+(position x, y[, z], no orientation) hangs on at most 3 (2 in the plane) taut cables, at
+the lowest point its cables allow: lengths that admit none give no equilibrium, complete.
+"least_squares" is then, apart, the least-squares fit of all the lengths that cable-printer
+firmware computes (every cable assumed taut): not an equilibrium."""
 
 
 def run(ns: argparse.Namespace) -> int:
@@ -67,6 +71,8 @@ def run(ns: argparse.Namespace) -> int:
         "boxes": res.boxes,
         "elapsed_s": res.elapsed_s,
     }
+    if res.least_squares is not None:  # point masses: firmware's fit, not an equilibrium
+        data["least_squares"] = res.least_squares.as_dict()
     if plot is not None:
         from taut.viz import plot_equilibria
 

@@ -42,6 +42,7 @@ from typing import Protocol
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result, jsonable
 from taut.dgp._formulation import StaticsFilter, Subproblem, rational_constant
 from taut.errors import TautError
 from taut.interval import Expr, LinearFilter, System, certified_step, compile_system, compile_tape, const, variables
@@ -386,12 +387,49 @@ def point_mass_igp(
     return system, statics, lo, hi, np.arange(nv) < len(free), free
 
 
-def least_squares_position(robot: Robot, lengths: np.ndarray) -> tuple[np.ndarray, float]:
-    """The position that cable-printer firmware computes from measured lengths: the least-squares
-    fit of every cable's length, ``min Σ (‖p − a_i‖ − ρ_i)²`` (Gauss–Newton, from the exits'
-    centroid moved along the load by the mean length), and its root-mean-square residual [m].
-    A local minimum, of every cable taut, with no equilibrium check: what the solver is
-    compared with, not an equilibrium."""
+@dataclass(frozen=True)
+class LeastSquaresFit(Result):
+    """The position that cable-printer firmware computes from measured lengths — not an
+    equilibrium: the least-squares fit of every cable's length, ``min Σ (‖p − a_i‖ − ρ_i)²``,
+    which assumes every cable taut, found by Levenberg–Marquardt from the exits' centroid
+    moved along the load by half the mean length (from the centroid itself it may end on the
+    mirror image above the exits).  A local minimum, with no statics: where it differs from
+    the certified equilibria, the firmware is wrong.
+
+    Attributes
+    ----------
+    position : ndarray, shape (d,)
+        The fitted position [m].
+    residuals : ndarray, shape (n,)
+        ``‖p − a_i‖ − ρ_i`` [m] at it.
+    rms_residual : float
+        Their root mean square [m].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.dgp import solve_dgp
+    >>> from taut.model import example
+    >>> fit = solve_dgp(example("camera-4cable")).least_squares
+    >>> np.round(fit.position, 3), bool(fit.rms_residual < 1e-3)
+    (array([ 2.999, -4.   ,  6.   ]), True)
+    """
+
+    position: np.ndarray
+    residuals: np.ndarray
+    rms_residual: float
+
+    def as_dict(self) -> dict:
+        """``position``, ``residuals`` (per cable) and ``rms_residual``, in metres."""
+        return {
+            "position": jsonable(self.position),
+            "residuals": jsonable(self.residuals),
+            "rms_residual": jsonable(self.rms_residual),
+        }
+
+
+def least_squares_fit(robot: Robot, lengths: np.ndarray) -> LeastSquaresFit:
+    """:class:`LeastSquaresFit` of a point-mass robot at the cable ``lengths``."""
     from scipy.optimize import least_squares
 
     a = robot.exits
@@ -402,4 +440,4 @@ def least_squares_position(robot: Robot, lengths: np.ndarray) -> tuple[np.ndarra
         return np.linalg.norm(p - a, axis=1) - lengths
 
     fit = least_squares(residuals, start, method="lm", xtol=1e-15, ftol=1e-15, gtol=1e-15)
-    return fit.x, float(np.sqrt(np.mean(fit.fun**2)))
+    return LeastSquaresFit(fit.x, fit.fun, float(np.sqrt(np.mean(fit.fun**2))))

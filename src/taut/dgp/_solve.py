@@ -35,7 +35,13 @@ import numpy.typing as npt
 from taut._checks import as_array, as_count, as_number
 from taut._results import Result, freeze, jsonable
 from taut.dgp._formulation import Subproblem, build_subproblem, load
-from taut.dgp._point_mass import build_point_mass, point_mass_load, point_mass_stable
+from taut.dgp._point_mass import (
+    LeastSquaresFit,
+    build_point_mass,
+    least_squares_fit,
+    point_mass_load,
+    point_mass_stable,
+)
 from taut.dgp._single_cable import single_cable_equilibria
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import MAX_SUBPROBLEM_BOXES, UndecidedBox, cause_of, subproblem_box
@@ -158,6 +164,10 @@ class DGPResult(Result):
         Boxes processed by branch-and-prune over all sub-problems.
     elapsed_s : float
         Wall-clock time [s].
+    least_squares : LeastSquaresFit or None
+        Point masses only: the least-squares fit of all the lengths that cable-printer
+        firmware computes — not an equilibrium, an extra to compare with
+        (:mod:`taut.dgp._point_mass`).
     complete : bool
         No box was left undecided (a property).
     exhausted : bool
@@ -184,6 +194,8 @@ class DGPResult(Result):
     undecided_enclosures: tuple[UndecidedBox, ...]
     boxes: int  #: boxes processed by branch-and-prune over all sub-problems
     elapsed_s: float
+    #: point masses: the least-squares fit of all the lengths (firmware's answer, not an equilibrium)
+    least_squares: LeastSquaresFit | None = None
 
     def __post_init__(self) -> None:
         # solutions computed by worker processes arrive unpickled, their arrays writeable
@@ -209,8 +221,9 @@ class DGPResult(Result):
     def as_dict(self) -> dict:
         """The result as ``taut fk --json`` prints it, with 0-based cables: ``solutions``,
         ``complete``, ``exhausted``, ``subproblems``, ``undecided_boxes``,
-        ``undecided_enclosures``, ``boxes``, ``elapsed_s``."""
-        return {
+        ``undecided_enclosures``, ``boxes``, ``elapsed_s``; ``least_squares`` for a point
+        mass."""
+        d = {
             "solutions": [s.as_dict() for s in self.solutions],
             "complete": self.complete,
             "exhausted": self.exhausted,
@@ -220,6 +233,9 @@ class DGPResult(Result):
             "boxes": self.boxes,
             "elapsed_s": self.elapsed_s,
         }
+        if self.least_squares is not None:
+            d["least_squares"] = self.least_squares.as_dict()
+        return d
 
 
 def solution_key(solution: DGPSolution) -> tuple:
@@ -583,7 +599,9 @@ def solve_dgp(
     DGPResult
         :attr:`~DGPResult.complete` when no box was left undecided; otherwise every
         equilibrium it does not list lies in one of its
-        :attr:`~DGPResult.undecided_enclosures` (:mod:`taut.dgp._undecided`).
+        :attr:`~DGPResult.undecided_enclosures` (:mod:`taut.dgp._undecided`).  Lengths that
+        admit no equilibrium give no solution, complete; for a point mass
+        :attr:`~DGPResult.least_squares` holds, apart, the least-squares fit of the lengths.
 
     Raises
     ------
@@ -678,4 +696,5 @@ def solve_dgp(
         if not any(_same_border(sol, other) for other in solutions):
             solutions.append(sol)
     solutions.sort(key=solution_key)
-    return DGPResult(tuple(solutions), len(subsets), tuple(undecided), boxes, time.perf_counter() - t0)
+    fit = least_squares_fit(robot, checked) if robot.is_point_mass else None
+    return DGPResult(tuple(solutions), len(subsets), tuple(undecided), boxes, time.perf_counter() - t0, fit)
