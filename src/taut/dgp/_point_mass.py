@@ -391,7 +391,7 @@ def point_mass_igp(
 class LeastSquaresFit(Result):
     """The position that cable-printer firmware computes from measured lengths — not an
     equilibrium: the least-squares fit of every cable's length, ``min Σ (‖p − a_i‖ − ρ_i)²``,
-    which assumes every cable taut, found by Levenberg–Marquardt from the exits' centroid
+    which assumes every cable taut, found by trust-region least squares from the exits' centroid
     moved along the load by half the mean length (from the centroid itself it may end on the
     mirror image above the exits).  A local minimum, with no statics: where it differs from
     the certified equilibria, the firmware is wrong.
@@ -439,5 +439,5 @@ def least_squares_fit(robot: Robot, lengths: np.ndarray) -> LeastSquaresFit:
     def residuals(p: np.ndarray) -> np.ndarray:
         return np.linalg.norm(p - a, axis=1) - lengths
 
-    fit = least_squares(residuals, start, method="lm", xtol=1e-15, ftol=1e-15, gtol=1e-15)
+    fit = least_squares(residuals, start, method="trf", xtol=1e-15, ftol=1e-15, gtol=1e-15)
     return LeastSquaresFit(fit.x, fit.fun, float(np.sqrt(np.mean(fit.fun**2))))
