@@ -297,6 +297,31 @@ def test_igp_with_fewer_cables_finds_the_hanging_position(dimension):
     assert sol.lengths[1] == pytest.approx(1.0) and sol.tensions[1] == pytest.approx(-load_of(robot)[-1])
 
 
+def test_igp_of_a_planar_point_mass_in_a_box(taut_cli, tmp_path):
+    """Planar: two taut cables fix the position and the linear statics the tensions; with one
+    taut cable and ``y`` fixed the box of the free ``x`` has two corners of two numbers
+    (``--box xmin,ymin,xmax,ymax``), and a box of three numbers is one line."""
+    robot = Robot(
+        name="planar point mass",
+        dimension=2,
+        platform=Platform(kind="point-mass", mass=1.0),
+        cables=(Cable(exit=(0.0, 3.0)), Cable(exit=(4.0, 3.0))),
+    )
+    res = solve_igp(robot, [0, 1], {"x": 1.0, "y": 1.0})
+    (sol,) = res.solutions
+    p = np.array([1.0, 1.0])
+    t = np.linalg.solve((robot.exits - p).T, [0.0, 9.81])
+    np.testing.assert_allclose(sol.tensions, t * np.linalg.norm(robot.exits - p, axis=1), rtol=1e-12)
+    path = tmp_path / "planar.yaml"
+    taut.save_robot(robot, path)
+    run = taut_cli("igp", str(path), "--taut", "1", "--fix", "y=1", "--box=-1,-5,5,2.9", "--json")
+    assert run.code == 0, run.err
+    (sol,) = run.json()["solutions"]
+    assert sol["position"] == [0.0, 1.0] and sol["lengths"][0] == pytest.approx(2.0)
+    run = taut_cli("igp", str(path), "--taut", "1", "--fix", "y=1", "--box=-1,-5,5")
+    assert run.code == 2 and run.err.count("\n") == 1 and "xmin,ymin,xmax,ymax" in run.err
+
+
 def test_igp_refuses_more_taut_cables_than_the_dimension():
     with pytest.raises(CableSetError, match="1 to 3 taut cables"):
         solve_igp(taut.example("camera-4cable"), [0, 1, 2, 3], {"x": 0, "y": 0, "z": 5, "a": 0})

@@ -7,7 +7,9 @@ geometrico-static problem (Berti 2015, Ch. 2–3).
 :mod:`taut.dgp._formulation` (for ``3 ≤ m ≤ 5`` every box is also contracted onto the pose
 manifold of the rigidity and length equations, its ``geometry``) — through a
 :mod:`taut.parallel` executor, and classifies every solution by the reduced Hessian
-(:mod:`taut.dgp._stability`).  An equilibrium on the border of two taut subsets — a
+(:mod:`taut.dgp._stability`).  A point mass, spatial or planar, hangs on subsets of up to
+``d`` cables, each a square system of :mod:`taut.dgp._point_mass` solved the same way (one
+taut cable included: a point, not a continuum).  An equilibrium on the border of two taut subsets — a
 cable at its length with zero tension, so that its certified box straddles the bound of
 one subset's tension or of the other's slack-cable inequality — is reported once, with the
 smaller subset as ``taut`` and the larger as ``boundary``: at the certificate's precision it
