@@ -97,6 +97,12 @@ def run(ns: argparse.Namespace) -> int:
             ],
         )
         print_table(con, t)
+        if res.least_squares is not None:
+            fit = res.least_squares
+            con.print(
+                f"least-squares fit of all the lengths, as firmware computes it (not an equilibrium): "
+                f"({', '.join(f'{v:.4f}' for v in fit.position)}), rms residual {fit.rms_residual:.3g} m"
+            )
 
     emit(data, ns.json, human)
     return status
