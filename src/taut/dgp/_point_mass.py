@@ -144,10 +144,6 @@ class PointMassSubproblem(Subproblem):
     unknowns are the position (``pose_unknowns = d``), then the scaled tensions."""
 
     @property
-    def dimension(self) -> int:
-        return self.pose_unknowns
-
-    @property
     def names(self) -> tuple[str, ...]:
         """Names of the pose unknowns (the position's coordinates)."""
         return POSITION_UNKNOWNS[: self.pose_unknowns]
