@@ -205,6 +205,13 @@ def _tree():
     return CableStateTree([[0.0, 1.0, 0.2], [0.0, 0.0, 0.0]])
 
 
+def _point_mass_fit():
+    from taut.dgp import solve_dgp
+    from taut.model import example
+
+    return solve_dgp(example("camera-4cable")).least_squares
+
+
 def _example(name):
     from taut.model import example
 
@@ -239,6 +246,7 @@ def _result(key, tmp_path):
         "dgp.DGPResult": _dgp,
         "dgp.DGPSolution": lambda: _dgp().solutions[0],
         "dgp.IGPResult": _igp,
+        "dgp.LeastSquaresFit": _point_mass_fit,
         "dgp.IGPSolution": lambda: _igp().solutions[0],
         "dgp.UndecidedBox": lambda: _dgp().undecided_enclosures[0],
         "dynamics.ControlResult": lambda: dynamics.simulate_control(planar, _motion(), rate_hz=20),

@@ -35,7 +35,11 @@ naming the larger one.
 JSON: {{"robot", "solutions": [{{"taut", "position", "orientation", "tensions", "stable", "boundary"?, ...}}],
 "complete", "exhausted", "subproblems", "undecided_boxes", "undecided_enclosures": [{{"taut", "cause",
 "enclosure": {{name: [lo, hi]}}, "tensions": [[lo, hi], ...], "reference_points"}}], "boxes",
-"elapsed_s"}}."""
+"elapsed_s", "least_squares"?: {{"position", "residuals", "rms_residual"}}}}.  A point mass
+(position x, y[, z], no orientation) hangs on at most 3 (2 in the plane) taut cables, at
+the lowest point its cables allow: lengths that admit none give no equilibrium, complete.
+"least_squares" is then, apart, the least-squares fit of all the lengths that cable-printer
+firmware computes (every cable assumed taut): not an equilibrium."""
 
 
 def run(ns: argparse.Namespace) -> int:
@@ -82,6 +86,12 @@ def run(ns: argparse.Namespace) -> int:
             ],
         )
         print_table(con, t)
+        if res.least_squares is not None:
+            fit = res.least_squares
+            con.print(
+                f"least-squares fit of all the lengths, as firmware computes it (not an equilibrium): "
+                f"({', '.join(f'{v:.4f}' for v in fit.position)}), rms residual {fit.rms_residual:.3g} m"
+            )
 
     emit(data, ns.json, human)
     return status
