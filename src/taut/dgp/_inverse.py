@@ -5,7 +5,8 @@ find the other ``6 − m`` coordinates and the ``m`` tensions that put the platf
 static equilibrium (Eq. 2.3) with non-negative tensions.  The cable lengths to command are
 then the anchor–exit distances (Eq. 2.2).  The thesis controls ``x, y, z`` with ``m = 3``,
 adds ``φx`` or ``φy`` with ``m = 4`` and both with ``m = 5``; any ``m`` coordinates may be
-assigned here.
+assigned here.  A planar platform (pose ``x, y, θ``) takes ``1 ≤ m ≤ 3`` taut cables and
+``m`` of its three coordinates (:func:`taut.dgp._planar.inverse_system`).
 
 Where the thesis's control routine solved this square system locally, :func:`solve_igp`
 returns *all* its solutions in a domain, each certified, as its §4.1.2 announces for a
@@ -67,11 +68,11 @@ import numpy.typing as npt
 
 from taut._checks import as_count, as_number
 from taut._results import Result, jsonable
+from taut.dgp import _planar
 from taut.dgp._formulation import load
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import UndecidedBox, cause_of, scaled
 from taut.errors import CableSetError, PoseError, UnsupportedRobotError
-from taut.geometry import rotation_matrix
 from taut.interval import (
     MAX_BOXES,
     ONE,
@@ -250,10 +251,10 @@ class IGPResult(Result):
 
 def _check_robot(robot: Robot) -> None:
     refuse_swivels(robot, "the inverse geometrico-static problem")
-    if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
-        kind = "planar" if robot.dimension != 3 else "point-mass" if robot.is_point_mass else "jointed"
+    if robot.is_point_mass or robot.n_joints:
+        kind = "point-mass" if robot.is_point_mass else "jointed"
         raise UnsupportedRobotError(
-            f"the inverse geometrico-static problem needs a spatial rigid platform without joints; {robot.name} is {kind}"
+            f"the inverse geometrico-static problem needs a rigid platform without joints; {robot.name} is {kind}"
         )
 
 
@@ -273,8 +274,11 @@ def _check_taut(robot: Robot, taut: Iterable[int]) -> tuple[int, ...]:
         raise CableSetError(f"taut cables: no cable {numbers} (0-based index {bad}); {robot.name} has cables 1..{n}")
     if len(set(indices)) != len(indices):
         raise CableSetError(f"taut cables: {[i + 1 for i in indices]} names a cable twice")
-    if not 2 <= len(indices) <= 6:
-        raise CableSetError(f"the inverse geometrico-static problem takes 2 to 6 taut cables, got {len(indices)}")
+    least, most = (1, _planar.MAX_TAUT) if robot.dimension == 2 else (2, 6)
+    if not least <= len(indices) <= most:
+        raise CableSetError(
+            f"the inverse geometrico-static problem takes {least} to {most} taut cables, got {len(indices)}"
+        )
     return tuple(sorted(indices))
 
 
@@ -313,20 +317,21 @@ def _position_box(
     """The search box of the platform origin: given, or the intersection over the taut
     cables of ``a_i ± (reach_i + ‖r_i‖)`` with ``reach_i`` the cable's largest length, or
     the diagonal of the exit points' bounding box for a cable without one."""
+    d = robot.dimension
     if box is not None:
         try:
             lo, hi = (np.asarray(b, float).ravel() for b in box)
         except (TypeError, ValueError):
-            raise PoseError(f"box: expected (lower corner, upper corner) of 3 numbers each, got {box!r}") from None
-        if lo.size != 3 or hi.size != 3 or not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi))):
-            raise PoseError(f"box: expected two finite corners of 3 numbers, got {box!r}")
+            raise PoseError(f"box: expected (lower corner, upper corner) of {d} numbers each, got {box!r}") from None
+        if lo.size != d or hi.size != d or not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi))):
+            raise PoseError(f"box: expected two finite corners of {d} numbers, got {box!r}")
         if np.any(lo >= hi):
             raise PoseError(f"box: the lower corner {lo.tolist()} must lie below the upper corner {hi.tolist()}")
         return lo, hi
     a, r = robot.exits, robot.anchors
     diagonal = float(np.linalg.norm(a.max(0) - a.min(0)))
     lmax = robot.length_bounds[1]
-    lo, hi = np.full(3, -np.inf), np.full(3, np.inf)
+    lo, hi = np.full(d, -np.inf), np.full(d, np.inf)
     for i in taut:
         reach = (lmax[i] if np.isfinite(lmax[i]) else diagonal) + float(np.linalg.norm(r[i]))
         lo, hi = np.maximum(lo, a[i] - reach), np.minimum(hi, a[i] + reach)
@@ -517,16 +522,18 @@ def solve_igp(
     Parameters
     ----------
     robot : Robot
-        A spatial rigid platform without joints or swivelling pulleys.
+        A rigid platform without joints or swivelling pulleys: spatial, or planar (pose
+        ``x, y, theta``; :func:`taut.dgp._planar.inverse_system`).
     taut : iterable of int
-        The 0-based indices of the ``m`` taut cables, ``2 ≤ m ≤ 6`` (the cables the command
-        line numbers 1, 2, 3 are ``[0, 1, 2]``).
+        The 0-based indices of the ``m`` taut cables, ``2 ≤ m ≤ 6`` (``1 ≤ m ≤ 3`` planar;
+        the cables the command line numbers 1, 2, 3 are ``[0, 1, 2]``).
     fixed : mapping of str to float
         Exactly ``m`` pose coordinates by name [m, rad]: the robot's ``pose_names``
         (``x, y, z, a, b, c``; ``phix, phiy, phiz`` are accepted for the ``xyz``
         conventions; ``phi, theta, sigma`` for tilt-and-torsion).
     box : (array_like, array_like), optional
-        Lower and upper corners [m] of the search box of the free position coordinates;
+        Lower and upper corners [m] of the search box of the free position coordinates (3
+        numbers each; 2 planar);
         default the intersection of the taut cables' reach.
     tol : float, optional
         Bisection threshold of :func:`~taut.interval.branch_and_prune` (metres, cosines and
@@ -548,12 +555,12 @@ def solve_igp(
     Raises
     ------
     CableSetError
-        Taut cables that are not 2 to 6 distinct cables of the robot.
+        Taut cables that are not 2 to 6 (planar: 1 to 3) distinct cables of the robot.
     PoseError
         Fixed coordinates that are not ``m`` distinct pose coordinates with finite values,
         or a bad ``box``.
     UnsupportedRobotError
-        A planar, point-mass or jointed robot, or a swivelling pulley.
+        A point-mass or jointed robot, or a swivelling pulley.
     TautError
         A bad ``tol`` or ``max_boxes``.
 
@@ -587,7 +594,11 @@ def solve_igp(
     boxes = 0
     exhausted = False
     if np.all(pos_lo < pos_hi):  # the taut cables' reach boxes can miss each other
-        pb = _build(robot, idx, values, pos_lo, pos_hi)
+        if robot.dimension == 2:
+            angle = _cos_sin(values[2]) if 2 in values else None
+            pb = _Problem(*_planar.inverse_system(robot, idx, values, pos_lo, pos_hi, angle, COS_SIN_BOUND))
+        else:
+            pb = _build(robot, idx, values, pos_lo, pos_hi)
         res = branch_and_prune(
             pb.system,
             pb.lo,
@@ -633,7 +644,7 @@ def _unknown_names(robot: Robot, pb: _Problem) -> tuple[str, ...]:
     """Names of the pose unknowns: the free position coordinates, then the cosine and sine
     of every free angle (of ``σ − φ`` for a free ``σ`` of tilt-and-torsion)."""
     names = robot.pose_names[:6]
-    angles = [names[3 + k] for k in pb.free_ang]
+    angles = [names[robot.dimension + k] for k in pb.free_ang]
     if robot.orientation == "tilt-torsion" and 2 in pb.free_ang:
         angles[-1] = f"{names[5]}-{names[3]}"
     return (*(names[k] for k in pb.free_pos), *(f"{f}({a})" for a in angles for f in ("cos", "sin")))
@@ -652,7 +663,7 @@ def _undecided(
     through the cable lengths over it: the anchor ``b_i = p + R r_i`` lies within ``‖r_i‖``
     of the origin ``p``, which lies in the box's position range."""
     k = lo.size - len(taut)
-    p_lo = np.array([fixed.get(c, 0.0) for c in range(3)])
+    p_lo = np.array([fixed.get(c, 0.0) for c in range(robot.dimension)])
     p_hi = p_lo.copy()
     p_lo[pb.free_pos], p_hi[pb.free_pos] = lo[: len(pb.free_pos)], hi[: len(pb.free_pos)]
     a, r = robot.exits[list(taut)], robot.anchors[list(taut)]
@@ -673,14 +684,14 @@ def _undecided(
 def _solution(
     robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pb: _Problem, cert: Certificate
 ) -> IGPSolution:
-    x = cert.x
-    pose = np.array([fixed.get(k, 0.0) for k in range(6)])
+    x, d = cert.x, robot.dimension
+    pose = np.array([fixed.get(k, 0.0) for k in range(robot.wrench_dim)])
     pose[pb.free_pos] = x[: len(pb.free_pos)]
     cs = x[len(pb.free_pos) : len(pb.free_pos) + 2 * len(pb.free_ang)].reshape(-1, 2)
-    pose[[3 + k for k in pb.free_ang]] = np.arctan2(cs[:, 1], cs[:, 0])
-    if robot.orientation == "tilt-torsion" and 2 in pb.free_ang:  # the unknown was ψ = σ − φ
+    pose[[d + k for k in pb.free_ang]] = np.arctan2(cs[:, 1], cs[:, 0])
+    if d == 3 and robot.orientation == "tilt-torsion" and 2 in pb.free_ang:  # the unknown was ψ = σ − φ
         pose[5] = math.remainder(pose[3] + pose[5], 2 * math.pi)
-    p, R = pose[:3], rotation_matrix(pose[3:], robot.orientation)
+    p, R = pose[:d], _planar.rotation(robot, pose[d:])
     a, r = robot.exits, robot.anchors
     _, _, gp = load(robot)
     b = p + r @ R.T
@@ -696,7 +707,7 @@ def _solution(
     return IGPSolution(
         tuple(taut),
         p,
-        pose[3:],
+        pose[d:],
         tensions,
         lengths,
         tuple(slack),

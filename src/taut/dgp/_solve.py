@@ -34,12 +34,12 @@ import numpy.typing as npt
 
 from taut._checks import as_array, as_count, as_number
 from taut._results import Result, freeze, jsonable
+from taut.dgp import _planar
 from taut.dgp._formulation import Subproblem, build_subproblem, load
 from taut.dgp._single_cable import single_cable_equilibria
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import MAX_SUBPROBLEM_BOXES, UndecidedBox, cause_of, subproblem_box
 from taut.errors import TautError
-from taut.geometry import angles_from_matrix
 from taut.interval import (
     MAX_BOXES,
     Box,
@@ -258,7 +258,7 @@ def check_lengths(robot: Robot, lengths: npt.ArrayLike) -> np.ndarray:
     return arr
 
 
-def domain_pieces(sp: Subproblem, split: int) -> list[Box]:
+def domain_pieces(sp: Subproblem | _planar.PlanarSubproblem, split: int) -> list[Box]:
     """The sub-problem's domain cut into up to ``2**split`` pieces that may hold solutions:
     breadth first, the widest piece is contracted (HC4, statics filter) and halved across
     its widest pose variable, empty pieces dropped — most of the initial box is empty, and
@@ -303,19 +303,19 @@ STARVE = 10.0
 #: Per process, the sub-problems last built and their pieces, keyed by the job's data:
 #: a worker running several pieces of one sub-problem builds it once (a build takes
 #: ~20 ms, as long as solving many pieces).
-_PREPARED: dict[tuple[str, bytes, tuple[int, ...], int], tuple[Subproblem, list[Box]]] = {}
+_PREPARED: dict[tuple[str, bytes, tuple[int, ...], int], tuple[Subproblem | _planar.PlanarSubproblem, list[Box]]] = {}
 PREPARED_SIZE = 8
 
 
 def prepared_subproblem(
     robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: int
-) -> tuple[Subproblem, list[Box]]:
+) -> tuple[Subproblem | _planar.PlanarSubproblem, list[Box]]:
     """The sub-problem of ``taut`` at ``lengths`` and its :func:`domain_pieces`, built once
     per process for the last :data:`PREPARED_SIZE` of them."""
     key = (robot.model_dump_json(), lengths.tobytes(), taut, split)
     hit = _PREPARED.get(key)
     if hit is None:
-        sp = build_subproblem(robot, lengths, taut)
+        sp = (_planar.build_subproblem if robot.dimension == 2 else build_subproblem)(robot, lengths, taut)
         hit = (sp, domain_pieces(sp, split))
         while len(_PREPARED) >= PREPARED_SIZE:
             _PREPARED.pop(next(iter(_PREPARED)))
@@ -338,12 +338,13 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
     _, _, gp = load(robot)
     out: list[DGPSolution] = []
     if len(taut) == 1:
-        for s in single_cable_equilibria(robot, lengths, taut[0]):
+        single = _planar.single_cable_equilibria if robot.dimension == 2 else single_cable_equilibria
+        for s in single(robot, lengths, taut[0]):
             out.append(
                 DGPSolution(
                     (taut[0],),
                     s["p"],
-                    angles_from_matrix(s["R"], robot.orientation),
+                    _planar.orientation(s["R"], robot.orientation),
                     s["tensions"],
                     s["stable"],
                     0.0,
@@ -418,7 +419,9 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
 
 
 def _resolve_narrow(
-    sp: Subproblem, found: list[tuple[Certificate, bool]], left: list[tuple[np.ndarray, np.ndarray, str]]
+    sp: Subproblem | _planar.PlanarSubproblem,
+    found: list[tuple[Certificate, bool]],
+    left: list[tuple[np.ndarray, np.ndarray, str]],
 ) -> tuple[list[tuple[Certificate, bool]], list[tuple[np.ndarray, np.ndarray, str]]]:
     """The boxes double precision left too narrow to bisect (a singular or nearly double
     solution), searched again in multi-precision balls (:mod:`taut.interval._precise`).
@@ -544,11 +547,13 @@ def solve_dgp(
     Parameters
     ----------
     robot : Robot
-        A spatial rigid platform without joints or swivelling pulleys.
+        A rigid platform, spatial or planar (:mod:`taut.dgp._planar`), without joints or
+        swivelling pulleys.
     lengths : array_like, shape (n,), optional
         Cable lengths [m]; default the robot's ``reference.lengths``.
     max_taut : int, optional
-        Largest taut subset searched (default ``min(n, 6)``).
+        Largest taut subset searched (default ``min(n, 6)``; ``min(n, 3)`` for a planar
+        platform).
     executor : Executor or distributed.Client, optional
         Where the jobs run, as for :func:`~taut.workspace.evaluate_workspace`: ``None``
         (serial), an executor of :func:`taut.parallel.get_executor`, or a
@@ -583,7 +588,7 @@ def solve_dgp(
     Raises
     ------
     TautError
-        A planar, point-mass or jointed robot, lengths that are not ``n`` positive numbers,
+        A point-mass or jointed robot, lengths that are not ``n`` positive numbers,
         no reference lengths to default to, lengths that put the platform beyond
         :data:`MAX_SCALE` ``tol`` from the origin (where double precision cannot resolve
         ``tol``), or a bad option.
@@ -608,8 +613,8 @@ def solve_dgp(
     (6, 1, True)
     """
     refuse_swivels(robot, "the DGP solver")
-    if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
-        raise TautError("the DGP solver handles spatial rigid platforms without joints")
+    if robot.is_point_mass or robot.n_joints:
+        raise TautError("the DGP solver handles rigid platforms without joints")
     if lengths is None:
         if robot.reference is None or robot.reference.lengths is None:
             raise TautError(f"{robot.name} has no reference lengths: give the cable lengths")
@@ -618,7 +623,8 @@ def solve_dgp(
     tol = as_number(tol, "tol", positive=True)
     check_scale(robot, checked, tol)
     n = robot.n_cables
-    top = min(n, 6) if max_taut is None else min(n, 6, as_count(max_taut, "max_taut"))
+    most = _planar.MAX_TAUT if robot.dimension == 2 else 6
+    top = min(n, most) if max_taut is None else min(n, most, as_count(max_taut, "max_taut"))
     split = SPLIT if split is None else as_count(split, "split", minimum=0)
     if split > 10:
         raise TautError(f"split must be between 0 and 10 (up to 1024 pieces), got {split}")

@@ -29,7 +29,9 @@ spans and the stability test of §3.2.2 — run in one compiled call (:func:`_up
 few tens of microseconds per update, Python-side array code would cost more than the
 arithmetic.  A single taut cable leaves the spin about the vertical free (a continuum,
 §2.3): its Jacobian is singular and tracking it raises
-:class:`~taut.errors.TrackingLostError`.
+:class:`~taut.errors.TrackingLostError`.  A planar platform (:mod:`taut.dgp._planar`) is
+tracked on one to three taut cables (one cable fixes its angle), by the same Newton and
+Krawczyk steps from Python.
 
 References
 ----------
@@ -49,12 +51,13 @@ import numpy.typing as npt
 from numba import njit
 
 from taut._checks import as_array
+from taut.dgp import _planar
 from taut.dgp._formulation import Subproblem, build_subproblem, frame_from_points, load
 from taut.dgp._inverse import IGPSolution
 from taut.dgp._solve import DGPSolution, check_lengths
 from taut.dgp._stability import smallest_eigenvalue
 from taut.errors import TautError, TrackingLostError
-from taut.geometry import CONVENTIONS, matrix_angles, rotation_matrix
+from taut.geometry import CONVENTIONS, matrix_angles
 from taut.interval import CONST, SQR, certified_step, point_kernel
 from taut.kinematics import refuse_swivels
 from taut.model import Robot
@@ -90,6 +93,16 @@ class _Compiled:
         return _update(*self.args, lengths, s.p, s.R, s.tensions)  # type: ignore[call-arg]
 
 
+@dataclass(frozen=True)
+class _PlanarCompiled:
+    """A planar platform's sub-problem compiled once (:class:`taut.dgp._planar.Tracker`)."""
+
+    tracker: _planar.Tracker
+
+    def update(self, lengths: np.ndarray, s: _State) -> Update:
+        return self.tracker.update(lengths, s.p, s.R, s.tensions)
+
+
 @dataclass
 class _RobotCache:
     load_point: np.ndarray  #: body-frame point where the external wrench acts
@@ -109,10 +122,12 @@ def _cache(robot: Robot) -> _RobotCache:
     return rc
 
 
-def _compiled(robot: Robot, taut: tuple[int, ...]) -> _Compiled:
+def _compiled(robot: Robot, taut: tuple[int, ...]) -> _Compiled | _PlanarCompiled:
     rc = _cache(robot)
     per_robot = rc.subsets
     c = per_robot.get(taut)
+    if c is None and robot.dimension == 2:
+        c = per_robot[taut] = _PlanarCompiled(_planar.Tracker(robot, taut, BOX_MARGIN, BOX_FLOOR))
     if c is None:
         # placeholder lengths, patched per update: distinct, so that the tape's hash-consing
         # cannot merge two cables' ρ (or a ρ with another constant) into one node
@@ -263,7 +278,8 @@ def _attempt(
     robot: Robot, s: _State, taut: tuple[int, ...], lengths: np.ndarray
 ) -> str | tuple[_State, float, np.ndarray]:
     """Newton + Krawczyk on subset ``taut``; ``(state, box width)`` or a reason string."""
-    if not 2 <= len(taut) <= 6:
+    least, most = (1, _planar.MAX_TAUT) if robot.dimension == 2 else (2, 6)
+    if not least <= len(taut) <= most:
         return f"a taut set of {len(taut)} cable(s) has no isolated equilibrium to track"
     status, p, R, ang, tau, spans, eig, width = _compiled(robot, taut).update(lengths, s)
     if status == -1:
@@ -318,8 +334,8 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
     taut cables' spans (a solution does not carry them) and, for its slack cables, the new
     ``lengths`` (they enter no equation)."""
     refuse_swivels(robot, "tracking")
-    if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
-        raise TautError("tracking handles spatial rigid platforms without joints")
+    if robot.is_point_mass or robot.n_joints:
+        raise TautError("tracking handles rigid platforms without joints")
     if not isinstance(sol, (DGPSolution, IGPSolution)):
         raise TautError(f"tracking starts from a DGPSolution or an IGPSolution, got a {type(sol).__name__}")
     tau = np.asarray(sol.tensions, float)
@@ -327,7 +343,7 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
         raise TautError(f"{robot.name} has {robot.n_cables} cables, the solution has {tau.size} tensions")
     taut = tuple(sorted(int(i) for i in sol.taut))
     p = np.asarray(sol.position, float)
-    R = rotation_matrix(np.asarray(sol.orientation, float), robot.orientation)
+    R = _planar.rotation(robot, np.asarray(sol.orientation, float))
     held = lengths.copy()
     held[list(taut)] = np.linalg.norm(p + robot.anchors[list(taut)] @ R.T - robot.exits[list(taut)], axis=1)
     return _State(taut, held, p, R, tau)
@@ -344,7 +360,7 @@ def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths
     Parameters
     ----------
     robot : Robot
-        A spatial rigid platform without joints or swivelling pulleys.
+        A rigid platform, spatial or planar, without joints or swivelling pulleys.
     solution : DGPSolution or IGPSolution
         The equilibrium before the change.
     lengths : array_like, shape (n,)
@@ -359,10 +375,10 @@ def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths
     Raises
     ------
     TrackingLostError
-        The new equilibrium cannot be certified (it left the branch, or one taut cable is
-        left: a continuum).
+        The new equilibrium cannot be certified (it left the branch, or one taut cable of a
+        spatial platform is left: a continuum).
     TautError
-        A planar, point-mass or jointed robot, lengths that are not ``n`` positive numbers,
+        A point-mass or jointed robot, lengths that are not ``n`` positive numbers,
         or a ``solution`` that is not one.
 
     References
