@@ -199,7 +199,9 @@ def test_the_examples_with_a_mass_are_the_exported_ones():
         except UnsupportedRobotError:
             continue
         exported.add(name)
-    assert exported == set(example_names()) - set(REFUSED_EXAMPLES) == {"spatial-8cable", "planar-4cable"}
+    assert (
+        exported == set(example_names()) - set(REFUSED_EXAMPLES) == {"spatial-8cable", "planar-4cable", "planar-2cable"}
+    )
 
 
 @pytest.mark.parametrize("name", list(ROBOTS))
