@@ -29,7 +29,7 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
         ),
         (
             "bench_dgp_random.py",
-            ["--first", "1", "--three", "2", "--four", "0", "--six", "1", "--eight", "0"],
+            ["--first", "1", "--three", "2", "--four", "0", "--six", "1", "--eight", "0", "--planar", "1"],
             "undecided boxes over the suite: 0",
         ),
         pytest.param(
