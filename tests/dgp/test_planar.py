@@ -504,9 +504,11 @@ def test_a_platform_that_is_a_single_point_is_refused_in_one_line(tmp_path, taut
 # ---- the command line ---------------------------------------------------------------------
 
 
-def test_fk_planar_2cable_json(taut_cli):
+def test_fk_planar_2cable_json(taut_cli, tmp_path):
     robot = example("planar-2cable")
-    data = taut_cli("fk", "planar-2cable", "--json").json()
+    plot = tmp_path / "equilibria.png"
+    data = taut_cli("fk", "planar-2cable", "--json", "--plot", str(plot)).json()
+    assert plot.stat().st_size > 10_000  # one planar panel per equilibrium
     assert data["complete"] is True and len(data["solutions"]) == 2
     for s in data["solutions"]:
         assert len(s["position"]) == 2 and len(s["orientation"]) == 1 and s["taut"] == [1, 2]

@@ -109,9 +109,9 @@ class IGPSolution(Result):
     taut : tuple of int
         The taut cables (0-based indices).
     position : ndarray, shape (3,)
-        Platform reference point [m].
+        Platform reference point [m] (shape (2,) for a planar platform).
     orientation : ndarray, shape (3,)
-        Angles [rad] in the robot's orientation convention.
+        Angles [rad] in the robot's orientation convention (``(θ,)`` for a planar platform).
     tensions : ndarray, shape (n,)
         Every cable's tension [N] (0 for slack ones).
     lengths : ndarray, shape (n,)

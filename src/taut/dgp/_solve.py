@@ -68,9 +68,9 @@ class DGPSolution(Result):
     taut : tuple of int
         The taut cables (0-based indices).
     position : ndarray, shape (3,)
-        Platform reference point [m].
+        Platform reference point [m] (shape (2,) for a planar platform).
     orientation : ndarray, shape (3,)
-        Angles [rad] in the robot's orientation convention.
+        Angles [rad] in the robot's orientation convention (``(θ,)`` for a planar platform).
     tensions : ndarray, shape (n,)
         Every cable's tension [N] (0 for slack ones).
     stable : bool
@@ -611,6 +611,12 @@ def solve_dgp(
     >>> res = solve_dgp(example("suspended-3cable"))
     >>> len(res.solutions), sum(s.stable for s in res.solutions), res.complete
     (6, 1, True)
+
+    A planar bar hung from two cables: two equilibria, the stable one tilted.
+
+    >>> stable = [s for s in solve_dgp(example("planar-2cable")).solutions if s.stable]
+    >>> [(s.taut, s.position.round(3), s.orientation.round(3)) for s in stable]
+    [((0, 1), array([-0.085,  0.592]), array([-0.275]))]
     """
     refuse_swivels(robot, "the DGP solver")
     if robot.is_point_mass or robot.n_joints:
