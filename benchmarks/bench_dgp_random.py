@@ -5,7 +5,9 @@ percentile and worst time; for the 3-cable suite the worst/median ratio (target 
 
 By default 20 robots of 3 cables (seeds 0–19) and 10 of 4 cables (seeds 0–9), every taut
 subset, and 2 of 6 and 2 of 8 cables with sub-problems of at most ``--max-taut`` (default 2)
-taut cables.  With ``--peer``, the sub-problem with all three cables taut of every 3-cable
+taut cables; then planar platforms (``taut.model.random_planar_robot``, pose ``x, y, θ``):
+``--planar`` robots (default 10) each of 2, 3 and 4 cables, every taut subset (up to three
+cables), summarised apart so that the spatial figures stay what they were.  With ``--peer``, the sub-problem with all three cables taut of every 3-cable
 robot is also solved by ``bertini2`` (see ``_bertini.py``; 4096 paths, 10–20 minutes per robot
 on a shared core: pick a few robots, e.g. ``--three 3 --four 0 --six 0 --eight 0 --peer``):
 both counts of real equilibria with non-negative tensions are printed, and any disagreement.
@@ -23,8 +25,8 @@ precision alone, which leaves boxes too narrow to split around the nearly double
 with the boxes searched again in multi-precision (python-flint, ``taut[precise]``).
 
     python benchmarks/bench_dgp_random.py [--three N] [--four N] [--six N] [--eight N]
-                                          [--max-taut K] [--first SEED] [--point-mass N]
-                                          [--peer] [--fold]
+                                          [--planar N] [--max-taut K] [--first SEED]
+                                          [--point-mass N] [--peer] [--fold]
 """
 
 import argparse
@@ -36,7 +38,7 @@ from _bertini import ALL_TAUT, import_bertini, matching, run_bertini
 from scipy.optimize import least_squares
 
 from taut.dgp import solve_dgp, solve_subset
-from taut.model import random_point_mass_robot, random_suspended_robot
+from taut.model import random_planar_robot, random_point_mass_robot, random_suspended_robot
 
 EPS = 1e-7  # solve_dgp's default box width
 RATIO_TARGET = 5.0  # worst / median time of the 3-cable suite (issue 21)
@@ -51,6 +53,35 @@ def suite(ns):
     cases += [(6, s, ns.max_taut) for s in range(first, first + ns.six)]
     cases += [(8, s, ns.max_taut) for s in range(first, first + ns.eight)]
     return cases
+
+
+#: Cable counts of the planar robots of the run.
+PLANAR_CABLES = (2, 3, 4)
+
+
+def planar(ns):
+    """The planar robots: their equilibria by taut-set size, undecided boxes and times."""
+    times: dict[int, list[float]] = {}
+    undecided = 0
+    for n in PLANAR_CABLES:
+        for seed in range(ns.first, ns.first + ns.planar):
+            robot, lengths = random_planar_robot(n, seed=seed)
+            t0 = time.perf_counter()
+            res = solve_dgp(robot, lengths)
+            t = time.perf_counter() - t0
+            times.setdefault(n, []).append(t)
+            undecided += res.undecided
+            per_m = {}
+            for s in res.solutions:
+                per_m[len(s.taut)] = per_m.get(len(s.taut), 0) + 1
+            print(
+                f"planar {n} cables seed {seed:3d}: {len(res.solutions)} equilibria "
+                f"{dict(sorted(per_m.items(), reverse=True))}, {res.undecided} undecided, {res.boxes} boxes, {t:.2f} s",
+                flush=True,
+            )
+    for n in sorted(times):
+        summary(f"planar {n} cables", times[n])
+    return undecided
 
 
 def summary(label, times):
@@ -150,6 +181,7 @@ def main():
     ap.add_argument("--four", type=int, default=10, help="4-cable robots")
     ap.add_argument("--six", type=int, default=2, help="6-cable robots (with --max-taut)")
     ap.add_argument("--eight", type=int, default=2, help="8-cable robots (with --max-taut)")
+    ap.add_argument("--planar", type=int, default=10, help="planar robots of each of 2, 3 and 4 cables")
     ap.add_argument("--max-taut", type=int, default=2, help="largest taut subset of the 6- and 8-cable robots")
     ap.add_argument("--first", type=int, default=0, help="first seed")
     ap.add_argument("--point-mass", type=int, default=10, help="point-mass robots of each kind (spatial, planar)")
@@ -185,6 +217,8 @@ def main():
         r = summary(f"{n} cables", times[n])
         if n == 3:
             ratio = r
+    if ns.planar:
+        total_undecided += planar(ns)
     print(f"undecided boxes over the suite: {total_undecided}")
     if ratio is not None:
         print(f"3-cable worst/median: {ratio:.1f}x (target <= {RATIO_TARGET:g}x)")

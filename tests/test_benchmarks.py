@@ -29,7 +29,22 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
         ),
         (
             "bench_dgp_random.py",
-            ["--first", "1", "--three", "2", "--four", "0", "--six", "1", "--eight", "0", "--point-mass", "2"],
+            [
+                "--first",
+                "1",
+                "--three",
+                "2",
+                "--four",
+                "0",
+                "--six",
+                "1",
+                "--eight",
+                "0",
+                "--point-mass",
+                "2",
+                "--planar",
+                "1",
+            ],
             "undecided boxes over the suite: 0",
         ),
         (

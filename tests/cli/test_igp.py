@@ -79,7 +79,8 @@ def test_igp_reports_an_exhausted_budget(cli):
         (["suspended-3cable", "--taut", "1,two", "--fix", "x=1,y=2"], "cable numbers"),
         (["suspended-3cable", "--taut", "1,2", "--fix", "x=1,a=2", "--box", "0,0,0"], "--box"),
         (["suspended-3cable", "--taut", "1,2", "--fix", "x=1,a=2", "--max-boxes", "0"], "--max-boxes"),
-        (["planar-4cable", "--taut", "1,2", "--fix", "x=1,y=2"], "planar"),
+        (["planar-4cable", "--taut", "1,2,3,4", "--fix", "x=1,y=2,theta=0"], "1 to 3 taut cables"),
+        (["planar-4cable", "--taut", "1,2", "--fix", "x=1,y=2", "--box", "0,0,0,1,1,1"], "xmin,ymin,xmax,ymax"),
     ],
 )
 def test_igp_bad_input_exits_2(argv, words, cli):

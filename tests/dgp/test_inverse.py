@@ -313,7 +313,8 @@ POINT_MASS = Robot.model_validate(
         (SUSPENDED, (0,), {"x": 1}, CableSetError, "2 to 6"),
         (COGIRO, range(7), dict.fromkeys("xyzabc", 0.0), CableSetError, "2 to 6"),
         (SUSPENDED, 3, {"x": 1}, CableSetError, "cable indices 0..2"),
-        (load_robot("planar-4cable"), (0, 1), {"x": 0, "y": 0}, UnsupportedRobotError, "planar"),
+        (load_robot("planar-4cable"), (0, 1, 2, 3), dict.fromkeys(["x", "y", "theta"], 0.0), CableSetError, "1 to 3"),
+        (load_robot("planar-4cable"), (0, 1), {"x": 0, "z": 0}, PoseError, "unknown pose coordinate 'z'"),
         (
             POINT_MASS,
             (0, 1),
@@ -333,6 +334,17 @@ def test_bad_input_raises_typed_errors(robot, taut, assigned, error, words):
 def test_bad_box_raises(box):
     with pytest.raises(PoseError, match="box"):
         solve_igp(SUSPENDED, (0, 1), {"x": 1, "a": 0}, box=box)
+
+
+def test_a_planar_box_has_two_coordinates():
+    planar = load_robot("planar-2cable")
+    with pytest.raises(PoseError, match="2 numbers"):
+        solve_igp(planar, (0, 1), {"x": 0, "y": 0}, box=([0, 0, 0], [1, 1, 1]))
+    whole = solve_igp(planar, (0, 1), {"x": 0, "theta": -0.2})
+    assert whole.complete and [round(s.position[1], 4) for s in whole.solutions] == [0.2954]
+    for box, found in ((([-1, 0.2], [1, 0.4]), 1), (([-1, 0.5], [1, 1.0]), 0)):
+        res = solve_igp(planar, (0, 1), {"x": 0, "theta": -0.2}, box=box)
+        assert res.complete and len(res.solutions) == found
 
 
 def test_bad_solver_settings_raise():

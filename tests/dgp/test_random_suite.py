@@ -14,7 +14,7 @@ from taut.dgp._solve import solve_subset
 from taut.errors import TautError
 from taut.geometry import rotation_matrix
 from taut.interval import LinearFilter, bisect, compile_tape, const
-from taut.model import load_robot, random_suspended_robot, save_robot
+from taut.model import load_robot, random_planar_robot, random_suspended_robot, save_robot
 
 #: (cables, seed): quick robots of the benchmark suite, coplanar and not, with equilibria on
 #: two and three taut cables
@@ -109,6 +109,32 @@ def test_random_robot_geometry(seed, n, coplanar):
 def test_random_robot_refuses_bad_arguments(n, perturbation):
     with pytest.raises(TautError):
         random_suspended_robot(n, seed=0, perturbation=perturbation)
+
+
+@settings(max_examples=25, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), n=st.integers(2, 6))
+def test_random_planar_robot_geometry(seed, n, tmp_path_factory):
+    robot, lengths = random_planar_robot(n, seed=seed)
+    a, r = robot.exits, robot.anchors
+    g = np.asarray(robot.platform.wrench_point)
+    assert robot.dimension == 2 and robot.pose_names == ["x", "y", "theta"]
+    assert np.all(lengths > 0) and robot.weight[1] < 0 and robot.weight[0] == 0
+    # exits above the platform's drawn pose, left to right, anchors in the same order: the
+    # cables do not cross; the load point is off the line of the first two anchors
+    assert np.all(np.diff(a[:, 0]) > 0) and np.all(np.diff(r[:, 0]) > 0) and a[:, 1].min() > 2.0
+    e, d = r[1] - r[0], g - r[0]
+    assert abs(e[0] * d[1] - e[1] * d[0]) > 1e-6
+    same = random_planar_robot(n, seed=seed)
+    assert same[0] == robot and np.array_equal(same[1], lengths)
+    path = tmp_path_factory.mktemp("planar") / "random.yaml"
+    save_robot(robot, path)
+    assert load_robot(str(path)) == robot
+
+
+@pytest.mark.parametrize("n, perturbation", [(1, 0.02), (7, 0.02), (3, -0.1), (3, float("nan"))])
+def test_random_planar_robot_refuses_bad_arguments(n, perturbation):
+    with pytest.raises(TautError):
+        random_planar_robot(n, seed=0, perturbation=perturbation)
 
 
 @pytest.mark.parametrize("ulps", [-1, 0, 1])

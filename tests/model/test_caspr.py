@@ -407,6 +407,7 @@ WRITABLE = {
     "camera-4cable",
     "cogiro",
     "marionet-vr",
+    "planar-2cable",
     "planar-4cable",
     "printer-5cable",
     "spatial-8cable",

@@ -201,7 +201,7 @@ def test_the_examples_with_a_mass_are_the_exported_ones():
             continue
         exported.add(name)
     assert exported == set(example_names()) - set(REFUSED_EXAMPLES)
-    assert exported == {"spatial-8cable", "planar-4cable", "camera-4cable", "printer-5cable"}
+    assert exported == {"spatial-8cable", "planar-4cable", "planar-2cable", "camera-4cable", "printer-5cable"}
 
 
 @pytest.mark.parametrize("name", list(ROBOTS))

@@ -26,10 +26,11 @@ if TYPE_CHECKING:
 SUMMARY = "pose, tensions and lengths for chosen taut cables (inverse geometrico-static problem)"
 ROBOT = True
 
-DESCRIPTION = f"""With the cables of --taut taut (m of them, 2 <= m <= 6; 1 <= m <= 3, or 2 in the
-plane, for a point mass) only m pose coordinates can be assigned: give them with --fix (names x, y, z and the robot's angle names, e.g.
-a, b, c or phix, phiy, phiz for xyz conventions, phi, theta, sigma for tilt-torsion;
-angles in rad, or 30deg, pi/8).  Every equilibrium with tensions >= 0 is found and
+DESCRIPTION = f"""With the cables of --taut taut (m of them, 2 <= m <= 6; 1 <= m <= 3 for a planar
+platform; 1 <= m <= 3, or 2 in the plane, for a point mass) only m pose coordinates can be
+assigned: give them with --fix (names x, y, z and the robot's angle names, e.g. a, b, c or
+phix, phiy, phiz for xyz conventions, phi, theta, sigma for tilt-torsion, x, y, theta
+planar; angles in rad, or 30deg, pi/8).  Every equilibrium with tensions >= 0 is found and
 certified (Berti 2015, §4.1.2; interval branch-and-prune): the free
 coordinates, the tensions and the cable lengths to command.  A slack cable's length is
 its span (pay out at least that much); cables outside their length bounds are listed.
@@ -62,14 +63,14 @@ def _assigned(text: str) -> dict[str, float]:
     return {name: v for name, v in values.items() if v is not None}
 
 
-def _box(text: str | None, d: int = 3) -> tuple[np.ndarray, np.ndarray] | None:
+def _box(text: str | None, dimension: int) -> tuple[np.ndarray, np.ndarray] | None:
     if text is None:
         return None
     v = A.vector(text, "--box")
-    if v.size != 2 * d:
-        names = "xmin,ymin,zmin,xmax,ymax,zmax" if d == 3 else "xmin,ymin,xmax,ymax"
-        raise PoseError(f"--box: expected {names}, got {v.size} numbers")
-    return v[:d], v[d:]
+    if v.size != 2 * dimension:
+        corners = "xmin,ymin,xmax,ymax" if dimension == 2 else "xmin,ymin,zmin,xmax,ymax,zmax"
+        raise PoseError(f"--box: expected {corners}, got {v.size} numbers")
+    return v[:dimension], v[dimension:]
 
 
 def run(ns: argparse.Namespace) -> int:
@@ -145,7 +146,9 @@ def run(ns: argparse.Namespace) -> int:
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
-        "--taut", required=True, help="taut cables, e.g. 1,2,3 (2 to 6 of them; 1 to 3, or 2, for a point mass)"
+        "--taut",
+        required=True,
+        help="taut cables, e.g. 1,2,3 (2 to 6 of them; 1 to 3 planar; 1 to 3, or 2, for a point mass)",
     )
     parser.add_argument(
         "--fix", required=True, help="as many pose coordinates as taut cables, e.g. x=0.3,y=0.4,z=0.1,a=5deg"
@@ -155,7 +158,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--box",
-        help="search box of the free position coordinates xmin,ymin,zmin,xmax,ymax,zmax (xmin,ymin,xmax,ymax planar) "
-        "(default: the taut cables' reach around their exit points)",
+        help="search box of the free position coordinates xmin,ymin,zmin,xmax,ymax,zmax "
+        "(xmin,ymin,xmax,ymax planar; default: the taut cables' reach around their exit points)",
     )
     add_strict(parser)

@@ -94,11 +94,11 @@ def load(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     Returns
     -------
     f : ndarray, shape (3,)
-        Force [N], fixed frame.
+        Force [N], fixed frame (shape (2,) for a planar platform).
     m_ext : ndarray, shape (3,)
-        Moment [N m], fixed frame.
+        Moment [N m], fixed frame (shape (1,), ``m_z``, for a planar platform).
     g : ndarray, shape (3,)
-        Body-frame point [m] where the force acts (``wrench_point``).
+        Body-frame point [m] where the force acts (``wrench_point``; shape (2,) planar).
 
     References
     ----------
@@ -115,12 +115,13 @@ def load(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     ([0.0, 0.0, 1.0], [0.0, 0.0, 0.0], [0.0, 0.0, -0.577])
     """
     plat = robot.platform
-    w = np.zeros(6)
+    d = robot.dimension
+    w = np.zeros(robot.wrench_dim)
     if plat.wrench is not None:
         w += np.asarray(plat.wrench, float)
-    w[:3] += robot.weight
-    gp = np.zeros(3) if plat.wrench_point is None else np.asarray(plat.wrench_point, float)
-    return w[:3], w[3:], gp
+    w[:d] += robot.weight
+    gp = np.zeros(d) if plat.wrench_point is None else np.asarray(plat.wrench_point, float)
+    return w[:d], w[d:], gp
 
 
 def _cross(u: Sequence[Expr], v: Sequence[Expr]) -> list[Expr]:

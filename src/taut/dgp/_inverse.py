@@ -5,7 +5,8 @@ find the other ``6 − m`` coordinates and the ``m`` tensions that put the platf
 static equilibrium (Eq. 2.3) with non-negative tensions.  The cable lengths to command are
 then the anchor–exit distances (Eq. 2.2).  The thesis controls ``x, y, z`` with ``m = 3``,
 adds ``φx`` or ``φy`` with ``m = 4`` and both with ``m = 5``; any ``m`` coordinates may be
-assigned here.
+assigned here.  A planar platform (pose ``x, y, θ``) takes ``1 ≤ m ≤ 3`` taut cables and
+``m`` of its three coordinates (:func:`taut.dgp._planar.inverse_system`).
 
 Where the thesis's control routine solved this square system locally, :func:`solve_igp`
 returns *all* its solutions in a domain, each certified, as its §4.1.2 announces for a
@@ -67,12 +68,12 @@ import numpy.typing as npt
 
 from taut._checks import as_count, as_number
 from taut._results import Result, jsonable
+from taut.dgp import _planar
 from taut.dgp._formulation import load
 from taut.dgp._point_mass import point_mass_igp, point_mass_stable
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import UndecidedBox, cause_of, scaled
 from taut.errors import CableSetError, PoseError, UnsupportedRobotError
-from taut.geometry import rotation_matrix
 from taut.interval import (
     MAX_BOXES,
     ONE,
@@ -109,9 +110,10 @@ class IGPSolution(Result):
     taut : tuple of int
         The taut cables (0-based indices).
     position : ndarray, shape (d,)
-        Platform reference point [m] (``d`` = 2 for a planar point mass).
-    orientation : ndarray, shape (3,) or (0,)
-        Angles [rad] in the robot's orientation convention; none for a point mass.
+        Platform reference point [m] (``d`` = 3 in space, 2 in the plane).
+    orientation : ndarray, shape (3,), (1,) or (0,)
+        Angles [rad] in the robot's orientation convention: ``(θ,)`` for a planar platform,
+        none for a point mass.
     tensions : ndarray, shape (n,)
         Every cable's tension [N] (0 for slack ones).
     lengths : ndarray, shape (n,)
@@ -251,11 +253,9 @@ class IGPResult(Result):
 
 def _check_robot(robot: Robot) -> None:
     refuse_swivels(robot, "the inverse geometrico-static problem")
-    if not robot.is_point_mass and (robot.dimension != 3 or robot.n_joints):
-        kind = "planar" if robot.dimension != 3 else "point-mass" if robot.is_point_mass else "jointed"
+    if robot.n_joints:
         raise UnsupportedRobotError(
-            f"the inverse geometrico-static problem needs a spatial rigid platform without joints or a point mass; "
-            f"{robot.name} is {kind}"
+            f"the inverse geometrico-static problem needs a platform without joints; {robot.name} is jointed"
         )
 
 
@@ -275,11 +275,16 @@ def _check_taut(robot: Robot, taut: Iterable[int]) -> tuple[int, ...]:
         raise CableSetError(f"taut cables: no cable {numbers} (0-based index {bad}); {robot.name} has cables 1..{n}")
     if len(set(indices)) != len(indices):
         raise CableSetError(f"taut cables: {[i + 1 for i in indices]} names a cable twice")
-    low, high = (1, robot.dimension) if robot.is_point_mass else (2, 6)
-    if not low <= len(indices) <= high:
+    least: int
+    most: int
+    if robot.is_point_mass:
+        least, most = 1, robot.dimension
+    else:
+        least, most = (1, _planar.MAX_TAUT) if robot.dimension == 2 else (2, 6)
+    if not least <= len(indices) <= most:
         kind = f" of a {robot.dimension}-D point mass" if robot.is_point_mass else ""
         raise CableSetError(
-            f"the inverse geometrico-static problem{kind} takes {low} to {high} taut cables, got {len(indices)}"
+            f"the inverse geometrico-static problem{kind} takes {least} to {most} taut cables, got {len(indices)}"
         )
     return tuple(sorted(indices))
 
@@ -524,17 +529,20 @@ def solve_igp(
     Parameters
     ----------
     robot : Robot
-        A spatial rigid platform without joints or swivelling pulleys, or a point mass
-        (spatial or planar: the ``d`` force balances of :mod:`taut.dgp._point_mass`).
+        A platform without joints or swivelling pulleys: a rigid one, spatial or planar (pose
+        ``x, y, theta``; :func:`taut.dgp._planar.inverse_system`), or a point mass, spatial
+        or planar (the ``d`` force balances of :mod:`taut.dgp._point_mass`).
     taut : iterable of int
-        The 0-based indices of the ``m`` taut cables, ``2 ≤ m ≤ 6`` (``1 ≤ m ≤ d`` for a
-        point mass; the cables the command line numbers 1, 2, 3 are ``[0, 1, 2]``).
+        The 0-based indices of the ``m`` taut cables, ``2 ≤ m ≤ 6`` (``1 ≤ m ≤ 3`` planar,
+        ``1 ≤ m ≤ d`` for a point mass; the cables the command line numbers 1, 2, 3 are
+        ``[0, 1, 2]``).
     fixed : mapping of str to float
         Exactly ``m`` pose coordinates by name [m, rad]: the robot's ``pose_names``
         (``x, y, z, a, b, c``; ``phix, phiy, phiz`` are accepted for the ``xyz``
         conventions; ``phi, theta, sigma`` for tilt-and-torsion).
     box : (array_like, array_like), optional
-        Lower and upper corners [m] of the search box of the free position coordinates;
+        Lower and upper corners [m] of the search box of the free position coordinates (3
+        numbers each; 2 planar);
         default the intersection of the taut cables' reach.
     tol : float, optional
         Bisection threshold of :func:`~taut.interval.branch_and_prune` (metres, cosines and
@@ -556,12 +564,13 @@ def solve_igp(
     Raises
     ------
     CableSetError
-        Taut cables that are not 2 to 6 (point mass: 1 to ``d``) distinct cables of the robot.
+        Taut cables that are not 2 to 6 (planar: 1 to 3; point mass: 1 to ``d``) distinct
+        cables of the robot.
     PoseError
         Fixed coordinates that are not ``m`` distinct pose coordinates with finite values,
         or a bad ``box``.
     UnsupportedRobotError
-        A planar rigid or jointed robot, or a swivelling pulley.
+        A jointed robot, or a swivelling pulley.
     TautError
         A bad ``tol`` or ``max_boxes``.
 
@@ -598,6 +607,9 @@ def solve_igp(
         if robot.is_point_mass:
             system, statics, lo, hi, primary, free = point_mass_igp(robot, idx, values, pos_lo, pos_hi)
             pb = _Problem(system, statics, lo, hi, primary, free, [])
+        elif robot.dimension == 2:
+            angle = _cos_sin(values[2]) if 2 in values else None
+            pb = _Problem(*_planar.inverse_system(robot, idx, values, pos_lo, pos_hi, angle, COS_SIN_BOUND))
         else:
             pb = _build(robot, idx, values, pos_lo, pos_hi)
         res = branch_and_prune(
@@ -645,7 +657,7 @@ def _unknown_names(robot: Robot, pb: _Problem) -> tuple[str, ...]:
     """Names of the pose unknowns: the free position coordinates, then the cosine and sine
     of every free angle (of ``σ − φ`` for a free ``σ`` of tilt-and-torsion)."""
     names = robot.pose_names[:6]
-    angles = [names[3 + k] for k in pb.free_ang]
+    angles = [names[robot.dimension + k] for k in pb.free_ang]
     if robot.orientation == "tilt-torsion" and 2 in pb.free_ang:
         angles[-1] = f"{names[5]}-{names[3]}"
     return (*(names[k] for k in pb.free_pos), *(f"{f}({a})" for a in angles for f in ("cos", "sin")))
@@ -685,18 +697,17 @@ def _undecided(
 def _solution(
     robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pb: _Problem, cert: Certificate
 ) -> IGPSolution:
-    x = cert.x
-    pose = np.array([fixed.get(k, 0.0) for k in range(6)])
+    x, d = cert.x, robot.dimension
+    pose = np.array([fixed.get(k, 0.0) for k in range(robot.wrench_dim)])
     pose[pb.free_pos] = x[: len(pb.free_pos)]
     cs = x[len(pb.free_pos) : len(pb.free_pos) + 2 * len(pb.free_ang)].reshape(-1, 2)
-    pose[[3 + k for k in pb.free_ang]] = np.arctan2(cs[:, 1], cs[:, 0])
-    if robot.orientation == "tilt-torsion" and 2 in pb.free_ang:  # the unknown was ψ = σ − φ
+    pose[[d + k for k in pb.free_ang]] = np.arctan2(cs[:, 1], cs[:, 0])
+    if d == 3 and robot.orientation == "tilt-torsion" and 2 in pb.free_ang:  # the unknown was ψ = σ − φ
         pose[5] = math.remainder(pose[3] + pose[5], 2 * math.pi)
     if robot.is_point_mass:  # no orientation: the anchors and the load point are at p
-        d = robot.dimension
-        p, R, gp, orientation = pose[:d], np.eye(d), np.zeros(d), np.zeros(0)
+        p, R, gp = pose[:d], np.eye(d), np.zeros(d)
     else:
-        p, R, orientation = pose[:3], rotation_matrix(pose[3:], robot.orientation), pose[3:]
+        p, R = pose[:d], _planar.rotation(robot, pose[d:])
         _, _, gp = load(robot)
     a, r = robot.exits, robot.anchors
     b = p + r @ R.T
@@ -713,7 +724,7 @@ def _solution(
     return IGPSolution(
         tuple(taut),
         p,
-        orientation,
+        pose[d:],
         tensions,
         lengths,
         tuple(slack),

@@ -36,6 +36,7 @@ import numpy.typing as npt
 
 from taut._checks import as_array, as_count, as_number
 from taut._results import Result, freeze, jsonable
+from taut.dgp import _planar
 from taut.dgp._formulation import Subproblem, build_subproblem, load
 from taut.dgp._point_mass import (
     LeastSquaresFit,
@@ -48,7 +49,6 @@ from taut.dgp._single_cable import single_cable_equilibria
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import MAX_SUBPROBLEM_BOXES, UndecidedBox, cause_of, subproblem_box
 from taut.errors import TautError
-from taut.geometry import angles_from_matrix
 from taut.interval import (
     MAX_BOXES,
     Box,
@@ -78,8 +78,9 @@ class DGPSolution(Result):
         The taut cables (0-based indices).
     position : ndarray, shape (d,)
         Platform reference point [m] (``d`` = 3 in space, 2 in the plane).
-    orientation : ndarray, shape (3,) or (0,)
-        Angles [rad] in the robot's orientation convention; none for a point mass.
+    orientation : ndarray, shape (3,), (1,) or (0,)
+        Angles [rad] in the robot's orientation convention: ``(θ,)`` for a planar platform,
+        none for a point mass.
     tensions : ndarray, shape (n,)
         Every cable's tension [N] (0 for slack ones).
     stable : bool
@@ -278,7 +279,7 @@ def check_lengths(robot: Robot, lengths: npt.ArrayLike) -> np.ndarray:
     return arr
 
 
-def domain_pieces(sp: Subproblem, split: int) -> list[Box]:
+def domain_pieces(sp: Subproblem | _planar.PlanarSubproblem, split: int) -> list[Box]:
     """The sub-problem's domain cut into up to ``2**split`` pieces that may hold solutions:
     breadth first, the widest piece is contracted (HC4, statics filter) and halved across
     its widest pose variable, empty pieces dropped — most of the initial box is empty, and
@@ -323,19 +324,23 @@ STARVE = 10.0
 #: Per process, the sub-problems last built and their pieces, keyed by the job's data:
 #: a worker running several pieces of one sub-problem builds it once (a build takes
 #: ~20 ms, as long as solving many pieces).
-_PREPARED: dict[tuple[str, bytes, tuple[int, ...], int], tuple[Subproblem, list[Box]]] = {}
+_PREPARED: dict[tuple[str, bytes, tuple[int, ...], int], tuple[Subproblem | _planar.PlanarSubproblem, list[Box]]] = {}
 PREPARED_SIZE = 8
 
 
 def prepared_subproblem(
     robot: Robot, lengths: np.ndarray, taut: tuple[int, ...], split: int
-) -> tuple[Subproblem, list[Box]]:
+) -> tuple[Subproblem | _planar.PlanarSubproblem, list[Box]]:
     """The sub-problem of ``taut`` at ``lengths`` and its :func:`domain_pieces`, built once
     per process for the last :data:`PREPARED_SIZE` of them."""
     key = (robot.model_dump_json(), lengths.tobytes(), taut, split)
     hit = _PREPARED.get(key)
     if hit is None:
-        sp = build_point_mass(robot, lengths, taut) if robot.is_point_mass else build_subproblem(robot, lengths, taut)
+        sp: Subproblem | _planar.PlanarSubproblem
+        if robot.is_point_mass:
+            sp = build_point_mass(robot, lengths, taut)
+        else:
+            sp = (_planar.build_subproblem if robot.dimension == 2 else build_subproblem)(robot, lengths, taut)
         hit = (sp, domain_pieces(sp, split))
         while len(_PREPARED) >= PREPARED_SIZE:
             _PREPARED.pop(next(iter(_PREPARED)))
@@ -358,12 +363,13 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
     gp = np.zeros(robot.dimension) if robot.is_point_mass else load(robot)[2]
     out: list[DGPSolution] = []
     if len(taut) == 1 and not robot.is_point_mass:
-        for s in single_cable_equilibria(robot, lengths, taut[0]):
+        single = _planar.single_cable_equilibria if robot.dimension == 2 else single_cable_equilibria
+        for s in single(robot, lengths, taut[0]):
             out.append(
                 DGPSolution(
                     (taut[0],),
                     s["p"],
-                    angles_from_matrix(s["R"], robot.orientation),
+                    _planar.orientation(s["R"], robot.orientation),
                     s["tensions"],
                     s["stable"],
                     0.0,
@@ -439,7 +445,9 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
 
 
 def _resolve_narrow(
-    sp: Subproblem, found: list[tuple[Certificate, bool]], left: list[tuple[np.ndarray, np.ndarray, str]]
+    sp: Subproblem | _planar.PlanarSubproblem,
+    found: list[tuple[Certificate, bool]],
+    left: list[tuple[np.ndarray, np.ndarray, str]],
 ) -> tuple[list[tuple[Certificate, bool]], list[tuple[np.ndarray, np.ndarray, str]]]:
     """The boxes double precision left too narrow to bisect (a singular or nearly double
     solution), searched again in multi-precision balls (:mod:`taut.interval._precise`).
@@ -565,13 +573,14 @@ def solve_dgp(
     Parameters
     ----------
     robot : Robot
-        A spatial rigid platform without joints or swivelling pulleys, or a point mass,
+        A rigid platform, spatial or planar (:mod:`taut.dgp._planar`), or a point mass,
         spatial or planar (:mod:`taut.dgp._point_mass`: subsets of up to ``d`` taut
-        cables).
+        cables), without joints or swivelling pulleys.
     lengths : array_like, shape (n,), optional
         Cable lengths [m]; default the robot's ``reference.lengths``.
     max_taut : int, optional
-        Largest taut subset searched (default ``min(n, 6)``, ``min(n, d)`` for a point mass).
+        Largest taut subset searched (default ``min(n, 6)``; ``min(n, 3)`` for a planar
+        platform, ``min(n, d)`` for a point mass).
     executor : Executor or distributed.Client, optional
         Where the jobs run, as for :func:`~taut.workspace.evaluate_workspace`: ``None``
         (serial), an executor of :func:`taut.parallel.get_executor`, or a
@@ -608,8 +617,8 @@ def solve_dgp(
     Raises
     ------
     TautError
-        A planar rigid or jointed robot, a point mass without a load, lengths that are not
-        ``n`` positive numbers,
+        A jointed robot, a point mass without a load, lengths that are not ``n`` positive
+        numbers,
         no reference lengths to default to, lengths that put the platform beyond
         :data:`MAX_SCALE` ``tol`` from the origin (where double precision cannot resolve
         ``tol``), or a bad option.
@@ -632,13 +641,24 @@ def solve_dgp(
     >>> res = solve_dgp(example("suspended-3cable"))
     >>> len(res.solutions), sum(s.stable for s in res.solutions), res.complete
     (6, 1, True)
+
+    A planar bar hung from two cables: two equilibria, the stable one tilted.
+
+    >>> stable = [s for s in solve_dgp(example("planar-2cable")).solutions if s.stable]
+    >>> [(s.taut, s.position.round(3), s.orientation.round(3)) for s in stable]
+    [((0, 1), array([-0.085,  0.592]), array([-0.275]))]
     """
     refuse_swivels(robot, "the DGP solver")
-    if not robot.is_point_mass and (robot.dimension != 3 or robot.n_joints):
-        raise TautError("the DGP solver handles spatial rigid platforms without joints, and point masses")
-    most = robot.dimension if robot.is_point_mass else 6
+    if robot.n_joints:
+        raise TautError(
+            "the DGP solver handles platforms without joints (a jointed platform's equilibria are not modelled)"
+        )
+    most: int
     if robot.is_point_mass:
+        most = robot.dimension
         point_mass_load(robot)  # refuses a point mass without a load
+    else:
+        most = _planar.MAX_TAUT if robot.dimension == 2 else 6
     if lengths is None:
         if robot.reference is None or robot.reference.lengths is None:
             raise TautError(f"{robot.name} has no reference lengths: give the cable lengths")

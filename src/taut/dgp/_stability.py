@@ -20,6 +20,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from taut.dgp._planar import planar_reduced_hessian
+
 
 @njit(cache=True)
 def reduced_hessian(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray, rho: np.ndarray) -> np.ndarray:
@@ -112,6 +114,7 @@ def smallest_eigenvalue(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.nda
 def is_stable(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray, rho: np.ndarray) -> bool:
     """Whether an equilibrium is stable: its reduced Hessian is positive definite (the
     sufficient condition of §3.2.2); a fully constrained equilibrium (empty null space) is.
+    Planar arrays (shape ``(m, 2)``) are tested on the planar twists ``(v_x, v_y, ω)``.
 
     Parameters
     ----------
@@ -150,4 +153,7 @@ def is_stable(a: np.ndarray, b: np.ndarray, g: np.ndarray, tau: np.ndarray, rho:
     >>> is_stable(robot.exits, b, g, s.tensions, s.lengths)
     True
     """
+    if np.shape(a)[-1] == 2:
+        Hr = planar_reduced_hessian(*(np.asarray(v, dtype=float) for v in (a, b, g, tau, rho)))
+        return bool(Hr.size == 0 or np.linalg.eigvalsh(0.5 * (Hr + Hr.T))[0] > 0.0)
     return bool(smallest_eigenvalue(*(np.ascontiguousarray(v, dtype=float) for v in (a, b, g, tau, rho))) > 0.0)

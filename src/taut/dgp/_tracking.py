@@ -29,7 +29,9 @@ spans and the stability test of §3.2.2 — run in one compiled call (:func:`_up
 few tens of microseconds per update, Python-side array code would cost more than the
 arithmetic.  A single taut cable leaves the spin about the vertical free (a continuum,
 §2.3): its Jacobian is singular and tracking it raises
-:class:`~taut.errors.TrackingLostError`.
+:class:`~taut.errors.TrackingLostError`.  A planar platform (:mod:`taut.dgp._planar`) is
+tracked on one to three taut cables (one cable fixes its angle), by the same Newton and
+Krawczyk steps from Python.
 
 References
 ----------
@@ -49,13 +51,14 @@ import numpy.typing as npt
 from numba import njit
 
 from taut._checks import as_array
+from taut.dgp import _planar
 from taut.dgp._formulation import Subproblem, build_subproblem, frame_from_points, load
 from taut.dgp._inverse import IGPSolution
 from taut.dgp._point_mass import PointMassTracker, pivot
 from taut.dgp._solve import DGPSolution, check_lengths
 from taut.dgp._stability import smallest_eigenvalue
 from taut.errors import TautError, TrackingLostError
-from taut.geometry import CONVENTIONS, matrix_angles, rotation_matrix
+from taut.geometry import CONVENTIONS, matrix_angles
 from taut.interval import CONST, SQR, certified_step, point_kernel
 from taut.kinematics import refuse_swivels
 from taut.model import Robot
@@ -91,6 +94,16 @@ class _Compiled:
         return _update(*self.args, lengths, s.p, s.R, s.tensions)  # type: ignore[call-arg]
 
 
+@dataclass(frozen=True)
+class _PlanarCompiled:
+    """A planar platform's sub-problem compiled once (:class:`taut.dgp._planar.Tracker`)."""
+
+    tracker: _planar.Tracker
+
+    def update(self, lengths: np.ndarray, s: _State) -> Update:
+        return self.tracker.update(lengths, s.p, s.R, s.tensions)
+
+
 @dataclass
 class _RobotCache:
     load_point: np.ndarray  #: body-frame point where the external wrench acts
@@ -110,12 +123,14 @@ def _cache(robot: Robot) -> _RobotCache:
     return rc
 
 
-def _compiled(robot: Robot, taut: tuple[int, ...]) -> _Compiled | PointMassTracker:
+def _compiled(robot: Robot, taut: tuple[int, ...]) -> _Compiled | _PlanarCompiled | PointMassTracker:
     if robot.is_point_mass:
         return PointMassTracker(robot, taut, BOX_MARGIN, BOX_FLOOR)
     rc = _cache(robot)
     per_robot = rc.subsets
     c = per_robot.get(taut)
+    if c is None and robot.dimension == 2:
+        c = per_robot[taut] = _PlanarCompiled(_planar.Tracker(robot, taut, BOX_MARGIN, BOX_FLOOR))
     if c is None:
         # placeholder lengths, patched per update: distinct, so that the tape's hash-consing
         # cannot merge two cables' ρ (or a ρ with another constant) into one node
@@ -266,7 +281,13 @@ def _attempt(
     robot: Robot, s: _State, taut: tuple[int, ...], lengths: np.ndarray
 ) -> str | tuple[_State, float, np.ndarray]:
     """Newton + Krawczyk on subset ``taut``; ``(state, box width)`` or a reason string."""
-    if not (1 <= len(taut) <= robot.dimension if robot.is_point_mass else 2 <= len(taut) <= 6):
+    least: int
+    most: int
+    if robot.is_point_mass:
+        least, most = 1, robot.dimension
+    else:
+        least, most = (1, _planar.MAX_TAUT) if robot.dimension == 2 else (2, 6)
+    if not least <= len(taut) <= most:
         return f"a taut set of {len(taut)} cable(s) has no isolated equilibrium to track"
     status, p, R, ang, tau, spans, eig, width = _compiled(robot, taut).update(lengths, s)
     if status == -1:
@@ -324,8 +345,8 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
     taut cables' spans (a solution does not carry them) and, for its slack cables, the new
     ``lengths`` (they enter no equation)."""
     refuse_swivels(robot, "tracking")
-    if not robot.is_point_mass and (robot.dimension != 3 or robot.n_joints):
-        raise TautError("tracking handles spatial rigid platforms without joints, and point masses")
+    if robot.n_joints:
+        raise TautError("tracking handles platforms without joints (a jointed platform's equilibria are not modelled)")
     if not isinstance(sol, (DGPSolution, IGPSolution)):
         raise TautError(f"tracking starts from a DGPSolution or an IGPSolution, got a {type(sol).__name__}")
     tau = np.asarray(sol.tensions, float)
@@ -335,11 +356,7 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
     p = np.asarray(sol.position, float)
     if p.shape != (robot.dimension,):
         raise TautError(f"{robot.name} is {robot.dimension}-D, the solution's position has {p.size} coordinates")
-    R = (
-        np.eye(p.size)
-        if robot.is_point_mass
-        else rotation_matrix(np.asarray(sol.orientation, float), robot.orientation)
-    )
+    R = np.eye(p.size) if robot.is_point_mass else _planar.rotation(robot, np.asarray(sol.orientation, float))
     held = lengths.copy()
     held[list(taut)] = np.linalg.norm(p + robot.anchors[list(taut)] @ R.T - robot.exits[list(taut)], axis=1)
     return _State(taut, held, p, R, tau)
@@ -356,9 +373,10 @@ def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths
     Parameters
     ----------
     robot : Robot
-        A spatial rigid platform without joints or swivelling pulleys, or a point mass
-        (spatial or planar: Newton and Krawczyk on the system of :mod:`taut.dgp._point_mass`;
-        a single taut cable is then an isolated equilibrium, tracked too).
+        A platform without joints or swivelling pulleys: rigid, spatial or planar, or a point
+        mass, spatial or planar (Newton and Krawczyk on the system of
+        :mod:`taut.dgp._point_mass`; a single taut cable is then an isolated equilibrium,
+        tracked too).
     solution : DGPSolution or IGPSolution
         The equilibrium before the change.
     lengths : array_like, shape (n,)
@@ -376,7 +394,7 @@ def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths
         The new equilibrium cannot be certified (it left the branch, or one taut cable of a
         rigid platform is left: a continuum).
     TautError
-        A planar rigid or jointed robot, lengths that are not ``n`` positive numbers,
+        A jointed robot, lengths that are not ``n`` positive numbers,
         or a ``solution`` that is not one.
 
     References

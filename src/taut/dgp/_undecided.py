@@ -32,6 +32,7 @@ from taut._results import Result
 
 if TYPE_CHECKING:
     from taut.dgp._formulation import Subproblem
+    from taut.dgp._planar import PlanarSubproblem
 
 #: Why a box is undecided: ``"narrow"`` — below the bisection threshold, neither discarded
 #: nor certified in double precision (and not reached by the multi-precision search, which
@@ -53,6 +54,8 @@ MAX_SUBPROBLEM_BOXES = 32_000_000
 #: Names of the reference-point unknowns of :mod:`taut.dgp._formulation`: the fixed-frame
 #: coordinates of the three reference points, then the normal of their plane.
 REFERENCE_UNKNOWNS = (*(f"q{i}_{c}" for i in (1, 2, 3) for c in "xyz"), "n_x", "n_y", "n_z")
+#: Of a planar platform (:mod:`taut.dgp._planar`): its two reference points.
+PLANAR_REFERENCE_UNKNOWNS = ("q1_x", "q1_y", "q2_x", "q2_y")
 
 
 def _bound(v: float) -> float | None:
@@ -73,7 +76,8 @@ class UndecidedBox(Result):
     variables : tuple of str
         Names of the pose unknowns: for the direct problem the fixed-frame coordinates
         ``q1_x … q3_z`` of the reference points (and the normal ``n_x, n_y, n_z =
-        (q2 − q1) × (q3 − q1)``), the position ``x, y[, z]`` of a point mass; for the inverse problem the free position coordinates and
+        (q2 − q1) × (q3 − q1)``; ``q1_x … q2_y`` of a planar platform's two), the position
+        ``x, y[, z]`` of a point mass; for the inverse problem the free position coordinates and
         the cosine and sine of each free angle.
     lo, hi : tuple of float
         The enclosure of the pose unknowns.
@@ -81,7 +85,7 @@ class UndecidedBox(Result):
         The enclosure of the taut cables' tensions [N], in the order of ``taut``.
     points : tuple of tuple of float
         Direct problem: the body-frame coordinates [m] of the reference points ``q1, q2,
-        q3`` (a pose ``(p, R)`` puts them at ``p + R @ point``); empty otherwise.
+        q3`` (``q1, q2`` planar; a pose ``(p, R)`` puts them at ``p + R @ point``); empty otherwise.
 
     References
     ----------
@@ -108,7 +112,7 @@ class UndecidedBox(Result):
     hi: tuple[float, ...]
     tension_lo: tuple[float, ...]
     tension_hi: tuple[float, ...]
-    points: tuple[tuple[float, float, float], ...] = ()
+    points: tuple[tuple[float, ...], ...] = ()
 
     def as_dict(self) -> dict:
         """The box in plain JSON types, ``None`` for an unbounded side: ``taut`` (0-based),
@@ -139,7 +143,9 @@ def scaled(t_lo: np.ndarray, t_hi: np.ndarray, scale: np.ndarray) -> tuple[tuple
     return tuple(lo.tolist()), tuple(hi.tolist())
 
 
-def subproblem_box(sp: Subproblem, lengths: np.ndarray, lo: np.ndarray, hi: np.ndarray, cause: str) -> UndecidedBox:
+def subproblem_box(
+    sp: Subproblem | PlanarSubproblem, lengths: np.ndarray, lo: np.ndarray, hi: np.ndarray, cause: str
+) -> UndecidedBox:
     """The undecided box ``[lo, hi]`` of the direct problem's sub-problem ``sp`` at the cable
     ``lengths``.  With six taut cables the tensions are not unknowns: they are enclosed by
     the statics over the box, or unbounded when it has no enclosure there."""
@@ -154,10 +160,16 @@ def subproblem_box(sp: Subproblem, lengths: np.ndarray, lo: np.ndarray, hi: np.n
     return UndecidedBox(
         tuple(sp.taut),
         cause,
-        getattr(sp, "names", REFERENCE_UNKNOWNS)[:k],  # a point mass's: its position
+        (
+            getattr(sp, "names", None)
+            or (PLANAR_REFERENCE_UNKNOWNS if sp.body_refs.shape[1] == 2 else REFERENCE_UNKNOWNS)
+        )[
+              # a point mass's: its position
+            :k
+        ],
         tuple(lo[:k].tolist()),
         tuple(hi[:k].tolist()),
         tension_lo,
         tension_hi,
-        tuple((float(x), float(y), float(z)) for x, y, z in sp.body_refs),
+        tuple(tuple(float(c) for c in point) for point in sp.body_refs),
     )

@@ -215,3 +215,89 @@ def random_point_mass_robot(
         reference=Reference(source="taut.model._random_robots", lengths=tuple(float(x) for x in lengths)),
     )
     return robot, lengths
+
+
+#: Cable counts :func:`random_planar_robot` draws (a planar platform hangs on up to three).
+MIN_PLANAR_CABLES, MAX_PLANAR_CABLES = 2, 6
+
+
+def random_planar_robot(
+    n_cables: int, *, seed: int | np.random.Generator, perturbation: float = 0.02
+) -> tuple[Robot, np.ndarray]:
+    """A random suspended planar robot (pose ``x, y, θ``) and cable lengths to solve its DGP
+    for, drawn from a seed: the planar counterpart of :func:`random_suspended_robot`.
+
+    The frame is 2–6 m wide with its exit points 2.5–4 m high, spread along its top from left
+    to right; the platform is 0.2–0.6 m across with its anchors in the same order (the cables
+    do not cross), not all on one line; its mass 1–10 kg under standard gravity (``−y``), its
+    centre of mass ``platform.wrench_point`` 0.1–0.5 body sizes below the anchors and off
+    centre.  The lengths — the inverse kinematics of a random pose, perturbed — are also the
+    robot's ``reference.lengths``.
+
+    Parameters
+    ----------
+    n_cables : int
+        2 to 6.
+    seed : int or numpy.random.Generator
+        An int ≥ 0 (the robot is named after it and is the same on every machine) or a
+        generator.
+    perturbation : float, default 0.02
+        The relative standard deviation of the lengths around the inverse kinematics of the
+        drawn pose.
+
+    Returns
+    -------
+    robot : Robot
+    lengths : ndarray, shape (n_cables,)
+        Cable lengths [m].
+
+    Raises
+    ------
+    TautError
+        For a cable count outside 2–6, a negative perturbation or a bad seed.
+
+    Examples
+    --------
+    >>> robot, lengths = random_planar_robot(2, seed=0)
+    >>> robot.name, robot.dimension, lengths.shape
+    ('random planar 2-cable robot (seed 0)', 2, (2,))
+    """
+    if not (isinstance(n_cables, (int, np.integer)) and MIN_PLANAR_CABLES <= n_cables <= MAX_PLANAR_CABLES):
+        raise TautError(
+            f"a random planar robot has {MIN_PLANAR_CABLES} to {MAX_PLANAR_CABLES} cables, got {n_cables!r}"
+        )
+    if not (isinstance(perturbation, (int, float, np.number)) and np.isfinite(perturbation) and perturbation >= 0.0):
+        raise TautError(f"the length perturbation must be a non-negative number, got {perturbation!r}")
+    if not (isinstance(seed, np.random.Generator) or (isinstance(seed, (int, np.integer)) and seed >= 0)):
+        raise TautError(f"seed must be an int >= 0 or a numpy.random.Generator, got {seed!r}")
+    n = int(n_cables)
+    rng = seed if isinstance(seed, np.random.Generator) else np.random.default_rng(seed)
+    label = f" (seed {seed})" if not isinstance(seed, np.random.Generator) else ""
+    half = rng.uniform(1.0, 3.0)
+    height = rng.uniform(2.5, 4.0)
+    spread = (np.arange(n) + 0.5 + rng.uniform(-0.3, 0.3, n)) / n * 2.0 - 1.0  # in (−1, 1), increasing
+    exits = np.column_stack([half * spread, height + rng.uniform(-0.2, 0.2, n)])
+    size = rng.uniform(0.1, 0.3)  # platform half-size
+    anchors = np.column_stack([size * spread, size * rng.uniform(-0.3, 0.3, n)])
+    if n == 2:  # two anchors are never collinear; the third point, G, must be off their line
+        anchors[:, 1] = 0.0
+    com = np.array([rng.uniform(-0.3, 0.3) * size, -rng.uniform(0.1, 0.5) * 2 * size])
+    mass = float(rng.uniform(1.0, 10.0))
+    pose = np.array([rng.uniform(-0.4, 0.4) * half, rng.uniform(0.3, 0.6) * height, rng.uniform(-0.25, 0.25)])
+    c, s = np.cos(pose[2]), np.sin(pose[2])
+    reach = np.linalg.norm(exits - (pose[:2] + anchors @ np.array([[c, -s], [s, c]]).T), axis=1)
+    lengths = reach * np.exp(perturbation * rng.standard_normal(n))
+    robot = Robot(
+        name=f"random planar {n}-cable robot{label}",
+        description=(
+            f"Suspended planar platform; lengths from the inverse kinematics of the pose "
+            f"{np.round(pose, 4).tolist()} perturbed by {perturbation:g} (taut.model._random_robots)."
+        ),
+        dimension=2,
+        platform=Platform(kind="rigid", mass=mass, wrench_point=tuple(float(x) for x in com)),
+        cables=tuple(
+            Cable(exit=tuple(float(x) for x in e), anchor=tuple(float(x) for x in b)) for e, b in zip(exits, anchors)
+        ),
+        reference=Reference(source="taut.model._random_robots", lengths=tuple(float(x) for x in lengths)),
+    )
+    return robot, lengths

@@ -36,7 +36,7 @@ __all__ = ["plot_equilibria", "plot_tracking"]
 def plot_equilibria(
     robot: Robot, solutions: Sequence[DGPSolution], columns: int = 3, fig: Figure | None = None
 ) -> Figure:
-    """One 3-D panel per solution of the spatial ``robot``, ``columns`` panels a row, titled
+    """One panel per solution of ``robot`` (3-D for a spatial one), ``columns`` panels a row, titled
     with its taut cables and stability; a single note when there is none.  Laid out on the
     empty figure ``fig`` (``None``: a new one), which is returned.  A figure that already
     has axes or ``columns < 1`` raise :class:`~taut.errors.ArgumentError`."""
@@ -52,7 +52,7 @@ def plot_equilibria(
     rows = math.ceil(len(solutions) / cols)
     fig = empty_figure(fig, "a set of equilibria", (4.2 * cols, 4.0 * rows))
     for k, s in enumerate(solutions):
-        ax = fig.add_subplot(rows, cols, k + 1, projection="3d")
+        ax = fig.add_subplot(rows, cols, k + 1, projection="3d" if robot.dimension == 3 else None)
         draw_robot(robot, np.concatenate([s.position, s.orientation]), ax=ax)
         taut = ",".join(str(i + 1) for i in s.taut)
         ax.set_title(f"#{k + 1}: cables {taut} taut, {'stable' if s.stable else 'unstable'}", fontsize=9)
