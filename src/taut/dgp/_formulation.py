@@ -68,6 +68,7 @@ import numpy.typing as npt
 from numba import njit
 
 from taut._checks import as_array, as_index
+from taut.dgp._undecided import REFERENCE_UNKNOWNS, scaled
 from taut.errors import CableSetError, SingularConfigurationError
 from taut.geometry import angles_from_matrix
 from taut.interval import Expr, LinearFilter, System, compile_system, compile_tape, const, evaluate_point, variables
@@ -180,6 +181,18 @@ class Subproblem:
         contraction reshapes boxes without emptying them (CoGiRo's cables 3 and 7: 929
         boxes without, 142 155 with it)."""
         return 3 + len(self.taut) + (self.pose_unknowns - 9) if 3 <= len(self.taut) <= 5 else 0
+
+    @property
+    def unknown_names(self) -> tuple[str, ...]:
+        """Names of the pose unknowns (the reference points, the normal)."""
+        return REFERENCE_UNKNOWNS[: self.pose_unknowns]
+
+    def tension_enclosure(
+        self, t_lo: np.ndarray, t_hi: np.ndarray, lengths: np.ndarray, lo: np.ndarray, hi: np.ndarray
+    ) -> tuple[tuple[float, ...], tuple[float, ...]]:
+        """Bounds of the tensions ``τ = t ρ`` of the scaled tensions in ``[t_lo, t_hi]`` over
+        the box ``[lo, hi]``, rounded outwards."""
+        return scaled(t_lo, t_hi, np.asarray(lengths, float)[list(self.taut)])
 
     def tensions(self, x: np.ndarray, lengths: np.ndarray, n: int) -> np.ndarray:
         """Tensions of all ``n`` cables (0 for slack ones) at the unknowns ``x``."""
@@ -377,6 +390,10 @@ def build_subproblem(robot: Robot, lengths: npt.ArrayLike, taut: tuple[int, ...]
     >>> sp.system.n, sp.pose_unknowns
     (12, 9)
     """
+    if robot.swivel_cables:
+        from taut.dgp._pulleys import pulley_subproblem
+
+        return pulley_subproblem(robot, lengths, taut, normal=normal)
     n = robot.n_cables
     lengths = as_array(lengths, "cable lengths", shape=(n,))
     try:

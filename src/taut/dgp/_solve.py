@@ -35,6 +35,7 @@ import numpy.typing as npt
 from taut._checks import as_array, as_count, as_number
 from taut._results import Result, freeze, jsonable
 from taut.dgp._formulation import Subproblem, build_subproblem, load
+from taut.dgp._pulleys import cable_spans, check_pulley_reach, pulley_single_cable, pulley_stable
 from taut.dgp._single_cable import single_cable_equilibria
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import MAX_SUBPROBLEM_BOXES, UndecidedBox, cause_of, subproblem_box
@@ -51,7 +52,6 @@ from taut.interval import (
     same_solution,
     solve_precise,
 )
-from taut.kinematics import refuse_swivels
 from taut.model import Robot
 from taut.parallel import Executor, as_executor
 
@@ -338,7 +338,8 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
     _, _, gp = load(robot)
     out: list[DGPSolution] = []
     if len(taut) == 1:
-        for s in single_cable_equilibria(robot, lengths, taut[0]):
+        single = pulley_single_cable if robot.swivel_cables else single_cable_equilibria
+        for s in single(robot, lengths, taut[0]):
             out.append(
                 DGPSolution(
                     (taut[0],),
@@ -399,7 +400,8 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
         b = p + r @ R.T
         zero = [i for i, lo_i in zip(taut, t_lo) if lo_i <= 0.0]
         # slack cables at their lengths: within the certificate's width, widened
-        near = [k for k in range(n) if k not in taut and abs(np.linalg.norm(b[k] - a[k]) - lengths[k]) <= _reach(c)]
+        spans = cable_spans(robot, b)
+        near = [k for k in range(n) if k not in taut and abs(spans[k] - lengths[k]) <= _reach(c)]
         if not (border or zero):
             near = []
         elif not (zero or near):
@@ -410,7 +412,10 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
         smaller = tuple(i for i in taut if i not in zero)
         idx = list(smaller)
         g = p + R @ gp
-        stable = is_stable(a[idx], b[idx], g, tau[idx], lengths[idx]) if idx else False
+        if robot.swivel_cables:
+            stable = pulley_stable(robot, b, g, tau, idx)
+        else:
+            stable = is_stable(a[idx], b[idx], g, tau[idx], lengths[idx]) if idx else False
         boundary = tuple(sorted(set(taut) | set(near))) if zero or near else None
         out.append(DGPSolution(smaller, p, ang, tau, stable, c.width, c.radius, boundary=boundary))
         certs.append(None if boundary else c)
@@ -544,9 +549,11 @@ def solve_dgp(
     Parameters
     ----------
     robot : Robot
-        A spatial rigid platform without joints or swivelling pulleys.
+        A spatial rigid platform without joints; cables may leave through swivelling
+        pulleys (:mod:`taut.dgp._pulleys`).
     lengths : array_like, shape (n,), optional
-        Cable lengths [m]; default the robot's ``reference.lengths``.
+        Cable lengths [m], the arcs wound on pulleys included; default the robot's
+        ``reference.lengths``.
     max_taut : int, optional
         Largest taut subset searched (default ``min(n, 6)``).
     executor : Executor or distributed.Client, optional
@@ -586,9 +593,7 @@ def solve_dgp(
         A planar, point-mass or jointed robot, lengths that are not ``n`` positive numbers,
         no reference lengths to default to, lengths that put the platform beyond
         :data:`MAX_SCALE` ``tol`` from the origin (where double precision cannot resolve
-        ``tol``), or a bad option.
-    UnsupportedRobotError
-        A cable with a swivelling pulley.
+        ``tol``), a pulley radius not smaller than its cable's length, or a bad option.
 
     References
     ----------
@@ -607,7 +612,6 @@ def solve_dgp(
     >>> len(res.solutions), sum(s.stable for s in res.solutions), res.complete
     (6, 1, True)
     """
-    refuse_swivels(robot, "the DGP solver")
     if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
         raise TautError("the DGP solver handles spatial rigid platforms without joints")
     if lengths is None:
@@ -615,6 +619,7 @@ def solve_dgp(
             raise TautError(f"{robot.name} has no reference lengths: give the cable lengths")
         lengths = robot.reference.lengths
     checked = check_lengths(robot, lengths)
+    check_pulley_reach(robot, checked)
     tol = as_number(tol, "tol", positive=True)
     check_scale(robot, checked, tol)
     n = robot.n_cables

@@ -1,0 +1,202 @@
+"""The DGP of robots whose cables leave through swivelling pulleys: every solution is checked
+against the pulley inverse kinematics of taut.kinematics (lengths with the wound arc, the
+structure matrix through the tangent points), which the closed-form equations of
+taut.dgp._pulleys do not use."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from taut.dgp import build_subproblem, load, solve_dgp
+from taut.interval import branch_and_prune
+from taut.kinematics import inverse_kinematics, swivel_paths
+from taut.model import Robot, example
+
+LENGTHS = np.array([7.5, 10.0, 9.5])
+
+
+def _with_radius(robot: Robot, radius: float | None) -> Robot:
+    """``robot`` with every pulley's radius set to ``radius`` (``None``: no pulleys)."""
+    cables = tuple(
+        c.model_copy(update={"swivel": None if radius is None else c.swivel.model_copy(update={"radius": radius})})
+        for c in robot.cables
+    )
+    return robot.model_copy(update={"cables": cables})
+
+
+def _check_equilibrium(robot: Robot, position, orientation, tensions, lengths, taut) -> None:
+    """Lengths of the taut cables (pulley IK) to 1e-9, slack cables no longer than their
+    lengths, tensions ≥ 0 and zero on slack cables, and the wrench balance with the pulley
+    structure matrix (columns [u; (b − p) × u] through the tangent points)."""
+    pose = np.concatenate([position, orientation])
+    ik = inverse_kinematics(robot, pose)
+    idx = list(taut)
+    np.testing.assert_allclose(ik.lengths[idx], lengths[idx], rtol=0, atol=1e-9)
+    slack = [k for k in range(robot.n_cables) if k not in taut]
+    assert np.all(ik.lengths[slack] <= lengths[slack] + 1e-9)
+    assert np.all(tensions >= 0) and np.all(tensions[slack] == 0)
+    f, m, gp = load(robot)
+    R = _rotation(robot, orientation)
+    g = R @ gp  # load point relative to the platform origin
+    wrench = np.concatenate([f, m + np.cross(g, f)])
+    np.testing.assert_allclose(ik.structure_matrix @ tensions + wrench, 0.0, atol=1e-9)
+
+
+def _rotation(robot: Robot, orientation) -> np.ndarray:
+    from taut.geometry import rotation_matrix
+
+    return rotation_matrix(np.asarray(orientation, float), robot.orientation)
+
+
+def test_the_structure_matrix_convention_the_checks_rely_on():
+    """The structure matrix's columns are [u; (b − p) × u] with u towards the tangent point:
+    a point-exit robot's Table 4.3 equilibrium balances with it (so the checks are sound)."""
+    robot = example("suspended-3cable")
+    from taut.dgp import solve_igp
+
+    s = solve_igp(robot, [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061}).solutions[0]
+    _check_equilibrium(robot, s.position, s.orientation, s.tensions, s.lengths, (0, 1, 2))
+
+
+def _certify_near(robot: Robot, lengths: np.ndarray, pose: np.ndarray, half: float = 1e-3):
+    """Branch-and-prune on a small box about the unknowns of ``pose`` (and the tensions
+    free in [0, ∞)): the certified solutions of the pulley system there."""
+    sp = build_subproblem(robot, lengths, (0, 1, 2))
+    R = _rotation(robot, pose[3:])
+    x = sp.unknowns(pose[:3], R, np.zeros(3))
+    k = sp.pose_unknowns
+    lo, hi = x - half, x + half
+    lo[k:], hi[k:] = 0.0, np.inf
+    lo, hi = np.maximum(lo, sp.lo), np.minimum(hi, sp.hi)
+    res = branch_and_prune(sp.system, lo, hi, primary=sp.primary, tol=1e-9, filters=(sp.statics,))
+    out = []
+    for c in res.solutions:
+        p, ang, _ = sp.pose(c.x, robot.orientation)
+        out.append((p, ang, sp.tensions(c.x, lengths, robot.n_cables), c))
+    return res, out
+
+
+def test_a_certified_pulley_equilibrium_has_the_pulley_lengths_and_balances():
+    robot = example("suspended-3pulley")
+    pose = np.array(robot.reference.poses["stable"])
+    res, sols = _certify_near(robot, LENGTHS, pose)
+    assert res.complete and len(sols) == 1
+    p, ang, tau, cert = sols[0]
+    _check_equilibrium(robot, p, ang, tau, LENGTHS, (0, 1, 2))
+    assert cert.width < 1e-8
+    # the reference pose is this equilibrium rounded to 1e-6
+    np.testing.assert_allclose(np.concatenate([p, ang]), pose, atol=1e-6)
+
+
+def test_the_pulleys_move_the_equilibrium_away_from_the_point_exit_one():
+    """The pulley model is not the fixed-exit one: the arcs and tangent points move the
+    stable equilibrium of Table 4.3 by centimetres, so fixed-exit equations would fail the
+    pulley lengths."""
+    pulleys = example("suspended-3pulley")
+    point = [2.7505, 3.9798, 5.5061, 3.0064, 0.3417, 0.1089]
+    ik = inverse_kinematics(pulleys, point)
+    assert np.max(np.abs(ik.lengths - LENGTHS)) > 5e-3
+    moved = np.array(pulleys.reference.poses["stable"])
+    assert np.linalg.norm(moved[:3] - point[:3]) > 5e-3
+
+
+@pytest.mark.parametrize("radius", [1e-5, 1e-7])
+def test_small_pulleys_give_the_point_exit_equilibrium(radius):
+    """Radius → 0: the pulley robot's certified equilibrium near Table 4.3's stable one tends
+    to the point-exit robot's (the IGP solution of Berti's example), linearly in the radius."""
+    robot = _with_radius(example("suspended-3pulley"), radius)
+    from taut.dgp import solve_igp
+
+    point = solve_igp(example("suspended-3cable"), [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061}).solutions[0]
+    lengths = point.lengths
+    start = np.concatenate([point.position, point.orientation])
+    res, sols = _certify_near(robot, lengths, start, half=1e-2)
+    assert res.complete and len(sols) == 1
+    p, ang, tau, _ = sols[0]
+    _check_equilibrium(robot, p, ang, tau, lengths, (0, 1, 2))
+    scale = 100.0 * radius + 1e-9
+    np.testing.assert_allclose(p, point.position, atol=scale)
+    np.testing.assert_allclose(ang, point.orientation, atol=scale)
+    np.testing.assert_allclose(tau, point.tensions, atol=scale)
+
+
+def test_one_taut_cable_along_its_swivel_axis_hangs_unwrapped():
+    """Cables 2 and 3 paid out far: cable 1 alone holds the platform.  Its load is along its
+    swivel axis (the way the cable comes), so it hangs straight down from the exit point,
+    unwrapped, with the anchor on the axis — where the pulley IK flags the swivel angle
+    undefined but gives the length."""
+    robot = example("suspended-3pulley")
+    lengths = np.array([7.5, 30.0, 30.0])
+    res = solve_dgp(robot, lengths, max_taut=1)
+    assert res.complete
+    assert len(res.solutions) == 2  # G below the anchor (stable) and above it
+    assert sorted(s.stable for s in res.solutions) == [False, True]
+    f, _, gp = load(robot)
+    for s in res.solutions:
+        assert s.taut == (0,) and s.continuum is not None
+        R = _rotation(robot, s.orientation)
+        b = s.position + robot.anchors @ R.T
+        np.testing.assert_allclose(b[0] - robot.exits[0], [0, 0, 7.5], atol=1e-9)
+        paths = swivel_paths(robot.exits, [[0, 0, 1]] * 3, [0.1] * 3, b[None])
+        assert paths.on_axis[0, 0]
+        np.testing.assert_allclose(paths.lengths[0, 0], 7.5, atol=1e-9)
+        assert np.all(paths.lengths[0, 1:] <= 30.0)
+        np.testing.assert_allclose(s.tensions, [np.linalg.norm(f), 0, 0], atol=1e-12)
+        # the load point on the cable's line
+        g = s.position + R @ gp
+        np.testing.assert_allclose(np.cross(g - b[0], f), 0.0, atol=1e-9)
+
+
+def test_one_taut_cable_through_a_tilted_pulley_wraps_it():
+    """With the swivel axes tilted off the load, cable 1 alone wraps its pulley: its free
+    segment hangs along the load from the tangent point, and its length is the arc plus
+    the free length (pulley IK)."""
+    robot = example("suspended-3pulley")
+    cables = tuple(
+        c.model_copy(update={"swivel": c.swivel.model_copy(update={"axis": (1.0, 0.0, 1.0)})}) for c in robot.cables
+    )
+    robot = robot.model_copy(update={"cables": cables})
+    lengths = np.array([7.5, 30.0, 30.0])
+    res = solve_dgp(robot, lengths, max_taut=1)
+    # the pulley faces the anchor on one branch only (the other would need a free length
+    # shorter than the pulley), G below or above the anchor
+    assert res.complete and len(res.solutions) == 2
+    assert sorted(s.stable for s in res.solutions) == [False, True]
+    for s in res.solutions:
+        _check_equilibrium(robot, s.position, s.orientation, s.tensions, lengths, (0,))
+        ik = inverse_kinematics(robot, np.concatenate([s.position, s.orientation]))
+        free = ik.anchors[0] - ik.exit_points[0]
+        np.testing.assert_allclose(free / np.linalg.norm(free), [0, 0, 1], atol=1e-9)
+        assert np.linalg.norm(free) < 7.5 - 0.05  # the arc takes up some of the length
+
+
+@pytest.mark.parametrize("radius", [0.1, 0.5, 2.0])
+def test_a_pulley_not_smaller_than_its_cable_is_refused(radius):
+    robot = _with_radius(example("suspended-3pulley"), radius)
+    from taut.errors import TautError
+
+    lengths = np.array([0.1, 10.0, 9.5])
+    with pytest.raises(TautError, match=f"cable 1's pulley radius {radius:g} m is not smaller"):
+        solve_dgp(robot, lengths)
+
+
+@pytest.mark.slow
+def test_the_whole_pulley_dgp_and_its_point_exit_limit():
+    """Every equilibrium of the pulley robot at Table 4.3's lengths is certified, has the
+    pulley lengths and balances; with pulleys of radius 1e-6 the solution set is Table 4.3's
+    (the point-exit robot's) to within 1e-4."""
+    robot = example("suspended-3pulley")
+    res = solve_dgp(robot)
+    assert res.complete and len(res.solutions) == 6
+    assert sum(s.stable for s in res.solutions) == 1
+    for s in res.solutions:
+        _check_equilibrium(robot, s.position, s.orientation, s.tensions, LENGTHS, s.taut)
+    tiny = solve_dgp(_with_radius(robot, 1e-6))
+    point = solve_dgp(_with_radius(robot, None))
+    assert tiny.complete and point.complete
+    assert len(tiny.solutions) == len(point.solutions) == 6
+    for a, b in zip(tiny.solutions, point.solutions):
+        assert a.taut == b.taut and a.stable == b.stable
+        np.testing.assert_allclose(a.position, b.position, atol=1e-4)
+        np.testing.assert_allclose(a.orientation, b.orientation, atol=1e-4)
