@@ -8,7 +8,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from taut.dgp import build_subproblem, load, solve_dgp
+from taut.dgp import DGPSolution, build_subproblem, load, solve_dgp, track_equilibrium, track_path
+from taut.errors import TrackingLostError
 from taut.interval import branch_and_prune
 from taut.kinematics import inverse_kinematics, swivel_paths
 from taut.model import Robot, example
@@ -200,3 +201,50 @@ def test_the_whole_pulley_dgp_and_its_point_exit_limit():
         assert a.taut == b.taut and a.stable == b.stable
         np.testing.assert_allclose(a.position, b.position, atol=1e-4)
         np.testing.assert_allclose(a.orientation, b.orientation, atol=1e-4)
+
+
+def _start(robot: Robot) -> DGPSolution:
+    """The reference equilibrium as a tracking start: its tensions solved from the pulley
+    structure matrix at the reference pose."""
+    pose = np.array(robot.reference.poses["stable"])
+    ik = inverse_kinematics(robot, pose)
+    f, m, gp = load(robot)
+    g = _rotation(robot, pose[3:]) @ gp
+    tau = np.linalg.lstsq(ik.structure_matrix, -np.concatenate([f, m + np.cross(g, f)]), rcond=None)[0]
+    return DGPSolution((0, 1, 2), pose[:3], pose[3:], tau, True, 0.0, 0.0)
+
+
+def test_tracking_follows_the_pulley_equilibrium():
+    """Cable 1 paid out by 5 cm in 5 steps: every tracked equilibrium has the pulley
+    lengths and balances, and the last one is the equilibrium a certified search finds in a
+    box about it."""
+    robot = example("suspended-3pulley")
+    rows = LENGTHS + np.linspace(0.0, 0.05, 6)[:, None] * [1.0, 0.0, 0.0]
+    path = track_path(robot, _start(robot), rows)
+    assert len(path) == 6
+    for s, lengths in zip(path, rows):
+        assert s.taut == (0, 1, 2) and s.stable
+        _check_equilibrium(robot, s.position, s.orientation, s.tensions, lengths, s.taut)
+        assert 0.0 < s.certificate_width < 0.1  # the Krawczyk box covers the step
+    last = path[-1]
+    res, sols = _certify_near(robot, rows[-1], np.concatenate([last.position, last.orientation]))
+    assert res.complete and len(sols) == 1
+    np.testing.assert_allclose(sols[0][0], last.position, atol=1e-8)
+    np.testing.assert_allclose(sols[0][1], last.orientation, atol=1e-8)
+    # the platform moved: tracking did not stand still
+    assert np.linalg.norm(last.position - path[0].position) > 5e-3
+
+
+def test_tracking_with_pulleys_loses_the_branch_with_a_reason():
+    """A start that is no equilibrium of the pulley robot (the point-exit one, 2 cm away) is
+    not certified by a jump: the update halves and fails, or lands within the certified
+    box of the pulley equilibrium it found — never on an unchecked pose."""
+    robot = example("suspended-3pulley")
+    start = _start(robot)
+    lengths = LENGTHS + [0.4, -0.4, 0.4]
+    try:
+        s = track_equilibrium(robot, start, lengths)
+    except TrackingLostError as err:
+        assert "tracking lost" in str(err)
+    else:
+        _check_equilibrium(robot, s.position, s.orientation, s.tensions, lengths, s.taut)

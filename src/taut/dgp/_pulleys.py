@@ -717,3 +717,57 @@ def check_pulley_reach(robot: Robot, lengths: np.ndarray) -> None:
                 f"{robot.name}: cable {i + 1}'s pulley radius {pulley.radius:g} m is not smaller than the cable's "
                 f"length {lengths[i]:g} m, the anchor's reach from its exit point"
             )
+
+
+def pulley_update(
+    robot: Robot,
+    taut: tuple[int, ...],
+    lengths: np.ndarray,
+    p0: np.ndarray,
+    R0: np.ndarray,
+    tau0: np.ndarray,
+    margin: float,
+    floor: float,
+) -> tuple[int, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, float, float]:
+    """One certified tracking update of a robot with swivelling pulleys (the steps 1–2 of
+    :mod:`taut.dgp._tracking`): Newton from the state ``(p0, R0, tau0)`` on the pulley
+    sub-problem of ``taut`` at the new ``lengths`` (built afresh: its lengths enter through the
+    arctangent equations, not as patchable squares), then Krawczyk on the box about the
+    limit (:func:`taut.interval.certified_step`, half-width ``margin`` times the step plus
+    ``floor``).  Returns ``(status, p, R, angles, tensions, spans, eigenvalue sign, box
+    width)`` as the compiled update of :mod:`taut.dgp._tracking` does (status 1: certified;
+    the stability as ``±1``)."""
+    from taut.geometry import angles_from_matrix
+    from taut.interval import certified_step
+
+    n = robot.n_cables
+    sp = pulley_subproblem(robot, lengths, taut, normal=False)
+    idx = list(taut)
+    m = len(idx)
+    x0 = sp.unknowns(p0, R0, np.zeros(m) if sp.tension_unknowns else ())
+    if sp.tension_unknowns:
+        x0[sp.pose_unknowns :] = tau0[idx] / evaluate_point(sp.scale, x0)
+    system = sp.system
+    status, x, lo, hi = certified_step(
+        *system.tape.arrays[:7],
+        system.n_equations,
+        *system.jacobian.arrays[:7],
+        system.rows,
+        system.cols,
+        x0,
+        margin,
+        floor,
+        1e-13,
+        30,
+        10,
+    )
+    width = float(np.max(hi - lo))
+    if status != 1:
+        return int(status), p0, R0, np.zeros(3), np.zeros(n), np.zeros(n), 0.0, width
+    p, R = sp.frame(x)
+    tau = sp.tensions(x, lengths, n)
+    b = p + robot.anchors @ R.T
+    g = p + R @ load(robot)[2]
+    stable = pulley_stable(robot, b, g, tau, idx)
+    ang = angles_from_matrix(R, robot.orientation)
+    return 1, p, R, ang, tau, cable_spans(robot, b), 1.0 if stable else -1.0, width

@@ -51,12 +51,12 @@ from numba import njit
 from taut._checks import as_array
 from taut.dgp._formulation import Subproblem, build_subproblem, frame_from_points, load
 from taut.dgp._inverse import IGPSolution
+from taut.dgp._pulleys import cable_spans, pulley_update
 from taut.dgp._solve import DGPSolution, check_lengths
 from taut.dgp._stability import smallest_eigenvalue
 from taut.errors import TautError, TrackingLostError
 from taut.geometry import CONVENTIONS, matrix_angles, rotation_matrix
 from taut.interval import CONST, SQR, certified_step, point_kernel
-from taut.kinematics import refuse_swivels
 from taut.model import Robot
 
 #: Relative floor of the Krawczyk box half-width (a zero step still needs a box).
@@ -265,7 +265,12 @@ def _attempt(
     """Newton + Krawczyk on subset ``taut``; ``(state, box width)`` or a reason string."""
     if not 2 <= len(taut) <= 6:
         return f"a taut set of {len(taut)} cable(s) has no isolated equilibrium to track"
-    status, p, R, ang, tau, spans, eig, width = _compiled(robot, taut).update(lengths, s)
+    if robot.swivel_cables:
+        status, p, R, ang, tau, spans, eig, width = pulley_update(
+            robot, taut, lengths, s.p, s.R, s.tensions, BOX_MARGIN, BOX_FLOOR
+        )
+    else:
+        status, p, R, ang, tau, spans, eig, width = _compiled(robot, taut).update(lengths, s)
     if status == -1:
         return "Newton did not converge"
     if status != 1:
@@ -317,7 +322,6 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
     """The state of ``sol``, about to move to ``lengths``: the lengths it holds are its
     taut cables' spans (a solution does not carry them) and, for its slack cables, the new
     ``lengths`` (they enter no equation)."""
-    refuse_swivels(robot, "tracking")
     if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
         raise TautError("tracking handles spatial rigid platforms without joints")
     if not isinstance(sol, (DGPSolution, IGPSolution)):
@@ -329,7 +333,10 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
     p = np.asarray(sol.position, float)
     R = rotation_matrix(np.asarray(sol.orientation, float), robot.orientation)
     held = lengths.copy()
-    held[list(taut)] = np.linalg.norm(p + robot.anchors[list(taut)] @ R.T - robot.exits[list(taut)], axis=1)
+    if robot.swivel_cables:
+        held[list(taut)] = cable_spans(robot, p + robot.anchors @ R.T)[list(taut)]
+    else:
+        held[list(taut)] = np.linalg.norm(p + robot.anchors[list(taut)] @ R.T - robot.exits[list(taut)], axis=1)
     return _State(taut, held, p, R, tau)
 
 
@@ -344,7 +351,9 @@ def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths
     Parameters
     ----------
     robot : Robot
-        A spatial rigid platform without joints or swivelling pulleys.
+        A spatial rigid platform without joints; cables may leave through swivelling
+        pulleys (each update then builds the pulley sub-problem of :mod:`taut.dgp._pulleys`
+        afresh, in milliseconds rather than microseconds).
     solution : DGPSolution or IGPSolution
         The equilibrium before the change.
     lengths : array_like, shape (n,)
