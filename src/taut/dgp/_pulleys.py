@@ -746,6 +746,7 @@ def pulley_update(
     m = len(idx)
     x0 = sp.unknowns(p0, R0, np.zeros(m) if sp.tension_unknowns else ())
     if sp.tension_unknowns:
+        assert sp.scale is not None
         x0[sp.pose_unknowns :] = tau0[idx] / evaluate_point(sp.scale, x0)
     system = sp.system
     status, x, lo, hi = certified_step(
