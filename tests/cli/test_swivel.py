@@ -126,3 +126,20 @@ def test_fk_pairs_of_pulley_cables_complete(taut_cli: Callable) -> None:
     and the search says so completely."""
     res = taut_cli("fk", "suspended-3pulley", "--max-taut", "2", "--json").json()
     assert res["complete"] and res["solutions"] == [] and res["subproblems"] == 6
+
+
+def test_igp_models_the_pulleys(taut_cli: Callable) -> None:
+    """`taut igp` on the built-in pulley robot: the lengths to command are the pulley IK's
+    (the stable solution at the reference position has the reference lengths)."""
+    from taut.model import example
+
+    robot = example("suspended-3pulley")
+    x, y, z = robot.reference.poses["stable"][:3]
+    res = taut_cli("igp", "suspended-3pulley", "--taut", "1,2,3", "--fix", f"x={x},y={y},z={z}", "--json").json()
+    assert res["complete"] and len(res["solutions"]) == 4
+    stable = [s for s in res["solutions"] if s["stable"]]
+    assert len(stable) == 1
+    np.testing.assert_allclose(stable[0]["lengths"], robot.reference.lengths, atol=2e-6)
+    for s in res["solutions"]:
+        ik = inverse_kinematics(robot, [*s["position"], *s["orientation"]])
+        np.testing.assert_allclose(s["lengths"], ik.lengths, atol=1e-12)

@@ -8,8 +8,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from taut.dgp import DGPSolution, build_subproblem, load, solve_dgp, track_equilibrium, track_path
-from taut.errors import TrackingLostError
+from taut.dgp import DGPSolution, build_subproblem, load, solve_dgp, track_path
 from taut.interval import branch_and_prune
 from taut.kinematics import inverse_kinematics, swivel_paths
 from taut.model import Robot, example
@@ -235,16 +234,24 @@ def test_tracking_follows_the_pulley_equilibrium():
     assert np.linalg.norm(last.position - path[0].position) > 5e-3
 
 
-def test_tracking_with_pulleys_loses_the_branch_with_a_reason():
-    """A start that is no equilibrium of the pulley robot (the point-exit one, 2 cm away) is
-    not certified by a jump: the update halves and fails, or lands within the certified
-    box of the pulley equilibrium it found — never on an unchecked pose."""
+def test_igp_with_pulleys_commands_the_pulley_lengths():
+    """The inverse problem at the reference position: four certified equilibria, each
+    balancing with the pulley structure matrix at the lengths the pulley IK gives (the ones
+    to command, arcs included); the stable one is the reference pose, whose lengths are the
+    reference lengths."""
     robot = example("suspended-3pulley")
-    start = _start(robot)
-    lengths = LENGTHS + [0.4, -0.4, 0.4]
-    try:
-        s = track_equilibrium(robot, start, lengths)
-    except TrackingLostError as err:
-        assert "tracking lost" in str(err)
-    else:
-        _check_equilibrium(robot, s.position, s.orientation, s.tensions, lengths, s.taut)
+    from taut.dgp import solve_igp
+
+    pose = np.array(robot.reference.poses["stable"])
+    res = solve_igp(robot, [0, 1, 2], {"x": pose[0], "y": pose[1], "z": pose[2]})
+    assert res.complete and len(res.solutions) == 4
+    assert [s.stable for s in res.solutions] == [True, False, False, False]
+    for s in res.solutions:
+        ik = inverse_kinematics(robot, np.concatenate([s.position, s.orientation]))
+        np.testing.assert_allclose(s.lengths, ik.lengths, rtol=0, atol=1e-12)
+        _check_equilibrium(robot, s.position, s.orientation, s.tensions, s.lengths, s.taut)
+        # the arcs: longer than the straight exit-to-anchor spans
+        assert np.all(s.lengths > np.linalg.norm(ik.anchors - robot.exits, axis=1))
+    stable = res.solutions[0]
+    np.testing.assert_allclose(stable.orientation, pose[3:], atol=2e-6)
+    np.testing.assert_allclose(stable.lengths, LENGTHS, atol=2e-6)

@@ -86,7 +86,6 @@ from taut.interval import (
     const,
     variables,
 )
-from taut.kinematics import refuse_swivels
 from taut.model import Robot
 
 #: A 3×3 matrix of expressions (a rotation's entries as polynomials).
@@ -249,7 +248,6 @@ class IGPResult(Result):
 
 
 def _check_robot(robot: Robot) -> None:
-    refuse_swivels(robot, "the inverse geometrico-static problem")
     if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
         kind = "planar" if robot.dimension != 3 else "point-mass" if robot.is_point_mass else "jointed"
         raise UnsupportedRobotError(
@@ -391,6 +389,8 @@ class _Problem:
     primary: np.ndarray
     free_pos: list[int]  #: pose indices 0–2 that are unknowns, in variable order
     free_ang: list[int]  #: pose indices 3–5 (as 0–2) that are unknowns, in variable order
+    #: names of the unknowns between the angles and the tensions (the pulleys' ``d``, ``l_f``)
+    extra_names: tuple[str, ...] = ()
 
 
 def _build(
@@ -517,7 +517,9 @@ def solve_igp(
     Parameters
     ----------
     robot : Robot
-        A spatial rigid platform without joints or swivelling pulleys.
+        A spatial rigid platform without joints; cables may leave through swivelling
+        pulleys (:func:`taut.dgp._pulleys.pulley_igp_problem`: the lengths to command are
+        then the pulley IK's, the arcs included).
     taut : iterable of int
         The 0-based indices of the ``m`` taut cables, ``2 ≤ m ≤ 6`` (the cables the command
         line numbers 1, 2, 3 are ``[0, 1, 2]``).
@@ -553,7 +555,7 @@ def solve_igp(
         Fixed coordinates that are not ``m`` distinct pose coordinates with finite values,
         or a bad ``box``.
     UnsupportedRobotError
-        A planar, point-mass or jointed robot, or a swivelling pulley.
+        A planar, point-mass or jointed robot.
     TautError
         A bad ``tol`` or ``max_boxes``.
 
@@ -587,7 +589,12 @@ def solve_igp(
     boxes = 0
     exhausted = False
     if np.all(pos_lo < pos_hi):  # the taut cables' reach boxes can miss each other
-        pb = _build(robot, idx, values, pos_lo, pos_hi)
+        if robot.swivel_cables:
+            from taut.dgp._pulleys import pulley_igp_problem
+
+            pb = pulley_igp_problem(robot, idx, values, pos_lo, pos_hi)
+        else:
+            pb = _build(robot, idx, values, pos_lo, pos_hi)
         res = branch_and_prune(
             pb.system,
             pb.lo,
@@ -636,7 +643,7 @@ def _unknown_names(robot: Robot, pb: _Problem) -> tuple[str, ...]:
     angles = [names[3 + k] for k in pb.free_ang]
     if robot.orientation == "tilt-torsion" and 2 in pb.free_ang:
         angles[-1] = f"{names[5]}-{names[3]}"
-    return (*(names[k] for k in pb.free_pos), *(f"{f}({a})" for a in angles for f in ("cos", "sin")))
+    return (*(names[k] for k in pb.free_pos), *(f"{f}({a})" for a in angles for f in ("cos", "sin")), *pb.extra_names)
 
 
 def _undecided(
@@ -662,6 +669,10 @@ def _undecided(
     widen = 1.0 + 8.0 * np.finfo(float).eps  # covers the rounding of the norms and sums
     length_lo = np.maximum(0.0, (near - arm) / widen)
     length_hi = (far + arm) * widen
+    for j, i in enumerate(taut):
+        if robot.cables[i].swivel is not None:
+            # τ = t Q through a pulley, 0 ≤ Q = ρ² − r d + h l_f ≤ 2ρ² (taut.dgp._pulleys)
+            length_lo[j], length_hi[j] = 0.0, 2.0 * length_hi[j] ** 2 * widen
     t_lo, t_hi = lo[k:], hi[k:]
     tension_lo, _ = scaled(t_lo, t_lo, length_lo)
     _, tension_hi = scaled(t_hi, t_hi, length_hi)
@@ -687,12 +698,23 @@ def _solution(
     lengths = np.linalg.norm(a - b, axis=1)
     idx = list(taut)
     tensions = np.zeros(robot.n_cables)
-    tensions[idx] = x[-len(taut) :] * lengths[idx]
+    if robot.swivel_cables:
+        from taut.dgp._pulleys import cable_spans, pulley_igp_tensions
+
+        lengths = cable_spans(robot, b)
+        tensions[idx] = pulley_igp_tensions(robot, taut, b, x[-len(taut) :])
+    else:
+        tensions[idx] = x[-len(taut) :] * lengths[idx]
     lmin, lmax = robot.length_bounds
     slack = [k for k in range(robot.n_cables) if k not in taut]
     # a slack cable can be paid out beyond its span, so only its upper bound can fail
     out_of_bounds = [k for k in range(robot.n_cables) if lengths[k] > lmax[k] or (k in taut and lengths[k] < lmin[k])]
-    stable = is_stable(a[idx], b[idx], p + R @ gp, tensions[idx], lengths[idx])
+    if robot.swivel_cables:
+        from taut.dgp._pulleys import pulley_stable
+
+        stable = pulley_stable(robot, b, p + R @ gp, tensions, idx)
+    else:
+        stable = is_stable(a[idx], b[idx], p + R @ gp, tensions[idx], lengths[idx])
     return IGPSolution(
         tuple(taut),
         p,

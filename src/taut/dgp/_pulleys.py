@@ -86,6 +86,7 @@ from taut.dgp._formulation import (
     reference_choice,
     secondary_coordinates,
 )
+from taut.dgp._inverse import _Problem
 from taut.dgp._single_cable import TWO_PI, _axis_rotation, _rotation_to
 from taut.dgp._undecided import REFERENCE_UNKNOWNS
 from taut.errors import CableSetError, TautError
@@ -772,3 +773,165 @@ def pulley_update(
     stable = pulley_stable(robot, b, g, tau, idx)
     ang = angles_from_matrix(R, robot.orientation)
     return 1, p, R, ang, tau, cable_spans(robot, b), 1.0 if stable else -1.0, width
+
+
+def pulley_igp_problem(
+    robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo: np.ndarray, pos_hi: np.ndarray
+) -> _Problem:
+    """The inverse geometrico-static problem of :mod:`taut.dgp._inverse` for a robot whose
+    taut cables may leave through swivelling pulleys: the unknowns gain ``d`` and ``l_f`` of
+    each such cable (before the tensions, which stay last) with the equations
+    ``d² + h² − ρ² = 0`` and ``l_f² − ρ² + 2 r d = 0``; a pulley cable's force is
+    ``t ((D − b)(l_f + h) + r d k)`` with ``t = τ/Q`` (module docstring), its moments about
+    the first taut anchor and about the axes through two anchors follow from it (the axes
+    through two exit points only for fixed exits: a pulley cable's force passes through its
+    tangent point).  No length enters: the lengths to command are the pulley IK's at the
+    solution."""
+    from taut.dgp._inverse import COS_SIN_BOUND, _cos_sin, _half_turn_restricted, _rotation
+    from taut.interval import ZERO, LinearFilter
+
+    a, r = robot.exits, robot.anchors
+    f, mext, gp = load(robot)
+    m = len(taut)
+    swivels = {i: c.swivel for i, c in enumerate(robot.cables) if c.swivel is not None}
+    pulleys = [i for i in taut if i in swivels]
+    free_pos = [k for k in range(3) if k not in fixed]
+    free_ang = [k for k in range(3) if 3 + k not in fixed]
+    nv = len(free_pos) + 2 * len(free_ang) + 2 * len(pulleys) + m
+    v = iter(variables(nv))
+    p = [next(v) if k in free_pos else const(fixed[k]) for k in range(3)]
+    cs = [(next(v), next(v)) if k in free_ang else _cos_sin(fixed[3 + k]) for k in range(3)]
+    if robot.orientation == "tilt-torsion" and 2 not in free_ang:
+        (c_phi, s_phi), (c_sigma, s_sigma) = cs[0], cs[2]
+        cs[2] = (c_sigma * c_phi + s_sigma * s_phi, s_sigma * c_phi - c_sigma * s_phi)
+    plane = {i: (next(v), next(v)) for i in pulleys}
+    t = {i: next(v) for i in taut}
+    R = _rotation(cs, robot.orientation)
+
+    def rotated(vec: np.ndarray) -> list[Expr]:
+        return [sum((R[k][j] * float(vec[j]) for j in range(3)), ZERO) for k in range(3)]
+
+    def cross(u: Sequence[Expr], w: Sequence[Expr | float]) -> list[Expr]:
+        return [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
+
+    def dot(u: Sequence[Expr], w: Sequence[Expr | float]) -> Expr:
+        return sum((u[k] * w[k] for k in range(3)), ZERO)
+
+    fl, ml = [float(x) for x in f], [float(x) for x in mext]
+    Rr = {i: rotated(r[i]) for i in taut}
+    b = {i: [p[k] + Rr[i][k] for k in range(3)] for i in taut}
+    g = [p[k] + x for k, x in enumerate(rotated(gp))]
+    ap = {i: [float(a[i][k]) - p[k] for k in range(3)] for i in taut}  # a_i − p
+    span = {i: [ap[i][k] - Rr[i][k] for k in range(3)] for i in taut}  # a_i − b_i
+    geo = {i: _pulley(b[i], a[i], swivels[i].axis) for i in pulleys}
+
+    def weight(i: int) -> Expr:
+        """``l_f + h`` of a pulley cable, 1 for a fixed exit: the factor of its ``a − b`` terms."""
+        return plane[i][1] + geo[i].h if i in swivels else const(1.0)
+
+    def axial(i: int) -> Expr:
+        """``r d`` of a pulley cable: the factor of its ``k`` terms."""
+        return const(swivels[i].radius) * plane[i][0]
+
+    def force(i: int) -> list[Expr]:
+        if i not in swivels:
+            return span[i]
+        return [span[i][k] * weight(i) + axial(i) * geo[i].k[k] for k in range(3)]
+
+    def anchor_arm(i: int, j: int) -> list[Expr]:
+        """(b_i − b_j) × F_i: the fixed-exit arm of :mod:`taut.dgp._inverse` times
+        ``l_f + h``, plus ``r d (R u) × k`` (``u = r_i − r_j``)."""
+        u = r[i] - r[j]
+        arm = [x - y for x, y in zip(cross(rotated(u), ap[i]), rotated(np.cross(u, r[i])))]
+        if i not in swivels:
+            return arm
+        ax = cross(rotated(u), geo[i].k)
+        return [arm[k] * weight(i) + axial(i) * ax[k] for k in range(3)]
+
+    def anchor_load(j: int) -> list[Expr]:
+        return [x + ml[k] for k, x in enumerate(cross(rotated(gp - r[j]), fl))]
+
+    def exit_arm(i: int, pole: np.ndarray) -> list[Expr]:
+        """(b_i − pole) × F_i."""
+        bp = [b[i][k] - float(pole[k]) for k in range(3)]
+        arm = cross(bp, [float(x) for x in a[i] - pole])
+        if i not in swivels:
+            return arm
+        ax = cross(bp, geo[i].k)
+        return [arm[k] * weight(i) + axial(i) * ax[k] for k in range(3)]
+
+    def exit_load(pole: np.ndarray) -> list[Expr]:
+        return [x + ml[k] for k, x in enumerate(cross([g[k] - float(pole[k]) for k in range(3)], fl))]
+
+    def anchor_axis(i: int, j: int) -> Expr:
+        """The moment about the axis b_i b_j, free of t_i and t_j."""
+        vr = rotated(r[j] - r[i])
+        terms = [t[q] * dot(anchor_arm(q, i), vr) for q in taut if q not in (i, j)]
+        return sum(terms, dot(rotated(np.cross(r[j] - r[i], gp - r[i])), fl) + dot(vr, ml))
+
+    def exit_axis(i: int, j: int) -> Expr:
+        """The moment about the axis a_i a_j, free of t_i and t_j."""
+        d = [float(x) for x in a[j] - a[i]]
+        return sum((t[q] * dot(exit_arm(q, a[i]), d) for q in taut if q not in (i, j)), dot(exit_load(a[i]), d))
+
+    j0 = taut[0]
+    arms = {i: anchor_arm(i, j0) if i != j0 else [ZERO] * 3 for i in taut}
+    load0 = anchor_load(j0)
+    forces = [sum((t[i] * force(i)[k] for i in taut), const(fl[k])) for k in range(3)]
+    moments = [sum((t[i] * arms[i][k] for i in taut), load0[k]) for k in range(3)]
+    circles = [c**2 + s**2 - 1.0 for k, (c, s) in enumerate(cs) if k in free_ang]
+    pulley_eqs = []
+    for i in pulleys:
+        d, lf = plane[i]
+        pulley_eqs += [d**2 + geo[i].h ** 2 - geo[i].rho2, lf**2 - geo[i].rho2 + const(2.0 * swivels[i].radius) * d]
+    pairs = [(i, j) for n1, i in enumerate(taut) for j in taut[n1 + 1 :]]
+    axes = [anchor_axis(i, j) for i, j in pairs if np.any(r[j] != r[i])]
+    # a pulley cable's force passes through its tangent point, not its exit point: only the
+    # axes through two fixed exits are free of their cables' tensions
+    axes += [exit_axis(i, j) for i, j in pairs if np.any(a[j] != a[i]) and i not in swivels and j not in swivels]
+    extra = [(e, (0.0, 0.0)) for e in axes]
+    tmin, tmax = robot.tension_bounds
+    for i in taut:
+        if tmin[i] > 0.0 or np.isfinite(tmax[i]):
+            if i in swivels:
+                d, lf = plane[i]
+                q2 = (geo[i].rho2 - const(swivels[i].radius) * d + geo[i].h * lf) ** 2
+            else:
+                q2 = dot(span[i], span[i])
+            extra.append((t[i] ** 2 * q2, (max(float(tmin[i]), 0.0) ** 2, float(tmax[i]) ** 2)))
+    system = compile_system(nv, forces + moments + circles + pulley_eqs, extra)
+    J = [[force(i)[k] for i in taut] for k in range(3)] + [[arms[i][k] for i in taut] for k in range(3)]
+    rhs = [const(-fl[k]) for k in range(3)] + [-x for x in load0]
+    statics = LinearFilter(compile_tape([e for row in J for e in row] + rhs, [(-np.inf, np.inf)] * (6 * m + 6)), m)
+
+    lo, hi = np.empty(nv), np.empty(nv)
+    np_ = len(free_pos)
+    na = np_ + 2 * len(free_ang)
+    lo[:np_], hi[:np_] = pos_lo[free_pos], pos_hi[free_pos]
+    lo[np_:na], hi[np_:na] = -COS_SIN_BOUND, COS_SIN_BOUND
+    half = _half_turn_restricted(robot.orientation, free_ang)
+    if half is not None:
+        lo[np_ + 2 * free_ang.index(half[0]) + half[1]] = 0.0
+    corner = np.maximum(np.abs(pos_lo), np.abs(pos_hi))
+    for j, i in enumerate(pulleys):
+        # ρ ≤ ‖p − D‖ + ‖r_i‖ over the position box bounds d and l_f
+        far = float(np.linalg.norm(corner + np.abs(a[i]))) + float(np.linalg.norm(r[i]))
+        lo[na + 2 * j : na + 2 * j + 2], hi[na + 2 * j : na + 2 * j + 2] = 0.0, far * (1.0 + 1e-12)
+    lo[nv - m :], hi[nv - m :] = 0.0, np.inf
+    primary = np.arange(nv) < na
+    names = tuple(f"{x}_{i + 1}" for i in pulleys for x in ("d", "l_f"))
+    return _Problem(system, statics, lo, hi, primary, free_pos, free_ang, names)
+
+
+def pulley_igp_tensions(robot: Robot, taut: tuple[int, ...], b: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """The tensions ``τ = t Q`` (pulley) or ``t ρ`` (fixed exit) of the taut cables at the
+    anchors ``b``, from the scaled tensions ``t`` of :func:`pulley_igp_problem`."""
+    out = np.empty(len(taut))
+    for j, i in enumerate(taut):
+        pulley = robot.cables[i].swivel
+        if pulley is None:
+            out[j] = t[j] * float(np.linalg.norm(robot.exits[i] - b[i]))
+        else:
+            d, lf, h, _ = _plane(robot, i, b[i])
+            out[j] = t[j] * (float(np.sum((b[i] - robot.exits[i]) ** 2)) - pulley.radius * d + h * lf)
+    return out
