@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from taut.dgp import DGPSolution, build_subproblem, load, solve_dgp, track_path
+from taut.dgp import DGPSolution, load, pulley_subproblem, solve_dgp, track_path
 from taut.interval import branch_and_prune
 from taut.kinematics import inverse_kinematics, swivel_paths
 from taut.model import Robot, example
@@ -62,7 +62,7 @@ def test_the_structure_matrix_convention_the_checks_rely_on():
 def _certify_near(robot: Robot, lengths: np.ndarray, pose: np.ndarray, half: float = 1e-3):
     """Branch-and-prune on a small box about the unknowns of ``pose`` (and the tensions
     free in [0, ∞)): the certified solutions of the pulley system there."""
-    sp = build_subproblem(robot, lengths, (0, 1, 2))
+    sp = pulley_subproblem(robot, lengths, (0, 1, 2))
     R = _rotation(robot, pose[3:])
     x = sp.unknowns(pose[:3], R, np.zeros(3))
     k = sp.pose_unknowns

@@ -72,6 +72,7 @@ from taut.dgp._undecided import REFERENCE_UNKNOWNS, scaled
 from taut.errors import CableSetError, SingularConfigurationError
 from taut.geometry import angles_from_matrix
 from taut.interval import Expr, LinearFilter, System, compile_system, compile_tape, const, evaluate_point, variables
+from taut.kinematics import refuse_swivels
 from taut.model import Robot
 
 #: Three body points whose triangle has a smaller area ratio than this are collinear.
@@ -351,6 +352,7 @@ def build_subproblem(robot: Robot, lengths: npt.ArrayLike, taut: tuple[int, ...]
     Parameters
     ----------
     robot : Robot
+        Without swivelling pulleys (:func:`taut.dgp.pulley_subproblem` formulates those).
     lengths : array_like, shape (n,)
         Cable lengths [m].
     taut : tuple of int
@@ -371,6 +373,8 @@ def build_subproblem(robot: Robot, lengths: npt.ArrayLike, taut: tuple[int, ...]
         Taut cables that are not 1 to 6 distinct cables of the robot.
     TautError
         Lengths that are not ``n`` finite numbers.
+    UnsupportedRobotError
+        A cable through a swivelling pulley.
 
     References
     ----------
@@ -390,10 +394,7 @@ def build_subproblem(robot: Robot, lengths: npt.ArrayLike, taut: tuple[int, ...]
     >>> sp.system.n, sp.pose_unknowns
     (12, 9)
     """
-    if robot.swivel_cables:
-        from taut.dgp._pulleys import pulley_subproblem
-
-        return pulley_subproblem(robot, lengths, taut, normal=normal)
+    refuse_swivels(robot, "build_subproblem (taut.dgp.pulley_subproblem formulates pulleys)")
     n = robot.n_cables
     lengths = as_array(lengths, "cable lengths", shape=(n,))
     try:

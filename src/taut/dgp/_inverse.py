@@ -592,7 +592,8 @@ def solve_igp(
         if robot.swivel_cables:
             from taut.dgp._pulleys import pulley_igp_problem
 
-            pb = pulley_igp_problem(robot, idx, values, pos_lo, pos_hi)
+            orientation = (COS_SIN_BOUND, _cos_sin, _half_turn_restricted, _rotation)
+            pb = _Problem(*pulley_igp_problem(robot, idx, values, pos_lo, pos_hi, orientation))
         else:
             pb = _build(robot, idx, values, pos_lo, pos_hi)
         res = branch_and_prune(

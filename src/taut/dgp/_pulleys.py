@@ -86,7 +86,6 @@ from taut.dgp._formulation import (
     reference_choice,
     secondary_coordinates,
 )
-from taut.dgp._inverse import _Problem
 from taut.dgp._single_cable import TWO_PI, _axis_rotation, _rotation_to
 from taut.dgp._undecided import REFERENCE_UNKNOWNS
 from taut.errors import CableSetError, TautError
@@ -281,10 +280,10 @@ def pulley_subproblem(
     Three taut cables through pulleys: 9 reference-point coordinates, ``d`` and ``l_f`` of
     each pulley, 3 scaled tensions.
 
-    >>> from taut.dgp import build_subproblem
+    >>> from taut.dgp import pulley_subproblem
     >>> from taut.model import example
     >>> robot = example("suspended-3pulley")
-    >>> sp = build_subproblem(robot, robot.reference.lengths, (0, 1, 2))
+    >>> sp = pulley_subproblem(robot, robot.reference.lengths, (0, 1, 2))
     >>> sp.system.n, sp.pose_unknowns
     (18, 15)
     """
@@ -776,8 +775,13 @@ def pulley_update(
 
 
 def pulley_igp_problem(
-    robot: Robot, taut: tuple[int, ...], fixed: dict[int, float], pos_lo: np.ndarray, pos_hi: np.ndarray
-) -> _Problem:
+    robot: Robot,
+    taut: tuple[int, ...],
+    fixed: dict[int, float],
+    pos_lo: np.ndarray,
+    pos_hi: np.ndarray,
+    orientation: tuple[float, Callable, Callable, Callable],
+) -> tuple:
     """The inverse geometrico-static problem of :mod:`taut.dgp._inverse` for a robot whose
     taut cables may leave through swivelling pulleys: the unknowns gain ``d`` and ``l_f`` of
     each such cable (before the tensions, which stay last) with the equations
@@ -786,9 +790,17 @@ def pulley_igp_problem(
     the first taut anchor and about the axes through two anchors follow from it (the axes
     through two exit points only for fixed exits: a pulley cable's force passes through its
     tangent point).  No length enters: the lengths to command are the pulley IK's at the
-    solution."""
-    from taut.dgp._inverse import COS_SIN_BOUND, _cos_sin, _half_turn_restricted, _rotation
+    solution.
+
+    ``orientation`` holds what :mod:`taut.dgp._inverse` writes the orientation with (it
+    imports this module, so this module does not import it): the bound of the cosine and sine
+    unknowns, the enclosures of an assigned angle's cosine and sine, the half-turn
+    restriction and the rotation matrix as polynomials.  Returns the fields of its
+    ``_Problem``: system, statics filter, box, primary unknowns, free position coordinates,
+    free angles and the names of the pulley unknowns."""
     from taut.interval import ZERO, LinearFilter
+
+    cos_sin_bound, cos_sin, half_turn_restricted, rotation = orientation
 
     a, r = robot.exits, robot.anchors
     f, mext, gp = load(robot)
@@ -800,13 +812,13 @@ def pulley_igp_problem(
     nv = len(free_pos) + 2 * len(free_ang) + 2 * len(pulleys) + m
     v = iter(variables(nv))
     p = [next(v) if k in free_pos else const(fixed[k]) for k in range(3)]
-    cs = [(next(v), next(v)) if k in free_ang else _cos_sin(fixed[3 + k]) for k in range(3)]
+    cs = [(next(v), next(v)) if k in free_ang else cos_sin(fixed[3 + k]) for k in range(3)]
     if robot.orientation == "tilt-torsion" and 2 not in free_ang:
         (c_phi, s_phi), (c_sigma, s_sigma) = cs[0], cs[2]
         cs[2] = (c_sigma * c_phi + s_sigma * s_phi, s_sigma * c_phi - c_sigma * s_phi)
     plane = {i: (next(v), next(v)) for i in pulleys}
     t = {i: next(v) for i in taut}
-    R = _rotation(cs, robot.orientation)
+    R = rotation(cs, robot.orientation)
 
     def rotated(vec: np.ndarray) -> list[Expr]:
         return [sum((R[k][j] * float(vec[j]) for j in range(3)), ZERO) for k in range(3)]
@@ -908,8 +920,8 @@ def pulley_igp_problem(
     np_ = len(free_pos)
     na = np_ + 2 * len(free_ang)
     lo[:np_], hi[:np_] = pos_lo[free_pos], pos_hi[free_pos]
-    lo[np_:na], hi[np_:na] = -COS_SIN_BOUND, COS_SIN_BOUND
-    half = _half_turn_restricted(robot.orientation, free_ang)
+    lo[np_:na], hi[np_:na] = -cos_sin_bound, cos_sin_bound
+    half = half_turn_restricted(robot.orientation, free_ang)
     if half is not None:
         lo[np_ + 2 * free_ang.index(half[0]) + half[1]] = 0.0
     corner = np.maximum(np.abs(pos_lo), np.abs(pos_hi))
@@ -920,7 +932,7 @@ def pulley_igp_problem(
     lo[nv - m :], hi[nv - m :] = 0.0, np.inf
     primary = np.arange(nv) < na
     names = tuple(f"{x}_{i + 1}" for i in pulleys for x in ("d", "l_f"))
-    return _Problem(system, statics, lo, hi, primary, free_pos, free_ang, names)
+    return system, statics, lo, hi, primary, free_pos, free_ang, names
 
 
 def pulley_igp_tensions(robot: Robot, taut: tuple[int, ...], b: np.ndarray, t: np.ndarray) -> np.ndarray:

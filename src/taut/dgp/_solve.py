@@ -35,7 +35,7 @@ import numpy.typing as npt
 from taut._checks import as_array, as_count, as_number
 from taut._results import Result, freeze, jsonable
 from taut.dgp._formulation import Subproblem, build_subproblem, load
-from taut.dgp._pulleys import cable_spans, check_pulley_reach, pulley_single_cable, pulley_stable
+from taut.dgp._pulleys import cable_spans, check_pulley_reach, pulley_single_cable, pulley_stable, pulley_subproblem
 from taut.dgp._single_cable import single_cable_equilibria
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import MAX_SUBPROBLEM_BOXES, UndecidedBox, cause_of, subproblem_box
@@ -315,7 +315,7 @@ def prepared_subproblem(
     key = (robot.model_dump_json(), lengths.tobytes(), taut, split)
     hit = _PREPARED.get(key)
     if hit is None:
-        sp = build_subproblem(robot, lengths, taut)
+        sp = (pulley_subproblem if robot.swivel_cables else build_subproblem)(robot, lengths, taut)
         hit = (sp, domain_pieces(sp, split))
         while len(_PREPARED) >= PREPARED_SIZE:
             _PREPARED.pop(next(iter(_PREPARED)))

@@ -51,7 +51,7 @@ from numba import njit
 from taut._checks import as_array
 from taut.dgp._formulation import Subproblem, build_subproblem, frame_from_points, load
 from taut.dgp._inverse import IGPSolution
-from taut.dgp._pulleys import cable_spans, pulley_update
+from taut.dgp._pulleys import cable_spans, check_pulley_reach, pulley_update
 from taut.dgp._solve import DGPSolution, check_lengths
 from taut.dgp._stability import smallest_eigenvalue
 from taut.errors import TautError, TrackingLostError
@@ -326,6 +326,7 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
         raise TautError("tracking handles spatial rigid platforms without joints")
     if not isinstance(sol, (DGPSolution, IGPSolution)):
         raise TautError(f"tracking starts from a DGPSolution or an IGPSolution, got a {type(sol).__name__}")
+    check_pulley_reach(robot, lengths)
     tau = np.asarray(sol.tensions, float)
     if tau.shape != (robot.n_cables,):
         raise TautError(f"{robot.name} has {robot.n_cables} cables, the solution has {tau.size} tensions")
@@ -372,7 +373,8 @@ def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths
         left: a continuum).
     TautError
         A planar, point-mass or jointed robot, lengths that are not ``n`` positive numbers,
-        or a ``solution`` that is not one.
+        a pulley radius not smaller than its cable's length, or a ``solution`` that is not
+        one.
 
     References
     ----------
