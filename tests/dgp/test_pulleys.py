@@ -255,3 +255,26 @@ def test_igp_with_pulleys_commands_the_pulley_lengths():
     stable = res.solutions[0]
     np.testing.assert_allclose(stable.orientation, pose[3:], atol=2e-6)
     np.testing.assert_allclose(stable.lengths, LENGTHS, atol=2e-6)
+
+
+def test_caspr_pulleys_with_tilted_axes_in_the_igp_and_tracking():
+    """CASPR's pulley fixture (swivel axes off the vertical and not of unit length, radii
+    0.05 and 0.08 m) hung from cables 1–3: the inverse problem's solutions and a tracking
+    step from the stable one have the pulley lengths and balance."""
+    from pathlib import Path
+
+    from taut.dgp import solve_igp, track_equilibrium
+    from taut.model import load_robot
+
+    robot = load_robot(Path(__file__).parents[1] / "model" / "fixtures" / "caspr" / "pulley_bodies.xml")
+    res = solve_igp(robot, [0, 1, 2], {"x": 0.1, "y": 0.05, "z": 1.0})
+    assert res.complete and len(res.solutions) == 4
+    for s in res.solutions:
+        _check_equilibrium(robot, s.position, s.orientation, s.tensions, s.lengths, s.taut)
+    stable = [s for s in res.solutions if s.stable]
+    assert len(stable) == 1
+    # the slack cables paid out half a metre beyond their spans
+    lengths = stable[0].lengths + [0.01, -0.01, 0.0, 0.5, 0.5, 0.5, 0.5, 0.5]
+    moved = track_equilibrium(robot, stable[0], lengths)
+    assert moved.taut == (0, 1, 2) and moved.stable
+    _check_equilibrium(robot, moved.position, moved.orientation, moved.tensions, lengths, moved.taut)
