@@ -237,8 +237,9 @@ def test_tracking_follows_the_pulley_equilibrium():
 def test_igp_with_pulleys_commands_the_pulley_lengths():
     """The inverse problem at the reference position: four certified equilibria, each
     balancing with the pulley structure matrix at the lengths the pulley IK gives (the ones
-    to command, arcs included); the stable one is the reference pose, whose lengths are the
-    reference lengths."""
+    to command, arcs included), stable as the load potential on the manifold of those
+    lengths says; the stable one is the reference pose, whose lengths are the reference
+    lengths."""
     robot = example("suspended-3pulley")
     from taut.dgp import solve_igp
 
@@ -252,6 +253,9 @@ def test_igp_with_pulleys_commands_the_pulley_lengths():
         _check_equilibrium(robot, s.position, s.orientation, s.tensions, s.lengths, s.taut)
         # the arcs: longer than the straight exit-to-anchor spans
         assert np.all(s.lengths > np.linalg.norm(ik.anchors - robot.exits, axis=1))
+        # stable (reduced Hessian with the swivel term) exactly when no nearby pose of the
+        # same pulley lengths has a lower load potential
+        assert s.stable == (not _energy_decreases(robot, np.concatenate([s.position, s.orientation]), s.taut))
     stable = res.solutions[0]
     np.testing.assert_allclose(stable.orientation, pose[3:], atol=2e-6)
     np.testing.assert_allclose(stable.lengths, LENGTHS, atol=2e-6)
@@ -278,3 +282,37 @@ def test_caspr_pulleys_with_tilted_axes_in_the_igp_and_tracking():
     moved = track_equilibrium(robot, stable[0], lengths)
     assert moved.taut == (0, 1, 2) and moved.stable
     _check_equilibrium(robot, moved.position, moved.orientation, moved.tensions, lengths, moved.taut)
+
+
+def _energy_decreases(robot: Robot, pose: np.ndarray, taut: tuple[int, ...], eps: float = 1e-3) -> bool:
+    """Whether the load's potential ``−f·g`` decreases somewhere on the manifold of poses
+    that keep the taut cables' pulley-IK lengths, within ``eps`` of ``pose``: sampled
+    directions of the lengths' null space, each step pulled back onto the manifold by
+    Newton — the definition of an unstable equilibrium, computed without the Hessian."""
+    from taut.kinematics import cable_lengths
+
+    idx = list(taut)
+    target = cable_lengths(robot, pose)[idx]
+    f, _, gp = load(robot)
+
+    def energy(x):
+        return -f @ (x[:3] + _rotation(robot, x[3:]) @ gp)
+
+    def jac(x):
+        h = 1e-7
+        return np.array(
+            [(cable_lengths(robot, x + h * e)[idx] - cable_lengths(robot, x - h * e)[idx]) / (2 * h) for e in np.eye(6)]
+        ).T
+
+    J = jac(pose)
+    null = np.linalg.svd(J)[2][len(idx) :].T
+    back = np.linalg.pinv(J)  # chord Newton: the step is eps, the error eps² per iteration
+    rng = np.random.default_rng(0)
+    e0 = energy(pose)
+    for u in rng.normal(size=(60, null.shape[1])):
+        x = pose + eps * null @ (u / np.linalg.norm(u))
+        for _ in range(5):
+            x = x - back @ (cable_lengths(robot, x)[idx] - target)
+        if energy(x) < e0 - 1e-12:
+            return True
+    return False
