@@ -90,6 +90,7 @@ def test_round_trip(values):
 NOT_RESULTS = {
     "dynamics.LoopModel",  # the closed-loop model simulate_control integrates
     "interval.System",  # a compiled system of equations, the input of the solvers
+    "interval.Tape",  # the compiled expressions of a system
     "planning.ImplicitManifold",  # the manifold a planner searches (callables)
     "planning.Symmetry",  # a manifold's symmetry (callables)
     "planning.ManifoldChart",  # a chart of the atlas a planner grows in place

@@ -1,5 +1,6 @@
-"""A robot with swivelling exit pulleys through the command line: `taut ik`, `taut workspace`
-and `taut check` model the pulleys, `taut fk` refuses them with one line and status 2."""
+"""A robot with swivelling exit pulleys through the command line: `taut ik`, `taut workspace`,
+`taut check` and `taut fk` model the pulleys; `taut fk` refuses a pulley larger than its
+cable with one line and status 2."""
 
 from __future__ import annotations
 
@@ -89,8 +90,56 @@ def test_check_runs_on_the_tangent_points(robot_file: Path, tmp_path: Path, taut
     assert len(res["steps"]) == 11
 
 
-def test_fk_refuses_pulleys_with_one_line(robot_file: Path, taut_cli: Callable) -> None:
-    run = taut_cli("fk", str(robot_file), "--lengths", ",".join(["2.0"] * 8))
+def test_fk_refuses_a_pulley_larger_than_its_cable_with_one_line(robot_file: Path, taut_cli: Callable) -> None:
+    """A pulley radius (0.08 m) not smaller than its cable's length, the anchor's reach from
+    the exit point: one line, status 2."""
+    run = taut_cli("fk", str(robot_file), "--lengths", ",".join(["0.05"] + ["2.0"] * 7))
     assert run.code == 2
     assert run.err.count("\n") == 1 and run.err.startswith("taut: error: ")
-    assert "swivelling pulleys" in run.err and "Traceback" not in run.err
+    assert "cable 1's pulley radius 0.08 m is not smaller than the cable's length 0.05 m" in run.err
+    assert "Traceback" not in run.err
+
+
+def test_fk_models_the_pulleys(taut_cli: Callable) -> None:
+    """`taut fk` on the built-in pulley robot with cable 1 alone taut: the equilibria hang
+    from its exit point by its whole length (the load is along the swivel axis), numbered
+    from 1, complete."""
+    res = taut_cli("fk", "suspended-3pulley", "--lengths", "7.5,30,30", "--max-taut", "1", "--json").json()
+    assert res["complete"] and len(res["solutions"]) == 2
+    from taut.model import example
+
+    robot = example("suspended-3pulley")
+    for s in res["solutions"]:
+        assert s["taut"] == [1]
+        anchor = np.asarray(s["position"]) + _rotation(s["orientation"]) @ robot.anchors[0]
+        np.testing.assert_allclose(anchor - robot.exits[0], [0, 0, 7.5], atol=1e-9)
+
+
+def _rotation(angles: list[float]) -> np.ndarray:
+    from taut.geometry import rotation_matrix
+
+    return rotation_matrix(np.asarray(angles, float), "xyz-fixed")
+
+
+def test_fk_pairs_of_pulley_cables_complete(taut_cli: Callable) -> None:
+    """The two-cable subsets of the pulley robot at its reference lengths hold no equilibrium,
+    and the search says so completely."""
+    res = taut_cli("fk", "suspended-3pulley", "--max-taut", "2", "--json").json()
+    assert res["complete"] and res["solutions"] == [] and res["subproblems"] == 6
+
+
+def test_igp_models_the_pulleys(taut_cli: Callable) -> None:
+    """`taut igp` on the built-in pulley robot: the lengths to command are the pulley IK's
+    (the stable solution at the reference position has the reference lengths)."""
+    from taut.model import example
+
+    robot = example("suspended-3pulley")
+    x, y, z = robot.reference.poses["stable"][:3]
+    res = taut_cli("igp", "suspended-3pulley", "--taut", "1,2,3", "--fix", f"x={x},y={y},z={z}", "--json").json()
+    assert res["complete"] and len(res["solutions"]) == 4
+    stable = [s for s in res["solutions"] if s["stable"]]
+    assert len(stable) == 1
+    np.testing.assert_allclose(stable[0]["lengths"], robot.reference.lengths, atol=2e-6)
+    for s in res["solutions"]:
+        ik = inverse_kinematics(robot, [*s["position"], *s["orientation"]])
+        np.testing.assert_allclose(s["lengths"], ik.lengths, atol=1e-12)

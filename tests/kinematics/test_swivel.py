@@ -308,19 +308,26 @@ def test_interference_check_uses_the_tangent_points() -> None:
     assert np.linalg.norm(ik.exit_points - BASE.exits, axis=1).min() > 0.0
 
 
-def test_analyses_that_do_not_model_pulleys_refuse_them() -> None:
-    from taut.dgp import solve_dgp, solve_igp
+def test_the_equilibrium_solvers_model_a_mix_of_pulleys_and_fixed_exits() -> None:
+    """Cable 2 alone through a pulley: the inverse problem's solutions and a tracking step
+    from one of them have the pulley IK's lengths and balance with its structure matrix."""
+    from taut.dgp import load, solve_igp, track_equilibrium
+    from taut.geometry import rotation_matrix
 
     robot = with_swivels(taut.example("suspended-3cable"), 0.02, [1])
-    with pytest.raises(UnsupportedRobotError, match="cable\\(s\\) 2 leave through swivelling pulleys"):
-        solve_dgp(robot, [1.0, 1.0, 1.0])
-    with pytest.raises(UnsupportedRobotError, match="inverse geometrico-static"):
-        solve_igp(robot, [0, 1, 2], {})
-    from taut.dgp import DGPSolution, track_equilibrium
-
-    previous = DGPSolution((0, 1, 2), np.zeros(3), np.zeros(3), np.ones(3), True, 0.0, 0.0)
-    with pytest.raises(UnsupportedRobotError, match="tracking"):
-        track_equilibrium(robot, previous, [1.0, 1.0, 1.0])
+    res = solve_igp(robot, [0, 1, 2], {"x": 2.7505, "y": 3.9798, "z": 5.5061})
+    assert res.complete and res.solutions
+    f, m, gp = load(robot)
+    stable = [s for s in res.solutions if s.stable]
+    assert len(stable) == 1
+    start = stable[0]
+    moved = track_equilibrium(robot, start, start.lengths + [0.0, 0.01, 0.0])
+    for s, lengths in [*((s, s.lengths) for s in res.solutions), (moved, start.lengths + [0.0, 0.01, 0.0])]:
+        pose = np.concatenate([s.position, s.orientation])
+        ik = inverse_kinematics(robot, pose)
+        np.testing.assert_allclose(ik.lengths, lengths, rtol=0, atol=1e-9)
+        g = rotation_matrix(s.orientation, robot.orientation) @ gp
+        np.testing.assert_allclose(ik.structure_matrix @ s.tensions + np.r_[f, m + np.cross(g, f)], 0.0, atol=1e-9)
 
 
 @pytest.mark.parametrize(

@@ -152,6 +152,7 @@ REFUSED_EXAMPLES = {
     "marionet-vr": "no platform.mass",
     "robocrane": "no platform.mass",
     "suspended-3cable": "no platform.mass",
+    "suspended-3pulley": "no platform.mass",
     "teaching-prototype": "no platform.mass",
     "vscr-agriculture": "obstacles",
     "vscr-four-cable": "obstacles",

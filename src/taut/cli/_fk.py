@@ -25,8 +25,11 @@ certified (too small to split even so; or left when the --max-boxes budget ran o
 undecided: the list of equilibria is then possibly incomplete, JSON "complete" is false,
 "undecided_enclosures" holds every such box (its sub-problem's taut cables, the cause, the
 enclosure of the unknowns: the fixed-frame coordinates q1_x ... q3_z of the platform's
-reference points (q1_x ... q2_y of a planar platform's two), given in the body frame as
-"reference_points", and the normal n_x, n_y, n_z of their plane; and the taut cables' tensions, null for an unbounded side), and one
+reference points (q1_x ... q2_y of a planar platform's two; x, y[, z] of a point mass),
+given in the body frame as "reference_points", the normal n_x, n_y, n_z of their plane,
+and for a cable k through a swivelling pulley its anchor's distance d_k from the swivel
+axis and its free length l_f_k; and the taut cables' tensions, null for an unbounded
+side), and one
 warning line on stderr names the sub-problems.  Every equilibrium not listed lies in one of
 those boxes.  An equilibrium on the border of two taut sets (a taut cable at zero tension,
 or a slack one exactly at its length) is listed once, under the smaller set, with "boundary"

@@ -20,6 +20,7 @@ if TYPE_CHECKING:
     from taut.dgp._formulation import build_subproblem, load, reference_choice
     from taut.dgp._inverse import IGPResult, IGPSolution, solve_igp
     from taut.dgp._point_mass import LeastSquaresFit
+    from taut.dgp._pulleys import pulley_subproblem
     from taut.dgp._solve import DGPResult, DGPSolution, solve_dgp, solve_subset
     from taut.dgp._stability import is_stable, reduced_hessian
     from taut.dgp._tracking import track_equilibrium, track_path
@@ -28,6 +29,7 @@ if TYPE_CHECKING:
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
     "build_subproblem": "taut.dgp._formulation",
+    "pulley_subproblem": "taut.dgp._pulleys",
     "load": "taut.dgp._formulation",
     "reference_choice": "taut.dgp._formulation",
     "IGPResult": "taut.dgp._inverse",
@@ -59,6 +61,7 @@ __all__ = [
     "build_subproblem",
     "is_stable",
     "load",
+    "pulley_subproblem",
     "reduced_hessian",
     "reference_choice",
     "solve_dgp",

@@ -68,9 +68,11 @@ import numpy.typing as npt
 from numba import njit
 
 from taut._checks import as_array, as_index
+from taut.dgp._undecided import REFERENCE_UNKNOWNS, scaled
 from taut.errors import CableSetError, SingularConfigurationError
 from taut.geometry import angles_from_matrix
 from taut.interval import Expr, LinearFilter, System, compile_system, compile_tape, const, evaluate_point, variables
+from taut.kinematics import refuse_swivels
 from taut.model import Robot
 
 #: Three body points whose triangle has a smaller area ratio than this are collinear.
@@ -181,6 +183,18 @@ class Subproblem:
         contraction reshapes boxes without emptying them (CoGiRo's cables 3 and 7: 929
         boxes without, 142 155 with it)."""
         return 3 + len(self.taut) + (self.pose_unknowns - 9) if 3 <= len(self.taut) <= 5 else 0
+
+    @property
+    def unknown_names(self) -> tuple[str, ...]:
+        """Names of the pose unknowns (the reference points, the normal)."""
+        return REFERENCE_UNKNOWNS[: self.pose_unknowns]
+
+    def tension_enclosure(
+        self, t_lo: np.ndarray, t_hi: np.ndarray, lengths: np.ndarray, lo: np.ndarray, hi: np.ndarray
+    ) -> tuple[tuple[float, ...], tuple[float, ...]]:
+        """Bounds of the tensions ``τ = t ρ`` of the scaled tensions in ``[t_lo, t_hi]`` over
+        the box ``[lo, hi]``, rounded outwards."""
+        return scaled(t_lo, t_hi, np.asarray(lengths, float)[list(self.taut)])
 
     def tensions(self, x: np.ndarray, lengths: np.ndarray, n: int) -> np.ndarray:
         """Tensions of all ``n`` cables (0 for slack ones) at the unknowns ``x``."""
@@ -339,6 +353,7 @@ def build_subproblem(robot: Robot, lengths: npt.ArrayLike, taut: tuple[int, ...]
     Parameters
     ----------
     robot : Robot
+        Without swivelling pulleys (:func:`taut.dgp.pulley_subproblem` formulates those).
     lengths : array_like, shape (n,)
         Cable lengths [m].
     taut : tuple of int
@@ -359,6 +374,8 @@ def build_subproblem(robot: Robot, lengths: npt.ArrayLike, taut: tuple[int, ...]
         Taut cables that are not 1 to 6 distinct cables of the robot.
     TautError
         Lengths that are not ``n`` finite numbers.
+    UnsupportedRobotError
+        A cable through a swivelling pulley.
 
     References
     ----------
@@ -378,6 +395,7 @@ def build_subproblem(robot: Robot, lengths: npt.ArrayLike, taut: tuple[int, ...]
     >>> sp.system.n, sp.pose_unknowns
     (12, 9)
     """
+    refuse_swivels(robot, "build_subproblem (taut.dgp.pulley_subproblem formulates pulleys)")
     n = robot.n_cables
     lengths = as_array(lengths, "cable lengths", shape=(n,))
     try:

@@ -88,7 +88,6 @@ from taut.interval import (
     const,
     variables,
 )
-from taut.kinematics import refuse_swivels
 from taut.model import Robot
 
 #: A 3×3 matrix of expressions (a rotation's entries as polynomials).
@@ -252,7 +251,10 @@ class IGPResult(Result):
 
 
 def _check_robot(robot: Robot) -> None:
-    refuse_swivels(robot, "the inverse geometrico-static problem")
+    if robot.swivel_cables and (robot.dimension != 3 or robot.is_point_mass):
+        raise UnsupportedRobotError(
+            f"{robot.name}: the inverse geometrico-static problem models swivelling pulleys on spatial rigid platforms only"
+        )
     if robot.n_joints:
         raise UnsupportedRobotError(
             f"the inverse geometrico-static problem needs a platform without joints; {robot.name} is jointed"
@@ -403,6 +405,8 @@ class _Problem:
     primary: np.ndarray
     free_pos: list[int]  #: pose indices 0–2 that are unknowns, in variable order
     free_ang: list[int]  #: pose indices 3–5 (as 0–2) that are unknowns, in variable order
+    #: names of the unknowns between the angles and the tensions (the pulleys' ``d``, ``l_f``)
+    extra_names: tuple[str, ...] = ()
 
 
 def _build(
@@ -529,9 +533,12 @@ def solve_igp(
     Parameters
     ----------
     robot : Robot
-        A platform without joints or swivelling pulleys: a rigid one, spatial or planar (pose
-        ``x, y, theta``; :func:`taut.dgp._planar.inverse_system`), or a point mass, spatial
-        or planar (the ``d`` force balances of :mod:`taut.dgp._point_mass`).
+        A platform without joints: a rigid one, spatial or planar (pose ``x, y, theta``;
+        :func:`taut.dgp._planar.inverse_system`), or a point mass, spatial or planar (the
+        ``d`` force balances of :mod:`taut.dgp._point_mass`).  The cables of a spatial rigid
+        platform may leave through swivelling pulleys
+        (:func:`taut.dgp._pulleys.pulley_igp_problem`: the lengths to command are then the
+        pulley IK's, the arcs included).
     taut : iterable of int
         The 0-based indices of the ``m`` taut cables, ``2 ≤ m ≤ 6`` (``1 ≤ m ≤ 3`` planar,
         ``1 ≤ m ≤ d`` for a point mass; the cables the command line numbers 1, 2, 3 are
@@ -570,7 +577,7 @@ def solve_igp(
         Fixed coordinates that are not ``m`` distinct pose coordinates with finite values,
         or a bad ``box``.
     UnsupportedRobotError
-        A jointed robot, or a swivelling pulley.
+        A jointed robot, or swivelling pulleys on a planar or point-mass platform.
     TautError
         A bad ``tol`` or ``max_boxes``.
 
@@ -610,6 +617,11 @@ def solve_igp(
         elif robot.dimension == 2:
             angle = _cos_sin(values[2]) if 2 in values else None
             pb = _Problem(*_planar.inverse_system(robot, idx, values, pos_lo, pos_hi, angle, COS_SIN_BOUND))
+        elif robot.swivel_cables:
+            from taut.dgp._pulleys import pulley_igp_problem
+
+            orientation = (COS_SIN_BOUND, _cos_sin, _half_turn_restricted, _rotation)
+            pb = _Problem(*pulley_igp_problem(robot, idx, values, pos_lo, pos_hi, orientation))
         else:
             pb = _build(robot, idx, values, pos_lo, pos_hi)
         res = branch_and_prune(
@@ -660,7 +672,7 @@ def _unknown_names(robot: Robot, pb: _Problem) -> tuple[str, ...]:
     angles = [names[robot.dimension + k] for k in pb.free_ang]
     if robot.orientation == "tilt-torsion" and 2 in pb.free_ang:
         angles[-1] = f"{names[5]}-{names[3]}"
-    return (*(names[k] for k in pb.free_pos), *(f"{f}({a})" for a in angles for f in ("cos", "sin")))
+    return (*(names[k] for k in pb.free_pos), *(f"{f}({a})" for a in angles for f in ("cos", "sin")), *pb.extra_names)
 
 
 def _undecided(
@@ -686,6 +698,10 @@ def _undecided(
     widen = 1.0 + 8.0 * np.finfo(float).eps  # covers the rounding of the norms and sums
     length_lo = np.maximum(0.0, (near - arm) / widen)
     length_hi = (far + arm) * widen
+    for j, i in enumerate(taut):
+        if robot.cables[i].swivel is not None:
+            # τ = t Q through a pulley, 0 ≤ Q = ρ² − r d + h l_f ≤ 2ρ² (taut.dgp._pulleys)
+            length_lo[j], length_hi[j] = 0.0, 2.0 * length_hi[j] ** 2 * widen
     t_lo, t_hi = lo[k:], hi[k:]
     tension_lo, _ = scaled(t_lo, t_lo, length_lo)
     _, tension_hi = scaled(t_hi, t_hi, length_hi)
@@ -714,13 +730,24 @@ def _solution(
     lengths = np.linalg.norm(a - b, axis=1)
     idx = list(taut)
     tensions = np.zeros(robot.n_cables)
-    tensions[idx] = x[-len(taut) :] * lengths[idx]
+    if robot.swivel_cables:
+        from taut.dgp._pulleys import cable_spans, pulley_igp_tensions
+
+        lengths = cable_spans(robot, b)
+        tensions[idx] = pulley_igp_tensions(robot, taut, b, x[-len(taut) :])
+    else:
+        tensions[idx] = x[-len(taut) :] * lengths[idx]
     lmin, lmax = robot.length_bounds
     slack = [k for k in range(robot.n_cables) if k not in taut]
     # a slack cable can be paid out beyond its span, so only its upper bound can fail
     out_of_bounds = [k for k in range(robot.n_cables) if lengths[k] > lmax[k] or (k in taut and lengths[k] < lmin[k])]
-    stable_at = point_mass_stable if robot.is_point_mass else is_stable
-    stable = stable_at(a[idx], b[idx], p + R @ gp, tensions[idx], lengths[idx])
+    if robot.swivel_cables:
+        from taut.dgp._pulleys import pulley_stable
+
+        stable = pulley_stable(robot, b, p + R @ gp, tensions, idx)
+    else:
+        stable_at = point_mass_stable if robot.is_point_mass else is_stable
+        stable = stable_at(a[idx], b[idx], p + R @ gp, tensions[idx], lengths[idx])
     return IGPSolution(
         tuple(taut),
         p,

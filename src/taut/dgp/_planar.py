@@ -62,6 +62,7 @@ from taut.dgp._formulation import (
     rational_constant,
 )
 from taut.dgp._single_cable import TWO_PI, _arcs
+from taut.dgp._undecided import PLANAR_REFERENCE_UNKNOWNS, scaled
 from taut.errors import CableSetError, SingularConfigurationError
 from taut.geometry import angles_from_matrix, planar_rotation, rotation_matrix
 from taut.interval import (
@@ -193,6 +194,18 @@ class PlanarSubproblem:
         e, f = q[1] - q[0], self.body_refs[1] - self.body_refs[0]
         R = planar_rotation(math.atan2(cross(f, e), float(f @ e)))
         return q[0] - R @ self.body_refs[0], R
+
+    @property
+    def unknown_names(self) -> tuple[str, ...]:
+        """Names of the pose unknowns (the two reference points)."""
+        return PLANAR_REFERENCE_UNKNOWNS
+
+    def tension_enclosure(
+        self, t_lo: np.ndarray, t_hi: np.ndarray, lengths: np.ndarray, lo: np.ndarray, hi: np.ndarray
+    ) -> tuple[tuple[float, ...], tuple[float, ...]]:
+        """Bounds of the tensions ``τ = t ρ`` of the scaled tensions in ``[t_lo, t_hi]``,
+        rounded outwards (the box ``[lo, hi]`` does not enter: the lengths are constants)."""
+        return scaled(t_lo, t_hi, np.asarray(lengths, float)[list(self.taut)])
 
     @property
     def tension_unknowns(self) -> bool:

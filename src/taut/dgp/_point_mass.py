@@ -144,7 +144,7 @@ class PointMassSubproblem(Subproblem):
     unknowns are the position (``pose_unknowns = d``), then the scaled tensions."""
 
     @property
-    def names(self) -> tuple[str, ...]:
+    def unknown_names(self) -> tuple[str, ...]:
         """Names of the pose unknowns (the position's coordinates)."""
         return POSITION_UNKNOWNS[: self.pose_unknowns]
 

@@ -45,10 +45,11 @@ from taut.dgp._point_mass import (
     point_mass_load,
     point_mass_stable,
 )
+from taut.dgp._pulleys import cable_spans, check_pulley_reach, pulley_single_cable, pulley_stable, pulley_subproblem
 from taut.dgp._single_cable import single_cable_equilibria
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import MAX_SUBPROBLEM_BOXES, UndecidedBox, cause_of, subproblem_box
-from taut.errors import TautError
+from taut.errors import TautError, UnsupportedRobotError
 from taut.interval import (
     MAX_BOXES,
     Box,
@@ -60,7 +61,6 @@ from taut.interval import (
     same_solution,
     solve_precise,
 )
-from taut.kinematics import refuse_swivels
 from taut.model import Robot
 from taut.parallel import Executor, as_executor
 
@@ -339,6 +339,8 @@ def prepared_subproblem(
         sp: Subproblem | _planar.PlanarSubproblem
         if robot.is_point_mass:
             sp = build_point_mass(robot, lengths, taut)
+        elif robot.swivel_cables:
+            sp = pulley_subproblem(robot, lengths, taut)
         else:
             sp = (_planar.build_subproblem if robot.dimension == 2 else build_subproblem)(robot, lengths, taut)
         hit = (sp, domain_pieces(sp, split))
@@ -363,7 +365,10 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
     gp = np.zeros(robot.dimension) if robot.is_point_mass else load(robot)[2]
     out: list[DGPSolution] = []
     if len(taut) == 1 and not robot.is_point_mass:
-        single = _planar.single_cable_equilibria if robot.dimension == 2 else single_cable_equilibria
+        if robot.swivel_cables:
+            single = pulley_single_cable
+        else:
+            single = _planar.single_cable_equilibria if robot.dimension == 2 else single_cable_equilibria
         for s in single(robot, lengths, taut[0]):
             out.append(
                 DGPSolution(
@@ -425,7 +430,8 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
         b = p + r @ R.T
         zero = [i for i, lo_i in zip(taut, t_lo) if lo_i <= 0.0]
         # slack cables at their lengths: within the certificate's width, widened
-        near = [k for k in range(n) if k not in taut and abs(np.linalg.norm(b[k] - a[k]) - lengths[k]) <= _reach(c)]
+        spans = cable_spans(robot, b)
+        near = [k for k in range(n) if k not in taut and abs(spans[k] - lengths[k]) <= _reach(c)]
         if not (border or zero):
             near = []
         elif not (zero or near):
@@ -436,8 +442,11 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
         smaller = tuple(i for i in taut if i not in zero)
         idx = list(smaller)
         g = p + R @ gp
-        stable_at = point_mass_stable if robot.is_point_mass else is_stable
-        stable = stable_at(a[idx], b[idx], g, tau[idx], lengths[idx]) if idx else False
+        if robot.swivel_cables:
+            stable = pulley_stable(robot, b, g, tau, idx)
+        else:
+            stable_at = point_mass_stable if robot.is_point_mass else is_stable
+            stable = stable_at(a[idx], b[idx], g, tau[idx], lengths[idx]) if idx else False
         boundary = tuple(sorted(set(taut) | set(near))) if zero or near else None
         out.append(DGPSolution(smaller, p, ang, tau, stable, c.width, c.radius, boundary=boundary))
         certs.append(None if boundary else c)
@@ -573,11 +582,13 @@ def solve_dgp(
     Parameters
     ----------
     robot : Robot
-        A rigid platform, spatial or planar (:mod:`taut.dgp._planar`), or a point mass,
-        spatial or planar (:mod:`taut.dgp._point_mass`: subsets of up to ``d`` taut
-        cables), without joints or swivelling pulleys.
+        A platform without joints: a rigid one, spatial or planar (:mod:`taut.dgp._planar`),
+        or a point mass, spatial or planar (:mod:`taut.dgp._point_mass`: subsets of up to
+        ``d`` taut cables).  The cables of a spatial rigid platform may leave through
+        swivelling pulleys (:mod:`taut.dgp._pulleys`).
     lengths : array_like, shape (n,), optional
-        Cable lengths [m]; default the robot's ``reference.lengths``.
+        Cable lengths [m], the arcs wound on pulleys included; default the robot's
+        ``reference.lengths``.
     max_taut : int, optional
         Largest taut subset searched (default ``min(n, 6)``; ``min(n, 3)`` for a planar
         platform, ``min(n, d)`` for a point mass).
@@ -621,9 +632,7 @@ def solve_dgp(
         numbers,
         no reference lengths to default to, lengths that put the platform beyond
         :data:`MAX_SCALE` ``tol`` from the origin (where double precision cannot resolve
-        ``tol``), or a bad option.
-    UnsupportedRobotError
-        A cable with a swivelling pulley.
+        ``tol``), a pulley radius not smaller than its cable's length, or a bad option.
 
     References
     ----------
@@ -648,7 +657,10 @@ def solve_dgp(
     >>> [(s.taut, s.position.round(3), s.orientation.round(3)) for s in stable]
     [((0, 1), array([-0.085,  0.592]), array([-0.275]))]
     """
-    refuse_swivels(robot, "the DGP solver")
+    if robot.swivel_cables and (robot.dimension != 3 or robot.is_point_mass):
+        raise UnsupportedRobotError(
+            f"{robot.name}: the DGP solver models swivelling pulleys on spatial rigid platforms only"
+        )
     if robot.n_joints:
         raise TautError(
             "the DGP solver handles platforms without joints (a jointed platform's equilibria are not modelled)"
@@ -664,6 +676,7 @@ def solve_dgp(
             raise TautError(f"{robot.name} has no reference lengths: give the cable lengths")
         lengths = robot.reference.lengths
     checked = check_lengths(robot, lengths)
+    check_pulley_reach(robot, checked)
     tol = as_number(tol, "tol", positive=True)
     check_scale(robot, checked, tol)
     n = robot.n_cables

@@ -55,12 +55,12 @@ from taut.dgp import _planar
 from taut.dgp._formulation import Subproblem, build_subproblem, frame_from_points, load
 from taut.dgp._inverse import IGPSolution
 from taut.dgp._point_mass import PointMassTracker, pivot
+from taut.dgp._pulleys import cable_spans, check_pulley_reach, pulley_update
 from taut.dgp._solve import DGPSolution, check_lengths
 from taut.dgp._stability import smallest_eigenvalue
-from taut.errors import TautError, TrackingLostError
+from taut.errors import TautError, TrackingLostError, UnsupportedRobotError
 from taut.geometry import CONVENTIONS, matrix_angles
 from taut.interval import CONST, SQR, certified_step, point_kernel
-from taut.kinematics import refuse_swivels
 from taut.model import Robot
 
 #: Relative floor of the Krawczyk box half-width (a zero step still needs a box).
@@ -289,7 +289,12 @@ def _attempt(
         least, most = (1, _planar.MAX_TAUT) if robot.dimension == 2 else (2, 6)
     if not least <= len(taut) <= most:
         return f"a taut set of {len(taut)} cable(s) has no isolated equilibrium to track"
-    status, p, R, ang, tau, spans, eig, width = _compiled(robot, taut).update(lengths, s)
+    if robot.swivel_cables:
+        status, p, R, ang, tau, spans, eig, width = pulley_update(
+            robot, taut, lengths, s.p, s.R, s.tensions, BOX_MARGIN, BOX_FLOOR
+        )
+    else:
+        status, p, R, ang, tau, spans, eig, width = _compiled(robot, taut).update(lengths, s)
     if status == -1:
         return "Newton did not converge"
     if status != 1:
@@ -344,11 +349,13 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
     """The state of ``sol``, about to move to ``lengths``: the lengths it holds are its
     taut cables' spans (a solution does not carry them) and, for its slack cables, the new
     ``lengths`` (they enter no equation)."""
-    refuse_swivels(robot, "tracking")
+    if robot.swivel_cables and (robot.dimension != 3 or robot.is_point_mass):
+        raise UnsupportedRobotError(f"{robot.name}: tracking models swivelling pulleys on spatial rigid platforms only")
     if robot.n_joints:
         raise TautError("tracking handles platforms without joints (a jointed platform's equilibria are not modelled)")
     if not isinstance(sol, (DGPSolution, IGPSolution)):
         raise TautError(f"tracking starts from a DGPSolution or an IGPSolution, got a {type(sol).__name__}")
+    check_pulley_reach(robot, lengths)
     tau = np.asarray(sol.tensions, float)
     if tau.shape != (robot.n_cables,):
         raise TautError(f"{robot.name} has {robot.n_cables} cables, the solution has {tau.size} tensions")
@@ -358,7 +365,10 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
         raise TautError(f"{robot.name} is {robot.dimension}-D, the solution's position has {p.size} coordinates")
     R = np.eye(p.size) if robot.is_point_mass else _planar.rotation(robot, np.asarray(sol.orientation, float))
     held = lengths.copy()
-    held[list(taut)] = np.linalg.norm(p + robot.anchors[list(taut)] @ R.T - robot.exits[list(taut)], axis=1)
+    if robot.swivel_cables:
+        held[list(taut)] = cable_spans(robot, p + robot.anchors @ R.T)[list(taut)]
+    else:
+        held[list(taut)] = np.linalg.norm(p + robot.anchors[list(taut)] @ R.T - robot.exits[list(taut)], axis=1)
     return _State(taut, held, p, R, tau)
 
 
@@ -373,10 +383,12 @@ def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths
     Parameters
     ----------
     robot : Robot
-        A platform without joints or swivelling pulleys: rigid, spatial or planar, or a point
-        mass, spatial or planar (Newton and Krawczyk on the system of
-        :mod:`taut.dgp._point_mass`; a single taut cable is then an isolated equilibrium,
-        tracked too).
+        A platform without joints: rigid, spatial or planar, or a point mass, spatial or
+        planar (Newton and Krawczyk on the system of :mod:`taut.dgp._point_mass`; a single
+        taut cable is then an isolated equilibrium, tracked too).  The cables of a spatial
+        rigid platform may leave through swivelling pulleys (each update then builds the
+        pulley sub-problem of :mod:`taut.dgp._pulleys` afresh, in milliseconds rather than
+        microseconds).
     solution : DGPSolution or IGPSolution
         The equilibrium before the change.
     lengths : array_like, shape (n,)
@@ -394,8 +406,8 @@ def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths
         The new equilibrium cannot be certified (it left the branch, or one taut cable of a
         rigid platform is left: a continuum).
     TautError
-        A jointed robot, lengths that are not ``n`` positive numbers,
-        or a ``solution`` that is not one.
+        A jointed robot, lengths that are not ``n`` positive numbers, a pulley radius not
+        smaller than its cable's length, or a ``solution`` that is not one.
 
     References
     ----------

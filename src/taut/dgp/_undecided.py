@@ -149,24 +149,18 @@ def subproblem_box(
     """The undecided box ``[lo, hi]`` of the direct problem's sub-problem ``sp`` at the cable
     ``lengths``.  With six taut cables the tensions are not unknowns: they are enclosed by
     the statics over the box, or unbounded when it has no enclosure there."""
-    rho = np.asarray(lengths, float)[list(sp.taut)]
+    m = len(sp.taut)
     k = sp.pose_unknowns
     if sp.tension_unknowns:
         t_lo, t_hi = lo[k:], hi[k:]
     else:
         enc = sp.statics.enclosure(lo, hi)
-        t_lo, t_hi = enc if enc is not None else (np.full(rho.size, -np.inf), np.full(rho.size, np.inf))
-    tension_lo, tension_hi = scaled(t_lo, t_hi, rho)
+        t_lo, t_hi = enc if enc is not None else (np.full(m, -np.inf), np.full(m, np.inf))
+    tension_lo, tension_hi = sp.tension_enclosure(t_lo, t_hi, lengths, lo, hi)
     return UndecidedBox(
         tuple(sp.taut),
         cause,
-        (
-            getattr(sp, "names", None)
-            or (PLANAR_REFERENCE_UNKNOWNS if sp.body_refs.shape[1] == 2 else REFERENCE_UNKNOWNS)
-        )[
-              # a point mass's: its position
-            :k
-        ],
+        sp.unknown_names,
         tuple(lo[:k].tolist()),
         tuple(hi[:k].tolist()),
         tension_lo,

@@ -34,12 +34,12 @@ from taut.errors import ArgumentError
 # Opcodes shared with taut.interval._hc4.
 #: The opcodes of a tape's nodes (``Tape.op``), shared with the kernels of
 #: :mod:`taut.interval._hc4`: a variable, a constant interval, then the operations.
-VAR, CONST, ADD, SUB, MUL, NEG, SQR, POW, SQRT, DIV = range(10)
+VAR, CONST, ADD, SUB, MUL, NEG, SQR, POW, SQRT, DIV, ATAN = range(11)
 
 
 class Expr:
     """A node of a polynomial expression: build them with :func:`variables`, :func:`const`,
-    :func:`sqrt` and the operators ``+ − × /`` and ``**`` (non-negative integer powers);
+    :func:`sqrt`, :func:`atan` and the operators ``+ − × /`` and ``**`` (non-negative integer powers);
     constants are folded where trivial (``x·0``, ``x + 0``, ``x·1``).
 
     Parameters
@@ -149,7 +149,7 @@ class Expr:
         sym = {ADD: "+", SUB: "-", MUL: "*", DIV: "/"}
         if self.op in sym:
             return f"({self.args[0]!r} {sym[self.op]} {self.args[1]!r})"
-        fn = {NEG: "-", SQR: "sqr", POW: f"pow{self.index}", SQRT: "sqrt"}[self.op]
+        fn = {NEG: "-", SQR: "sqr", POW: f"pow{self.index}", SQRT: "sqrt", ATAN: "atan"}[self.op]
         return f"{fn}({self.args[0]!r})"
 
 
@@ -226,6 +226,26 @@ def sqrt(e: Expr) -> Expr:
     return Expr(SQRT, (_coerce(e),))
 
 
+def atan(e: Expr) -> Expr:
+    """The arctangent of an expression, in ``(−π/2, π/2)``: the one elementary function of
+    the tapes, monotone, enclosed by the kernels of :mod:`taut.interval._kernels`.
+
+    Parameters
+    ----------
+    e : Expr or float
+
+    Returns
+    -------
+    Expr
+
+    Examples
+    --------
+    >>> atan(variables(1)[0] / 2)
+    atan((x0 / [2.0, 2.0]))
+    """
+    return Expr(ATAN, (_coerce(e),))
+
+
 def derivative(e: Expr, i: int, memo: dict | None = None) -> Expr:
     """The partial derivative ``∂e/∂x_i`` as an expression (constants folded): the constraints
     are polynomials, so their derivatives are again expressions.
@@ -274,6 +294,8 @@ def derivative(e: Expr, i: int, memo: dict | None = None) -> Expr:
             d = ZERO if da[0].is_const(0.0) else float(e.index) * a[0] ** (e.index - 1) * da[0]
         elif op == SQRT:
             d = ZERO if da[0].is_const(0.0) else da[0] / (2.0 * e)
+        elif op == ATAN:
+            d = ZERO if da[0].is_const(0.0) else da[0] / (1.0 + a[0] ** 2)
         else:  # DIV
             d = (da[0] * a[1] - a[0] * da[1]) / a[1] ** 2 if not (da[0].is_const(0.0) and da[1].is_const(0.0)) else ZERO
     memo[key] = d

@@ -5,9 +5,10 @@ The constraints of a :class:`~taut.interval._expression.Tape` share their common
 subexpressions (one DAG).  The forward pass evaluates every node over the box (natural
 interval extension), each constraint's root is intersected with its bounds, and the
 backward pass projects each node's domain onto its children (``x ∈ z − y`` for
-``z = x + y``, ``x ∈ ±√z`` for ``z = x²``, …) down to the variables, whose domains
-shrink — all constraints in one sweep each way, as in the DAG propagation of Vu, Schichl
-& Sam-Haroud (J. Global Optim. 45, 2009): a secondary point used by a dozen constraints is
+``z = x + y``, ``x ∈ ±√z`` for ``z = x²``, ``x ∈ tan z`` for ``z = atan x``, …) down to
+the variables, whose domains shrink — all constraints in one sweep each way, as in the
+DAG propagation of Vu, Schichl & Sam-Haroud (J. Global Optim. 45, 2009): a secondary
+point used by a dozen constraints is
 evaluated and projected once per sweep instead of once per constraint, with what all of
 them say about it.  :func:`contract` repeats the sweeps until no domain shrinks by more
 than a fraction ``ratio`` of its width.  Every projection uses the
@@ -32,7 +33,7 @@ import numpy.typing as npt
 from numba import njit
 
 from taut.interval import _kernels as K
-from taut.interval._expression import ADD, CONST, MUL, NEG, POW, SQR, SQRT, SUB, VAR, Tape
+from taut.interval._expression import ADD, ATAN, CONST, MUL, NEG, POW, SQR, SQRT, SUB, VAR, Tape
 
 
 @njit(cache=True, fastmath=False)
@@ -72,6 +73,8 @@ def forward_kernel(
             nl[k], nh[k] = K.power(nl[a[k]], nh[a[k]], b[k])
         elif o == SQRT:
             nl[k], nh[k] = K.sqrt(nl[a[k]], nh[a[k]])
+        elif o == ATAN:
+            nl[k], nh[k] = K.atan(nl[a[k]], nh[a[k]])
         else:
             nl[k], nh[k] = K.div(nl[a[k]], nh[a[k]], nl[b[k]], nh[b[k]])
 
@@ -171,6 +174,10 @@ def _backward(
                 return False
             l, h = K.sqr(max(zl, 0.0), zh)
             if not _meet(nl, nh, a[k], -np.inf if zl <= 0.0 else l, h):
+                return False
+        elif o == ATAN:
+            l, h = K.tan_inverse(zl, zh)
+            if not _meet(nl, nh, a[k], l, h):
                 return False
         else:  # DIV z = x / y
             x, y = a[k], b[k]
@@ -311,6 +318,8 @@ def point_kernel(
                 v[k] = v[a[k]] ** b[k]
             elif o == SQRT:
                 v[k] = np.sqrt(v[a[k]])
+            elif o == ATAN:
+                v[k] = np.arctan(v[a[k]])
             else:
                 v[k] = v[a[k]] / v[b[k]]
         out[c] = v[end[c] - 1]

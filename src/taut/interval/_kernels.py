@@ -137,6 +137,31 @@ def sqrt(al: float, ah: float) -> tuple[float, float]:
     return (down(lo) if lo > 0.0 else 0.0), up(np.sqrt(ah))
 
 
+#: The float nearest π/2, which is below π/2: ``atan`` never exceeds it by more than the
+#: rounding of the enclosures, ``tan`` is finite and increasing on ``[−HALF_PI, HALF_PI]``.
+HALF_PI = float(np.pi / 2)
+
+
+@njit(cache=True, fastmath=False)
+def atan(al: float, ah: float) -> tuple[float, float]:
+    """``atan[a]``: the libm ``atan`` at each end (increasing), moved outwards by two ulps —
+    libm's ``atan`` and ``tan`` are within one ulp of the exact value (glibc manual, "Known
+    Maximum Errors in Math Functions"; the tests check both against 256-bit arb balls)."""
+    return down(down(np.arctan(al))), up(up(np.arctan(ah)))
+
+
+@njit(cache=True, fastmath=False)
+def tan_inverse(zl: float, zh: float) -> tuple[float, float]:
+    """The ``x`` with ``atan x ∈ [zl, zh]``: ``tan`` of the ends clipped to ``(−π/2, π/2)``,
+    moved outwards by two ulps, infinite where the clip reaches ``±π/2`` (empty,
+    ``lo > hi``, when ``[zl, zh]`` misses ``(−π/2, π/2)``)."""
+    if zh < -HALF_PI or zl > HALF_PI:
+        return 1.0, -1.0
+    lo = -INF if zl <= -HALF_PI else down(down(np.tan(zl)))
+    hi = INF if zh >= HALF_PI else up(up(np.tan(zh)))
+    return lo, hi
+
+
 @njit(cache=True, fastmath=False)
 def div(al: float, ah: float, bl: float, bh: float) -> tuple[float, float]:
     """``[a] / [b]`` for ``0 ∉ [b]`` (``[-∞, ∞]`` when ``0 ∈ [b]``)."""

@@ -45,7 +45,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut._results import Result
-from taut.interval._expression import ADD, CONST, DIV, MUL, NEG, POW, SQR, SQRT, SUB, VAR, System, Tape
+from taut.interval._expression import ADD, ATAN, CONST, DIV, MUL, NEG, POW, SQR, SQRT, SUB, VAR, System, Tape
 from taut.interval._krawczyk import Certificate
 
 #: Bits of the arb balls: roots closer than about ``2^(−PRECISION/4)`` (relative) are not
@@ -162,6 +162,8 @@ class _Evaluator:
                 v[k] = v[a].nonnegative_part().sqrt()
             elif op == DIV:
                 v[k] = v[a] / v[b]
+            elif op == ATAN:
+                v[k] = v[a].atan()
         return [v[r] for r in self.roots]
 
     def excluded(self, values: list) -> bool:
