@@ -2,7 +2,7 @@
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import linprog
 
@@ -58,8 +58,20 @@ def test_static_equilibrium_agrees_with_lp(prob):
     assert static_equilibrium(W[None], w[None], tension_bounds=(tmin, tmax))[0] == lp_equilibrium(W, tmin, tmax, w)
 
 
+# rank W = 2 < m = 3 with zero columns, a cable pinned at 1 and unbounded ones: the facet
+# normal of the flat zonotope, (−2.6e-17, −0.32, 0.95) by round-off, met the pinned
+# cable's wrench (−0.3125, 0, 0) at n·o = 8e-18 > 0 and rejected a feasible pose
+FLAT_PINNED = (
+    np.array([[0, 0, -0.3125, 0.3125, 0, 0, 0.3125], [0, 0, 0, 0.1875, 0, 0, 0], [0, 0, 0, 0.0625, 0, 0, 0]]),
+    np.array([0, 0, 1, 0, 0, 0, 0], float),
+    np.array([0, 0, 1, 1, 0, np.inf, np.inf]),
+    np.zeros(3),
+)
+
+
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(problems(m_choices=(2, 3)), st.lists(st.integers(0, 2).map(lambda k: k / 4), min_size=3, max_size=3))
+@example(FLAT_PINNED, [0.0, 0.0, 0.0])
 def test_box_feasibility_agrees_with_lp_over_vertices(prob, half):
     W, tmin, tmax, w = prob
     m = W.shape[0]

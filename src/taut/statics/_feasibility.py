@@ -306,6 +306,12 @@ def _facet_kernel(
                 valid[k, leaf] = True
                 leaf += 1
                 continue
+            if not off:
+                # every column lies on the hyperplane, so rank W < m and Z is flat: n is
+                # its normal and h_Z(±n) = 0, which a round-off of n·o (n's entries that
+                # should vanish are only ~1e-17) would fail; such poses (every leaf is
+                # like this one) are decided exactly by _flat_feasible instead
+                continue
             # support of the required set -(o + S):  h(n) = h_S(-n) - n.o,  h(-n) = h_S(n) + n.o
             lin = 0.0
             labs = 0.0
@@ -838,10 +844,13 @@ def _generic_status(
         req_m = sup_p + lin
         finite_sum = np.abs(np.where(np.isfinite(hz), hz, 0.0)).sum(-1)
         tol = SLACK * (finite_sum + labs + np.abs(sup_m) + np.abs(sup_p) + 1e-300)
+        # a normal with a column off its hyperplane (h_Z(n) + h_Z(−n) > 0, the fixed cables
+        # being gone) exists iff rank W = m; the others are the normal of a flat Z, decided
+        # exactly by _flat_feasible (as in the kernel)
+        off_plane = (hz[..., 0] + hz[..., 1] > 0) & valid
         with np.errstate(invalid="ignore"):
-            bad = ((req_p > hz[..., 0] + tol) | (req_m > hz[..., 1] + tol)) & valid
-        # rank W = m iff some valid normal has a column off its hyperplane, i.e. h_Z(n) + h_Z(−n) > 0
-        full = ((hz[..., 0] + hz[..., 1] > 0) & valid).any(axis=1)
+            bad = ((req_p > hz[..., 0] + tol) | (req_m > hz[..., 1] + tol)) & off_plane
+        full = off_plane.any(axis=1)
         status[s:e] = np.where(bad.any(axis=1), _OUT, np.where(full, _IN, _FLAT))
 
 
