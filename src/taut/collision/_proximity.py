@@ -85,7 +85,9 @@ def _proximity_kernel(
                 if shared[p, 1]:
                     bi, bj = _cut(bi, ai, c), _cut(bj, aj, c)
             d = segment_distance_scalar(ai, bi, aj, bj)[0]
-            scale = max(rho[p], np.abs(ai).max(), np.abs(bi).max(), np.abs(aj).max(), np.abs(bj).max())
+            scale = rho[p]
+            for c3 in range(3):
+                scale = max(scale, abs(ai[c3]), abs(bi[c3]), abs(aj[c3]), abs(bj[c3]))
             dist[k, p] = rho[p] if abs(d - rho[p]) <= TOUCH_ULPS * EPS * scale else d
 
 
