@@ -5,9 +5,12 @@ test instead of the machine."""
 from __future__ import annotations
 
 import json
+import os
+import pty
 import resource
 import subprocess
 import sys
+import threading
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -81,3 +84,70 @@ class Session:
 def cli() -> Session:
     """``cli.main([...])`` then ``cli.readouterr()``: :class:`Session`."""
     return Session()
+
+
+@dataclass(frozen=True)
+class TerminalRun(Run):
+    """A run with stderr on a terminal: ``err`` is all the terminal received."""
+
+    @property
+    def drew_a_bar(self) -> bool:
+        """Whether rich drew a live progress bar (it hides the cursor, then draws ``━``)."""
+        return "\x1b[?25l" in self.err and "━" in self.err
+
+
+def run_with_terminal_stderr(*argv: str) -> TerminalRun:
+    """Run ``taut ARGV`` with stderr on a pseudo-terminal (so that progress bars are drawn)
+    and stdout on a pipe: ``err`` is everything written to the terminal."""
+    master, slave = pty.openpty()
+    env = {k: v for k, v in os.environ.items() if k not in ("TTY_INTERACTIVE", "NO_COLOR")}
+    env["TERM"] = "xterm-256color"
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "taut", *argv],
+        stdin=subprocess.DEVNULL,
+        stdout=subprocess.PIPE,
+        stderr=slave,
+        env=env,
+        preexec_fn=_limit_memory,
+    )
+    os.close(slave)
+    chunks: list[bytes] = []
+
+    def drain() -> None:  # a full pty buffer would block the child
+        while True:
+            try:
+                data = os.read(master, 4096)
+            except OSError:  # EIO: the child closed the terminal
+                return
+            if not data:
+                return
+            chunks.append(data)
+
+    reader = threading.Thread(target=drain)
+    reader.start()
+    out, _ = proc.communicate(timeout=600)
+    reader.join(timeout=60)
+    os.close(master)
+    return TerminalRun(proc.returncode, out.decode(), b"".join(chunks).decode(errors="replace"))
+
+
+@pytest.fixture
+def terminal_cli() -> Callable[..., TerminalRun]:
+    """``terminal_cli("fk", "suspended-3cable")``: :func:`run_with_terminal_stderr`."""
+    return run_with_terminal_stderr
+
+
+@pytest.fixture(scope="session")
+def robot_2000_cables():
+    """A planar rigid platform hung from 2000 exits round a circle of radius 2, anchored round
+    a circle of radius 0.1 a quarter turn ahead: 2 million capsule pairs, a 3 × 2000 ``W``."""
+    import numpy as np
+
+    from taut.model import robot_from_dict
+
+    angles = np.linspace(0.0, 2 * np.pi, 2000, endpoint=False).tolist()
+    cables = [
+        {"exit": [2 * np.cos(a), 2 * np.sin(a)], "anchor": [0.1 * np.cos(a + 1.5), 0.1 * np.sin(a + 1.5)]}
+        for a in angles
+    ]
+    return robot_from_dict({"name": "2000 cables", "dimension": 2, "platform": {"kind": "rigid"}, "cables": cables})

@@ -243,9 +243,10 @@ def test_cycles_are_detected():
 
 
 #: What a viz module may import at run time (§1, the row of viz): the robot and the geometry
-#: of a pose.  The results it draws come in as arguments; their classes are named in
-#: annotations only, imported under ``if TYPE_CHECKING:``.  So viz cannot run a solver.
-VIZ_RUNTIME = {"_lazy", "errors", "geometry", "model", "kinematics", "viz"}
+#: of a pose, and layer 0's argument checks.  The results it draws come in as arguments;
+#: their classes are named in annotations only, imported under ``if TYPE_CHECKING:``.  So
+#: viz cannot run a solver.
+VIZ_RUNTIME = {"_lazy", "_checks", "errors", "geometry", "model", "kinematics", "viz"}
 
 
 def _is_type_checking(test: ast.expr) -> bool:

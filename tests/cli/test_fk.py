@@ -2,11 +2,8 @@
 ``--json``), and the table headers named after the robot's pose coordinates."""
 
 import json
-import os
-import pty
 import subprocess
 import sys
-import threading
 from pathlib import Path
 
 import numpy as np
@@ -16,48 +13,18 @@ from taut.geometry import rotation_matrix
 from taut.model import load_robot
 
 TAUT = str(Path(sys.executable).with_name("taut"))
-BAR = "━"  # what rich draws a bar with
-HIDE_CURSOR = "\x1b[?25l"  # a live display starts so
 
 
-def run_with_terminal_stderr(args: list[str]) -> tuple[int, str, str]:
-    """Run ``taut ARGS`` with stderr on a pseudo-terminal and stdout on a pipe:
-    ``(exit status, stdout, everything written to the terminal)``."""
-    master, slave = pty.openpty()
-    env = {k: v for k, v in os.environ.items() if k not in ("TTY_INTERACTIVE", "NO_COLOR")}
-    env["TERM"] = "xterm-256color"
-    proc = subprocess.Popen([TAUT, *args], stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=slave, env=env)
-    os.close(slave)
-    chunks: list[bytes] = []
-
-    def drain() -> None:  # a full pty buffer would block the child
-        while True:
-            try:
-                data = os.read(master, 4096)
-            except OSError:  # EIO: the child closed the terminal
-                return
-            if not data:
-                return
-            chunks.append(data)
-
-    reader = threading.Thread(target=drain)
-    reader.start()
-    out, _ = proc.communicate(timeout=600)
-    reader.join(timeout=60)
-    os.close(master)
-    return proc.returncode, out.decode(), b"".join(chunks).decode(errors="replace")
-
-
-def test_fk_shows_a_bar_on_a_terminal_and_none_with_json():
-    code, out, term = run_with_terminal_stderr(["fk", "suspended-3cable"])
-    assert code == 0, term
-    assert HIDE_CURSOR in term and "fk " in term and BAR in term and "%" in term
-    assert "6 equilibria" in out and "\x1b" not in out  # stdout is the result alone
-    code, out, term = run_with_terminal_stderr(["fk", "suspended-3cable", "--json"])
-    assert code == 0, term
-    data = json.loads(out)
+def test_fk_shows_a_bar_on_a_terminal_and_none_with_json(terminal_cli):
+    run = terminal_cli("fk", "suspended-3cable")
+    assert run.code == 0, run.err
+    assert run.drew_a_bar and "fk " in run.err and "%" in run.err
+    assert "6 equilibria" in run.out and "\x1b" not in run.out  # stdout is the result alone
+    run = terminal_cli("fk", "suspended-3cable", "--json")
+    assert run.code == 0, run.err
+    data = json.loads(run.out)
     assert len(data["solutions"]) == 6 and data["undecided_boxes"] == 0
-    assert term == ""
+    assert run.err == ""
     # two worker processes: the same solutions to the bit, in the same order
     done = subprocess.run(
         [TAUT, "fk", "suspended-3cable", "--workers", "2", "--json"], capture_output=True, text=True, timeout=600

@@ -1,9 +1,11 @@
 """Segment–segment distance (Lieskovský 2020, §3.5) against exact and brute-force references, in the
 parallel, collinear, skew and degenerate (zero-length) configurations."""
 
+from fractions import Fraction
+
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import lsq_linear
 
@@ -84,3 +86,27 @@ def test_property_against_exact(a1, b1, a2, b2):
     d = segment_distance(*p)
     assert d == pytest.approx(exact(*p), abs=1e-7)
     assert d <= min(np.linalg.norm(x - y) for x in p[:2] for y in p[2:]) + 1e-12
+
+
+def crossing(p1, p2, q1, j):
+    """Float end points within half an ulp of segments that cross exactly: ``p1 p2`` and
+    ``q1 q2`` with ``q2 = 2 X − q1`` through ``X = p1 + (j / 10) (p2 − p1)`` (decimal
+    coordinates, tenths, made exact with fractions and rounded once)."""
+    P1, P2, Q1 = ([Fraction(k, 10) for k in p] for p in (p1, p2, q1))
+    Q2 = [2 * (a + Fraction(j, 10) * (b - a)) - c for a, b, c in zip(P1, P2, Q1)]
+    return [np.array([float(x) for x in p]) for p in (P1, P2, Q1, Q2)]
+
+
+tenths = st.lists(st.integers(-40, 40), min_size=3, max_size=3)
+
+
+@settings(max_examples=300, deadline=None)
+@given(tenths, tenths, tenths, st.integers(1, 9))
+@example([-40, -4, 23], [31, 11, -37], [-33, -3, 17], 8)  # 143 ulps by (b f − c e) / (a e − b²)
+def test_crossing_segments_are_at_distance_zero_to_a_few_ulps(p1, p2, q1, j):
+    a1, b1, a2, b2 = crossing(p1, p2, q1, j)
+    scale = np.abs([a1, b1, a2, b2]).max()
+    assume(scale > 0)
+    orders = [(a1, b1, a2, b2), (b1, a1, a2, b2), (a2, b2, a1, b1), (b2, a2, b1, a1)]
+    # the float points are within half an ulp of crossing ones: the true distance is ≲ 2 ulps
+    assert all(segment_distance(*o) <= 8 * np.finfo(float).eps * scale for o in orders)

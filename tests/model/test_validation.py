@@ -194,3 +194,41 @@ def test_writing_into_a_missing_directory_is_a_robot_file_error(write, name, tmp
     robot = taut.example("planar-4cable")
     with pytest.raises(taut.RobotFileError, match="cannot write the file|does not exist"):
         write(robot, tmp_path / "missing" / name)
+
+
+@pytest.mark.parametrize(
+    "build, prefix",
+    [
+        (lambda m: m.Robot(name="r", dimension=4, cables=(m.Cable(exit=(0.0, 1.0)),)), "Robot: dimension: "),
+        (lambda m: m.Robot(name="r", dimension=2, cables=()), "Robot: cables: "),
+        (
+            lambda m: m.Robot(
+                name="r", dimension=2, platform=m.Platform(kind="point-mass"), cables=(m.Cable(exit=(0.0, 1.0, 2.0)),)
+            ),
+            "Robot: cables[1].exit: expected 2 numbers",
+        ),
+        (lambda m: m.Cable(exit=(0.0, "a")), "Cable: exit[2]: "),
+        (lambda m: m.Cable(exit=(0.0, 1.0), tension=(5.0, 1.0)), "Cable: tension: "),
+        (lambda m: m.Platform(kind="blob"), "Platform: kind: "),
+        (lambda m: m.Robot(name="r", dimension=2, cables=(m.Cable(exit=(0.0, 1.0)),), colour="red"), "Robot: colour: "),
+    ],
+)
+def test_calling_the_classes_with_bad_fields_raises_one_robot_file_error(build, prefix):
+    """Pydantic's ValidationError is no TautError: the classes raise RobotFileError (a
+    ValueError) with one line naming the class and the field."""
+    with pytest.raises(taut.RobotFileError) as info:
+        build(taut.model)
+    assert isinstance(info.value, ValueError)
+    msg = str(info.value)
+    assert msg.startswith(prefix) and "\n" not in msg, msg
+
+
+def test_calling_the_classes_with_good_fields_builds_the_robot_a_file_describes():
+    m = taut.model
+    built = m.Robot(
+        name="test robot",
+        dimension=2,
+        platform=m.Platform(kind="point-mass", mass=1.0),
+        cables=(m.Cable(exit=(0.0, 0.0)), m.Cable(exit=(1.0, 0.0)), m.Cable(exit=(0.5, 1.0))),
+    )
+    assert built == taut.model.parse_robot(GOOD)

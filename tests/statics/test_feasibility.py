@@ -2,7 +2,7 @@
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import linprog
 
@@ -51,8 +51,40 @@ def problems(draw, m_choices=(2, 3, 6), max_n=9):
     return W, tmin, tmax, w
 
 
+# rank W = 2 < m = 3 with zero columns, a cable pinned at 1 and unbounded ones: the facet
+# normal of the flat zonotope, (−2.6e-17, −0.32, 0.95) by round-off, met the pinned
+# cable's wrench (−0.3125, 0, 0) at n·o = 8e-18 > 0 and rejected a feasible pose
+FLAT_PINNED = (
+    np.array([[0, 0, -0.3125, 0.3125, 0, 0, 0.3125], [0, 0, 0, 0.1875, 0, 0, 0], [0, 0, 0, 0.0625, 0, 0, 0]]),
+    np.array([0, 0, 1, 0, 0, 0, 0], float),
+    np.array([0, 0, 1, 1, 0, np.inf, np.inf]),
+    np.zeros(3),
+)
+
+
+# W of rank 5 < m = 6 whose facet normals showed |n·w_j| = 1.8e-12 ‖w_j‖ by round-off: taken
+# for rank 6, the pose was declared feasible
+RANK5 = (
+    np.array(
+        [
+            [0.375, 0, 0.1875, 0, -0.0625, 0.5, 0, 0.25, 0],
+            [0.125, 0, 0.125, 0, 0.5, -0.375, 0, 0.375, 0],
+            [-0.1875, 0, 0.125, 0.125, 0.25, 0, 0, -0.125, 0],
+            [3.75, 0, -0.0625, 0.125, 0.1875, 1.25, 0, 3.5, 0],
+            [2.1875, 0, -0.125, 0.125, 0.25, 0.5, 0, 2.125, 0],
+            [-0.0625, 0, 0.25, 0, -0.25, -0.5, 0, 0.125, 0],
+        ]
+    ),
+    np.zeros(9),
+    np.array([np.inf, 0, np.inf, np.inf, 1, np.inf, 0, np.inf, 0]),
+    np.array([0, 0, 0, 0, 0, -0.5]),
+)
+
+
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(problems())
+@example(FLAT_PINNED)
+@example(RANK5)
 def test_static_equilibrium_agrees_with_lp(prob):
     W, tmin, tmax, w = prob
     assert static_equilibrium(W[None], w[None], tension_bounds=(tmin, tmax))[0] == lp_equilibrium(W, tmin, tmax, w)
@@ -60,6 +92,8 @@ def test_static_equilibrium_agrees_with_lp(prob):
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(problems(m_choices=(2, 3)), st.lists(st.integers(0, 2).map(lambda k: k / 4), min_size=3, max_size=3))
+@example(FLAT_PINNED, [0.0, 0.0, 0.0])
+@example(FLAT_PINNED, [0.25, 0.0, 0.0])  # a box along the flat zonotope, |n_x| ~ 1e-17
 def test_box_feasibility_agrees_with_lp_over_vertices(prob, half):
     W, tmin, tmax, w = prob
     m = W.shape[0]

@@ -281,6 +281,19 @@ def test_tensions_per_cable_bounds_and_index_axis():
     assert not [ln for ln in ax.get_lines() if ln.get_gid() == "infeasible"]
 
 
+@pytest.mark.parametrize(
+    "args, what",
+    [
+        ((None, [["a", 1.0]], 0.0, 1.0), "tensions"),
+        (([0.0, "later"], np.ones((2, 2)), 0.0, 1.0), "times"),
+        ((None, np.ones((2, 2)), {"low": 0}, 1.0), "tension bounds"),
+    ],
+)
+def test_tensions_that_are_not_numbers_are_named(args, what):
+    with pytest.raises(ArgumentError, match=f"^{what}: expected numbers"):
+        plot_tensions(*args)
+
+
 # ---- Report ------------------------------------------------------------------------------
 def test_report_writes_html_with_existing_pngs_and_escapes_text(tmp_path):
     report = Report("taut <test> & report")

@@ -422,3 +422,26 @@ def test_save_and_load_keep_the_poses_without_storing_those_of_a_grid(tmp_path):
     assert np.array_equal(old.poses, res.poses) and old.measure == res.measure
     with pytest.raises(TautError, match="not a taut workspace file"):
         WorkspaceResult.load(tmp_path / "nothing.npz")
+
+
+def test_chunks_of_many_capsule_pairs_hold_one_pose_each(robot_2000_cables):
+    """2000 cables have 2 million capsule pairs: the interference-free condition is evaluated
+    (and its progress reported) pose by pose, not in chunks of 349 poses that would hold
+    11 GB of distances and report nothing for minutes."""
+    robot = robot_2000_cables
+    poses = np.array([[0.0, 0.0, 0.0], [0.5, 0.0, 0.0]])
+    calls = []
+    res = evaluate_workspace(robot, "interference-free", poses=poses, progress=lambda d, t: calls.append((d, t)))
+    assert calls == [(0, 2), (1, 2), (2, 2)]
+    assert evaluate_module.CHUNK_ELEMENTS // (robot.wrench_dim * robot.n_cables) == 349  # the old chunk
+    # independently: no two cables (radius 0, no end shared) cross, by GEOS's segment tests
+    import shapely
+
+    crossing = []
+    for x, y, t in poses:
+        rot = np.array([[np.cos(t), -np.sin(t)], [np.sin(t), np.cos(t)]])
+        lines = shapely.linestrings(np.stack([robot.exits, robot.anchors @ rot.T + [x, y]], axis=1))
+        i, j = shapely.STRtree(lines).query(lines, predicate="intersects")
+        crossing.append(int(np.count_nonzero(i < j)))
+    assert crossing[0] == 0 and crossing[1] > 0  # both verdicts occur
+    assert res.inside.tolist() == [c == 0 for c in crossing]

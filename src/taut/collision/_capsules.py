@@ -153,32 +153,28 @@ def capsule_model(robot: Robot) -> CapsuleModel:
     local = np.array([[np.r_[c.a, pad], np.r_[c.b, pad]] for _, c in caps], float).reshape(-1, 2, 3)
     anchors = np.concatenate([robot.anchors, np.zeros((n, 3 - robot.dimension))], axis=1)
     exits = robot.exits
-    pairs, shared, cut = [], [], []
-    for i in range(n):
-        for j in range(i + 1, n):
-            same_exit = np.linalg.norm(exits[i] - exits[j]) <= ON_TOL
-            same_anchor = (
-                robot.cable_bodies[i] == robot.cable_bodies[j] and np.linalg.norm(anchors[i] - anchors[j]) <= ON_TOL
-            )
-            pairs.append((i, j))
-            shared.append((bool(same_exit), bool(same_anchor)))
-            cut.append((radii[i] + radii[j]) / math.sin(SHARED_END_ANGLE))
-    for i in range(n):
-        for c, (k, _) in enumerate(caps):
-            if k == robot.cable_bodies[i] and _point_on_segment(anchors[i], local[c, 0], local[c, 1]):
-                continue
-            pairs.append((i, n + c))
-            shared.append((False, False))
-            cut.append(0.0)
+    # every cable pair in the order of a double loop over i < j (vectorised: 2 million pairs
+    # for 2000 cables), then the cable–body pairs
+    ii, jj = np.triu_indices(n, k=1)
+    bodies = np.asarray(robot.cable_bodies)
+    same_exit = np.linalg.norm(exits[ii] - exits[jj], axis=1) <= ON_TOL
+    same_anchor = (bodies[ii] == bodies[jj]) & (np.linalg.norm(anchors[ii] - anchors[jj], axis=1) <= ON_TOL)
+    body_pairs = [
+        (i, n + c)
+        for i in range(n)
+        for c, (k, _) in enumerate(caps)
+        if not (k == robot.cable_bodies[i] and _point_on_segment(anchors[i], local[c, 0], local[c, 1]))
+    ]
+    m = len(body_pairs)
     return CapsuleModel(
         tuple(names),
         radii,
         body,
         local,
         n,
-        np.array(pairs, int).reshape(-1, 2),
-        np.array(shared, bool).reshape(-1, 2),
-        np.array(cut, float),
+        np.concatenate([np.stack([ii, jj], axis=1), np.array(body_pairs, int).reshape(-1, 2)]),
+        np.concatenate([np.stack([same_exit, same_anchor], axis=1), np.zeros((m, 2), bool)]),
+        np.concatenate([(radii[ii] + radii[jj]) / math.sin(SHARED_END_ANGLE), np.zeros(m)]),
     )
 
 

@@ -5,9 +5,16 @@ For each pair of capsules ``(i, j)`` of :func:`taut.collision.capsule_model` the
 proximity ``δ_ij`` is the segment–segment distance of §3.5
 (:mod:`taut.geometry._segments`), and the clearance is ``ε_ij = δ_ij − (ρ_i + ρ_j)``
 (§2.3.2).  The pose is interference free iff every ``ε_ij > 0``; a pair with ``ε_ij ≤ 0``
-collides.  ``D`` (Eq. 3.4.1) has one row per cable and one column per capsule (cables
-first, then the body capsules); ``E`` holds the ``ε_ij`` in the same layout (the source
-prints it transposed).  Pairs that are not checked are ``NaN`` in both (the source writes 0
+collides.  Touching capsules (cables of radius 0 that cross) have ``ε_ij = 0`` only up to
+round-off, which depends on the order of the operations: a proximity within ``TOUCH_ULPS``
+(16) units in the last place of the pair's scale ``s`` (its largest end-point coordinate
+or ``ρ_i + ρ_j``, whichever is larger) of ``ρ_i + ρ_j`` is reported as ``ρ_i + ρ_j``, so
+``ε_ij = 0`` and the pair collides — ``|ε_ij| ≤ 16 · 2.2e-16 · s``, 3.6e-14 m for a
+10 m robot, is no distance a model resolves.
+
+``D`` (Eq. 3.4.1) has one row per cable and one column per capsule (cables first, then the
+body capsules); ``E`` holds the ``ε_ij`` in the same layout (the source prints it
+transposed).  Pairs that are not checked are ``NaN`` in both (the source writes 0
 in ``D`` and 1 in ``E``).  The distances of all poses and pairs are computed in one Numba
 kernel.
 
@@ -34,6 +41,15 @@ from taut.model import Robot
 
 __all__ = ["ProximityResult", "proximity"]
 
+#: Machine epsilon of float64.
+EPS = float(np.finfo(float).eps)
+#: A distance within this many units in the last place of the pair's scale (its largest
+#: coordinate, or ``ρ_i + ρ_j``) of ``ρ_i + ρ_j`` is reported as exactly ``ρ_i + ρ_j``:
+#: touching, ``ε = 0``, colliding.  The segment distance is accurate to about 4 of them
+#: (:mod:`taut.geometry._segments`), so exact contacts are decided alike whatever the
+#: order, direction or mirror image of the segments.
+TOUCH_ULPS = 16.0
+
 
 @njit(cache=True)
 def _cut(P: np.ndarray, Q: np.ndarray, c: float) -> np.ndarray:
@@ -47,7 +63,13 @@ def _cut(P: np.ndarray, Q: np.ndarray, c: float) -> np.ndarray:
 
 @njit(cache=True)
 def _proximity_kernel(
-    A: np.ndarray, B: np.ndarray, pairs: np.ndarray, shared: np.ndarray, cut: np.ndarray, dist: np.ndarray
+    A: np.ndarray,
+    B: np.ndarray,
+    pairs: np.ndarray,
+    shared: np.ndarray,
+    cut: np.ndarray,
+    rho: np.ndarray,
+    dist: np.ndarray,
 ) -> None:
     N = A.shape[0]
     for k in range(N):
@@ -62,7 +84,11 @@ def _proximity_kernel(
                     ai, aj = _cut(ai, bi, c), _cut(aj, bj, c)
                 if shared[p, 1]:
                     bi, bj = _cut(bi, ai, c), _cut(bj, aj, c)
-            dist[k, p] = segment_distance_scalar(ai, bi, aj, bj)[0]
+            d = segment_distance_scalar(ai, bi, aj, bj)[0]
+            scale = rho[p]
+            for c3 in range(3):
+                scale = max(scale, abs(ai[c3]), abs(bi[c3]), abs(aj[c3]), abs(bj[c3]))
+            dist[k, p] = rho[p] if abs(d - rho[p]) <= TOUCH_ULPS * EPS * scale else d
 
 
 @dataclass(frozen=True)
@@ -98,7 +124,7 @@ class ProximityResult(Result):
 
     @property
     def colliding(self) -> np.ndarray:
-        """``(N, P)`` bool: ``ε ≤ 0``."""
+        """``(N, P)`` bool: ``ε ≤ 0`` (touching within round-off is ``ε = 0``: module docstring)."""
         return self.clearances <= 0.0
 
     @property
@@ -187,6 +213,6 @@ def proximity(robot: Robot, poses: npt.ArrayLike, *, model: CapsuleModel | None 
     model = capsule_model(robot) if model is None else checked_model(robot, model)
     A, B = capsule_segments(robot, arr, model=model)
     dist = np.empty((arr.shape[0], len(model.pairs)))
-    _proximity_kernel(A, B, model.pairs, model.shared, model.cut, dist)
     rho = model.radii[model.pairs[:, 0]] + model.radii[model.pairs[:, 1]]
+    _proximity_kernel(A, B, model.pairs, model.shared, model.cut, rho, dist)
     return ProximityResult(model, dist, dist - rho[None, :])

@@ -261,14 +261,19 @@ def _skew(v: np.ndarray) -> np.ndarray:
     return S
 
 
+def _inertia_about_p(pd: PlatformDynamics, R: np.ndarray, S: np.ndarray) -> np.ndarray:
+    """``I_p (N, 3, 3)``: the inertia tensor about ``p`` in the fixed frame, from the one about
+    the centre of mass and ``S = [r]×`` (parallel axes)."""
+    return R @ pd.inertia @ np.swapaxes(R, 1, 2) - pd.mass * S @ S
+
+
 def twist_inertia(pd: PlatformDynamics, R: np.ndarray, r: np.ndarray) -> np.ndarray:
     """``M_ν (N, dof, dof)``: the platform's inertia for twists ``(ṗ, ω)`` about ``p``."""
     N, m, d = R.shape[0], pd.mass, pd.dimension
     if pd.kind == POINT_MASS:
         return np.broadcast_to(m * np.eye(d), (N, d, d)).copy()
-    Ic = R @ pd.inertia @ np.swapaxes(R, 1, 2)
     S = _skew(r)
-    Ip = Ic - m * S @ S
+    Ip = _inertia_about_p(pd, R, S)
     if pd.kind == PLANAR:
         out = np.zeros((N, 3, 3))
         out[:, 0, 0] = out[:, 1, 1] = m
@@ -351,12 +356,10 @@ def _twist_coriolis(pd: PlatformDynamics, R: np.ndarray, r: np.ndarray, nu: np.n
         C[:, 1, 2] = -m * nu[:, 2] * r[:, 1]
     elif pd.kind == SPATIAL:
         v, w = nu[:, :3], nu[:, 3:]
-        Ic = R @ pd.inertia @ np.swapaxes(R, 1, 2)
         Sr, Sw = _skew(r), _skew(w)
-        Ip = Ic - m * Sr @ Sr
         C[:, :3, 3:] = -m * Sw @ Sr
         C[:, 3:, :3] = m * Sw @ Sr
-        C[:, 3:, 3:] = Sw @ Ip + m * _skew(cross(r, v))
+        C[:, 3:, 3:] = Sw @ _inertia_about_p(pd, R, Sr) + m * _skew(cross(r, v))
     return C
 
 
@@ -465,14 +468,20 @@ def coriolis_matrix(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.nda
     if robot.n_joints:
         C = jointed_coriolis_matrix(robot, arr, qdot)
         return C[0] if single else C
-    pd = platform_dynamics(robot)
-    R, r = frames(pd, arr)
-    J = _jacobian(pd, arr)
-    nu = np.einsum("nij,nj->ni", J, qdot)
-    C = np.swapaxes(J, 1, 2) @ (
-        twist_inertia(pd, R, r) @ _jacobian_rate(pd, arr, qdot) + _twist_coriolis(pd, R, r, nu) @ J
-    )
+    C = _platform_coriolis(platform_dynamics(robot), arr, qdot)[0]
     return C[0] if single else C
+
+
+def _platform_coriolis(
+    pd: PlatformDynamics, q: np.ndarray, qd: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """``C = Jᵀ (M_ν J̇ + C_ν J)`` of a platform without joints, with the ``J`` and frames
+    ``R, r`` it was computed from (:func:`bias_forces` adds the load in them)."""
+    R, r = frames(pd, q)
+    J = _jacobian(pd, q)
+    nu = np.einsum("nij,nj->ni", J, qd)
+    C = np.swapaxes(J, 1, 2) @ (twist_inertia(pd, R, r) @ _jacobian_rate(pd, q, qd) + _twist_coriolis(pd, R, r, nu) @ J)
+    return C, J, R, r
 
 
 def gravity_forces(robot: Robot, q: npt.ArrayLike) -> np.ndarray:
@@ -560,13 +569,8 @@ def bias_forces(robot: Robot, q: npt.ArrayLike, qd: npt.ArrayLike) -> np.ndarray
         h = jointed_bias_forces(robot, arr, qdot)
         return h[0] if single else h
     pd = platform_dynamics(robot)
-    R, r = frames(pd, arr)
-    J = _jacobian(pd, arr)
-    nu = np.einsum("nij,nj->ni", J, qdot)
-    Mnu = twist_inertia(pd, R, r)
-    inner = np.einsum("nij,nj->ni", Mnu @ _jacobian_rate(pd, arr, qdot), qdot)
-    inner += np.einsum("nij,nj->ni", _twist_coriolis(pd, R, r, nu), nu) - own_load(pd, R, r)
-    h = np.einsum("nji,nj->ni", J, inner)
+    C, J, R, r = _platform_coriolis(pd, arr, qdot)
+    h = np.einsum("nij,nj->ni", C, qdot) - np.einsum("nji,nj->ni", J, own_load(pd, R, r))  # C q̇ + g
     return h[0] if single else h
 
 

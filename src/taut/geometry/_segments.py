@@ -11,7 +11,11 @@ and zero-length segments:
    projections (``ξ_j`` from ``ξ_i``, then ``ξ_i`` from ``ξ_j``) — Ericson, *Real-Time
    Collision Detection* §5.1.9; when ``a e − b² ≤ 1e-14 a e`` (parallel) the stationary
    point is replaced by ``ξ_i = 0`` and the alternation finds an optimal pair, as for the
-   configurations a–i of Table 3.1;
+   configurations a–i of Table 3.1.  ``ξ_i`` is computed as ``−r'·u' / ‖u'‖²`` from the
+   components ``r'``, ``u'`` of ``A_i − A_j`` and ``v_i`` orthogonal to ``v_j``: its error
+   grows as ``1/sin θ`` with the angle ``θ`` of the segments, not as ``1/sin² θ``, so that
+   the distance of crossing segments is within a few units in the last place of their
+   coordinates at any angle;
 2. the four endpoint candidates: each end point projected (clamped) onto the other segment.
 
 The minimum over the candidates is returned.  Every candidate is the distance between two
@@ -107,11 +111,16 @@ def segment_distance_scalar(
     b = v1x * v2x + v1y * v2y + v1z * v2z
     c = v1x * rx + v1y * ry + v1z * rz
     f = v2x * rx + v2y * ry + v2z * rz
-    # 1. skew candidate (Ericson 5.1.9), with s = 0 when parallel or degenerate
+    # 1. skew candidate (Ericson 5.1.9), with s = 0 when parallel or degenerate; s minimises
+    #    |r' + s u'| for the parts r', u' of r, v1 orthogonal to v2: the same stationary point
+    #    as (b f − c e) / (a e − b²), whose error grows as 1/sin²θ (the distance's as 1/sinθ,
+    #    286 ulps at exact crossings), here as 1/sinθ (the distance's stays within a few ulps)
     s = 0.0
     denom = a * e - b * b
     if a > 0.0 and e > 0.0 and denom > PARALLEL_TOL * a * e:
-        s = _clamp01((b * f - c * e) / denom)
+        k, g = b / e, f / e
+        ux, uy, uz = v1x - k * v2x, v1y - k * v2y, v1z - k * v2z
+        s = _clamp01(-((rx - g * v2x) * ux + (ry - g * v2y) * uy + (rz - g * v2z) * uz) / (ux * ux + uy * uy + uz * uz))
     t = 0.0
     if e > 0.0:
         t = (b * s + f) / e

@@ -64,6 +64,22 @@ class _Strict(BaseModel):
 
     model_config = ConfigDict(extra="forbid", frozen=True, json_schema_extra=_schema_description)
 
+    def __init__(self, /, **data: Any) -> None:
+        """Validate ``data``: fields that do not validate raise one
+        :class:`~taut.errors.RobotFileError` line naming the class, the first field and what
+        is wrong (not pydantic's ``ValidationError``, which is no :class:`~taut.errors.TautError`).
+        """
+        try:
+            super().__init__(**data)
+        except ValidationError as exc:
+            from taut.model._messages import validation_message
+
+            raise RobotFileError(validation_message(type(self).__name__, exc)) from None
+
+    # what pydantic's own __init__ (and RootModel's) carry: validating a nested model (the
+    # cables of a robot) need not call this one, so errors keep their place in the parent's
+    __init__.__pydantic_base_init__ = True  # type: ignore[attr-defined]
+
     def model_copy(self, *, update: Mapping[str, Any] | None = None, deep: bool = False) -> Self:
         """A copy of this instance; with ``update``, a new instance validated from this one's
         fields and the update (pydantic's own copy would take the update unchecked and keep
@@ -608,9 +624,8 @@ class Robot(_Strict):
     -----
     Immutable: the arrays derived from its fields (:attr:`exits`, :attr:`tension_bounds`, ...)
     are computed once and read-only.  Read one with :func:`~taut.model.load_robot` or build
-    it from fields; bad fields raise :class:`~taut.errors.RobotFileError` through
-    :func:`~taut.model.robot_from_dict` (pydantic's ``ValidationError`` when the class is
-    called).
+    it from fields; bad fields raise :class:`~taut.errors.RobotFileError`, whether the class
+    is called or :func:`~taut.model.robot_from_dict` reads them.
 
     Examples
     --------

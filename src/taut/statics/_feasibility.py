@@ -54,7 +54,11 @@ Tolerances: a column whose projection on the complement of the columns already c
 is below ``1e-12 ‖w_j‖`` (times the pivot growth bound ``2^d``) is dependent;
 ``|n·w_j| ≤ 1e-12 ‖w_j‖`` (unit ``n``) counts as zero, so that ``0·∞`` never arises from
 round-off; support inequalities are tested with a slack of ``1e-9`` of the sum of the
-magnitudes of their terms; closure needs ``n·w_j`` beyond ``±1e-10 ‖w_j‖``.
+magnitudes of their terms, plus ``1e-12`` of the norms of the offset and of the set (an
+entry of ``n`` that should vanish is ~1e-17, so ``n·x`` is known to ``1e-12 ‖x‖`` only, as
+the ``n·w_j`` are); for feasibility ``rank W = m`` needs some ``|n·w_j| > 1e-8 ‖w_j‖``
+(``FULL_TOL``), else the pose is decided as a flat one; closure needs ``n·w_j`` beyond
+``±1e-10 ‖w_j‖``.
 
 References
 ----------
@@ -98,6 +102,10 @@ __all__ = ["facet_normals", "static_equilibrium", "wrench_closure", "wrench_feas
 RANK_TOL = 1e-12
 #: ``|n·w_j| ≤ ZERO_TOL ‖w_j‖`` (unit ``n``) counts as ``n·w_j = 0``.
 ZERO_TOL = 1e-12
+#: Feasibility: a facet normal with some ``|n·w_j| > FULL_TOL ‖w_j‖`` proves ``rank W = m``;
+#: where no normal has one, ``W`` is of rank ``< m`` to within round-off (a rank-5 ``W`` of
+#: 6 rows showed ``|n·w_j| = 2e-12 ‖w_j‖``) and the pose is decided as a flat one, exactly.
+FULL_TOL = 1e-8
 #: Relative slack of the support inequalities ``h_A(n) ≤ h_Z(n)``.
 SLACK = 1e-9
 #: Relative margin for "a column strictly on each side" in the closure test.
@@ -183,6 +191,15 @@ def _facet_kernel(
     finite = np.empty(n, np.bool_)
     for j in range(n):
         finite[j] = np.isfinite(tmax[j])
+    # Lipschitz constants in n of the set's support terms (|n·x| is known to ZERO_TOL ‖x‖):
+    # Σ|n_i| half_i, sqrt(nᵀ S n) = ‖S^½ n‖ (‖S^½‖² ≤ trace S) and the vertices' n·v
+    known_set = np.sqrt(np.sum(half * half))
+    if has_shape:
+        known_set += np.sqrt(max(np.trace(shape), 0.0))
+    vnorm = 0.0
+    for v in range(nvert):
+        vnorm = max(vnorm, np.sqrt(np.sum(verts[v] * verts[v])))
+    known_set += vnorm
     for k in range(N):
         Wk = W[k]
         for j in range(n):
@@ -252,16 +269,18 @@ def _facet_kernel(
             for j in range(m):
                 nv[j] = B[p, 0, j] / bn
             off = False
+            solid = False
             for j in range(n):
                 dj = A[p, 0, j] / bn
                 if abs(dj) <= ZERO_TOL * colnorm[j]:
                     dj = 0.0
                 else:
                     off = True
+                    solid = solid or abs(dj) > FULL_TOL * colnorm[j]
                 d_[j] = dj
             for i in range(p):
                 d_[chosen[i]] = 0.0
-            if off:
+            if solid if mode == MODE_FEASIBLE else off:
                 full = True
             if mode == MODE_CLOSURE:
                 pos = False
@@ -340,8 +359,10 @@ def _facet_kernel(
                     vabs = max(vabs, aabs)
             req_p = spread - vmin - lin
             req_m = spread + vmax + lin
-            # slack relative to the magnitudes summed (not to the sums, which may cancel)
-            tol = SLACK * (sz + labs + spread + vabs + 1e-300)
+            # slack relative to the magnitudes summed (not to the sums, which may cancel), and
+            # the round-off of n itself: an entry that should be 0 is ~1e-17, not 0, so that
+            # n·x is known to ZERO_TOL ‖x‖ only (as the n·w_j are)
+            tol = SLACK * (sz + labs + spread + vabs + 1e-300) + ZERO_TOL * (np.sqrt(np.sum(oc * oc)) + known_set)
             if (not inf_p and req_p > hp + tol) or (not inf_m and req_m > hm + tol):
                 ok = False
         if not ok:
@@ -837,11 +858,16 @@ def _generic_status(
         req_p = sup_m - lin
         req_m = sup_p + lin
         finite_sum = np.abs(np.where(np.isfinite(hz), hz, 0.0)).sum(-1)
+        # as in the kernel, with the round-off of n·o (n known to ZERO_TOL)
         tol = SLACK * (finite_sum + labs + np.abs(sup_m) + np.abs(sup_p) + 1e-300)
+        tol += ZERO_TOL * np.linalg.norm(o, axis=1)[:, None]
         with np.errstate(invalid="ignore"):
             bad = ((req_p > hz[..., 0] + tol) | (req_m > hz[..., 1] + tol)) & valid
-        # rank W = m iff some valid normal has a column off its hyperplane, i.e. h_Z(n) + h_Z(−n) > 0
+        # rank W = m iff some valid normal has a column off its hyperplane, i.e. h_Z(n) + h_Z(−n) > 0,
+        # and to within round-off iff σ_min > FULL_TOL σ_max (the kernel's test, in other terms)
         full = ((hz[..., 0] + hz[..., 1] > 0) & valid).any(axis=1)
+        sv = np.linalg.svd(W[s:e][full], compute_uv=False)
+        full[full] = sv[:, -1] > FULL_TOL * sv[:, 0]
         status[s:e] = np.where(bad.any(axis=1), _OUT, np.where(full, _IN, _FLAT))
 
 

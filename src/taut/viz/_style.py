@@ -81,14 +81,6 @@ def empty_figure(fig: Figure | None, what: str, figsize: tuple[float, float]) ->
     return fig
 
 
-def numbers(values: npt.ArrayLike, what: str) -> np.ndarray:
-    """``values`` as a float array, else an ``ArgumentError`` naming ``what`` they are."""
-    try:
-        return np.asarray(values, dtype=float)
-    except (TypeError, ValueError):
-        raise ArgumentError(f"{what} must be numbers, got {values!r}") from None
-
-
 def set_equal_3d(ax: Axes3D, points: npt.ArrayLike, margin: float = 0.05) -> None:
     """Limits enclosing ``points`` (k, 3) with a box aspect that makes metres equal on all axes."""
     pts = np.asarray(points, float).reshape(-1, 3)

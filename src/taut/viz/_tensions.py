@@ -20,8 +20,9 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from taut._checks import as_array
 from taut.errors import ArgumentError
-from taut.viz._style import DISALLOWED, axes_2d, cable_color, numbers
+from taut.viz._style import DISALLOWED, axes_2d, cable_color
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -56,7 +57,7 @@ def plot_tensions(
     ``mask_infeasible=False``: the lines break there.  Cable lines have ``gid="tension-<i>"``; the
     infeasible marks are one line with ``gid="infeasible"`` whose x data are the
     infeasible samples."""
-    T = numbers(tensions, "tensions")
+    T = as_array(tensions, "tensions", finite=False, error=ArgumentError)
     if T.ndim == 1:
         T = T[None, :]
     if T.ndim != 2:
@@ -65,7 +66,7 @@ def plot_tensions(
     if times_or_index is None:
         x, xlabel = np.arange(N, dtype=float), "sample"
     else:
-        x, xlabel = numbers(times_or_index, "times").ravel(), "time [s]"
+        x, xlabel = as_array(times_or_index, "times", finite=False, error=ArgumentError).ravel(), "time [s]"
         if x.size != N:
             raise ArgumentError(f"{x.size} times for {N} tension samples")
     ok = np.ones(N, bool) if feasible is None else np.asarray(feasible, bool).ravel()
@@ -73,7 +74,7 @@ def plot_tensions(
         raise ArgumentError(f"{ok.size} feasibility flags for {N} tension samples")
     if mask_infeasible and not ok.all():
         T = np.where(ok[:, None], T, np.nan)
-    lo, hi = (numbers(b, "tension bounds") for b in (tmin, tmax))
+    lo, hi = (as_array(b, "tension bounds", finite=False, error=ArgumentError) for b in (tmin, tmax))
     if lo.size not in (1, n) or hi.size not in (1, n):
         raise ArgumentError(f"tension bounds are one number or one per cable ({n}), got {lo.size} and {hi.size}")
     lo, hi = np.broadcast_to(lo.ravel(), (n,)), np.broadcast_to(hi.ravel(), (n,))

@@ -31,10 +31,11 @@ from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
+from taut._checks import as_array
 from taut.errors import ArgumentError
 from taut.model import Robot
 from taut.viz._robot import draw_scene_2d, draw_scene_3d, scene_points_3d
-from taut.viz._style import INSIDE, OUTSIDE, axes_2d, axes_3d, numbers, set_equal_3d
+from taut.viz._style import INSIDE, OUTSIDE, axes_2d, axes_3d, set_equal_3d
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -105,7 +106,7 @@ def plot_workspace(
     ``grid_shape``."""
     shape = tuple(int(s) for s in result.grid_shape)
     inside = np.asarray(result.inside, bool).ravel()
-    coords = [numbers(a, "workspace grid axes") for a in result.axes]
+    coords = [as_array(a, "workspace grid axes", finite=False, error=ArgumentError) for a in result.axes]
     if len(coords) != len(shape) or len(shape) not in (2, 3):
         raise ArgumentError(f"plot_workspace draws 2- or 3-axis grids, got grid_shape {shape} with {len(coords)} axes")
     if inside.size != int(np.prod(shape)):

@@ -102,6 +102,29 @@ class WorkspaceCondition(ABC):
         ndarray of bool, shape (N,)
         """
 
+    def numbers_per_pose(self, robot: Robot) -> int:
+        """How many numbers :meth:`evaluate` holds per pose: its structure matrix,
+        ``wrench_dim × n_cables``, unless a subclass holds more.
+        :func:`~taut.workspace.evaluate_workspace` sizes its chunks by it, so that their
+        memory stays bounded and progress is reported as often for any robot.
+
+        Parameters
+        ----------
+        robot : Robot
+
+        Returns
+        -------
+        int
+
+        Examples
+        --------
+        >>> from taut.model import example
+        >>> from taut.workspace import StaticEquilibrium
+        >>> StaticEquilibrium().numbers_per_pose(example("adjustable-8cable"))  # W is 6 × 8
+        48
+        """
+        return robot.wrench_dim * max(1, robot.n_cables)
+
     def __repr__(self) -> str:
         return f"<{type(self).__name__} {self.name!r}>"
 
@@ -364,6 +387,13 @@ class InterferenceFree(WorkspaceCondition):
     def evaluate(self, robot: Robot, poses: np.ndarray) -> np.ndarray:
         """Whether every checked capsule pair has a positive clearance: ``(N,)`` bool."""
         return proximity(robot, poses).interference_free
+
+    def numbers_per_pose(self, robot: Robot) -> int:
+        """Two per checked capsule pair (its distance and clearance): ``n (n − 1)`` for the
+        cable pairs, four million per pose for 2000 cables, and at most two per cable and body
+        capsule."""
+        n = robot.n_cables
+        return max(1, n * (n - 1) + 2 * n * len(robot.body_capsules))
 
 
 #: The registry of workspace conditions: name (as on the command line) → class:

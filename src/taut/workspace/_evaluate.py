@@ -38,9 +38,10 @@ __all__ = ["DEFAULT_CHUNK", "MAX_POSES", "MAX_POSE_ARRAY_BYTES", "WorkspaceResul
 
 #: Poses per chunk: large enough to amortise the per-call overhead, small enough to bound memory.
 DEFAULT_CHUNK = 16384
-#: Entries of the structure matrices of one chunk (16 MiB): a robot with many cables gets
-#: fewer poses per chunk (174 for 2000 cables in 6-D), so that its memory stays bounded and
-#: its progress is reported as often.
+#: Numbers one chunk's evaluation holds (16 MiB; :meth:`WorkspaceCondition.numbers_per_pose`:
+#: the structure matrices, or the capsule pairs' distances): a robot with many cables gets
+#: fewer poses per chunk (174 for 2000 cables in 6-D, one for their 2 million capsule pairs),
+#: so that its memory stays bounded and its progress is reported as often.
 CHUNK_ELEMENTS = 1 << 21
 #: Poses handed to the executor per call of its ``map``: the verdicts of one such batch are
 #: the only per-chunk results held at once before they are copied into the result.
@@ -347,8 +348,9 @@ def evaluate_workspace(
     progress : callable, optional
         ``progress(done, total)``, called with pose counts as chunks complete.
     chunk : int, optional
-        Poses per chunk; default :data:`DEFAULT_CHUNK`, or fewer so that a chunk's structure
-        matrices hold at most :data:`CHUNK_ELEMENTS` numbers.
+        Poses per chunk; default :data:`DEFAULT_CHUNK`, or fewer so that a chunk's evaluation
+        holds at most :data:`CHUNK_ELEMENTS` numbers (its structure matrices, or for
+        ``"interference-free"`` its capsule pairs' distances).
     max_poses : int, optional
         The budget of poses (default :data:`MAX_POSES`), at most
         :data:`~taut.workspace._grid.MAX_GRID_POSES` (2³⁰).
@@ -387,7 +389,7 @@ def evaluate_workspace(
     cond = make_condition(condition, wrench_set=wrench_set)
     runner: Executor = as_executor(executor)
     if chunk is None:
-        chunk = max(1, min(DEFAULT_CHUNK, CHUNK_ELEMENTS // (robot.wrench_dim * max(1, robot.n_cables))))
+        chunk = max(1, min(DEFAULT_CHUNK, CHUNK_ELEMENTS // cond.numbers_per_pose(robot)))
     if isinstance(chunk, bool) or not isinstance(chunk, (int, np.integer)) or chunk < 1:
         raise TautError(f"chunk must be a positive integer, got {chunk!r}")
     if progress is not None and not callable(progress):
