@@ -58,7 +58,7 @@ SUBJECTS = {
     "jointed": Subject(
         fixture("caspr/jointed_chain_bodies.xml"), (0, 0, 1.45, 0, 0, 0, 0, 0), "1,2,3", "x=0,y=0,z=1.45"
     ),
-    "wrapping (VSCR)": Subject("vscr-four-cable", (0.75, -0.5), "1,2", "x=0.75,y=-0.5"),
+    "wrapping (VSCR)": Subject(fixture("taut/vscr_weighted.yaml"), (0.75, -0.5), "1,2", "x=0.75,y=-0.5"),
 }
 
 #: The geometrico-static problems on a fully-constrained 8-cable robot search every taut subset
