@@ -10,13 +10,21 @@ robot is also solved by ``bertini2`` (see ``_bertini.py``; 4096 paths, 10–20 m
 on a shared core: pick a few robots, e.g. ``--three 3 --four 0 --six 0 --eight 0 --peer``):
 both counts of real equilibria with non-negative tensions are printed, and any disagreement.
 
+Point masses (``taut.model.random_point_mass_robot``, ``--point-mass N``, default 10 of each
+kind): N spatial robots of 2–8 cables and N planar ones of 2–6, their lengths perturbed by
+2, 10, 30 or 60 % (some admit no equilibrium); per kind the median and worst time, the
+undecided boxes, and against the least-squares fit of all the lengths that cable-printer
+firmware computes (``DGPResult.least_squares``, timed alone as the baseline) how often that fit
+is more than 1 mm from the certified equilibrium or has none to be near.
+
 With ``--fold``, a suite robot at a fold (seed 0, 3 cables, cable 1 lengthened by
 :data:`FOLD_SIDE`, 7e-11 past the length where two equilibria appear): solved in double
 precision alone, which leaves boxes too narrow to split around the nearly double pair, and
 with the boxes searched again in multi-precision (python-flint, ``taut[precise]``).
 
     python benchmarks/bench_dgp_random.py [--three N] [--four N] [--six N] [--eight N]
-                                          [--max-taut K] [--first SEED] [--peer] [--fold]
+                                          [--max-taut K] [--first SEED] [--point-mass N]
+                                          [--peer] [--fold]
 """
 
 import argparse
@@ -25,9 +33,10 @@ import time
 import _common  # noqa: F401  (pins the thread pools to one core)
 import numpy as np
 from _bertini import ALL_TAUT, import_bertini, matching, run_bertini
+from scipy.optimize import least_squares
 
 from taut.dgp import solve_dgp, solve_subset
-from taut.model import random_suspended_robot
+from taut.model import random_point_mass_robot, random_suspended_robot
 
 EPS = 1e-7  # solve_dgp's default box width
 RATIO_TARGET = 5.0  # worst / median time of the 3-cable suite (issue 21)
@@ -76,6 +85,48 @@ def peer(cases, mptype):
     print(f"bertini2 {bertini.__version__} ({mptype} precision): {disagreements} disagreement(s)")
 
 
+def firmware_fit(robot, lengths):
+    """The least-squares fit of all the lengths, as ``DGPResult.least_squares`` computes it:
+    timed alone, the baseline of the point-mass suite."""
+    a = robot.exits
+    f = robot.weight / np.linalg.norm(robot.weight)
+    start = a.mean(axis=0) + float(np.mean(lengths)) * f / 2.0
+    return least_squares(
+        lambda p: np.linalg.norm(p - a, axis=1) - lengths, start, method="trf", xtol=1e-15, ftol=1e-15, gtol=1e-15
+    ).x
+
+
+def point_masses(ns):
+    """The point-mass suite: per kind the times, undecided boxes and firmware's misses."""
+    for dimension, low, high in ((3, 2, 8), (2, 2, 6)):
+        times, fits, undecided, off = [], [], 0, 0
+        for k, seed in enumerate(range(ns.first, ns.first + ns.point_mass)):
+            n = low + k % (high - low + 1)
+            perturbation = (0.02, 0.1, 0.3, 0.6)[k % 4]
+            robot, lengths = random_point_mass_robot(n, dimension=dimension, seed=seed, perturbation=perturbation)
+            t0 = time.perf_counter()
+            res = solve_dgp(robot, lengths)
+            times.append(time.perf_counter() - t0)
+            t0 = time.perf_counter()
+            fit = firmware_fit(robot, lengths)
+            fits.append(time.perf_counter() - t0)
+            undecided += res.undecided
+            near = [np.linalg.norm(fit - s.position) <= 1e-3 for s in res.solutions]
+            off += not any(near)
+            print(
+                f"point mass {dimension}-D {n} cables seed {seed:3d} (lengths ±{perturbation:g}): "
+                f"{len(res.solutions)} equilibria {[list(s.taut) for s in res.solutions]}, {res.undecided} undecided, "
+                f"{res.boxes} boxes, {times[-1]:.3f} s; least-squares fit "
+                f"{'at the equilibrium' if any(near) else 'off (no equilibrium within 1 mm)'}",
+                flush=True,
+            )
+        summary(f"point mass {dimension}-D", times)
+        print(
+            f"point mass {dimension}-D: certified DGP / least-squares fit time {np.median(times) / np.median(fits):.0f}x "
+            f"(median); least-squares fit off the equilibrium in {off} of {len(times)}; undecided boxes {undecided}"
+        )
+
+
 def fold():
     robot, lengths = random_suspended_robot(3, seed=0)
     lengths = lengths.copy()
@@ -101,6 +152,7 @@ def main():
     ap.add_argument("--eight", type=int, default=2, help="8-cable robots (with --max-taut)")
     ap.add_argument("--max-taut", type=int, default=2, help="largest taut subset of the 6- and 8-cable robots")
     ap.add_argument("--first", type=int, default=0, help="first seed")
+    ap.add_argument("--point-mass", type=int, default=10, help="point-mass robots of each kind (spatial, planar)")
     ap.add_argument("--peer", action="store_true", help="also bertini2 on each 3-cable all-taut sub-problem")
     ap.add_argument("--peer-mptype", choices=("double", "adaptive"), default="double")
     ap.add_argument(
@@ -136,6 +188,8 @@ def main():
     print(f"undecided boxes over the suite: {total_undecided}")
     if ratio is not None:
         print(f"3-cable worst/median: {ratio:.1f}x (target <= {RATIO_TARGET:g}x)")
+    if ns.point_mass:
+        point_masses(ns)
     if ns.peer:
         peer(cases, ns.peer_mptype)
     if ns.fold:

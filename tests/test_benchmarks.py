@@ -29,8 +29,13 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
         ),
         (
             "bench_dgp_random.py",
-            ["--first", "1", "--three", "2", "--four", "0", "--six", "1", "--eight", "0"],
+            ["--first", "1", "--three", "2", "--four", "0", "--six", "1", "--eight", "0", "--point-mass", "2"],
             "undecided boxes over the suite: 0",
+        ),
+        (
+            "bench_dgp_random.py",
+            ["--three", "0", "--four", "0", "--six", "0", "--eight", "0", "--point-mass", "3"],
+            "point mass 2-D: certified DGP / least-squares fit time",
         ),
         pytest.param(
             "bench_dgp_random.py",

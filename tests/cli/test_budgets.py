@@ -96,7 +96,7 @@ def test_atlasrrt_stops_at_its_node_budget_whatever_the_step():
     """The smallest step allowed, 4e-4: one extension toward a random sample is up to 2000
     steps, each a node; the walk stops where the budget does."""
     d = taut(*RRT, "--step=4e-4", "--max-nodes=100", "--json").json()
-    assert not d["found"] and not d["exhausted"] and d["nodes"] == 100 and d["path"] == []
+    assert not d["found"] and not d["no_path"] and d["nodes"] == 100 and d["path"] == []
 
 
 def test_astar_in_six_dimensions_needs_an_explicit_budget_and_stops_at_it():
@@ -105,7 +105,7 @@ def test_astar_in_six_dimensions_needs_an_explicit_budget_and_stops_at_it():
     assert "6 free coordinates" in line and "--fix" in line and "--max-charts" in line
     d = taut(*argv, "--max-charts=60").json()
     # the budget ends the search within an expansion: not found, not a proof
-    assert d["charts"] == 60 and not d["found"] and not d["exhausted"] and 0 < d["expanded"] < 60
+    assert d["charts"] == 60 and not d["found"] and not d["no_path"] and 0 < d["expanded"] < 60
 
 
 def _sphere_robot(n: int) -> dict:

@@ -86,7 +86,7 @@ def test_plan_atlasrrt_q3_q4_across_phi_pi(cli, extra):
     assert cli.main([*argv, *extra, "--json"]) == 0, cli.readouterr().err
     d = json.loads(cli.readouterr().out)
     assert d["planner"] == d["method"] == "atlasrrt" and d["nodes"] > 2 and d["expanded"] is None
-    assert d["found"] and d["verified"] and not d["exhausted"]
+    assert d["found"] and d["verified"] and not d["no_path"]
     path = np.array(d["path"])
     q3, q4 = (np.array(ROBOT.reference.poses[q]) for q in ("q3", "q4"))
     assert np.allclose(path[0], q3) and same_pose(path[-1], q4)
@@ -115,12 +115,12 @@ def test_plan_atlasrrt_budget_runs_out_and_auto_then_proves_no_path(cli):
     islands = ["--start", "0,0,2,-1.3,2.2,35deg", "--goal", "0,0,2,0.6,2.4,35deg", "--fix", SLICE, "--radius", "0.3"]
     assert cli.main(["plan", "robocrane", *islands, "--planner", "atlasrrt", "--max-nodes", "60", "--json"]) == 0
     d = json.loads(cli.readouterr().out)
-    assert not d["found"] and not d["exhausted"] and d["path"] == [] and d["nodes"] >= 60
+    assert not d["found"] and not d["no_path"] and d["path"] == [] and d["nodes"] >= 60
     assert cli.main(["plan", "robocrane", *islands, "--planner", "atlasrrt", "--max-nodes", "60"]) == 0
     assert "not a proof" in cli.readouterr().out
     assert cli.main(["plan", "robocrane", *islands, "--planner", "auto", "--max-nodes", "60", "--json"]) == 0
     d = json.loads(cli.readouterr().out)
-    assert d["planner"] == "auto" and d["method"] == "astar" and not d["found"] and d["exhausted"]
+    assert d["planner"] == "auto" and d["method"] == "astar" and not d["found"] and d["no_path"]
 
 
 @pytest.mark.parametrize(
@@ -173,4 +173,4 @@ def test_plan_q3_q4_and_a_proof_of_no_path(cli):
         == 0
     )
     d = json.loads(cli.readouterr().out)
-    assert not d["found"] and d["exhausted"] and d["path"] == [] and d["charts"] == d["expanded"]
+    assert not d["found"] and d["no_path"] and d["path"] == [] and d["charts"] == d["expanded"]

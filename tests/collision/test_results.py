@@ -31,7 +31,8 @@ def test_check_result():
     poses = trajectory_poses(ROBOT, "sim-b")[120:130]
     res = check_poses(ROBOT, poses)
     d = check_result(res)
-    assert set(d) == {"capsules", "poses", "jacobian_ratio", "steps"}
+    assert set(d) == {"capsules", "poses", "jacobian_ratio", "steps", "summary"}
+    assert d["summary"]["force_closure_singular_steps"] == [[5, 9]] and d["summary"]["first_problem"] == 5
     assert d["capsules"] == list(res.model.names)
     same(d["poses"], poses)
     same(d["jacobian_ratio"], res.jacobian_ratio)

@@ -314,7 +314,13 @@ POINT_MASS = Robot.model_validate(
         (COGIRO, range(7), dict.fromkeys("xyzabc", 0.0), CableSetError, "2 to 6"),
         (SUSPENDED, 3, {"x": 1}, CableSetError, "cable indices 0..2"),
         (load_robot("planar-4cable"), (0, 1), {"x": 0, "y": 0}, UnsupportedRobotError, "planar"),
-        (POINT_MASS, (0, 1), {"x": 0, "y": 0}, UnsupportedRobotError, "point-mass"),
+        (
+            POINT_MASS,
+            (0, 1),
+            {"x": 0, "a": 0},
+            PoseError,
+            "unknown pose coordinate .a.; spatial point mass has x, y, z",
+        ),
         (load_robot("adjustable-8cable"), (0, 1), {"x": 0, "y": 0}, UnsupportedRobotError, "jointed"),
     ],
 )

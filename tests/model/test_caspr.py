@@ -403,7 +403,15 @@ def test_planar_cable_leaving_the_plane_is_refused(tmp_path: Path) -> None:
 # ---- round trip ---------------------------------------------------------------------------
 
 #: The built-in examples a CASPR model can hold; the others are refused with a reason.
-WRITABLE = {"cogiro", "marionet-vr", "planar-4cable", "spatial-8cable", "teaching-prototype"}
+WRITABLE = {
+    "camera-4cable",
+    "cogiro",
+    "marionet-vr",
+    "planar-4cable",
+    "printer-5cable",
+    "spatial-8cable",
+    "teaching-prototype",
+}
 #: Examples refused only for their cable radii (the collision model), written without them.
 WITHOUT_RADII = {"adjustable-8cable"}
 

@@ -29,7 +29,7 @@ def test_sphere_path_stays_on_the_sphere_and_is_no_shorter_than_the_great_circle
     a, b = np.array([1.0, 0, 0]), np.array([-0.6, 0.8, 0])
     geodesic = np.arccos(a @ b)
     res = plan_path(SPHERE, a, b, method="atlasrrt", radius=0.3, seed=3)
-    assert res.found and not res.exhausted
+    assert res.found and not res.no_path
     np.testing.assert_allclose(np.linalg.norm(res.path, axis=1), 1.0, atol=1e-8)
     np.testing.assert_allclose(res.path[0], a)
     np.testing.assert_allclose(res.path[-1], b, atol=1e-12)
@@ -64,7 +64,7 @@ def test_robocrane_queries_are_verified_independently(query, bidirectional):
         bidirectional=bidirectional,
         shorten=True,
     )
-    assert res.found and not res.exhausted
+    assert res.found and not res.no_path
     poses = M.pose(res.path)
     np.testing.assert_allclose(poses[0], POSES[a], atol=1e-9)
     assert same_pose(poses[-1], POSES[b])
@@ -80,12 +80,12 @@ def test_separate_islands_give_no_path_within_the_budget():
     # two "upside-down" islands of the slice (test_robocrane proves them disconnected)
     y1, y2 = M.lift([0, 0, 2, -1.3, 2.2, SIGMA]), M.lift([0, 0, 2, 0.6, 2.4, SIGMA])
     res = plan_path(M.implicit(), y1, y2, method="atlasrrt", radius=0.3, metric=M.pose_metric, seed=0, max_nodes=300)
-    assert not res.found and not res.exhausted and len(res.path) == 0
+    assert not res.found and not res.no_path and len(res.path) == 0
     assert res.nodes >= 300
     poses = M.pose(res.atlas.centres)
     assert np.all(poses[:, 4] > 1.4)  # both trees stayed on their islands
     # the complete search proves it
-    assert plan_path(M.implicit(), y1, y2, radius=0.3, metric=M.pose_metric).exhausted
+    assert plan_path(M.implicit(), y1, y2, radius=0.3, metric=M.pose_metric).no_path
 
 
 def test_bad_arguments_are_refused():

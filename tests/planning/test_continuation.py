@@ -151,7 +151,7 @@ def test_boxed_component_gives_no_path_with_exhaustion():
         SPHERE.function, SPHERE.jacobian, 2, lower=np.array([-2, -2, 0.5]), upper=np.array([2, 2, 2])
     )
     res = plan_path(box, [0, 0, 1.0], [0, 0, -1.0], radius=0.2)
-    assert not res.found and res.exhausted and res.charts > 5
+    assert not res.found and res.no_path and res.charts > 5
     assert res.atlas.centres[:, 2].min() > 0.5 - 0.2
 
 
@@ -161,7 +161,7 @@ def test_the_chart_budget_stops_a_search_within_an_expansion():
     no path, without a proof."""
     for budget in (3, 9):
         res = plan_path(SPHERE, [0, 0, 1.0], [0, 0, -1.0], radius=0.2, max_charts=budget)
-        assert res.charts == budget and not res.found and not res.exhausted
+        assert res.charts == budget and not res.found and not res.no_path
         assert sum(c.expanded for c in res.atlas.charts) == res.expanded < budget
     a = Atlas(SPHERE, [0, 0, 1.0], radius=0.2)
     assert a.grow(0, max_charts=4) == [1, 2, 3] and not a.charts[0].expanded

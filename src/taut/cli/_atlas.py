@@ -12,14 +12,10 @@ from __future__ import annotations
 
 import argparse
 import json
-from typing import TYPE_CHECKING
 
 from taut.cli import _args as A
 from taut.cli._output import console, emit, markup, save_figure, written
 from taut.errors import TautError
-
-if TYPE_CHECKING:
-    from taut.atlas import StructureAtlas
 
 SUMMARY = "structure atlas and workspace of a planar VSCR (rigid: one orientation page)"
 ROBOT = True
@@ -39,19 +35,18 @@ platform outline (platform.shape.polygon) hits no object, border or cable.
 JSON: {"charts", "edges", "theta", "reachable_area", "workspace_area", "pruned", "time"}."""
 
 
-def _chart_json(atlas: StructureAtlas, c: int) -> dict:
-    import numpy as np
-
-    C = atlas.charts[c]
-    dom = C.domain
-    return {
-        "index": c + 1,
-        "structure": [[[k + 1, d] for k, d in s] for s in C.states],
-        "area": float(dom.area),
-        "seed": C.seed.tolist(),
-        "domain": [np.asarray(g.exterior.coords).tolist() for g in getattr(dom, "geoms", [dom])],
-        "neighbours": sorted(n + 1 for n in C.neighbours),
+def _chart(chart: dict) -> dict:
+    """A chart of :meth:`StructureAtlas.as_dict` with 1-based chart and object numbers."""
+    return chart | {
+        "index": chart["index"] + 1,
+        "structure": [[[k + 1, d] for k, d in s] for s in chart["structure"]],
+        "neighbours": [n + 1 for n in chart["neighbours"]],
     }
+
+
+def _edge(edge: dict) -> dict:
+    """An edge of :meth:`StructureAtlas.as_dict` with 1-based chart, cable and object numbers."""
+    return edge | {"charts": [c + 1 for c in edge["charts"]], "cable": edge["cable"] + 1, "object": edge["object"] + 1}
 
 
 def run(ns: argparse.Namespace) -> int:
@@ -89,31 +84,20 @@ def run(ns: argparse.Namespace) -> int:
         raise TautError(f"{robot.name}: more than {len(atlas.charts)} charts; the atlas is too large")
     with progress_bar("workspace (charts)", wanted(ns.json)) as progress:
         ws = atlas_workspace(atlas, ns.condition, progress=progress)
+    pages = atlas.as_dict()
+    region = ws.as_dict()
     data = {
         "robot": robot.name,
-        "start": start.tolist(),
-        "theta": float(theta),
-        "charts": len(atlas.charts),
-        "edges": atlas.n_edges,
-        "reachable_area": float(atlas.reachable_area().area),
-        "workspace_area": ws.area,
-        "condition": ws.condition,
-        "pruned": [c + 1 for c in ws.pruned],
+        **{k: pages[k] for k in ("start", "theta", "charts", "edges", "reachable_area")},
+        "workspace_area": region["area"],
+        "condition": region["condition"],
+        "pruned": [c + 1 for c in region["pruned"]],
         "time": time.perf_counter() - t0,
     }
     if out is not None:
         full = data | {
-            "chart_list": [_chart_json(atlas, c) for c in range(len(atlas.charts))],
-            "edge_list": [
-                {
-                    "charts": [e.charts[0] + 1, e.charts[1] + 1],
-                    "cable": e.cable + 1,
-                    "kind": e.kind,
-                    "object": e.obj + 1,
-                    "segment": e.segment.tolist(),
-                }
-                for e in atlas.edges
-            ],
+            "chart_list": [_chart(c) for c in pages["chart_list"]],
+            "edge_list": [_edge(e) for e in pages["edge_list"]],
         }
         with written(out, "--out") as tmp, open(tmp, "w") as fh:
             json.dump(full, fh, indent=1, allow_nan=False)

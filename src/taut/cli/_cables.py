@@ -28,5 +28,16 @@ def cable_numbers(indices: Iterable[int]) -> list[int]:
 
 
 def numbered(record: dict[str, Any]) -> dict[str, Any]:
-    """``record`` (a solution's ``as_dict()``) with its cable-index fields as 1-based numbers."""
-    return record | {k: cable_numbers(record[k]) for k in CABLE_FIELDS if k in record}
+    """``record`` (a result's ``as_dict()``) with its cable-index fields (:data:`CABLE_FIELDS`)
+    as 1-based numbers, in it and in the records it holds (a dictionary, or a list of them:
+    the solutions and undecided boxes of a result)."""
+    out = {}
+    for key, value in record.items():
+        if key in CABLE_FIELDS and value is not None:
+            value = cable_numbers(value)
+        elif isinstance(value, dict):
+            value = numbered(value)
+        elif isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
+            value = [numbered(v) for v in value]
+        out[key] = value
+    return out

@@ -12,14 +12,10 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from taut.cli import _args as A
 from taut.cli._output import console, emit, markup, save_figure
 from taut.errors import TautError
-
-if TYPE_CHECKING:
-    import numpy as np
 
 SUMMARY = "self-collision and singularity check along a trajectory"
 ROBOT = True
@@ -34,31 +30,23 @@ of adjustable-8cable) or a file:
   YAML/JSON  a list of poses; or {poses: [...]}; or {waypoints: [...], steps: [...]}
              (straight moves of steps[k] increments, default 100 each)
 Steps, cables and capsules are numbered from 1 (cables first, then the platform capsules).
-JSON: {"steps": [{"index", "collisions": [[i, j], ...], "jacobian_singular",
+JSON: {"capsules", "poses", "jacobian_ratio", "steps": [{"index", "collisions": [[i, j], ...], "jacobian_singular",
 "force_closure_singular", "min_clearance"}, ...], "summary": {...}}."""
 
 
-def _step(index: int | None) -> int | None:
-    """The 1-based step shown to users of a 0-based pose index."""
-    return None if index is None else index + 1
-
-
-def _runs(flags: np.ndarray) -> list[list[int]]:
-    """1-based inclusive ranges of consecutive true flags."""
-    import numpy as np
-
-    idx = np.flatnonzero(flags)
-    if not idx.size:
-        return []
-    breaks = np.flatnonzero(np.diff(idx) > 1)
-    starts = np.r_[idx[0], idx[breaks + 1]]
-    ends = np.r_[idx[breaks], idx[-1]]
-    return [[int(s) + 1, int(e) + 1] for s, e in zip(starts, ends)]
+def _summary(summary: dict) -> dict:
+    """:meth:`CheckResult.summary` with 1-based steps, as users read them."""
+    out = {}
+    for key, value in summary.items():
+        if key.startswith("first_"):
+            value = None if value is None else value + 1
+        elif key.endswith("_steps"):
+            value = [[a + 1, b + 1] for a, b in value]
+        out[key] = value
+    return out
 
 
 def run(ns: argparse.Namespace) -> int:
-    import numpy as np
-
     from taut.collision import check_poses, load_trajectory, trajectory_poses
 
     plot = A.plot_file(ns.plot)
@@ -74,27 +62,13 @@ def run(ns: argparse.Namespace) -> int:
             f"--trajectory: {spec!r} is neither a file nor a built-in trajectory of {robot.name} (built-in: {known})"
         )
     res = check_poses(robot, poses, method=ns.method)
-    summary = {
-        "poses": len(poses),
-        "first_collision": _step(res.first(res.collides)),
-        "first_jacobian_singular": _step(res.first(res.jacobian_singular)),
-        "first_force_closure_singular": _step(res.first(res.force_closure_singular)),
-        "first_problem": _step(res.first(res.problems)),
-        "collision_steps": _runs(res.collides),
-        "jacobian_singular_steps": _runs(res.jacobian_singular),
-        "force_closure_singular_steps": _runs(res.force_closure_singular),
-        "min_clearance": float(np.min(res.proximity.min_clearance)) if len(poses) else None,
-    }
-    data = {
-        "robot": robot.name,
-        "trajectory": spec,
-        "capsules": list(res.model.names),
-        "summary": summary,
-        "steps": [
-            r | {"index": r["index"] + 1, "collisions": [[i + 1, j + 1] for i, j in r["collisions"]]}
-            for r in res.steps()
-        ],
-    }
+    result = res.as_dict()
+    data = {"robot": robot.name, "trajectory": spec} | result
+    data["summary"] = _summary(result["summary"])
+    data["steps"] = [
+        r | {"index": r["index"] + 1, "collisions": [[i + 1, j + 1] for i, j in r["collisions"]]}
+        for r in result["steps"]
+    ]
     if plot is not None:
         from taut.viz import plot_check
 

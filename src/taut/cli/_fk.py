@@ -10,7 +10,7 @@ import argparse
 
 from taut.cli import _args as A
 from taut.cli._cables import cable_numbers, numbered
-from taut.cli._incomplete import EXIT_STATUS, add_strict, enclosures, report
+from taut.cli._incomplete import EXIT_STATUS, add_strict, report
 from taut.cli._output import console, emit, print_table, save_figure, table
 from taut.cli._progress import progress_bar, wanted
 
@@ -33,9 +33,13 @@ or a slack one exactly at its length) is listed once, under the smaller set, wit
 naming the larger one.
 {EXIT_STATUS}
 JSON: {{"robot", "solutions": [{{"taut", "position", "orientation", "tensions", "stable", "boundary"?, ...}}],
-"complete", "subproblems", "undecided_boxes", "undecided_enclosures": [{{"taut", "cause",
+"complete", "exhausted", "subproblems", "undecided_boxes", "undecided_enclosures": [{{"taut", "cause",
 "enclosure": {{name: [lo, hi]}}, "tensions": [[lo, hi], ...], "reference_points"}}], "boxes",
-"elapsed_s"}}."""
+"elapsed_s", "least_squares"?: {{"position", "residuals", "rms_residual"}}}}.  A point mass
+(position x, y[, z], no orientation) hangs on at most 3 (2 in the plane) taut cables, at
+the lowest point its cables allow: lengths that admit none give no equilibrium, complete.
+"least_squares" is then, apart, the least-squares fit of all the lengths that cable-printer
+firmware computes (every cable assumed taut): not an equilibrium."""
 
 
 def run(ns: argparse.Namespace) -> int:
@@ -57,16 +61,7 @@ def run(ns: argparse.Namespace) -> int:
             max_boxes=MAX_SUBPROBLEM_BOXES if ns.max_boxes is None else ns.max_boxes,
             progress=progress,
         )
-    data = {
-        "robot": robot.name,
-        "solutions": [numbered(s.as_dict()) for s in res.solutions],
-        "subproblems": res.subproblems,
-        "undecided_boxes": res.undecided,
-        "undecided_enclosures": enclosures(res.undecided_enclosures),
-        "complete": res.complete,
-        "boxes": res.boxes,
-        "elapsed_s": res.elapsed_s,
-    }
+    data = {"robot": robot.name} | numbered(res.as_dict())
     if plot is not None:
         from taut.viz import plot_equilibria
 
@@ -91,6 +86,12 @@ def run(ns: argparse.Namespace) -> int:
             ],
         )
         print_table(con, t)
+        if res.least_squares is not None:
+            fit = res.least_squares
+            con.print(
+                f"least-squares fit of all the lengths, as firmware computes it (not an equilibrium): "
+                f"({', '.join(f'{v:.4f}' for v in fit.position)}), rms residual {fit.rms_residual:.3g} m"
+            )
 
     emit(data, ns.json, human)
     return status

@@ -15,7 +15,7 @@ import argparse
 from typing import TYPE_CHECKING
 
 from taut.cli import _args as A
-from taut.cli._incomplete import EXIT_STATUS, add_strict, enclosures, report
+from taut.cli._incomplete import EXIT_STATUS, add_strict, report
 from taut.cli._output import console, emit, markup, print_table, table
 from taut.errors import CableSetError, PoseError
 
@@ -26,8 +26,8 @@ if TYPE_CHECKING:
 SUMMARY = "pose, tensions and lengths for chosen taut cables (inverse geometrico-static problem)"
 ROBOT = True
 
-DESCRIPTION = f"""With the cables of --taut taut (m of them, 2 <= m <= 6) only m pose coordinates
-can be assigned: give them with --fix (names x, y, z and the robot's angle names, e.g.
+DESCRIPTION = f"""With the cables of --taut taut (m of them, 2 <= m <= 6; 1 <= m <= 3, or 2 in the
+plane, for a point mass) only m pose coordinates can be assigned: give them with --fix (names x, y, z and the robot's angle names, e.g.
 a, b, c or phix, phiy, phiz for xyz conventions, phi, theta, sigma for tilt-torsion;
 angles in rad, or 30deg, pi/8).  Every equilibrium with tensions >= 0 is found and
 certified (Berti 2015, §4.1.2; interval branch-and-prune): the free
@@ -62,13 +62,14 @@ def _assigned(text: str) -> dict[str, float]:
     return {name: v for name, v in values.items() if v is not None}
 
 
-def _box(text: str | None) -> tuple[np.ndarray, np.ndarray] | None:
+def _box(text: str | None, d: int = 3) -> tuple[np.ndarray, np.ndarray] | None:
     if text is None:
         return None
     v = A.vector(text, "--box")
-    if v.size != 6:
-        raise PoseError(f"--box: expected xmin,ymin,zmin,xmax,ymax,zmax, got {v.size} numbers")
-    return v[:3], v[3:]
+    if v.size != 2 * d:
+        names = "xmin,ymin,zmin,xmax,ymax,zmax" if d == 3 else "xmin,ymin,xmax,ymax"
+        raise PoseError(f"--box: expected {names}, got {v.size} numbers")
+    return v[:d], v[d:]
 
 
 def run(ns: argparse.Namespace) -> int:
@@ -83,22 +84,13 @@ def run(ns: argparse.Namespace) -> int:
             robot,
             cable_indices(cables, robot.n_cables, "--taut"),
             _assigned(ns.fix),
-            box=_box(ns.box),
+            box=_box(ns.box, robot.dimension),
             max_boxes=ns.max_boxes,
             progress=progress,
         )
-    data = {
-        "robot": robot.name,
-        "taut": sorted(cables),
-        "assigned": res.fixed,
-        "solutions": [numbered(s.as_dict()) for s in res.solutions],
-        "complete": res.complete,
-        "undecided_boxes": res.undecided,
-        "undecided_enclosures": enclosures(res.undecided_enclosures),
-        "boxes": res.boxes,
-        "exhausted": res.exhausted,
-        "elapsed_s": res.elapsed_s,
-    }
+    result = numbered(res.as_dict())
+    # the coordinates the library calls fixed, the command's JSON prints as assigned
+    data = {"robot": robot.name, "taut": sorted(cables), "assigned": result.pop("fixed")} | result
 
     def tables(con: Console, d: dict) -> None:
         free = [k for k, name in enumerate(robot.pose_names[:6]) if name not in res.fixed]
@@ -152,7 +144,9 @@ def run(ns: argparse.Namespace) -> int:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--taut", required=True, help="taut cables, e.g. 1,2,3 (2 to 6 of them)")
+    parser.add_argument(
+        "--taut", required=True, help="taut cables, e.g. 1,2,3 (2 to 6 of them; 1 to 3, or 2, for a point mass)"
+    )
     parser.add_argument(
         "--fix", required=True, help="as many pose coordinates as taut cables, e.g. x=0.3,y=0.4,z=0.1,a=5deg"
     )
@@ -161,7 +155,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--box",
-        help="search box of the free position coordinates xmin,ymin,zmin,xmax,ymax,zmax "
+        help="search box of the free position coordinates xmin,ymin,zmin,xmax,ymax,zmax (xmin,ymin,xmax,ymax planar) "
         "(default: the taut cables' reach around their exit points)",
     )
     add_strict(parser)

@@ -24,14 +24,7 @@ def run(ns: argparse.Namespace) -> int:
     robot = A.load(ns.robot, ns.cable_set)
     pose = A.pose(robot, ns.pose) if ns.pose is not None else A.default_pose(robot)
     ik = inverse_kinematics(robot, pose)
-    data = {
-        "robot": robot.name,
-        "pose": pose.tolist(),
-        "lengths": ik.lengths.tolist(),
-        "directions": ik.directions.tolist(),
-        "anchors": ik.anchors.tolist(),
-        "structure_matrix": ik.structure_matrix.tolist(),
-    }
+    data = {"robot": robot.name, "pose": pose.tolist()} | ik.as_dict()
 
     def human(d: dict) -> None:
         con = console()

@@ -10,7 +10,7 @@ import sys
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-from taut.cli._cables import cable_numbers, numbered
+from taut.cli._cables import cable_numbers
 
 if TYPE_CHECKING:
     from taut.dgp import UndecidedBox
@@ -44,11 +44,6 @@ def add_strict(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help=f"exit with status {INCOMPLETE} when the answer is incomplete (boxes left undecided)",
     )
-
-
-def enclosures(boxes: Sequence[UndecidedBox]) -> list[dict]:
-    """The undecided boxes for JSON, with 1-based cable numbers."""
-    return [numbered(b.as_dict()) for b in boxes]
 
 
 def warning(boxes: Sequence[UndecidedBox], what: str, multiprecision_hint: bool = False) -> str:

@@ -47,7 +47,7 @@ DESCRIPTION = """Plan a path along which the cables balance every wrench of the 
 (w - w0)^T E (w - w0) <= 1 with tensions and lengths strictly inside their bounds.
 Planners (--planner):
   astar     higher-dimensional continuation + A* (Bohigas et al. 2013, §4): complete, it
-            proves that no path exists when the start's component is exhausted at the
+            proves that no path exists when it covers the start's component at the
             chart radius (--radius, default 0.2);
   atlasrrt  AtlasRRT (Jaillet & Porta 2013), bidirectional unless --unidirectional: random
             trees grown on an atlas of the same manifold (--radius, default 0.4; --step,
@@ -56,16 +56,16 @@ Planners (--planner):
             free coordinates only with an explicit --max-charts: its atlas would need
             millions of charts).
 --max-charts bounds the atlas of either planner (default 20000); A* then answers
-"found": false, "exhausted": false.
+"found": false, "no_path": false.
 --shorten shortens an AtlasRRT path by random shortcuts on the manifold.
 Angles are periodic: a path may cross phi = +-pi or theta = 0, so its last pose is the goal
 or the same orientation written with other angles (phi +- 2pi, or phi + pi with -theta).
 POSE is x,y,z,phi,theta,sigma (tilt-and-torsion; 35deg, pi/8 accepted) or the name of a
 reference pose of the robot (e.g. q1).  The path is checked independently at --subdivide
 interpolated points per step (taut.statics._feasibility).  No path is an answer (exit 0):
-"found": false, with "exhausted": true for a proof (A*), false when a budget ran out.
+"found": false, with "no_path": true for a proof (A*), false when a budget ran out.
 JSON: {"planner", "method", "found", "path": [[x,y,z,phi,theta,sigma], ...], "charts",
-"nodes", "elapsed_s", "min_tension_margin", "expanded", "exhausted", "length", "verified"}."""
+"nodes", "elapsed_s", "min_tension_margin", "expanded", "no_path", "complete", "length", "verified"}."""
 
 
 def _pose(robot: Robot, text: str, what: str) -> np.ndarray:
@@ -192,31 +192,28 @@ def run(ns: argparse.Namespace) -> int:
     t0 = time.perf_counter()
     method, res = _run(ns, M, y0, y1)
     elapsed = time.perf_counter() - t0
-    data = {
-        "robot": robot.name,
-        "planner": ns.planner,
-        "method": method,
-        "found": res.found,
-        "path": [],
-        "charts": res.charts,
-        "nodes": res.nodes if method == "atlasrrt" else None,
-        "elapsed_s": elapsed,
-        "min_tension_margin": None,
-        "expanded": res.expanded if method == "astar" else None,
-        "exhausted": res.exhausted,
-        "length": None,
-        "verified": None,
-        "fixed": fixed,
-    }
+    # the path as poses (not the manifold's points), the count of the planner that ran (None
+    # for the other's), and the time of both planners of auto
+    data = (
+        {"robot": robot.name, "planner": ns.planner}
+        | res.as_dict()
+        | {
+            "path": [],
+            "nodes": res.nodes if method == "atlasrrt" else None,
+            "expanded": res.expanded if method == "astar" else None,
+            "elapsed_s": elapsed,
+            "min_tension_margin": None,
+            "verified": None,
+            "fixed": fixed,
+        }
+    )
     table = None  # the path's poses and extreme tensions, one row per pose
     if res.found:
         poses = M.align(M.pose(res.path), start)  # begins at --start as written
         lo, hi = M.tension_range(res.path)
         margin = np.minimum(lo - M.f_min, M.f_max - hi).min()
         check = verify_path(robot, poses, E=M.E, subdivide=ns.subdivide)
-        data.update(
-            path=poses.tolist(), min_tension_margin=float(margin), length=res.length, verified=check.all_feasible
-        )
+        data.update(path=poses.tolist(), min_tension_margin=float(margin), verified=check.all_feasible)
         table = np.hstack([poses, lo, hi])
 
     def human(d: dict) -> None:
@@ -231,8 +228,8 @@ def run(ns: argparse.Namespace) -> int:
                 f"{'feasible' if d['verified'] else 'NOT feasible'} at every interpolated pose"
             )
         else:
-            if d["exhausted"]:
-                why = "proved: the start's component is exhausted at the chart radius"
+            if d["no_path"]:
+                why = "proved: the start's component, covered at the chart radius, does not reach the goal"
             elif d["method"] == "atlasrrt":
                 why = f"not a proof: AtlasRRT's budget of {d['nodes']} nodes ran out"
             else:

@@ -35,6 +35,36 @@ MAX_RATE = 1e6
 #: Most RK4 steps of the plant per control period.
 MAX_SUBSTEPS = 1000
 
+#: The keys of ``taut simulate --json`` taken from :meth:`ControlResult.as_dict`, each with
+#: the field it holds: the per-update arrays the command does not print (velocity, error,
+#: command, ...) are left out, and ``feasible`` is the verdict of the whole run.
+RESULT_KEYS = {
+    "kp": "kp",
+    "kd": "kd",
+    "rate_hz": "rate_hz",
+    "substeps": "substeps",
+    "method": "method",
+    "pose_names": "pose_names",
+    "updates": "updates",
+    "reference": "reference",
+    "tensions": "tensions",
+    "tracking_error_max": "tracking_error_max",
+    "tracking_error_rms": "tracking_error_rms",
+    "position_error_max": "position_error_max",
+    "rotation_error_max": "rotation_error_max",
+    "min_tension_margin": "min_tension_margin",
+    "slack_events": "slack_events",
+    "first_failure_time": "first_failure_time",
+    "elapsed_s": "elapsed_s",
+    "complete": "complete",
+    "time": "times",
+    "pose": "poses",
+    "lower_tension_margin": "lower_margin",
+    "upper_tension_margin": "upper_margin",
+    "distribution_failures": "failures",
+    "feasible": "all_feasible",
+}
+
 DISTURBANCE_HELP = (
     "external wrench on the platform, unknown to the controller: T0:W (a step from T0 s on) or "
     "T0:T1:W (from T0 to T1 s), W the wrench's components comma-separated (forces [N], then "
@@ -139,41 +169,18 @@ def run(ns: argparse.Namespace) -> int:
             decimate=every,
             progress=progress,
         )
-    upper = res.upper_margin
-    first = res.first_failure_time
+    result = res.as_dict()
     data = {
         "robot": robot.name,
         "controller": ns.controller,
         "law": ns.law,
         "duration": duration,
-        "rate_hz": rate,
-        "substeps": ns.substeps,
-        "kp": res.kp.tolist(),
-        "kd": res.kd.tolist(),
         "mass_error": ns.mass_error,
         "disturbance": None
         if wd is None
         else [{"start": a, "end": None if math.isinf(b) else b, "wrench": list(w)} for a, b, w in wd.steps],
-        "method": ns.method,
-        "pose_names": list(res.pose_names),
-        "samples": int(res.times.size),
-        "updates": res.updates,
-        "time": res.times.tolist(),
-        "pose": res.poses.tolist(),
-        "reference": res.reference.tolist(),
-        "tensions": res.tensions.tolist(),
-        "tracking_error_max": res.tracking_error_max.tolist(),
-        "tracking_error_rms": res.tracking_error_rms.tolist(),
-        "position_error_max": res.position_error_max,
-        "rotation_error_max": res.rotation_error_max,
-        "min_tension_margin": res.min_tension_margin if math.isfinite(res.min_tension_margin) else None,
-        "lower_tension_margin": res.lower_margin,
-        "upper_tension_margin": upper if math.isfinite(upper) else None,
-        "slack_events": res.slack_events,
-        "distribution_failures": res.failures,
-        "first_failure_time": first,
-        "feasible": res.all_feasible,
-    }
+        "samples": len(result["times"]),
+    } | {key: result[name] for key, name in RESULT_KEYS.items()}
     if out is not None:
         n = robot.n_cables
         head = [

@@ -35,14 +35,7 @@ def run(ns: argparse.Namespace) -> int:
             )
     res = distribute_tensions(robot, pose, wrench=wrench, method=ns.method)
     feasible = bool(res.feasible)
-    data = {
-        "robot": robot.name,
-        "pose": pose.tolist(),
-        "tensions": res.tensions.tolist() if feasible else None,
-        "feasible": feasible,
-        "status": str(res.status),
-        "method": res.method,
-    }
+    data = {"robot": robot.name, "pose": pose.tolist()} | res.as_dict()
 
     def human(d: dict) -> None:
         con = console()

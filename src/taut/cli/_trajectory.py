@@ -89,11 +89,9 @@ def run(ns: argparse.Namespace) -> int:
         W = full_poses(robot, W)
         t, P = timed_moves(W, speed=ns.speed or DEFAULT_SPEED, dwell=1.0 if ns.dwell is None else ns.dwell, dt=ns.dt)
     res = run_trajectory(robot, t, P)
-    data = {"robot": robot.name} | res.summary()
+    data = {"robot": robot.name} | res.as_dict()
     # users read 1-based cable and object numbers
     data["transitions"] = [e | {"cable": e["cable"] + 1, "object": e["object"] + 1} for e in data["transitions"]]
-    data["times"] = res.times.tolist()
-    data["length_controlled"] = res.controlled.tolist()
     if out is not None:
         n = robot.n_cables
         head = [

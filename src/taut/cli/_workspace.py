@@ -107,7 +107,7 @@ def run(ns: argparse.Namespace) -> int:
             progress=progress,
             **({} if ns.max_poses is None else {"max_poses": ns.max_poses}),
         )
-    data = {"robot": robot.name, "condition": ns.condition} | res.summary()
+    data = res.as_dict()
     if out is not None:
         with written(out, "--out") as tmp:
             res.save(tmp)

@@ -296,7 +296,7 @@ class CheckResult(Result):
     >>> robot = example("adjustable-8cable")
     >>> res = check_poses(robot, trajectory_poses(robot, "sim-b")[120:130])
     >>> res.steps()[5]["force_closure_singular"], sorted(res.as_dict())
-    (True, ['capsules', 'jacobian_ratio', 'poses', 'steps'])
+    (True, ['capsules', 'jacobian_ratio', 'poses', 'steps', 'summary'])
     """
 
     poses: np.ndarray  #: ``(N, pose_size)``
@@ -370,10 +370,45 @@ class CheckResult(Result):
             for k in range(len(self.poses))
         ]
 
+    def summary(self) -> dict[str, Any]:
+        """The verdict of the whole trajectory, with 0-based pose indices: the number of
+        ``poses``; the first pose that collides (``first_collision``), is Jacobian singular,
+        force-closure singular, or any of them (``first_problem``), each None when none
+        does; the inclusive ``[first, last]`` runs of consecutive poses that collide
+        (``collision_steps``) or are singular; and the smallest ``min_clearance`` [m] (None
+        without poses or pairs).
+
+        Returns
+        -------
+        dict
+            In plain JSON types.
+
+        Examples
+        --------
+        >>> from taut.model import example
+        >>> from taut.collision import check_poses, trajectory_poses
+        >>> robot = example("adjustable-8cable")
+        >>> check_poses(robot, trajectory_poses(robot, "sim-b")[120:130]).summary()["force_closure_singular_steps"]
+        [[5, 9]]
+        """
+        flags = {
+            "collision": self.collides,
+            "jacobian_singular": self.jacobian_singular,
+            "force_closure_singular": self.force_closure_singular,
+        }
+        clear = self.proximity.min_clearance
+        return jsonable(
+            {"poses": len(self.poses)}
+            | {f"first_{name}": self.first(f) for name, f in flags.items()}
+            | {"first_problem": self.first(self.problems)}
+            | {f"{name}_steps": _runs(f) for name, f in flags.items()}
+            | {"min_clearance": float(np.min(clear)) if len(clear) else None}
+        )
+
     def as_dict(self) -> dict[str, Any]:
         """The result in plain JSON types: the ``capsules``' names (0-based, cables first),
-        the ``poses``, the ``jacobian_ratio`` of each pose and its record of :meth:`steps`
-        (0-based pose and capsule indices).
+        the ``poses``, the ``jacobian_ratio`` of each pose, its record of :meth:`steps` and
+        the :meth:`summary` (0-based pose and capsule indices).
 
         Returns
         -------
@@ -386,8 +421,20 @@ class CheckResult(Result):
                 "poses": self.poses,
                 "jacobian_ratio": self.jacobian_ratio,
                 "steps": self.steps(),
+                "summary": self.summary(),
             }
         )
+
+
+def _runs(flags: np.ndarray) -> list[list[int]]:
+    """The inclusive ``[first, last]`` index ranges of consecutive true ``flags``."""
+    idx = np.flatnonzero(flags)
+    if not idx.size:
+        return []
+    breaks = np.flatnonzero(np.diff(idx) > 1)
+    starts = np.r_[idx[0], idx[breaks + 1]]
+    ends = np.r_[idx[breaks], idx[-1]]
+    return [[int(s), int(e)] for s, e in zip(starts, ends)]
 
 
 def check_poses(

@@ -19,6 +19,7 @@ from taut._lazy import lazy_exports
 if TYPE_CHECKING:
     from taut.dgp._formulation import build_subproblem, load, reference_choice
     from taut.dgp._inverse import IGPResult, IGPSolution, solve_igp
+    from taut.dgp._point_mass import LeastSquaresFit
     from taut.dgp._solve import DGPResult, DGPSolution, solve_dgp, solve_subset
     from taut.dgp._stability import is_stable, reduced_hessian
     from taut.dgp._tracking import track_equilibrium, track_path
@@ -32,6 +33,7 @@ _LAZY = {
     "IGPResult": "taut.dgp._inverse",
     "IGPSolution": "taut.dgp._inverse",
     "solve_igp": "taut.dgp._inverse",
+    "LeastSquaresFit": "taut.dgp._point_mass",
     "DGPResult": "taut.dgp._solve",
     "DGPSolution": "taut.dgp._solve",
     "solve_dgp": "taut.dgp._solve",
@@ -51,6 +53,7 @@ __all__ = [
     "DGPSolution",
     "IGPResult",
     "IGPSolution",
+    "LeastSquaresFit",
     "MAX_SUBPROBLEM_BOXES",
     "UndecidedBox",
     "build_subproblem",

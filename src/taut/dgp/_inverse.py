@@ -68,6 +68,7 @@ import numpy.typing as npt
 from taut._checks import as_count, as_number
 from taut._results import Result, jsonable
 from taut.dgp._formulation import load
+from taut.dgp._point_mass import point_mass_igp, point_mass_stable
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import UndecidedBox, cause_of, scaled
 from taut.errors import CableSetError, PoseError, UnsupportedRobotError
@@ -107,10 +108,10 @@ class IGPSolution(Result):
     ----------
     taut : tuple of int
         The taut cables (0-based indices).
-    position : ndarray, shape (3,)
-        Platform reference point [m].
-    orientation : ndarray, shape (3,)
-        Angles [rad] in the robot's orientation convention.
+    position : ndarray, shape (d,)
+        Platform reference point [m] (``d`` = 2 for a planar point mass).
+    orientation : ndarray, shape (3,) or (0,)
+        Angles [rad] in the robot's orientation convention; none for a point mass.
     tensions : ndarray, shape (n,)
         Every cable's tension [N] (0 for slack ones).
     lengths : ndarray, shape (n,)
@@ -250,10 +251,11 @@ class IGPResult(Result):
 
 def _check_robot(robot: Robot) -> None:
     refuse_swivels(robot, "the inverse geometrico-static problem")
-    if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
+    if not robot.is_point_mass and (robot.dimension != 3 or robot.n_joints):
         kind = "planar" if robot.dimension != 3 else "point-mass" if robot.is_point_mass else "jointed"
         raise UnsupportedRobotError(
-            f"the inverse geometrico-static problem needs a spatial rigid platform without joints; {robot.name} is {kind}"
+            f"the inverse geometrico-static problem needs a spatial rigid platform without joints or a point mass; "
+            f"{robot.name} is {kind}"
         )
 
 
@@ -273,8 +275,12 @@ def _check_taut(robot: Robot, taut: Iterable[int]) -> tuple[int, ...]:
         raise CableSetError(f"taut cables: no cable {numbers} (0-based index {bad}); {robot.name} has cables 1..{n}")
     if len(set(indices)) != len(indices):
         raise CableSetError(f"taut cables: {[i + 1 for i in indices]} names a cable twice")
-    if not 2 <= len(indices) <= 6:
-        raise CableSetError(f"the inverse geometrico-static problem takes 2 to 6 taut cables, got {len(indices)}")
+    low, high = (1, robot.dimension) if robot.is_point_mass else (2, 6)
+    if not low <= len(indices) <= high:
+        kind = f" of a {robot.dimension}-D point mass" if robot.is_point_mass else ""
+        raise CableSetError(
+            f"the inverse geometrico-static problem{kind} takes {low} to {high} taut cables, got {len(indices)}"
+        )
     return tuple(sorted(indices))
 
 
@@ -313,20 +319,21 @@ def _position_box(
     """The search box of the platform origin: given, or the intersection over the taut
     cables of ``a_i ± (reach_i + ‖r_i‖)`` with ``reach_i`` the cable's largest length, or
     the diagonal of the exit points' bounding box for a cable without one."""
+    d = robot.dimension
     if box is not None:
         try:
             lo, hi = (np.asarray(b, float).ravel() for b in box)
         except (TypeError, ValueError):
-            raise PoseError(f"box: expected (lower corner, upper corner) of 3 numbers each, got {box!r}") from None
-        if lo.size != 3 or hi.size != 3 or not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi))):
-            raise PoseError(f"box: expected two finite corners of 3 numbers, got {box!r}")
+            raise PoseError(f"box: expected (lower corner, upper corner) of {d} numbers each, got {box!r}") from None
+        if lo.size != d or hi.size != d or not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi))):
+            raise PoseError(f"box: expected two finite corners of {d} numbers, got {box!r}")
         if np.any(lo >= hi):
             raise PoseError(f"box: the lower corner {lo.tolist()} must lie below the upper corner {hi.tolist()}")
         return lo, hi
     a, r = robot.exits, robot.anchors
     diagonal = float(np.linalg.norm(a.max(0) - a.min(0)))
     lmax = robot.length_bounds[1]
-    lo, hi = np.full(3, -np.inf), np.full(3, np.inf)
+    lo, hi = np.full(d, -np.inf), np.full(d, np.inf)
     for i in taut:
         reach = (lmax[i] if np.isfinite(lmax[i]) else diagonal) + float(np.linalg.norm(r[i]))
         lo, hi = np.maximum(lo, a[i] - reach), np.minimum(hi, a[i] + reach)
@@ -517,10 +524,11 @@ def solve_igp(
     Parameters
     ----------
     robot : Robot
-        A spatial rigid platform without joints or swivelling pulleys.
+        A spatial rigid platform without joints or swivelling pulleys, or a point mass
+        (spatial or planar: the ``d`` force balances of :mod:`taut.dgp._point_mass`).
     taut : iterable of int
-        The 0-based indices of the ``m`` taut cables, ``2 ≤ m ≤ 6`` (the cables the command
-        line numbers 1, 2, 3 are ``[0, 1, 2]``).
+        The 0-based indices of the ``m`` taut cables, ``2 ≤ m ≤ 6`` (``1 ≤ m ≤ d`` for a
+        point mass; the cables the command line numbers 1, 2, 3 are ``[0, 1, 2]``).
     fixed : mapping of str to float
         Exactly ``m`` pose coordinates by name [m, rad]: the robot's ``pose_names``
         (``x, y, z, a, b, c``; ``phix, phiy, phiz`` are accepted for the ``xyz``
@@ -548,12 +556,12 @@ def solve_igp(
     Raises
     ------
     CableSetError
-        Taut cables that are not 2 to 6 distinct cables of the robot.
+        Taut cables that are not 2 to 6 (point mass: 1 to ``d``) distinct cables of the robot.
     PoseError
         Fixed coordinates that are not ``m`` distinct pose coordinates with finite values,
         or a bad ``box``.
     UnsupportedRobotError
-        A planar, point-mass or jointed robot, or a swivelling pulley.
+        A planar rigid or jointed robot, or a swivelling pulley.
     TautError
         A bad ``tol`` or ``max_boxes``.
 
@@ -587,7 +595,11 @@ def solve_igp(
     boxes = 0
     exhausted = False
     if np.all(pos_lo < pos_hi):  # the taut cables' reach boxes can miss each other
-        pb = _build(robot, idx, values, pos_lo, pos_hi)
+        if robot.is_point_mass:
+            system, statics, lo, hi, primary, free = point_mass_igp(robot, idx, values, pos_lo, pos_hi)
+            pb = _Problem(system, statics, lo, hi, primary, free, [])
+        else:
+            pb = _build(robot, idx, values, pos_lo, pos_hi)
         res = branch_and_prune(
             pb.system,
             pb.lo,
@@ -652,7 +664,7 @@ def _undecided(
     through the cable lengths over it: the anchor ``b_i = p + R r_i`` lies within ``‖r_i‖``
     of the origin ``p``, which lies in the box's position range."""
     k = lo.size - len(taut)
-    p_lo = np.array([fixed.get(c, 0.0) for c in range(3)])
+    p_lo = np.array([fixed.get(c, 0.0) for c in range(robot.dimension)])
     p_hi = p_lo.copy()
     p_lo[pb.free_pos], p_hi[pb.free_pos] = lo[: len(pb.free_pos)], hi[: len(pb.free_pos)]
     a, r = robot.exits[list(taut)], robot.anchors[list(taut)]
@@ -680,9 +692,13 @@ def _solution(
     pose[[3 + k for k in pb.free_ang]] = np.arctan2(cs[:, 1], cs[:, 0])
     if robot.orientation == "tilt-torsion" and 2 in pb.free_ang:  # the unknown was ψ = σ − φ
         pose[5] = math.remainder(pose[3] + pose[5], 2 * math.pi)
-    p, R = pose[:3], rotation_matrix(pose[3:], robot.orientation)
+    if robot.is_point_mass:  # no orientation: the anchors and the load point are at p
+        d = robot.dimension
+        p, R, gp, orientation = pose[:d], np.eye(d), np.zeros(d), np.zeros(0)
+    else:
+        p, R, orientation = pose[:3], rotation_matrix(pose[3:], robot.orientation), pose[3:]
+        _, _, gp = load(robot)
     a, r = robot.exits, robot.anchors
-    _, _, gp = load(robot)
     b = p + r @ R.T
     lengths = np.linalg.norm(a - b, axis=1)
     idx = list(taut)
@@ -692,11 +708,12 @@ def _solution(
     slack = [k for k in range(robot.n_cables) if k not in taut]
     # a slack cable can be paid out beyond its span, so only its upper bound can fail
     out_of_bounds = [k for k in range(robot.n_cables) if lengths[k] > lmax[k] or (k in taut and lengths[k] < lmin[k])]
-    stable = is_stable(a[idx], b[idx], p + R @ gp, tensions[idx], lengths[idx])
+    stable_at = point_mass_stable if robot.is_point_mass else is_stable
+    stable = stable_at(a[idx], b[idx], p + R @ gp, tensions[idx], lengths[idx])
     return IGPSolution(
         tuple(taut),
         p,
-        pose[3:],
+        orientation,
         tensions,
         lengths,
         tuple(slack),

@@ -7,7 +7,9 @@ geometrico-static problem (Berti 2015, Ch. 2–3).
 :mod:`taut.dgp._formulation` (for ``3 ≤ m ≤ 5`` every box is also contracted onto the pose
 manifold of the rigidity and length equations, its ``geometry``) — through a
 :mod:`taut.parallel` executor, and classifies every solution by the reduced Hessian
-(:mod:`taut.dgp._stability`).  An equilibrium on the border of two taut subsets — a
+(:mod:`taut.dgp._stability`).  A point mass, spatial or planar, hangs on subsets of up to
+``d`` cables, each a square system of :mod:`taut.dgp._point_mass` solved the same way (one
+taut cable included: a point, not a continuum).  An equilibrium on the border of two taut subsets — a
 cable at its length with zero tension, so that its certified box straddles the bound of
 one subset's tension or of the other's slack-cable inequality — is reported once, with the
 smaller subset as ``taut`` and the larger as ``boundary``: at the certificate's precision it
@@ -35,6 +37,13 @@ import numpy.typing as npt
 from taut._checks import as_array, as_count, as_number
 from taut._results import Result, freeze, jsonable
 from taut.dgp._formulation import Subproblem, build_subproblem, load
+from taut.dgp._point_mass import (
+    LeastSquaresFit,
+    build_point_mass,
+    least_squares_fit,
+    point_mass_load,
+    point_mass_stable,
+)
 from taut.dgp._single_cable import single_cable_equilibria
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import MAX_SUBPROBLEM_BOXES, UndecidedBox, cause_of, subproblem_box
@@ -67,16 +76,17 @@ class DGPSolution(Result):
     ----------
     taut : tuple of int
         The taut cables (0-based indices).
-    position : ndarray, shape (3,)
-        Platform reference point [m].
-    orientation : ndarray, shape (3,)
-        Angles [rad] in the robot's orientation convention.
+    position : ndarray, shape (d,)
+        Platform reference point [m] (``d`` = 3 in space, 2 in the plane).
+    orientation : ndarray, shape (3,) or (0,)
+        Angles [rad] in the robot's orientation convention; none for a point mass.
     tensions : ndarray, shape (n,)
         Every cable's tension [N] (0 for slack ones).
     stable : bool
         The reduced Hessian is positive definite (:func:`is_stable`).
     certificate_width : float
-        Width of the Krawczyk box proven to hold this solution (0 for one taut cable).
+        Width of the Krawczyk box proven to hold this solution (0 for one taut cable of a
+        rigid platform).
     uniqueness_radius : float
         Half-width of the inflated box holding no other solution.
     continuum : tuple of float or None
@@ -156,6 +166,10 @@ class DGPResult(Result):
         Boxes processed by branch-and-prune over all sub-problems.
     elapsed_s : float
         Wall-clock time [s].
+    least_squares : LeastSquaresFit or None
+        Point masses only: the least-squares fit of all the lengths that cable-printer
+        firmware computes — not an equilibrium, an extra to compare with
+        (:mod:`taut.dgp._point_mass`).
     complete : bool
         No box was left undecided (a property).
     exhausted : bool
@@ -182,6 +196,8 @@ class DGPResult(Result):
     undecided_enclosures: tuple[UndecidedBox, ...]
     boxes: int  #: boxes processed by branch-and-prune over all sub-problems
     elapsed_s: float
+    #: point masses: the least-squares fit of all the lengths (firmware's answer, not an equilibrium)
+    least_squares: LeastSquaresFit | None = None
 
     def __post_init__(self) -> None:
         # solutions computed by worker processes arrive unpickled, their arrays writeable
@@ -207,8 +223,9 @@ class DGPResult(Result):
     def as_dict(self) -> dict:
         """The result as ``taut fk --json`` prints it, with 0-based cables: ``solutions``,
         ``complete``, ``exhausted``, ``subproblems``, ``undecided_boxes``,
-        ``undecided_enclosures``, ``boxes``, ``elapsed_s``."""
-        return {
+        ``undecided_enclosures``, ``boxes``, ``elapsed_s``; ``least_squares`` for a point
+        mass."""
+        d = {
             "solutions": [s.as_dict() for s in self.solutions],
             "complete": self.complete,
             "exhausted": self.exhausted,
@@ -218,6 +235,9 @@ class DGPResult(Result):
             "boxes": self.boxes,
             "elapsed_s": self.elapsed_s,
         }
+        if self.least_squares is not None:
+            d["least_squares"] = self.least_squares.as_dict()
+        return d
 
 
 def solution_key(solution: DGPSolution) -> tuple:
@@ -315,7 +335,7 @@ def prepared_subproblem(
     key = (robot.model_dump_json(), lengths.tobytes(), taut, split)
     hit = _PREPARED.get(key)
     if hit is None:
-        sp = build_subproblem(robot, lengths, taut)
+        sp = build_point_mass(robot, lengths, taut) if robot.is_point_mass else build_subproblem(robot, lengths, taut)
         hit = (sp, domain_pieces(sp, split))
         while len(_PREPARED) >= PREPARED_SIZE:
             _PREPARED.pop(next(iter(_PREPARED)))
@@ -335,9 +355,9 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
     robot, lengths, taut, eps, split, k, budget, multiprecision = job
     n = robot.n_cables
     a, r = robot.exits, robot.anchors
-    _, _, gp = load(robot)
+    gp = np.zeros(robot.dimension) if robot.is_point_mass else load(robot)[2]
     out: list[DGPSolution] = []
-    if len(taut) == 1:
+    if len(taut) == 1 and not robot.is_point_mass:
         for s in single_cable_equilibria(robot, lengths, taut[0]):
             out.append(
                 DGPSolution(
@@ -410,7 +430,8 @@ def solve_piece(job: Job) -> tuple[list[DGPSolution], list[Certificate | None], 
         smaller = tuple(i for i in taut if i not in zero)
         idx = list(smaller)
         g = p + R @ gp
-        stable = is_stable(a[idx], b[idx], g, tau[idx], lengths[idx]) if idx else False
+        stable_at = point_mass_stable if robot.is_point_mass else is_stable
+        stable = stable_at(a[idx], b[idx], g, tau[idx], lengths[idx]) if idx else False
         boundary = tuple(sorted(set(taut) | set(near))) if zero or near else None
         out.append(DGPSolution(smaller, p, ang, tau, stable, c.width, c.radius, boundary=boundary))
         certs.append(None if boundary else c)
@@ -544,11 +565,13 @@ def solve_dgp(
     Parameters
     ----------
     robot : Robot
-        A spatial rigid platform without joints or swivelling pulleys.
+        A spatial rigid platform without joints or swivelling pulleys, or a point mass,
+        spatial or planar (:mod:`taut.dgp._point_mass`: subsets of up to ``d`` taut
+        cables).
     lengths : array_like, shape (n,), optional
         Cable lengths [m]; default the robot's ``reference.lengths``.
     max_taut : int, optional
-        Largest taut subset searched (default ``min(n, 6)``).
+        Largest taut subset searched (default ``min(n, 6)``, ``min(n, d)`` for a point mass).
     executor : Executor or distributed.Client, optional
         Where the jobs run, as for :func:`~taut.workspace.evaluate_workspace`: ``None``
         (serial), an executor of :func:`taut.parallel.get_executor`, or a
@@ -578,12 +601,15 @@ def solve_dgp(
     DGPResult
         :attr:`~DGPResult.complete` when no box was left undecided; otherwise every
         equilibrium it does not list lies in one of its
-        :attr:`~DGPResult.undecided_enclosures` (:mod:`taut.dgp._undecided`).
+        :attr:`~DGPResult.undecided_enclosures` (:mod:`taut.dgp._undecided`).  Lengths that
+        admit no equilibrium give no solution, complete; for a point mass
+        :attr:`~DGPResult.least_squares` holds, apart, the least-squares fit of the lengths.
 
     Raises
     ------
     TautError
-        A planar, point-mass or jointed robot, lengths that are not ``n`` positive numbers,
+        A planar rigid or jointed robot, a point mass without a load, lengths that are not
+        ``n`` positive numbers,
         no reference lengths to default to, lengths that put the platform beyond
         :data:`MAX_SCALE` ``tol`` from the origin (where double precision cannot resolve
         ``tol``), or a bad option.
@@ -608,8 +634,11 @@ def solve_dgp(
     (6, 1, True)
     """
     refuse_swivels(robot, "the DGP solver")
-    if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
-        raise TautError("the DGP solver handles spatial rigid platforms without joints")
+    if not robot.is_point_mass and (robot.dimension != 3 or robot.n_joints):
+        raise TautError("the DGP solver handles spatial rigid platforms without joints, and point masses")
+    most = robot.dimension if robot.is_point_mass else 6
+    if robot.is_point_mass:
+        point_mass_load(robot)  # refuses a point mass without a load
     if lengths is None:
         if robot.reference is None or robot.reference.lengths is None:
             raise TautError(f"{robot.name} has no reference lengths: give the cable lengths")
@@ -618,7 +647,7 @@ def solve_dgp(
     tol = as_number(tol, "tol", positive=True)
     check_scale(robot, checked, tol)
     n = robot.n_cables
-    top = min(n, 6) if max_taut is None else min(n, 6, as_count(max_taut, "max_taut"))
+    top = min(n, most) if max_taut is None else min(n, most, as_count(max_taut, "max_taut"))
     split = SPLIT if split is None else as_count(split, "split", minimum=0)
     if split > 10:
         raise TautError(f"split must be between 0 and 10 (up to 1024 pieces), got {split}")
@@ -669,4 +698,5 @@ def solve_dgp(
         if not any(_same_border(sol, other) for other in solutions):
             solutions.append(sol)
     solutions.sort(key=solution_key)
-    return DGPResult(tuple(solutions), len(subsets), tuple(undecided), boxes, time.perf_counter() - t0)
+    fit = least_squares_fit(robot, checked) if robot.is_point_mass else None
+    return DGPResult(tuple(solutions), len(subsets), tuple(undecided), boxes, time.perf_counter() - t0, fit)

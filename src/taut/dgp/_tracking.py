@@ -51,6 +51,7 @@ from numba import njit
 from taut._checks import as_array
 from taut.dgp._formulation import Subproblem, build_subproblem, frame_from_points, load
 from taut.dgp._inverse import IGPSolution
+from taut.dgp._point_mass import PointMassTracker, pivot
 from taut.dgp._solve import DGPSolution, check_lengths
 from taut.dgp._stability import smallest_eigenvalue
 from taut.errors import TautError, TrackingLostError
@@ -109,7 +110,9 @@ def _cache(robot: Robot) -> _RobotCache:
     return rc
 
 
-def _compiled(robot: Robot, taut: tuple[int, ...]) -> _Compiled:
+def _compiled(robot: Robot, taut: tuple[int, ...]) -> _Compiled | PointMassTracker:
+    if robot.is_point_mass:
+        return PointMassTracker(robot, taut, BOX_MARGIN, BOX_FLOOR)
     rc = _cache(robot)
     per_robot = rc.subsets
     c = per_robot.get(taut)
@@ -263,7 +266,7 @@ def _attempt(
     robot: Robot, s: _State, taut: tuple[int, ...], lengths: np.ndarray
 ) -> str | tuple[_State, float, np.ndarray]:
     """Newton + Krawczyk on subset ``taut``; ``(state, box width)`` or a reason string."""
-    if not 2 <= len(taut) <= 6:
+    if not (1 <= len(taut) <= robot.dimension if robot.is_point_mass else 2 <= len(taut) <= 6):
         return f"a taut set of {len(taut)} cable(s) has no isolated equilibrium to track"
     status, p, R, ang, tau, spans, eig, width = _compiled(robot, taut).update(lengths, s)
     if status == -1:
@@ -305,6 +308,9 @@ def _advance(robot: Robot, s: _State, lengths: np.ndarray) -> tuple[_State, floa
         else:  # add the most stretched slack cable (starting tension 0)
             add = max(stretched, key=lambda k: dist[k] - lengths[k])
             nxt = tuple(sorted(taut + (add,)))
+            if robot.is_point_mass and len(nxt) > robot.dimension:
+                # a point hangs on at most d cables: the added one takes the place of one of them
+                nxt = pivot(robot, new.p, new.tensions, lengths, taut, add)
         if nxt in tried:
             raise TrackingLostError(
                 f"tracking lost at lengths {lengths.tolist()}: the taut set cycles through "
@@ -318,8 +324,8 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
     taut cables' spans (a solution does not carry them) and, for its slack cables, the new
     ``lengths`` (they enter no equation)."""
     refuse_swivels(robot, "tracking")
-    if robot.dimension != 3 or robot.is_point_mass or robot.n_joints:
-        raise TautError("tracking handles spatial rigid platforms without joints")
+    if not robot.is_point_mass and (robot.dimension != 3 or robot.n_joints):
+        raise TautError("tracking handles spatial rigid platforms without joints, and point masses")
     if not isinstance(sol, (DGPSolution, IGPSolution)):
         raise TautError(f"tracking starts from a DGPSolution or an IGPSolution, got a {type(sol).__name__}")
     tau = np.asarray(sol.tensions, float)
@@ -327,7 +333,13 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
         raise TautError(f"{robot.name} has {robot.n_cables} cables, the solution has {tau.size} tensions")
     taut = tuple(sorted(int(i) for i in sol.taut))
     p = np.asarray(sol.position, float)
-    R = rotation_matrix(np.asarray(sol.orientation, float), robot.orientation)
+    if p.shape != (robot.dimension,):
+        raise TautError(f"{robot.name} is {robot.dimension}-D, the solution's position has {p.size} coordinates")
+    R = (
+        np.eye(p.size)
+        if robot.is_point_mass
+        else rotation_matrix(np.asarray(sol.orientation, float), robot.orientation)
+    )
     held = lengths.copy()
     held[list(taut)] = np.linalg.norm(p + robot.anchors[list(taut)] @ R.T - robot.exits[list(taut)], axis=1)
     return _State(taut, held, p, R, tau)
@@ -344,7 +356,9 @@ def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths
     Parameters
     ----------
     robot : Robot
-        A spatial rigid platform without joints or swivelling pulleys.
+        A spatial rigid platform without joints or swivelling pulleys, or a point mass
+        (spatial or planar: Newton and Krawczyk on the system of :mod:`taut.dgp._point_mass`;
+        a single taut cable is then an isolated equilibrium, tracked too).
     solution : DGPSolution or IGPSolution
         The equilibrium before the change.
     lengths : array_like, shape (n,)
@@ -359,10 +373,10 @@ def track_equilibrium(robot: Robot, solution: DGPSolution | IGPSolution, lengths
     Raises
     ------
     TrackingLostError
-        The new equilibrium cannot be certified (it left the branch, or one taut cable is
-        left: a continuum).
+        The new equilibrium cannot be certified (it left the branch, or one taut cable of a
+        rigid platform is left: a continuum).
     TautError
-        A planar, point-mass or jointed robot, lengths that are not ``n`` positive numbers,
+        A planar rigid or jointed robot, lengths that are not ``n`` positive numbers,
         or a ``solution`` that is not one.
 
     References

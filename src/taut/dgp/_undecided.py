@@ -73,7 +73,7 @@ class UndecidedBox(Result):
     variables : tuple of str
         Names of the pose unknowns: for the direct problem the fixed-frame coordinates
         ``q1_x … q3_z`` of the reference points (and the normal ``n_x, n_y, n_z =
-        (q2 − q1) × (q3 − q1)``); for the inverse problem the free position coordinates and
+        (q2 − q1) × (q3 − q1)``), the position ``x, y[, z]`` of a point mass; for the inverse problem the free position coordinates and
         the cosine and sine of each free angle.
     lo, hi : tuple of float
         The enclosure of the pose unknowns.
@@ -154,7 +154,7 @@ def subproblem_box(sp: Subproblem, lengths: np.ndarray, lo: np.ndarray, hi: np.n
     return UndecidedBox(
         tuple(sp.taut),
         cause,
-        REFERENCE_UNKNOWNS[:k],
+        getattr(sp, "names", REFERENCE_UNKNOWNS)[:k],  # a point mass's: its position
         tuple(lo[:k].tolist()),
         tuple(hi[:k].tolist()),
         tension_lo,

@@ -13,7 +13,7 @@ if TYPE_CHECKING:
     from taut.model._io import parse_robot, read_text, robot_from_dict, robot_to_dict, save_robot
     from taut.model._limits import MAX_MAGNITUDE
     from taut.model._mjcf import mjcf_text, pose_to_qpos, write_mjcf
-    from taut.model._random_robots import random_suspended_robot
+    from taut.model._random_robots import random_point_mass_robot, random_suspended_robot
     from taut.model._robot import (
         Body,
         Cable,
@@ -54,6 +54,7 @@ _LAZY = {
     "mjcf_text": "taut.model._mjcf",
     "pose_to_qpos": "taut.model._mjcf",
     "write_mjcf": "taut.model._mjcf",
+    "random_point_mass_robot": "taut.model._random_robots",
     "random_suspended_robot": "taut.model._random_robots",
     "Body": "taut.model._robot",
     "Cable": "taut.model._robot",
@@ -98,6 +99,7 @@ __all__ = [
     "parse_robot",
     "parse_xml",
     "pose_to_qpos",
+    "random_point_mass_robot",
     "random_suspended_robot",
     "read_caspr",
     "read_text",

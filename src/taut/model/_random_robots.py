@@ -126,3 +126,92 @@ def random_suspended_robot(
         reference=Reference(source="taut.model._random_robots", lengths=tuple(float(x) for x in lengths)),
     )
     return robot, lengths
+
+
+#: Cable counts of :func:`random_point_mass_robot`, spatial and planar.
+POINT_MASS_CABLES = {3: (2, 8), 2: (2, 6)}
+
+
+def random_point_mass_robot(
+    n_cables: int,
+    *,
+    dimension: int = 3,
+    seed: int | np.random.Generator,
+    perturbation: float = 0.02,
+) -> tuple[Robot, np.ndarray]:
+    """A random point mass hung from ``n`` cables, spatial or planar, and cable lengths to
+    solve its DGP for: the point-mass cases of the test suite and benchmark.
+
+    Spatial: exits round the top of a frame 2–6 m wide and deep, 2.5–4 m high, each raised or
+    lowered by up to 0.5 m (not coplanar).  Planar: exits across the top of a frame 2–6 m
+    wide at heights 2.5–4 m.  The mass, 0.5–10 kg under standard gravity (``−z``, ``−y`` in
+    the plane), is drawn inside the frame's lower part; the lengths are the distances to its
+    exits perturbed as in :func:`random_suspended_robot` (some cables then slack, or no
+    equilibrium at all when some are shortened too much) and stored as
+    ``reference.lengths``.
+
+    Parameters
+    ----------
+    n_cables : int
+        2 to 8 (spatial), 2 to 6 (planar).
+    dimension : {3, 2}
+    seed : int or numpy.random.Generator
+    perturbation : float, default 0.02
+        The relative standard deviation of the lengths around the drawn position's distances.
+
+    Returns
+    -------
+    robot : Robot
+    lengths : ndarray, shape (n_cables,)
+
+    Raises
+    ------
+    TautError
+        For a cable count or dimension out of range, a negative perturbation or a bad seed.
+
+    Examples
+    --------
+    >>> robot, lengths = random_point_mass_robot(4, seed=0)
+    >>> robot.name, robot.pose_names, lengths.shape
+    ('random point-mass 4-cable robot (seed 0)', ['x', 'y', 'z'], (4,))
+    """
+    if dimension not in POINT_MASS_CABLES:
+        raise TautError(f"a random point-mass robot is spatial (3) or planar (2), got dimension {dimension!r}")
+    low, high = POINT_MASS_CABLES[dimension]
+    if not (isinstance(n_cables, (int, np.integer)) and low <= n_cables <= high):
+        raise TautError(f"a random {dimension}-D point-mass robot has {low} to {high} cables, got {n_cables!r}")
+    if not (isinstance(perturbation, (int, float, np.number)) and np.isfinite(perturbation) and perturbation >= 0.0):
+        raise TautError(f"the length perturbation must be a non-negative number, got {perturbation!r}")
+    if not (isinstance(seed, np.random.Generator) or (isinstance(seed, (int, np.integer)) and seed >= 0)):
+        raise TautError(f"seed must be an int >= 0 or a numpy.random.Generator, got {seed!r}")
+    n = int(n_cables)
+    rng = seed if isinstance(seed, np.random.Generator) else np.random.default_rng(seed)
+    label = f" (seed {seed})" if not isinstance(seed, np.random.Generator) else ""
+    height = rng.uniform(2.5, 4.0)
+    if dimension == 3:
+        half = rng.uniform(1.0, 3.0, size=2)
+        angles = 2 * np.pi * (np.arange(n) + rng.uniform(-0.3, 0.3, n)) / n + rng.uniform(0, 2 * np.pi)
+        ray = np.column_stack([np.cos(angles), np.sin(angles)])
+        scale = 1.0 / np.max(np.abs(ray) / half, axis=1)
+        exits = np.column_stack([ray * scale[:, None], height + rng.uniform(-0.5, 0.5, n)])
+        position = np.array([*(rng.uniform(-0.5, 0.5, 2) * half), rng.uniform(0.2, 0.7) * height])
+    else:
+        half = rng.uniform(1.0, 3.0, size=1)
+        xs = np.sort(rng.uniform(-1.0, 1.0, n)) * half
+        exits = np.column_stack([xs, height + rng.uniform(-0.5, 0.5, n)])
+        position = np.array([rng.uniform(-0.5, 0.5) * half[0], rng.uniform(0.2, 0.7) * height])
+    mass = float(rng.uniform(0.5, 10.0))
+    reach = np.linalg.norm(exits - position, axis=1)
+    lengths = reach * np.exp(perturbation * rng.standard_normal(n))
+    robot = Robot(
+        name=f"random point-mass {n}-cable robot{label}",
+        description=(
+            f"{'Spatial' if dimension == 3 else 'Planar'} point mass; lengths from the position "
+            f"{np.round(position, 4).tolist()} perturbed by {perturbation:g} (taut.model._random_robots)."
+        ),
+        dimension=3 if dimension == 3 else 2,
+        platform=Platform(kind="point-mass", mass=mass),
+        cables=tuple(Cable(exit=tuple(float(c) for c in e)) for e in exits),
+        reference=Reference(source="taut.model._random_robots", lengths=tuple(float(x) for x in lengths)),
+    )
+    return robot, lengths

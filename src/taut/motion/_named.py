@@ -21,10 +21,10 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 
+from taut._results import Result
 from taut.errors import TrajectoryError
 from taut.model import Robot
 from taut.motion._waypoints import complete_waypoints
@@ -33,12 +33,31 @@ __all__ = ["RobotTrajectory", "robot_trajectory"]
 
 
 @dataclass(frozen=True)
-class RobotTrajectory:
-    """A named trajectory of a robot file.
+class RobotTrajectory(Result):
+    """A named trajectory of a robot file (:func:`robot_trajectory`).
 
-    ``waypoints`` ``(N, pose_size)`` (read-only; positions completed to poses), ``steps`` the
-    increments of each of the ``N − 1`` moves or None, ``speed`` [m/s] or None, ``dwell`` [s]
-    at each waypoint, and the file's ``description``."""
+    Attributes
+    ----------
+    name : str
+    waypoints : ndarray, shape (N, pose_size)
+        Read-only; positions completed to poses.
+    steps : tuple of int or None
+        The increments of each of the ``N − 1`` moves.
+    speed : float or None
+        [m/s].
+    dwell : float
+        [s] at each waypoint.
+    description : str or None
+        The file's description.
+
+    Examples
+    --------
+    >>> import taut
+    >>> from taut.motion import robot_trajectory
+    >>> tr = robot_trajectory(taut.example("adjustable-8cable"), "sim-a")
+    >>> tr.waypoints.flags.writeable, tr.as_dict()["steps"]
+    (False, [100, 100])
+    """
 
     name: str
     waypoints: np.ndarray
@@ -48,20 +67,8 @@ class RobotTrajectory:
     description: str | None
 
     def __post_init__(self) -> None:
-        w = np.array(self.waypoints, dtype=float)
-        w.setflags(write=False)
-        object.__setattr__(self, "waypoints", w)
-
-    def as_dict(self) -> dict[str, Any]:
-        """The trajectory as plain JSON types."""
-        return {
-            "name": self.name,
-            "description": self.description,
-            "waypoints": self.waypoints.tolist(),
-            "steps": None if self.steps is None else list(self.steps),
-            "speed": self.speed,
-            "dwell": self.dwell,
-        }
+        object.__setattr__(self, "waypoints", np.asarray(self.waypoints, dtype=float))
+        super().__post_init__()
 
 
 def robot_trajectory(robot: Robot, name: str | None = None) -> RobotTrajectory:

@@ -29,7 +29,7 @@ manifold's :class:`~taut.planning.Symmetry`, and optionally **shortened**
 (:func:`shorten_path`): random shortcuts between two path points, walked on the atlas
 the same way, replace the stretch between them when shorter.  A random search cannot
 prove that no path exists: when the budget runs out the answer is ``found=False,
-exhausted=False`` (:func:`taut.planning.plan_path` is the complete search).
+no_path=False`` (:func:`taut.planning.plan_path` is the complete search).
 
 References
 ----------
@@ -314,7 +314,7 @@ def atlas_rrt(
     a node: the budget bounds the projections, hence the time and the memory),
     ``max_charts`` charts and ``time_limit`` seconds.  ``step`` is ``δ`` (default
     ``radius / 4``, at least :data:`MIN_STEP` times the radius).  The result's ``nodes``
-    counts tree nodes; ``exhausted`` is always ``False``.
+    counts tree nodes; ``no_path`` is always ``False``.
 
     ``progress(nodes, None)`` is called every 50 iterations, ``progress(nodes, nodes)`` at the end.
 

@@ -66,8 +66,8 @@ def plan_path(
         Points of the manifold (:meth:`WrenchFeasibleManifold.lift` of two poses).
     method : {"astar", "atlasrrt"}, optional
         ``"astar"`` (:data:`METHODS`): A* over the charts of a growing atlas, complete —
-        when the start's component is exhausted without reaching the goal, no path exists
-        at the resolution ``radius`` (``exhausted``).  ``"atlasrrt"``: rapidly exploring
+        when every chart of the start's component is closed without reaching the goal, no path exists
+        at the resolution ``radius`` (``no_path``).  ``"atlasrrt"``: rapidly exploring
         trees grown on an atlas, randomised, deterministic for a ``seed``; it cannot prove
         that no path exists.
     radius : float, optional

@@ -53,8 +53,8 @@ class PathResult(Result):
         Charts in the atlas when the search stopped.
     expanded : int
         Charts closed by A* (0 for AtlasRRT).
-    exhausted : bool
-        A* closed every chart of the start's component: ``found=False`` is then a proof
+    no_path : bool
+        A* closed every chart of the start's component without reaching the goal: a proof
         that no path exists at the resolution of the chart radius.
     length : float
         Length of ``path`` in the atlas metric (NaN when not found).
@@ -67,7 +67,7 @@ class PathResult(Result):
     nodes : int
         Tree nodes grown by AtlasRRT (0 for A*).
     complete : bool
-        The question is settled: ``found`` or ``exhausted`` (a property).
+        The question is settled: ``found`` or ``no_path`` (a property).
 
     References
     ----------
@@ -92,7 +92,7 @@ class PathResult(Result):
     path: np.ndarray  #: ``(N, n)`` points on the manifold, start to goal (empty if not found)
     charts: int  #: charts in the atlas when the search stopped
     expanded: int  #: charts closed by A* (0 for AtlasRRT)
-    exhausted: bool  #: every chart closed (``found=False`` is then a proof at this resolution)
+    no_path: bool  #: every chart closed without reaching the goal: no path at this resolution (a proof)
     length: float  #: length of ``path`` in the atlas metric (NaN if not found)
     elapsed_s: float
     atlas: Atlas
@@ -102,16 +102,16 @@ class PathResult(Result):
     @property
     def complete(self) -> bool:
         """The question is settled: a path was found, or none exists at this resolution."""
-        return self.found or self.exhausted
+        return self.found or self.no_path
 
     def as_dict(self) -> dict:
         """The result in plain JSON types (``length`` ``None`` without a path), without the
-        atlas: ``method``, ``found``, ``exhausted``, ``complete``, ``path``, ``charts``,
+        atlas: ``method``, ``found``, ``no_path``, ``complete``, ``path``, ``charts``,
         ``expanded``, ``nodes``, ``length``, ``elapsed_s``."""
         return {
             "method": self.method,
             "found": self.found,
-            "exhausted": self.exhausted,
+            "no_path": self.no_path,
             "complete": self.complete,
             "path": jsonable(self.path),
             "charts": self.charts,
@@ -219,7 +219,7 @@ def astar(
 
     ``max_charts`` bounds the atlas (no chart is created beyond it, also in the middle of
     an expansion), hence the time and the memory: when it runs out the answer is
-    ``found=False, exhausted=False``.  ``progress(expanded, None)`` is called as charts are
+    ``found=False, no_path=False``.  ``progress(expanded, None)`` is called as charts are
     expanded (how many the search needs is not known in advance) and
     ``progress(expanded, expanded)`` when it stops.
 
@@ -269,7 +269,7 @@ def astar(
             if gj < g.get(j, np.inf):
                 g[j], parent[j] = gj, i
                 heapq.heappush(heap, (gj + h(j), j))
-    exhausted = found_at is None and not stopped and not heap
+    no_path = found_at is None and not stopped and not heap
     if progress is not None:
         progress(expanded, expanded)
     if found_at is None:
@@ -278,7 +278,7 @@ def astar(
             np.empty((0, start.size)),
             len(atlas.charts),
             expanded,
-            exhausted,
+            no_path,
             float("nan"),
             time.perf_counter() - t0,
             atlas,

@@ -18,6 +18,7 @@ from typing import ClassVar
 import numpy as np
 import numpy.typing as npt
 
+from taut._results import Result
 from taut.errors import PoseError, TautError
 from taut.planning._manifold import POSE_NAMES, WrenchFeasibleManifold
 
@@ -28,7 +29,7 @@ DEFAULT_RESOLUTION = (90, 46)
 
 
 @dataclass(frozen=True)
-class SliceMap:
+class SliceMap(Result):
     """The classes of a grid over the pose coordinates ``axes`` of a slice:
     ``classes[i, j]`` at ``(u[i], v[j])`` is :attr:`FEASIBLE`, :attr:`FORCE_OUT` (some
     ``f_0,i ∓ v_ii`` outside the tension bounds, or ``J`` singular) or :attr:`LENGTH_OUT`
@@ -42,19 +43,6 @@ class SliceMap:
     u: np.ndarray  #: ``(U,)`` values of ``axes[0]``
     v: np.ndarray  #: ``(V,)`` values of ``axes[1]``
     classes: np.ndarray  #: ``(U, V)`` int
-
-    def __post_init__(self) -> None:
-        for a in (self.u, self.v, self.classes):
-            a.flags.writeable = False
-
-    def as_dict(self) -> dict[str, object]:
-        """``axes``, ``u``, ``v`` and ``classes`` (rows over ``u``) as plain lists."""
-        return {
-            "axes": list(self.axes),
-            "u": self.u.tolist(),
-            "v": self.v.tolist(),
-            "classes": self.classes.tolist(),
-        }
 
 
 def _angle_limits(manifold: WrenchFeasibleManifold) -> dict[str, tuple[float, float]]:

@@ -65,6 +65,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import highspy
 import numpy as np
@@ -97,7 +98,8 @@ class TensionResult(Result):
     Attributes
     ----------
     tensions : ndarray, shape (N, n) or (n,)
-        Cable tensions [N]; zeros where no solution was found (never NaN).
+        Cable tensions [N]; zeros where no solution was found (never NaN; ``None`` in
+        :meth:`as_dict`).
     feasible : ndarray of bool, shape (N,), or bool
         The tensions balance the wrench (``‖W τ + w‖∞`` within :data:`EQUILIBRIUM_RTOL` of
         its scale) and lie within the bounds.
@@ -121,6 +123,23 @@ class TensionResult(Result):
     feasible: np.ndarray | bool  #: ``(N,)`` bool: equilibrium (to 1e-9 relative) and bounds hold
     status: np.ndarray | str  #: ``(N,)`` str: ``"optimal"``, ``"infeasible"`` (proved) or ``"not-found"``
     method: str
+
+    def as_dict(self) -> dict[str, Any]:
+        """The fields in plain JSON types, with ``tensions`` ``None`` (for one pose) or a row
+        ``None`` (for several) where no solution was found: zeros would read as tensions.
+
+        Returns
+        -------
+        dict
+            ``tensions``, ``feasible``, ``status`` and ``method``;
+            ``json.dumps(result.as_dict(), allow_nan=False)`` accepts it.
+        """
+        d = super().as_dict()
+        if isinstance(self.feasible, np.ndarray):
+            d["tensions"] = [row if ok else None for row, ok in zip(d["tensions"], self.feasible.tolist())]
+        elif not self.feasible:
+            d["tensions"] = None
+        return d
 
 
 # ---- shared numerics ---------------------------------------------------------------------

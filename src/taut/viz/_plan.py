@@ -103,7 +103,7 @@ def plot_plan(
         tx.text(
             0.5,
             0.5,
-            "no path: " + ("component exhausted" if result.exhausted else "search stopped"),
+            "no path: " + ("none exists at this radius" if result.no_path else "search stopped"),
             ha="center",
             va="center",
             transform=tx.transAxes,
