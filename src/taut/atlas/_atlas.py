@@ -359,7 +359,7 @@ def build_atlas(
     if robot.is_point_mass and theta != 0.0:
         raise PoseError(f"{robot.name}: a point-mass platform has no orientation (theta must be 0)")
     refuse_swivels(robot, "the structure atlas")
-    if not robot.is_point_mass and (robot.dimension != 2 or robot.n_joints):
+    if robot.dimension != 2 or robot.n_joints:
         raise TautError(f"{robot.name}: the structure atlas is implemented for planar platforms without joints")
     p0 = as_array(start, f"{robot.name}: the start point", finite=False, error=PoseError).reshape(-1)
     if p0.shape != (2,) or not np.isfinite(p0).all():

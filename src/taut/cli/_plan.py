@@ -75,8 +75,9 @@ def _pose(robot: Robot, text: str, what: str) -> np.ndarray:
     if text in ref:
         return np.asarray(ref[text], float)
     values = A.vector(text, what)
-    if values.size != 6:
-        raise TautError(f"{what}: expected x,y,z,phi,theta,sigma or a reference pose name, got {text!r}")
+    if values.size != robot.pose_size:
+        # a pose of the robot's own size, so that a robot the planner does not handle is refused for that reason
+        raise TautError(f"{what}: expected {','.join(robot.pose_names)} or a reference pose name, got {text!r}")
     return values
 
 

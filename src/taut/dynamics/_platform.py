@@ -163,8 +163,8 @@ def platform_dynamics(robot: Robot) -> PlatformDynamics:
     if robot.n_joints:
         names = ", ".join(b.name for b in plat.bodies)
         raise UnsupportedRobotError(
-            f"{robot.name}: forward and inverse dynamics of jointed platforms (bodies {names}) are not "
-            "supported; their equations of motion are (mass_matrix, coriolis_matrix, bias_forces)"
+            f"{robot.name}: forward and inverse dynamics are not supported for jointed platforms (bodies {names}); "
+            "their equations of motion are (mass_matrix, coriolis_matrix, bias_forces)"
         )
     if plat.mass is None:
         raise UnsupportedRobotError(f"{robot.name}: the dynamics needs the platform's mass (platform.mass)")

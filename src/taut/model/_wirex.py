@@ -501,7 +501,7 @@ def _refusal(robot: Robot) -> str | None:
     if plat.bodies:
         return "a jointed platform (platform.bodies)"
     if robot.obstacles or robot.installation_space is not None or robot.disallowed:
-        return "obstacles and installation spaces"
+        return "an obstacle or installation space (obstacles, installation_space)"
     if plat.shape is not None:
         return "a platform shape (platform.shape)"
     for i, c in enumerate(robot.cables, 1):
