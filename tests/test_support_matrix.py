@@ -66,7 +66,20 @@ SUBJECTS = {
 SUSPENDED = Subject(
     "suspended-3cable", (2.7505, 3.9798, 5.5061, 3.007, 0.340, 0.109), "1,2,3", "x=2.7505,y=3.9798,z=5.5061", True
 )
-OVERRIDES = {("taut fk", "spatial rigid"): SUSPENDED, ("taut igp", "spatial rigid"): SUSPENDED}
+#: The same robot with 0.1 m swivelling pulleys at its exits.
+SUSPENDED_PULLEYS = Subject(
+    "suspended-3pulley",
+    (2.756745, 3.986807, 5.487456, 3.005081, 0.346154, 0.111455),
+    "1,2,3",
+    "x=2.756745,y=3.986807,z=5.487456",
+    True,
+)
+OVERRIDES = {
+    ("taut fk", "spatial rigid"): SUSPENDED,
+    ("taut igp", "spatial rigid"): SUSPENDED,
+    ("taut fk", "swivelling pulleys"): SUSPENDED_PULLEYS,
+    ("taut igp", "swivelling pulleys"): SUSPENDED_PULLEYS,
+}
 
 
 @cache

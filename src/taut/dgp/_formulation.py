@@ -69,7 +69,7 @@ from numba import njit
 
 from taut._checks import as_array, as_index
 from taut.dgp._undecided import REFERENCE_UNKNOWNS, scaled
-from taut.errors import CableSetError, SingularConfigurationError
+from taut.errors import CableSetError, SingularConfigurationError, UnsupportedRobotError
 from taut.geometry import angles_from_matrix
 from taut.interval import Expr, LinearFilter, System, compile_system, compile_tape, const, evaluate_point, variables
 from taut.kinematics import refuse_swivels
@@ -83,6 +83,38 @@ COLLINEAR = 1e-9
 #: cost 25 % of the time (five CoGiRo and MARIONET-VR sub-problems: 14.0 → 10.6 s); with
 #: three or four they halve the boxes (seven sub-problems of Tables 4.3–4.6: 4.7 → 3.2 s).
 OTHER_POLES_UP_TO = 4
+
+
+def refuse_unmodelled(robot: Robot, analysis: str) -> None:
+    """Refuse what the geometrico-static equations do not model: cables that wrap around
+    obstacles or around a planar winch's exit pulley (their lengths and directions depend on
+    the wrapping, :mod:`taut.wrapping`), swivelling pulleys off a spatial rigid platform, and
+    jointed platforms (their joint forces are not balanced).
+
+    Raises
+    ------
+    UnsupportedRobotError
+        One of these, named with the reason.
+    """
+    if robot.obstacles:
+        raise UnsupportedRobotError(
+            f"{robot.name}: {analysis} models straight cables, and this robot's cables wrap around "
+            f"{len(robot.obstacles)} obstacle(s) (taut trajectory and taut atlas model the wrapping)"
+        )
+    wound = [i + 1 for i, c in enumerate(robot.cables) if c.pulley is not None]
+    if wound:
+        raise UnsupportedRobotError(
+            f"{robot.name}: {analysis} models straight cables from fixed exits, and cable(s) "
+            f"{', '.join(map(str, wound))} wrap around a winch's exit pulley (taut trajectory models the wrapping)"
+        )
+    if robot.swivel_cables and (robot.dimension != 3 or robot.is_point_mass):
+        raise UnsupportedRobotError(
+            f"{robot.name}: {analysis} models swivelling pulleys on spatial rigid platforms only"
+        )
+    if robot.n_joints:
+        raise UnsupportedRobotError(
+            f"{robot.name}: {analysis} handles platforms without joints (a jointed platform's joint forces are not balanced)"
+        )
 
 
 def load(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -69,11 +69,11 @@ import numpy.typing as npt
 from taut._checks import as_count, as_number
 from taut._results import Result, jsonable
 from taut.dgp import _planar
-from taut.dgp._formulation import load
+from taut.dgp._formulation import load, refuse_unmodelled
 from taut.dgp._point_mass import point_mass_igp, point_mass_stable
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import UndecidedBox, cause_of, scaled
-from taut.errors import CableSetError, PoseError, UnsupportedRobotError
+from taut.errors import CableSetError, PoseError
 from taut.interval import (
     MAX_BOXES,
     ONE,
@@ -251,14 +251,7 @@ class IGPResult(Result):
 
 
 def _check_robot(robot: Robot) -> None:
-    if robot.swivel_cables and (robot.dimension != 3 or robot.is_point_mass):
-        raise UnsupportedRobotError(
-            f"{robot.name}: the inverse geometrico-static problem models swivelling pulleys on spatial rigid platforms only"
-        )
-    if robot.n_joints:
-        raise UnsupportedRobotError(
-            f"the inverse geometrico-static problem needs a platform without joints; {robot.name} is jointed"
-        )
+    refuse_unmodelled(robot, "the inverse geometrico-static problem")
 
 
 def _check_taut(robot: Robot, taut: Iterable[int]) -> tuple[int, ...]:

@@ -37,7 +37,7 @@ import numpy.typing as npt
 from taut._checks import as_array, as_count, as_number
 from taut._results import Result, freeze, jsonable
 from taut.dgp import _planar
-from taut.dgp._formulation import Subproblem, build_subproblem, load
+from taut.dgp._formulation import Subproblem, build_subproblem, load, refuse_unmodelled
 from taut.dgp._point_mass import (
     LeastSquaresFit,
     build_point_mass,
@@ -49,7 +49,7 @@ from taut.dgp._pulleys import cable_spans, check_pulley_reach, pulley_single_cab
 from taut.dgp._single_cable import single_cable_equilibria
 from taut.dgp._stability import is_stable
 from taut.dgp._undecided import MAX_SUBPROBLEM_BOXES, UndecidedBox, cause_of, subproblem_box
-from taut.errors import TautError, UnsupportedRobotError
+from taut.errors import TautError
 from taut.interval import (
     MAX_BOXES,
     Box,
@@ -657,14 +657,7 @@ def solve_dgp(
     >>> [(s.taut, s.position.round(3), s.orientation.round(3)) for s in stable]
     [((0, 1), array([-0.085,  0.592]), array([-0.275]))]
     """
-    if robot.swivel_cables and (robot.dimension != 3 or robot.is_point_mass):
-        raise UnsupportedRobotError(
-            f"{robot.name}: the DGP solver models swivelling pulleys on spatial rigid platforms only"
-        )
-    if robot.n_joints:
-        raise TautError(
-            "the DGP solver handles platforms without joints (a jointed platform's equilibria are not modelled)"
-        )
+    refuse_unmodelled(robot, "the DGP solver")
     most: int
     if robot.is_point_mass:
         most = robot.dimension

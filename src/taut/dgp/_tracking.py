@@ -52,13 +52,13 @@ from numba import njit
 
 from taut._checks import as_array
 from taut.dgp import _planar
-from taut.dgp._formulation import Subproblem, build_subproblem, frame_from_points, load
+from taut.dgp._formulation import Subproblem, build_subproblem, frame_from_points, load, refuse_unmodelled
 from taut.dgp._inverse import IGPSolution
 from taut.dgp._point_mass import PointMassTracker, pivot
 from taut.dgp._pulleys import cable_spans, check_pulley_reach, pulley_update
 from taut.dgp._solve import DGPSolution, check_lengths
 from taut.dgp._stability import smallest_eigenvalue
-from taut.errors import TautError, TrackingLostError, UnsupportedRobotError
+from taut.errors import TautError, TrackingLostError
 from taut.geometry import CONVENTIONS, matrix_angles
 from taut.interval import CONST, SQR, certified_step, point_kernel
 from taut.model import Robot
@@ -349,10 +349,7 @@ def _state(robot: Robot, sol: DGPSolution | IGPSolution, lengths: np.ndarray) ->
     """The state of ``sol``, about to move to ``lengths``: the lengths it holds are its
     taut cables' spans (a solution does not carry them) and, for its slack cables, the new
     ``lengths`` (they enter no equation)."""
-    if robot.swivel_cables and (robot.dimension != 3 or robot.is_point_mass):
-        raise UnsupportedRobotError(f"{robot.name}: tracking models swivelling pulleys on spatial rigid platforms only")
-    if robot.n_joints:
-        raise TautError("tracking handles platforms without joints (a jointed platform's equilibria are not modelled)")
+    refuse_unmodelled(robot, "tracking")
     if not isinstance(sol, (DGPSolution, IGPSolution)):
         raise TautError(f"tracking starts from a DGPSolution or an IGPSolution, got a {type(sol).__name__}")
     check_pulley_reach(robot, lengths)
