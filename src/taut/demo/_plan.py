@@ -38,7 +38,7 @@ def plan_section(report: Report, radius: float = 0.2) -> PathResult:
     res = plan_path(M.implicit(), M.lift(q["q1"]), M.lift(q["q2"]), radius=radius, metric=M.pose_metric)
     elapsed = time.perf_counter() - t0
     check = verify_path(robot, M.pose(res.path), subdivide=5) if res.found else None
-    centres = M.pose(res.atlas.centres)
+    centres = M.pose(res.atlas.centres) if res.atlas is not None else M.pose(res.path)
     fig = plot_plan(M, res, slice_map(M, centres[0], span=centres))
     row = {
         "query": "q1 → q2",
