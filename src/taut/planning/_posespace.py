@@ -63,6 +63,13 @@ POSE_METHODS = ("rrtconnect", "grid")
 SHORTCUTS = 200
 #: Most poses checked in one batch while a tree is connected greedily.
 CONNECT_BATCH = 64
+#: Random samples whose extensions' ends are checked in one batch.
+SAMPLE_BATCH = 64
+#: A found path is checked again every ``resolution / FINE``: a segment that crosses a thin
+#: invalid region between its checked poses is replaced by a detour.
+FINE = 10
+#: The detour's tree-node budget is ``max_nodes / REPAIR_SHARE``.
+REPAIR_SHARE = 10
 #: Steps of the box's diagonal per RRT-Connect step when none is given.
 STEPS_PER_DIAGONAL = 20
 #: Checked poses per RRT-Connect step (and per lattice spacing) when no resolution is given.
@@ -91,10 +98,11 @@ class PoseSpace:
         """``b − a`` with the angles the short way."""
         return short_way(b - a, self.angles)
 
-    def segment_ok(self, a: np.ndarray, d: np.ndarray, resolution: float) -> bool:
-        """The segment ``a → a + d`` is valid at every ``resolution`` (its start assumed valid)."""
+    def segment_ok(self, a: np.ndarray, d: np.ndarray, resolution: float, *, closed: bool = False) -> bool:
+        """The segment ``a → a + d`` is valid at every ``resolution``, its end included (its
+        start too when ``closed``, else assumed valid)."""
         n = max(1, int(np.ceil(np.linalg.norm(d) / resolution)))
-        t = np.arange(1, n + 1)[:, None] / n
+        t = np.arange(0 if closed else 1, n + 1)[:, None] / n
         return bool(self.valid(a + t * d).all())
 
     def unwrap(self, nodes: np.ndarray) -> np.ndarray:
@@ -178,21 +186,39 @@ class _Tree:
         return out
 
 
-def _advance(
-    space: PoseSpace, tree: _Tree, target: np.ndarray, step: float, resolution: float, greedy: bool, room: int
+def _step_end(space: PoseSpace, tree: _Tree, target: np.ndarray, step: float) -> tuple[int, np.ndarray]:
+    """The node of ``tree`` nearest ``target`` and the pose one ``step`` from it toward
+    ``target`` (``target`` itself when nearer)."""
+    i = tree.nearest(space, target)
+    d = space.diff(tree.nodes[i], target)
+    L = float(np.linalg.norm(d))
+    return i, tree.nodes[i] + (d if L <= step else (step / L) * d)
+
+
+def _extend(space: PoseSpace, tree: _Tree, i: int, end: np.ndarray, resolution: float) -> int:
+    """Add ``end`` (a valid pose) to ``tree`` as a child of node ``i`` if the segment between
+    them is valid; the new node, or −1."""
+    a = tree.nodes[i]
+    if not space.segment_ok(a, end - a, resolution):
+        return -1
+    return tree.add(end, i)
+
+
+def _connect(
+    space: PoseSpace, tree: _Tree, target: np.ndarray, step: float, resolution: float, room: int
 ) -> tuple[int, bool]:
-    """Grow ``tree`` from its node nearest ``target`` toward it: one ``step`` (extend), or as far
-    as the segment stays valid (connect, ``greedy``), adding a node every ``step`` and at most
-    ``room``.  Returns the last node added (−1 if none) and whether it is ``target``."""
+    """Grow ``tree`` from its node nearest ``target`` straight toward it as far as the segment
+    stays valid, a node every ``step`` and at most ``room``, checking in batches of
+    :data:`CONNECT_BATCH` poses.  Returns the last node added (−1 if none) and whether it is
+    ``target``."""
     i = tree.nearest(space, target)
     a = tree.nodes[i]
     d = space.diff(a, target)
     L = float(np.linalg.norm(d))
     if L == 0.0:
         return i, True
-    reach = L if greedy else min(L, step)
-    n = max(1, int(np.ceil(reach / resolution)))
-    s = np.arange(1, n + 1) * (reach / n)  # arc lengths of the checked poses
+    n = max(1, int(np.ceil(L / resolution)))
+    s = np.arange(1, n + 1) * (L / n)  # arc lengths of the checked poses
     good = n
     for lo in range(0, n, CONNECT_BATCH):
         ok = space.valid(a + (s[lo : lo + CONNECT_BATCH] / L)[:, None] * d)
@@ -200,12 +226,11 @@ def _advance(
             good = lo + int(np.argmin(ok))
             break
     valid_len = s[good - 1] if good > 0 else 0.0
-    reached = good == n and reach == L
-    marks = list(np.arange(step, valid_len, step)) if greedy else []
-    if reached or (not greedy and good == n):
-        marks.append(reach)
-    last = -1
-    parent = i
+    reached = good == n
+    marks = list(np.arange(step, valid_len, step))
+    if reached:
+        marks.append(L)
+    last, parent = -1, i
     for m in marks[:room]:
         parent = last = tree.add(a + (m / L) * d, parent)
     if reached and len(marks) <= room:
@@ -221,9 +246,19 @@ def _length(path: np.ndarray) -> float:
 def shortcut(
     space: PoseSpace, path: np.ndarray, resolution: float, rng: np.random.Generator, attempts: int, deadline: float
 ) -> np.ndarray:
-    """Random shortcuts (Geraerts & Overmars 2007, §3) of a continuous path ``(N, k)``: two
+    """A continuous path ``(N, k)`` shortened: each vertex joined to the farthest later vertex
+    it sees by a valid segment, then random shortcuts (Geraerts & Overmars 2007, §3), two
     random points of it joined straight where that segment is valid and shorter."""
     path = np.array(path, float)
+    kept, i = [0], 0  # first each vertex joined to the farthest later one it sees
+    while i < len(path) - 1 and time.perf_counter() <= deadline:
+        j = next(
+            (j for j in range(len(path) - 1, i + 1, -1) if space.segment_ok(path[i], path[j] - path[i], resolution)),
+            i + 1,
+        )
+        kept.append(j)
+        i = j
+    path = path[kept] if kept[-1] == len(path) - 1 else path
     for _ in range(attempts):
         if len(path) < 3 or time.perf_counter() > deadline:
             break
@@ -236,7 +271,7 @@ def shortcut(
             continue
         p0 = path[i] + (s0 - cum[i]) / max(seg[i], 1e-300) * (path[i + 1] - path[i])
         p1 = path[j] + (s1 - cum[j]) / max(seg[j], 1e-300) * (path[j + 1] - path[j])
-        if np.linalg.norm(p1 - p0) >= s1 - s0 - 1e-12 or not space.segment_ok(p0, p1 - p0, resolution):
+        if np.linalg.norm(p1 - p0) >= s1 - s0 - 1e-12 or not space.segment_ok(p0, p1 - p0, resolution, closed=True):
             continue
         path = np.vstack([path[: i + 1], p0[None], p1[None], path[j + 1 :]])
         keep = np.r_[True, np.linalg.norm(np.diff(path, axis=0), axis=1) > 1e-12]
@@ -244,12 +279,46 @@ def shortcut(
     return path
 
 
-def _finish(space: PoseSpace, nodes: np.ndarray, goal: np.ndarray) -> np.ndarray:
-    """The continuous path, ending at ``goal`` as written (the same rotation as its last
-    pose, possibly written with other multiples of 2π)."""
-    out = np.array(nodes, float)
-    out[-1] = goal
-    return out
+def _finish(
+    space: PoseSpace,
+    path: np.ndarray,
+    goal: np.ndarray,
+    resolution: float,
+    rng: np.random.Generator,
+    max_nodes: int,
+    deadline: float,
+) -> np.ndarray | None:
+    """The continuous path checked again every ``resolution / FINE`` and ending at ``goal`` as
+    written (the same rotation as its last pose, possibly written with other multiples of
+    2π); ``None`` when a segment fails that check and no detour around the thin invalid
+    region it crosses is found by RRT-Connect at the fine resolution."""
+    fine = resolution / FINE
+    out = [path[0]]
+    for p, q in zip(path[:-1], path[1:]):
+        if space.segment_ok(p, q - p, fine):
+            out.append(q)
+            continue
+        if time.perf_counter() > deadline:
+            return None
+        sub = rrt_connect(
+            space,
+            p,
+            q,
+            step=None,
+            resolution=fine,
+            rng=rng,
+            max_nodes=max_nodes,
+            time_limit=max(deadline - time.perf_counter(), 1e-3) if np.isfinite(deadline) else None,
+            shorten=True,
+            progress=None,
+            final=False,
+        )
+        if not sub.found:
+            return None
+        out.extend(space.unwrap(np.vstack([p, sub.path[1:]]))[1:])
+    result = np.array(out)
+    result[-1] = goal
+    return result
 
 
 def rrt_connect(
@@ -264,8 +333,10 @@ def rrt_connect(
     time_limit: float | None,
     shorten: bool,
     progress: Callable[[int, int | None], None] | None,
+    final: bool = True,
 ) -> PathResult:
-    """RRT-Connect then random shortcuts (module docstring) from ``start`` to ``goal``."""
+    """RRT-Connect then random shortcuts (module docstring) from ``start`` to ``goal``; with
+    ``final``, the path checked again at a finer resolution (:func:`_finish`)."""
     t0 = time.perf_counter()
     deadline = np.inf if time_limit is None else t0 + time_limit
     diag = float(np.linalg.norm(space.upper - space.lower))
@@ -275,13 +346,20 @@ def rrt_connect(
     found = None
     span = space.upper - space.lower
     a, b = 0, 1
+    pending: list[tuple[np.ndarray, int, np.ndarray, bool]] = []
     while found is None and len(trees[0]) + len(trees[1]) < max_nodes and time.perf_counter() < deadline:
-        room = max_nodes - len(trees[0]) - len(trees[1])
-        q = space.lower + span * rng.random(span.size)
-        new, _ = _advance(space, trees[a], q, step, resolution, greedy=False, room=room)
+        if not pending:
+            # The ends of the next SAMPLE_BATCH extensions (alternately of the two trees, from
+            # their nearest nodes now) are checked in one batch: most fall outside the valid set.
+            samples = space.lower + span * rng.random((SAMPLE_BATCH, span.size))
+            steps = [_step_end(space, trees[(a + j) % 2], q, step) for j, q in enumerate(samples)]
+            ok = space.valid(np.array([e for _, e in steps]))
+            pending = [(q, i, e, bool(v)) for q, (i, e), v in zip(samples, steps, ok)][::-1]
+        _, i, end, end_ok = pending.pop()
+        new = _extend(space, trees[a], i, end, resolution) if end_ok else -1
         if new >= 0:
             room = max_nodes - len(trees[0]) - len(trees[1])
-            last, reached = _advance(space, trees[b], trees[a].nodes[new], step, resolution, greedy=True, room=room)
+            last, reached = _connect(space, trees[b], trees[a].nodes[new], step, resolution, room)
             if reached:
                 ends = {a: new, b: last}
                 found = trees[0].branch(ends[0])[::-1] + trees[1].branch(ends[1])[1:]
@@ -294,7 +372,12 @@ def rrt_connect(
         path = space.unwrap(np.array(found))
         if shorten:
             path = shortcut(space, path, resolution, rng, SHORTCUTS, deadline)
-        path = _finish(space, path, goal)
+        if final:
+            checked = _finish(space, path, goal, resolution, rng, max(2, max_nodes // REPAIR_SHARE), deadline)
+            found = None if checked is None else found
+            path = np.zeros((0, start.size)) if checked is None else checked
+        else:
+            path[-1] = goal
     if progress is not None:
         progress(nodes, nodes)
     return _result(space, found is not None, path, "rrtconnect", nodes=nodes, t0=t0)
@@ -455,6 +538,7 @@ def grid_search(
         if progress is not None and expanded % 256 == 0:
             progress(expanded, None)
     path = np.zeros((0, k))
+    proof = not reached and not stopped  # the start's component closed without the goal
     if reached:
         chain, i = [], G
         while i >= 0:
@@ -463,7 +547,9 @@ def grid_search(
         path = space.unwrap(np.array(chain[::-1]))
         if shorten:
             path = shortcut(space, path, resolution, rng, SHORTCUTS, deadline)
-        path = _finish(space, path, goal)
+        checked = _finish(space, path, goal, resolution, rng, max(2, max_nodes // REPAIR_SHARE), deadline)
+        reached = checked is not None
+        path = np.zeros((0, k)) if checked is None else checked
     if progress is not None:
         progress(expanded, expanded)
-    return _result(space, reached, path, "grid", expanded=expanded, proof=not reached and not stopped, t0=t0)
+    return _result(space, reached, path, "grid", expanded=expanded, proof=proof, t0=t0)

@@ -199,12 +199,27 @@ def pose_validity(
     Returns
     -------
     callable
+        ``valid(poses)``: ``(ok, lengths)``, ``ok`` ``(N,)`` bool, ``lengths`` ``(N, n)`` [m].
 
     Raises
     ------
     TautError
         A robot of another kind, a bad ``E`` or ``lengths``, or ``obstacles`` on a spatial
         robot.
+
+    References
+    ----------
+    .. [1] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of
+       Cable-Driven Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots,
+       Mechanisms and Machine Science 12, Springer, 2013, §5. (docs/references.bib: bohigas2013)
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.planning import pose_validity
+    >>> valid = pose_validity(example("spatial-8cable"))
+    >>> valid(np.array([[0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 1.2, 0]]))[0]
+    array([ True, False])
     """
     refuse_unplannable(robot, "a path check")
     E = _ellipsoid(robot, E)
@@ -224,20 +239,25 @@ def pose_validity(
 
         circles, regions = collidable_objects(robot)
     exits = robot.exits
+    # Without jointed bodies the external wrench about P_m is the same at every pose: the
+    # platform's wrench and weight, both applied at P_m.
+    q0 = np.zeros((1, robot.pose_size))
+    w = external_wrench(robot, q0)
+    if pm is not None:
+        _, R0 = platform_frame(robot, q0)
+        w[:, d:] -= cross(R0 @ pm, w[:, :d]).reshape(1, -1)
 
     def valid(q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         lengths_q, W, ok = batch_structure_matrices(robot, q)  # ok: every cable has a direction
-        w = external_wrench(robot, q)
         if pm is not None:  # moments about P_m: M_m = M_p − (R p_m) × F
             _, R = platform_frame(robot, q)
             arm = R @ pm
             W = W.copy()
             mom = cross(arm[:, None, :], np.moveaxis(W[:, :d, :], 1, 2))  # (N, n, 3), or (N, n) planar
             W[:, d:, :] -= np.moveaxis(mom, 2, 1) if mom.ndim == 3 else mom[:, None, :]
-            w[:, d:] -= cross(arm, w[:, :d]).reshape(len(q), -1)
         ok &= np.all((lengths_q > lo) & (lengths_q < hi), axis=1)
         if ok.any():
-            ok[ok] = wrench_feasible(W[ok], ws, tension_bounds=bounds, wrench=w[ok])
+            ok[ok] = wrench_feasible(W[ok], ws, tension_bounds=bounds, wrench=w[0])
         if interference and ok.any():
             from taut.collision import proximity
 
