@@ -222,11 +222,6 @@ def _run_pose_space(
     bad += [o for o in ("unidirectional", "shorten") if getattr(ns, o)]
     if bad:
         raise TautError(f"--{bad[0].replace('_', '-')} applies to the manifold planners (auto, atlasrrt, astar)")
-    if planner == "grid" and robot.pose_size > GRID_DIMENSIONS:
-        raise TautError(
-            f"{robot.name}: --planner grid takes pose spaces of at most {GRID_DIMENSIONS} coordinates "
-            f"(point masses, planar platforms), this robot's has {robot.pose_size}: use --planner rrtconnect"
-        )
     if planner == "rrtconnect" and ns.spacing is not None:
         raise TautError("--spacing applies to --planner grid")
     if planner == "grid" and ns.step is not None:
@@ -325,6 +320,11 @@ def run(ns: argparse.Namespace) -> int:
     planner = ns.planner
     if planner == "auto" and not _on_manifold(robot):
         planner = "grid" if robot.pose_size <= GRID_DIMENSIONS else "rrtconnect"
+    if planner == "grid" and robot.pose_size > GRID_DIMENSIONS:
+        raise TautError(
+            f"{robot.name}: --planner grid takes pose spaces of at most {GRID_DIMENSIONS} coordinates "
+            f"(point masses, planar platforms), this robot's has {robot.pose_size}: use --planner rrtconnect"
+        )
     if planner in POSE_PLANNERS:
         start, goal = _pose(robot, ns.start, "--start"), _pose(robot, ns.goal, "--goal")
         return _run_pose_space(ns, robot, planner, start, goal, out)
