@@ -17,7 +17,7 @@ References
 from __future__ import annotations
 
 import argparse
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 from taut.cli import _args as A
 from taut.cli._output import console, emit, markup, save_figure, written
@@ -29,7 +29,7 @@ if TYPE_CHECKING:
     import numpy as np
 
     from taut.model import Robot
-    from taut.planning import PathResult, WrenchFeasibleManifold
+    from taut.planning import Atlas, PathResult, WrenchFeasibleManifold
 
 #: Smallest chart radius: the number of charts grows as radius^-k on a k-dimensional slice,
 #: and below this even a 2-D slice needs more charts than a search can visit.
@@ -416,7 +416,7 @@ def run(ns: argparse.Namespace) -> int:
         from taut.planning import slice_map
         from taut.viz import plot_plan
 
-        centres = M.pose(res.atlas.centres if res.atlas is not None else res.path)
+        centres = M.pose(cast(Atlas, res.atlas).centres)  # the manifold planners grow an atlas
         grid = slice_map(M, centres[0], axes=(free[0], free[1]), span=centres)
         save_figure(plot_plan(M, res, grid), plot, data)
     emit(data, ns.json, human)
