@@ -416,7 +416,7 @@ def run(ns: argparse.Namespace) -> int:
         from taut.planning import slice_map
         from taut.viz import plot_plan
 
-        centres = M.pose(cast(Atlas, res.atlas).centres)  # the manifold planners grow an atlas
+        centres = M.pose(cast("Atlas", res.atlas).centres)  # the manifold planners grow an atlas
         grid = slice_map(M, centres[0], axes=(free[0], free[1]), span=centres)
         save_figure(plot_plan(M, res, grid), plot, data)
     emit(data, ns.json, human)
