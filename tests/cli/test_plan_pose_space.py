@@ -111,3 +111,18 @@ def test_help_says_which_planner_applies_to_what(cli):
     text = " ".join(cli.readouterr().out.split())
     for words in ("auto = rrtconnect", "auto = grid", "point masses", "redundant", "under-constrained", "refused"):
         assert words in text
+
+
+def test_rrtconnect_on_the_hexapod_in_tilt_and_torsion_angles(cli):
+    # --planner overrides the robot's own (the manifold planners): its pose space, q1 -> q2
+    # as written, not a canonical image
+    argv = ["plan", "robocrane", "--start", "q1", "--goal", "q2", "--planner", "rrtconnect", "--json"]
+    assert cli.main(argv) == 0, cli.readouterr().err
+    d = json.loads(cli.readouterr().out)
+    robot = load_robot("robocrane")
+    path = np.array(d["path"])
+    assert d["method"] == "rrtconnect" and d["found"] and d["verified"]
+    assert path[0].tolist() == list(robot.reference.poses["q1"]) and path[-1].tolist() == list(
+        robot.reference.poses["q2"]
+    )
+    assert fine(robot, path)
