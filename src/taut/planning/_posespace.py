@@ -98,10 +98,13 @@ class PoseSpace:
         """``b − a`` with the angles the short way."""
         return short_way(b - a, self.angles)
 
-    def segment_ok(self, a: np.ndarray, d: np.ndarray, resolution: float, *, closed: bool = False) -> bool:
-        """The segment ``a → a + d`` is valid at every ``resolution``, its end included (its
-        start too when ``closed``, else assumed valid)."""
-        n = max(1, int(np.ceil(np.linalg.norm(d) / resolution)))
+    def segment_ok(
+        self, a: np.ndarray, d: np.ndarray, resolution: float, *, closed: bool = False, points: int = 1
+    ) -> bool:
+        """The segment ``a → a + d`` is valid at every ``resolution`` and at ``points`` evenly
+        spaced poses at least, its end included (its start too when ``closed``, else assumed
+        valid)."""
+        n = max(points, int(np.ceil(np.linalg.norm(d) / resolution)))
         t = np.arange(0 if closed else 1, n + 1)[:, None] / n
         return bool(self.valid(a + t * d).all())
 
@@ -295,7 +298,9 @@ def _finish(
     fine = resolution / FINE
     out = [path[0]]
     for p, q in zip(path[:-1], path[1:]):
-        if space.segment_ok(p, q - p, fine):
+        # FINE poses at least on every segment, however short: a detour's short segments must not
+        # step over a thin invalid sheet (near singular poses) that their ends straddle
+        if space.segment_ok(p, q - p, fine, points=FINE):
             out.append(q)
             continue
         if time.perf_counter() > deadline:
@@ -313,9 +318,12 @@ def _finish(
             progress=None,
             final=False,
         )
-        if not sub.found:
+        detour = space.unwrap(np.vstack([p, sub.path[1:]])) if sub.found else None
+        if detour is None or not all(
+            space.segment_ok(u, v - u, fine, points=FINE) for u, v in zip(detour[:-1], detour[1:])
+        ):
             return None
-        out.extend(space.unwrap(np.vstack([p, sub.path[1:]]))[1:])
+        out.extend(detour[1:])
     result = np.array(out)
     result[-1] = goal
     return result
@@ -369,11 +377,14 @@ def rrt_connect(
     nodes = len(trees[0]) + len(trees[1])
     path = np.zeros((0, start.size))
     if found is not None:
-        path = space.unwrap(np.array(found))
+        raw = path = space.unwrap(np.array(found))
         if shorten:
             path = shortcut(space, path, resolution, rng, SHORTCUTS, deadline)
         if final:
-            checked = _finish(space, path, goal, resolution, rng, max(2, max_nodes // REPAIR_SHARE), deadline)
+            budget = max(2, max_nodes // REPAIR_SHARE)
+            checked = _finish(space, path, goal, resolution, rng, budget, deadline)
+            if checked is None and shorten:  # the tree's own path, farther from the boundary
+                checked = _finish(space, raw, goal, resolution, rng, budget, deadline)
             found = None if checked is None else found
             path = np.zeros((0, start.size)) if checked is None else checked
         else:
@@ -544,10 +555,13 @@ def grid_search(
         while i >= 0:
             chain.append(point(i))
             i = parent[i]
-        path = space.unwrap(np.array(chain[::-1]))
+        raw = path = space.unwrap(np.array(chain[::-1]))
         if shorten:
             path = shortcut(space, path, resolution, rng, SHORTCUTS, deadline)
-        checked = _finish(space, path, goal, resolution, rng, max(2, max_nodes // REPAIR_SHARE), deadline)
+        budget = max(2, max_nodes // REPAIR_SHARE)
+        checked = _finish(space, path, goal, resolution, rng, budget, deadline)
+        if checked is None and shorten:
+            checked = _finish(space, raw, goal, resolution, rng, budget, deadline)
         reached = checked is not None
         path = np.zeros((0, k)) if checked is None else checked
     if progress is not None:
