@@ -8,7 +8,12 @@ external wrench within the tension bounds, cable lengths inside their bounds, an
 no interference, no cable in an obstacle, lengths inside given bounds).  A straight segment
 between two poses (each angle of the orientation along its shortest difference: angles are
 2π-periodic, as on the manifold of :mod:`taut.planning._manifold`) is valid when its poses
-every ``resolution`` (in pose coordinates, m and rad) are; they are checked in batches.
+every ``resolution`` (in pose coordinates, m and rad) are; they are checked in batches.  A
+path found is checked again every ``resolution / 10``, ten poses at least per segment; a
+segment that fails is replaced by a detour that RRT-Connect finds at that resolution, else the
+unshortened path is tried, else the answer is "not found".  Checks at discrete poses cannot
+see an invalid region thinner than their spacing (near singular poses the invalid set can be a
+thin sheet): the returned path is valid at every checked pose, not certified between them.
 
 * ``rrtconnect`` — RRT-Connect (Kuffner & LaValle 2000): two trees, from the start and from
   the goal, each extended one ``step`` toward a random pose of the box and the other then
