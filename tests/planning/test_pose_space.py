@@ -195,3 +195,13 @@ def test_bad_input_is_one_line(point_mass, kwargs, words):
 def test_under_constrained_robot_is_refused():
     with pytest.raises(TautError, match="as many cables as wrench components"):
         plan_path(example("suspended-3cable"), np.zeros(6), np.zeros(6), method="rrtconnect")
+
+
+def test_the_manifold_figure_refuses_a_pose_space_result(point_mass):
+    from taut.errors import ArgumentError
+    from taut.viz import plot_plan
+
+    res = plan_path(point_mass, [-0.5, 0.0], [0.5, 0.0], method="rrtconnect")
+    assert res.found and res.atlas is None and res.charts == 0
+    with pytest.raises(ArgumentError, match="rrtconnect"):
+        plot_plan(None, res, None)
