@@ -23,12 +23,25 @@ planners is checked by ``verify_path`` every ``--resolution`` rad; lengths are i
 Printed: both time and length distributions (min / median / max), the ratios of the medians,
 and the paper's times with our ratio to them.  The straight line start → goal is checked too.
 ``--simplify`` shortens both planners' paths inside the timing (AtlasRRT's random shortcuts
-on the manifold, OMPL's simplifySolution).  Last, q5 → q6 without a slice (all six pose coordinates free) by AtlasRRT.
+on the manifold, OMPL's simplifySolution).  Then q5 → q6 without a slice (all six pose coordinates free) by AtlasRRT.
+
+Last, planning in the pose space of redundant robots (``--pose-space``, on by default): the
+8-cable spatial robot and CoGiRo (xyz-fixed angles), queries whose straight line is not
+valid, by taut's RRT-Connect (``plan_path(robot, ..., method="rrtconnect")``, shortcuts
+included) and OMPL's RRTConnect + simplifySolution in R³ × SO(2)³ with the same box, range
+(step) and validity test (:func:`taut.planning.pose_validity`, one pose per call: OMPL
+checks states one at a time; taut checks the poses of a segment in one batch), motions
+checked every ``--resolution``, ``--pose-seeds`` seeds.  Every path is checked by
+``verify_path`` every ``--pose-verify`` (pose coordinates, m and rad); lengths are in pose
+coordinates with angles the short way.  Printed: the medians and the ratios OMPL / taut of
+time and length.
 
     python benchmarks/bench_plan.py [--radius 0.2] [--repeat 3] [--max-charts 20000] [--no-astar]
                                     [--seeds 10] [--rrt-radius 0.4] [--rrt-step 0.1]
                                     [--no-peers] [--resolution 0.01] [--ompl-time 30]
                                     [--ompl-checker manifold|independent] [--simplify]
+                                    [--no-pose-space] [--pose-seeds 10] [--pose-verify 0.001]
+                                    [--pose-robots spatial-8cable,cogiro] [--no-manifold]
 """
 
 import argparse
@@ -39,7 +52,7 @@ import numpy as np
 from _common import best_of  # first: it pins the thread pools to one core
 
 import taut
-from taut.planning import Atlas, WrenchFeasibleManifold, plan_path, verify_path
+from taut.planning import Atlas, WrenchFeasibleManifold, plan_path, pose_validity, verify_path
 
 PAPER_S = {("q1", "q2"): 20.0, ("q3", "q4"): 280.0}
 FREE = (3, 4)  # φ, θ in a pose [x, y, z, φ, θ, σ]
@@ -154,7 +167,19 @@ def main():
         action="store_true",
         help="shorten both planners' paths (AtlasRRT shorten=True, OMPL simplifySolution), inside the timing",
     )
+    ap.add_argument("--pose-space", action=argparse.BooleanOptionalAction, default=True)
+    ap.add_argument("--pose-seeds", type=int, default=10, help="seeds per pose-space query")
+    ap.add_argument("--pose-robots", default="spatial-8cable,cogiro", help="robots of the pose-space queries")
+    ap.add_argument("--pose-verify", type=float, default=0.001, help="verify_path step on pose-space paths")
+    ap.add_argument("--manifold", action=argparse.BooleanOptionalAction, default=True, help="the Robocrane part")
     ns = ap.parse_args()
+    if ns.manifold:
+        robocrane(ns)
+    if ns.pose_space:
+        pose_space(ns)
+
+
+def robocrane(ns):
     robot = taut.load_robot("robocrane")
     P = {k: np.array(v) for k, v in robot.reference.poses.items()}
     M = WrenchFeasibleManifold.from_robot(robot, fixed=dict(x=0.0, y=0.0, z=2.0, sigma=7 * np.pi / 36))
@@ -303,6 +328,165 @@ def six_d(robot, P, ns):
     )
     print(f"    time, s:        {spread(times)}  (target 60 s: {60 / max(times):.0f}x under it at the slowest)")
     print(f"    path length (pose coordinates, m and rad): {spread(lengths)}")
+
+
+#: Pose-space queries: robot, start, goal (straight line not valid).
+POSE_QUERIES = [
+    ("spatial-8cable", [0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 0, 2.5]),
+    ("spatial-8cable", [0, 0, 0, 0, 0, 0], [0, 0, 0, 2.5, 0, 0]),
+    # near the exits' plane, turning the platform by 3 rad: the straight line leaves the valid
+    # set for most of its length.  (Elsewhere the valid set of CoGiRo, whose tensions have no
+    # upper bound, is cut only by thin sheets of singular poses, which a sampling planner
+    # checking poses a resolution apart can step over.)
+    ("cogiro", [-2, 0, 5.3, 0, 0, 1.5], [2, 0, 5.3, 0, 0, -1.5]),
+    ("cogiro", [0, 0, 5.35, 0, 0, 1.5], [0, 0, 5.35, 0, 0, -1.5]),
+]
+
+
+def pose_box(robot, start, goal):
+    """The default box of ``plan_path``'s pose-space planners: the exits, start and goal,
+    widened to a cube about its centre."""
+    pts = np.vstack([robot.exits, np.asarray(start)[None, :3], np.asarray(goal)[None, :3]])
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    half, centre = 0.5 * (hi - lo).max(), 0.5 * (lo + hi)
+    return np.minimum(lo, centre - half), np.maximum(hi, centre + half)
+
+
+def short_length(poses):
+    d = np.diff(np.asarray(poses, float), axis=0)
+    d[:, 3:] = np.mod(d[:, 3:] + np.pi, 2 * np.pi) - np.pi
+    return float(np.linalg.norm(d, axis=1).sum())
+
+
+def fine_check(robot, poses, step):
+    """``verify_path`` with every segment cut at most ``step`` apart."""
+    d = np.diff(np.asarray(poses, float), axis=0)
+    d[:, 3:] = np.mod(d[:, 3:] + np.pi, 2 * np.pi) - np.pi
+    seg = float(np.linalg.norm(d, axis=1).max())
+    return verify_path(robot, poses, subdivide=max(1, int(np.ceil(seg / step)))).all_feasible
+
+
+def ompl_pose_rrtconnect(valid, box, start, goal, step, resolution, budget):
+    """OMPL RRTConnect + simplifySolution in R³ × SO(2)³; ``None`` without OMPL, else
+    ``(solved, seconds, validity calls, poses)``."""
+    try:
+        from ompl import base as ob
+        from ompl import geometric as og
+        from ompl import util as ou
+    except ImportError:
+        return None
+    ou.setLogLevel(ou.LogLevel.LOG_WARN)
+    if not _SEEDED:
+        ou.RNG.setSeed(1)
+        _SEEDED.append(1)
+    pos = ob.RealVectorStateSpace(3)
+    bounds = ob.RealVectorBounds(3)
+    for i in range(3):
+        bounds.setLow(i, float(box[0][i]))
+        bounds.setHigh(i, float(box[1][i]))
+    pos.setBounds(bounds)
+    space = ob.CompoundStateSpace()
+    space.addSubspace(pos, 1.0)
+    for _ in range(3):
+        space.addSubspace(ob.SO2StateSpace(), 1.0)
+    counter = [0]
+
+    def pose(s):
+        return np.array([s[0][0], s[0][1], s[0][2], s[1].value, s[2].value, s[3].value])
+
+    def is_valid(s):
+        counter[0] += 1
+        return bool(valid(pose(s)[None])[0][0])
+
+    ss = og.SimpleSetup(space)
+    ss.setStateValidityChecker(is_valid)
+    si = ss.getSpaceInformation()
+    si.setStateValidityCheckingResolution(resolution / space.getMaximumExtent())
+    planner = og.RRTConnect(si)
+    planner.setRange(step)
+    ss.setPlanner(planner)
+    a, b = space.allocState(), space.allocState()
+    for st, q in ((a, start), (b, goal)):
+        for i in range(3):
+            st[0][i] = float(q[i])
+        for i in range(3):
+            st[1 + i].value = float(q[3 + i])
+    ss.setStartAndGoalStates(a, b)
+    t = time.perf_counter()
+    solved = bool(ss.solve(budget))
+    if solved:
+        ss.simplifySolution()
+    dt = time.perf_counter() - t
+    exact = solved and ss.haveExactSolutionPath()
+    poses = np.array([pose(s) for s in ss.getSolutionPath().getStates()]) if exact else None
+    calls = counter[0]
+    del ss, si, a, b, planner
+    gc.collect()
+    return exact, dt, calls, poses
+
+
+def pose_space(ns):
+    """RRT-Connect in the pose space of redundant robots, against OMPL's (module docstring)."""
+    have_ompl = True
+    for name, start, goal in POSE_QUERIES:
+        if name not in ns.pose_robots.split(","):
+            continue
+        robot = taut.load_robot(name)
+        start, goal = np.asarray(start, float), np.asarray(goal, float)
+        box = pose_box(robot, start, goal)
+        diag = float(np.linalg.norm(np.r_[box[1] - box[0], np.full(3, 2 * np.pi)]))
+        step = diag / 20  # plan_path's default step
+        valid = pose_validity(robot)
+        line = fine_check(robot, [start, goal], ns.resolution)
+        print(f"{name} {start.tolist()} -> {goal.tolist()}: straight line valid {line}")
+        ours = {"t": [], "len": [], "ok": [], "ok_res": []}
+        peer = {"t": [], "len": [], "ok": [], "ok_res": [], "calls": []}
+        for seed in range(ns.pose_seeds):
+            t = time.perf_counter()
+            r = plan_path(robot, start, goal, method="rrtconnect", seed=seed, bounds=box, resolution=ns.resolution)
+            dt = time.perf_counter() - t
+            if r.found:
+                ours["t"].append(dt)
+                ours["len"].append(r.length)
+                ours["ok"].append(fine_check(robot, r.path, ns.pose_verify))
+                ours["ok_res"].append(fine_check(robot, r.path, ns.resolution))
+            if not have_ompl:
+                continue
+            run = ompl_pose_rrtconnect(valid, box, start, goal, step, ns.resolution, ns.ompl_time)
+            if run is None:
+                have_ompl = False
+                print("  OMPL not installed (optional peer: pip install 'ompl>=2'): its comparison is skipped")
+                continue
+            exact, dt, calls, poses = run
+            if exact:
+                peer["t"].append(dt)
+                peer["len"].append(short_length(poses))
+                peer["ok"].append(fine_check(robot, poses, ns.pose_verify))
+                peer["ok_res"].append(fine_check(robot, poses, ns.resolution))
+                peer["calls"].append(calls)
+        print(
+            f"  taut RRT-Connect + shortcuts ({ns.pose_seeds} seeds, step {step:.3f}, checks every {ns.resolution}): "
+            f"solved {len(ours['t'])}, verified every {ns.resolution}: {sum(ours['ok_res'])}, every {ns.pose_verify}: "
+            f"{sum(ours['ok'])} of {len(ours['ok'])}"
+        )
+        print(f"    time, s:     {spread(ours['t'])}")
+        print(f"    path length: {spread(ours['len'])}")
+        if have_ompl:
+            print(
+                f"  OMPL RRTConnect + simplifySolution (same box, range, validity test; budget {ns.ompl_time:.0f} s): "
+                f"solved {len(peer['t'])}, verified every {ns.resolution}: {sum(peer['ok_res'])}, every {ns.pose_verify}: "
+                f"{sum(peer['ok'])} of {len(peer['ok'])}, validity calls median "
+                f"{np.median(peer['calls']) if peer['calls'] else float('nan'):.0f}"
+            )
+            print(f"    time, s:     {spread(peer['t'])}")
+            print(f"    path length: {spread(peer['len'])}")
+            if ours["t"] and peer["t"]:
+                rt = np.median(peer["t"]) / np.median(ours["t"])
+                rl = np.median(peer["len"]) / np.median(ours["len"])
+                print(
+                    f"  ratio of medians OMPL / taut: time {rt:.2f}x ({'taut faster' if rt > 1 else 'OMPL faster'}), "
+                    f"path length {rl:.2f}x ({'taut shorter' if rl > 1 else 'OMPL shorter or equal'})"
+                )
 
 
 if __name__ == "__main__":

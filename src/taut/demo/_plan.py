@@ -11,13 +11,13 @@ References
 from __future__ import annotations
 
 import time
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
 from taut.errors import TautError
 from taut.model import example
-from taut.planning import PathResult, WrenchFeasibleManifold, plan_path, slice_map, verify_path
+from taut.planning import Atlas, PathResult, WrenchFeasibleManifold, plan_path, slice_map, verify_path
 from taut.viz import plot_plan
 
 if TYPE_CHECKING:
@@ -38,7 +38,7 @@ def plan_section(report: Report, radius: float = 0.2) -> PathResult:
     res = plan_path(M.implicit(), M.lift(q["q1"]), M.lift(q["q2"]), radius=radius, metric=M.pose_metric)
     elapsed = time.perf_counter() - t0
     check = verify_path(robot, M.pose(res.path), subdivide=5) if res.found else None
-    centres = M.pose(res.atlas.centres)
+    centres = M.pose(cast(Atlas, res.atlas).centres)  # A* grows an atlas
     fig = plot_plan(M, res, slice_map(M, centres[0], span=centres))
     row = {
         "query": "q1 → q2",

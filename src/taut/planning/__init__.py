@@ -1,7 +1,10 @@
 """Wrench-feasible path planning (Bohigas et al. 2013): higher-dimensional
 continuation (:mod:`.continuation`), :func:`plan_path` by A* over its charts
 (``method="astar"``, complete) or AtlasRRT (Jaillet & Porta 2013, ``method="atlasrrt"``,
-randomised), and the classified grid of a two-dimensional slice (:func:`slice_map`, Fig. 5).
+randomised), or in any robot's own pose space by RRT-Connect (``method="rrtconnect"``) or A*
+over a lattice (``method="grid"``, a no-path proof at its resolution), with the validity test
+of :func:`verify_path` (:func:`pose_validity`), and the classified grid of a two-dimensional
+slice (:func:`slice_map`, Fig. 5).
 
 References
 ----------
@@ -35,7 +38,7 @@ if TYPE_CHECKING:
     from taut.planning._plan import METHODS, RADIUS, plan_path
     from taut.planning._search import PathResult, refine_path
     from taut.planning._slices import SliceMap, slice_map
-    from taut.planning._verify import MAX_PATH_POSES, PathCheck, verify_path
+    from taut.planning._verify import MAX_PATH_POSES, PathCheck, pose_validity, verify_path
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -60,6 +63,7 @@ _LAZY = {
     "slice_map": "taut.planning._slices",
     "MAX_PATH_POSES": "taut.planning._verify",
     "PathCheck": "taut.planning._verify",
+    "pose_validity": "taut.planning._verify",
     "verify_path": "taut.planning._verify",
 }
 
@@ -80,6 +84,7 @@ __all__ = [
     "Symmetry",
     "WrenchFeasibleManifold",
     "plan_path",
+    "pose_validity",
     "project",
     "refine_path",
     "shorten_path",

@@ -48,24 +48,26 @@ class PathResult(Result):
         A path from the start to the goal was found.
     path : ndarray, shape (N, n)
         Points on the manifold, start to goal, continuous across its symmetry (empty if
-        not found).
+        not found); poses for the pose-space planners, from the start to the goal as given.
     charts : int
-        Charts in the atlas when the search stopped.
+        Charts in the atlas when the search stopped (0 in pose space).
     expanded : int
-        Charts closed by A* (0 for AtlasRRT).
+        Charts closed by A*, lattice points closed by the grid (0 for AtlasRRT and
+        RRT-Connect).
     no_path : bool
-        A* closed every chart of the start's component without reaching the goal: a proof
+        A* closed every chart of the start's component (the grid every lattice point of the
+        start's component) without reaching the goal: a proof
         that no path exists at the resolution of the chart radius.
     length : float
         Length of ``path`` in the atlas metric (NaN when not found).
     elapsed_s : float
         Wall-clock time [s].
-    atlas : Atlas
-        The atlas the search grew.
+    atlas : Atlas or None
+        The atlas the search grew (``None`` for the pose-space planners).
     method : str
-        ``"astar"`` or ``"atlasrrt"``.
+        ``"astar"``, ``"atlasrrt"``, ``"rrtconnect"`` or ``"grid"``.
     nodes : int
-        Tree nodes grown by AtlasRRT (0 for A*).
+        Tree nodes grown by AtlasRRT or RRT-Connect (0 for A* and the grid).
     complete : bool
         The question is settled: ``found`` or ``no_path`` (a property).
 
@@ -95,9 +97,9 @@ class PathResult(Result):
     no_path: bool  #: every chart closed without reaching the goal: no path at this resolution (a proof)
     length: float  #: length of ``path`` in the atlas metric (NaN if not found)
     elapsed_s: float
-    atlas: Atlas
-    method: str  #: the planner: ``"astar"`` or ``"atlasrrt"``
-    nodes: int  #: tree nodes grown by AtlasRRT (0 for A*)
+    atlas: Atlas | None  #: the atlas the search grew (``None`` in pose space)
+    method: str  #: the planner: ``"astar"``, ``"atlasrrt"``, ``"rrtconnect"`` or ``"grid"``
+    nodes: int  #: tree nodes grown by AtlasRRT or RRT-Connect (0 for A* and the grid)
 
     @property
     def complete(self) -> bool:

@@ -40,18 +40,24 @@ def plot_plan(
     red (left), and the extreme tensions ``f_0 − v_ii`` (lower) and ``f_0 + v_ii`` (upper) of
     each cable along the path against its length, with the tension bounds dashed (right).
     Laid out on the empty figure ``fig`` (``None``: a new one; a figure that already has
-    axes raises :class:`~taut.errors.ArgumentError`), which is returned."""
+    axes raises :class:`~taut.errors.ArgumentError`), which is returned; so does a result of
+    a pose-space planner, which has no atlas."""
     from matplotlib.colors import ListedColormap
 
+    from taut.errors import ArgumentError
+
+    if result.atlas is None:
+        raise ArgumentError(f"plot_plan draws a path planned on a manifold, not one of method {result.method!r}")
+    atlas = result.atlas
     axes = grid.axes
     idx = [manifold.pose_names.index(a) for a in axes]
-    centres = manifold.pose(result.atlas.centres)
+    centres = manifold.pose(atlas.centres)
     u, v, cls = grid.u, grid.v, grid.classes
     fig = empty_figure(fig, "a planned path", (13.0, 5.5))
     ax, tx = fig.subplots(1, 2)
     cmap = ListedColormap([INSIDE, _FORCE_COLOR, DISALLOWED])
     ax.pcolormesh(u, v, cls.T, cmap=cmap, vmin=-0.5, vmax=2.5, shading="nearest", alpha=0.45, gid="slice-map")
-    closed = np.array([c.expanded for c in result.atlas.charts])
+    closed = np.array([c.expanded for c in atlas.charts])
     ax.plot(
         centres[closed, idx[0]],
         centres[closed, idx[1]],
