@@ -133,7 +133,8 @@ class DGPSolution(Result):
     uniqueness_radius: float  #: half-width of the inflated box with no other solution
     continuum: tuple[float, float] | None = None  #: spin arc of a one-cable family
     #: a border equilibrium: the cables of ``boundary`` not in ``taut`` are at their lengths
-    #: with zero tension, to within the certificate — it solves ``taut`` or ``boundary``
+    #: with zero tension, to within the certificate — it solves ``taut`` or ``boundary``; for
+    #: a point mass, every cable at its length (more than ``d``: the tensions are not unique)
     boundary: tuple[int, ...] | None = None
 
     def as_dict(self) -> dict:
