@@ -19,6 +19,13 @@ undecided boxes, and against the least-squares fit of all the lengths that cable
 firmware computes (``DGPResult.least_squares``, timed alone as the baseline) how often that fit
 is more than 1 mm from the certified equilibrium or has none to be near.
 
+Pulleys (``random_suspended_robot(..., pulley_radius=PULLEY_RADIUS)``, ``--pulleys N``, default
+5): the 3-cable robots of seeds ``--first`` on, their cables through swivelling pulleys of 5 cm,
+every taut subset; per robot the equilibria, each one's lengths recomputed by the pulley
+inverse kinematics (``taut.kinematics.cable_lengths``, the largest residual printed), and the
+same seed's point-exit robot solved as the baseline; summarised apart, with the median ratio
+of the two times.
+
 With ``--fold``, a suite robot at a fold (seed 0, 3 cables, cable 1 lengthened by
 :data:`FOLD_SIDE`, 7e-11 past the length where two equilibria appear): solved in double
 precision alone, which leaves boxes too narrow to split around the nearly double pair, and
@@ -26,7 +33,7 @@ with the boxes searched again in multi-precision (python-flint, ``taut[precise]`
 
     python benchmarks/bench_dgp_random.py [--three N] [--four N] [--six N] [--eight N]
                                           [--planar N] [--max-taut K] [--first SEED]
-                                          [--point-mass N] [--peer] [--fold]
+                                          [--point-mass N] [--pulleys N] [--peer] [--fold]
 """
 
 import argparse
@@ -38,6 +45,7 @@ from _bertini import ALL_TAUT, import_bertini, matching, run_bertini
 from scipy.optimize import least_squares
 
 from taut.dgp import solve_dgp, solve_subset
+from taut.kinematics import cable_lengths
 from taut.model import random_planar_robot, random_point_mass_robot, random_suspended_robot
 
 EPS = 1e-7  # solve_dgp's default box width
@@ -158,6 +166,54 @@ def point_masses(ns):
         )
 
 
+#: Radius [m] of the swivelling pulleys of the pulley suite.
+PULLEY_RADIUS = 0.05
+
+
+def by_size(res):
+    """The equilibria counted by taut-set size, largest first."""
+    per_m = {}
+    for s in res.solutions:
+        per_m[len(s.taut)] = per_m.get(len(s.taut), 0) + 1
+    return dict(sorted(per_m.items(), reverse=True))
+
+
+def pulleys(ns):
+    """The pulley suite: per robot the equilibria, their pulley-IK residual and the time, with
+    the same seed's point-exit robot as the baseline."""
+    solve_dgp(*random_suspended_robot(3, seed=0, pulley_radius=PULLEY_RADIUS), max_taut=2)
+    times, ratios, undecided, worst = [], [], 0, 0.0
+    for seed in range(ns.first, ns.first + ns.pulleys):
+        robot, lengths = random_suspended_robot(3, seed=seed, pulley_radius=PULLEY_RADIUS)
+        t0 = time.perf_counter()
+        res = solve_dgp(robot, lengths)
+        times.append(time.perf_counter() - t0)
+        point = random_suspended_robot(3, seed=seed)
+        t0 = time.perf_counter()
+        base = solve_dgp(*point)
+        ratios.append(times[-1] / (time.perf_counter() - t0))
+        undecided += res.undecided
+        residual = max(
+            (
+                float(np.abs(cable_lengths(robot, [*s.position, *s.orientation]) - lengths)[list(s.taut)].max())
+                for s in res.solutions
+            ),
+            default=0.0,
+        )
+        worst = max(worst, residual)
+        print(
+            f"pulleys 3 cables seed {seed:3d}: {len(res.solutions)} equilibria {by_size(res)}, {res.undecided} "
+            f"undecided, {res.boxes} boxes, {times[-1]:.2f} s, pulley IK residual {residual:.1e} m; point exits "
+            f"{len(base.solutions)} equilibria {by_size(base)}, {times[-1] / ratios[-1]:.2f} s",
+            flush=True,
+        )
+    summary(f"pulleys 3 cables (radius {PULLEY_RADIUS:g} m)", times)
+    print(
+        f"pulleys 3 cables: pulley / point-exit DGP time {np.median(ratios):.1f}x (median); largest pulley IK "
+        f"residual {worst:.1e} m (within 1e-9: {worst <= 1e-9}); undecided boxes {undecided}"
+    )
+
+
 def fold():
     robot, lengths = random_suspended_robot(3, seed=0)
     lengths = lengths.copy()
@@ -185,6 +241,7 @@ def main():
     ap.add_argument("--max-taut", type=int, default=2, help="largest taut subset of the 6- and 8-cable robots")
     ap.add_argument("--first", type=int, default=0, help="first seed")
     ap.add_argument("--point-mass", type=int, default=10, help="point-mass robots of each kind (spatial, planar)")
+    ap.add_argument("--pulleys", type=int, default=5, help="3-cable robots with swivelling pulleys")
     ap.add_argument("--peer", action="store_true", help="also bertini2 on each 3-cable all-taut sub-problem")
     ap.add_argument("--peer-mptype", choices=("double", "adaptive"), default="double")
     ap.add_argument(
@@ -224,6 +281,8 @@ def main():
         print(f"3-cable worst/median: {ratio:.1f}x (target <= {RATIO_TARGET:g}x)")
     if ns.point_mass:
         point_masses(ns)
+    if ns.pulleys:
+        pulleys(ns)
     if ns.peer:
         peer(cases, ns.peer_mptype)
     if ns.fold:

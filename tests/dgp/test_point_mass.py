@@ -6,6 +6,7 @@ equilibrium the solver missed, nor the solver one it does not.  The CLI through
 subprocesses."""
 
 from itertools import combinations
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -263,6 +264,90 @@ def test_degenerate_robots_terminate(exits, lengths, complete):
     else:
         assert {u.cause for u in res.undecided_enclosures} <= {"budget", "narrow"}
         assert all(np.allclose(s.position, 0.0, atol=1e-12) for s in res.solutions)
+
+
+# ---- more than d cables at their lengths: one equilibrium, one solution ----------------------
+
+
+def pose_under(robot, rng):
+    """A position under the exits: in the middle half of their horizontal span, 20–70 % of
+    the lowest exit's height."""
+    a = robot.exits
+    lo, hi = a[:, :-1].min(axis=0), a[:, :-1].max(axis=0)
+    across = (lo + hi) / 2 + rng.uniform(-0.25, 0.25, lo.size) * (hi - lo)
+    return np.array([*across, rng.uniform(0.2, 0.7) * a[:, -1].min()])
+
+
+def balanced_with_every_cable(robot, p):
+    """Whether the load at ``p`` is balanced by non-negative tensions along the cables
+    (non-negative least squares on the unit directions, from the raw data)."""
+    from scipy.optimize import nnls
+
+    a = robot.exits
+    f = load_of(robot)
+    _, residual = nnls(((a - p) / np.linalg.norm(a - p, axis=1)[:, None]).T, -f)
+    return residual <= 1e-9 * np.linalg.norm(f)
+
+
+def check_one_at_pose(robot, lengths, p, solutions):
+    """Exactly one solution, at ``p``, an equilibrium from the raw data, its ``boundary``
+    every cable (all at their lengths there)."""
+    assert len(solutions) == 1, solutions
+    (sol,) = solutions
+    np.testing.assert_allclose(sol.position, p, rtol=0.0, atol=1e-9)
+    check_equilibrium(robot, lengths, sol)
+    assert tuple(sol.boundary) == tuple(range(robot.n_cables))
+
+
+@pytest.mark.parametrize("dimension", [3, 2])
+def test_exact_lengths_of_a_pose_give_one_solution(dimension):
+    """The exact lengths of a position under the exits of a random point mass of d + 1 to 8
+    (6 in the plane) cables: every cable at its length, several d-subsets balance the load
+    (each a border solution, none inside another), one equilibrium — one solution, at the
+    position when the cables can hold it there, its tensions one valid distribution."""
+    at_pose = 0
+    high = 8 if dimension == 3 else 6
+    for seed in range(16):
+        n = dimension + 1 + seed % (high - dimension)
+        robot, _ = random_point_mass_robot(n, dimension=dimension, seed=seed)
+        p = pose_under(robot, np.random.default_rng(1000 + seed))[:dimension]
+        lengths = np.linalg.norm(robot.exits - p, axis=1)
+        res = solve_dgp(robot, lengths)
+        assert res.complete
+        if balanced_with_every_cable(robot, p):
+            at_pose += 1
+            check_one_at_pose(robot, lengths, p, res.solutions)
+        else:  # the mass hangs lower, on fewer cables: still one equilibrium
+            (sol,) = res.solutions
+            check_equilibrium(robot, lengths, sol)
+    assert at_pose >= 10
+
+
+@pytest.mark.parametrize("name, dimension, cables", [("camera-4cable", 3, 4), ("random", 3, 7), ("random", 2, 5)])
+def test_cli_fk_at_the_exact_ik_lengths_of_a_pose(taut_cli, tmp_path, name, dimension, cables):
+    """``taut ik`` then ``taut fk`` at its lengths: one equilibrium, at the pose, every cable
+    (1-based) at its length."""
+    if name == "random":
+        robot, _ = random_point_mass_robot(cables, dimension=dimension, seed=7)
+        path = tmp_path / "robot.yaml"
+        taut.save_robot(robot, path)
+        name = str(path)
+    else:
+        robot = taut.example(name)
+    p = pose_under(robot, np.random.default_rng(3))[:dimension]
+    assert balanced_with_every_cable(robot, p)
+    run = taut_cli("ik", name, "--pose=" + ",".join(map(repr, p.tolist())), "--json")
+    assert run.code == 0, run.err
+    lengths = run.json()["lengths"]
+    run = taut_cli("fk", name, "--lengths", ",".join(map(repr, lengths)), "--json")
+    assert run.code == 0, run.err
+    data = run.json()
+    assert data["complete"] is True
+    zero_based = [SimpleNamespace(**sol) for sol in data["solutions"]]
+    for sol in zero_based:
+        sol.taut = tuple(i - 1 for i in sol.taut)
+        sol.boundary = tuple(i - 1 for i in sol.boundary)
+    check_one_at_pose(robot, np.array(lengths), p, zero_based)
 
 
 # ---- the inverse problem and tracking ------------------------------------------------------

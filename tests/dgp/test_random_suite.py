@@ -14,6 +14,7 @@ from taut.dgp._solve import solve_subset
 from taut.errors import TautError
 from taut.geometry import rotation_matrix
 from taut.interval import LinearFilter, bisect, compile_tape, const
+from taut.kinematics import inverse_kinematics
 from taut.model import load_robot, random_planar_robot, random_suspended_robot, save_robot
 
 #: (cables, seed): quick robots of the benchmark suite, coplanar and not, with equilibria on
@@ -268,3 +269,78 @@ def test_a_root_found_again_in_a_narrow_boxs_margin_is_reported_once():
     assert undecided == 0 and len(sols) == 6
     poses = np.array([np.r_[s.position, s.orientation] for s in sols])
     assert (np.linalg.norm(poses[:, None] - poses[None], axis=-1) + np.eye(6)).min() > 1e-6
+
+
+# ---- robots whose cables leave through swivelling pulleys ------------------------------------
+
+
+def check_pulley_equilibrium(robot, lengths, sol):
+    """One equilibrium of a pulley robot against the pulley inverse kinematics of
+    taut.kinematics (lengths with the wound arcs, structure matrix through the tangent
+    points): the taut cables at their lengths to 1e-9, the slack ones within theirs, the
+    tensions ≥ 0 balancing the weight, forces and moments about the reference point."""
+    pose = np.concatenate([sol.position, sol.orientation])
+    ik = inverse_kinematics(robot, pose)
+    taut = list(sol.taut)
+    slack = [i for i in range(robot.n_cables) if i not in taut]
+    np.testing.assert_allclose(ik.lengths[taut], lengths[taut], rtol=0, atol=1e-9)
+    assert np.all(ik.lengths[slack] <= lengths[slack] + 1e-9)
+    assert np.all(sol.tensions >= 0.0) and np.all(sol.tensions[slack] == 0.0)
+    R = rotation_matrix(sol.orientation, robot.orientation)
+    f = robot.weight
+    wrench = np.concatenate([f, np.cross(R @ np.asarray(robot.platform.wrench_point), f)])
+    np.testing.assert_allclose(ik.structure_matrix @ sol.tensions + wrench, 0.0, atol=1e-9 * np.linalg.norm(f))
+
+
+@settings(max_examples=25, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), n=st.integers(3, 8), radius=st.floats(0.005, 0.5))
+def test_random_pulley_robot_is_the_point_exit_one_with_pulleys(seed, n, radius, tmp_path_factory):
+    """At the drawn pose the pulley inverse kinematics gives back the exact lengths, and the
+    cables leave the pulleys at the point-exit robot's exit points (its tangent points);
+    the platform, anchors and noise are that robot's; the file round-trips."""
+    robot, lengths = random_suspended_robot(n, seed=seed, perturbation=0.0, pulley_radius=radius)
+    point, straight = random_suspended_robot(n, seed=seed, perturbation=0.0)
+    assert robot.swivel_cables == tuple(range(n)) and robot.platform == point.platform
+    np.testing.assert_array_equal(robot.anchors, point.anchors)
+    ik = inverse_kinematics(robot, robot.reference.poses["drawn"])
+    np.testing.assert_allclose(ik.lengths, lengths, rtol=1e-12)
+    np.testing.assert_allclose(ik.exit_points, point.exits, atol=1e-9)
+    assert np.all(np.linalg.norm(robot.exits - point.exits, axis=1) <= 2 * radius)
+    assert np.all(lengths > straight)  # the arcs
+    # the same noise as the point-exit robot of the seed
+    noisy, measured = random_suspended_robot(n, seed=seed, pulley_radius=radius)
+    np.testing.assert_allclose(measured / lengths, random_suspended_robot(n, seed=seed)[1] / straight, rtol=1e-12)
+    path = tmp_path_factory.mktemp("pulleys") / "random.yaml"
+    save_robot(noisy, path)
+    assert load_robot(str(path)) == noisy
+
+
+@pytest.mark.parametrize("radius", [0.0, -0.1, 0.6, float("nan"), "0.1"])
+def test_random_pulley_robot_refuses_a_bad_radius(radius):
+    with pytest.raises(TautError, match="pulley radius"):
+        random_suspended_robot(3, seed=0, pulley_radius=radius)
+
+
+#: (cables, seed, max_taut): quick pulley robots, 5 cm pulleys; seed 2 has equilibria on all three
+#: cables, found in about a second.
+PULLEY_SUITE = [(3, 1, 2), (3, 2, 3), (4, 2, 2), (6, 2, 2)]
+
+
+@pytest.mark.parametrize("n, seed, max_taut", PULLEY_SUITE)
+def test_random_pulley_robots_equilibria_have_the_pulley_lengths(n, seed, max_taut):
+    robot, lengths = random_suspended_robot(n, seed=seed, pulley_radius=0.05)
+    res = solve_dgp(robot, lengths, max_taut=max_taut)
+    assert res.complete and res.solutions
+    for sol in res.solutions:
+        check_pulley_equilibrium(robot, lengths, sol)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("seed", [3, 5])
+def test_random_pulley_robots_every_taut_subset(seed):
+    """The whole DGP of 3-cable pulley robots (seconds each): every equilibrium checked."""
+    robot, lengths = random_suspended_robot(3, seed=seed, pulley_radius=0.05)
+    res = solve_dgp(robot, lengths)
+    assert res.complete and any(len(s.taut) == 3 for s in res.solutions)
+    for sol in res.solutions:
+        check_pulley_equilibrium(robot, lengths, sol)

@@ -42,7 +42,9 @@ JSON: {{"robot", "solutions": [{{"taut", "position", "orientation", "tensions", 
 (position x, y[, z], no orientation) hangs on at most 3 (2 in the plane) taut cables, at
 the lowest point its cables allow: lengths that admit none give no equilibrium, complete.
 "least_squares" is then, apart, the least-squares fit of all the lengths that cable-printer
-firmware computes (every cable assumed taut): not an equilibrium."""
+firmware computes (every cable assumed taut): not an equilibrium.  With more than 3 (2)
+cables at their lengths, the point mass's equilibrium is listed once, "boundary" naming them
+all, its tensions those of one taut set: one of many distributions that balance the load."""
 
 
 def run(ns: argparse.Namespace) -> int:

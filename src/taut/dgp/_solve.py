@@ -13,7 +13,10 @@ taut cable included: a point, not a continuum).  An equilibrium on the border of
 cable at its length with zero tension, so that its certified box straddles the bound of
 one subset's tension or of the other's slack-cable inequality — is reported once, with the
 smaller subset as ``taut`` and the larger as ``boundary``: at the certificate's precision it
-solves one of the two.  Boxes double precision leaves too narrow to split (two equilibria
+solves one of the two.  A point mass has at most one equilibrium position
+(:mod:`taut.dgp._point_mass`): when more than ``d`` of its cables are at their lengths there,
+several taut subsets, none inside another, balance the load (a statically indeterminate
+equilibrium), and they are reported as one solution — :func:`merge_point_mass`.  Boxes double precision leaves too narrow to split (two equilibria
 about to merge) are searched again in 256-bit balls (:mod:`taut.interval._precise`).
 
 References
@@ -27,7 +30,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from itertools import combinations
 from typing import TYPE_CHECKING
 
@@ -95,7 +98,10 @@ class DGPSolution(Result):
         equilibria (the solution is its middle).
     boundary : tuple of int or None
         A border equilibrium: the cables of ``boundary`` not in ``taut`` are at their
-        lengths with zero tension, to within the certificate.
+        lengths with zero tension, to within the certificate.  For a point mass, every cable
+        at its length: when they are more than ``d``, the tensions are not unique —
+        ``tensions`` is one distribution that balances the load, that of the first taut
+        subset in canonical order (:func:`merge_point_mass`).
 
     References
     ----------
@@ -127,7 +133,8 @@ class DGPSolution(Result):
     uniqueness_radius: float  #: half-width of the inflated box with no other solution
     continuum: tuple[float, float] | None = None  #: spin arc of a one-cable family
     #: a border equilibrium: the cables of ``boundary`` not in ``taut`` are at their lengths
-    #: with zero tension, to within the certificate — it solves ``taut`` or ``boundary``
+    #: with zero tension, to within the certificate — it solves ``taut`` or ``boundary``; for
+    #: a point mass, every cable at its length (more than ``d``: the tensions are not unique)
     boundary: tuple[int, ...] | None = None
 
     def as_dict(self) -> dict:
@@ -546,6 +553,46 @@ def _same_border(border: DGPSolution, other: DGPSolution) -> bool:
     )
 
 
+def merge_point_mass(solutions: list[DGPSolution]) -> list[DGPSolution]:
+    """A point mass's solutions at one position, to within :data:`BORDER_TOL`, as one.
+
+    The potential is linear and the allowed set strictly convex: a point mass has at most
+    one equilibrium position (:mod:`taut.dgp._point_mass`), and solutions at one position
+    are one equilibrium.  Several arise when more than ``d`` cables are at their lengths
+    there: each ``d``-subset whose tensions balance the load is a border solution, none
+    inside another (which :func:`_same_border` merges).  The tensions are then statically
+    indeterminate — every convex combination of those subsets' distributions balances the
+    load — and the one reported is that of the first subset by size, then cable numbers,
+    its ``boundary`` every cable at its length (the union of the solutions' ``boundary``
+    and ``taut``).
+
+    Examples
+    --------
+    The camera crane at the exact lengths of a pose under its four exits: all four cables
+    at their lengths, one solution that balances the load on three of them.
+
+    >>> import numpy as np
+    >>> from taut.dgp import solve_dgp
+    >>> from taut.model import example
+    >>> robot = example("camera-4cable")
+    >>> lengths = np.linalg.norm(robot.exits - [1.0, -0.5, 5.0], axis=1)
+    >>> [(s.taut, s.boundary, s.position.round(9)) for s in solve_dgp(robot, lengths).solutions]
+    [((0, 1, 2), (0, 1, 2, 3), array([ 1. , -0.5,  5. ]))]
+    """
+    out: list[DGPSolution] = []
+    for sol in sorted(solutions, key=lambda s: (len(s.taut), s.taut)):
+        k = next(
+            (i for i, o in enumerate(out) if np.allclose(o.position, sol.position, rtol=0.0, atol=BORDER_TOL)), None
+        )
+        if k is None:
+            out.append(sol)
+            continue
+        first = out[k]
+        cables = {*first.taut, *(first.boundary or ()), *sol.taut, *(sol.boundary or ())}
+        out[k] = replace(first, boundary=tuple(sorted(cables)))
+    return out
+
+
 #: Distance (metres, radians) under which two border equilibria are the same: the
 #: certificates are ~1e-10 wide, distinct equilibria of a robot are centimetres apart.
 BORDER_TOL = 1e-6
@@ -723,6 +770,8 @@ def solve_dgp(
     for sol in borders:
         if not any(_same_border(sol, other) for other in solutions):
             solutions.append(sol)
+    if robot.is_point_mass:
+        solutions = merge_point_mass(solutions)
     solutions.sort(key=solution_key)
     fit = least_squares_fit(robot, checked) if robot.is_point_mass else None
     return DGPResult(tuple(solutions), len(subsets), tuple(undecided), boxes, time.perf_counter() - t0, fit)

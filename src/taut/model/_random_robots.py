@@ -7,13 +7,17 @@ random body (flat — coplanar anchors — or not), its centre of mass below the
 cable lengths from the straight-line inverse kinematics of a random pose, perturbed by a
 few per cent so that at the true equilibrium some cables may be slack — as when a user
 measures lengths on a real robot (Berti 2015, §2.1: an under-constrained robot hangs on
-whichever subset of its cables the lengths make taut).
+whichever subset of its cables the lengths make taut).  With ``pulley_radius`` its cables leave
+through swivelling pulleys (Pott 2018, pulley kinematics), built about the drawn pose so that
+their lengths, wound arcs included, follow from it in closed form.
 
 References
 ----------
 .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
    interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
    di Bologna, 2015, §2.1. (docs/references.bib: berti2015)
+.. [2] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+   Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
 """
 
 from __future__ import annotations
@@ -22,10 +26,41 @@ import numpy as np
 
 from taut.errors import TautError
 from taut.geometry import rotation_matrix
-from taut.model._robot import Cable, Platform, Reference, Robot
+from taut.model._robot import Cable, Platform, Reference, Robot, SwivelPulley
 
 #: Cable counts the generator draws (the DGP solves subsets of up to six taut cables).
 MIN_CABLES, MAX_CABLES = 3, 8
+
+#: Largest ``pulley_radius`` of :func:`random_suspended_robot` [m]: well below the cables'
+#: free lengths (over a metre), so that no cable is refused as shorter than its pulley.
+MAX_PULLEY_RADIUS = 0.5
+
+#: Largest tilt [rad] of a random robot's swivel axes from straight down.
+MAX_AXIS_TILT = 0.3
+
+
+def _swivel_exits(
+    tangents: np.ndarray, anchors: np.ndarray, axes: np.ndarray, radius: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """Swivelling pulleys of ``radius`` whose cables leave at the points ``tangents`` towards
+    ``anchors`` (both ``(n, 3)``), the cables coming along the unit ``axes``: the points where
+    the cables run onto the pulleys, and the cable lengths with the arcs.
+
+    In the pulley's plane — spanned by ``k``, the axis, and ``e``, the unit part of the free
+    cable's direction ``u`` normal to it — the cable runs along ``k`` onto the circle and wraps
+    it through ``β`` (``cos β = u·k``, ``sin β = u·e``) to the tangent point ``C``, whose centre
+    is then ``C + r (cos β e − sin β k)`` and the run-on point ``r e`` before the centre; the
+    length is ``r β + ‖b − C‖`` (Pott 2018, pulley kinematics)."""
+    free = anchors - tangents
+    lf = np.linalg.norm(free, axis=1)
+    u = free / lf[:, None]
+    along = np.einsum("ij,ij->i", u, axes)
+    normal = u - along[:, None] * axes
+    across = np.linalg.norm(normal, axis=1)
+    e = normal / across[:, None]
+    beta = np.arctan2(across, along)
+    exits = tangents + radius * ((np.cos(beta) - 1.0)[:, None] * e - np.sin(beta)[:, None] * axes)
+    return exits, radius * beta + lf
 
 
 def random_suspended_robot(
@@ -34,6 +69,7 @@ def random_suspended_robot(
     seed: int | np.random.Generator,
     coplanar: bool | None = None,
     perturbation: float = 0.02,
+    pulley_radius: float | None = None,
 ) -> tuple[Robot, np.ndarray]:
     """A random suspended spatial robot and cable lengths to solve its DGP for, drawn from a
     seed: the test suite and benchmark of robots nobody tuned the solver to.
@@ -44,6 +80,14 @@ def random_suspended_robot(
     centre of mass ``platform.wrench_point`` 0.1–0.5 body sizes below the anchors' mean plane
     and off its axis.  The lengths are also stored as ``reference.lengths``, so the robot
     file alone is a complete ``taut fk`` case.
+
+    With ``pulley_radius``, every cable leaves through a swivelling pulley of that radius
+    (``cables[].swivel``) instead, coming along an axis tilted up to :data:`MAX_AXIS_TILT`
+    from straight down; the pulleys are placed so that at the drawn pose the cables leave
+    them at the point-exit robot's exit points, and the lengths are the pulley lengths, arcs
+    wound included, perturbed alike.  The drawn pose is then ``reference.poses["drawn"]``.
+    The robot is the point-exit one of the same seed, plus the pulleys: as the radius tends to
+    0, the exits and lengths tend to its own.
 
     Parameters
     ----------
@@ -59,6 +103,9 @@ def random_suspended_robot(
         The relative standard deviation of the lengths around the inverse kinematics of the
         drawn pose (0: every cable exactly reaches its anchor there, which is then generally
         not an equilibrium).
+    pulley_radius : float, optional
+        Swivelling pulleys of this radius [m], 0 < radius ≤ :data:`MAX_PULLEY_RADIUS`
+        (default: none, the cables leave from fixed exit points).
 
     Returns
     -------
@@ -69,13 +116,26 @@ def random_suspended_robot(
     Raises
     ------
     TautError
-        For a cable count outside 3–8, a negative perturbation or a bad seed.
+        For a cable count outside 3–8, a negative perturbation, a pulley radius out of range
+        or a bad seed.
+
+    References
+    ----------
+    .. [1] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts
+       in Advanced Robotics 120, Springer, 2018, pulley kinematics.
+       (docs/references.bib: pott2018)
 
     Examples
     --------
     >>> robot, lengths = random_suspended_robot(3, seed=0)
     >>> robot.name, np.round(lengths, 3)
     ('random suspended 3-cable robot (seed 0)', array([1.822, 1.645, 1.835]))
+
+    The same robot with pulleys of 5 cm: the arcs lengthen the cables by centimetres.
+
+    >>> pulleys, longer = random_suspended_robot(3, seed=0, pulley_radius=0.05)
+    >>> pulleys.name, pulleys.swivel_cables, np.round(longer - lengths, 3)
+    ('random suspended 3-cable pulley robot (seed 0)', (0, 1, 2), array([0.054, 0.04 , 0.05 ]))
     """
     if not (isinstance(n_cables, (int, np.integer)) and MIN_CABLES <= n_cables <= MAX_CABLES):
         raise TautError(f"a random suspended robot has {MIN_CABLES} to {MAX_CABLES} cables, got {n_cables!r}")
@@ -83,6 +143,10 @@ def random_suspended_robot(
         raise TautError(f"the length perturbation must be a non-negative number, got {perturbation!r}")
     if not (isinstance(seed, np.random.Generator) or (isinstance(seed, (int, np.integer)) and seed >= 0)):
         raise TautError(f"seed must be an int >= 0 or a numpy.random.Generator, got {seed!r}")
+    if pulley_radius is not None and not (
+        isinstance(pulley_radius, (int, float, np.number)) and 0.0 < pulley_radius <= MAX_PULLEY_RADIUS
+    ):
+        raise TautError(f"the pulley radius must be a number in (0, {MAX_PULLEY_RADIUS:g}] m, got {pulley_radius!r}")
     n = int(n_cables)
     rng = seed if isinstance(seed, np.random.Generator) else np.random.default_rng(seed)
     label = f" (seed {seed})" if not isinstance(seed, np.random.Generator) else ""
@@ -107,23 +171,40 @@ def random_suspended_robot(
     position = np.array([*(rng.uniform(-0.4, 0.4, 2) * half), rng.uniform(0.3, 0.6) * height])
     pose_angles = rng.uniform(-0.25, 0.25, 3)
     R = rotation_matrix(pose_angles, "xyz-fixed")
-    reach = np.linalg.norm(exits - (position + anchors @ R.T), axis=1)
-    lengths = reach * np.exp(perturbation * rng.standard_normal(n))
-    name = f"random suspended {n}-cable robot{label}"
+    b = position + anchors @ R.T
+    reach = np.linalg.norm(exits - b, axis=1)
+    noise = np.exp(perturbation * rng.standard_normal(n))
+    swivels: list[SwivelPulley | None] = [None] * n
+    poses = {}
+    kind = ""
+    if pulley_radius is None:
+        lengths = reach * noise
+    else:
+        # drawn after everything else: the point-exit robot of the seed is the same
+        tilt, turn = rng.uniform(0.0, MAX_AXIS_TILT, n), rng.uniform(0.0, 2 * np.pi, n)
+        axes = np.column_stack([np.sin(tilt) * np.cos(turn), np.sin(tilt) * np.sin(turn), -np.cos(tilt)])
+        exits, spans = _swivel_exits(exits, b, axes, float(pulley_radius))
+        lengths = spans * noise
+        swivels = [SwivelPulley(axis=tuple(float(c) for c in k), radius=float(pulley_radius)) for k in axes]
+        poses = {"drawn": tuple(float(x) for x in np.concatenate([position, pose_angles]))}
+        kind = " pulley"
+    name = f"random suspended {n}-cable{kind} robot{label}"
+    pulleys = "" if pulley_radius is None else f", cables through swivelling pulleys of radius {pulley_radius:g} m"
     robot = Robot(
         name=name,
         description=(
-            f"{'Coplanar' if coplanar else 'Non-coplanar'} anchors; lengths from the inverse kinematics of the "
-            f"pose {np.round(np.concatenate([position, pose_angles]), 4).tolist()} perturbed by {perturbation:g} "
-            "(taut.model._random_robots)."
+            f"{'Coplanar' if coplanar else 'Non-coplanar'} anchors{pulleys}; lengths from the inverse kinematics "
+            f"of the pose {np.round(np.concatenate([position, pose_angles]), 4).tolist()} perturbed by "
+            f"{perturbation:g} (taut.model._random_robots)."
         ),
         dimension=3,
         orientation="xyz-fixed",
         platform=Platform(kind="rigid", mass=mass, wrench_point=tuple(float(c) for c in com)),
         cables=tuple(
-            Cable(exit=tuple(float(c) for c in e), anchor=tuple(float(c) for c in b)) for e, b in zip(exits, anchors)
+            Cable(exit=tuple(float(c) for c in e), anchor=tuple(float(c) for c in a), swivel=k)
+            for e, a, k in zip(exits, anchors, swivels)
         ),
-        reference=Reference(source="taut.model._random_robots", lengths=tuple(float(x) for x in lengths)),
+        reference=Reference(source="taut.model._random_robots", lengths=tuple(float(x) for x in lengths), poses=poses),
     )
     return robot, lengths
 
