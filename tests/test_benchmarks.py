@@ -18,10 +18,11 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
         ("bench_workspace.py", ["--resolution", "6", "--check-resolution", "3"], "poses where the verdicts differ: 0"),
         ("bench_wrapping.py", ["--samples", "2001"], "state updates per second per cable"),
         ("bench_check.py", ["--poses", "2000", "--loop", "30"], "poses where the verdicts differ: 0"),
-        (
+        pytest.param(
             "bench_plan.py",
             ["--repeat", "1", "--seeds", "2", "--pose-seeds", "1", "--ompl-time", "2"],
             "all feasible True",
+            marks=pytest.mark.slow,
         ),
         ("bench_atlas.py", ["--queries", "2000", "--naive", "10", "--repeat", "1"], "same lengths at 100 %"),
         ("bench_tracking.py", ["--repeat", "1"], "back to start within"),

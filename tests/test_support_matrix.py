@@ -282,7 +282,14 @@ def test_the_table_covers_every_kind_and_every_command():
         assert cell == "supported" or re.fullmatch(r"refused: \S.*", cell), f"cell {cell!r}"
 
 
-@pytest.mark.parametrize(("analysis", "kind", "cell"), CELLS, ids=[f"{a}|{k}" for a, k, _ in CELLS])
+#: A supported cell computes (seconds to a minute each): those run with the slow tests, the
+#: refusals (a second each) in the quick suite.
+PARAMS = [
+    pytest.param(a, k, c, id=f"{a}|{k}", marks=[pytest.mark.slow] if c == "supported" else []) for a, k, c in CELLS
+]
+
+
+@pytest.mark.parametrize(("analysis", "kind", "cell"), PARAMS)
 def test_cell(analysis, kind, cell, tmp_path):
     subject = OVERRIDES.get((analysis, kind), SUBJECTS[kind])
     argv, check = QUERIES[analysis](subject, tmp_path)
