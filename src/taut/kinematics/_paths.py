@@ -199,3 +199,43 @@ def cable_paths(robot: Robot, anchors: np.ndarray) -> tuple[np.ndarray, np.ndarr
     if robot.obstacles:
         status = np.where((status == CABLE_OK) & (first_obstacle(robot, exits, anchors) >= 0), WRAPPED, status)
     return lengths, exits, status
+
+
+def refuse_wrapped(robot: Robot, poses: npt.ArrayLike, *, times: npt.ArrayLike | None = None, what: str = "") -> None:
+    """Refuse poses where a cable of a variable-structure robot, taken as a straight line,
+    meets one of its obstacles (:func:`obstacles_met`): analyses of straight cables along a
+    motion (``taut simulate``) call it on the motion's poses.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+    times : array_like, shape (N,), optional
+        The poses' times [s], to name the first such pose by its time instead of its number.
+    what : str, optional
+        What the poses are (e.g. ``"of the reference"``), after its time or number.
+
+    Raises
+    ------
+    WrappedCableError
+        At the first such pose, naming the cable and the obstacle (1-based).
+    PoseError
+        Poses that :func:`~taut.kinematics.as_poses` refuses.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.kinematics import refuse_wrapped
+    >>> refuse_wrapped(example("vscr-four-cable"), [[0.75, -0.5], [0, -0.7]], times=[0, 0.5])
+    Traceback (most recent call last):
+    ...
+    taut.errors.WrappedCableError: VSCR four cables: at t = 0.5 s cable 1 meets obstacle 2 (object 2) as a straight line: its wrapped length depends on the motion; taut trajectory models the wrapping
+    """
+    if not robot.obstacles:
+        return
+    met = np.atleast_2d(obstacles_met(robot, poses))
+    hit = np.argwhere(met >= 0)
+    if hit.size:
+        k, i = (int(x) for x in hit[0])
+        where = f"at pose {k + 1}" if times is None else f"at t = {float(np.asarray(times, float)[k]):g} s"
+        raise wrapped_error(robot, f"{where}{' ' + what if what else ''}", i, int(met[k, i]))
