@@ -327,7 +327,7 @@ class CheckResult(Result):
     @property
     def touches_obstacle(self) -> np.ndarray:
         """``(N,)`` bool: a cable's straight line meets an obstacle."""
-        return (self.obstacle_contacts >= 0).any(axis=1)
+        return np.asarray((self.obstacle_contacts >= 0).any(axis=1))
 
     @property
     def problems(self) -> np.ndarray:
