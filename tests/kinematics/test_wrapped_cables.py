@@ -111,3 +111,23 @@ def test_polygon_obstacle_in_space_is_refused():
     )
     with pytest.raises(UnsupportedRobotError, match="polygon in space"):
         obstacles_met(robot, np.zeros(6))
+
+
+def test_a_sphere_in_space_meets_the_cables_through_it():
+    from taut.kinematics import anchors_at, default_guess
+    from taut.model import Circle, example
+
+    robot = example("spatial-8cable")
+    q = default_guess(robot)
+    mid = 0.5 * (robot.exits[0] + anchors_at(robot, q[None])[0, 0])
+    ball = robot.model_copy(update={"obstacles": (Circle(kind="circle", center=tuple(mid), radius=0.01),)})
+    met = obstacles_met(ball, q)
+    assert met[0] == 0
+    # the others: by their distance to the centre along 1000 points of each cable
+    b = anchors_at(robot, q[None])[0]
+    s = np.linspace(0, 1, 1001)[:, None, None]
+    points = robot.exits[None] + s * (b - robot.exits)[None]
+    far = np.linalg.norm(points - mid, axis=-1).min(axis=0) > 0.011
+    assert (met[far] == -1).all()
+    with pytest.raises(WrappedCableError, match="cable 1 meets obstacle 1 as a straight line"):
+        inverse_kinematics(ball, q)

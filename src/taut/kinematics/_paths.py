@@ -15,7 +15,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import PoseError, UnsupportedRobotError, WrappedCableError
-from taut.geometry import segment_distance, segment_enters_polygon, segment_meets_circle
+from taut.geometry import segment_enters_polygon, segment_meets_circle
 from taut.kinematics._pose import anchors_at, as_poses
 from taut.kinematics._swivel import swivel_parameters, swivel_paths
 from taut.model import Robot
@@ -72,6 +72,8 @@ def first_obstacle(robot: Robot, starts: np.ndarray, anchors: np.ndarray) -> np.
         elif robot.dimension == 2:
             hit = segment_meets_circle(starts, anchors, np.asarray(o.center, float), o.radius)
         else:  # a sphere: the distance from its centre, as a zero-length segment, to the cable
+            from taut.geometry import segment_distance  # Numba: spatial obstacles only
+
             c = np.asarray(o.center, float)
             hit = segment_distance(starts, anchors, c, c) < o.radius - TOL
         met[hit] = k
