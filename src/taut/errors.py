@@ -27,6 +27,7 @@ __all__ = [
     "TrajectoryError",
     "UnreachableLengthsError",
     "UnsupportedRobotError",
+    "WrappedCableError",
 ]
 
 
@@ -53,6 +54,13 @@ class PoseError(TautError):
 
 class InfeasiblePoseError(PoseError):
     """A pose at which the requested quantity does not exist (e.g. a zero-length cable)."""
+
+
+class WrappedCableError(InfeasiblePoseError):
+    """A pose at which a cable of a variable-structure robot, taken as a straight line from its
+    exit, meets one of the robot's obstacles: the cable wraps around it there, and its wrapped
+    length and direction depend on the motion that led to the pose (``taut.wrapping`` follows
+    them along a trajectory), so that no single-pose analysis answers."""
 
 
 class CableSetError(TautError):

@@ -165,7 +165,9 @@ def test_few_poses_agree_with_the_batch_kernel(name, convention):
     from taut.kinematics._inverse import BATCH_POSES
     from taut.model import robot_to_dict
 
-    robot = taut.example(name)
+    # the kernel does not take obstacles (they send every batch through NumPy); the straight
+    # cables of a variable-structure robot still have to agree between the two paths
+    robot = taut.example(name).model_copy(update={"obstacles": ()})
     if convention is not None:
         robot = robot_from_dict(robot_to_dict(robot) | {"orientation": convention})
     rng = np.random.default_rng(2)

@@ -66,7 +66,12 @@ def run(ns: argparse.Namespace) -> int:
     data = {"robot": robot.name, "trajectory": spec} | result
     data["summary"] = _summary(result["summary"])
     data["steps"] = [
-        r | {"index": r["index"] + 1, "collisions": [[i + 1, j + 1] for i, j in r["collisions"]]}
+        r
+        | {
+            "index": r["index"] + 1,
+            "collisions": [[i + 1, j + 1] for i, j in r["collisions"]],
+            "obstacle_contacts": [[i + 1, j + 1] for i, j in r["obstacle_contacts"]],
+        }
         for r in result["steps"]
     ]
     if plot is not None:
@@ -85,6 +90,7 @@ def run(ns: argparse.Namespace) -> int:
             ("self-collision", "collision_steps"),
             ("Jacobian singular", "jacobian_singular_steps"),
             ("force-closure singular", "force_closure_singular_steps"),
+            ("cable meets obstacle", "obstacle_contact_steps"),
         ):
             runs = s[key]
             text = ", ".join(f"{a}" if a == b else f"{a}-{b}" for a, b in runs) if runs else "none"
@@ -93,6 +99,12 @@ def run(ns: argparse.Namespace) -> int:
             k = s["first_collision"] - 1
             pairs = "; ".join(f"{names[i]} & {names[j]}" for i, j in res.proximity.collisions(k))
             con.print(f"  first collision at step {k + 1}: {markup(pairs)}")
+        if s["first_obstacle_contact"] is not None:
+            k = s["first_obstacle_contact"] - 1
+            met = "; ".join(f"cable {i} meets obstacle {j}" for i, j in d["steps"][k]["obstacle_contacts"])
+            con.print(
+                f"  first obstacle contact at step {k + 1}: {met} (it wraps; taut trajectory models the wrapping)"
+            )
 
     emit(data, ns.json, human)
     return 0

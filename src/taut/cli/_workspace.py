@@ -122,6 +122,11 @@ def run(ns: argparse.Namespace) -> int:
             f"{markup(robot.name)}: {d['condition']} workspace: {d['inside']} of {d['poses']} poses inside "
             f"({100 * d['fraction']:.1f} %), {d['elapsed_s']:.3f} s"
         )
+        if d["wrapped"]:
+            console().print(
+                f"{d['wrapped']} poses left outside: a straight cable meets an obstacle there "
+                "(it wraps around it; taut atlas models the wrapping)"
+            )
 
     emit(data, ns.json, human)
     return 0

@@ -13,7 +13,12 @@ robot's first reference pose (zeros, joints at mid-range, without one).
 At every step :func:`check_poses` reports the colliding capsule pairs (§3.4,
 :mod:`taut.collision._proximity`), the smallest clearance ``ε``, and the Jacobian and
 force-closure singularities (§2.3.1, :mod:`taut.collision._singularity`).  Poses where a
-cable has zero length are reported as singular (no structure matrix exists there).
+cable has zero length are reported as singular (no structure matrix exists there).  On a
+variable-structure robot a cable whose straight line meets one of the robot's obstacles is
+an obstacle contact, a problem of its own (:func:`taut.kinematics.obstacles_met`): the cable
+wraps around the obstacle there, so the singularity tests of the straight cables are not run
+at that pose (its flags are false and its ``jacobian_ratio`` NaN, ``None`` in JSON); the
+capsules are still the straight cables.
 
 Trajectory files (:func:`load_trajectory`):
 
@@ -46,7 +51,7 @@ from taut.collision._capsules import CapsuleModel, capsule_model, capsule_segmen
 from taut.collision._proximity import ProximityResult, proximity
 from taut.collision._singularity import JACOBIAN_TOL, check_method, force_closure_singular, jacobian_singular
 from taut.errors import PoseError, TautError
-from taut.kinematics import CABLE_OK, actuator_jacobian, as_poses, ik_status
+from taut.kinematics import CABLE_OK, actuator_jacobian, as_poses, ik_status, obstacles_met
 from taut.model import Robot
 from taut.motion import complete_waypoints, robot_trajectory
 
@@ -282,6 +287,9 @@ class CheckResult(Result):
     jacobian_ratio : ndarray, shape (N,)
         ``σ_min / σ_max`` of the Jacobian.
     force_closure_singular : ndarray of bool, shape (N,)
+    obstacle_contacts : ndarray of int, shape (N, n)
+        The 0-based obstacle each cable's straight line meets at each pose, ``-1`` where none
+        (:func:`taut.kinematics.obstacles_met`).
 
     References
     ----------
@@ -304,6 +312,7 @@ class CheckResult(Result):
     jacobian_singular: np.ndarray  #: ``(N,)`` bool
     jacobian_ratio: np.ndarray  #: ``(N,)`` ``σ_min / σ_max`` of ``J``
     force_closure_singular: np.ndarray  #: ``(N,)`` bool
+    obstacle_contacts: np.ndarray  #: ``(N, n)`` 0-based obstacle each straight cable meets, -1 none
 
     @property
     def model(self) -> CapsuleModel:
@@ -316,9 +325,14 @@ class CheckResult(Result):
         return ~self.proximity.interference_free
 
     @property
+    def touches_obstacle(self) -> np.ndarray:
+        """``(N,)`` bool: a cable's straight line meets an obstacle."""
+        return np.asarray((self.obstacle_contacts >= 0).any(axis=1))
+
+    @property
     def problems(self) -> np.ndarray:
-        """``(N,)`` bool: a collision or a singularity."""
-        return self.collides | self.jacobian_singular | self.force_closure_singular
+        """``(N,)`` bool: a collision, a singularity or an obstacle contact."""
+        return self.collides | self.jacobian_singular | self.force_closure_singular | self.touches_obstacle
 
     def capsules(self, robot: Robot, k: int) -> tuple[np.ndarray, np.ndarray]:
         """The end points of every capsule of :attr:`model` at one checked pose.
@@ -356,8 +370,9 @@ class CheckResult(Result):
 
     def steps(self) -> list[dict]:
         """One record per pose: its 0-based ``index``, the 0-based capsule pairs in
-        ``collisions`` (cables first, as in :attr:`model`), the two singularity flags and the
-        smallest clearance (None where no pair is checked)."""
+        ``collisions`` (cables first, as in :attr:`model`), the two singularity flags, the
+        smallest clearance (None where no pair is checked) and the 0-based ``[cable,
+        obstacle]`` pairs of ``obstacle_contacts``."""
         clear = self.proximity.min_clearance
         return [
             {
@@ -366,6 +381,9 @@ class CheckResult(Result):
                 "jacobian_singular": bool(self.jacobian_singular[k]),
                 "force_closure_singular": bool(self.force_closure_singular[k]),
                 "min_clearance": float(clear[k]) if np.isfinite(clear[k]) else None,
+                "obstacle_contacts": [
+                    [int(i), int(self.obstacle_contacts[k, i])] for i in np.flatnonzero(self.obstacle_contacts[k] >= 0)
+                ],
             }
             for k in range(len(self.poses))
         ]
@@ -373,10 +391,11 @@ class CheckResult(Result):
     def summary(self) -> dict[str, Any]:
         """The verdict of the whole trajectory, with 0-based pose indices: the number of
         ``poses``; the first pose that collides (``first_collision``), is Jacobian singular,
-        force-closure singular, or any of them (``first_problem``), each None when none
+        force-closure singular, has a straight cable meeting an obstacle
+        (``first_obstacle_contact``), or any of them (``first_problem``), each None when none
         does; the inclusive ``[first, last]`` runs of consecutive poses that collide
-        (``collision_steps``) or are singular; and the smallest ``min_clearance`` [m] (None
-        without poses or pairs).
+        (``collision_steps``), are singular or meet an obstacle (``obstacle_contact_steps``);
+        and the smallest ``min_clearance`` [m] (None without poses or pairs).
 
         Returns
         -------
@@ -395,6 +414,7 @@ class CheckResult(Result):
             "collision": self.collides,
             "jacobian_singular": self.jacobian_singular,
             "force_closure_singular": self.force_closure_singular,
+            "obstacle_contact": self.touches_obstacle,
         }
         clear = self.proximity.min_clearance
         return jsonable(
@@ -449,7 +469,9 @@ def check_poses(
 
     At every pose: the colliding capsule pairs (§3.4), the smallest clearance, and the
     Jacobian and force-closure singularities (§2.3.1).  Poses where a cable has no direction
-    are singular.
+    are singular.  Where a cable of a variable-structure robot meets an obstacle as a straight
+    line, the contact is reported (:attr:`CheckResult.obstacle_contacts`) and the straight
+    cables' singularities are not tested (see the module's docstring).
 
     Parameters
     ----------
@@ -500,9 +522,12 @@ def check_poses(
     N = arr.shape[0]
     jac, ratio, fc = np.ones(N, bool), np.zeros(N), np.ones(N, bool)
     ok = (ik_status(robot, arr)[1] == CABLE_OK).all(axis=1)
+    contacts = obstacles_met(robot, arr)
+    wrapped = (contacts >= 0).any(axis=1)
+    jac[wrapped], ratio[wrapped], fc[wrapped] = False, np.nan, False
     if ok.any():
         J = actuator_jacobian(robot, arr[ok])
         jac[ok], ratio[ok] = jacobian_singular(J, tol=tol)
         W = -np.swapaxes(J[:, : robot.n_cables, : robot.wrench_dim], 1, 2)  # J = [−Wᵀ, …]
         fc[ok] = force_closure_singular(W, method=method)
-    return CheckResult(arr, prox, jac, ratio, fc)
+    return CheckResult(arr, prox, jac, ratio, fc, contacts)

@@ -559,6 +559,11 @@ def simulate_control(
     IntegrationError
         The motion reaches a singular configuration (gimbal lock, a zero-length cable) or
         diverges.
+    WrappedCableError
+        The reference or the simulated motion reaches a pose where a cable of a
+        variable-structure robot, as a straight line, meets one of its obstacles
+        (:func:`taut.kinematics.obstacles_met`): the loop models straight cables, and the
+        wrapped cable's length and direction are not theirs.
 
     References
     ----------
@@ -584,7 +589,7 @@ def simulate_control(
     """
     from taut.dynamics._kernels import control_updates
     from taut.geometry import rotation_matrix
-    from taut.kinematics import as_poses
+    from taut.kinematics import as_poses, refuse_wrapped
     from taut.statics import EQUILIBRIUM_RTOL
 
     started = perf_counter()
@@ -663,6 +668,7 @@ def simulate_control(
         ref = np.array([samples.poses, samples.velocity, samples.acceleration])
         ahead = np.array([mid.poses, mid.velocity, mid.acceleration])
         D = _tabulate(disturbance, time, int(substeps), dof)
+        refuse_wrapped(robot, samples.poses, times=time, what="of the reference")
         Q, V, E, A = (np.zeros((g.size, dof)) for _ in range(4))
         T = np.zeros((g.size, n))
         ok_all = np.ones(g.size, dtype=bool)
@@ -707,6 +713,7 @@ def simulate_control(
             E[k], A[k] = state[4], state[5]
             k += 1
         new = slice(k0 - g0, end)
+        refuse_wrapped(robot, Q[new], times=time[new], what="of the simulated motion")
         Eb, Tb, okb, tb = E[new], T[new], ok_all[new], time[new]
         pos = np.linalg.norm(Eb[:, :d], axis=1)
         rot = np.zeros(pos.size)

@@ -20,7 +20,7 @@ if TYPE_CHECKING:
         structure_matrix,
     )
     from taut.kinematics._jointed import actuator_jacobian, joint_forces, jointed_structure_matrix
-    from taut.kinematics._paths import CABLE_OK, MIN_LENGTH, cable_paths
+    from taut.kinematics._paths import CABLE_OK, MIN_LENGTH, cable_paths, obstacles_met, refuse_wrapped
     from taut.kinematics._pose import anchor_points, anchors_at, as_poses, body_frames, platform_frame
     from taut.kinematics._swivel import SwivelPaths, refuse_swivels, swivel_angles, swivel_parameters, swivel_paths
 
@@ -45,6 +45,8 @@ _LAZY = {
     "CABLE_OK": "taut.kinematics._paths",
     "MIN_LENGTH": "taut.kinematics._paths",
     "cable_paths": "taut.kinematics._paths",
+    "obstacles_met": "taut.kinematics._paths",
+    "refuse_wrapped": "taut.kinematics._paths",
     "anchor_points": "taut.kinematics._pose",
     "anchors_at": "taut.kinematics._pose",
     "as_poses": "taut.kinematics._pose",
@@ -78,8 +80,10 @@ __all__ = [
     "joint_forces",
     "jointed_structure_matrix",
     "lengths_at",
+    "obstacles_met",
     "platform_frame",
     "refuse_swivels",
+    "refuse_wrapped",
     "robot_stiffness",
     "structure_matrix",
     "swivel_angles",

@@ -146,8 +146,8 @@ def _ik_kernel(
 
 def supports_batch(robot: Robot) -> bool:
     """True when the kernel handles the robot (no jointed bodies, no swivelling pulleys on a
-    planar robot)."""
-    return robot.n_joints == 0 and not (robot.dimension == 2 and robot.swivel_cables)
+    planar robot, no obstacles its straight cables could meet)."""
+    return robot.n_joints == 0 and not (robot.dimension == 2 and robot.swivel_cables) and not robot.obstacles
 
 
 def kernel_structure_matrices(robot: Robot, arr: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

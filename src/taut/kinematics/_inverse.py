@@ -32,7 +32,16 @@ import numpy.typing as npt
 from taut._results import Result
 from taut.errors import InfeasiblePoseError
 from taut.geometry import cross
-from taut.kinematics._paths import CABLE_OK, MIN_LENGTH, STATUS_REASONS, ZERO_LENGTH, cable_paths
+from taut.kinematics._paths import (
+    CABLE_OK,
+    MIN_LENGTH,
+    STATUS_REASONS,
+    WRAPPED,
+    ZERO_LENGTH,
+    cable_paths,
+    first_obstacle,
+    wrapped_error,
+)
 from taut.kinematics._pose import anchors_at, as_poses
 from taut.model import Robot
 
@@ -79,8 +88,12 @@ class IKResult(Result):
     exit_points: np.ndarray
 
 
-def _infeasible(robot: Robot, status: np.ndarray) -> InfeasiblePoseError:
+def _infeasible(robot: Robot, status: np.ndarray, poses: np.ndarray) -> InfeasiblePoseError:
     k, i = np.argwhere(status != CABLE_OK)[0]
+    if status[k, i] == WRAPPED:
+        b = anchors_at(robot, poses[k : k + 1])
+        met = first_obstacle(robot, cable_paths(robot, b)[1], b)
+        return wrapped_error(robot, f"at pose {k + 1}", int(i), int(met[0, i]))
     return InfeasiblePoseError(f"{robot.name}: at pose {k + 1} cable {i + 1} {STATUS_REASONS[int(status[k, i])]}")
 
 
@@ -101,7 +114,9 @@ def ik_status(robot: Robot, poses: np.ndarray) -> tuple[IKResult, np.ndarray]:
         is not :data:`CABLE_OK`.
     status : ndarray of int, shape (N, n)
         The status of each cable: :data:`CABLE_OK`, or why its direction does not exist
-        (a zero length, an anchor on the axis or inside the circle of its swivelling pulley).
+        (a zero length, an anchor on the axis or inside the circle of its swivelling pulley), or
+        why its straight line is not the cable (it meets an obstacle of a variable-structure
+        robot, :func:`~taut.kinematics.obstacles_met`).
 
     Raises
     ------
@@ -199,6 +214,11 @@ def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
     InfeasiblePoseError
         A cable of zero length, or whose anchor is on the axis or inside the circle of its
         swivelling pulley: its direction and the structure matrix do not exist there.
+    WrappedCableError
+        A cable of a variable-structure robot whose straight line meets an obstacle
+        (:func:`~taut.kinematics.obstacles_met`): it wraps around it, and its length depends
+        on the motion (:mod:`taut.wrapping` follows it along a trajectory).  Where every
+        straight cable clears every obstacle, the straight cables are the answer.
 
     References
     ----------
@@ -225,14 +245,14 @@ def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
     if batched is not None:
         lengths, W, ok = batched
         if not ok.all():
-            raise _infeasible(robot, np.where(lengths < MIN_LENGTH, ZERO_LENGTH, CABLE_OK))
+            raise _infeasible(robot, np.where(lengths < MIN_LENGTH, ZERO_LENGTH, CABLE_OK), arr)
         u = np.swapaxes(W[:, :d, :], 1, 2)
         b = robot.exits[None, :, :] - u * lengths[..., None]
         res = IKResult(lengths, u, b, W, np.broadcast_to(robot.exits[None], b.shape))
     else:
         res, status = ik_status(robot, arr)
         if (status != CABLE_OK).any():
-            raise _infeasible(robot, status)
+            raise _infeasible(robot, status, arr)
     if single:
         return IKResult(res.lengths[0], res.directions[0], res.anchors[0], res.structure_matrix[0], res.exit_points[0])
     return res
@@ -267,7 +287,8 @@ def cable_lengths(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     PoseError
         Poses that :func:`as_poses` refuses.
     InfeasiblePoseError
-        Where a cable's direction does not exist (see :func:`inverse_kinematics`).
+        Where a cable's direction does not exist, or (:class:`~taut.errors.WrappedCableError`)
+        a straight cable meets an obstacle (see :func:`inverse_kinematics`).
 
     References
     ----------
@@ -305,7 +326,8 @@ def structure_matrix(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     PoseError
         Poses that :func:`as_poses` refuses.
     InfeasiblePoseError
-        Where a cable's direction does not exist (see :func:`inverse_kinematics`).
+        Where a cable's direction does not exist, or (:class:`~taut.errors.WrappedCableError`)
+        a straight cable meets an obstacle (see :func:`inverse_kinematics`).
 
     References
     ----------
@@ -342,8 +364,9 @@ def batch_structure_matrices(robot: Robot, poses: npt.ArrayLike) -> tuple[np.nda
     W : ndarray, shape (N, m, n)
         Structure matrices; zero where ``ok`` is False.
     ok : ndarray of bool, shape (N,)
-        The poses where every cable has a length of at least ``MIN_LENGTH`` (1e-12 m) and,
-        through a swivelling pulley, a tangent point.
+        The poses where every cable has a length of at least ``MIN_LENGTH`` (1e-12 m),
+        through a swivelling pulley a tangent point, and as a straight line meets no obstacle
+        of a variable-structure robot.
 
     Raises
     ------

@@ -27,7 +27,7 @@ import numpy.typing as npt
 
 from taut._results import Result, jsonable
 from taut.errors import GridSizeError, PoseError, TautError
-from taut.kinematics import as_poses
+from taut.kinematics import as_poses, obstacles_met
 from taut.model import Robot
 from taut.parallel import Executor, as_executor
 from taut.statics import WrenchSet
@@ -85,6 +85,10 @@ class WorkspaceResult(Result):
         The poses given as an array (then ``grid`` is None).
     complete : bool
         Every pose has its verdict.
+    wrapped : int
+        Poses left outside because a cable, taken as a straight line, meets an obstacle of a
+        variable-structure robot there (:func:`~taut.kinematics.obstacles_met`): the cable
+        wraps around it and the straight-cable condition does not hold.
 
     Examples
     --------
@@ -105,6 +109,7 @@ class WorkspaceResult(Result):
     grid: PoseGrid | None = None  #: the grid the poses come from
     explicit_poses: np.ndarray | None = None  #: ``(N, pose_size)`` poses given as an array
     complete: bool = True  #: every pose of the grid has its verdict
+    wrapped: int = 0  #: poses left outside because a straight cable meets an obstacle there
 
     @property
     def size(self) -> int:
@@ -180,12 +185,14 @@ class WorkspaceResult(Result):
         Returns
         -------
         dict
-            ``poses`` (count), ``inside`` (count), ``fraction``, ``elapsed_s``, ``measure``
+            ``poses`` (count), ``inside`` (count), ``wrapped`` (the poses left outside because
+            a straight cable meets an obstacle there), ``fraction``, ``elapsed_s``, ``measure``
             and ``grid_shape``.
         """
         return {
             "poses": int(self.inside.size),
             "inside": self.count,
+            "wrapped": int(self.wrapped),
             "fraction": self.fraction,
             "elapsed_s": float(self.elapsed_s),
             "measure": self.measure,
@@ -227,6 +234,7 @@ class WorkspaceResult(Result):
             "axis_names": list(self.axis_names),
             "elapsed_s": float(self.elapsed_s),
             "complete": bool(self.complete),
+            "wrapped": int(self.wrapped),
             "format": FILE_FORMAT,
         }
         arrays = {f"axis_{i}": np.asarray(a) for i, a in enumerate(self.axes)}
@@ -276,6 +284,7 @@ class WorkspaceResult(Result):
                     grid,
                     f["poses"] if "poses" in f.files else None,
                     bool(meta.get("complete", True)),
+                    int(meta.get("wrapped", 0)),
                 )
         except (OSError, KeyError, ValueError) as exc:
             raise TautError(f"{path}: not a taut workspace file ({exc})") from None
@@ -286,11 +295,18 @@ class WorkspaceResult(Result):
 Chunk = tuple[Robot, WorkspaceCondition, np.ndarray | PoseGrid, int, int]
 
 
-def _evaluate_chunk(item: Chunk) -> np.ndarray:
-    """Worker function (module level, so that it pickles): one chunk of poses."""
+def _evaluate_chunk(item: Chunk) -> tuple[np.ndarray, int]:
+    """Worker function (module level, so that it pickles): one chunk of poses, its verdicts
+    and the number of its poses where a straight cable meets an obstacle (outside)."""
     robot, condition, source, start, stop = item
     poses = source.poses(start, stop) if isinstance(source, PoseGrid) else source[start:stop]
-    return np.asarray(condition.evaluate(robot, poses), dtype=bool)
+    if not robot.obstacles:
+        return np.asarray(condition.evaluate(robot, poses), dtype=bool), 0
+    clear = (obstacles_met(robot, poses) < 0).all(axis=1)
+    verdicts = np.zeros(len(poses), dtype=bool)
+    if clear.any():
+        verdicts[clear] = condition.evaluate(robot, poses[clear])
+    return verdicts, int(np.count_nonzero(~clear))
 
 
 def _check_grid(robot: Robot, grid: PoseGrid) -> None:
@@ -318,6 +334,12 @@ def evaluate_workspace(
     max_poses: int = MAX_POSES,
 ) -> WorkspaceResult:
     """Evaluate a workspace condition over a grid of poses.
+
+    A pose where a cable of a variable-structure robot, taken as a straight line, meets one
+    of its obstacles is outside, whatever the condition: the cable wraps around the obstacle
+    there, so that the straight-cable condition does not hold (the structure atlas,
+    :func:`taut.atlas.atlas_workspace`, models the wrapping); the result counts them
+    (:attr:`WorkspaceResult.wrapped`).
 
     The poses of a grid are generated chunk by chunk (``chunk`` poses, from their flat
     indices) where the chunk is evaluated, and only the verdicts are kept: memory is one
@@ -423,6 +445,7 @@ def evaluate_workspace(
             f"--max-poses; at most {MAX_GRID_POSES:,}): raise it to evaluate them all, or give fewer points per axis"
         )
     inside = np.zeros(N, dtype=bool)
+    wrapped = 0
     done = 0
     t0 = time.perf_counter()
     if progress is not None:
@@ -446,7 +469,8 @@ def evaluate_workspace(
                 progress(done, N)
 
         results = runner.map(_evaluate_chunk, items, callback=callback)
-        for s, verdicts in zip(starts, results):
+        for s, (verdicts, blocked) in zip(starts, results):
             inside[s : s + len(verdicts)] = verdicts
+            wrapped += blocked
     elapsed = time.perf_counter() - t0
-    return WorkspaceResult(robot.name, cond.name, inside, axes, shape, elapsed, names, g, arr)
+    return WorkspaceResult(robot.name, cond.name, inside, axes, shape, elapsed, names, g, arr, wrapped=wrapped)
