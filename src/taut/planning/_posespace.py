@@ -8,17 +8,30 @@ external wrench within the tension bounds, cable lengths inside their bounds, an
 no interference, no cable in an obstacle, lengths inside given bounds).  A straight segment
 between two poses (each angle of the orientation along its shortest difference: angles are
 2π-periodic, as on the manifold of :mod:`taut.planning._manifold`) is valid when its poses
-every ``resolution`` (in pose coordinates, m and rad) are; they are checked in batches.  A
-path found is checked again every ``resolution / 10``, ten poses at least per segment; a
-segment that fails is replaced by a detour that RRT-Connect finds at that resolution, else the
-unshortened path is tried, else the answer is "not found".  Checks at discrete poses cannot
-see an invalid region thinner than their spacing (near singular poses the invalid set can be a
-thin sheet): the returned path is valid at every checked pose, not certified between them.
+every ``resolution`` (in pose coordinates, m and rad) are; they are checked in batches.
+
+**Margin.**  Checks at discrete poses cannot see an invalid region thinner than their
+spacing, and near singular poses the invalid set can be such a sheet (0.0003–0.0008 wide on
+CoGiRo and the 8-cable robot, where the tensions that hold the platform spike).  So the
+planners plan with a stricter test (:func:`with_margin`): the wrench ellipsoid's axes
+:data:`WRENCH_MARGIN` times longer and every upper tension bound capped at
+:data:`TENSION_MARGIN` times the least cap (to a factor 2) that holds the start and the goal.
+Both widen such sheets (the tensions diverge on their sides: on CoGiRo, whose tensions are
+unbounded, a cap of 1000 N for a 1 N load turns a 0.0008 sheet into a 0.08 one) and keep
+paths off the boundary of the valid set.  A path found is checked again every
+``resolution / 10`` (ten poses at least per segment) with half that margin (axes √ times,
+twice the cap), so that a path grazing the planners' boundary between its checked poses
+passes; a segment that fails is replaced by a detour that RRT-Connect finds at that
+resolution with the margin, else the unshortened path is tried, else the answer is "not
+found"; when the margin leaves no path, the planners run again with the nominal test.  The
+returned path is valid at every checked pose, not certified between them.
 
 * ``rrtconnect`` — RRT-Connect (Kuffner & LaValle 2000): two trees, from the start and from
   the goal, each extended one ``step`` toward a random pose of the box and the other then
-  connected greedily toward the new node; then random shortcuts (Geraerts & Overmars 2007)
-  between points of the path.  Randomised, deterministic for a ``seed`` (unless
+  connected greedily toward the new node; then the path shortened as OMPL's
+  ``PathSimplifier::simplify`` does (:func:`simplify`: vertices dropped, random shortcuts
+  between points of the path (Geraerts & Overmars 2007), corner cutting, repeated while it
+  gains).  Randomised, deterministic for a ``seed`` (unless
   ``time_limit`` stops it); a search that runs out of ``max_nodes`` or time proves nothing.
 * ``grid`` — A* over a lattice of the pose box (positions at ``spacing``; each angle at the
   step nearest ``spacing`` that divides 2π, periodic), two lattice points joined when they are
@@ -38,7 +51,9 @@ References
 .. [2] R. Geraerts, M. H. Overmars, "Creating high-quality paths for motion planning",
    International Journal of Robotics Research 26(8), 2007, §3 (random shortcuts).
    (docs/references.bib: geraerts2007)
-.. [3] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+.. [3] I. A. Şucan, M. Moll, L. E. Kavraki, "The Open Motion Planning Library", IEEE Robotics &
+   Automation Magazine 19(4), 2012 (``PathSimplifier``). (docs/references.bib: sucan2012)
+.. [4] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
    Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
    Machine Science 12, Springer, 2013, §5. (docs/references.bib: bohigas2013)
 """
@@ -477,6 +492,8 @@ def _smooth(space: PoseSpace, path: np.ndarray, resolution: float, deadline: flo
         moved = np.linalg.norm(corner - path[1:-1], axis=1) > 0.01 * _length(path)
         if not moved.any():
             break
+        mid_ok = space.valid(mid)  # a midpoint need not be one of the poses its segment was checked at
+        moved &= mid_ok[:-1] & mid_ok[1:]
         idx = np.flatnonzero(moved)
         ok = space.segments_ok(np.vstack([mid[idx], corner[idx]]), np.vstack([corner[idx], mid[idx + 1]]), resolution)
         moved[idx] = ok[: len(idx)] & ok[len(idx) :]
@@ -484,7 +501,9 @@ def _smooth(space: PoseSpace, path: np.ndarray, resolution: float, deadline: flo
         out = np.empty((2 * len(path) - 1, path.shape[1]))
         out[0::2] = np.vstack([path[:1], inner, path[-1:]])
         out[1::2] = mid
-        path = out
+        keep = np.ones(len(out), bool)
+        keep[1::2] = mid_ok
+        path = out[keep]
     return path
 
 
