@@ -422,7 +422,7 @@ def _reduce_vertices(space: PoseSpace, path: np.ndarray, resolution: float, dead
 def _on_path(path: np.ndarray, cum: np.ndarray, s: float, snap: float) -> tuple[int, int, np.ndarray]:
     """The point at arc length ``s``: the vertices before and after it (both its own index
     when it is within ``snap`` of a vertex, and moved onto it) and its pose."""
-    i = int(min(max(np.searchsorted(cum, s, side="right") - 1, 0), len(path) - 2))
+    i = int(np.clip(np.searchsorted(cum, s, side="right") - 1, 0, len(path) - 2))
     if s - cum[i] < snap:
         return i, i, path[i]
     if cum[i + 1] - s < snap:
