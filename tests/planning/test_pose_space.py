@@ -5,6 +5,8 @@ exits and anchors); a lattice that proves no path; another angle convention; bad
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 from scipy.optimize import linprog
 from scipy.spatial.transform import Rotation
 
@@ -205,3 +207,38 @@ def test_the_manifold_figure_refuses_a_pose_space_result(point_mass):
     assert res.found and res.atlas is None and res.charts == 0
     with pytest.raises(ArgumentError, match="rrtconnect"):
         plot_plan(None, res, None)
+
+
+def test_cogiro_path_near_a_thin_invalid_sheet_passes_the_fine_check():
+    # The benchmark's fourth query, seed 9: without the planners' margin the path crossed an
+    # invalid sheet 0.0008 wide (near a singular pose) between its checked poses, and failed
+    # verify_path at a 0.001 step.
+    robot = example("cogiro")
+    start, goal = np.array([0, 0, 5.35, 0, 0, 1.5]), np.array([0, 0, 5.35, 0, 0, -1.5])
+    pts = np.vstack([robot.exits, start[None, :3], goal[None, :3]])
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    half, centre = 0.5 * (hi - lo).max(), 0.5 * (lo + hi)
+    box = (np.minimum(lo, centre - half), np.maximum(hi, centre + half))
+    res = plan_path(robot, start, goal, method="rrtconnect", seed=9, bounds=box, resolution=0.01)
+    assert res.found and np.array_equal(res.path[0], start) and np.array_equal(res.path[-1], goal)
+    assert fine_step(robot, res.path, 1e-3)
+    assert all(balanced(robot, q) for q in res.path)
+
+
+@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(seed=st.integers(0, 2**16))
+def test_shortening_never_lengthens_and_keeps_validity(point_mass, seed):
+    from taut.planning._posespace import _rrt, pose_space, simplify, with_margin
+
+    # with the planners' margin, as the planners shorten
+    start, goal = np.array([-0.92, 0.92]), np.array([0.92, 0.92])
+    space = with_margin(pose_space(point_mass, start, goal), start, goal)
+    rng = np.random.default_rng(seed)
+    kw = dict(step=None, resolution=0.01, max_nodes=5000, time_limit=None, progress=None)
+    raw = _rrt(space, start, goal, rng=rng, shorten=False, final=False, **kw).path
+    short = simplify(space, raw, 0.01, rng, np.inf)
+    length = lambda p: float(np.linalg.norm(np.diff(p, axis=0), axis=1).sum())  # noqa: E731
+    assert length(short) <= length(raw) + 1e-12
+    assert np.array_equal(short[0], raw[0]) and np.array_equal(short[-1], raw[-1])
+    assert fine_step(point_mass, short)
+    assert all(balanced(point_mass, q) for q in short)

@@ -8,17 +8,30 @@ external wrench within the tension bounds, cable lengths inside their bounds, an
 no interference, no cable in an obstacle, lengths inside given bounds).  A straight segment
 between two poses (each angle of the orientation along its shortest difference: angles are
 2π-periodic, as on the manifold of :mod:`taut.planning._manifold`) is valid when its poses
-every ``resolution`` (in pose coordinates, m and rad) are; they are checked in batches.  A
-path found is checked again every ``resolution / 10``, ten poses at least per segment; a
-segment that fails is replaced by a detour that RRT-Connect finds at that resolution, else the
-unshortened path is tried, else the answer is "not found".  Checks at discrete poses cannot
-see an invalid region thinner than their spacing (near singular poses the invalid set can be a
-thin sheet): the returned path is valid at every checked pose, not certified between them.
+every ``resolution`` (in pose coordinates, m and rad) are; they are checked in batches.
+
+**Margin.**  Checks at discrete poses cannot see an invalid region thinner than their
+spacing, and near singular poses the invalid set can be such a sheet (0.0003–0.0008 wide on
+CoGiRo and the 8-cable robot, where the tensions that hold the platform spike).  So the
+planners plan with a stricter test (:func:`with_margin`): the wrench ellipsoid's axes
+:data:`WRENCH_MARGIN` times longer and every upper tension bound capped at
+:data:`TENSION_MARGIN` times the least cap (to a factor 2) that holds the start and the goal.
+Both widen such sheets (the tensions diverge on their sides: on CoGiRo, whose tensions are
+unbounded, a cap of 1000 N for a 1 N load turns a 0.0008 sheet into a 0.08 one) and keep
+paths off the boundary of the valid set.  A path found is checked again every
+``resolution / 10`` (ten poses at least per segment) with half that margin (axes √ times,
+twice the cap), so that a path grazing the planners' boundary between its checked poses
+passes; a segment that fails is replaced by a detour that RRT-Connect finds at that
+resolution with the margin, else the unshortened path is tried, else the answer is "not
+found"; when the margin leaves no path, the planners run again with the nominal test.  The
+returned path is valid at every checked pose, not certified between them.
 
 * ``rrtconnect`` — RRT-Connect (Kuffner & LaValle 2000): two trees, from the start and from
   the goal, each extended one ``step`` toward a random pose of the box and the other then
-  connected greedily toward the new node; then random shortcuts (Geraerts & Overmars 2007)
-  between points of the path.  Randomised, deterministic for a ``seed`` (unless
+  connected greedily toward the new node; then the path shortened as OMPL's
+  ``PathSimplifier::simplify`` does (:func:`simplify`: vertices dropped, random shortcuts
+  between points of the path (Geraerts & Overmars 2007), corner cutting, repeated while it
+  gains).  Randomised, deterministic for a ``seed`` (unless
   ``time_limit`` stops it); a search that runs out of ``max_nodes`` or time proves nothing.
 * ``grid`` — A* over a lattice of the pose box (positions at ``spacing``; each angle at the
   step nearest ``spacing`` that divides 2π, periodic), two lattice points joined when they are
@@ -38,7 +51,9 @@ References
 .. [2] R. Geraerts, M. H. Overmars, "Creating high-quality paths for motion planning",
    International Journal of Robotics Research 26(8), 2007, §3 (random shortcuts).
    (docs/references.bib: geraerts2007)
-.. [3] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
+.. [3] I. A. Şucan, M. Moll, L. E. Kavraki, "The Open Motion Planning Library", IEEE Robotics &
+   Automation Magazine 19(4), 2012 (``PathSimplifier``). (docs/references.bib: sucan2012)
+.. [4] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
    Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
    Machine Science 12, Springer, 2013, §5. (docs/references.bib: bohigas2013)
 """
@@ -49,7 +64,8 @@ import heapq
 import itertools
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from functools import partial
 
 import numpy as np
 import numpy.typing as npt
@@ -58,14 +74,42 @@ from taut._checks import as_array
 from taut.errors import InfeasiblePoseError, TautError
 from taut.model import Robot
 from taut.planning._search import PathResult
-from taut.planning._verify import angle_columns, pose_validity, refuse_unplannable, short_way
+from taut.planning._verify import angle_columns, pose_validity, refuse_unplannable, short_way, wrench_ellipsoid
 
-__all__ = ["POSE_METHODS", "SHORTCUTS", "PoseSpace", "grid_search", "pose_space", "rrt_connect"]
+__all__ = [
+    "POSE_METHODS",
+    "SHORTCUTS",
+    "PoseSpace",
+    "grid_search",
+    "pose_space",
+    "rrt_connect",
+    "simplify",
+    "with_margin",
+]
 
 #: The planners of :func:`taut.planning.plan_path` that search a robot's pose space.
 POSE_METHODS = ("rrtconnect", "grid")
-#: Random shortcuts tried on a path when it is shortened.
-SHORTCUTS = 200
+#: Random shortcuts tried on a path when it is shortened, at most.
+SHORTCUTS = 2000
+#: Shortcuts tried in a row without a shorter path that end a round of them.
+PATIENCE = 100
+#: Shortcuts drawn and checked in one batch.
+SHORTCUT_BATCH = 16
+#: A shortcut joins a point of the path to another at most ``RANGE`` of its length away along it.
+RANGE = 0.33
+#: A shortcut's end this near a vertex (a fraction of the path's length) is moved onto it.
+SNAP = 0.005
+#: Corner-cutting passes per round of shortening.
+SMOOTHING = 3
+#: Rounds of shortening go on while one shortens the path by more than this fraction.
+GAIN = 1e-3
+#: The planners' wrench ellipsoid, in multiples of the axes of the one asked for.
+WRENCH_MARGIN = 4.0
+#: The planners' tension cap, in multiples of the least cap (a power of 2 times 2⁻³⁰ N, or of
+#: the largest lower bound) at which the start and the goal are valid.
+TENSION_MARGIN = 20
+#: A segment longer than twice this many checked poses is first checked at this many, spread.
+COARSE = 16
 #: Most poses checked in one batch while a tree is connected greedily.
 CONNECT_BATCH = 64
 #: Random samples whose extensions' ends are checked in one batch.
@@ -94,6 +138,16 @@ class PoseSpace:
     upper: np.ndarray  #: ``(k,)`` (angles: π)
     angles: np.ndarray  #: indices of the 2π-periodic coordinates
     check: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]
+    #: :func:`~taut.planning._verify.pose_validity` with the query's options but ``E`` and ``tension_bounds``
+    validity: Callable[..., Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]]
+    E: np.ndarray  #: the query's wrench ellipsoid
+    #: the space of the test that paths are checked with at last, when this one is stricter
+    nominal: PoseSpace | None = None
+
+    @property
+    def verified(self) -> PoseSpace:
+        """The space of the test that a path is checked with at last (:func:`_finish`)."""
+        return self if self.nominal is None else self.nominal
 
     def valid(self, poses: np.ndarray) -> np.ndarray:
         """``(N,)`` bool: the validity of poses ``(N, k)``."""
@@ -110,8 +164,38 @@ class PoseSpace:
         spaced poses at least, its end included (its start too when ``closed``, else assumed
         valid)."""
         n = max(points, int(np.ceil(np.linalg.norm(d) / resolution)))
-        t = np.arange(0 if closed else 1, n + 1)[:, None] / n
-        return bool(self.valid(a + t * d).all())
+        t = np.arange(0 if closed else 1, n + 1) / n
+        if len(t) > 2 * COARSE:  # an invalid segment mostly fails at one of a few spread poses
+            coarse = np.zeros(len(t), bool)
+            coarse[:: len(t) // COARSE] = True
+            if not self.valid(a + t[coarse, None] * d).all():
+                return False
+            t = t[~coarse]
+        return bool(self.valid(a + t[:, None] * d).all())
+
+    def segments_ok(self, a: np.ndarray, b: np.ndarray, resolution: float, *, closed: bool = False) -> np.ndarray:
+        """``(m,)`` bool: the segments ``a[i] → b[i]`` valid at every ``resolution``, their ends
+        ``b`` included (``a`` too when ``closed``), checked in two batches: a few spread poses
+        of each (as :meth:`segment_ok`), then the other poses of those that pass."""
+        d = b - a
+        n = np.maximum(1, np.ceil(np.linalg.norm(d, axis=1) / resolution).astype(int))
+        k = n + 1 if closed else n  # poses checked on each
+        seg = np.repeat(np.arange(len(a)), k)
+        idx = np.arange(len(seg)) - (np.cumsum(k) - k)[seg]  # each pose's rank on its segment
+        t = (idx + (0 if closed else 1)) / n[seg]
+        coarse = idx % np.maximum(1, k // COARSE)[seg] == 0
+        bad = np.zeros(len(a), bool)
+        for part in (coarse, ~coarse):
+            part = part & ~bad[seg]
+            if part.any():
+                ok = self.valid(a[seg[part]] + t[part, None] * d[seg[part]])
+                bad[seg[part][~ok]] = True
+        return ~bad
+
+    def straight(self, d: np.ndarray) -> bool:
+        """The step ``d`` turns every angle by less than π: the path's straight segment is the
+        one :func:`~taut.planning.verify_path` checks (each angle the short way)."""
+        return bool(np.all(np.abs(d[..., self.angles]) < np.pi))
 
     def unwrap(self, nodes: np.ndarray) -> np.ndarray:
         """The path through ``nodes`` made continuous: each angle the short way from the
@@ -135,7 +219,9 @@ def pose_space(
     of the exits, the start and the goal, widened on every axis to its largest side, about
     its centre), angles over the full circle; start and goal checked valid."""
     refuse_unplannable(robot, "pose-space planning")
-    check = pose_validity(robot, E=E, interference=interference, obstacles=obstacles, lengths=lengths)
+    ellipsoid = wrench_ellipsoid(robot, E)
+    validity = partial(pose_validity, robot, interference=interference, obstacles=obstacles, lengths=lengths)
+    check = validity(E=ellipsoid)
     d, k = robot.dimension, robot.pose_size
     if bounds is None:
         pts = np.vstack([robot.exits, start[None, :d], goal[None, :d]])
@@ -156,7 +242,7 @@ def pose_space(
     angles = angle_columns(robot)
     lower, upper = np.full(k, -np.pi), np.full(k, np.pi)
     lower[:d], upper[:d] = lo, hi
-    space = PoseSpace(robot, lower, upper, angles, check)
+    space = PoseSpace(robot, lower, upper, angles, check, validity, ellipsoid)
     for what, q in (("start", start), ("goal", goal)):
         if not space.valid(q)[0]:
             raise InfeasiblePoseError(
@@ -247,43 +333,177 @@ def _connect(
     return last, False
 
 
+def with_margin(space: PoseSpace, start: np.ndarray, goal: np.ndarray) -> PoseSpace:
+    """``space`` with the planners' stricter test (module docstring): the wrench ellipsoid's
+    axes :data:`WRENCH_MARGIN` times longer (less where the start or the goal would not be
+    valid) and every upper tension bound capped at :data:`TENSION_MARGIN` times the least
+    cap, to a factor 2, at which the start and the goal are valid."""
+    tmin, tmax = space.robot.tension_bounds
+    ends = np.array([start, goal])
+    grow = WRENCH_MARGIN
+    while grow > 1.0 and not space.validity(E=space.E / grow**2, tension_bounds=(tmin, tmax))(ends)[0].all():
+        grow = 1.0 + (grow - 1.0) / 2 if grow > 1.01 else 1.0
+    E = space.E / grow**2
+    cap = max(float(tmin.max()), 2.0**-30)
+    while not space.validity(E=E, tension_bounds=(tmin, np.minimum(tmax, cap)))(ends)[0].all():
+        cap *= 2.0
+    bounds = np.minimum(tmax, TENSION_MARGIN * cap)
+    if grow == 1.0 and np.array_equal(bounds, tmax):
+        return space
+    # paths are checked at last with half the margin: a path that grazes the planners' boundary
+    # between its checked poses stays inside it
+    half = space.validity(E=space.E / grow, tension_bounds=(tmin, np.minimum(tmax, 2 * bounds)))
+    return replace(space, check=space.validity(E=E, tension_bounds=(tmin, bounds)), nominal=replace(space, check=half))
+
+
 def _length(path: np.ndarray) -> float:
     return float(np.linalg.norm(np.diff(path, axis=0), axis=1).sum())
 
 
-def shortcut(
-    space: PoseSpace, path: np.ndarray, resolution: float, rng: np.random.Generator, attempts: int, deadline: float
+def simplify(
+    space: PoseSpace,
+    path: np.ndarray,
+    resolution: float,
+    rng: np.random.Generator,
+    deadline: float,
+    *,
+    tries: int = SHORTCUTS,
 ) -> np.ndarray:
-    """A continuous path ``(N, k)`` shortened: each vertex joined to the farthest later vertex
-    it sees by a valid segment, then random shortcuts (Geraerts & Overmars 2007, §3), two
-    random points of it joined straight where that segment is valid and shorter."""
-    path = np.array(path, float)
-    kept, i = [0], 0  # first each vertex joined to the farthest later one it sees
-    while i < len(path) - 1 and time.perf_counter() <= deadline:
-        j = next(
-            (j for j in range(len(path) - 1, i + 1, -1) if space.segment_ok(path[i], path[j] - path[i], resolution)),
-            i + 1,
+    """A continuous valid path ``(N, k)`` shortened as OMPL's ``PathSimplifier::simplify``
+    does (Şucan, Moll & Kavraki 2012): vertices dropped (:func:`_reduce_vertices`), then
+    rounds of random shortcuts between points of the path, vertices or not (Geraerts &
+    Overmars 2007, §3; :func:`_shortcuts`), corner cutting (:func:`_smooth`) and vertices
+    dropped again, while a round shortens the path by more than :data:`GAIN`, within
+    ``tries`` shortcuts and the ``deadline``.  Every change replaces a stretch of the path by
+    straight segments valid at ``resolution`` and no longer than it, each turning every angle
+    by less than π (so that the path is the one :func:`~taut.planning.verify_path` checks):
+    the path never gets longer."""
+    path = _reduce_vertices(space, np.array(path, float), resolution, deadline)
+    while tries > 0 and len(path) > 2 and time.perf_counter() <= deadline:
+        before = _length(path)
+        path, used = _shortcuts(space, path, resolution, rng, deadline, tries)
+        tries -= used
+        path = _reduce_vertices(space, _smooth(space, path, resolution, deadline), resolution, deadline)
+        if _length(path) > (1.0 - GAIN) * before:
+            break
+    return path
+
+
+def _reduce_vertices(space: PoseSpace, path: np.ndarray, resolution: float, deadline: float) -> np.ndarray:
+    """From the start, each kept vertex joined straight to a far later vertex it sees: the
+    farthest of those found by doubling the reach from the next vertex, then halving the gap
+    to the first that it does not see."""
+
+    def sees(i: int, j: int) -> bool:
+        d = path[j] - path[i]
+        return space.straight(d) and space.segment_ok(path[i], d, resolution)
+
+    n = len(path)
+    kept, i = [0], 0
+    while i < n - 1:
+        if time.perf_counter() > deadline:
+            kept.extend(range(i + 1, n))
+            break
+        seen, unseen, reach = i + 1, n, 1  # path[i] sees path[i + 1]: a segment of the path
+        while seen < n - 1:
+            j = min(i + 1 + reach, n - 1)
+            if not sees(i, j):
+                unseen = j
+                break
+            seen, reach = j, 2 * reach
+        while unseen - seen > 1:
+            j = (seen + unseen) // 2
+            seen, unseen = (j, unseen) if sees(i, j) else (seen, j)
+        kept.append(seen)
+        i = seen
+    return path[kept]
+
+
+def _on_path(path: np.ndarray, cum: np.ndarray, s: float, snap: float) -> tuple[int, int, np.ndarray]:
+    """The point at arc length ``s``: the vertices before and after it (both its own index
+    when it is within ``snap`` of a vertex, and moved onto it) and its pose."""
+    i = int(np.clip(np.searchsorted(cum, s, side="right") - 1, 0, len(path) - 2))
+    if s - cum[i] < snap:
+        return i, i, path[i]
+    if cum[i + 1] - s < snap:
+        return i + 1, i + 1, path[i + 1]
+    u = (s - cum[i]) / (cum[i + 1] - cum[i])
+    return i, i + 1, path[i] + u * (path[i + 1] - path[i])
+
+
+def _shortcuts(
+    space: PoseSpace, path: np.ndarray, resolution: float, rng: np.random.Generator, deadline: float, budget: int
+) -> tuple[np.ndarray, int]:
+    """Random shortcuts, as OMPL's ``shortcutPath``: a point anywhere on the path and another
+    within :data:`RANGE` of its length along it, joined straight where that segment is
+    valid and shorter than the stretch between them, until :data:`PATIENCE` tries in a row
+    fail or ``budget`` are made.  Tries are drawn :data:`SHORTCUT_BATCH` at a time and checked
+    in one batch; the valid ones are applied, the largest gain first, as long as their
+    stretches do not overlap.  Returns the path and the tries made."""
+    used = idle = 0
+    while used < budget and idle < PATIENCE and len(path) > 2 and time.perf_counter() <= deadline:
+        m = min(SHORTCUT_BATCH, budget - used)
+        used += m
+        cum = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(path, axis=0), axis=1))])
+        L = float(cum[-1])
+        s0 = rng.uniform(0.0, L, m)
+        s1 = rng.uniform(np.maximum(0.0, s0 - RANGE * L), np.minimum(L, s0 + RANGE * L))
+        tries = []
+        for a, b in zip(np.minimum(s0, s1), np.maximum(s0, s1)):
+            i0, j0, p0 = _on_path(path, cum, a, SNAP * L)
+            i1, j1, p1 = _on_path(path, cum, b, SNAP * L)
+            if j1 - i0 < 2:  # no vertex strictly between: the straight segment is the path's own
+                continue
+            d = p1 - p0
+            stretch = float(np.linalg.norm(path[j0] - p0) + cum[i1] - cum[j0] + np.linalg.norm(p1 - path[i1]))
+            gain = stretch - float(np.linalg.norm(d))
+            if gain > 1e-12 * L and space.straight(d):
+                tries.append((gain, i0, j1, p0, p1))
+        if not tries:
+            idle += m
+            continue
+        ok = space.segments_ok(
+            np.array([t[3] for t in tries]), np.array([t[4] for t in tries]), resolution, closed=True
         )
-        kept.append(j)
-        i = j
-    path = path[kept] if kept[-1] == len(path) - 1 else path
-    for _ in range(attempts):
+        chosen: list[tuple[float, int, int, np.ndarray, np.ndarray]] = []
+        for t in sorted((t for t, v in zip(tries, ok) if v), key=lambda t: -t[0]):
+            if all(t[2] <= c[1] or t[1] >= c[2] for c in chosen):  # stretches apart (a shared vertex kept)
+                chosen.append(t)
+        if not chosen:
+            idle += m
+            continue
+        idle = 0
+        for _, i0, j1, p0, p1 in sorted(chosen, key=lambda t: -t[1]):  # from the end: indices stay right
+            path = np.vstack([path[: i0 + 1], p0[None], p1[None], path[j1:]])
+        path = path[np.r_[True, np.linalg.norm(np.diff(path, axis=0), axis=1) > 0.0]]  # vertices met twice
+    return path, used
+
+
+def _smooth(space: PoseSpace, path: np.ndarray, resolution: float, deadline: float) -> np.ndarray:
+    """Corner cutting, as OMPL's ``smoothBSpline``: each segment halved and each inner vertex
+    moved to the mean of its two neighbouring midpoints and itself (weights ¼, ¼, ½) where the
+    two segments to those midpoints are valid; :data:`SMOOTHING` passes, fewer when one would
+    move no vertex by more than 1 % of the path's length."""
+    for _ in range(SMOOTHING):
         if len(path) < 3 or time.perf_counter() > deadline:
             break
-        seg = np.linalg.norm(np.diff(path, axis=0), axis=1)
-        cum = np.concatenate([[0.0], np.cumsum(seg)])
-        s0, s1 = np.sort(rng.uniform(0.0, cum[-1], 2))
-        i, j = np.searchsorted(cum, [s0, s1], side="right") - 1
-        j = min(j, len(path) - 2)
-        if i == j:
-            continue
-        p0 = path[i] + (s0 - cum[i]) / max(seg[i], 1e-300) * (path[i + 1] - path[i])
-        p1 = path[j] + (s1 - cum[j]) / max(seg[j], 1e-300) * (path[j + 1] - path[j])
-        if np.linalg.norm(p1 - p0) >= s1 - s0 - 1e-12 or not space.segment_ok(p0, p1 - p0, resolution, closed=True):
-            continue
-        path = np.vstack([path[: i + 1], p0[None], p1[None], path[j + 1 :]])
-        keep = np.r_[True, np.linalg.norm(np.diff(path, axis=0), axis=1) > 1e-12]
-        path = path[keep]
+        mid = 0.5 * (path[:-1] + path[1:])
+        corner = 0.25 * mid[:-1] + 0.5 * path[1:-1] + 0.25 * mid[1:]
+        moved = np.linalg.norm(corner - path[1:-1], axis=1) > 0.01 * _length(path)
+        if not moved.any():
+            break
+        mid_ok = space.valid(mid)  # a midpoint need not be one of the poses its segment was checked at
+        moved &= mid_ok[:-1] & mid_ok[1:]
+        idx = np.flatnonzero(moved)
+        ok = space.segments_ok(np.vstack([mid[idx], corner[idx]]), np.vstack([corner[idx], mid[idx + 1]]), resolution)
+        moved[idx] = ok[: len(idx)] & ok[len(idx) :]
+        inner = np.where(moved[:, None], corner, path[1:-1])
+        out = np.empty((2 * len(path) - 1, path.shape[1]))
+        out[0::2] = np.vstack([path[:1], inner, path[-1:]])
+        out[1::2] = mid
+        keep = np.ones(len(out), bool)
+        keep[1::2] = mid_ok
+        path = out[keep]
     return path
 
 
@@ -296,21 +516,23 @@ def _finish(
     max_nodes: int,
     deadline: float,
 ) -> np.ndarray | None:
-    """The continuous path checked again every ``resolution / FINE`` and ending at ``goal`` as
-    written (the same rotation as its last pose, possibly written with other multiples of
-    2π); ``None`` when a segment fails that check and no detour around the thin invalid
-    region it crosses is found by RRT-Connect at the fine resolution."""
+    """The continuous path checked again every ``resolution / FINE`` with the test of
+    ``space.verified`` and ending at ``goal`` as written (the same rotation as its last pose,
+    possibly written with other multiples of 2π); ``None`` when a segment fails that check
+    and no detour around the thin invalid region it crosses is found by RRT-Connect at the
+    fine resolution with the test of ``space`` (then checked as the path)."""
     fine = resolution / FINE
+    check = space.verified
     out = [path[0]]
     for p, q in zip(path[:-1], path[1:]):
         # FINE poses at least on every segment, however short: a detour's short segments must not
         # step over a thin invalid sheet (near singular poses) that their ends straddle
-        if space.segment_ok(p, q - p, fine, points=FINE):
+        if check.segment_ok(p, q - p, fine, points=FINE):
             out.append(q)
             continue
         if time.perf_counter() > deadline:
             return None
-        sub = rrt_connect(
+        sub = _rrt(
             space,
             p,
             q,
@@ -325,13 +547,33 @@ def _finish(
         )
         detour = space.unwrap(np.vstack([p, sub.path[1:]])) if sub.found else None
         if detour is None or not all(
-            space.segment_ok(u, v - u, fine, points=FINE) for u, v in zip(detour[:-1], detour[1:])
+            check.segment_ok(u, v - u, fine, points=FINE) for u, v in zip(detour[:-1], detour[1:])
         ):
             return None
         out.extend(detour[1:])
     result = np.array(out)
     result[-1] = goal
     return result
+
+
+def _with_fallback(
+    space: PoseSpace,
+    start: np.ndarray,
+    goal: np.ndarray,
+    time_limit: float | None,
+    run: Callable[[PoseSpace, float | None], PathResult],
+) -> PathResult:
+    """``run`` on ``space`` with the planners' margin (:func:`with_margin`), then, when that
+    finds no path in time, on ``space`` itself with the time left; the work of both counted."""
+    t0 = time.perf_counter()
+    strict = with_margin(space, start, goal)
+    res = run(strict, time_limit)
+    left = None if time_limit is None else time_limit - (time.perf_counter() - t0)
+    if not res.found and strict is not space and (left is None or left > 0):
+        first = res
+        res = run(space, left)
+        res = replace(res, nodes=res.nodes + first.nodes, expanded=res.expanded + first.expanded)
+    return replace(res, elapsed_s=time.perf_counter() - t0)
 
 
 def rrt_connect(
@@ -346,10 +588,45 @@ def rrt_connect(
     time_limit: float | None,
     shorten: bool,
     progress: Callable[[int, int | None], None] | None,
+) -> PathResult:
+    """RRT-Connect then shortening (module docstring) from ``start`` to ``goal``, the path
+    checked again at a finer resolution (:func:`_finish`): with the planners' margin, then
+    without it when that finds no path (``max_nodes`` each)."""
+
+    def run(sp: PoseSpace, limit: float | None) -> PathResult:
+        return _rrt(
+            sp,
+            start,
+            goal,
+            step=step,
+            resolution=resolution,
+            rng=rng,
+            max_nodes=max_nodes,
+            time_limit=limit,
+            shorten=shorten,
+            progress=progress,
+        )
+
+    return _with_fallback(space, start, goal, time_limit, run)
+
+
+def _rrt(
+    space: PoseSpace,
+    start: np.ndarray,
+    goal: np.ndarray,
+    *,
+    step: float | None,
+    resolution: float | None,
+    rng: np.random.Generator,
+    max_nodes: int,
+    time_limit: float | None,
+    shorten: bool,
+    progress: Callable[[int, int | None], None] | None,
     final: bool = True,
 ) -> PathResult:
-    """RRT-Connect then random shortcuts (module docstring) from ``start`` to ``goal``; with
-    ``final``, the path checked again at a finer resolution (:func:`_finish`)."""
+    """RRT-Connect then shortening (:func:`simplify`) from ``start`` to ``goal`` with the
+    validity test of ``space``; with ``final``, the path checked again at a finer resolution
+    (:func:`_finish`)."""
     t0 = time.perf_counter()
     deadline = np.inf if time_limit is None else t0 + time_limit
     diag = float(np.linalg.norm(space.upper - space.lower))
@@ -384,7 +661,7 @@ def rrt_connect(
     if found is not None:
         raw = path = space.unwrap(np.array(found))
         if shorten:
-            path = shortcut(space, path, resolution, rng, SHORTCUTS, deadline)
+            path = simplify(space, path, resolution, rng, deadline)
         if final:
             budget = max(2, max_nodes // REPAIR_SHARE)
             checked = _finish(space, path, goal, resolution, rng, budget, deadline)
@@ -453,8 +730,41 @@ def grid_search(
     time_limit: float | None,
     progress: Callable[[int, int | None], None] | None,
 ) -> PathResult:
-    """A* over the lattice of ``space`` (module docstring); ``no_path`` (a proof at the
-    lattice's resolution) when the start's component holds no path to the goal."""
+    """A* over the lattice of ``space`` (module docstring) with the planners' margin, then
+    without it when that finds no path; ``no_path`` (a proof at the lattice's resolution, with
+    the validity test of ``space``) when the start's component holds no path to the goal."""
+
+    def run(sp: PoseSpace, limit: float | None) -> PathResult:
+        return _grid(
+            sp,
+            start,
+            goal,
+            spacing=spacing,
+            resolution=resolution,
+            max_nodes=max_nodes,
+            shorten=shorten,
+            rng=rng,
+            time_limit=limit,
+            progress=progress,
+        )
+
+    return _with_fallback(space, start, goal, time_limit, run)
+
+
+def _grid(
+    space: PoseSpace,
+    start: np.ndarray,
+    goal: np.ndarray,
+    *,
+    spacing: float | None,
+    resolution: float | None,
+    max_nodes: int,
+    shorten: bool,
+    rng: np.random.Generator,
+    time_limit: float | None,
+    progress: Callable[[int, int | None], None] | None,
+) -> PathResult:
+    """A* over the lattice of ``space`` with its validity test (:func:`grid_search`)."""
     t0 = time.perf_counter()
     k = space.lower.size
     if spacing is None:  # as fine as the node budget allows
@@ -562,7 +872,7 @@ def grid_search(
             i = parent[i]
         raw = path = space.unwrap(np.array(chain[::-1]))
         if shorten:
-            path = shortcut(space, path, resolution, rng, SHORTCUTS, deadline)
+            path = simplify(space, path, resolution, rng, deadline)
         budget = max(2, max_nodes // REPAIR_SHARE)
         checked = _finish(space, path, goal, resolution, rng, budget, deadline)
         if checked is None and shorten:

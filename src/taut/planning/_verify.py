@@ -49,6 +49,7 @@ __all__ = [
     "refuse_unplannable",
     "short_way",
     "verify_path",
+    "wrench_ellipsoid",
 ]
 
 #: Interpolated poses :func:`verify_path` checks when no ``max_poses`` is given: their
@@ -149,7 +150,8 @@ def refuse_unplannable(robot: Robot, what: str) -> None:
         )
 
 
-def _ellipsoid(robot: Robot, E: npt.ArrayLike | None) -> np.ndarray:
+def wrench_ellipsoid(robot: Robot, E: npt.ArrayLike | None) -> np.ndarray:
+    """The matrix ``E`` of the wrench ellipsoid (default ``10⁴ I``), checked symmetric positive definite."""
     m = robot.wrench_dim
     E = 1e4 * np.eye(m) if E is None else as_array(E, "E", shape=(m, m))
     if not np.allclose(E, E.T) or np.linalg.eigvalsh(E).min() <= 0:
@@ -172,6 +174,20 @@ def _length_bounds(robot: Robot, lengths: tuple[npt.ArrayLike, npt.ArrayLike] | 
     return lo, hi
 
 
+def _tension_bounds(robot: Robot, bounds: tuple[npt.ArrayLike, npt.ArrayLike]) -> tuple[np.ndarray, np.ndarray]:
+    if not isinstance(bounds, tuple | list) or len(bounds) != 2:
+        raise TautError(f"tension_bounds: expected (tmin, tmax), each a number or one per cable, got {bounds!r}")
+    n = robot.n_cables
+    tmin = as_array(bounds[0], "tension_bounds (tmin)")
+    tmax = as_array(bounds[1], "tension_bounds (tmax)", finite=False)
+    if any(b.shape not in ((), (n,)) for b in (tmin, tmax)):
+        raise TautError(f"tension_bounds: expected numbers or one per cable ({n}), got {bounds!r}")
+    tmin, tmax = np.broadcast_to(tmin, (n,)), np.broadcast_to(tmax, (n,))
+    if np.isnan(tmax).any() or (tmin < 0).any() or (tmin > tmax).any():
+        raise TautError(f"tension_bounds: expected 0 <= tmin <= tmax for every cable, got {bounds!r}")
+    return tmin, tmax
+
+
 def pose_validity(
     robot: Robot,
     *,
@@ -179,6 +195,7 @@ def pose_validity(
     interference: bool = False,
     obstacles: bool = False,
     lengths: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
+    tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
 ) -> Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]:
     """The validity test of the module docstring as a function of a batch of poses
     ``(N, pose_size)`` → ``(valid (N,), cable lengths (N, n))``.
@@ -197,6 +214,9 @@ def pose_validity(
         one would wrap, the straight model is wrong, :mod:`taut.wrapping`).
     lengths : (lmin, lmax), optional
         Also cable lengths strictly inside these bounds [m], besides the cables' own.
+    tension_bounds : (tmin, tmax), optional
+        Tension bounds [N] in place of the robot's, each a number or one per cable: a
+        planner's stricter test (:mod:`taut.planning._posespace`).
 
     Returns
     -------
@@ -206,8 +226,8 @@ def pose_validity(
     Raises
     ------
     TautError
-        A robot of another kind, a bad ``E`` or ``lengths``, or ``obstacles`` on a spatial
-        robot.
+        A robot of another kind, a bad ``E``, ``lengths`` or ``tension_bounds``, or
+        ``obstacles`` on a spatial robot.
 
     References
     ----------
@@ -224,9 +244,9 @@ def pose_validity(
     array([ True, False])
     """
     refuse_unplannable(robot, "a path check")
-    E = _ellipsoid(robot, E)
+    E = wrench_ellipsoid(robot, E)
     ws = EllipsoidWrenchSet(np.zeros(robot.wrench_dim), np.linalg.inv(E))
-    bounds = robot.tension_bounds
+    bounds = robot.tension_bounds if tension_bounds is None else _tension_bounds(robot, tension_bounds)
     lo, hi = _length_bounds(robot, lengths)
     d = robot.dimension
     pm = None
