@@ -8,6 +8,10 @@ from pathlib import Path
 
 import pytest
 
+#: The benchmarks' smoke runs are integration runs of tens of seconds each: they run with the
+#: slow tests (`make test-slow`, `make check`), the quick suite keeps to the unit and CLI tests.
+pytestmark = pytest.mark.slow
+
 BENCH = Path(__file__).parents[1] / "benchmarks"
 
 

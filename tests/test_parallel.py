@@ -99,6 +99,7 @@ def test_processes_give_identical_results(reference):
         _assert_same(_run_all(ex), reference)
 
 
+@pytest.mark.slow
 def test_dask_local_cluster_gives_identical_results(reference, cluster):
     import distributed
 
@@ -152,6 +153,7 @@ def _assert_table_4_3(res):
         assert np.allclose(lengths, SUSPENDED.reference.lengths, atol=1e-9)
 
 
+@pytest.mark.slow
 def test_dgp_serial_processes_and_dask_agree_bitwise(cluster):
     """solve_dgp takes the executors evaluate_workspace takes; the solution lists are the same
     to the bit and in the same order (canonical: taut set, then pose)."""

@@ -282,14 +282,10 @@ def test_the_table_covers_every_kind_and_every_command():
         assert cell == "supported" or re.fullmatch(r"refused: \S.*", cell), f"cell {cell!r}"
 
 
-#: A supported cell computes (seconds to a minute each): those run with the slow tests, the
-#: refusals (a second each) in the quick suite.
-PARAMS = [
-    pytest.param(a, k, c, id=f"{a}|{k}", marks=[pytest.mark.slow] if c == "supported" else []) for a, k, c in CELLS
-]
-
-
-@pytest.mark.parametrize(("analysis", "kind", "cell"), PARAMS)
+#: Every cell is a command-line run (a second to a minute each): they run with the slow tests
+#: (`make check`); the quick suite checks the table itself.
+@pytest.mark.slow
+@pytest.mark.parametrize(("analysis", "kind", "cell"), CELLS, ids=[f"{a}|{k}" for a, k, _ in CELLS])
 def test_cell(analysis, kind, cell, tmp_path):
     subject = OVERRIDES.get((analysis, kind), SUBJECTS[kind])
     argv, check = QUERIES[analysis](subject, tmp_path)

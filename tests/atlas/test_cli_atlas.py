@@ -6,6 +6,7 @@ import pytest
 import taut
 
 
+@pytest.mark.slow
 def test_atlas_json_out_plot(tmp_path, cli):
     out, png = tmp_path / "a.json", tmp_path / "a.png"
     assert cli.main(["atlas", "vscr-t-shaped", "--json", "--out", str(out), "--plot", str(png)]) == 0
@@ -17,6 +18,7 @@ def test_atlas_json_out_plot(tmp_path, cli):
     assert png.stat().st_size > 10_000
 
 
+@pytest.mark.slow
 def test_atlas_human_and_options(cli):
     assert cli.main(["atlas", "vscr-agriculture", "--start", "0,0.991", "--condition", "static", "--theta", "0"]) == 0
     out = cli.readouterr().out
@@ -32,6 +34,7 @@ def test_atlas_human_and_options(cli):
     assert 0 < static <= reachable
 
 
+@pytest.mark.slow
 def test_atlas_bad_input(cli):
     assert cli.main(["atlas", "vscr-t-shaped", "--start", "5,5"]) == 2
     assert "outside the installation space" in cli.readouterr().err
@@ -42,6 +45,7 @@ def test_atlas_bad_input(cli):
     assert cli.main(["atlas", "vscr-t-shaped", "--condition", "nope"]) == 2
 
 
+@pytest.mark.slow
 def test_atlas_rigid_page(cli):
     """A rigid platform: one atlas page per orientation (§5.2)."""
     assert cli.main(["atlas", "vscr-rigid-t-shaped", "--json"]) == 0
@@ -58,6 +62,7 @@ def test_atlas_rigid_page(cli):
     assert "page θ = 0.1 rad" in cli.readouterr().out
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", [n for n in taut.example_names() if n.startswith("vscr-") and n != "vscr-t-shaped"])
 def test_atlas_with_plot_on_every_planar_vscr_example(name, tmp_path, cli):
     """Also the examples whose wrench-feasible workspace is empty (no weight is printed for

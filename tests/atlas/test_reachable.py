@@ -33,6 +33,7 @@ def _states(name, start, per_cable=3):
             yield robot, tree, n
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name, start", CASES)
 def test_cra_matches_brute_force(name, start):
     rng = np.random.default_rng(7)
@@ -79,6 +80,7 @@ def test_cra_wrapped_state_is_bounded_by_unwrap_ray():
     assert (side[beyond] >= -1e-9).all()
 
 
+@pytest.mark.slow
 @settings(max_examples=12, deadline=None)
 @given(
     st.lists(st.tuples(st.floats(-0.8, 0.8), st.floats(0.2, 1.6), st.floats(0.03, 0.2)), min_size=1, max_size=3),

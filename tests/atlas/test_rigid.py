@@ -38,6 +38,7 @@ def _variant(**platform):
     return robot_from_dict(d)
 
 
+@pytest.mark.slow
 def test_anchors_at_origin_give_the_point_mass_atlas():
     pm = build_atlas(example("vscr-t-shaped"), START)
     for theta in (0.0, 0.7):
@@ -52,6 +53,7 @@ def test_anchors_at_origin_give_the_point_mass_atlas():
         assert np.allclose(direct_ik(rg, P).lengths, direct_ik(pm, P).lengths, atol=1e-12)
 
 
+@pytest.mark.slow
 def test_charts_exclude_platform_collisions(page):
     """At every grid point of every chart the rotated platform outline lies in the
     installation space, off the idlers, the winch pulleys and the disallowed regions."""

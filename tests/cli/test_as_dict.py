@@ -72,6 +72,7 @@ def test_workspace(taut_cli):
     assert got["robot"] == robot.name and got["poses"] == 25
 
 
+@pytest.mark.slow
 def test_fk(taut_cli):
     """A box budget that leaves boxes undecided: solutions and enclosures both numbered."""
     robot = example("suspended-3cable")
@@ -85,6 +86,7 @@ def test_fk(taut_cli):
     assert got["solutions"] and got["undecided_enclosures"] and got["exhausted"] and not got["complete"]
 
 
+@pytest.mark.slow
 def test_igp(taut_cli):
     robot = example("suspended-3cable")
     fixed = {"x": 2.7505, "y": 3.9798, "z": 5.5061}
@@ -98,6 +100,7 @@ def test_igp(taut_cli):
     assert len(got["solutions"]) == 4
 
 
+@pytest.mark.slow
 def test_simulate(taut_cli):
     robot = example("planar-4cable")
     got = taut_cli(
@@ -136,6 +139,7 @@ def test_trajectory(taut_cli):
     assert got["transitions"]
 
 
+@pytest.mark.slow
 def test_plan(taut_cli):
     robot = example("robocrane")
     fixed = {"x": 0.0, "y": 0.0, "z": 2.0, "sigma": np.radians(35)}
@@ -154,6 +158,7 @@ def test_plan(taut_cli):
     assert got["fixed"] == pytest.approx(fixed, abs=1e-15)
 
 
+@pytest.mark.slow
 def test_atlas(taut_cli, tmp_path):
     robot = example("vscr-t-shaped")
     out = tmp_path / "atlas.json"

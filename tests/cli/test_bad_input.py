@@ -223,6 +223,7 @@ def http_server() -> Iterator[str]:
         server.server_close()
 
 
+@pytest.mark.slow
 def test_scheduler_that_is_an_http_server(http_server, taut_cli):
     run = taut_cli(
         "workspace",

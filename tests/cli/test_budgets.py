@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+import pytest
 import yaml
 from scipy.optimize import linprog
 
@@ -56,6 +57,7 @@ def taut(*argv: str, memory_gib: float = 3.0) -> Run:
 # ---- HANGS ------------------------------------------------------------------------
 
 
+@pytest.mark.slow
 def test_static_atlas_of_an_under_constrained_robot_is_decided_in_closed_form():
     """One cable, two wrench components: every grid point of the 44 charts was an LP (1.4 M
     of them, six minutes).  The single-cable robot has no weight, so zero tension balances
@@ -66,6 +68,7 @@ def test_static_atlas_of_an_under_constrained_robot_is_decided_in_closed_form():
     assert 0.99 * d["reachable_area"] <= d["workspace_area"] <= d["reachable_area"]
 
 
+@pytest.mark.slow
 def test_a_grid_beyond_the_pose_budget_is_refused_and_the_budget_can_be_raised():
     line = taut("workspace", "spatial-8cable", "--condition", "wrench-closure", "--grid=300", "--json").error_line()
     assert "27,000,000 poses" in line and "10,000,000" in line and "--max-poses" in line
@@ -99,6 +102,7 @@ def test_atlasrrt_stops_at_its_node_budget_whatever_the_step():
     assert not d["found"] and not d["no_path"] and d["nodes"] == 100 and d["path"] == []
 
 
+@pytest.mark.slow
 def test_astar_in_six_dimensions_needs_an_explicit_budget_and_stops_at_it():
     argv = ["plan", "robocrane", "--start", "q1", "--goal", "q2", "--planner=astar", "--json"]
     line = taut(*argv).error_line()
@@ -124,6 +128,7 @@ def _sphere_robot(n: int) -> dict:
     }
 
 
+@pytest.mark.slow
 def test_the_workspace_of_two_thousand_cables(tmp_path: Path):
     """C(2000, 5) = 2.6e14 facet normals per pose for the facet test: LPs decide instead.
     Oracle: the structure matrix from the file's numbers (``u = (a − p − r)/‖…‖``, moment
@@ -162,6 +167,7 @@ def test_a_simulation_whose_samples_exceed_the_memory_cap_is_refused():
     assert "999,901 samples of 377 bytes" in line and "64 MiB" in line and "--sample-rate at most" in line
 
 
+@pytest.mark.slow
 def test_a_fast_control_rate_streams_in_bounded_memory():
     """A million control updates under a 1 GiB address space (the full arrays took 1.2 GB):
     only the 101 samples at 100 Hz are kept, and the statistics cover every update."""

@@ -29,6 +29,7 @@ def test_builtin_trajectory_json(cli):
     assert data["summary"]["first_collision"] == 28
 
 
+@pytest.mark.slow
 def test_sim_b_singular_steps_and_plot(cli, tmp_path):
     png = tmp_path / "b.png"
     code, out, err = run(cli, "check", "adjustable-8cable", "--trajectory", "sim-b", "--json", "--plot", str(png))

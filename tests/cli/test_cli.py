@@ -83,6 +83,7 @@ def test_workspace_on_every_example(name, condition, taut_cli):
     assert res["elapsed_s"] >= 0
 
 
+@pytest.mark.slow
 def test_workspace_outputs(tmp_path, taut_cli):
     out, plot = tmp_path / "ws.npz", tmp_path / "ws.png"
     res = run_json(
@@ -131,6 +132,7 @@ def _table_rows(out: str, columns: int) -> np.ndarray:
     return np.array(rows)
 
 
+@pytest.mark.slow
 def test_human_output_and_plot(tmp_path, taut_cli):
     robot = taut.example("spatial-8cable")
     code, out, _ = run(
@@ -200,6 +202,7 @@ def test_schema_command(taut_cli):
     assert code == 0 and json.loads(out)["title"].startswith("taut robot file")
 
 
+@pytest.mark.slow
 def test_demo_writes_report(tmp_path, taut_cli):
     data = run_json(taut_cli, "demo", "--out", str(tmp_path / "report"))
     index = tmp_path / "report" / "index.html"

@@ -150,6 +150,7 @@ def test_bad_option_values_exit_2_on_one_line(argv, option):
     refused(taut_run(*argv), option)
 
 
+@pytest.mark.slow
 def test_the_largest_box_budget_is_taken():
     """The bound of ``--max-boxes`` is what the kernels take: at it, fk answers as by default."""
     default = taut_run("fk", "suspended-3cable", "--json")
@@ -189,6 +190,7 @@ def test_unwritable_outputs_are_refused_without_blocking(tmp_path, argv, words):
 # ---- 3. a write that fails after the computation: one line, exit 2, the old file kept --------
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     ("argv", "name"),
     [
@@ -284,6 +286,7 @@ def test_a_scheduler_the_command_line_cannot_reach_is_refused_in_one_line(scheme
 # ---- 7. one magnitude limit --------------------------------------------------------------
 
 
+@pytest.mark.slow
 def test_robot_files_options_and_poses_share_one_magnitude_limit(tmp_path):
     """A number is refused beyond the same limit, with the same words, wherever it is written;
     at the limit, a robot file loads."""
@@ -334,6 +337,7 @@ def test_convert_help_names_every_format_written():
 # ---- 10. Ctrl-C --------------------------------------------------------------------------
 
 
+@pytest.mark.slow
 def test_ctrl_c_exits_130_with_one_line():
     proc = subprocess.Popen(
         [sys.executable, "-m", "taut", "workspace", "spatial-8cable", "--condition", "wrench-closure"]

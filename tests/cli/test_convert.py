@@ -71,6 +71,7 @@ def test_cable_set_and_convert_to_taut(taut_cli: Callable[..., Any], tmp_path: P
     assert springs["lengths"] == again["lengths"]
 
 
+@pytest.mark.slow
 def test_convert_an_example_to_caspr_and_back(taut_cli: Callable[..., Any], tmp_path: Path) -> None:
     out = tmp_path / "cogiro_bodies.xml"
     data = taut_cli("convert", "cogiro", str(out), "--json").json()

@@ -7,6 +7,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from taut.dgp import solve_dgp
 from taut.geometry import rotation_matrix
@@ -15,6 +16,7 @@ from taut.model import load_robot
 TAUT = str(Path(sys.executable).with_name("taut"))
 
 
+@pytest.mark.slow
 def test_fk_shows_a_bar_on_a_terminal_and_none_with_json(terminal_cli):
     run = terminal_cli("fk", "suspended-3cable")
     assert run.code == 0, run.err
@@ -51,6 +53,7 @@ reference:
 """
 
 
+@pytest.mark.slow
 def test_fk_headers_and_angles_follow_the_robots_orientation_convention(tmp_path):
     """The suspended robot of Table 4.3 written with tilt-and-torsion angles: the table is
     headed phi, theta, sigma, and each rotation is that of an equilibrium of the built-in

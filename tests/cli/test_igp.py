@@ -45,6 +45,7 @@ def test_igp_angles_in_degrees_and_slack_cables(cli):
         assert s["slack"] == [5] and s["tensions"][4] == 0 and s["length_violations"] == []
 
 
+@pytest.mark.slow
 def test_igp_human_output(cli):
     code = cli.main(["igp", "suspended-3cable", "--taut", "1,2,3", "--fix", "x=2.7505,y=3.9798,z=5.5061"])
     out, err = cli.readouterr()

@@ -122,6 +122,7 @@ def test_nearly_double_equilibria_are_certified_through_the_cli(taut_cli, tmp_pa
     assert sum(s["taut"] == [1, 2, 3] for s in d["solutions"]) == 6
 
 
+@pytest.mark.slow
 def test_without_python_flint_the_warning_says_how_to_search_narrow_boxes_again(tmp_path):
     """The same command where python-flint cannot be imported (as without the extra): the
     narrow boxes stay undecided, and the one warning line says how to install it."""

@@ -20,6 +20,7 @@ def same_pose(a, b) -> bool:
     return bool(np.allclose(pa, pb, atol=1e-9) and np.allclose(Ra, Rb, atol=1e-9))
 
 
+@pytest.mark.slow
 def test_plan_q1_q2_json_csv_plot(cli, tmp_path):
     csv, png = tmp_path / "p.csv", tmp_path / "p.png"
     code = cli.main(
@@ -80,6 +81,7 @@ def test_plan_needs_a_hexapod(cli):
     assert cli.main(["plan", "suspended-3cable", "--start", "0,0,0,0,0,0", "--goal", "0,0,0,0,0,0"]) == 2
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("extra", [[], ["--shorten"], ["--unidirectional", "--seed", "3"]])
 def test_plan_atlasrrt_q3_q4_across_phi_pi(cli, extra):
     argv = ["plan", "robocrane", "--start", "q3", "--goal", "q4", "--fix", SLICE, "--planner", "atlasrrt"]
@@ -111,6 +113,7 @@ def test_plan_path_begins_at_the_start_as_written(cli, start):
     assert verify_path(ROBOT, path, subdivide=20).all_feasible
 
 
+@pytest.mark.slow
 def test_plan_atlasrrt_budget_runs_out_and_auto_then_proves_no_path(cli):
     islands = ["--start", "0,0,2,-1.3,2.2,35deg", "--goal", "0,0,2,0.6,2.4,35deg", "--fix", SLICE, "--radius", "0.3"]
     assert cli.main(["plan", "robocrane", *islands, "--planner", "atlasrrt", "--max-nodes", "60", "--json"]) == 0
@@ -145,6 +148,7 @@ def test_plan_atlasrrt_bad_input_one_line_exit_2(cli, argv, words):
     assert out == "" and len(lines) == 1 and lines[0].startswith("taut: error: ") and words in lines[0], err
 
 
+@pytest.mark.slow
 def test_plan_q3_q4_and_a_proof_of_no_path(cli):
     argv = ["plan", "robocrane", "--start", "q3", "--goal", "q4", "--fix", SLICE, "--radius", "0.3"]
     assert cli.main([*argv, "--planner", "astar", "--json"]) == 0

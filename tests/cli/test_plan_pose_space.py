@@ -42,6 +42,7 @@ def fine(robot, path) -> bool:
     return verify_path(robot, path, subdivide=n).all_feasible
 
 
+@pytest.mark.slow
 def test_point_mass_auto_is_the_grid(cli, point_mass, tmp_path):
     csv = tmp_path / "p.csv"
     argv = ["plan", str(point_mass), "--start=-0.92,0.92", "--goal", "0.92,0.92", "--out", str(csv), "--json"]
@@ -57,6 +58,7 @@ def test_point_mass_auto_is_the_grid(cli, point_mass, tmp_path):
     np.testing.assert_allclose(table, np.hstack([path, lengths]), atol=1e-12)
 
 
+@pytest.mark.slow
 def test_planar_grid_proves_no_path_and_rrtconnect_does_not(cli):
     argv = ["plan", "planar-4cable", "--start", "0,0,0", "--goal", "0,0,3", "--max-nodes", "2000"]
     assert cli.main([*argv, "--json"]) == 0

@@ -5,12 +5,15 @@ on a pseudo-terminal)."""
 import json
 import re
 
+import pytest
+
 from taut.model import save_robot
 
 #: What rich's default columns show after the bar: the percentage and the time remaining.
 ESTIMATE = re.compile(r"\d+%.*?(\d+:\d\d:\d\d|-:--:--)")
 
 
+@pytest.mark.slow
 def test_atlas_shows_its_charts_being_built_and_decided(terminal_cli):
     run = terminal_cli("atlas", "vscr-single-cable")
     assert run.code == 0, run.err
@@ -21,6 +24,7 @@ def test_atlas_shows_its_charts_being_built_and_decided(terminal_cli):
     assert json.loads(run.out)["charts"] == 44
 
 
+@pytest.mark.slow
 def test_workspace_of_2000_cables_shows_progress_and_an_estimate(terminal_cli, robot_2000_cables, tmp_path):
     """2 million capsule pairs a pose: one pose a chunk, each reported, within the memory
     limit of the test processes."""

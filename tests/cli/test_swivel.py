@@ -128,6 +128,7 @@ def test_fk_pairs_of_pulley_cables_complete(taut_cli: Callable) -> None:
     assert res["complete"] and res["solutions"] == [] and res["subproblems"] == 6
 
 
+@pytest.mark.slow
 def test_igp_models_the_pulleys(taut_cli: Callable) -> None:
     """`taut igp` on the built-in pulley robot: the lengths to command are the pulley IK's
     (the stable solution at the reference position has the reference lengths)."""

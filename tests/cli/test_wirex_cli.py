@@ -58,6 +58,7 @@ def test_ik_of_wcrfx_pulleys(taut_cli):
     assert np.allclose(result["lengths"], r * (np.arccos(lf / bm) + np.arccos(bz / bm)) + lf, rtol=0, atol=1e-12)
 
 
+@pytest.mark.slow
 def test_ik_and_workspace_of_planar_wcrfx_pulleys(taut_cli):
     """In-plane pulleys of a 2T file: WireX's pulley lengths with the swivel axis ``k`` (the
     winch frame's z axis, in the plane): ``bz = k·(r + b − a)``, ``bxy`` the rest."""

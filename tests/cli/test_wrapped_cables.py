@@ -57,6 +57,7 @@ def test_clear_cables_answer_as_without_obstacles(taut_cli, bare, command):
     assert with_obstacles == without
 
 
+@pytest.mark.slow
 def test_workspace_counts_the_poses_whose_straight_cables_meet_an_obstacle(taut_cli, bare):
     grid = "-1.8:1.8:13;-1.8:1.8:13"
     d = taut_cli("workspace", FIXTURE, "--condition", "static", f"--grid={grid}", "--json").json()
@@ -89,6 +90,7 @@ def test_check_reports_the_contact(taut_cli, tmp_path):
             assert d["jacobian_ratio"][k] is None and not step["jacobian_singular"]
 
 
+@pytest.mark.slow
 def test_simulate_refuses_a_motion_through_an_obstacle(taut_cli):
     waypoints = f"{CLEAR[0]},{CLEAR[1]};{THROUGH[0]},{THROUGH[1]}"
     run = taut_cli("simulate", FIXTURE, "--waypoints", waypoints, "--duration", "1", "--json")

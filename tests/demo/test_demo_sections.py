@@ -9,6 +9,7 @@ matplotlib.use("Agg")
 
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import pytest  # noqa: E402
 
 import taut  # noqa: E402
 from taut.demo._atlas import atlas_section  # noqa: E402
@@ -25,6 +26,7 @@ from taut.viz import (
 )
 
 
+@pytest.mark.slow
 def test_atlas_section(tmp_path):
     report = Report("atlas")
     atlas_section(report)

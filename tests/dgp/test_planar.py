@@ -504,6 +504,7 @@ def test_a_platform_that_is_a_single_point_is_refused_in_one_line(tmp_path, taut
 # ---- the command line ---------------------------------------------------------------------
 
 
+@pytest.mark.slow
 def test_fk_planar_2cable_json(taut_cli, tmp_path):
     robot = example("planar-2cable")
     plot = tmp_path / "equilibria.png"
@@ -521,6 +522,7 @@ def test_fk_planar_2cable_json(taut_cli, tmp_path):
         check_planar_equilibrium(robot, np.array(robot.reference.lengths), sol)
 
 
+@pytest.mark.slow
 def test_igp_on_a_planar_robot_through_the_cli(taut_cli):
     data = taut_cli("igp", "planar-2cable", "--taut", "1,2", "--fix", "x=0,y=0.3", "--json").json()
     assert data["complete"] is True and data["assigned"] == {"x": 0.0, "y": 0.3}
@@ -542,6 +544,7 @@ def test_bad_lengths_get_one_line(lengths, taut_cli):
     assert run.code == 2 and run.err.startswith("taut: error:") and run.err.count("\n") == 1 and not run.out
 
 
+@pytest.mark.slow
 def test_inconsistent_lengths_have_no_equilibrium(taut_cli):
     """Cables too short to hold the bar between their exits: no equilibrium, and that is complete."""
     data = taut_cli("fk", "planar-2cable", "--lengths", "0.5,0.6", "--json").json()

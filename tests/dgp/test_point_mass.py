@@ -147,6 +147,7 @@ def same_equilibria(robot, lengths):
     return res
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("dimension", [3, 2])
 def test_random_point_masses_against_trilateration(dimension):
     """30 random robots of each kind (2 to 8 cables spatial, 2 to 6 planar), their lengths
@@ -299,6 +300,7 @@ def check_one_at_pose(robot, lengths, p, solutions):
     assert tuple(sol.boundary) == tuple(range(robot.n_cables))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("dimension", [3, 2])
 def test_exact_lengths_of_a_pose_give_one_solution(dimension):
     """The exact lengths of a position under the exits of a random point mass of d + 1 to 8
@@ -323,6 +325,7 @@ def test_exact_lengths_of_a_pose_give_one_solution(dimension):
     assert at_pose >= 10
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name, dimension, cables", [("camera-4cable", 3, 4), ("random", 3, 7), ("random", 2, 5)])
 def test_cli_fk_at_the_exact_ik_lengths_of_a_pose(taut_cli, tmp_path, name, dimension, cables):
     """``taut ik`` then ``taut fk`` at its lengths: one equilibrium, at the pose, every cable
@@ -382,6 +385,7 @@ def test_igp_with_fewer_cables_finds_the_hanging_position(dimension):
     assert sol.lengths[1] == pytest.approx(1.0) and sol.tensions[1] == pytest.approx(-load_of(robot)[-1])
 
 
+@pytest.mark.slow
 def test_igp_of_a_planar_point_mass_in_a_box(taut_cli, tmp_path):
     """Planar: two taut cables fix the position and the linear statics the tensions; with one
     taut cable and ``y`` fixed the box of the free ``x`` has two corners of two numbers
@@ -452,6 +456,7 @@ def test_tracking_into_lengths_without_equilibrium_is_lost():
 # ---- the command line --------------------------------------------------------------------------
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name, taut_numbers", [("camera-4cable", [2, 3, 4]), ("printer-5cable", [1, 3, 4])])
 def test_cli_fk_of_the_examples(taut_cli, name, taut_numbers):
     robot = taut.example(name)
@@ -467,6 +472,7 @@ def test_cli_fk_of_the_examples(taut_cli, name, taut_numbers):
     np.testing.assert_allclose(reach[idx], lengths[idx], atol=1e-9)
 
 
+@pytest.mark.slow
 def test_cli_fk_inconsistent_lengths_no_equilibrium(taut_cli):
     run = taut_cli("fk", "camera-4cable", "--lengths", "10,30,10,30", "--json")
     assert run.code == 0, run.err
@@ -497,6 +503,7 @@ def test_cli_fk_bad_lengths_one_line(taut_cli, lengths):
     assert run.err.startswith("taut: error: ") and run.err.count("\n") == 1
 
 
+@pytest.mark.slow
 def test_cli_igp_on_a_point_mass(taut_cli):
     run = taut_cli("igp", "printer-5cable", "--taut", "1,3,4", "--fix", "x=0.1,y=0.05,z=0.3", "--json")
     assert run.code == 0, run.err

@@ -234,6 +234,7 @@ def test_tracking_follows_the_pulley_equilibrium():
     assert np.linalg.norm(last.position - path[0].position) > 5e-3
 
 
+@pytest.mark.slow
 def test_igp_with_pulleys_commands_the_pulley_lengths():
     """The inverse problem at the reference position: four certified equilibria, each
     balancing with the pulley structure matrix at the lengths the pulley IK gives (the ones

@@ -71,6 +71,7 @@ def test_table_4_3_complete_solution_set(workers, split):
         assert np.allclose(lengths, LENGTHS, atol=1e-9)
 
 
+@pytest.mark.slow
 def test_cli_fk_json_plot_and_bad_input(tmp_path, cli):
     out = tmp_path / "fk.png"
     assert cli.main(["fk", "suspended-3cable", "--max-taut", "2", "--plot", str(out), "--json"]) == 0

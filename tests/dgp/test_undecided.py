@@ -76,6 +76,7 @@ def dgp_runs():
     return solve_dgp(ROBOT), solve_dgp(ROBOT, max_boxes=DGP_BUDGET)
 
 
+@pytest.mark.slow
 def test_a_dgp_search_cut_by_its_budget_lists_every_missing_equilibrium_in_an_undecided_box(dgp_runs):
     full, cut = dgp_runs
     assert len(full.solutions) == 6

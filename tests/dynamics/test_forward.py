@@ -100,6 +100,7 @@ def quintic(q0, q1, duration):
     return at
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     ("name", "q0", "q1", "method"),
     [
@@ -212,6 +213,7 @@ def elastic_energy(robot, q, qd, l0, ea):
     return T + V + float(np.sum(ea * stretch**2 / (2 * l0)))
 
 
+@pytest.mark.slow
 def test_rejected_trial_stages_do_not_stop_the_motion(spatial):
     """Stiff cables released slack: the platform falls and the cables catch it.  A trial stage
     of a step that the controller rejects lands far out of range (angles beyond 1e9); the

@@ -404,6 +404,7 @@ def planar_with_radius(r: float) -> Robot:
     return robot_from_dict(data)
 
 
+@pytest.mark.slow
 @settings(max_examples=30, deadline=None)
 @given(planar_poses)
 def test_planar_lengths_and_tangent_points_match_root_finding(pose: np.ndarray) -> None:
@@ -523,6 +524,7 @@ def test_planar_batch_path_and_analyses_use_the_pulleys() -> None:
 CASPR = Path(__file__).parents[1] / "model" / "fixtures" / "caspr"
 
 
+@pytest.mark.slow
 @settings(max_examples=30, deadline=None)
 @given(st.floats(-0.4, 0.4), st.floats(-0.4, 0.4), st.floats(-0.4, 0.4))
 def test_caspr_planar_base_rotating_pulleys(x: float, z: float, theta: float) -> None:

@@ -271,6 +271,7 @@ def random_tensor(rng):
     return I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]
 
 
+@pytest.mark.slow
 @settings(max_examples=100, deadline=None)
 @given(body_trees())
 def test_any_body_tree_is_taut_s_kinematics_and_statics(tree):

@@ -291,6 +291,7 @@ def test_an_anchor_inside_the_pulley_circle_is_refused():
         pose_to_qpos(robot, np.stack([anchor + [0, 0, 1], anchor]))
 
 
+@pytest.mark.slow
 @settings(max_examples=300, deadline=None)
 @given(
     st.lists(st.floats(-1.0, 1.0), min_size=3, max_size=3).filter(lambda v: np.linalg.norm(v) > 0.1),

@@ -100,8 +100,13 @@ def test_axis_rotation_turns_about_one_axis(convention, orientations, law):
         rotvec = Rotation.from_matrix(Rs.T @ Re).as_rotvec()
         d = W[k + 1, 0] - W[k, 0]
         sigma = (s.poses[:, 0] - W[k, 0]) / d  # x moves by the same time law
+        got = rotation_matrix(s.poses[:, 3:6], convention)
+        if np.linalg.norm(rotvec) > np.pi - 1e-6 and not np.allclose(
+            got, Rs @ Rotation.from_rotvec(sigma[:, None] * rotvec).as_matrix(), atol=1e-9
+        ):
+            rotvec = -rotvec  # a half turn goes either way about its axis
         want = Rs @ Rotation.from_rotvec(sigma[:, None] * rotvec).as_matrix()
-        assert np.allclose(rotation_matrix(s.poses[:, 3:6], convention), want, atol=1e-9)
+        assert np.allclose(got, want, atol=1e-9)
         axis = Rs @ rotvec
         assert np.allclose(s.angular_velocity, np.outer(s.velocity[:, 0] / d, axis), atol=1e-9)
         assert np.allclose(s.angular_acceleration, np.outer(s.acceleration[:, 0] / d, axis), atol=1e-9)
@@ -111,11 +116,17 @@ def test_axis_rotation_turns_about_one_axis(convention, orientations, law):
         ) / (2 * h)
         omega = Rd @ np.swapaxes(rotation_matrix(s.poses[:, 3:6], convention), 1, 2)
         assert np.allclose(s.angular_velocity, _skew(omega), atol=1e-5 * (1 + np.abs(s.angular_velocity).max()))
-    # continuous: no 2π jump (each sample step within the largest rate times the time step;
-    # near the gimbal lock the angles do move fast)
+    # continuous: no 2π jump.  Each sample step is within the largest rate times the time
+    # step, except next to the gimbal lock (|cos b|, |sin θ| below 1e-2), where the angles'
+    # rates grow as the inverse distance and may peak between samples: there a step stays
+    # below 2π (an outer angle swings through π at most).
     dense = m.at(np.linspace(0, m.duration, 2001))
-    step = np.abs(np.diff(dense.poses[:, 3:6], axis=0)).max()
-    assert step <= 1.5 * np.abs(dense.velocity[:, 3:6]).max() * m.duration / 2000 + 1e-12
+    step = np.abs(np.diff(dense.poses[:, 3:6], axis=0)).max(axis=1)
+    middle = dense.poses[:, 4]
+    lock = np.abs(np.sin(middle) if convention == "tilt-torsion" else np.cos(middle))
+    near = np.minimum(lock[:-1], lock[1:]) < 1e-2
+    assert np.all(step[near] < 2 * np.pi - 0.5)
+    assert np.all(step[~near] <= 1.5 * np.abs(dense.velocity[:, 3:6]).max() * m.duration / 2000 + 1e-12)
 
 
 def test_axis_rotation_refusals():

@@ -76,6 +76,7 @@ def test_robocrane_queries_are_verified_independently(query, bidirectional):
     assert res.length >= min(np.linalg.norm(e - POSES[a][3:5]) for e in ends) - 1e-9
 
 
+@pytest.mark.slow
 def test_separate_islands_give_no_path_within_the_budget():
     # two "upside-down" islands of the slice (test_robocrane proves them disconnected)
     y1, y2 = M.lift([0, 0, 2, -1.3, 2.2, SIGMA]), M.lift([0, 0, 2, 0.6, 2.4, SIGMA])

@@ -225,6 +225,7 @@ def test_cogiro_path_near_a_thin_invalid_sheet_passes_the_fine_check():
     assert all(balanced(robot, q) for q in res.path)
 
 
+@pytest.mark.slow
 @settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(seed=st.integers(0, 2**16))
 def test_shortening_never_lengthens_and_keeps_validity(point_mass, seed):

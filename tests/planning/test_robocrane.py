@@ -6,6 +6,7 @@ independent feasibility test of taut.statics."""
 import itertools
 
 import numpy as np
+import pytest
 from scipy import ndimage
 
 from taut.kinematics import platform_frame
@@ -121,6 +122,7 @@ def _components(n_phi=90, n_theta=46):
     return ph, th, lab
 
 
+@pytest.mark.slow
 def test_atlas_of_a_slice_completes_and_proves_that_no_path_exists():
     # Fig. 5 (top centre): the discretised feasibility map of the slice p = (0, 0, 2), σ = 35°
     ph, th, lab = _components()
@@ -172,6 +174,7 @@ def test_q3_to_q4_on_the_slice_p_0_0_2_crosses_phi_pi():
     assert straight < res.length < np.linalg.norm(POSES["q4"][3:5] - POSES["q3"][3:5])
 
 
+@pytest.mark.slow
 def test_q5_to_q6_on_the_3d_slice_x_y_0():
     # experiment 2 (Fig. 7): z, φ, θ free; about 6 s and 500 charts at radius 0.45, 700 at
     # 0.3 (45 s and 1 900 charts before angles were periodic and projections used the graph)

@@ -61,6 +61,7 @@ def test_six_dimensional_query(robot, start, goal):
     assert res.length >= np.linalg.norm(poses[-1] - poses[0]) - 1e-9
 
 
+@pytest.mark.slow
 def test_six_dimensional_query_through_the_cli(taut_cli, tmp_path):
     run = taut_cli("plan", "robocrane", "--start", "q5", "--goal", "q6", "--planner", "atlasrrt", "--json")
     assert run.code == 0, run.err

@@ -7,7 +7,7 @@ import json
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import linprog
 
@@ -233,6 +233,11 @@ def problems(draw):
 @given(problems())
 def test_random_problems_against_linprog(problem):
     W, w, tmin, tmax = problem
+    # A wrench off the range of a rank-deficient W by between the two tolerances (ours is
+    # relative, 1e-9; HiGHS's absolute, 1e-7) is decided differently by each, rightly: skip it.
+    U, S, _ = np.linalg.svd(W)
+    off = np.linalg.norm(U[:, int(np.sum(S > S.max(initial=0) * 1e-12)) :].T @ w)
+    assume(not 1e-12 * (1 + np.linalg.norm(w)) < off < 1e-6)
     ref = oracle(W, w, tmin, tmax)
     feasible = ref.status == 0
     assert ref.status in (0, 2)

@@ -365,6 +365,7 @@ print(res.size, res.count, growth, full, bool(np.array_equal(sample.inside, res.
 """
 
 
+@pytest.mark.slow
 def test_a_large_grid_runs_in_bounded_memory():
     """2 M poses under an address-space limit that a (2e6, 3) pose array does not fit in."""
     out = subprocess.run([sys.executable, "-c", BOUNDED_MEMORY_SCRIPT], capture_output=True, text=True, timeout=600)
@@ -424,6 +425,7 @@ def test_save_and_load_keep_the_poses_without_storing_those_of_a_grid(tmp_path):
         WorkspaceResult.load(tmp_path / "nothing.npz")
 
 
+@pytest.mark.slow
 def test_chunks_of_many_capsule_pairs_hold_one_pose_each(robot_2000_cables):
     """2000 cables have 2 million capsule pairs: the interference-free condition is evaluated
     (and its progress reported) pose by pose, not in chunks of 349 poses that would hold

@@ -1,6 +1,9 @@
 import json
 
+import pytest
 
+
+@pytest.mark.slow
 def test_trajectory_json_csv_plot(tmp_path, cli):
     out, png = tmp_path / "t.csv", tmp_path / "t.png"
     assert (

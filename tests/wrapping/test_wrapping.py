@@ -32,6 +32,7 @@ def _single_tree():
     return CableStateTree(circ, 1)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", VSCR)
 def test_lengths_are_continuous_across_transitions(runs, name):
     # a taut cable's length is 1-Lipschitz in its platform end: no jump at any wrap/unwrap

@@ -77,8 +77,8 @@ def random_suspended_robot(
     The frame is 2–6 m wide and deep with its exit points 2.5–4 m high, one per cable,
     spread round its top in the angular order of their anchors (the cables do not cross);
     the platform is 0.2–0.6 m across, its mass 1–10 kg under standard gravity (``−z``), its
-    centre of mass ``platform.wrench_point`` 0.1–0.5 body sizes below the anchors' mean plane
-    and off its axis.  The lengths are also stored as ``reference.lengths``, so the robot
+    centre of mass ``platform.wrench_point`` 0.1–0.5 body sizes below the platform's plane
+    ``z = 0`` (the anchors' plane when they are coplanar) and off its axis.  The lengths are also stored as ``reference.lengths``, so the robot
     file alone is a complete ``taut fk`` case.
 
     With ``pulley_radius``, every cable leaves through a swivelling pulley of that radius
