@@ -1,20 +1,24 @@
 """``taut workspace ROBOT --condition C [--grid G]``: the workspace of a condition over a grid
-of poses (:func:`taut.workspace.evaluate_workspace`), serial, in local processes or on a
-dask cluster."""
+of poses (:func:`taut.workspace.evaluate_workspace`), or with ``--certified`` covered by boxes
+proven inside, proven outside and undecided (:func:`taut.workspace.certified`); serial, in
+local processes or on a dask cluster."""
 
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING, Any
 
 from taut.cli import _args as A
 from taut.cli._output import console, emit, markup, save_figure, written
 from taut.cli._progress import progress_bar, wanted
 from taut.errors import TautError
 
-SUMMARY = "workspace over a grid of poses"
-ROBOT = True
+if TYPE_CHECKING:
+    from taut.model import Robot
+    from taut.statics import BoxWrenchSet
 
-#: Most poses of one ``workspace`` grid: beyond it the verdicts alone fill gigabytes.
+SUMMARY = "workspace over a grid of poses, or certified by interval analysis"
+ROBOT = True
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -33,6 +37,25 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--orientation", help="fixed platform orientation (theta, or a,b,c) and joint coordinates")
     parser.add_argument(
         "--max-poses", type=A.count(1), metavar="N", help="budget of poses: a larger grid is refused (default 10000000)"
+    )
+    parser.add_argument(
+        "--certified",
+        action="store_true",
+        help="cover the region with boxes proven inside, proven outside and undecided (interval analysis)",
+    )
+    parser.add_argument(
+        "--eps", type=A.real(above=0), metavar="M", help="--certified: smallest box width [m] (default 0.01)"
+    )
+    parser.add_argument(
+        "--region", metavar="RANGES", help="--certified: 'x0:x1;y0:y1[;z0:z1]' (default: the box of the exit points)"
+    )
+    parser.add_argument(
+        "--orientation-box",
+        metavar="RANGES",
+        help="--certified: angle ranges 'a0:a1[;b0:b1;c0:c1]': inner boxes hold for every orientation in them",
+    )
+    parser.add_argument(
+        "--max-boxes", type=A.count(1), metavar="N", help="--certified: budget of boxes (default 2000000)"
     )
     parser.add_argument("--out", metavar="FILE.npz", help="save poses and verdicts")
     parser.add_argument("--plot", metavar="FILE.png", help="plot the workspace")
@@ -70,13 +93,93 @@ def _grid(text: str | None, dimension: int) -> tuple[list[tuple[float, float, in
     return axes, None if axes is not None else n
 
 
-def run(ns: argparse.Namespace) -> int:
+def _ranges(text: str, what: str) -> list[list[float]]:
+    """``lo:hi;lo:hi[;...]`` as ``[[lo, hi], ...]``."""
+    out = []
+    for part in text.split(";"):
+        ends = part.split(":")
+        if len(ends) != 2:
+            raise TautError(f"{what}: expected lo:hi;lo:hi[;...], got {text!r}")
+        out.append([A.number(ends[0], what), A.number(ends[1], what)])
+    return out
+
+
+def _certified(ns: argparse.Namespace) -> int:
+    from taut.parallel import get_executor
+    from taut.workspace import certified
+
+    if ns.out is not None or ns.grid is not None or ns.max_poses is not None:
+        raise TautError(
+            "--certified takes --region, --eps and --max-boxes; --grid, --max-poses and --out are for grids"
+        )
+    plot = A.plot_file(ns.plot)
+    robot = A.load(ns.robot, ns.cable_set)
+    options: dict[str, Any] = {}
+    if ns.box is not None:
+        if ns.condition != "wrench-feasible":
+            raise TautError("--box sets the wrench set of --condition wrench-feasible")
+        options["wrench_set"] = _box_set(robot, ns.box)
+    with (
+        get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor,
+        progress_bar("certified workspace", wanted(ns.json)) as progress,
+    ):
+        res = certified(
+            robot,
+            ns.condition,
+            None if ns.region is None else _ranges(ns.region, "--region"),
+            orientation=None if ns.orientation is None else A.vector(ns.orientation, "--orientation"),
+            orientation_box=None if ns.orientation_box is None else _ranges(ns.orientation_box, "--orientation-box"),
+            executor=executor,
+            progress=progress,
+            **({} if ns.eps is None else {"eps": ns.eps}),
+            **({} if ns.max_boxes is None else {"max_boxes": ns.max_boxes}),
+            **options,
+        )
+    data = res.as_dict()
+    if plot is not None:
+        from taut.viz import plot_certified
+
+        save_figure(plot_certified(res, robot).figure, plot, data)
+
+    def human(d: dict) -> None:
+        unit = "m²" if len(d["axis_names"]) == 2 else "m³"
+        b = d["boxes"]
+        console().print(
+            f"{markup(robot.name)}: {d['condition']} workspace, certified to {d['eps']:g} m: "
+            f"{d['inner_volume']:.4g} {unit} proven inside, {d['undecided_volume']:.4g} {unit} undecided, "
+            f"{d['outer_volume']:.4g} {unit} proven outside of {d['region_volume']:.4g} {unit} "
+            f"({b['inner']} + {b['undecided']} + {b['outer']} boxes), {d['elapsed_s']:.3f} s"
+        )
+        if not d["complete"]:
+            console().print(f"the budget of {d['evaluated']} boxes ran out: raise --max-boxes or --eps")
+
+    emit(data, ns.json, human)
+    return 0
+
+
+def _box_set(robot: Robot, text: str) -> BoxWrenchSet:
     import numpy as np
 
-    from taut.parallel import get_executor
     from taut.statics import BoxWrenchSet
+
+    half = A.vector(text, "--box")
+    m = robot.wrench_dim
+    if half.size != m:
+        raise TautError(f"--box: {robot.name} takes {m} half-widths, got {half.size}")
+    if np.any(half < 0):
+        raise TautError(f"--box: half-widths must be >= 0, got {text!r}")
+    return BoxWrenchSet.around(np.zeros(m), half)
+
+
+def run(ns: argparse.Namespace) -> int:
+
+    from taut.parallel import get_executor
     from taut.workspace import evaluate_workspace
 
+    if ns.certified:
+        return _certified(ns)
+    if ns.eps is not None or ns.region is not None or ns.orientation_box is not None or ns.max_boxes is not None:
+        raise TautError("--eps, --region, --orientation-box and --max-boxes go with --certified")
     out = A.output_file(ns.out, "--out", {".npz"})
     plot = A.plot_file(ns.plot)
     robot = A.load(ns.robot, ns.cable_set)
@@ -86,12 +189,7 @@ def run(ns: argparse.Namespace) -> int:
     if ns.box is not None:
         if ns.condition != "wrench-feasible":
             raise TautError("--box sets the wrench set of --condition wrench-feasible")
-        half = A.vector(ns.box, "--box")
-        if half.size != robot.wrench_dim:
-            raise TautError(f"--box: {robot.name} takes {robot.wrench_dim} half-widths, got {half.size}")
-        if np.any(half < 0):
-            raise TautError(f"--box: half-widths must be >= 0, got {ns.box!r}")
-        wrench_set = BoxWrenchSet.around(np.zeros(robot.wrench_dim), half)
+        wrench_set = _box_set(robot, ns.box)
     with (
         get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor,
         progress_bar("workspace", wanted(ns.json)) as progress,

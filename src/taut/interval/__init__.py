@@ -1,12 +1,16 @@
 """Interval analysis (Berti 2015, §1.3 and Ch. 3): outward-rounded
 interval arithmetic, polynomial constraint tapes, HC4 contraction, slope enclosures,
-Krawczyk certificates with inflation, and a branch-and-prune solver.
+Krawczyk certificates with inflation, a branch-and-prune solver, and hyperplane shifting over
+interval matrices (Gouttefarde, Daney & Merlet 2011).
 
 References
 ----------
 .. [1] A. Berti, "Kinematics and statics of cable-driven parallel robots by
    interval-analysis-based methods", PhD thesis, Université Nice Sophia Antipolis and Università
    di Bologna, 2015, §1.3 and Ch. 3. (docs/references.bib: berti2015)
+.. [2] M. Gouttefarde, D. Daney, J.-P. Merlet, "Interval-analysis-based determination of the
+   wrench-feasible workspace of parallel cable-driven robots", IEEE Transactions on Robotics
+   27(1), 2011. (docs/references.bib: gouttefarde2011)
 """
 
 from __future__ import annotations
@@ -47,9 +51,14 @@ if TYPE_CHECKING:
     from taut.interval._krawczyk import Certificate, certified_step, certify, inflate, krawczyk, newton
     from taut.interval._linear import LinearFilter, interval_gauss, preconditioned_solve
     from taut.interval._precise import MAX_PRECISE_BOXES, precise_available, solve_precise
+    from taut.interval._zonotope import INSIDE, OUTSIDE, UNDECIDED, zonotope_verdicts
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
+    "INSIDE": "taut.interval._zonotope",
+    "OUTSIDE": "taut.interval._zonotope",
+    "UNDECIDED": "taut.interval._zonotope",
+    "zonotope_verdicts": "taut.interval._zonotope",
     "Interval": "taut.interval._arithmetic",
     "centred_form": "taut.interval._arithmetic",
     "Box": "taut.interval._branch_prune",
@@ -93,6 +102,9 @@ _LAZY = {
 }
 
 __all__ = [
+    "INSIDE",
+    "OUTSIDE",
+    "UNDECIDED",
     "Box",
     "BranchAndPruneResult",
     "CERTIFY_BOXES",
@@ -133,6 +145,7 @@ __all__ = [
     "solve_precise",
     "sqrt",
     "variables",
+    "zonotope_verdicts",
 ]
 
 __getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

@@ -39,6 +39,7 @@ from taut._lazy import lazy_exports
 
 if TYPE_CHECKING:
     from taut.viz._atlas import plot_atlas
+    from taut.viz._certified import plot_certified
     from taut.viz._check import plot_check
     from taut.viz._dgp import plot_equilibria, plot_tracking
     from taut.viz._dynamics import plot_control, plot_motion_tensions
@@ -52,6 +53,7 @@ if TYPE_CHECKING:
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
     "plot_atlas": "taut.viz._atlas",
+    "plot_certified": "taut.viz._certified",
     "plot_check": "taut.viz._check",
     "plot_equilibria": "taut.viz._dgp",
     "plot_tracking": "taut.viz._dgp",
@@ -69,6 +71,7 @@ __all__ = [
     "Report",
     "draw_robot",
     "plot_atlas",
+    "plot_certified",
     "plot_check",
     "plot_control",
     "plot_equilibria",

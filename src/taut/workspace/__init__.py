@@ -1,11 +1,15 @@
 """Workspaces (Rushton 2022, §2.1.4): conditions (wrench closure, wrench
-feasibility, static equilibrium) in a registry, pose grids, and grid evaluation over an
-executor of :mod:`taut.parallel`.
+feasibility, static equilibrium) in a registry, pose grids, grid evaluation over an
+executor of :mod:`taut.parallel`, and certified workspaces by interval analysis
+(Gouttefarde, Daney & Merlet 2011).
 
 References
 ----------
 .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
    Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+.. [2] M. Gouttefarde, D. Daney, J.-P. Merlet, "Interval-analysis-based determination of the
+   wrench-feasible workspace of parallel cable-driven robots", IEEE Transactions on Robotics
+   27(1), 2011. (docs/references.bib: gouttefarde2011)
 """
 
 from __future__ import annotations
@@ -15,6 +19,7 @@ from typing import TYPE_CHECKING
 from taut._lazy import lazy_exports
 
 if TYPE_CHECKING:
+    from taut.workspace._certified import CertifiedWorkspace, certified
     from taut.workspace._conditions import (
         CONDITIONS,
         StaticEquilibrium,
@@ -30,6 +35,8 @@ if TYPE_CHECKING:
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
+    "CertifiedWorkspace": "taut.workspace._certified",
+    "certified": "taut.workspace._certified",
     "CONDITIONS": "taut.workspace._conditions",
     "StaticEquilibrium": "taut.workspace._conditions",
     "WorkspaceCondition": "taut.workspace._conditions",
@@ -50,6 +57,7 @@ _LAZY = {
 
 __all__ = [
     "CONDITIONS",
+    "CertifiedWorkspace",
     "MAX_GRID_POSES",
     "PoseGrid",
     "StaticEquilibrium",
@@ -58,6 +66,7 @@ __all__ = [
     "WrenchClosure",
     "WrenchCondition",
     "WrenchFeasible",
+    "certified",
     "default_bounds",
     "default_wrench_set",
     "evaluate_workspace",

@@ -1,0 +1,622 @@
+"""Certified workspaces (Gouttefarde, Daney & Merlet 2011): a region of platform positions
+covered by boxes proven inside the workspace of a condition, boxes proven outside it, and
+undecided boxes no wider than ``eps`` along the boundary.
+
+A grid says nothing between its points; a box here is decided for **every** position in
+it.  Over a box of positions (at a fixed orientation, or for every orientation of an
+orientation box), the structure matrices are enclosed in outward-rounded interval arithmetic
+(:class:`taut.interval.Interval`: ``v_i = a_i − R b_i − p``, ``u_i = v_i / ‖v_i‖`` and the
+moments ``R b_i × u_i``), the external wrench likewise, and the hyperplane-shifting
+inequalities of the condition are evaluated over the enclosure
+(:func:`taut.interval.zonotope_verdicts`): all of them hold — the box is inside — or one
+fails everywhere — outside.  Otherwise the box is bisected across its widest side, breadth
+first, until it is no wider than ``eps``; what is left is the undecided boundary layer.
+
+* The volumes bound the workspace's: ``inner ≤ true ≤ inner + undecided`` (within the
+  region).
+* With an orientation box the inner boxes belong to the *total orientation* workspace (the
+  condition holds at every orientation of the box); an outer box fails at the box's centre
+  orientation, so none of its positions belongs to that workspace either.
+* The boxes of one level are split into chunks of :data:`CHUNK_BOXES` and mapped over an
+  executor of :mod:`taut.parallel`; each box is decided alone, so the boxes are the same
+  whatever the executor.
+
+Conditions: ``wrench-feasible`` (box, polytope or single-wrench sets), ``static`` and
+``wrench-closure``.  ``interference-free`` and ellipsoidal wrench sets are refused (no
+certificate is implemented for them).  Robots: point masses and rigid platforms, planar and
+spatial, whose cables leave from fixed exit points; jointed platforms, swivelling pulleys
+and obstacles are refused.
+
+References
+----------
+.. [1] M. Gouttefarde, D. Daney, J.-P. Merlet, "Interval-analysis-based determination of the
+   wrench-feasible workspace of parallel cable-driven robots", IEEE Transactions on Robotics
+   27(1), 2011, §III–V. (docs/references.bib: gouttefarde2011)
+.. [2] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
+   Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from taut._results import Result, jsonable
+from taut.errors import ArgumentError, GridSizeError, UnsupportedRobotError
+from taut.interval import Interval, zonotope_verdicts
+from taut.model import Robot
+from taut.parallel import Executor, as_executor
+from taut.statics import BoxWrenchSet, PolytopeWrenchSet, SingleWrench
+from taut.workspace._conditions import (
+    StaticEquilibrium,
+    WorkspaceCondition,
+    WrenchClosure,
+    WrenchFeasible,
+    make_condition,
+)
+from taut.workspace._grid import default_bounds
+
+__all__ = ["CHUNK_BOXES", "DEFAULT_EPS", "MAX_BOXES", "CertifiedWorkspace", "certified"]
+
+#: Default smallest box width [m] (1 cm).
+DEFAULT_EPS = 0.01
+#: Default budget of boxes evaluated; beyond it the boxes left are reported undecided and the
+#: result is marked incomplete.
+MAX_BOXES = 2_000_000
+#: Boxes per task handed to the executor.
+CHUNK_BOXES = 4096
+
+
+@dataclass(frozen=True)
+class CertifiedWorkspace(Result):
+    """Boxes of positions proven inside, proven outside, and undecided (:func:`certified`).
+
+    Boxes are arrays ``(K, d, 2)``: ``[lo, hi]`` of each position coordinate.
+
+    Attributes
+    ----------
+    robot_name : str
+    condition : str
+        The condition's registry name.
+    axis_names : tuple of str
+        The position coordinates' names.
+    region : ndarray, shape (d, 2)
+    orientation : ndarray, shape (k,)
+        The fixed orientation (the centre of ``orientation_box`` when one is given; empty
+        for a point mass).
+    orientation_box : ndarray, shape (k, 2), or None
+        Inner boxes hold for every orientation of it.
+    eps : float
+        Undecided boxes are no wider than this [m] (unless the budget ran out).
+    inner, outer, undecided : ndarray, shape (K, d, 2)
+    complete : bool
+        False when the box budget ran out: the boxes not yet decided are in ``undecided``,
+        some of them wider than ``eps``.
+    evaluated : int
+        Boxes evaluated.
+    elapsed_s : float
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> from taut.workspace import certified
+    >>> res = certified(example("planar-4cable"), "static", eps=0.05)
+    >>> res.complete, res.inner_volume <= res.inner_volume + res.undecided_volume
+    (True, True)
+    >>> sorted(res.as_dict()["boxes"])
+    ['inner', 'outer', 'undecided']
+    """
+
+    robot_name: str
+    condition: str
+    axis_names: tuple[str, ...]
+    region: np.ndarray
+    orientation: np.ndarray
+    orientation_box: np.ndarray | None
+    eps: float
+    inner: np.ndarray
+    outer: np.ndarray
+    undecided: np.ndarray
+    complete: bool
+    evaluated: int
+    elapsed_s: float
+
+    @staticmethod
+    def _volume(boxes: np.ndarray) -> float:
+        return float(np.prod(boxes[:, :, 1] - boxes[:, :, 0], axis=1).sum()) if len(boxes) else 0.0
+
+    @property
+    def inner_volume(self) -> float:
+        """Volume (area in 2-D) of the inner boxes: a lower bound of the workspace's within the region."""
+        return self._volume(self.inner)
+
+    @property
+    def outer_volume(self) -> float:
+        """Volume of the outer boxes."""
+        return self._volume(self.outer)
+
+    @property
+    def undecided_volume(self) -> float:
+        """Volume of the undecided boxes: ``inner + undecided`` bounds the workspace's from above."""
+        return self._volume(self.undecided)
+
+    @property
+    def region_volume(self) -> float:
+        """Volume of the region."""
+        return float(np.prod(self.region[:, 1] - self.region[:, 0]))
+
+    def as_dict(self, *, boxes: bool = False) -> dict[str, Any]:
+        """The result in JSON types: volumes, box counts and, with ``boxes``, the boxes.
+
+        Parameters
+        ----------
+        boxes : bool, default False
+            Include the arrays of boxes (``inner_boxes``, ``outer_boxes``, ``undecided_boxes``).
+
+        Returns
+        -------
+        dict
+        """
+        d = {
+            "robot": self.robot_name,
+            "condition": self.condition,
+            "axis_names": list(self.axis_names),
+            "region": self.region,
+            "orientation": self.orientation,
+            "orientation_box": self.orientation_box,
+            "eps": self.eps,
+            "inner_volume": self.inner_volume,
+            "undecided_volume": self.undecided_volume,
+            "outer_volume": self.outer_volume,
+            "region_volume": self.region_volume,
+            "boxes": {"inner": len(self.inner), "outer": len(self.outer), "undecided": len(self.undecided)},
+            "evaluated": self.evaluated,
+            "complete": self.complete,
+            "elapsed_s": self.elapsed_s,
+        }
+        if boxes:
+            d.update(inner_boxes=self.inner, outer_boxes=self.outer, undecided_boxes=self.undecided)
+        return jsonable(d)
+
+
+@dataclass(frozen=True)
+class _Spec:
+    """What a worker needs to decide boxes: picklable, no robot methods called twice."""
+
+    exits: np.ndarray  # (n, d)
+    anchors: np.ndarray  # (n, d) in the platform frame; zeros for a point mass
+    point_mass: bool
+    convention: str
+    orientation: np.ndarray  # fixed orientation (centre of the box)
+    orientation_box: np.ndarray | None
+    tension_bounds: tuple[np.ndarray, np.ndarray]
+    closure: bool
+    around_external: bool
+    force: np.ndarray  # the external force (weights and constant wrench), fixed frame
+    moment: np.ndarray  # the external wrench's constant moment
+    wrench_point: np.ndarray  # where the force acts, platform frame
+    centre: np.ndarray
+    radius: np.ndarray
+    vertices: np.ndarray | None
+
+
+def _rotations(spec: _Spec, angles: Interval) -> Interval:
+    """Enclosures of the rotation matrices ``(B, d, d)`` of boxes of angles ``(B, k)``."""
+    B = angles.shape[0]
+    if spec.exits.shape[1] == 2:
+        c, s = angles[:, 0].cos(), angles[:, 0].sin()
+        lo = np.stack([np.stack([c.lo, -s.hi], -1), np.stack([s.lo, c.lo], -1)], -2)
+        hi = np.stack([np.stack([c.hi, -s.lo], -1), np.stack([s.hi, c.hi], -1)], -2)
+        return Interval(lo, hi)
+
+    def axis(k: int, t: Interval) -> Interval:
+        # R_x = [[1, 0, 0], [0, c, −s], [0, s, c]] and its cyclic shifts R_y, R_z
+        c, s = t.cos(), t.sin()
+        lo, hi = np.zeros((B, 3, 3)), np.zeros((B, 3, 3))
+        i, j = (k + 1) % 3, (k + 2) % 3
+        lo[:, k, k] = hi[:, k, k] = 1.0
+        lo[:, i, i], hi[:, i, i] = c.lo, c.hi
+        lo[:, j, j], hi[:, j, j] = c.lo, c.hi
+        lo[:, i, j], hi[:, i, j] = -s.hi, -s.lo
+        lo[:, j, i], hi[:, j, i] = s.lo, s.hi
+        return Interval(lo, hi)
+
+    a, b, c = angles[:, 0], angles[:, 1], angles[:, 2]
+    if spec.convention == "xyz-fixed":
+        factors = [axis(2, c), axis(1, b), axis(0, a)]
+    elif spec.convention == "xyz-moving":
+        factors = [axis(0, a), axis(1, b), axis(2, c)]
+    else:  # tilt-torsion
+        factors = [axis(2, a), axis(1, b), axis(2, c - a)]
+    R = factors[0]
+    for F in factors[1:]:
+        R = _matmul(R, F)
+    return R
+
+
+def _matmul(A: Interval, Bm: Interval) -> Interval:
+    """``A @ B`` of stacks of interval matrices ``(B, p, q) @ (B, q, r)``."""
+    out = A[:, :, 0:1] * Bm[:, 0:1, :]
+    for k in range(1, A.shape[2]):
+        out = out + A[:, :, k : k + 1] * Bm[:, k : k + 1, :]
+    return out
+
+
+def _rotate(R: Interval, x: np.ndarray) -> Interval:
+    """``R x_i`` for the rows of ``x`` ``(n, d)``: ``(B, n, d)``."""
+    out = R[:, None, :, 0] * x[None, :, 0:1]
+    for k in range(1, x.shape[1]):
+        out = out + R[:, None, :, k] * x[None, :, k : k + 1]
+    return out
+
+
+def _cross(a: Interval, b: Interval) -> Interval:
+    """Cross products along the last axis (a scalar ``(…, 1)`` in 2-D)."""
+    if a.shape[-1] == 2:
+        return a[..., 0:1] * b[..., 1:2] - a[..., 1:2] * b[..., 0:1]
+    return Interval(
+        np.stack(
+            [
+                (a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1]).lo,
+                (a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2]).lo,
+                (a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]).lo,
+            ],
+            -1,
+        ),
+        np.stack(
+            [
+                (a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1]).hi,
+                (a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2]).hi,
+                (a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]).hi,
+            ],
+            -1,
+        ),
+    )
+
+
+def _enclosures(spec: _Spec, lo: np.ndarray, hi: np.ndarray, angles: Interval) -> tuple[Interval, Interval, Interval]:
+    """The structure matrices ``(B, m, n)``, their derivatives in the position ``(B, m, n, d)``
+    and the external wrenches ``(B, m)`` over boxes of positions ``[lo, hi]`` ``(B, d)`` at the
+    orientations ``angles`` ``(B, k)``: ``∂u/∂p = −(I − u uᵀ)/L`` and ``∂(R b × u)/∂p =
+    R b × ∂u/∂p``, since ``v = a − R b − p``."""
+    B, d = lo.shape
+    p = Interval(lo, hi)[:, None, :]
+    if spec.point_mass:
+        rb = Interval(np.zeros((B, 1, d)))
+    else:
+        R = _rotations(spec, angles)
+        rb = _rotate(R, spec.anchors)
+    v = Interval(spec.exits[None]) - rb - p  # (B, n, d)
+    length = v[..., 0].sqr()
+    for k in range(1, d):
+        length = length + v[..., k].sqr()
+    L = length.sqrt()
+    u = v / L[..., None]
+    eye = np.eye(d)
+    # du[..., k, l] = ∂u_k/∂p_l = (u_k u_l − δ_kl) / L
+    du = (u[..., :, None] * u[..., None, :] - eye) / L[..., None, None]  # (B, n, d, d)
+    force = Interval(np.broadcast_to(spec.force, (B, d)))
+    if spec.point_mass:
+        W, G, wrench = u, du, force
+    else:
+        mom = _cross(rb, u)
+        dmom = [_cross(rb, du[..., :, l]) for l in range(d)]  # each (B, n, 3 or 1)
+        G_mom = Interval(np.stack([g.lo for g in dmom], -1), np.stack([g.hi for g in dmom], -1))
+        W = Interval(np.concatenate([u.lo, mom.lo], -1), np.concatenate([u.hi, mom.hi], -1))
+        G = Interval(np.concatenate([du.lo, G_mom.lo], -2), np.concatenate([du.hi, G_mom.hi], -2))
+        arm = _rotate(R, spec.wrench_point[None])[:, 0, :]
+        moment = _cross(arm, force) + spec.moment
+        wrench = Interval(np.concatenate([force.lo, moment.lo], -1), np.concatenate([force.hi, moment.hi], -1))
+    return (
+        Interval(np.swapaxes(W.lo, 1, 2), np.swapaxes(W.hi, 1, 2)),
+        Interval(np.swapaxes(G.lo, 1, 2), np.swapaxes(G.hi, 1, 2)),
+        wrench,
+    )
+
+
+def _decide(task: tuple[_Spec, np.ndarray, np.ndarray]) -> np.ndarray:
+    """Verdicts (1 inside, −1 outside, 0 undecided) of boxes of positions ``(B, d)``."""
+    spec, lo, hi = task
+    B = len(lo)
+    centre = np.broadcast_to(spec.orientation, (B, spec.orientation.size))
+    fixed = Interval(centre)
+    if spec.orientation_box is None:
+        return _verdicts(spec, lo, hi, fixed)
+    box = Interval(
+        np.broadcast_to(spec.orientation_box[:, 0], centre.shape),
+        np.broadcast_to(spec.orientation_box[:, 1], centre.shape),
+    )
+    whole = _verdicts(spec, lo, hi, box)
+    # outside at the centre orientation is outside the total orientation workspace
+    at_centre = _verdicts(spec, lo, hi, fixed)
+    return np.where(at_centre == -1, np.int8(-1), np.where(whole == 1, np.int8(1), np.int8(0)))
+
+
+def _verdicts(spec: _Spec, lo: np.ndarray, hi: np.ndarray, angles: Interval) -> np.ndarray:
+    W, G, wrench = _enclosures(spec, lo, hi, angles)
+    mid = 0.5 * (lo + hi)
+    Wc, _, _ = _enclosures(spec, mid, mid, angles)
+    bad = ~(np.isfinite(W.lo) & np.isfinite(W.hi)).all(axis=(1, 2)) | ~(np.isfinite(G.lo) & np.isfinite(G.hi)).all(
+        axis=(1, 2, 3)
+    )
+    Wlo, Whi = np.where(bad[:, None, None], -1.0, W.lo), np.where(bad[:, None, None], 1.0, W.hi)
+    # the half-widths, rounded up, hold the box around its rounded midpoint
+    half = np.maximum(hi - mid, mid - lo) * (1 + 1e-15)
+    mean_value = (
+        np.where(bad[:, None, None], -1.0, Wc.lo),
+        np.where(bad[:, None, None], 1.0, Wc.hi),
+        np.where(bad[:, None, None, None], 0.0, G.lo),
+        np.where(bad[:, None, None, None], 0.0, G.hi),
+        half,
+    )
+    if spec.closure:
+        out = zonotope_verdicts(Wlo, Whi, tension_bounds=spec.tension_bounds, closure=True, mean_value=mean_value)
+    else:
+        o_lo = wrench.lo if spec.around_external else np.zeros_like(wrench.lo)
+        o_hi = wrench.hi if spec.around_external else np.zeros_like(wrench.hi)
+        out = zonotope_verdicts(
+            Wlo,
+            Whi,
+            tension_bounds=spec.tension_bounds,
+            wrench_lo=o_lo,
+            wrench_hi=o_hi,
+            centre=spec.centre,
+            radius=spec.radius,
+            vertices=spec.vertices,
+            mean_value=mean_value,
+        )
+    # a box where a cable may have no direction (an exit point in it) decides nothing
+    out[bad] = 0
+    return out
+
+
+def _spec(robot: Robot, condition: WorkspaceCondition, orientation: np.ndarray, box: np.ndarray | None) -> _Spec:
+    d, m = robot.dimension, robot.wrench_dim
+    why = None
+    if robot.n_joints:
+        why = "its platform has jointed bodies"
+    elif robot.swivel_cables:
+        why = "its cables leave through swivelling pulleys, whose exit points move"
+    elif robot.obstacles:
+        why = "it has obstacles its cables may wrap around"
+    elif robot.n_cables < m:
+        why = f"it has {robot.n_cables} cables for {m} wrench components: its workspace has no interior to certify"
+    if why is not None:
+        raise UnsupportedRobotError(f"{robot.name}: certified workspaces take robots with fixed exit points; {why}")
+    closure = isinstance(condition, WrenchClosure)
+    centre, radius, vertices = np.zeros(m), np.zeros(m), None
+    around = True
+    if isinstance(condition, WrenchFeasible):
+        ws = condition.required_set(robot)
+        around = condition.around_external
+        if isinstance(ws, BoxWrenchSet):
+            centre, radius = 0.5 * (ws.lower + ws.upper), 0.5 * (ws.upper - ws.lower)
+        elif isinstance(ws, SingleWrench):
+            centre = np.asarray(ws.wrench, float)
+        elif isinstance(ws, PolytopeWrenchSet):
+            vertices = np.asarray(ws.vertices, float)
+        else:
+            raise ArgumentError(
+                f"a certified workspace takes a box, polytope or single-wrench set; a {type(ws).__name__} cannot be certified"
+            )
+    elif not isinstance(condition, (StaticEquilibrium, WrenchClosure)):
+        raise ArgumentError(
+            f"the {condition.name!r} condition cannot be certified; certified conditions: wrench-feasible, static, wrench-closure"
+        )
+    plat = robot.platform
+    force = robot.weight + robot.body_weights.sum(axis=0)
+    moment = np.zeros(m - d)
+    if plat.wrench is not None:
+        force = force + np.asarray(plat.wrench[:d], float)
+        moment = np.asarray(plat.wrench[d:], float)
+    point = np.zeros(d) if plat.wrench_point is None else np.asarray(plat.wrench_point, float)
+    tmin, tmax = robot.tension_bounds
+    return _Spec(
+        exits=np.asarray(robot.exits, float),
+        anchors=np.asarray(robot.anchors, float),
+        point_mass=robot.is_point_mass,
+        convention=robot.orientation,
+        orientation=orientation,
+        orientation_box=box,
+        tension_bounds=(np.asarray(tmin, float), np.asarray(tmax, float)),
+        closure=closure,
+        around_external=around,
+        force=np.asarray(force, float),
+        moment=moment,
+        wrench_point=point,
+        centre=centre,
+        radius=radius,
+        vertices=vertices,
+    )
+
+
+def _as_box(value: npt.ArrayLike, rows: int, what: str) -> np.ndarray:
+    try:
+        box = np.array(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ArgumentError(f"{what} must be numbers, shape ({rows}, 2)") from None
+    if box.shape != (rows, 2) or not np.all(np.isfinite(box)):
+        raise ArgumentError(
+            f"{what} must be finite numbers of shape ({rows}, 2) ([lo, hi] per coordinate), got shape {box.shape}"
+        )
+    if np.any(box[:, 0] > box[:, 1]):
+        raise ArgumentError(f"{what} is inverted: a lower end above its upper end in {box.tolist()}")
+    return box
+
+
+def _bisect(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Each box cut in two across its widest side (the first of equal ones): the lower halves,
+    then the upper halves, interleaved per box."""
+    axis = np.argmax(hi - lo, axis=1)
+    rows = np.arange(len(lo))
+    mid = 0.5 * (lo[rows, axis] + hi[rows, axis])
+    lo2, hi2 = np.repeat(lo, 2, axis=0), np.repeat(hi, 2, axis=0)
+    hi2[2 * rows, axis] = mid
+    lo2[2 * rows + 1, axis] = mid
+    return lo2, hi2
+
+
+def certified(
+    robot: Robot,
+    condition: str | WorkspaceCondition = "wrench-feasible",
+    region: npt.ArrayLike | None = None,
+    *,
+    orientation: npt.ArrayLike | None = None,
+    orientation_box: npt.ArrayLike | None = None,
+    eps: float = DEFAULT_EPS,
+    max_boxes: int = MAX_BOXES,
+    executor: Executor | str | None = None,
+    progress: Callable[[int, int | None], None] | None = None,
+    **options: Any,
+) -> CertifiedWorkspace:
+    """The workspace of a condition over a region of positions, certified by interval analysis:
+    boxes proven inside, proven outside, and an undecided boundary layer of boxes no wider
+    than ``eps``.
+
+    Parameters
+    ----------
+    robot : Robot
+        A point mass or a rigid platform, planar or spatial, with fixed exit points.
+    condition : str or WorkspaceCondition, default "wrench-feasible"
+        ``wrench-feasible`` (box, polytope or single-wrench sets), ``static`` or
+        ``wrench-closure``, by name or instance.
+    region : array_like, shape (d, 2), optional
+        ``[lo, hi]`` of each position coordinate (default: the box of the exit points,
+        :func:`~taut.workspace.default_bounds`).
+    orientation : array_like, optional
+        The fixed orientation of a rigid platform (θ, or three angles in the robot's
+        convention; default zeros).
+    orientation_box : array_like, shape (k, 2), optional
+        Instead: ``[lo, hi]`` of each angle; inner boxes then hold for every orientation of it
+        (the total orientation workspace), outer boxes fail at its centre.
+    eps : float, default 0.01
+        Boxes no wider than this [m] are not bisected further.
+    max_boxes : int, default 2000000
+        Budget of boxes evaluated; beyond it the result is incomplete.
+    executor : Executor or str, optional
+        Where the chunks of boxes are decided (:func:`taut.parallel.as_executor`).
+    progress : callable, optional
+        ``progress(done, 1000)``: the permille of the region's volume decided so far.
+    **options
+        Passed to the condition's class when ``condition`` is a name (e.g. ``wrench_set``).
+
+    Returns
+    -------
+    CertifiedWorkspace
+
+    Raises
+    ------
+    UnsupportedRobotError
+        Jointed platforms, swivelling pulleys, obstacles, fewer cables than wrench components.
+    ArgumentError
+        An empty, inverted or non-finite region or orientation box, ``eps ≤ 0``, a bad
+        budget, or a condition or wrench set that cannot be certified.
+    GridSizeError
+        A region so much larger than ``eps`` that even its boundary layer exceeds the budget
+        by orders of magnitude (more than 1e12 boxes of width ``eps``).
+
+    References
+    ----------
+    .. [1] M. Gouttefarde, D. Daney, J.-P. Merlet, "Interval-analysis-based determination of
+       the wrench-feasible workspace of parallel cable-driven robots", IEEE Transactions on
+       Robotics 27(1), 2011, §III–V. (docs/references.bib: gouttefarde2011)
+
+    Examples
+    --------
+    The static workspace of the planar 4-cable robot at θ = 0, to 5 cm: the true area lies
+    between the inner area and the inner plus undecided area.
+
+    >>> from taut.model import example
+    >>> res = certified(example("planar-4cable"), "static", eps=0.05)
+    >>> lo, hi = res.inner_volume, res.inner_volume + res.undecided_volume
+    >>> bool(0 < lo < hi <= res.region_volume)
+    True
+    """
+    t0 = time.perf_counter()
+    if (
+        isinstance(eps, bool)
+        or not isinstance(eps, (int, float, np.floating, np.integer))
+        or not np.isfinite(eps)
+        or eps <= 0
+    ):
+        raise ArgumentError(f"eps must be a positive number of metres, got {eps!r}")
+    if isinstance(max_boxes, bool) or not isinstance(max_boxes, (int, np.integer)) or max_boxes < 1:
+        raise ArgumentError(f"max_boxes must be a positive integer, got {max_boxes!r}")
+    if progress is not None and not callable(progress):
+        raise ArgumentError(f"progress must be a callable progress(done, total), got {progress!r}")
+    cond = make_condition(condition, **options)
+    d = robot.dimension
+    k = 0 if robot.is_point_mass else (1 if d == 2 else 3)
+    reg = default_bounds(robot) if region is None else _as_box(region, d, "region")
+    if np.any(reg[:, 1] <= reg[:, 0]):
+        raise ArgumentError(f"region is empty: every coordinate needs lo < hi, got {reg.tolist()}")
+    box = None
+    if orientation_box is not None:
+        if k == 0:
+            raise ArgumentError(f"{robot.name}: a point mass has no orientation box")
+        if orientation is not None:
+            raise ArgumentError("give orientation or orientation_box, not both")
+        box = _as_box(orientation_box, k, "orientation_box")
+        fixed = 0.5 * (box[:, 0] + box[:, 1])
+    else:
+        fixed = np.zeros(k) if orientation is None else np.array(orientation, dtype=float).reshape(-1)
+        if fixed.shape != (k,) or not np.all(np.isfinite(fixed)):
+            raise ArgumentError(f"{robot.name}: the orientation takes {k} finite angles, got {orientation!r}")
+    widths = reg[:, 1] - reg[:, 0]
+    if float(np.prod(np.maximum(widths / eps, 1.0))) > 1e12:
+        raise GridSizeError(
+            f"eps = {eps:g} m cuts the region {reg.tolist()} into more than 1e12 boxes; raise eps or shrink the region"
+        )
+    spec = _spec(robot, cond, fixed, box)
+    ex = as_executor(executor)
+    total = float(np.prod(widths))
+    inner: list[np.ndarray] = []
+    outer: list[np.ndarray] = []
+    undecided: list[np.ndarray] = []
+    decided_volume = 0.0
+    lo, hi = reg[None, :, 0].copy(), reg[None, :, 1].copy()
+    evaluated = 0
+    complete = True
+    if progress is not None:
+        progress(0, 1000)
+    while len(lo):
+        if evaluated + len(lo) > max_boxes:
+            complete = False
+            undecided.append(np.stack([lo, hi], -1))
+            break
+        tasks = [(spec, lo[i : i + CHUNK_BOXES], hi[i : i + CHUNK_BOXES]) for i in range(0, len(lo), CHUNK_BOXES)]
+        verdict = np.concatenate(ex.map(_decide, tasks))
+        evaluated += len(lo)
+        small = (hi - lo).max(axis=1) <= eps
+        keep = (verdict == 0) & ~small
+        for mask, bucket in ((verdict == 1, inner), (verdict == -1, outer), ((verdict == 0) & small, undecided)):
+            if mask.any():
+                bucket.append(np.stack([lo[mask], hi[mask]], -1))
+                decided_volume += float(np.prod(hi[mask] - lo[mask], axis=1).sum())
+        if progress is not None:
+            progress(min(1000, int(1000 * decided_volume / total)), 1000)
+        lo, hi = _bisect(lo[keep], hi[keep])
+
+    def stacked(parts: list[np.ndarray]) -> np.ndarray:
+        return np.concatenate(parts) if parts else np.zeros((0, d, 2))
+
+    return CertifiedWorkspace(
+        robot_name=robot.name,
+        condition=cond.name,
+        axis_names=tuple(robot.pose_names[:d]),
+        region=reg,
+        orientation=fixed,
+        orientation_box=box,
+        eps=float(eps),
+        inner=stacked(inner),
+        outer=stacked(outer),
+        undecided=stacked(undecided),
+        complete=complete,
+        evaluated=evaluated,
+        elapsed_s=time.perf_counter() - t0,
+    )

@@ -1,0 +1,265 @@
+"""Certified workspaces: every pose of an inner box passes the grid's point test, every pose
+of an outer box fails it; volumes bracket the grid's estimate; the same boxes on every
+executor; one-line refusals through the CLI."""
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import taut
+from taut.errors import ArgumentError, GridSizeError, UnsupportedRobotError
+from taut.interval import Interval, zonotope_verdicts
+from taut.model import random_planar_robot, random_point_mass_robot
+from taut.parallel import ProcessExecutor
+from taut.statics import BoxWrenchSet, wrench_feasible
+from taut.workspace import certified, evaluate_workspace, make_condition
+
+
+def contradictions(robot, res, condition, samples, seed=0, orientations=None):
+    """Poses drawn uniformly in random boxes of each kind, judged by the point test."""
+    rng = np.random.default_rng(seed)
+    cond = make_condition(condition)
+    bad = 0
+    for boxes, want in ((res.inner, True), (res.outer, False)):
+        if not len(boxes):
+            continue
+        pick = rng.integers(0, len(boxes), samples)
+        P = rng.uniform(boxes[pick, :, 0], boxes[pick, :, 1])
+        if orientations is None:
+            O = np.broadcast_to(res.orientation, (samples, res.orientation.size))
+        else:
+            O = (
+                orientations(rng, samples)
+                if want
+                else np.broadcast_to(res.orientation, (samples, res.orientation.size))
+            )
+        bad += int(np.sum(cond.evaluate(robot, np.hstack([P, O])) != want))
+    return bad
+
+
+@pytest.mark.parametrize(
+    ("name", "condition", "eps"),
+    [
+        ("planar-4cable", "static", 0.01),
+        ("planar-4cable", "wrench-feasible", 0.01),
+        pytest.param("planar-4cable", "wrench-closure", 0.02, marks=pytest.mark.slow),
+        pytest.param("camera-4cable", "static", 0.25, marks=pytest.mark.slow),
+        pytest.param("printer-5cable", "wrench-closure", 0.25, marks=pytest.mark.slow),
+    ],
+)
+def test_inner_and_outer_boxes_agree_with_the_point_test(name, condition, eps):
+    robot = taut.example(name)
+    res = certified(robot, condition, eps=eps)
+    assert res.complete and len(res.inner) and len(res.outer)
+    assert contradictions(robot, res, condition, 20_000) == 0
+    # the three kinds tile the region
+    total = res.inner_volume + res.outer_volume + res.undecided_volume
+    assert total == pytest.approx(res.region_volume, rel=1e-9)
+    assert np.all((res.undecided[:, :, 1] - res.undecided[:, :, 0]).max(axis=1) <= eps)
+
+
+@settings(max_examples=15, deadline=None)
+@given(seed=st.integers(0, 2**31), n=st.integers(3, 5), kind=st.sampled_from(["planar", "point-mass"]))
+def test_random_robots_are_certified_soundly(seed, n, kind):
+    if kind == "planar":
+        robot, _ = random_planar_robot(n, seed=seed)
+    else:
+        robot, _ = random_point_mass_robot(n, dimension=2, seed=seed)
+    if robot.n_cables < robot.wrench_dim:
+        with pytest.raises(UnsupportedRobotError, match="no interior"):
+            certified(robot, "static")
+        return
+    res = certified(robot, "static", eps=0.1, max_boxes=20_000)
+    assert contradictions(robot, res, "static", 3000, seed=seed) == 0
+
+
+def test_every_orientation_of_an_orientation_box():
+    robot = taut.example("planar-4cable")
+    box = [[-0.05, 0.05]]
+    res = certified(robot, "static", eps=0.02, orientation_box=box)
+    fixed = certified(robot, "static", eps=0.02)
+    assert 0 < res.inner_volume < fixed.inner_volume  # every orientation is asking more
+
+    def spread(rng, k):
+        return rng.uniform(-0.05, 0.05, (k, 1))
+
+    assert contradictions(robot, res, "static", 20_000, orientations=spread) == 0
+
+
+def test_spatial_rigid_platform_at_a_fixed_orientation():
+    robot = taut.example("spatial-8cable")
+    res = certified(robot, "wrench-feasible", [[0.2, 0.4], [0.1, 0.3], [0.0, 0.2]], eps=0.05)
+    assert res.complete and res.inner_volume > 0
+    assert contradictions(robot, res, "wrench-feasible", 5000) == 0
+
+
+def test_volumes_bracket_the_grid_and_the_boundary_layer_halves_with_eps():
+    robot = taut.example("planar-4cable")
+    coarse, fine = (certified(robot, "static", eps=e) for e in (0.004, 0.002))
+    grid = evaluate_workspace(robot, "static", resolution=401)
+    area = grid.count / grid.size * coarse.region_volume
+    for res in (coarse, fine):
+        assert res.inner_volume <= area + 0.01 and area <= res.inner_volume + res.undecided_volume + 0.01
+    assert fine.inner_volume >= coarse.inner_volume
+    assert 0.35 < fine.undecided_volume / coarse.undecided_volume < 0.65
+
+
+@pytest.mark.slow
+def test_the_same_boxes_on_every_executor():
+    robot = taut.example("planar-4cable")
+    serial = certified(robot, "wrench-feasible", eps=0.01)
+    with ProcessExecutor(2) as ex:
+        parallel = certified(robot, "wrench-feasible", eps=0.01, executor=ex)
+    for name in ("inner", "outer", "undecided"):
+        assert np.array_equal(getattr(serial, name), getattr(parallel, name))
+
+
+def test_a_budget_that_runs_out_is_reported():
+    res = certified(taut.example("planar-4cable"), "static", eps=0.001, max_boxes=50)
+    assert not res.complete and res.evaluated <= 50
+    assert res.inner_volume + res.outer_volume + res.undecided_volume == pytest.approx(res.region_volume)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "error", "match"),
+    [
+        ({"eps": 0.0}, ArgumentError, "eps must be a positive"),
+        ({"region": [[0.0, 0.0], [0.0, 1.0]]}, ArgumentError, "region is empty"),
+        ({"region": [[1.0, 0.0], [0.0, 1.0]]}, ArgumentError, "inverted"),
+        ({"region": [[0.0, np.nan], [0.0, 1.0]]}, ArgumentError, "finite"),
+        ({"eps": 1e-9, "region": [[-1e3, 1e3], [-1e3, 1e3]]}, GridSizeError, "1e12 boxes"),
+        ({"condition": "interference-free"}, ArgumentError, "cannot be certified"),
+        ({"orientation_box": [[0.3, 0.1]]}, ArgumentError, "inverted"),
+        ({"max_boxes": 0}, ArgumentError, "max_boxes"),
+    ],
+)
+def test_bad_input_is_refused(kwargs, error, match):
+    kwargs = dict(kwargs)
+    condition = kwargs.pop("condition", "static")
+    region = kwargs.pop("region", None)
+    with pytest.raises(error, match=match):
+        certified(taut.example("planar-4cable"), condition, region, **kwargs)
+
+
+@pytest.mark.parametrize(
+    ("name", "match"),
+    [("adjustable-8cable", "jointed bodies"), ("suspended-3cable", "no interior"), ("vscr-four-cable", "obstacles")],
+)
+def test_robots_without_a_certificate_are_refused_by_name(name, match):
+    with pytest.raises(UnsupportedRobotError, match=match):
+        certified(taut.example(name), "static")
+
+
+def test_an_ellipsoid_wrench_set_cannot_be_certified():
+    from taut.statics import EllipsoidWrenchSet
+
+    ws = EllipsoidWrenchSet(np.zeros(3), np.eye(3))
+    with pytest.raises(ArgumentError, match="EllipsoidWrenchSet cannot be certified"):
+        certified(taut.example("planar-4cable"), "wrench-feasible", wrench_set=ws)
+
+
+# ---- the interval kernel -------------------------------------------------------------------
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    seed=st.integers(0, 2**31),
+    m=st.sampled_from([2, 3, 6]),
+    extra=st.integers(0, 3),
+    width=st.sampled_from([0.0, 1e-3, 3e-2]),
+)
+def test_zonotope_verdicts_hold_for_every_matrix_of_the_enclosure(seed, m, extra, width):
+    """Matrices drawn inside [W − width, W + width] all agree with a decided verdict."""
+    rng = np.random.default_rng(seed)
+    n = m + extra
+    W = rng.normal(size=(m, n))
+    tmin = rng.uniform(0, 1, n)
+    tmax = tmin + rng.uniform(0.5, 5, n)
+    w = rng.normal(size=m)
+    r = rng.uniform(0, 0.3, m)
+    verdict = zonotope_verdicts(
+        (W - width)[None], (W + width)[None], tension_bounds=(tmin, tmax), wrench_lo=w, wrench_hi=w, radius=r
+    )[0]
+    samples = W + rng.uniform(-width, width, (200, m, n))
+    samples[0] = W
+    point = wrench_feasible(
+        samples, BoxWrenchSet.around(np.zeros(m), r), tension_bounds=(tmin, tmax), wrench=np.tile(w, (200, 1))
+    )
+    if verdict == 1:
+        assert point.all()
+    elif verdict == -1:
+        assert not point.any()
+    if width == 0.0:  # a point matrix is always decided
+        assert verdict != 0
+
+
+@settings(max_examples=200, deadline=None)
+@given(centre=st.floats(-50, 50), half=st.floats(0, 4), fn=st.sampled_from(["cos", "sin"]))
+def test_interval_cos_and_sin_enclose_every_value(centre, half, fn):
+    box = getattr(Interval(centre - half, centre + half), fn)()
+    x = np.linspace(centre - half, centre + half, 4001)
+    y = getattr(np, fn)(x)
+    assert box.lo <= y.min() and y.max() <= box.hi
+    assert -1.0 <= box.lo <= box.hi <= 1.0
+
+
+# ---- the command line ----------------------------------------------------------------------
+
+
+def taut_cli(*argv):
+    return subprocess.run([sys.executable, "-m", "taut", *argv], capture_output=True, text=True, timeout=300)
+
+
+def test_cli_certified_json_and_plot(tmp_path):
+    plot = tmp_path / "c.png"
+    p = taut_cli(
+        "workspace",
+        "planar-4cable",
+        "--condition",
+        "static",
+        "--certified",
+        "--eps",
+        "0.01",
+        "--plot",
+        str(plot),
+        "--json",
+    )
+    assert p.returncode == 0, p.stderr
+    d = json.loads(p.stdout)
+    lib = certified(taut.example("planar-4cable"), "static", eps=0.01)
+    assert d["boxes"] == {"inner": len(lib.inner), "outer": len(lib.outer), "undecided": len(lib.undecided)}
+    assert d["inner_volume"] == pytest.approx(lib.inner_volume) and d["complete"] is True
+    assert set(d) >= {"inner_volume", "undecided_volume", "boxes", "elapsed_s"}
+    assert plot.stat().st_size > 10_000
+
+
+@pytest.mark.parametrize(
+    ("extra", "match"),
+    [
+        (["--eps", "0"], "--eps: expected a finite number greater than 0"),
+        (["--region", "1:0;0:1"], "region is inverted"),
+        (["--region", "0:1"], "region must be finite numbers of shape"),
+        (["--orientation-box", "0.5:0.1"], "orientation_box is inverted"),
+        (["--grid", "20"], "--certified takes --region"),
+    ],
+)
+def test_cli_certified_bad_input_is_one_line_and_exit_2(extra, match):
+    p = taut_cli("workspace", "planar-4cable", "--condition", "static", "--certified", *extra)
+    assert p.returncode == 2 and p.stderr.count("\n") == 1 and match in p.stderr, p.stderr
+
+
+def test_cli_certified_options_need_certified():
+    p = taut_cli("workspace", "planar-4cable", "--condition", "static", "--eps", "0.1")
+    assert p.returncode == 2 and "go with --certified" in p.stderr
+
+
+def test_cli_budget_out_is_incomplete_not_an_error():
+    p = taut_cli("workspace", "planar-4cable", "--condition", "static", "--certified", "--max-boxes", "10", "--json")
+    assert p.returncode == 0
+    d = json.loads(p.stdout)
+    assert d["complete"] is False and d["evaluated"] <= 10
