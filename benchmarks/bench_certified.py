@@ -43,7 +43,7 @@ def case(name, condition, eps, max_boxes, repeat):
     print(
         f"  grid at spacing eps: {grid.size} poses in {t_grid:.2f} s, estimate {grid_volume:.4g} {unit} "
         f"(inside the bracket: {res.inner_volume <= grid_volume <= res.inner_volume + res.undecided_volume}); "
-        f"certified / grid time: {t_cert / t_grid:.2f}"
+        f"certified / grid time: {t_cert / t_grid:.2f}x"
     )
     return t_cert, res
 
