@@ -34,7 +34,9 @@ def case(name, condition, eps, max_boxes, repeat):
     grid = evaluate_workspace(robot, condition, grid=spec, max_poses=10**9)
     t_grid = time.perf_counter() - t
     unit = "m²" if len(region) == 2 else "m³"
-    print(f"{name}, {condition}, eps = {eps:g} m: {t_cert:.2f} s, complete: {res.complete}, {res.evaluated} boxes evaluated")
+    print(
+        f"{name}, {condition}, eps = {eps:g} m: {t_cert:.2f} s, complete: {res.complete}, {res.evaluated} boxes evaluated"
+    )
     print(
         f"  inner {res.inner_volume:.4g} {unit}, undecided {res.undecided_volume:.4g} {unit} "
         f"({100 * res.undecided_volume / res.region_volume:.2f} % of the region), outer {res.outer_volume:.4g} {unit}"

@@ -263,3 +263,61 @@ def test_cli_budget_out_is_incomplete_not_an_error():
     assert p.returncode == 0
     d = json.loads(p.stdout)
     assert d["complete"] is False and d["evaluated"] <= 10
+
+
+@pytest.mark.slow
+def test_a_wide_orientation_box_is_cut_into_pieces():
+    robot = taut.example("planar-4cable")
+    res = certified(robot, "static", eps=0.02, orientation_box=[[-0.2, 0.2]])
+    assert res.inner_volume > 0
+
+    def spread(rng, k):
+        return rng.uniform(-0.2, 0.2, (k, 1))
+
+    assert contradictions(robot, res, "static", 20_000, orientations=spread) == 0
+    with pytest.raises(ArgumentError, match="more than 4096 pieces"):
+        certified(robot, "static", orientation_box=[[-3.0, 3.0]], orientation_step=1e-4)
+
+
+@pytest.mark.slow
+def test_spatial_total_orientation_workspace():
+    robot = taut.example("spatial-8cable")
+    box = [[-0.005, 0.005]] * 3
+    res = certified(robot, "wrench-feasible", [[0.2, 0.4], [0.1, 0.3], [0.0, 0.2]], eps=0.05, orientation_box=box)
+    assert res.inner_volume > 0
+
+    def spread(rng, k):
+        return rng.uniform(-0.005, 0.005, (k, 3))
+
+    assert contradictions(robot, res, "wrench-feasible", 5000, orientations=spread) == 0
+
+
+@pytest.mark.parametrize("name", ["planar-4cable", "spatial-8cable", "robocrane", "cogiro"])
+def test_derivative_enclosures_hold_the_finite_differences(name):
+    """The enclosures behind the mean-value form, against central differences of the
+    structure matrices of the kinematics (positions and angles)."""
+    from taut.kinematics import batch_structure_matrices
+    from taut.workspace._certified import _enclosures, _spec
+
+    robot = taut.example(name)
+    d = robot.dimension
+    k = 1 if d == 2 else 3
+    rng = np.random.default_rng(3)
+    pose = np.concatenate([rng.uniform(-0.1, 0.1, d), rng.uniform(-0.2, 0.2, k)])
+    if name == "robocrane":
+        pose[:d] += [0.0, 0.0, 2.0]
+        pose[d + 1] = 0.3  # away from the tilt-torsion angles' singularity
+    spec = _spec(robot, make_condition("static"), pose[d:], None, 0.05)
+    P = pose[None, :d]
+    angles = Interval(pose[None, d:] - 1e-7, pose[None, d:] + 1e-7)
+    W, G, _ = _enclosures(spec, P - 1e-7, P + 1e-7, angles, by_angles=True)
+    h = 1e-6
+    for q in range(d + k):
+        step = np.zeros(d + k)
+        step[q] = h
+        _, Wp, _ = batch_structure_matrices(robot, (pose + step)[None])
+        _, Wm, _ = batch_structure_matrices(robot, (pose - step)[None])
+        fd = (Wp - Wm)[0] / (2 * h)
+        assert np.all(G.lo[0, :, :, q] - 1e-5 <= fd) and np.all(fd <= G.hi[0, :, :, q] + 1e-5), q
+    _, W0, _ = batch_structure_matrices(robot, pose[None])
+    assert np.all(W.lo[0] - 1e-9 <= W0[0]) and np.all(W0[0] <= W.hi[0] + 1e-9)

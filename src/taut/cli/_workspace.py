@@ -55,6 +55,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="--certified: angle ranges 'a0:a1[;b0:b1;c0:c1]': inner boxes hold for every orientation in them",
     )
     parser.add_argument(
+        "--orientation-step",
+        type=A.real(above=0),
+        metavar="RAD",
+        help="--certified: widest piece the orientation box is cut into (default 0.05)",
+    )
+    parser.add_argument(
         "--max-boxes", type=A.count(1), metavar="N", help="--certified: budget of boxes (default 2000000)"
     )
     parser.add_argument("--out", metavar="FILE.npz", help="save poses and verdicts")
@@ -132,6 +138,7 @@ def _certified(ns: argparse.Namespace) -> int:
             executor=executor,
             progress=progress,
             **({} if ns.eps is None else {"eps": ns.eps}),
+            **({} if ns.orientation_step is None else {"orientation_step": ns.orientation_step}),
             **({} if ns.max_boxes is None else {"max_boxes": ns.max_boxes}),
             **options,
         )
@@ -178,8 +185,8 @@ def run(ns: argparse.Namespace) -> int:
 
     if ns.certified:
         return _certified(ns)
-    if ns.eps is not None or ns.region is not None or ns.orientation_box is not None or ns.max_boxes is not None:
-        raise TautError("--eps, --region, --orientation-box and --max-boxes go with --certified")
+    if any(x is not None for x in (ns.eps, ns.region, ns.orientation_box, ns.orientation_step, ns.max_boxes)):
+        raise TautError("--eps, --region, --orientation-box, --orientation-step and --max-boxes go with --certified")
     out = A.output_file(ns.out, "--out", {".npz"})
     plot = A.plot_file(ns.plot)
     robot = A.load(ns.robot, ns.cable_set)

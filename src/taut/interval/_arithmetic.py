@@ -291,6 +291,19 @@ class Interval:
         out_lo = np.where(many | odd, -1.0, out_lo)
         return Interval(out_lo, out_hi)
 
+    def sum_last(self) -> Interval:
+        """Sums along the last axis, one rounded addition at a time.
+
+        Examples
+        --------
+        >>> Interval([[0.0, 1.0], [2.0, 3.0]], [[0.5, 1.5], [2.5, 3.5]]).sum_last()
+        Interval(lo=array([1., 5.]), hi=array([2., 6.]))
+        """
+        acc = self[..., 0]
+        for j in range(1, self.shape[-1]):
+            acc = acc + self[..., j]
+        return acc
+
     def sum(self) -> Interval:
         """Sum of all elements, one rounded addition at a time."""
         acc = Interval(0.0)

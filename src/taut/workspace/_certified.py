@@ -68,6 +68,10 @@ DEFAULT_EPS = 0.01
 #: Default budget of boxes evaluated; beyond it the boxes left are reported undecided and the
 #: result is marked incomplete.
 MAX_BOXES = 2_000_000
+#: Default widest piece of an orientation box [rad].
+ORIENTATION_STEP = 0.05
+#: Most pieces of an orientation box.
+MAX_PIECES = 4096
 #: Boxes per task handed to the executor.
 CHUNK_BOXES = 4096
 
@@ -194,6 +198,7 @@ class _Spec:
     convention: str
     orientation: np.ndarray  # fixed orientation (centre of the box)
     orientation_box: np.ndarray | None
+    orientation_step: float
     tension_bounds: tuple[np.ndarray, np.ndarray]
     closure: bool
     around_external: bool
@@ -205,38 +210,70 @@ class _Spec:
     vertices: np.ndarray | None
 
 
-def _rotations(spec: _Spec, angles: Interval) -> Interval:
-    """Enclosures of the rotation matrices ``(B, d, d)`` of boxes of angles ``(B, k)``."""
+def _rotations(spec: _Spec, angles: Interval) -> tuple[Interval, list[Interval]]:
+    """Enclosures of the rotation matrices ``(B, d, d)`` of boxes of angles ``(B, k)``, and of
+    their derivatives in each angle (the product rule over the elementary factors)."""
     B = angles.shape[0]
     if spec.exits.shape[1] == 2:
         c, s = angles[:, 0].cos(), angles[:, 0].sin()
-        lo = np.stack([np.stack([c.lo, -s.hi], -1), np.stack([s.lo, c.lo], -1)], -2)
-        hi = np.stack([np.stack([c.hi, -s.lo], -1), np.stack([s.hi, c.hi], -1)], -2)
-        return Interval(lo, hi)
+        R = Interval(
+            np.stack([np.stack([c.lo, -s.hi], -1), np.stack([s.lo, c.lo], -1)], -2),
+            np.stack([np.stack([c.hi, -s.lo], -1), np.stack([s.hi, c.hi], -1)], -2),
+        )
+        dR = Interval(
+            np.stack([np.stack([-s.hi, -c.hi], -1), np.stack([c.lo, -s.hi], -1)], -2),
+            np.stack([np.stack([-s.lo, -c.lo], -1), np.stack([c.hi, -s.lo], -1)], -2),
+        )
+        return R, [dR]
 
-    def axis(k: int, t: Interval) -> Interval:
-        # R_x = [[1, 0, 0], [0, c, −s], [0, s, c]] and its cyclic shifts R_y, R_z
+    def axis(k: int, t: Interval, derivative: bool) -> Interval:
+        # R_x = [[1, 0, 0], [0, c, −s], [0, s, c]] and its cyclic shifts R_y, R_z;
+        # dR_x/dt = [[0, 0, 0], [0, −s, −c], [0, c, −s]]
         c, s = t.cos(), t.sin()
         lo, hi = np.zeros((B, 3, 3)), np.zeros((B, 3, 3))
         i, j = (k + 1) % 3, (k + 2) % 3
-        lo[:, k, k] = hi[:, k, k] = 1.0
-        lo[:, i, i], hi[:, i, i] = c.lo, c.hi
-        lo[:, j, j], hi[:, j, j] = c.lo, c.hi
-        lo[:, i, j], hi[:, i, j] = -s.hi, -s.lo
-        lo[:, j, i], hi[:, j, i] = s.lo, s.hi
+        if derivative:
+            lo[:, i, i], hi[:, i, i] = -s.hi, -s.lo
+            lo[:, j, j], hi[:, j, j] = -s.hi, -s.lo
+            lo[:, i, j], hi[:, i, j] = -c.hi, -c.lo
+            lo[:, j, i], hi[:, j, i] = c.lo, c.hi
+        else:
+            lo[:, k, k] = hi[:, k, k] = 1.0
+            lo[:, i, i], hi[:, i, i] = c.lo, c.hi
+            lo[:, j, j], hi[:, j, j] = c.lo, c.hi
+            lo[:, i, j], hi[:, i, j] = -s.hi, -s.lo
+            lo[:, j, i], hi[:, j, i] = s.lo, s.hi
         return Interval(lo, hi)
 
     a, b, c = angles[:, 0], angles[:, 1], angles[:, 2]
+    # each factor: its axis, its angle and that angle's coefficients on (a, b, c)
     if spec.convention == "xyz-fixed":
-        factors = [axis(2, c), axis(1, b), axis(0, a)]
+        plan = [(2, c, (0, 0, 1)), (1, b, (0, 1, 0)), (0, a, (1, 0, 0))]
     elif spec.convention == "xyz-moving":
-        factors = [axis(0, a), axis(1, b), axis(2, c)]
+        plan = [(0, a, (1, 0, 0)), (1, b, (0, 1, 0)), (2, c, (0, 0, 1))]
     else:  # tilt-torsion
-        factors = [axis(2, a), axis(1, b), axis(2, c - a)]
-    R = factors[0]
-    for F in factors[1:]:
-        R = _matmul(R, F)
-    return R
+        plan = [(2, a, (1, 0, 0)), (1, b, (0, 1, 0)), (2, c - a, (-1, 0, 1))]
+    factors = [axis(k, t, False) for k, t, _ in plan]
+    slopes = [axis(k, t, True) for k, t, _ in plan]
+
+    def product(parts: list[Interval]) -> Interval:
+        out = parts[0]
+        for F in parts[1:]:
+            out = _matmul(out, F)
+        return out
+
+    def derivative(var: int) -> Interval:
+        terms = [
+            product([slopes[g] if g == f else factors[g] for g in range(3)]) * float(coef[var])
+            for f, (_, _, coef) in enumerate(plan)
+            if coef[var] != 0
+        ]
+        total = terms[0]
+        for term in terms[1:]:
+            total = total + term
+        return total
+
+    return product(factors), [derivative(var) for var in range(3)]
 
 
 def _matmul(A: Interval, Bm: Interval) -> Interval:
@@ -279,18 +316,24 @@ def _cross(a: Interval, b: Interval) -> Interval:
     )
 
 
-def _enclosures(spec: _Spec, lo: np.ndarray, hi: np.ndarray, angles: Interval) -> tuple[Interval, Interval, Interval]:
-    """The structure matrices ``(B, m, n)``, their derivatives in the position ``(B, m, n, d)``
-    and the external wrenches ``(B, m)`` over boxes of positions ``[lo, hi]`` ``(B, d)`` at the
-    orientations ``angles`` ``(B, k)``: ``∂u/∂p = −(I − u uᵀ)/L`` and ``∂(R b × u)/∂p =
-    R b × ∂u/∂p``, since ``v = a − R b − p``."""
+def _enclosures(
+    spec: _Spec, lo: np.ndarray, hi: np.ndarray, angles: Interval, *, by_angles: bool = False
+) -> tuple[Interval, Interval, Interval]:
+    """The structure matrices ``(B, m, n)``, their derivatives ``(B, m, n, q)`` and the
+    external wrenches ``(B, m)`` over boxes of positions ``[lo, hi]`` ``(B, d)`` at the
+    orientations ``angles`` ``(B, k)``.  The derivatives are in the position (``q = d``), and
+    with ``by_angles`` in the angles too (``q = d + k``): since ``v = a − R b − p``,
+    ``∂u/∂p = −(I − u uᵀ)/L``, ``∂u/∂θ = (∂u/∂p)(∂R/∂θ) b`` and the moments' derivatives
+    ``∂(R b × u) = ∂(R b) × u + R b × ∂u``."""
     B, d = lo.shape
     p = Interval(lo, hi)[:, None, :]
     if spec.point_mass:
         rb = Interval(np.zeros((B, 1, d)))
+        drb: list[Interval] = []
     else:
-        R = _rotations(spec, angles)
+        R, dR = _rotations(spec, angles)
         rb = _rotate(R, spec.anchors)
+        drb = [_rotate(D, spec.anchors) for D in dR] if by_angles else []
     v = Interval(spec.exits[None]) - rb - p  # (B, n, d)
     length = v[..., 0].sqr()
     for k in range(1, d):
@@ -300,47 +343,71 @@ def _enclosures(spec: _Spec, lo: np.ndarray, hi: np.ndarray, angles: Interval) -
     eye = np.eye(d)
     # du[..., k, l] = ∂u_k/∂p_l = (u_k u_l − δ_kl) / L
     du = (u[..., :, None] * u[..., None, :] - eye) / L[..., None, None]  # (B, n, d, d)
+    du_angles = [(du * g[..., None, :]).sum_last() for g in drb]  # each (B, n, d)
+    slopes_u = [du[..., :, l] for l in range(d)] + du_angles
     force = Interval(np.broadcast_to(spec.force, (B, d)))
     if spec.point_mass:
-        W, G, wrench = u, du, force
+        columns, slopes, wrench = u, slopes_u, force
     else:
-        mom = _cross(rb, u)
-        dmom = [_cross(rb, du[..., :, l]) for l in range(d)]  # each (B, n, 3 or 1)
-        G_mom = Interval(np.stack([g.lo for g in dmom], -1), np.stack([g.hi for g in dmom], -1))
-        W = Interval(np.concatenate([u.lo, mom.lo], -1), np.concatenate([u.hi, mom.hi], -1))
-        G = Interval(np.concatenate([du.lo, G_mom.lo], -2), np.concatenate([du.hi, G_mom.hi], -2))
+        columns = _join(u, _cross(rb, u))
+        slopes = [_join(g, _cross(rb, g)) for g in slopes_u[:d]]
+        slopes += [_join(g, _cross(rb, g) + _cross(dr, u)) for g, dr in zip(du_angles, drb)]
         arm = _rotate(R, spec.wrench_point[None])[:, 0, :]
         moment = _cross(arm, force) + spec.moment
-        wrench = Interval(np.concatenate([force.lo, moment.lo], -1), np.concatenate([force.hi, moment.hi], -1))
+        wrench = _join(force, moment)
+    G = Interval(np.stack([g.lo for g in slopes], -1), np.stack([g.hi for g in slopes], -1))
     return (
-        Interval(np.swapaxes(W.lo, 1, 2), np.swapaxes(W.hi, 1, 2)),
+        Interval(np.swapaxes(columns.lo, 1, 2), np.swapaxes(columns.hi, 1, 2)),
         Interval(np.swapaxes(G.lo, 1, 2), np.swapaxes(G.hi, 1, 2)),
         wrench,
     )
+
+
+def _join(a: Interval, b: Interval) -> Interval:
+    """``[a, b]`` along the last axis."""
+    return Interval(np.concatenate([a.lo, b.lo], -1), np.concatenate([a.hi, b.hi], -1))
+
+
+def _pieces(box: np.ndarray, step: float) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The orientation box cut evenly into pieces no wider than ``step`` along each angle."""
+    counts = np.maximum(1, np.ceil((box[:, 1] - box[:, 0]) / step).astype(int))
+    edges = [np.linspace(lo, hi, k + 1) for (lo, hi), k in zip(box, counts)]
+    out = []
+    for index in np.ndindex(*counts):
+        out.append((np.array([e[i] for e, i in zip(edges, index)]), np.array([e[i + 1] for e, i in zip(edges, index)])))
+    return out
 
 
 def _decide(task: tuple[_Spec, np.ndarray, np.ndarray]) -> np.ndarray:
     """Verdicts (1 inside, −1 outside, 0 undecided) of boxes of positions ``(B, d)``."""
     spec, lo, hi = task
     B = len(lo)
-    centre = np.broadcast_to(spec.orientation, (B, spec.orientation.size))
-    fixed = Interval(centre)
+    centre = np.ascontiguousarray(np.broadcast_to(spec.orientation, (B, spec.orientation.size)))
     if spec.orientation_box is None:
-        return _verdicts(spec, lo, hi, fixed)
-    box = Interval(
-        np.broadcast_to(spec.orientation_box[:, 0], centre.shape),
-        np.broadcast_to(spec.orientation_box[:, 1], centre.shape),
-    )
-    whole = _verdicts(spec, lo, hi, box)
+        return _verdicts(spec, lo, hi, centre, centre)
+    # inner for every piece of the orientation box: the enclosures widen with the angles'
+    # range, so the box is cut into pieces no wider than ``orientation_step``
+    whole = np.ones(B, dtype=bool)
+    for a_lo, a_hi in _pieces(spec.orientation_box, spec.orientation_step):
+        verdict = _verdicts(spec, lo, hi, np.tile(a_lo, (B, 1)), np.tile(a_hi, (B, 1)))
+        whole &= verdict == 1
+        if not whole.any():
+            break
     # outside at the centre orientation is outside the total orientation workspace
-    at_centre = _verdicts(spec, lo, hi, fixed)
-    return np.where(at_centre == -1, np.int8(-1), np.where(whole == 1, np.int8(1), np.int8(0)))
+    at_centre = _verdicts(spec, lo, hi, centre, centre)
+    return np.where(at_centre == -1, np.int8(-1), np.where(whole, np.int8(1), np.int8(0)))
 
 
-def _verdicts(spec: _Spec, lo: np.ndarray, hi: np.ndarray, angles: Interval) -> np.ndarray:
-    W, G, wrench = _enclosures(spec, lo, hi, angles)
+def _verdicts(spec: _Spec, lo: np.ndarray, hi: np.ndarray, a_lo: np.ndarray, a_hi: np.ndarray) -> np.ndarray:
+    """Verdicts of boxes of positions ``[lo, hi]`` for every orientation of ``[a_lo, a_hi]``;
+    the mean-value form runs over the positions, and over the angles when they span a box."""
+    by_angles = bool(np.any(a_hi > a_lo))
+    W, G, wrench = _enclosures(spec, lo, hi, Interval(a_lo, a_hi), by_angles=by_angles)
     mid = 0.5 * (lo + hi)
-    Wc, _, _ = _enclosures(spec, mid, mid, angles)
+    a_mid = 0.5 * (a_lo + a_hi)
+    Wc, _, _ = _enclosures(spec, mid, mid, Interval(a_mid))
+    if by_angles:
+        lo, hi, mid = np.hstack([lo, a_lo]), np.hstack([hi, a_hi]), np.hstack([mid, a_mid])
     bad = ~(np.isfinite(W.lo) & np.isfinite(W.hi)).all(axis=(1, 2)) | ~(np.isfinite(G.lo) & np.isfinite(G.hi)).all(
         axis=(1, 2, 3)
     )
@@ -354,28 +421,120 @@ def _verdicts(spec: _Spec, lo: np.ndarray, hi: np.ndarray, angles: Interval) -> 
         np.where(bad[:, None, None, None], 0.0, G.hi),
         half,
     )
-    if spec.closure:
-        out = zonotope_verdicts(Wlo, Whi, tension_bounds=spec.tension_bounds, closure=True, mean_value=mean_value)
-    else:
-        o_lo = wrench.lo if spec.around_external else np.zeros_like(wrench.lo)
-        o_hi = wrench.hi if spec.around_external else np.zeros_like(wrench.hi)
-        out = zonotope_verdicts(
-            Wlo,
-            Whi,
-            tension_bounds=spec.tension_bounds,
-            wrench_lo=o_lo,
-            wrench_hi=o_hi,
-            centre=spec.centre,
-            radius=spec.radius,
-            vertices=spec.vertices,
-            mean_value=mean_value,
-        )
+    out = np.zeros(len(lo), dtype=np.int8)
+    todo = ~bad
+    if not spec.closure and todo.any():
+        # tensions proven first: cheap, and sharp where the facets of nearly dependent cables
+        # blur the facet test (spatial robots with symmetric cable pairs); the entries'
+        # centred form is met with their natural enclosure
+        spread = Interval(-half, half)[:, None, None, :]
+        centred = Wc + (G * spread).sum_last()
+        tight = Interval(np.maximum(W.lo, centred.lo), np.minimum(W.hi, centred.hi))
+        proven = _tensions_proven(spec, tight[todo], Wc.mid[todo], wrench[todo])
+        out[np.flatnonzero(todo)[proven]] = 1
+        todo &= out == 0
+    if todo.any():
+        mean_value = tuple(a[todo] for a in mean_value)
+        if spec.closure:
+            out[todo] = zonotope_verdicts(
+                Wlo[todo], Whi[todo], tension_bounds=spec.tension_bounds, closure=True, mean_value=mean_value
+            )
+        else:
+            o_lo = wrench.lo if spec.around_external else np.zeros_like(wrench.lo)
+            o_hi = wrench.hi if spec.around_external else np.zeros_like(wrench.hi)
+            out[todo] = zonotope_verdicts(
+                Wlo[todo],
+                Whi[todo],
+                tension_bounds=spec.tension_bounds,
+                wrench_lo=o_lo[todo],
+                wrench_hi=o_hi[todo],
+                centre=spec.centre,
+                radius=spec.radius,
+                vertices=spec.vertices,
+                mean_value=mean_value,
+            )
     # a box where a cable may have no direction (an exit point in it) decides nothing
     out[bad] = 0
     return out
 
 
-def _spec(robot: Robot, condition: WorkspaceCondition, orientation: np.ndarray, box: np.ndarray | None) -> _Spec:
+def _tensions_proven(spec: _Spec, W: Interval, W_centre: np.ndarray, wrench: Interval) -> np.ndarray:
+    """Boxes ``(B,)`` where tensions within the bounds are proven for every matrix of ``W`` and
+    every required wrench: the interval system of ``m`` basis cables, the others held at the
+    tensions of the box's centre (Gouttefarde, Daney & Merlet 2011, §IV: a square interval
+    system whose solution set lies within the bounds).
+
+    At the centre the tensions ``τ_c`` come from the closed-form method (near the middle of
+    their ranges); the ``m`` cables of largest margin are the basis ``d``, the others keep
+    ``τ_c``.  With ``C ≈ W_d(c)⁻¹`` and ``E = I − C [W_d]``, ``ρ = ‖E‖_∞ < 1`` proves every
+    ``W_d`` invertible, and the solution ``τ_d = C r + E τ_d`` of
+    ``W_d τ_d = r = −(W_f τ_f + o + x)`` has ``‖τ_d‖ ≤ ‖C [r]‖ / (1 − ρ)`` = X, so
+    ``τ_d ∈ C [r] + [E]·[−X, X]`` (refined once by the same equation)."""
+    from taut.statics import solve_tensions
+
+    B, m, n = W.shape
+    tmin, tmax = spec.tension_bounds
+    if spec.vertices is not None:
+        x = Interval(spec.vertices.min(axis=0), spec.vertices.max(axis=0))
+    else:
+        x = Interval(spec.centre - spec.radius, spec.centre + spec.radius)
+    o = wrench if spec.around_external else Interval(np.zeros((B, m)))
+    required = o + x  # the cables give −required
+    res = solve_tensions(W_centre, required.mid, tension_bounds=(tmin, tmax), method="closed-form")
+    tc = np.asarray(res.tensions, float)
+    margin = np.minimum(tc - tmin, tmax - tc)
+    order = np.argsort(-margin, axis=1, kind="stable")
+    basis, free = np.sort(order[:, :m], axis=1), order[:, m:]
+    rows = np.arange(B)[:, None, None]
+    every = np.arange(m)[None, :, None]
+    Wd = W[rows, every, basis[:, None, :]]
+    Wf = W[rows, every, free[:, None, :]]
+    Wd_c = W_centre[rows, every, basis[:, None, :]]
+    ok = np.asarray(res.feasible, bool) & (np.linalg.cond(Wd_c) < 1e8)
+    C = np.linalg.inv(np.where(ok[:, None, None], Wd_c, np.eye(m)))
+    tf = np.take_along_axis(tc, free, axis=1)
+    r = -required
+    for j in range(n - m):
+        r = r - Wf[:, :, j] * tf[:, j : j + 1]
+    Cr = _apply(C, r)
+    E = Interval(np.eye(m)) - _matmul(Interval(C), Wd)
+    mag = np.maximum(np.abs(E.lo), np.abs(E.hi))
+    rho = _row_sums_up(mag)
+    cr_mag = np.maximum(np.abs(Cr.lo), np.abs(Cr.hi)).max(axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        X = (Interval(cr_mag) / (Interval(1.0) - Interval(rho))).hi
+    ok &= rho < 1.0
+    X = np.where(ok, X, 0.0)
+    td = Cr + _apply_interval(E, Interval(-X[:, None] * np.ones(m), X[:, None] * np.ones(m)))
+    td2 = Cr + _apply_interval(E, td)
+    lo, hi = np.maximum(td.lo, td2.lo), np.minimum(td.hi, td2.hi)
+    return ok & np.all(lo >= tmin[basis], axis=1) & np.all(hi <= tmax[basis], axis=1)
+
+
+def _row_sums_up(mag: np.ndarray) -> np.ndarray:
+    """Upper bounds of the row sums of a non-negative ``(B, m, m)`` array (outward rounded)."""
+    acc = Interval(mag[:, :, 0])
+    for j in range(1, mag.shape[2]):
+        acc = acc + Interval(mag[:, :, j])
+    return acc.hi.max(axis=1)
+
+
+def _apply(C: np.ndarray, r: Interval) -> Interval:
+    """``C [r]`` for float matrices ``(B, m, m)`` and interval vectors ``(B, m)``."""
+    return _apply_interval(Interval(C), r)
+
+
+def _apply_interval(A: Interval, r: Interval) -> Interval:
+    """``[A] [r]`` for interval matrices ``(B, p, q)`` and interval vectors ``(B, q)``."""
+    out = A[:, :, 0] * r[:, 0:1]
+    for j in range(1, A.shape[2]):
+        out = out + A[:, :, j] * r[:, j : j + 1]
+    return out
+
+
+def _spec(
+    robot: Robot, condition: WorkspaceCondition, orientation: np.ndarray, box: np.ndarray | None, step: float
+) -> _Spec:
     d, m = robot.dimension, robot.wrench_dim
     why = None
     if robot.n_joints:
@@ -423,6 +582,7 @@ def _spec(robot: Robot, condition: WorkspaceCondition, orientation: np.ndarray, 
         convention=robot.orientation,
         orientation=orientation,
         orientation_box=box,
+        orientation_step=step,
         tension_bounds=(np.asarray(tmin, float), np.asarray(tmax, float)),
         closure=closure,
         around_external=around,
@@ -468,6 +628,7 @@ def certified(
     *,
     orientation: npt.ArrayLike | None = None,
     orientation_box: npt.ArrayLike | None = None,
+    orientation_step: float = ORIENTATION_STEP,
     eps: float = DEFAULT_EPS,
     max_boxes: int = MAX_BOXES,
     executor: Executor | str | None = None,
@@ -494,6 +655,10 @@ def certified(
     orientation_box : array_like, shape (k, 2), optional
         Instead: ``[lo, hi]`` of each angle; inner boxes then hold for every orientation of it
         (the total orientation workspace), outer boxes fail at its centre.
+    orientation_step : float, default 0.05
+        The orientation box is cut into pieces no wider than this [rad]; a box of positions
+        is inner when it is inner for every piece (the enclosures widen with the angles'
+        range: spatial platforms may need 0.005).
     eps : float, default 0.01
         Boxes no wider than this [m] are not bisected further.
     max_boxes : int, default 2000000
@@ -545,6 +710,13 @@ def certified(
         or eps <= 0
     ):
         raise ArgumentError(f"eps must be a positive number of metres, got {eps!r}")
+    if (
+        isinstance(orientation_step, bool)
+        or not isinstance(orientation_step, (int, float, np.floating, np.integer))
+        or not np.isfinite(orientation_step)
+        or orientation_step <= 0
+    ):
+        raise ArgumentError(f"orientation_step must be a positive number of radians, got {orientation_step!r}")
     if isinstance(max_boxes, bool) or not isinstance(max_boxes, (int, np.integer)) or max_boxes < 1:
         raise ArgumentError(f"max_boxes must be a positive integer, got {max_boxes!r}")
     if progress is not None and not callable(progress):
@@ -572,7 +744,12 @@ def certified(
         raise GridSizeError(
             f"eps = {eps:g} m cuts the region {reg.tolist()} into more than 1e12 boxes; raise eps or shrink the region"
         )
-    spec = _spec(robot, cond, fixed, box)
+    if box is not None and float(np.prod(np.ceil((box[:, 1] - box[:, 0]) / orientation_step))) > MAX_PIECES:
+        raise ArgumentError(
+            f"the orientation box {box.tolist()} cut into pieces of {orientation_step:g} rad makes more than "
+            f"{MAX_PIECES} pieces; raise orientation_step or shrink the box"
+        )
+    spec = _spec(robot, cond, fixed, box, float(orientation_step))
     ex = as_executor(executor)
     total = float(np.prod(widths))
     inner: list[np.ndarray] = []
