@@ -111,6 +111,7 @@ PARTIAL = {
     "dynamics.ForwardDynamicsResult",
     "interval.BranchAndPruneResult",
     "planning.PathResult",
+    "workspace.CertifiedWorkspace",
     "workspace.WorkspaceResult",
 }
 
@@ -289,6 +290,7 @@ def _result(key, tmp_path):
         "statics.TensionResult": lambda: statics.distribute_tensions(planar, [[0.0, 0.0, 0.0], [0.99, 0.99, 0.0]]),
         "workspace.PoseGrid": lambda: workspace.position_grid(planar, resolution=5),
         "workspace.WorkspaceResult": lambda: workspace.evaluate_workspace(planar, "static", resolution=5),
+        "workspace.CertifiedWorkspace": lambda: workspace.certified(planar, "static", eps=0.2),
         "wrapping.CablePath": lambda: wrapping.rebuild_path(
             [[0.0, 1.0, 0.2], [0.0, 0.0, 0.0]], 1, wrapping.CableState(((0, 1),)), [0.0, 2.0]
         ),

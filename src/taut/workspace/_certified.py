@@ -48,7 +48,7 @@ import numpy.typing as npt
 
 from taut._results import Result, jsonable
 from taut.errors import ArgumentError, GridSizeError, UnsupportedRobotError
-from taut.interval import Interval, zonotope_verdicts
+from taut.interval import MAX_BOXES, Interval, zonotope_verdicts
 from taut.model import Robot
 from taut.parallel import Executor, as_executor
 from taut.statics import BoxWrenchSet, PolytopeWrenchSet, SingleWrench
@@ -61,13 +61,10 @@ from taut.workspace._conditions import (
 )
 from taut.workspace._grid import default_bounds
 
-__all__ = ["CHUNK_BOXES", "DEFAULT_EPS", "MAX_BOXES", "CertifiedWorkspace", "certified"]
+__all__ = ["CHUNK_BOXES", "DEFAULT_EPS", "CertifiedWorkspace", "certified"]
 
 #: Default smallest box width [m] (1 cm).
 DEFAULT_EPS = 0.01
-#: Default budget of boxes evaluated; beyond it the boxes left are reported undecided and the
-#: result is marked incomplete.
-MAX_BOXES = 2_000_000
 #: Default widest piece of an orientation box [rad].
 ORIENTATION_STEP = 0.05
 #: Most pieces of an orientation box.
@@ -662,7 +659,8 @@ def certified(
     eps : float, default 0.01
         Boxes no wider than this [m] are not bisected further.
     max_boxes : int, default 2000000
-        Budget of boxes evaluated; beyond it the result is incomplete.
+        Budget of boxes evaluated (:data:`taut.interval.MAX_BOXES`, as the interval solvers');
+        beyond it the boxes left are reported undecided and the result is incomplete.
     executor : Executor or str, optional
         Where the chunks of boxes are decided (:func:`taut.parallel.as_executor`).
     progress : callable, optional
