@@ -112,6 +112,8 @@ TENSION_MARGIN = 20
 COARSE = 16
 #: Most poses checked in one batch while a tree is connected greedily.
 CONNECT_BATCH = 64
+#: Most floats held at once by the differences between samples and a tree's nodes.
+NEAREST_FLOATS = 1 << 20
 #: Random samples whose extensions' ends are checked in one batch.
 SAMPLE_BATCH = 64
 #: A found path is checked again every ``resolution / FINE``: a segment that crosses a thin
@@ -280,22 +282,18 @@ class _Tree:
         return out
 
 
-def _step_end(space: PoseSpace, tree: _Tree, target: np.ndarray, step: float) -> tuple[int, np.ndarray]:
-    """The node of ``tree`` nearest ``target`` and the pose one ``step`` from it toward
-    ``target`` (``target`` itself when nearer)."""
-    i = tree.nearest(space, target)
-    d = space.diff(tree.nodes[i], target)
-    L = float(np.linalg.norm(d))
-    return i, tree.nodes[i] + (d if L <= step else (step / L) * d)
-
-
-def _extend(space: PoseSpace, tree: _Tree, i: int, end: np.ndarray, resolution: float) -> int:
-    """Add ``end`` (a valid pose) to ``tree`` as a child of node ``i`` if the segment between
-    them is valid; the new node, or −1."""
-    a = tree.nodes[i]
-    if not space.segment_ok(a, end - a, resolution):
-        return -1
-    return tree.add(end, i)
+def _step_ends(space: PoseSpace, tree: _Tree, targets: np.ndarray, step: float) -> tuple[np.ndarray, np.ndarray]:
+    """The nodes of ``tree`` nearest ``targets`` ``(m, k)`` and the poses one ``step`` from
+    them toward the targets (a target itself when nearer), a few targets at a time so that
+    their differences to every node take at most :data:`NEAREST_FLOATS` floats."""
+    nodes = tree.nodes[: len(tree)]
+    idx = np.empty(len(targets), int)
+    for lo in range(0, len(targets), max(1, NEAREST_FLOATS // nodes.size)):
+        d = space.diff(nodes[None], targets[lo : lo + max(1, NEAREST_FLOATS // nodes.size), None])
+        idx[lo : lo + len(d)] = np.einsum("mij,mij->mi", d, d).argmin(axis=1)
+    d = space.diff(nodes[idx], targets)
+    L = np.linalg.norm(d, axis=1)
+    return idx, nodes[idx] + np.where(L <= step, 1.0, step / np.maximum(L, step))[:, None] * d
 
 
 def _connect(
@@ -632,31 +630,7 @@ def _rrt(
     diag = float(np.linalg.norm(space.upper - space.lower))
     step = diag / STEPS_PER_DIAGONAL if step is None else step
     resolution = min(step / CHECKS_PER_STEP, RESOLUTION) if resolution is None else resolution
-    trees = (_Tree(start, max_nodes), _Tree(goal, max_nodes))
-    found = None
-    span = space.upper - space.lower
-    a, b = 0, 1
-    pending: list[tuple[np.ndarray, int, np.ndarray, bool]] = []
-    while found is None and len(trees[0]) + len(trees[1]) < max_nodes and time.perf_counter() < deadline:
-        if not pending:
-            # The ends of the next SAMPLE_BATCH extensions (alternately of the two trees, from
-            # their nearest nodes now) are checked in one batch: most fall outside the valid set.
-            samples = space.lower + span * rng.random((SAMPLE_BATCH, span.size))
-            steps = [_step_end(space, trees[(a + j) % 2], q, step) for j, q in enumerate(samples)]
-            ok = space.valid(np.array([e for _, e in steps]))
-            pending = [(q, i, e, bool(v)) for q, (i, e), v in zip(samples, steps, ok)][::-1]
-        _, i, end, end_ok = pending.pop()
-        new = _extend(space, trees[a], i, end, resolution) if end_ok else -1
-        if new >= 0:
-            room = max_nodes - len(trees[0]) - len(trees[1])
-            last, reached = _connect(space, trees[b], trees[a].nodes[new], step, resolution, room)
-            if reached:
-                ends = {a: new, b: last}
-                found = trees[0].branch(ends[0])[::-1] + trees[1].branch(ends[1])[1:]
-        if progress is not None:
-            progress(len(trees[0]) + len(trees[1]), None)
-        a, b = b, a
-    nodes = len(trees[0]) + len(trees[1])
+    found, nodes = _connect_trees(space, start, goal, step, resolution, rng, max_nodes, deadline, progress, 0)
     path = np.zeros((0, start.size))
     if found is not None:
         raw = path = space.unwrap(np.array(found))
@@ -667,13 +641,59 @@ def _rrt(
             checked = _finish(space, path, goal, resolution, rng, budget, deadline)
             if checked is None and shorten:  # the tree's own path, farther from the boundary
                 checked = _finish(space, raw, goal, resolution, rng, budget, deadline)
-            found = None if checked is None else found
             path = np.zeros((0, start.size)) if checked is None else checked
         else:
             path[-1] = goal
     if progress is not None:
         progress(nodes, nodes)
-    return _result(space, found is not None, path, "rrtconnect", nodes=nodes, t0=t0)
+    return _result(space, len(path) > 0, path, "rrtconnect", nodes=nodes, t0=t0)
+
+
+def _connect_trees(
+    space: PoseSpace,
+    start: np.ndarray,
+    goal: np.ndarray,
+    step: float,
+    resolution: float,
+    rng: np.random.Generator,
+    max_nodes: int,
+    deadline: float,
+    progress: Callable[[int, int | None], None] | None,
+    done: int,
+) -> tuple[list[np.ndarray] | None, int]:
+    """RRT-Connect's two trees grown from ``start`` and ``goal`` until they meet, within
+    ``max_nodes`` and the ``deadline``: the poses of the path through them (``None`` when
+    they do not meet) and the nodes grown; ``progress`` is told ``done`` more."""
+    trees = (_Tree(start, max_nodes), _Tree(goal, max_nodes))
+    span = space.upper - space.lower
+    a, b = 0, 1
+    pending: list[tuple[int, np.ndarray, bool]] = []
+    while len(trees[0]) + len(trees[1]) < max_nodes and time.perf_counter() < deadline:
+        if not pending:
+            # The ends of the next SAMPLE_BATCH extensions (alternately of the two trees, from
+            # their nearest nodes now) are checked in one batch, most fall outside the valid set;
+            # then the segments to the valid ones, in another: they do not change as the trees grow.
+            samples = space.lower + span * rng.random((SAMPLE_BATCH, span.size))
+            idx, ends, froms = np.empty(SAMPLE_BATCH, int), np.empty_like(samples), np.empty_like(samples)
+            for j in (0, 1):
+                idx[j::2], ends[j::2] = _step_ends(space, trees[(a + j) % 2], samples[j::2], step)
+                froms[j::2] = trees[(a + j) % 2].nodes[idx[j::2]]
+            ok = space.valid(ends)
+            ok[ok] = space.segments_ok(froms[ok], ends[ok], resolution)
+            pending = [(int(i), e, bool(v)) for i, e, v in zip(idx, ends, ok)][::-1]
+        i, end, extends = pending.pop()
+        new = trees[a].add(end, i) if extends else -1
+        if new >= 0:
+            room = max_nodes - len(trees[0]) - len(trees[1])
+            last, reached = _connect(space, trees[b], trees[a].nodes[new], step, resolution, room)
+            if reached:
+                tips = {a: new, b: last}
+                found = trees[0].branch(tips[0])[::-1] + trees[1].branch(tips[1])[1:]
+                return found, len(trees[0]) + len(trees[1])
+        if progress is not None:
+            progress(done + len(trees[0]) + len(trees[1]), None)
+        a, b = b, a
+    return None, len(trees[0]) + len(trees[1])
 
 
 def _result(
