@@ -30,8 +30,9 @@ returned path is valid at every checked pose, not certified between them.
   the goal, each extended one ``step`` toward a random pose of the box and the other then
   connected greedily toward the new node; then the path shortened as OMPL's
   ``PathSimplifier::simplify`` does (:func:`simplify`: vertices dropped, random shortcuts
-  between points of the path (Geraerts & Overmars 2007), corner cutting, repeated while it
-  gains).  Randomised, deterministic for a ``seed`` (unless
+  between points of the path, partial shortcuts that straighten one coordinate along a
+  stretch of it (Geraerts & Overmars 2007), corner cutting, repeated while it gains).
+  Randomised, deterministic for a ``seed`` (unless
   ``time_limit`` stops it); a search that runs out of ``max_nodes`` or time proves nothing.
 * ``grid`` — A* over a lattice of the pose box (positions at ``spacing``; each angle at the
   step nearest ``spacing`` that divides 2π, periodic), two lattice points joined when they are
@@ -49,7 +50,7 @@ References
    planning", IEEE International Conference on Robotics and Automation, 2000.
    (docs/references.bib: kuffner2000)
 .. [2] R. Geraerts, M. H. Overmars, "Creating high-quality paths for motion planning",
-   International Journal of Robotics Research 26(8), 2007, §3 (random shortcuts).
+   International Journal of Robotics Research 26(8), 2007, §3 (random and partial shortcuts).
    (docs/references.bib: geraerts2007)
 .. [3] I. A. Şucan, M. Moll, L. E. Kavraki, "The Open Motion Planning Library", IEEE Robotics &
    Automation Magazine 19(4), 2012 (``PathSimplifier``). (docs/references.bib: sucan2012)
@@ -93,6 +94,8 @@ POSE_METHODS = ("rrtconnect", "grid")
 SHORTCUTS = 2000
 #: Shortcuts tried in a row without a shorter path that end a round of them.
 PATIENCE = 100
+#: A shortcut that would shorten the path by less than this fraction of its length is not tried.
+MIN_GAIN = 1e-4
 #: Shortcuts drawn and checked in one batch.
 SHORTCUT_BATCH = 16
 #: A shortcut joins a point of the path to another at most ``RANGE`` of its length away along it.
@@ -175,23 +178,37 @@ class PoseSpace:
             t = t[~coarse]
         return bool(self.valid(a + t[:, None] * d).all())
 
-    def segments_ok(self, a: np.ndarray, b: np.ndarray, resolution: float, *, closed: bool = False) -> np.ndarray:
+    def segments_ok(
+        self,
+        a: np.ndarray,
+        b: np.ndarray,
+        resolution: float,
+        *,
+        closed: bool = False,
+        groups: np.ndarray | None = None,
+    ) -> np.ndarray:
         """``(m,)`` bool: the segments ``a[i] → b[i]`` valid at every ``resolution``, their ends
         ``b`` included (``a`` too when ``closed``), checked in two batches: a few spread poses
-        of each (as :meth:`segment_ok`), then the other poses of those that pass."""
+        of each (as :meth:`segment_ok`), then the other poses of those that pass.  With
+        ``groups`` (``(m,)`` non-decreasing, from 0): whether every segment of each group is
+        valid, the spread poses spread over the group's and a group failing at one of them
+        not checked further."""
         d = b - a
         n = np.maximum(1, np.ceil(np.linalg.norm(d, axis=1) / resolution).astype(int))
         k = n + 1 if closed else n  # poses checked on each
         seg = np.repeat(np.arange(len(a)), k)
         idx = np.arange(len(seg)) - (np.cumsum(k) - k)[seg]  # each pose's rank on its segment
         t = (idx + (0 if closed else 1)) / n[seg]
-        coarse = idx % np.maximum(1, k // COARSE)[seg] == 0
-        bad = np.zeros(len(a), bool)
+        group = seg if groups is None else np.asarray(groups)[seg]
+        size = np.bincount(group)
+        rank = np.arange(len(seg)) - (np.cumsum(size) - size)[group]  # on its group
+        coarse = rank % np.maximum(1, size // COARSE)[group] == 0
+        bad = np.zeros(len(size), bool)
         for part in (coarse, ~coarse):
-            part = part & ~bad[seg]
+            part = part & ~bad[group]
             if part.any():
                 ok = self.valid(a[seg[part]] + t[part, None] * d[seg[part]])
-                bad[seg[part][~ok]] = True
+                bad[group[part][~ok]] = True
         return ~bad
 
     def straight(self, d: np.ndarray) -> bool:
@@ -369,18 +386,21 @@ def simplify(
 ) -> np.ndarray:
     """A continuous valid path ``(N, k)`` shortened as OMPL's ``PathSimplifier::simplify``
     does (Şucan, Moll & Kavraki 2012): vertices dropped (:func:`_reduce_vertices`), then
-    rounds of random shortcuts between points of the path, vertices or not (Geraerts &
+    rounds of random shortcuts between points of the path, vertices or not, then of partial
+    shortcuts, which straighten one coordinate along a stretch of the path (Geraerts &
     Overmars 2007, §3; :func:`_shortcuts`), corner cutting (:func:`_smooth`) and vertices
     dropped again, while a round shortens the path by more than :data:`GAIN`, within
     ``tries`` shortcuts and the ``deadline``.  Every change replaces a stretch of the path by
-    straight segments valid at ``resolution`` and no longer than it, each turning every angle
-    by less than π (so that the path is the one :func:`~taut.planning.verify_path` checks):
-    the path never gets longer."""
+    segments valid at ``resolution`` and shorter than it, each turning every angle by less
+    than π (so that the path is the one :func:`~taut.planning.verify_path` checks), and keeps
+    the ends of the stretch as they were: the path never gets longer, and starts and ends
+    where it did."""
     path = _reduce_vertices(space, np.array(path, float), resolution, deadline)
     while tries > 0 and len(path) > 2 and time.perf_counter() <= deadline:
         before = _length(path)
-        path, used = _shortcuts(space, path, resolution, rng, deadline, tries)
-        tries -= used
+        for one_coordinate in (False, True):
+            path, used = _shortcuts(space, path, resolution, rng, deadline, tries, partial=one_coordinate)
+            tries -= used
         path = _reduce_vertices(space, _smooth(space, path, resolution, deadline), resolution, deadline)
         if _length(path) > (1.0 - GAIN) * before:
             break
@@ -430,15 +450,28 @@ def _on_path(path: np.ndarray, cum: np.ndarray, s: float, snap: float) -> tuple[
 
 
 def _shortcuts(
-    space: PoseSpace, path: np.ndarray, resolution: float, rng: np.random.Generator, deadline: float, budget: int
+    space: PoseSpace,
+    path: np.ndarray,
+    resolution: float,
+    rng: np.random.Generator,
+    deadline: float,
+    budget: int,
+    *,
+    partial: bool,
 ) -> tuple[np.ndarray, int]:
-    """Random shortcuts, as OMPL's ``shortcutPath``: a point anywhere on the path and another
-    within :data:`RANGE` of its length along it, joined straight where that segment is
-    valid and shorter than the stretch between them, until :data:`PATIENCE` tries in a row
-    fail or ``budget`` are made.  Tries are drawn :data:`SHORTCUT_BATCH` at a time and checked
-    in one batch; the valid ones are applied, the largest gain first, as long as their
-    stretches do not overlap.  Returns the path and the tries made."""
+    """Random shortcuts between a point anywhere on the path and another within :data:`RANGE`
+    of its length along it, as OMPL's ``shortcutPath``: the stretch between them replaced by
+    the straight segment or, when ``partial``, only one coordinate (drawn at random) made to
+    change linearly with the arc length along the stretch, the others kept as they were: the
+    partial shortcut of Geraerts & Overmars (2007, §3), which straightens a path whose full
+    shortcuts all leave the valid set.  A try is checked when it would shorten the path by
+    more than :data:`MIN_GAIN` of its length, and applied when every segment of its new
+    stretch is valid, until :data:`PATIENCE` tries in a row are not or ``budget`` are made.
+    Tries are drawn :data:`SHORTCUT_BATCH` at a time and checked in one batch; the valid ones
+    are applied, the largest gain first, as long as their stretches do not overlap.  Returns
+    the path and the tries made."""
     used = idle = 0
+    k = path.shape[1]
     while used < budget and idle < PATIENCE and len(path) > 2 and time.perf_counter() <= deadline:
         m = min(SHORTCUT_BATCH, budget - used)
         used += m
@@ -446,24 +479,36 @@ def _shortcuts(
         L = float(cum[-1])
         s0 = rng.uniform(0.0, L, m)
         s1 = rng.uniform(np.maximum(0.0, s0 - RANGE * L), np.minimum(L, s0 + RANGE * L))
+        coords = rng.integers(0, k, m) if partial else np.zeros(m, int)
         tries = []
-        for a, b in zip(np.minimum(s0, s1), np.maximum(s0, s1)):
+        for a, b, c in zip(np.minimum(s0, s1), np.maximum(s0, s1), coords):
             i0, j0, p0 = _on_path(path, cum, a, SNAP * L)
             i1, j1, p1 = _on_path(path, cum, b, SNAP * L)
-            if j1 - i0 < 2:  # no vertex strictly between: the straight segment is the path's own
+            # the arc lengths of the two points along the path
+            t0, t1 = cum[i0] + float(np.linalg.norm(p0 - path[i0])), cum[i1] + float(np.linalg.norm(p1 - path[i1]))
+            if j1 - i0 < 2 or t1 - t0 <= MIN_GAIN * L:  # no vertex strictly between, or nothing to gain
                 continue
-            d = p1 - p0
-            stretch = float(np.linalg.norm(path[j0] - p0) + cum[i1] - cum[j0] + np.linalg.norm(p1 - path[i1]))
-            gain = stretch - float(np.linalg.norm(d))
-            if gain > 1e-12 * L and space.straight(d):
-                tries.append((gain, i0, j1, p0, p1))
+            if partial:
+                inner = slice(j0 + (i0 == j0), i1 + (i1 != j1))  # the vertices strictly between
+                new = np.vstack([p0, path[inner], p1])
+                new[1:-1, c] = p0[c] + (cum[inner] - t0) / (t1 - t0) * (p1[c] - p0[c])  # its ends kept exactly
+            else:
+                new = np.vstack([p0, p1])
+            steps = np.diff(new, axis=0)
+            gain = t1 - t0 - float(np.linalg.norm(steps, axis=1).sum())
+            if gain > MIN_GAIN * L and space.straight(steps):
+                tries.append((gain, i0, j1, new))
         if not tries:
             idle += m
             continue
         ok = space.segments_ok(
-            np.array([t[3] for t in tries]), np.array([t[4] for t in tries]), resolution, closed=True
+            np.vstack([t[3][:-1] for t in tries]),
+            np.vstack([t[3][1:] for t in tries]),
+            resolution,
+            closed=True,
+            groups=np.repeat(np.arange(len(tries)), [len(t[3]) - 1 for t in tries]),
         )
-        chosen: list[tuple[float, int, int, np.ndarray, np.ndarray]] = []
+        chosen: list[tuple[float, int, int, np.ndarray]] = []
         for t in sorted((t for t, v in zip(tries, ok) if v), key=lambda t: -t[0]):
             if all(t[2] <= c[1] or t[1] >= c[2] for c in chosen):  # stretches apart (a shared vertex kept)
                 chosen.append(t)
@@ -471,8 +516,8 @@ def _shortcuts(
             idle += m
             continue
         idle = 0
-        for _, i0, j1, p0, p1 in sorted(chosen, key=lambda t: -t[1]):  # from the end: indices stay right
-            path = np.vstack([path[: i0 + 1], p0[None], p1[None], path[j1:]])
+        for _, i0, j1, new in sorted(chosen, key=lambda t: -t[1]):  # from the end: indices stay right
+            path = np.vstack([path[: i0 + 1], new, path[j1:]])
         path = path[np.r_[True, np.linalg.norm(np.diff(path, axis=0), axis=1) > 0.0]]  # vertices met twice
     return path, used
 
