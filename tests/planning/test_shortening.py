@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from taut.model import example
-from taut.planning._posespace import PoseSpace, _shortcuts, simplify
+from taut.planning._posespace import PoseSpace, _shortcuts, _shortest, simplify
 
 #: The disc of invalid positions: centred at the origin, this radius.
 RADIUS = 0.5
@@ -105,3 +105,15 @@ def test_shortening_never_lengthens_keeps_the_path_valid_and_nears_the_shortest(
     assert np.all(np.abs(np.diff(short[:, 2])) < np.pi)  # each step turns the short way
     shortest = _geodesic(ends[1] - ends[0])
     assert shortest * (1 - 1e-4) <= _length(short) <= 1.03 * shortest
+
+
+def test_the_path_that_shortens_best_is_chosen():
+    # Two paths over the disc: a long zigzag that shortens to the shortest path, and a shorter
+    # one that turns the orientation the long way round (by 0.6 − 2π), which no shortcut
+    # changes (each step turns by less than π): it stays longer than 2π − 0.6.
+    over = _zigzag()
+    round_ = np.array([[-END, 0.0, 0.0], [-0.53, 0.53, -1.9], [0.53, 0.53, -3.8], [END, 0.0, 0.6 - 2 * np.pi]])
+    assert _clearance(round_) > RADIUS and _length(round_) < _length(over)
+    raw, short = _shortest(SPACE, [round_, over], RESOLUTION, np.random.default_rng(0), np.inf)
+    assert raw is over and np.array_equal(short[[0, -1]], over[[0, -1]])
+    assert _length(short) < 2 * np.pi - 0.6 < _length(over)

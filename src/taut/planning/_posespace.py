@@ -31,8 +31,13 @@ returned path is valid at every checked pose, not certified between them.
   connected greedily toward the new node; then the path shortened as OMPL's
   ``PathSimplifier::simplify`` does (:func:`simplify`: vertices dropped, random shortcuts
   between points of the path, partial shortcuts that straighten one coordinate along a
-  stretch of it (Geraerts & Overmars 2007), corner cutting, repeated while it gains).
-  Randomised, deterministic for a ``seed`` (unless
+  stretch of it (Geraerts & Overmars 2007), corner cutting, repeated while it gains).  A
+  shortcut does not take a path into another class of paths (around an invalid region the
+  other way, or turning the platform the other way round: on the 8-cable robot, a turn by
+  2.5 rad about z is 2.5 or at least 2π − 2.5 long, and the first path found may take
+  either way), so up to :data:`CANDIDATES` paths are searched for, each shortened a
+  little, and the shortest of them is shortened further: the best of several solutions, as
+  Luna et al. (2013) start from.  Randomised, deterministic for a ``seed`` (unless
   ``time_limit`` stops it); a search that runs out of ``max_nodes`` or time proves nothing.
 * ``grid`` — A* over a lattice of the pose box (positions at ``spacing``; each angle at the
   step nearest ``spacing`` that divides 2π, periodic), two lattice points joined when they are
@@ -57,6 +62,10 @@ References
 .. [4] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
    Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
    Machine Science 12, Springer, 2013, §5. (docs/references.bib: bohigas2013)
+.. [5] R. Luna, I. A. Şucan, M. Moll, L. E. Kavraki, "Anytime solution optimization for
+   sampling-based motion planning", IEEE International Conference on Robotics and
+   Automation, 2013 (several planners' solutions shortened, the best kept and combined).
+   (docs/references.bib: luna2013)
 """
 
 from __future__ import annotations
@@ -94,6 +103,12 @@ POSE_METHODS = ("rrtconnect", "grid")
 SHORTCUTS = 2000
 #: Shortcuts tried in a row without a shorter path that end a round of them.
 PATIENCE = 100
+#: Paths RRT-Connect searches for before shortening the one that shortens best (:func:`_shortest`).
+CANDIDATES = 3
+#: A further path is searched for with at most this many times the tree nodes of the first.
+CANDIDATE_NODES = 4
+#: Shortcuts tried on each path before the shortest is chosen.
+QUICK = 200
 #: A shortcut that would shorten the path by less than this fraction of its length is not tried.
 MIN_GAIN = 1e-4
 #: Shortcuts drawn and checked in one batch.
@@ -648,6 +663,7 @@ def rrt_connect(
             time_limit=limit,
             shorten=shorten,
             progress=progress,
+            candidates=CANDIDATES,
         )
 
     return _with_fallback(space, start, goal, time_limit, run)
@@ -666,20 +682,35 @@ def _rrt(
     shorten: bool,
     progress: Callable[[int, int | None], None] | None,
     final: bool = True,
+    candidates: int = 1,
 ) -> PathResult:
     """RRT-Connect then shortening (:func:`simplify`) from ``start`` to ``goal`` with the
     validity test of ``space``; with ``final``, the path checked again at a finer resolution
-    (:func:`_finish`)."""
+    (:func:`_finish`).  With ``shorten``, up to ``candidates`` paths are searched for (the
+    first with ``max_nodes``, each further one with the nodes left, at most
+    :data:`CANDIDATE_NODES` times those of the first) and the one shortest after a first
+    :data:`QUICK` shortcuts is shortened further (:func:`_shortest`)."""
     t0 = time.perf_counter()
     deadline = np.inf if time_limit is None else t0 + time_limit
     diag = float(np.linalg.norm(space.upper - space.lower))
     step = diag / STEPS_PER_DIAGONAL if step is None else step
     resolution = min(step / CHECKS_PER_STEP, RESOLUTION) if resolution is None else resolution
-    found, nodes = _connect_trees(space, start, goal, step, resolution, rng, max_nodes, deadline, progress, 0)
+    nodes = 0
+    raws: list[np.ndarray] = []
+    for _ in range(candidates if shorten else 1):
+        budget = max_nodes - nodes if not raws else min(max_nodes - nodes, CANDIDATE_NODES * nodes)
+        if budget < 2 or time.perf_counter() >= deadline:
+            break
+        found, used = _connect_trees(space, start, goal, step, resolution, rng, budget, deadline, progress, nodes)
+        nodes += used
+        if found is None:
+            break
+        raws.append(space.unwrap(np.array(found)))
     path = np.zeros((0, start.size))
-    if found is not None:
-        raw = path = space.unwrap(np.array(found))
+    if raws:
+        raw = path = raws[0]
         if shorten:
+            raw, path = _shortest(space, raws, resolution, rng, deadline)
             path = simplify(space, path, resolution, rng, deadline)
         if final:
             budget = max(2, max_nodes // REPAIR_SHARE)
@@ -739,6 +770,18 @@ def _connect_trees(
             progress(done + len(trees[0]) + len(trees[1]), None)
         a, b = b, a
     return None, len(trees[0]) + len(trees[1])
+
+
+def _shortest(
+    space: PoseSpace, paths: list[np.ndarray], resolution: float, rng: np.random.Generator, deadline: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """Of ``paths``, the one shortest after :func:`simplify` with :data:`QUICK` shortcuts
+    tried: that path and its shortened one."""
+    if len(paths) == 1:
+        return paths[0], paths[0]
+    quick = [simplify(space, p, resolution, rng, deadline, tries=QUICK) for p in paths]
+    best = int(np.argmin([_length(q) for q in quick]))
+    return paths[best], quick[best]
 
 
 def _result(
