@@ -75,8 +75,9 @@ Planners (--planner):
 --max-charts bounds the atlas of either planner (default 20000); A* then answers
 "found": false, "no_path": false.
   rrtconnect  RRT-Connect in the robot's own pose coordinates (Kuffner & LaValle 2000),
-            then random shortcuts; --step (default 1/20 of the box diagonal), --seed,
-            --max-nodes (default 20000), --time-limit; no path within a budget proves nothing;
+            then random and partial shortcuts on the best of a few paths; --step (default
+            1/20 of the box diagonal), --seed, --max-nodes (default 20000), --time-limit; no
+            path within a budget proves nothing;
   grid      A* over a lattice of the pose space at --spacing (default: the finest of at most
             --max-nodes points); "no_path": true proves that no chain of valid neighbouring
             lattice points (segments checked every --resolution) joins start and goal: a proof

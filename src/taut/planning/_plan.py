@@ -88,9 +88,9 @@ def plan_path(
         at the resolution ``radius`` (``no_path``).  ``"atlasrrt"``: rapidly exploring
         trees grown on an atlas, randomised, deterministic for a ``seed``; it cannot prove
         that no path exists.  ``"rrtconnect"``: RRT-Connect in the pose space with the
-        validity test of :func:`verify_path` made stricter by a margin, then shortened as
-        OMPL's path simplifier does (without the margin when it leaves no path: ``max_nodes``
-        each); randomised, deterministic for a ``seed``, it cannot prove that no path exists.  ``"grid"``: A*
+        validity test of :func:`verify_path` made stricter by a margin, the shortest of a few
+        paths after shortening as OMPL's path simplifier does, with partial shortcuts
+        (without the margin when it leaves no path: ``max_nodes`` each); randomised, deterministic for a ``seed``, it cannot prove that no path exists.  ``"grid"``: A*
         over a lattice of the pose space at ``spacing``; ``no_path`` proves that no chain of
         valid lattice neighbours joins the start to the goal (:mod:`taut.planning._posespace`
         states exactly what), for pose spaces of two or three coordinates (point masses,

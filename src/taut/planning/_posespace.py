@@ -30,8 +30,14 @@ returned path is valid at every checked pose, not certified between them.
   the goal, each extended one ``step`` toward a random pose of the box and the other then
   connected greedily toward the new node; then the path shortened as OMPL's
   ``PathSimplifier::simplify`` does (:func:`simplify`: vertices dropped, random shortcuts
-  between points of the path (Geraerts & Overmars 2007), corner cutting, repeated while it
-  gains).  Randomised, deterministic for a ``seed`` (unless
+  between points of the path, partial shortcuts that straighten one coordinate along a
+  stretch of it (Geraerts & Overmars 2007), corner cutting, repeated while it gains).  A
+  shortcut does not take a path into another class of paths (around an invalid region the
+  other way, or turning the platform the other way round: on the 8-cable robot, a turn by
+  2.5 rad about z is 2.5 or at least 2π − 2.5 long, and the first path found may take
+  either way), so up to :data:`CANDIDATES` paths are searched for, each shortened a
+  little, and the shortest of them is shortened further: the best of several solutions, as
+  Luna et al. (2013) start from.  Randomised, deterministic for a ``seed`` (unless
   ``time_limit`` stops it); a search that runs out of ``max_nodes`` or time proves nothing.
 * ``grid`` — A* over a lattice of the pose box (positions at ``spacing``; each angle at the
   step nearest ``spacing`` that divides 2π, periodic), two lattice points joined when they are
@@ -49,13 +55,17 @@ References
    planning", IEEE International Conference on Robotics and Automation, 2000.
    (docs/references.bib: kuffner2000)
 .. [2] R. Geraerts, M. H. Overmars, "Creating high-quality paths for motion planning",
-   International Journal of Robotics Research 26(8), 2007, §3 (random shortcuts).
+   International Journal of Robotics Research 26(8), 2007, §3 (random and partial shortcuts).
    (docs/references.bib: geraerts2007)
 .. [3] I. A. Şucan, M. Moll, L. E. Kavraki, "The Open Motion Planning Library", IEEE Robotics &
    Automation Magazine 19(4), 2012 (``PathSimplifier``). (docs/references.bib: sucan2012)
 .. [4] O. Bohigas, M. Manubens, L. Ros, "Navigating the Wrench-Feasible C-Space of Cable-Driven
    Hexapods", in T. Bruckmann, A. Pott (eds.), Cable-Driven Parallel Robots, Mechanisms and
    Machine Science 12, Springer, 2013, §5. (docs/references.bib: bohigas2013)
+.. [5] R. Luna, I. A. Şucan, M. Moll, L. E. Kavraki, "Anytime solution optimization for
+   sampling-based motion planning", IEEE International Conference on Robotics and
+   Automation, 2013 (several planners' solutions shortened, the best kept and combined).
+   (docs/references.bib: luna2013)
 """
 
 from __future__ import annotations
@@ -93,6 +103,14 @@ POSE_METHODS = ("rrtconnect", "grid")
 SHORTCUTS = 2000
 #: Shortcuts tried in a row without a shorter path that end a round of them.
 PATIENCE = 100
+#: Paths RRT-Connect searches for before shortening the one that shortens best (:func:`_shortest`).
+CANDIDATES = 3
+#: A further path is searched for with at most this many times the tree nodes of the first.
+CANDIDATE_NODES = 4
+#: Shortcuts tried on each path before the shortest is chosen.
+QUICK = 200
+#: A shortcut that would shorten the path by less than this fraction of its length is not tried.
+MIN_GAIN = 1e-4
 #: Shortcuts drawn and checked in one batch.
 SHORTCUT_BATCH = 16
 #: A shortcut joins a point of the path to another at most ``RANGE`` of its length away along it.
@@ -112,6 +130,8 @@ TENSION_MARGIN = 20
 COARSE = 16
 #: Most poses checked in one batch while a tree is connected greedily.
 CONNECT_BATCH = 64
+#: Most floats held at once by the differences between samples and a tree's nodes.
+NEAREST_FLOATS = 1 << 20
 #: Random samples whose extensions' ends are checked in one batch.
 SAMPLE_BATCH = 64
 #: A found path is checked again every ``resolution / FINE``: a segment that crosses a thin
@@ -173,23 +193,37 @@ class PoseSpace:
             t = t[~coarse]
         return bool(self.valid(a + t[:, None] * d).all())
 
-    def segments_ok(self, a: np.ndarray, b: np.ndarray, resolution: float, *, closed: bool = False) -> np.ndarray:
+    def segments_ok(
+        self,
+        a: np.ndarray,
+        b: np.ndarray,
+        resolution: float,
+        *,
+        closed: bool = False,
+        groups: np.ndarray | None = None,
+    ) -> np.ndarray:
         """``(m,)`` bool: the segments ``a[i] → b[i]`` valid at every ``resolution``, their ends
         ``b`` included (``a`` too when ``closed``), checked in two batches: a few spread poses
-        of each (as :meth:`segment_ok`), then the other poses of those that pass."""
+        of each (as :meth:`segment_ok`), then the other poses of those that pass.  With
+        ``groups`` (``(m,)`` non-decreasing, from 0): whether every segment of each group is
+        valid, the spread poses spread over the group's and a group failing at one of them
+        not checked further."""
         d = b - a
         n = np.maximum(1, np.ceil(np.linalg.norm(d, axis=1) / resolution).astype(int))
         k = n + 1 if closed else n  # poses checked on each
         seg = np.repeat(np.arange(len(a)), k)
         idx = np.arange(len(seg)) - (np.cumsum(k) - k)[seg]  # each pose's rank on its segment
         t = (idx + (0 if closed else 1)) / n[seg]
-        coarse = idx % np.maximum(1, k // COARSE)[seg] == 0
-        bad = np.zeros(len(a), bool)
+        group = seg if groups is None else np.asarray(groups)[seg]
+        size = np.bincount(group)
+        rank = np.arange(len(seg)) - (np.cumsum(size) - size)[group]  # on its group
+        coarse = rank % np.maximum(1, size // COARSE)[group] == 0
+        bad = np.zeros(len(size), bool)
         for part in (coarse, ~coarse):
-            part = part & ~bad[seg]
+            part = part & ~bad[group]
             if part.any():
                 ok = self.valid(a[seg[part]] + t[part, None] * d[seg[part]])
-                bad[seg[part][~ok]] = True
+                bad[group[part][~ok]] = True
         return ~bad
 
     def straight(self, d: np.ndarray) -> bool:
@@ -280,22 +314,18 @@ class _Tree:
         return out
 
 
-def _step_end(space: PoseSpace, tree: _Tree, target: np.ndarray, step: float) -> tuple[int, np.ndarray]:
-    """The node of ``tree`` nearest ``target`` and the pose one ``step`` from it toward
-    ``target`` (``target`` itself when nearer)."""
-    i = tree.nearest(space, target)
-    d = space.diff(tree.nodes[i], target)
-    L = float(np.linalg.norm(d))
-    return i, tree.nodes[i] + (d if L <= step else (step / L) * d)
-
-
-def _extend(space: PoseSpace, tree: _Tree, i: int, end: np.ndarray, resolution: float) -> int:
-    """Add ``end`` (a valid pose) to ``tree`` as a child of node ``i`` if the segment between
-    them is valid; the new node, or −1."""
-    a = tree.nodes[i]
-    if not space.segment_ok(a, end - a, resolution):
-        return -1
-    return tree.add(end, i)
+def _step_ends(space: PoseSpace, tree: _Tree, targets: np.ndarray, step: float) -> tuple[np.ndarray, np.ndarray]:
+    """The nodes of ``tree`` nearest ``targets`` ``(m, k)`` and the poses one ``step`` from
+    them toward the targets (a target itself when nearer), a few targets at a time so that
+    their differences to every node take at most :data:`NEAREST_FLOATS` floats."""
+    nodes = tree.nodes[: len(tree)]
+    idx = np.empty(len(targets), int)
+    for lo in range(0, len(targets), max(1, NEAREST_FLOATS // nodes.size)):
+        d = space.diff(nodes[None], targets[lo : lo + max(1, NEAREST_FLOATS // nodes.size), None])
+        idx[lo : lo + len(d)] = np.einsum("mij,mij->mi", d, d).argmin(axis=1)
+    d = space.diff(nodes[idx], targets)
+    L = np.linalg.norm(d, axis=1)
+    return idx, nodes[idx] + np.where(L <= step, 1.0, step / np.maximum(L, step))[:, None] * d
 
 
 def _connect(
@@ -371,18 +401,21 @@ def simplify(
 ) -> np.ndarray:
     """A continuous valid path ``(N, k)`` shortened as OMPL's ``PathSimplifier::simplify``
     does (Şucan, Moll & Kavraki 2012): vertices dropped (:func:`_reduce_vertices`), then
-    rounds of random shortcuts between points of the path, vertices or not (Geraerts &
+    rounds of random shortcuts between points of the path, vertices or not, then of partial
+    shortcuts, which straighten one coordinate along a stretch of the path (Geraerts &
     Overmars 2007, §3; :func:`_shortcuts`), corner cutting (:func:`_smooth`) and vertices
     dropped again, while a round shortens the path by more than :data:`GAIN`, within
     ``tries`` shortcuts and the ``deadline``.  Every change replaces a stretch of the path by
-    straight segments valid at ``resolution`` and no longer than it, each turning every angle
-    by less than π (so that the path is the one :func:`~taut.planning.verify_path` checks):
-    the path never gets longer."""
+    segments valid at ``resolution`` and shorter than it, each turning every angle by less
+    than π (so that the path is the one :func:`~taut.planning.verify_path` checks), and keeps
+    the ends of the stretch as they were: the path never gets longer, and starts and ends
+    where it did."""
     path = _reduce_vertices(space, np.array(path, float), resolution, deadline)
     while tries > 0 and len(path) > 2 and time.perf_counter() <= deadline:
         before = _length(path)
-        path, used = _shortcuts(space, path, resolution, rng, deadline, tries)
-        tries -= used
+        for one_coordinate in (False, True):
+            path, used = _shortcuts(space, path, resolution, rng, deadline, tries, partial=one_coordinate)
+            tries -= used
         path = _reduce_vertices(space, _smooth(space, path, resolution, deadline), resolution, deadline)
         if _length(path) > (1.0 - GAIN) * before:
             break
@@ -432,15 +465,28 @@ def _on_path(path: np.ndarray, cum: np.ndarray, s: float, snap: float) -> tuple[
 
 
 def _shortcuts(
-    space: PoseSpace, path: np.ndarray, resolution: float, rng: np.random.Generator, deadline: float, budget: int
+    space: PoseSpace,
+    path: np.ndarray,
+    resolution: float,
+    rng: np.random.Generator,
+    deadline: float,
+    budget: int,
+    *,
+    partial: bool,
 ) -> tuple[np.ndarray, int]:
-    """Random shortcuts, as OMPL's ``shortcutPath``: a point anywhere on the path and another
-    within :data:`RANGE` of its length along it, joined straight where that segment is
-    valid and shorter than the stretch between them, until :data:`PATIENCE` tries in a row
-    fail or ``budget`` are made.  Tries are drawn :data:`SHORTCUT_BATCH` at a time and checked
-    in one batch; the valid ones are applied, the largest gain first, as long as their
-    stretches do not overlap.  Returns the path and the tries made."""
+    """Random shortcuts between a point anywhere on the path and another within :data:`RANGE`
+    of its length along it, as OMPL's ``shortcutPath``: the stretch between them replaced by
+    the straight segment or, when ``partial``, only one coordinate (drawn at random) made to
+    change linearly with the arc length along the stretch, the others kept as they were: the
+    partial shortcut of Geraerts & Overmars (2007, §3), which straightens a path whose full
+    shortcuts all leave the valid set.  A try is checked when it would shorten the path by
+    more than :data:`MIN_GAIN` of its length, and applied when every segment of its new
+    stretch is valid, until :data:`PATIENCE` tries in a row are not or ``budget`` are made.
+    Tries are drawn :data:`SHORTCUT_BATCH` at a time and checked in one batch; the valid ones
+    are applied, the largest gain first, as long as their stretches do not overlap.  Returns
+    the path and the tries made."""
     used = idle = 0
+    k = path.shape[1]
     while used < budget and idle < PATIENCE and len(path) > 2 and time.perf_counter() <= deadline:
         m = min(SHORTCUT_BATCH, budget - used)
         used += m
@@ -448,24 +494,36 @@ def _shortcuts(
         L = float(cum[-1])
         s0 = rng.uniform(0.0, L, m)
         s1 = rng.uniform(np.maximum(0.0, s0 - RANGE * L), np.minimum(L, s0 + RANGE * L))
+        coords = rng.integers(0, k, m) if partial else np.zeros(m, int)
         tries = []
-        for a, b in zip(np.minimum(s0, s1), np.maximum(s0, s1)):
+        for a, b, c in zip(np.minimum(s0, s1), np.maximum(s0, s1), coords):
             i0, j0, p0 = _on_path(path, cum, a, SNAP * L)
             i1, j1, p1 = _on_path(path, cum, b, SNAP * L)
-            if j1 - i0 < 2:  # no vertex strictly between: the straight segment is the path's own
+            # the arc lengths of the two points along the path
+            t0, t1 = cum[i0] + float(np.linalg.norm(p0 - path[i0])), cum[i1] + float(np.linalg.norm(p1 - path[i1]))
+            if j1 - i0 < 2 or t1 - t0 <= MIN_GAIN * L:  # no vertex strictly between, or nothing to gain
                 continue
-            d = p1 - p0
-            stretch = float(np.linalg.norm(path[j0] - p0) + cum[i1] - cum[j0] + np.linalg.norm(p1 - path[i1]))
-            gain = stretch - float(np.linalg.norm(d))
-            if gain > 1e-12 * L and space.straight(d):
-                tries.append((gain, i0, j1, p0, p1))
+            if partial:
+                inner = slice(j0 + (i0 == j0), i1 + (i1 != j1))  # the vertices strictly between
+                new = np.vstack([p0, path[inner], p1])
+                new[1:-1, c] = p0[c] + (cum[inner] - t0) / (t1 - t0) * (p1[c] - p0[c])  # its ends kept exactly
+            else:
+                new = np.vstack([p0, p1])
+            steps = np.diff(new, axis=0)
+            gain = t1 - t0 - float(np.linalg.norm(steps, axis=1).sum())
+            if gain > MIN_GAIN * L and space.straight(steps):
+                tries.append((gain, i0, j1, new))
         if not tries:
             idle += m
             continue
         ok = space.segments_ok(
-            np.array([t[3] for t in tries]), np.array([t[4] for t in tries]), resolution, closed=True
+            np.vstack([t[3][:-1] for t in tries]),
+            np.vstack([t[3][1:] for t in tries]),
+            resolution,
+            closed=True,
+            groups=np.repeat(np.arange(len(tries)), [len(t[3]) - 1 for t in tries]),
         )
-        chosen: list[tuple[float, int, int, np.ndarray, np.ndarray]] = []
+        chosen: list[tuple[float, int, int, np.ndarray]] = []
         for t in sorted((t for t, v in zip(tries, ok) if v), key=lambda t: -t[0]):
             if all(t[2] <= c[1] or t[1] >= c[2] for c in chosen):  # stretches apart (a shared vertex kept)
                 chosen.append(t)
@@ -473,8 +531,8 @@ def _shortcuts(
             idle += m
             continue
         idle = 0
-        for _, i0, j1, p0, p1 in sorted(chosen, key=lambda t: -t[1]):  # from the end: indices stay right
-            path = np.vstack([path[: i0 + 1], p0[None], p1[None], path[j1:]])
+        for _, i0, j1, new in sorted(chosen, key=lambda t: -t[1]):  # from the end: indices stay right
+            path = np.vstack([path[: i0 + 1], new, path[j1:]])
         path = path[np.r_[True, np.linalg.norm(np.diff(path, axis=0), axis=1) > 0.0]]  # vertices met twice
     return path, used
 
@@ -605,6 +663,7 @@ def rrt_connect(
             time_limit=limit,
             shorten=shorten,
             progress=progress,
+            candidates=CANDIDATES,
         )
 
     return _with_fallback(space, start, goal, time_limit, run)
@@ -623,57 +682,106 @@ def _rrt(
     shorten: bool,
     progress: Callable[[int, int | None], None] | None,
     final: bool = True,
+    candidates: int = 1,
 ) -> PathResult:
     """RRT-Connect then shortening (:func:`simplify`) from ``start`` to ``goal`` with the
     validity test of ``space``; with ``final``, the path checked again at a finer resolution
-    (:func:`_finish`)."""
+    (:func:`_finish`).  With ``shorten``, up to ``candidates`` paths are searched for (the
+    first with ``max_nodes``, each further one with the nodes left, at most
+    :data:`CANDIDATE_NODES` times those of the first) and the one shortest after a first
+    :data:`QUICK` shortcuts is shortened further (:func:`_shortest`)."""
     t0 = time.perf_counter()
     deadline = np.inf if time_limit is None else t0 + time_limit
     diag = float(np.linalg.norm(space.upper - space.lower))
     step = diag / STEPS_PER_DIAGONAL if step is None else step
     resolution = min(step / CHECKS_PER_STEP, RESOLUTION) if resolution is None else resolution
-    trees = (_Tree(start, max_nodes), _Tree(goal, max_nodes))
-    found = None
-    span = space.upper - space.lower
-    a, b = 0, 1
-    pending: list[tuple[np.ndarray, int, np.ndarray, bool]] = []
-    while found is None and len(trees[0]) + len(trees[1]) < max_nodes and time.perf_counter() < deadline:
-        if not pending:
-            # The ends of the next SAMPLE_BATCH extensions (alternately of the two trees, from
-            # their nearest nodes now) are checked in one batch: most fall outside the valid set.
-            samples = space.lower + span * rng.random((SAMPLE_BATCH, span.size))
-            steps = [_step_end(space, trees[(a + j) % 2], q, step) for j, q in enumerate(samples)]
-            ok = space.valid(np.array([e for _, e in steps]))
-            pending = [(q, i, e, bool(v)) for q, (i, e), v in zip(samples, steps, ok)][::-1]
-        _, i, end, end_ok = pending.pop()
-        new = _extend(space, trees[a], i, end, resolution) if end_ok else -1
-        if new >= 0:
-            room = max_nodes - len(trees[0]) - len(trees[1])
-            last, reached = _connect(space, trees[b], trees[a].nodes[new], step, resolution, room)
-            if reached:
-                ends = {a: new, b: last}
-                found = trees[0].branch(ends[0])[::-1] + trees[1].branch(ends[1])[1:]
-        if progress is not None:
-            progress(len(trees[0]) + len(trees[1]), None)
-        a, b = b, a
-    nodes = len(trees[0]) + len(trees[1])
+    nodes = 0
+    raws: list[np.ndarray] = []
+    for _ in range(candidates if shorten else 1):
+        budget = max_nodes - nodes if not raws else min(max_nodes - nodes, CANDIDATE_NODES * nodes)
+        if budget < 2 or time.perf_counter() >= deadline:
+            break
+        found, used = _connect_trees(space, start, goal, step, resolution, rng, budget, deadline, progress, nodes)
+        nodes += used
+        if found is None:
+            break
+        raws.append(space.unwrap(np.array(found)))
     path = np.zeros((0, start.size))
-    if found is not None:
-        raw = path = space.unwrap(np.array(found))
+    if raws:
+        raw = path = raws[0]
         if shorten:
+            raw, path = _shortest(space, raws, resolution, rng, deadline)
             path = simplify(space, path, resolution, rng, deadline)
         if final:
             budget = max(2, max_nodes // REPAIR_SHARE)
             checked = _finish(space, path, goal, resolution, rng, budget, deadline)
             if checked is None and shorten:  # the tree's own path, farther from the boundary
                 checked = _finish(space, raw, goal, resolution, rng, budget, deadline)
-            found = None if checked is None else found
             path = np.zeros((0, start.size)) if checked is None else checked
         else:
             path[-1] = goal
     if progress is not None:
         progress(nodes, nodes)
-    return _result(space, found is not None, path, "rrtconnect", nodes=nodes, t0=t0)
+    return _result(space, len(path) > 0, path, "rrtconnect", nodes=nodes, t0=t0)
+
+
+def _connect_trees(
+    space: PoseSpace,
+    start: np.ndarray,
+    goal: np.ndarray,
+    step: float,
+    resolution: float,
+    rng: np.random.Generator,
+    max_nodes: int,
+    deadline: float,
+    progress: Callable[[int, int | None], None] | None,
+    done: int,
+) -> tuple[list[np.ndarray] | None, int]:
+    """RRT-Connect's two trees grown from ``start`` and ``goal`` until they meet, within
+    ``max_nodes`` and the ``deadline``: the poses of the path through them (``None`` when
+    they do not meet) and the nodes grown; ``progress`` is told ``done`` more."""
+    trees = (_Tree(start, max_nodes), _Tree(goal, max_nodes))
+    span = space.upper - space.lower
+    a, b = 0, 1
+    pending: list[tuple[int, np.ndarray, bool]] = []
+    while len(trees[0]) + len(trees[1]) < max_nodes and time.perf_counter() < deadline:
+        if not pending:
+            # The ends of the next SAMPLE_BATCH extensions (alternately of the two trees, from
+            # their nearest nodes now) are checked in one batch, most fall outside the valid set;
+            # then the segments to the valid ones, in another: they do not change as the trees grow.
+            samples = space.lower + span * rng.random((SAMPLE_BATCH, span.size))
+            idx, ends, froms = np.empty(SAMPLE_BATCH, int), np.empty_like(samples), np.empty_like(samples)
+            for j in (0, 1):
+                idx[j::2], ends[j::2] = _step_ends(space, trees[(a + j) % 2], samples[j::2], step)
+                froms[j::2] = trees[(a + j) % 2].nodes[idx[j::2]]
+            ok = space.valid(ends)
+            ok[ok] = space.segments_ok(froms[ok], ends[ok], resolution)
+            pending = [(int(i), e, bool(v)) for i, e, v in zip(idx, ends, ok)][::-1]
+        i, end, extends = pending.pop()
+        new = trees[a].add(end, i) if extends else -1
+        if new >= 0:
+            room = max_nodes - len(trees[0]) - len(trees[1])
+            last, reached = _connect(space, trees[b], trees[a].nodes[new], step, resolution, room)
+            if reached:
+                tips = {a: new, b: last}
+                found = trees[0].branch(tips[0])[::-1] + trees[1].branch(tips[1])[1:]
+                return found, len(trees[0]) + len(trees[1])
+        if progress is not None:
+            progress(done + len(trees[0]) + len(trees[1]), None)
+        a, b = b, a
+    return None, len(trees[0]) + len(trees[1])
+
+
+def _shortest(
+    space: PoseSpace, paths: list[np.ndarray], resolution: float, rng: np.random.Generator, deadline: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """Of ``paths``, the one shortest after :func:`simplify` with :data:`QUICK` shortcuts
+    tried: that path and its shortened one."""
+    if len(paths) == 1:
+        return paths[0], paths[0]
+    quick = [simplify(space, p, resolution, rng, deadline, tries=QUICK) for p in paths]
+    best = int(np.argmin([_length(q) for q in quick]))
+    return paths[best], quick[best]
 
 
 def _result(
