@@ -122,9 +122,7 @@ def _certified(ns: argparse.Namespace) -> int:
     robot = A.load(ns.robot, ns.cable_set)
     options: dict[str, Any] = {}
     if ns.box is not None:
-        if ns.condition != "wrench-feasible":
-            raise TautError("--box sets the wrench set of --condition wrench-feasible")
-        options["wrench_set"] = _box_set(robot, ns.box)
+        options["wrench_set"] = _box_set(robot, ns.box, ns.condition)
     with (
         get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor,
         progress_bar("certified workspace", wanted(ns.json)) as progress,
@@ -164,11 +162,14 @@ def _certified(ns: argparse.Namespace) -> int:
     return 0
 
 
-def _box_set(robot: Robot, text: str) -> BoxWrenchSet:
+def _box_set(robot: Robot, text: str, condition: str) -> BoxWrenchSet:
+    """``--box``: the wrench set of ``wrench-feasible``, one half-width per wrench component."""
     import numpy as np
 
     from taut.statics import BoxWrenchSet
 
+    if condition != "wrench-feasible":
+        raise TautError("--box sets the wrench set of --condition wrench-feasible")
     half = A.vector(text, "--box")
     m = robot.wrench_dim
     if half.size != m:
@@ -192,11 +193,7 @@ def run(ns: argparse.Namespace) -> int:
     robot = A.load(ns.robot, ns.cable_set)
     grid, resolution = _grid(ns.grid, robot.dimension)
     orientation = A.vector(ns.orientation, "--orientation") if ns.orientation is not None else None
-    wrench_set = None
-    if ns.box is not None:
-        if ns.condition != "wrench-feasible":
-            raise TautError("--box sets the wrench set of --condition wrench-feasible")
-        wrench_set = _box_set(robot, ns.box)
+    wrench_set = None if ns.box is None else _box_set(robot, ns.box, ns.condition)
     with (
         get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor,
         progress_bar("workspace", wanted(ns.json)) as progress,

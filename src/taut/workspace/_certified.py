@@ -293,24 +293,8 @@ def _cross(a: Interval, b: Interval) -> Interval:
     """Cross products along the last axis (a scalar ``(…, 1)`` in 2-D)."""
     if a.shape[-1] == 2:
         return a[..., 0:1] * b[..., 1:2] - a[..., 1:2] * b[..., 0:1]
-    return Interval(
-        np.stack(
-            [
-                (a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1]).lo,
-                (a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2]).lo,
-                (a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]).lo,
-            ],
-            -1,
-        ),
-        np.stack(
-            [
-                (a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1]).hi,
-                (a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2]).hi,
-                (a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]).hi,
-            ],
-            -1,
-        ),
-    )
+    parts = [a[..., i] * b[..., j] - a[..., j] * b[..., i] for i, j in ((1, 2), (2, 0), (0, 1))]
+    return Interval(np.stack([p.lo for p in parts], -1), np.stack([p.hi for p in parts], -1))
 
 
 def _enclosures(
@@ -496,7 +480,7 @@ def _tensions_proven(spec: _Spec, W: Interval, W_centre: np.ndarray, wrench: Int
     Cr = _apply(C, r)
     E = Interval(np.eye(m)) - _matmul(Interval(C), Wd)
     mag = np.maximum(np.abs(E.lo), np.abs(E.hi))
-    rho = _row_sums_up(mag)
+    rho = Interval(mag).sum_last().hi.max(axis=1)
     cr_mag = np.maximum(np.abs(Cr.lo), np.abs(Cr.hi)).max(axis=1)
     with np.errstate(divide="ignore", invalid="ignore"):
         X = (Interval(cr_mag) / (Interval(1.0) - Interval(rho))).hi
@@ -506,14 +490,6 @@ def _tensions_proven(spec: _Spec, W: Interval, W_centre: np.ndarray, wrench: Int
     td2 = Cr + _apply_interval(E, td)
     lo, hi = np.maximum(td.lo, td2.lo), np.minimum(td.hi, td2.hi)
     return ok & np.all(lo >= tmin[basis], axis=1) & np.all(hi <= tmax[basis], axis=1)
-
-
-def _row_sums_up(mag: np.ndarray) -> np.ndarray:
-    """Upper bounds of the row sums of a non-negative ``(B, m, m)`` array (outward rounded)."""
-    acc = Interval(mag[:, :, 0])
-    for j in range(1, mag.shape[2]):
-        acc = acc + Interval(mag[:, :, j])
-    return acc.hi.max(axis=1)
 
 
 def _apply(C: np.ndarray, r: Interval) -> Interval:
