@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 
 import taut
 from taut.errors import ArgumentError, GridSizeError, UnsupportedRobotError
-from taut.interval import Interval, zonotope_verdicts
+from taut.interval import Interval, separating_directions, zonotope_verdicts
 from taut.model import random_planar_robot, random_point_mass_robot
 from taut.parallel import ProcessExecutor
 from taut.statics import BoxWrenchSet, wrench_feasible
@@ -196,6 +196,30 @@ def test_zonotope_verdicts_hold_for_every_matrix_of_the_enclosure(seed, m, extra
         assert not point.any()
     if width == 0.0:  # a point matrix is always decided
         assert verdict != 0
+
+
+@settings(max_examples=80, deadline=None)
+@given(seed=st.integers(0, 2**31), m=st.sampled_from([2, 3, 6]), extra=st.integers(0, 3))
+def test_separating_directions_find_a_gap_exactly_where_the_point_test_fails(seed, m, extra):
+    """A positive gap where the LP of the point test finds the box of wrenches infeasible, a
+    negative one where it is balanced (random matrices have independent columns), and the gap
+    is the support of the required set beyond that of the zonotope along the direction."""
+    rng = np.random.default_rng(seed)
+    n = m + extra
+    W = rng.normal(size=(m, n))
+    tmin = rng.uniform(0, 1, n)
+    tmax = tmin + rng.uniform(0.5, 5, n)
+    w = rng.normal(size=m) * rng.choice([0.3, 3.0])
+    r = rng.uniform(0, 0.3, m)
+    direction, gap = separating_directions(W[None], tension_bounds=(tmin, tmax), wrench=w, radius=r)
+    feasible = wrench_feasible(W, BoxWrenchSet.around(np.zeros(m), r), tension_bounds=(tmin, tmax), wrench=w)
+    if abs(gap[0]) > 1e-9:
+        assert bool(feasible) == (gap[0] < 0)
+    c = direction[0]
+    along = c @ W
+    support = np.sum(np.where(along > 0, along * tmax, along * tmin))
+    assert np.isclose(np.linalg.norm(c), 1.0)
+    assert np.isclose(gap[0], -c @ w + np.abs(c) @ r - support)
 
 
 @settings(max_examples=200, deadline=None)

@@ -51,14 +51,23 @@ if TYPE_CHECKING:
     from taut.interval._krawczyk import Certificate, certified_step, certify, inflate, krawczyk, newton
     from taut.interval._linear import LinearFilter, interval_gauss, preconditioned_solve
     from taut.interval._precise import MAX_PRECISE_BOXES, precise_available, solve_precise
-    from taut.interval._zonotope import INSIDE, OUTSIDE, UNDECIDED, zonotope_verdicts
+    from taut.interval._zonotope import (
+        INSIDE,
+        OUTSIDE,
+        OUTSIDE_RTOL,
+        UNDECIDED,
+        separating_directions,
+        zonotope_verdicts,
+    )
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
     "INSIDE": "taut.interval._zonotope",
     "OUTSIDE": "taut.interval._zonotope",
+    "OUTSIDE_RTOL": "taut.interval._zonotope",
     "UNDECIDED": "taut.interval._zonotope",
     "zonotope_verdicts": "taut.interval._zonotope",
+    "separating_directions": "taut.interval._zonotope",
     "Interval": "taut.interval._arithmetic",
     "centred_form": "taut.interval._arithmetic",
     "Box": "taut.interval._branch_prune",
@@ -104,6 +113,7 @@ _LAZY = {
 __all__ = [
     "INSIDE",
     "OUTSIDE",
+    "OUTSIDE_RTOL",
     "UNDECIDED",
     "Box",
     "BranchAndPruneResult",
@@ -146,6 +156,7 @@ __all__ = [
     "sqrt",
     "variables",
     "zonotope_verdicts",
+    "separating_directions",
 ]
 
 __getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

@@ -134,6 +134,13 @@ class Interval:
         self.lo = np.broadcast_to(lo, shape).copy()
         self.hi = np.broadcast_to(hi, shape).copy()
 
+    @classmethod
+    def _own(cls, lo: np.ndarray, hi: np.ndarray) -> Interval:
+        """An interval of fresh float arrays of one shape, which nothing else holds: no copy."""
+        out = cls.__new__(cls)
+        out.lo, out.hi = lo, hi
+        return out
+
     # -- construction and inspection -------------------------------------------------
     @classmethod
     def point(cls, x: npt.ArrayLike) -> Interval:
@@ -198,7 +205,7 @@ class Interval:
         shape, (al, ah, bl, bh) = _flat(a.lo, a.hi, b.lo, b.hi)
         lo, hi = np.empty_like(al), np.empty_like(al)
         kernel(al, ah, bl, bh, lo, hi)
-        return Interval(lo.reshape(shape), hi.reshape(shape))
+        return Interval._own(lo.reshape(shape), hi.reshape(shape))
 
     def __add__(self, other: Interval | npt.ArrayLike) -> Interval:
         return self._binary(other, _add)
@@ -223,13 +230,13 @@ class Interval:
         return self._binary(other, _div, swap=True)
 
     def __neg__(self) -> Interval:
-        return Interval(-self.hi, -self.lo)
+        return Interval._own(-self.hi, -self.lo)
 
     def _unary(self, kernel: Callable[..., None], *args: int) -> Interval:
         shape, (al, ah) = _flat(self.lo, self.hi)
         lo, hi = np.empty_like(al), np.empty_like(al)
         kernel(al, ah, *args, lo, hi)
-        return Interval(lo.reshape(shape), hi.reshape(shape))
+        return Interval._own(lo.reshape(shape), hi.reshape(shape))
 
     def sqr(self) -> Interval:
         """The square ``{x² : x ∈ [lo, hi]}`` (tighter than ``x·x``, which allows negative products)."""

@@ -56,7 +56,7 @@ from numba import njit
 from taut.errors import ArgumentError
 from taut.interval._kernels import INF, add, mul, neg, sub, up
 
-__all__ = ["INSIDE", "OUTSIDE", "OUTSIDE_RTOL", "UNDECIDED", "zonotope_verdicts"]
+__all__ = ["INSIDE", "OUTSIDE", "OUTSIDE_RTOL", "UNDECIDED", "separating_directions", "zonotope_verdicts"]
 
 #: Verdicts of :func:`zonotope_verdicts`.
 INSIDE, OUTSIDE, UNDECIDED = 1, -1, 0
@@ -272,6 +272,119 @@ def _verdicts(
             out[b] = UNDECIDED
 
 
+@njit(cache=True, fastmath=False)
+def _null_vector(A: np.ndarray, out: np.ndarray) -> bool:
+    """The unit normal of the ``m − 1`` rows of ``A`` (reduced row echelon form with partial
+    pivoting); False when they are dependent to within 1e-12 of their largest entry."""
+    k, m = A.shape
+    scale = 0.0
+    for i in range(k):
+        for j in range(m):
+            scale = max(scale, abs(A[i, j]))
+    if scale == 0.0:
+        return False
+    pivots = np.empty(k, dtype=np.int64)
+    row = 0
+    for col in range(m):
+        if row == k:
+            break
+        best, value = row, abs(A[row, col])
+        for i in range(row + 1, k):
+            if abs(A[i, col]) > value:
+                best, value = i, abs(A[i, col])
+        if value <= 1e-12 * scale:
+            continue
+        for j in range(m):
+            A[row, j], A[best, j] = A[best, j], A[row, j]
+        p = A[row, col]
+        for j in range(m):
+            A[row, j] /= p
+        for i in range(k):
+            if i != row and A[i, col] != 0.0:
+                f = A[i, col]
+                for j in range(m):
+                    A[i, j] -= f * A[row, j]
+        pivots[row] = col
+        row += 1
+    if row < k:
+        return False
+    free = 0
+    for i in range(k):
+        if pivots[i] != free:
+            break
+        free += 1
+    norm = 1.0
+    out[free] = 1.0
+    for j in range(m):
+        if j != free:
+            out[j] = 0.0
+    for i in range(k):
+        out[pivots[i]] = -A[i, free]
+        norm += A[i, free] * A[i, free]
+    norm = np.sqrt(norm)
+    for j in range(m):
+        out[j] /= norm
+    return True
+
+
+@njit(cache=True, fastmath=False)
+def _separations(
+    W: np.ndarray,
+    tmin: np.ndarray,
+    tmax: np.ndarray,
+    o: np.ndarray,
+    c: np.ndarray,
+    r: np.ndarray,
+    V: np.ndarray,
+    combos: np.ndarray,
+    directions: np.ndarray,
+    gaps: np.ndarray,
+) -> None:
+    B, m, n = W.shape
+    k = m - 1
+    A = np.empty((k, m))
+    normal = np.empty(m)
+    along = np.empty(n)
+    for b in range(B):
+        best = -np.inf
+        for ci in range(combos.shape[0]):
+            for i in range(k):
+                for j in range(m):
+                    A[i, j] = W[b, j, combos[ci, i]]
+            if not _null_vector(A, normal):
+                continue
+            for i in range(n):
+                total = 0.0
+                for j in range(m):
+                    total += normal[j] * W[b, j, i]
+                along[i] = total
+            for sign in (1.0, -1.0):
+                # h_Z(s n) and the largest s n · (−(o + x)) over the required set
+                support = 0.0
+                for i in range(n):
+                    d = sign * along[i]
+                    support += d * tmax[i] if d > 0.0 else d * tmin[i]
+                need = 0.0
+                for j in range(m):
+                    need -= sign * normal[j] * o[b, j]
+                if V.shape[0] > 0:
+                    top = -np.inf
+                    for v in range(V.shape[0]):
+                        total = 0.0
+                        for j in range(m):
+                            total -= sign * normal[j] * V[v, j]
+                        top = max(top, total)
+                    need += top
+                else:
+                    for j in range(m):
+                        need += -sign * normal[j] * c[j] + abs(normal[j]) * r[j]
+                if need - support > best:
+                    best = need - support
+                    for j in range(m):
+                        directions[b, j] = sign * normal[j] + 0.0  # no −0.0
+        gaps[b] = best
+
+
 def _combinations(n: int, k: int) -> tuple[np.ndarray, np.ndarray]:
     """The ``k``-combinations of ``range(n)`` in lexicographic order and, for each, the first
     position that differs from the previous one (0 for the first)."""
@@ -434,3 +547,101 @@ def zonotope_verdicts(
         out,
     )
     return out
+
+
+def separating_directions(
+    W: npt.ArrayLike,
+    *,
+    tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike],
+    wrench: npt.ArrayLike | None = None,
+    centre: npt.ArrayLike | None = None,
+    radius: npt.ArrayLike | None = None,
+    vertices: npt.ArrayLike | None = None,
+) -> tuple[np.ndarray, np.ndarray]:
+    """For each structure matrix of a batch, the facet normal of its available wrench set
+    that the required set crosses farthest: the unit direction ``n`` of the largest
+    ``gap = max_{a ∈ A} n·a − h_Z(n)`` over the normals ``±n`` of every ``m − 1``
+    independent columns (hyperplane shifting, in floating point).
+
+    A positive gap means the required set ``A = −(o + S)`` is not balanced by this matrix:
+    some required wrench lies beyond the facet (Bouchard, Gosselin & Moore 2010).  A fixed
+    direction is a valid separation for every matrix near this one whose support stays below
+    the required value, which an interval evaluation can prove over a box of poses.
+
+    Parameters
+    ----------
+    W : array_like, shape (B, m, n)
+        Structure matrices, ``1 < m ≤ n``.
+    tension_bounds : (array_like, array_like)
+        ``τ_min`` (≥ 0) and ``τ_max`` (≥ ``τ_min``, may be ``inf``), shape (n,) each.
+    wrench : array_like, shape (B, m) or (m,), optional
+        The external wrench ``o`` (default 0).
+    centre, radius : array_like, shape (m,), optional
+        The box ``S`` of required wrenches relative to the external one (default the point 0).
+    vertices : array_like, shape (K, m), optional
+        Instead of a box: the vertices of a polytope ``S``.
+
+    Returns
+    -------
+    directions : ndarray, shape (B, m)
+        Unit directions (zeros where no ``m − 1`` columns are independent).
+    gaps : ndarray, shape (B,)
+        The largest gap along them (``-inf`` where no ``m − 1`` columns are independent):
+        positive where the required set is not balanced.
+
+    Raises
+    ------
+    ArgumentError
+        Arrays of inconsistent shapes, ``m < 2`` or ``n < m``, or bounds that are not
+        ``0 ≤ τ_min ≤ τ_max``.
+
+    References
+    ----------
+    .. [1] S. Bouchard, C. Gosselin, B. Moore, "On the ability of a cable-driven robot to
+       generate a prescribed set of wrenches", Journal of Mechanisms and Robotics 2(1), 2010.
+       (docs/references.bib: bouchard2010)
+
+    Examples
+    --------
+    Three planar cables at 0°, 120° and 240°, each within [1, 10] N: a weight of 2 N is
+    balanced (negative gap), one of 30 N is not, and the facet it crosses faces down:
+
+    >>> import numpy as np
+    >>> a = np.radians([0.0, 120.0, 240.0])
+    >>> W = np.array([np.cos(a), np.sin(a)])[None]
+    >>> bounds = (np.ones(3), np.full(3, 10.0))
+    >>> _, gap = separating_directions(W, tension_bounds=bounds, wrench=[0.0, -2.0])
+    >>> bool(gap[0] < 0)
+    True
+    >>> n, gap = separating_directions(W, tension_bounds=bounds, wrench=[0.0, -30.0])
+    >>> bool(gap[0] > 0), n.round(3)
+    (True, array([[0., 1.]]))
+    """
+    try:
+        Wf = np.ascontiguousarray(W, dtype=float)
+    except (TypeError, ValueError):
+        raise ArgumentError("the structure matrices must be an array of numbers") from None
+    if Wf.ndim != 3 or not np.all(np.isfinite(Wf)):
+        raise ArgumentError(f"W must be finite with shape (B, m, n), got shape {Wf.shape}")
+    B, m, n = Wf.shape
+    if not 1 < m <= n:
+        raise ArgumentError(f"the matrices need 2 ≤ m ≤ n (rows ≤ columns), got m = {m}, n = {n}")
+    tmin = np.ascontiguousarray(np.broadcast_to(np.asarray(tension_bounds[0], float), (n,)))
+    tmax = np.ascontiguousarray(np.broadcast_to(np.asarray(tension_bounds[1], float), (n,)))
+    if not (np.all(np.isfinite(tmin)) and np.all(tmin >= 0) and not np.isnan(tmax).any() and np.all(tmax >= tmin)):
+        raise ArgumentError("tension bounds must be 0 ≤ τ_min ≤ τ_max (τ_max may be inf), τ_min finite")
+    o = np.zeros(m) if wrench is None else np.asarray(wrench, float)
+    if o.shape not in ((m,), (B, m)) or not np.all(np.isfinite(o)):
+        raise ArgumentError(f"wrench must be finite with shape ({m},) or ({B}, {m})")
+    c = np.zeros(m) if centre is None else np.asarray(centre, float)
+    r = np.zeros(m) if radius is None else np.asarray(radius, float)
+    if c.shape != (m,) or r.shape != (m,) or not (np.all(np.isfinite(c)) and np.all(np.isfinite(r)) and np.all(r >= 0)):
+        raise ArgumentError(f"centre and radius must be finite of shape ({m},), the radius ≥ 0")
+    V = np.zeros((0, m)) if vertices is None else np.ascontiguousarray(vertices, dtype=float)
+    if V.ndim != 2 or V.shape[1] != m or not np.all(np.isfinite(V)):
+        raise ArgumentError(f"vertices must be finite of shape (K, {m})")
+    combos, _ = _combinations(n, m - 1)
+    directions = np.zeros((B, m))
+    gaps = np.empty(B)
+    _separations(Wf, tmin, tmax, np.ascontiguousarray(np.broadcast_to(o, (B, m))), c, r, V, combos, directions, gaps)
+    return directions, gaps
