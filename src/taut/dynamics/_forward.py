@@ -33,6 +33,7 @@ import numpy.typing as npt
 from taut._results import Result
 from taut.dynamics._platform import (
     CONVENTION_FACTORS,
+    PLANAR,
     SPATIAL,
     PlatformDynamics,
     as_rates,
@@ -40,7 +41,7 @@ from taut.dynamics._platform import (
     platform_dynamics,
     positive,
 )
-from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError
+from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError, UnsupportedRobotError
 from taut.kinematics import as_poses, robot_stiffness, tension_from_stretch
 from taut.model import MAX_MAGNITUDE, Robot
 
@@ -88,6 +89,8 @@ class ForwardDynamicsResult(Result):
         The tensions that acted [N] (elastic cables: from the stretch).
     slack : ndarray of bool, shape (K, n)
         Elastic cables not stretched (always False for given tensions).
+    beyond_limits : ndarray of bool, shape (K, n_joints)
+        Joint coordinates outside their ``limits`` (the dynamics has no joint stops).
     method : str
         The integrator.
     evaluations : int
@@ -112,6 +115,7 @@ class ForwardDynamicsResult(Result):
     velocity: np.ndarray  #: ``(K, dof)`` pose rates ``q̇``
     tensions: np.ndarray  #: ``(K, n)`` the tensions that acted (elastic cables: from the stretch)
     slack: np.ndarray  #: ``(K, n)`` bool: elastic cables not stretched (always False for given tensions)
+    beyond_limits: np.ndarray  #: ``(K, n_joints)`` bool: joint coordinates outside their limits
     method: str
     evaluations: int  #: right-hand side evaluations
     elapsed_s: float = 0.0  #: wall-clock seconds of the integration
@@ -139,19 +143,26 @@ def kernel_model(robot: Robot) -> KernelModel:
     if hit is not None and hit[0] is robot:
         return hit[1]
     from taut.dynamics._kernels import FLOAT_LAYOUT
+    from taut.dynamics._tree import CABLE_COLUMNS, PLATFORM_FLOATS
 
     pd = platform_dynamics(robot)
     axes, T = CONVENTION_FACTORS[pd.orientation]
     Tm = np.array(T, dtype=float)
     straight = not robot.swivel_cables
+    if robot.n_joints and not straight:
+        raise UnsupportedRobotError(
+            f"{robot.name}: the dynamics of a jointed platform takes cables from fixed exit points, "
+            "not through swivelling pulleys"
+        )
     n = robot.n_cables if straight else 0
-    cables = np.zeros((n, 7))
+    cables = np.zeros((n, CABLE_COLUMNS))
     if straight:
         d = pd.dimension
         cables[:, :d], cables[:, 3 : 3 + d] = robot.exits, robot.anchors
+        cables[:, 7] = robot.cable_bodies
         if all(c.stiffness is not None for c in robot.cables):
             cables[:, 6] = robot_stiffness(robot)
-    fp = np.zeros(46)
+    fp = np.zeros(PLATFORM_FLOATS)
     fp[FLOAT_LAYOUT["mass"]] = pd.mass
     fp[FLOAT_LAYOUT["com"]][: pd.dimension] = pd.com
     fp[FLOAT_LAYOUT["inertia"]] = pd.inertia.ravel()
@@ -162,6 +173,8 @@ def kernel_model(robot: Robot) -> KernelModel:
     fp[FLOAT_LAYOUT["T"]] = Tm.ravel()
     fp[FLOAT_LAYOUT["Tinv"]] = np.linalg.inv(Tm).ravel()
     ip = np.array([pd.kind, *axes], dtype=np.int64)
+    if robot.n_joints:
+        ip, fp = _tree_arrays(robot, pd, ip, fp)
     model = KernelModel(pd, (ip, fp, cables), straight, robot.n_cables)
     if len(_MODELS) >= 16:
         _MODELS.pop(next(iter(_MODELS)))
@@ -169,14 +182,53 @@ def kernel_model(robot: Robot) -> KernelModel:
     return model
 
 
+def _tree_arrays(robot: Robot, pd: PlatformDynamics, ip: np.ndarray, fp: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``ip`` and ``fp`` of a jointed platform for :mod:`taut.dynamics._tree`: the platform's,
+    then its bodies' joints, masses and inertias (:func:`taut.dynamics._jointed.body_inertia`
+    names a body without them)."""
+    from taut.dynamics._jointed import body_inertia
+    from taut.dynamics._tree import BODY_FLOATS, JOINTED
+
+    if pd.kind not in (PLANAR, SPATIAL):
+        raise UnsupportedRobotError(f"{robot.name}: the dynamics of jointed bodies needs a rigid platform")
+    inertia = body_inertia(robot)
+    index = {"platform": 0} | {b.name: k for k, b in enumerate(robot.platform.bodies, 1)}
+    bodies = robot.platform.bodies
+    parents = [index[b.parent] for b in bodies]
+    revolute = [int(b.joint.kind == "revolute") for b in bodies]
+    extra = np.zeros((len(bodies), BODY_FLOATS))
+    d = robot.dimension
+    for k, body in enumerate(bodies):
+        axis = np.zeros(3)
+        if revolute[k] and d == 2:
+            axis[2] = 1.0
+        else:
+            axis[:d] = np.asarray(body.joint.axis, dtype=float)
+            axis /= np.linalg.norm(axis)
+        extra[k, :3] = axis
+        if body.joint.origin is not None:
+            extra[k, 3 : 3 + d] = body.joint.origin
+        extra[k, 6] = inertia.masses[k + 1]
+        extra[k, 7:10] = inertia.coms[k + 1]
+        extra[k, 10:19] = inertia.inertias[k + 1].ravel()
+        extra[k, 19:22] = inertia.forces[k + 1]
+    ip = np.array([JOINTED, *ip[1:4], pd.kind, len(bodies), *parents, *revolute], dtype=np.int64)
+    return ip, np.concatenate([fp, extra.ravel()])
+
+
 def _status_error(robot: Robot, status: np.ndarray, where: str) -> TautError:
     from taut.dynamics._kernels import GIMBAL_LOCK
+    from taut.dynamics._tree import SINGULAR_INERTIA
 
     k = int(np.flatnonzero(status)[0])
     if status[k] == GIMBAL_LOCK:
         return SingularConfigurationError(
             f"{robot.name}: {where} {k + 1}: the orientation is at the gimbal lock of the "
             f"{robot.orientation} convention (the angle rates are undefined)"
+        )
+    if status[k] == SINGULAR_INERTIA:
+        return SingularConfigurationError(
+            f"{robot.name}: {where} {k + 1}: the mass matrix is singular (a body without inertia about its joint axis)"
         )
     return InfeasiblePoseError(f"{robot.name}: {where} {k + 1}: a cable has zero length")
 
@@ -300,7 +352,10 @@ def acceleration(
     """The pose accelerations ``q̈`` of the platform under given cable tensions.
 
     The solution of ``M q̈ + C q̇ + g = Jᵀ (W τ + w)`` (compiled Newton–Euler), with ``w`` an
-    external wrench besides the robot's own weight.
+    external wrench besides the robot's own weight.  On a platform carrying jointed bodies
+    ``q`` holds the joint coordinates too, ``W`` is the cable part of the jointed structure
+    matrix (:func:`taut.kinematics.jointed_structure_matrix`) and ``w`` a wrench on the
+    platform followed by joint forces (joint actuators; zero: passive joints).
 
     Parameters
     ----------
@@ -325,7 +380,7 @@ def acceleration(
     InfeasiblePoseError
         Where a cable has zero length.
     UnsupportedRobotError
-        For a robot without mass or inertia, or a jointed platform.
+        For a robot without mass or inertia (a jointed platform: any of its bodies, named).
 
     References
     ----------
@@ -543,6 +598,13 @@ def forward_dynamics(
     Exactly one input drives the cables: ``tensions(t)``, or ``lengths(t)``, the commanded
     unstretched lengths of elastic cables (each cable's ``stiffness`` is its ``EA``; a slack
     cable pulls nothing).
+
+    A platform carrying jointed bodies (``platform.bodies``, prismatic and revolute joints in
+    a tree) moves in its pose and joint coordinates under the tree's dynamics
+    (:mod:`taut.dynamics._tree`; every body needs a mass and an inertia).  Its joints are
+    passive unless ``wrench(t)`` gives joint forces after the platform wrench (joint
+    actuators).  The model has no joint stops: a joint coordinate that leaves its ``limits``
+    is reported in :attr:`ForwardDynamicsResult.beyond_limits`, not stopped.
 
     Parameters
     ----------
@@ -786,5 +848,7 @@ def _result(
     nfev: int,
 ) -> ForwardDynamicsResult:
     slack = taus <= 0 if elastic else np.zeros(taus.shape, dtype=bool)
-    t, q, v, tau, sl = (np.array(a) for a in (time, Q, V, taus, slack))
-    return ForwardDynamicsResult(t, q, v, tau, sl, method=method, evaluations=nfev)
+    limits, joints = robot.joint_limits, Q[:, robot.wrench_dim :]
+    beyond = (joints < limits[:, 0]) | (joints > limits[:, 1])
+    t, q, v, tau, sl, out = (np.array(a) for a in (time, Q, V, taus, slack, beyond))
+    return ForwardDynamicsResult(t, q, v, tau, sl, out, method=method, evaluations=nfev)

@@ -160,7 +160,8 @@ def required_wrench(
     TautError
         Bad shapes or values (:class:`~taut.errors.PoseError` for poses and rates).
     UnsupportedRobotError
-        A robot without mass (or inertia, for a rigid platform), or a jointed platform.
+        A robot without mass (or inertia, for a rigid platform; a jointed platform: any of its
+        bodies, named).
 
     References
     ----------
@@ -251,7 +252,15 @@ def inverse_dynamics(
     """Cable tensions along a sampled motion ``(q, q̇, q̈)``.
 
     Samples without an admissible distribution get zero tensions, ``feasible = False`` and a
-    reason.  The wrenches, structure matrices and, for ``closed-form``, the tensions are
+    reason.
+
+    On a platform carrying jointed bodies the samples hold the joint coordinates too (within
+    their ``limits``: :func:`taut.kinematics.as_poses` refuses a sample beyond them), the
+    wrench is the generalized force ``A τ`` in the twist coordinates (a wrench about ``p``,
+    then one force or torque per joint; :mod:`taut.dynamics._tree`) and the distribution
+    solves it with the cable columns ``A`` of the jointed structure matrix
+    (:func:`taut.kinematics.jointed_structure_matrix`): the joints are passive, moved by the
+    cables acting across them.  The wrenches, structure matrices and, for ``closed-form``, the tensions are
     computed by a compiled kernel; the samples it does not accept, and every sample of the
     other methods, go to :func:`taut.statics.solve_tensions`, so that ``feasible`` means what
     it means there.
@@ -283,7 +292,8 @@ def inverse_dynamics(
     TautError
         Bad shapes or values, an unknown method, bad tension bounds or times.
     UnsupportedRobotError
-        A robot without mass (or inertia, for a rigid platform), or a jointed platform.
+        A robot without mass (or inertia, for a rigid platform; a jointed platform: any of its
+        bodies, named).
     WrappedCableError
         A sample where a cable of a variable-structure robot, taken as a straight line, meets
         one of its obstacles (its wrapped length depends on the motion).

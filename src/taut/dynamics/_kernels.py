@@ -17,7 +17,11 @@ Robots whose cables leave through swivelling pulleys pass their cable wrench in 
 no cables (:mod:`taut.dynamics._forward` computes it with :mod:`taut.kinematics._inverse`).
 
 Status per state: 0 success, 1 the rate matrix is singular (gimbal lock), 2 a cable has zero
-length (no direction).
+length (no direction), 3 the mass matrix of a jointed platform is not positive definite.
+
+A platform carrying jointed bodies has its own kernels (:mod:`taut.dynamics._tree`), to which
+:func:`acceleration_one` and :func:`wrench_one` hand its states, so that every loop here
+(RK4 steps, inverse-dynamics samples, control updates) runs it too.
 
 References
 ----------
@@ -32,14 +36,10 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from taut.dynamics._tree import GIMBAL_LOCK, GIMBAL_TOL, JOINTED, OK, ZERO_LENGTH, tree_acceleration, tree_wrench
 from taut.geometry import rotate_about_axis
 from taut.kinematics import MIN_LENGTH
 from taut.model import MAX_MAGNITUDE
-
-#: Below this ``|det U|`` the rate matrix counts as singular (gimbal lock).
-GIMBAL_TOL = 1e-9
-
-OK, GIMBAL_LOCK, ZERO_LENGTH = 0, 1, 2
 
 #: Slices of the packed float parameters ``fp`` of the kernels.
 FLOAT_LAYOUT = {
@@ -100,8 +100,11 @@ def acceleration_one(
     packed in three arrays (few arguments: a call's cost is mostly its arguments' dispatch):
     ``ip = (kind, axis₁, axis₂, axis₃)``, ``fp = (m, c, I, I⁻¹, force, moment, T, T⁻¹)``
     (see :data:`FLOAT_LAYOUT`) and ``cables (n, 7)`` = exit point, anchor, ``EA``.  ``vec
-    (VECTORS, 3)`` and ``mat (MATRICES, 3, 3)`` are work space."""
+    (VECTORS, 3)`` and ``mat (MATRICES, 3, 3)`` are work space.  A jointed platform
+    (``ip[0] == JOINTED``) goes to :func:`taut.dynamics._tree.tree_acceleration`."""
     kind = ip[0]
+    if kind == JOINTED:
+        return tree_acceleration(ip, fp, cables, elastic, q, qd, u, w, qdd, tau)
     mass = fp[0]
     com, force, moment = fp[1:4], fp[22:25], fp[25:28]
     inertia, inertia_inv = fp[4:13].reshape((3, 3)), fp[13:22].reshape((3, 3))
@@ -313,8 +316,11 @@ def wrench_one(
     """The wrench ``W τ`` the cables must apply for the sample ``(q, q̇, q̈)`` into ``wrench``
     (the rate of momentum about ``p`` minus the weight, the constant load and ``w_ext``;
     Newton–Euler through the centre of mass) and the structure matrix of the straight cables
-    into ``W (dof, n)``; returns the status (:data:`ZERO_LENGTH` for a cable without direction)."""
+    into ``W (dof, n)``; returns the status (:data:`ZERO_LENGTH` for a cable without direction).
+    A jointed platform goes to :func:`taut.dynamics._tree.tree_wrench`."""
     kind = ip[0]
+    if kind == JOINTED:
+        return tree_wrench(ip, fp, cables, q, qd, qdd, w_ext, wrench, W)
     mass = fp[0]
     com, force, moment = fp[1:4], fp[22:25], fp[25:28]
     inertia = fp[4:13].reshape((3, 3))

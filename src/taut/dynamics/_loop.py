@@ -187,6 +187,7 @@ class LoopModel:
         (array([ 0.     , -0.04905,  0.     ]), array([ 0.   , -0.981,  0.   ]))
         """
         from taut.dynamics._kernels import GIMBAL_LOCK, OK, rk4_steps
+        from taut.dynamics._tree import SINGULAR_INERTIA
 
         b = self.buffers
         try:
@@ -204,6 +205,10 @@ class LoopModel:
         if status == GIMBAL_LOCK:
             raise SingularConfigurationError(
                 f"{self.robot.name}: the step from {np.asarray(q).tolist()} reaches the gimbal lock"
+            )
+        if status == SINGULAR_INERTIA:
+            raise SingularConfigurationError(
+                f"{self.robot.name}: the step from {np.asarray(q).tolist()} reaches a singular mass matrix"
             )
         if status != OK:
             raise InfeasiblePoseError(
