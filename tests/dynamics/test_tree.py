@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from jointed_robots import adjustable, branching, planar
+from jointed_robots import SPIDERBOT, adjustable, branching, planar
 
 from taut.dynamics import (
     WrenchSteps,
@@ -24,10 +24,13 @@ from taut.dynamics import (
 )
 from taut.errors import PoseError, UnsupportedRobotError
 from taut.kinematics import body_frames, jointed_structure_matrix
+from taut.model import load_robot
 from taut.motion import trajectory_from_waypoints
 from taut.statics import METHODS
 
 ROBOTS = {"adjustable-8cable": adjustable, "branching tree": branching, "planar slider and arm": planar}
+#: CASPR's SpiderBot: a 6-joint arm on a platform whose cables leave through swivelling pulleys.
+WITH_PULLEYS = {"SpiderBot_UR3": lambda: load_robot(SPIDERBOT)}
 
 
 def random_states(robot, n, rng, spread=0.3, tilt=0.5):
@@ -46,12 +49,12 @@ def cable_columns(robot, q):
     return jointed_structure_matrix(robot, q)[..., : robot.n_cables]
 
 
-@pytest.mark.parametrize("name", list(ROBOTS))
+@pytest.mark.parametrize("name", list(ROBOTS | WITH_PULLEYS))
 def test_accelerations_solve_the_equations_of_motion(name):
     """``M q̈ + h = Tᵀ (A τ + w)`` with taut's NumPy ``M``, ``h`` and ``T`` and the cable
-    columns of the jointed structure matrix, ``w`` a platform wrench and joint forces;
-    measured 1e-15 relative."""
-    robot = ROBOTS[name]()
+    columns of the jointed structure matrix (through the pulleys' tangent points, SpiderBot),
+    ``w`` a platform wrench and joint forces; measured 1e-15 relative."""
+    robot = (ROBOTS | WITH_PULLEYS)[name]()
     rng = np.random.default_rng(50)
     q, qd = random_states(robot, 40, rng)
     tau = rng.uniform(10, 200, (40, robot.n_cables))

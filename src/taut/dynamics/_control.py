@@ -532,6 +532,10 @@ def simulate_control(
     """Simulate ``robot`` tracking ``motion`` under computed-torque control with the tension
     distribution in the loop, from ``t = 0`` to ``motion.duration``.
 
+    Cables may leave through swivelling pulleys: their lengths hold the wound arc and they
+    pull along the tangent from the moving tangent point (Pott 2018), in the controller's
+    model and in the plant; the pulleys' own inertia and friction are neglected.
+
     Parameters
     ----------
     robot : Robot
@@ -577,8 +581,7 @@ def simulate_control(
         :data:`MAX_STEPS` updates; kept samples beyond :data:`MAX_RESULT_BYTES` (a larger
         ``decimate`` keeps fewer).
     UnsupportedRobotError
-        A robot without mass or inertia (a jointed platform: any of its bodies, named), cables
-        through swivelling pulleys.
+        A robot without mass or inertia (a jointed platform: any of its bodies, named).
     InfeasiblePoseError
         No admissible tensions at the start (nothing to hold).
     IntegrationError
@@ -597,6 +600,8 @@ def simulate_control(
     .. [2] D. Lau, J. Eden, Y. Tan, D. Oetomo, "CASPR: A comprehensive cable-robot analysis
        and simulation platform for the research of cable-driven parallel robots", IROS, 2016.
        (docs/references.bib: lau2016)
+    .. [3] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+       Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
 
     Examples
     --------

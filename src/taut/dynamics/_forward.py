@@ -124,12 +124,11 @@ class ForwardDynamicsResult(Result):
 
 @dataclass(frozen=True)
 class KernelModel:
-    """The compiled kernels' arguments for one robot (straight cables, or none when the
-    cable wrench is computed outside: swivelling pulleys)."""
+    """The compiled kernels' arguments for one robot (:mod:`taut.dynamics._kernels`; cables
+    straight or through swivelling pulleys, platforms with or without jointed bodies)."""
 
     pd: PlatformDynamics
     args: tuple[np.ndarray, np.ndarray, np.ndarray]
-    straight: bool
     n: int
 
 
@@ -148,20 +147,17 @@ def kernel_model(robot: Robot) -> KernelModel:
     pd = platform_dynamics(robot)
     axes, T = CONVENTION_FACTORS[pd.orientation]
     Tm = np.array(T, dtype=float)
-    straight = not robot.swivel_cables
-    if robot.n_joints and not straight:
-        raise UnsupportedRobotError(
-            f"{robot.name}: the dynamics of a jointed platform takes cables from fixed exit points, "
-            "not through swivelling pulleys"
-        )
-    n = robot.n_cables if straight else 0
-    cables = np.zeros((n, CABLE_COLUMNS))
-    if straight:
-        d = pd.dimension
-        cables[:, :d], cables[:, 3 : 3 + d] = robot.exits, robot.anchors
-        cables[:, 7] = robot.cable_bodies
-        if all(c.stiffness is not None for c in robot.cables):
-            cables[:, 6] = robot_stiffness(robot)
+    d = pd.dimension
+    cables = np.zeros((robot.n_cables, CABLE_COLUMNS))
+    cables[:, :d], cables[:, 3 : 3 + d] = robot.exits, robot.anchors
+    cables[:, 7] = robot.cable_bodies
+    if all(c.stiffness is not None for c in robot.cables):
+        cables[:, 6] = robot_stiffness(robot)
+    if robot.swivel_cables:
+        from taut.kinematics import swivel_parameters
+
+        which, axes_, radii = swivel_parameters(robot)
+        cables[which, 8 : 8 + d], cables[which, 11] = axes_, radii
     fp = np.zeros(PLATFORM_FLOATS)
     fp[FLOAT_LAYOUT["mass"]] = pd.mass
     fp[FLOAT_LAYOUT["com"]][: pd.dimension] = pd.com
@@ -175,7 +171,7 @@ def kernel_model(robot: Robot) -> KernelModel:
     ip = np.array([pd.kind, *axes], dtype=np.int64)
     if robot.n_joints:
         ip, fp = _tree_arrays(robot, pd, ip, fp)
-    model = KernelModel(pd, (ip, fp, cables), straight, robot.n_cables)
+    model = KernelModel(pd, (ip, fp, cables), robot.n_cables)
     if len(_MODELS) >= 16:
         _MODELS.pop(next(iter(_MODELS)))
     _MODELS[id(robot)] = (robot, model)
@@ -230,7 +226,10 @@ def _status_error(robot: Robot, status: np.ndarray, where: str) -> TautError:
         return SingularConfigurationError(
             f"{robot.name}: {where} {k + 1}: the mass matrix is singular (a body without inertia about its joint axis)"
         )
-    return InfeasiblePoseError(f"{robot.name}: {where} {k + 1}: a cable has zero length")
+    return InfeasiblePoseError(
+        f"{robot.name}: {where} {k + 1}: a cable has no direction (zero length, or its anchor on a swivel axis "
+        "or on its pulley)"
+    )
 
 
 def _inputs(
@@ -306,22 +305,6 @@ def _checked_inputs(
     return np.ascontiguousarray(arr), vel, cab, w, single
 
 
-def _cable_wrench(robot: Robot, q: np.ndarray, u: np.ndarray, elastic: bool) -> tuple[np.ndarray, np.ndarray]:
-    """``W τ (N, dof)`` and the tensions ``(N, n)`` through :func:`taut.kinematics.ik_status`
-    (cables through swivelling pulleys)."""
-    from taut.kinematics import CABLE_OK, ik_status
-
-    ik, status = ik_status(robot, q)
-    bad = (status != CABLE_OK).any(axis=1)
-    if bad.any():
-        k = int(np.flatnonzero(bad)[0])
-        raise InfeasiblePoseError(
-            f"{robot.name}: state {k + 1}: a cable has no direction (zero length or on its pulley)"
-        )
-    tau = tension_from_stretch(ik.lengths, u, robot_stiffness(robot)) if elastic else u
-    return np.einsum("kij,kj->ki", ik.structure_matrix, tau), tau
-
-
 def _accelerate(
     robot: Robot, model: KernelModel, q: np.ndarray, qd: np.ndarray, u: np.ndarray, w: np.ndarray, elastic: bool
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -331,14 +314,9 @@ def _accelerate(
     N = q.shape[0]
     qdd = np.empty((N, robot.pose_size))
     status = np.empty(N, np.int64)
-    if model.straight:
-        tau = np.empty((N, model.n))
-        accelerations(*model.args, elastic, q, qd, u, w, qdd, tau, status)
-        return qdd, tau, status
-    wc, tau = _cable_wrench(robot, q, u, elastic)
-    none = np.zeros((N, 0))
-    accelerations(*model.args, False, q, qd, none, w + wc, qdd, none, status)
-    return qdd, np.asarray(tau, dtype=float), status
+    tau = np.empty((N, model.n))
+    accelerations(*model.args, elastic, q, qd, u, w, qdd, tau, status)
+    return qdd, tau, status
 
 
 def acceleration(
@@ -541,23 +519,11 @@ def _rk4(
     dt: float,
     elastic: bool,
 ) -> tuple[np.ndarray, np.ndarray]:
-    status = np.zeros(q.shape[0], np.int64)
-    if model.straight:
-        from taut.dynamics._kernels import rk4_steps
+    from taut.dynamics._kernels import rk4_steps
 
-        qn, vn = np.empty_like(q), np.empty_like(qd)
-        rk4_steps(*model.args, elastic, q, qd, u, w, dt, qn, vn, status)
-    else:
-        a1, _, s1 = _accelerate(robot, model, q, qd, u, w, elastic)
-        v2 = qd + 0.5 * dt * a1
-        a2, _, s2 = _accelerate(robot, model, q + 0.5 * dt * qd, v2, u, w, elastic)
-        v3 = qd + 0.5 * dt * a2
-        a3, _, s3 = _accelerate(robot, model, q + 0.5 * dt * v2, v3, u, w, elastic)
-        v4 = qd + dt * a3
-        a4, _, s4 = _accelerate(robot, model, q + dt * v3, v4, u, w, elastic)
-        status = s1 | s2 | s3 | s4
-        qn = q + dt / 6 * (qd + 2 * v2 + 2 * v3 + v4)
-        vn = qd + dt / 6 * (a1 + 2 * a2 + 2 * a3 + a4)
+    status = np.zeros(q.shape[0], np.int64)
+    qn, vn = np.empty_like(q), np.empty_like(qd)
+    rk4_steps(*model.args, elastic, q, qd, u, w, dt, qn, vn, status)
     if status.any():
         raise _status_error(robot, status, "state")
     return qn, vn

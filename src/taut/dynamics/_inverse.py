@@ -203,7 +203,7 @@ def _samples(
     closed_form: bool,
     cables: bool = True,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Compiled wrenches ``(N, dof)``, structure matrices ``(N, dof, n)`` of straight cables,
+    """Compiled wrenches ``(N, dof)``, structure matrices ``(N, dof, n)``,
     closed-form tensions ``(N, n)`` and the kernel status ``(N,)`` (see
     :func:`taut.dynamics._kernels.inverse_samples`)."""
     from taut.dynamics._kernels import inverse_samples
@@ -350,14 +350,10 @@ def inverse_dynamics(
     code = np.full(N, STATUSES.index("undefined"), dtype=np.int64)
     for start in range(0, N, CHUNK):
         part = slice(start, min(start + CHUNK, N))
-        closed = method == "closed-form" and model.straight
+        closed = method == "closed-form"
         wr, W, tau, st = _samples(model, arr[part], vel[part], acc[part], w[part], bounds, closed)
         need[part] = wr
         ok = st != ZERO_LENGTH
-        if not model.straight:
-            from taut.kinematics import batch_structure_matrices
-
-            _, W, ok = batch_structure_matrices(robot, arr[part])
         done = ok & (st == 0) if closed else np.zeros_like(ok)
         if closed:
             tensions[part][done], feasible[part][done], code[part][done] = tau[done], True, STATUSES.index("optimal")

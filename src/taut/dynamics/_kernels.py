@@ -2,7 +2,7 @@
 
 One pass per state computes the rotation, the angular velocity ``ω = Σₖ uₖ ṫₖ`` and
 ``Ė φ̇ = Σₖ (Σ_{j<k} uⱼ ṫⱼ) × uₖ ṫₖ`` from the carried axes ``uₖ`` of the convention
-(:mod:`taut.geometry._rates`), the cable wrench ``W τ`` from straight cables (Rushton 2022,
+(:mod:`taut.geometry._rates`), the cable wrench ``W τ`` from the cables (Rushton 2022,
 Eqs. 2.1 and 2.8; elastic cables: Eq. 2.15 with a slack cable pulling nothing), and solves
 the Newton–Euler equations about ``p`` in closed form through the centre of mass: with
 ``F`` and ``N`` the total force and moment about ``p`` and ``r = R c``,
@@ -13,8 +13,9 @@ then ``φ̈ = T⁻¹ U⁻¹ (α − Ė φ̇)`` with ``E = U T`` (Siciliano et al
 equations as :mod:`taut.dynamics._platform` in the other direction, without forming or
 factorizing ``M``: a state costs about a microsecond, which is what a control loop needs.
 
-Robots whose cables leave through swivelling pulleys pass their cable wrench in ``w`` and
-no cables (:mod:`taut.dynamics._forward` computes it with :mod:`taut.kinematics._inverse`).
+A cable that leaves through a swivelling pulley pulls along its tangent, and its length
+holds the wound arc (:func:`taut.dynamics._tree.cable_path`; the pulley's inertia is
+neglected).
 
 Status per state: 0 success, 1 the rate matrix is singular (gimbal lock), 2 a cable has zero
 length (no direction), 3 the mass matrix of a jointed platform is not positive definite.
@@ -36,9 +37,17 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from taut.dynamics._tree import GIMBAL_LOCK, GIMBAL_TOL, JOINTED, OK, ZERO_LENGTH, tree_acceleration, tree_wrench
+from taut.dynamics._tree import (
+    GIMBAL_LOCK,
+    GIMBAL_TOL,
+    JOINTED,
+    OK,
+    ZERO_LENGTH,
+    cable_path,
+    tree_acceleration,
+    tree_wrench,
+)
 from taut.geometry import rotate_about_axis
-from taut.kinematics import MIN_LENGTH
 from taut.model import MAX_MAGNITUDE
 
 #: Slices of the packed float parameters ``fp`` of the kernels.
@@ -164,16 +173,14 @@ def acceleration_one(
         _matvec(R, cables[i, 3:6], arm)
         for j in range(3):
             b[j] = p[j] + arm[j]
-            v[j] = cables[i, j] - b[j]
-        length = np.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
-        if length < MIN_LENGTH:
+        length = cable_path(cables[i], b, v)
+        if length < 0.0:
             return ZERO_LENGTH
         if elastic:
             tau[i] = max(cables[i, 6] * (length - u[i]) / u[i], 0.0)
         else:
             tau[i] = u[i]
         for j in range(3):
-            v[j] /= length
             F[j] += tau[i] * v[j]
         _cross(arm, v, mom)
         for j in range(3):
@@ -315,7 +322,7 @@ def wrench_one(
 ) -> int:
     """The wrench ``W τ`` the cables must apply for the sample ``(q, q̇, q̈)`` into ``wrench``
     (the rate of momentum about ``p`` minus the weight, the constant load and ``w_ext``;
-    Newton–Euler through the centre of mass) and the structure matrix of the straight cables
+    Newton–Euler through the centre of mass) and the structure matrix of the cables
     into ``W (dof, n)``; returns the status (:data:`ZERO_LENGTH` for a cable without direction).
     A jointed platform goes to :func:`taut.dynamics._tree.tree_wrench`."""
     kind = ip[0]
@@ -404,12 +411,9 @@ def wrench_one(
         _matvec(R, cables[i, 3:6], arm)
         for j in range(3):
             b[j] = p[j] + arm[j]
-            v[j] = cables[i, j] - b[j]
-        length = np.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
-        if length < MIN_LENGTH:
+        length = cable_path(cables[i], b, v)
+        if length < 0.0:
             return ZERO_LENGTH
-        for j in range(3):
-            v[j] /= length
         for j in range(d):
             W[j, i] = v[j]
         if kind != 0:

@@ -27,7 +27,8 @@ Robot data, packed for the kernels (:func:`taut.dynamics._forward.kernel_model`)
 ``fp`` the platform's floats (:data:`PLATFORM_FLOATS`, the layout of
 :data:`taut.dynamics._kernels.FLOAT_LAYOUT`) then :data:`BODY_FLOATS` per body (joint axis
 and origin in the parent frame, mass, centre of mass, inertia, constant force), and
-``cables (n, CABLE_COLUMNS)``: exit point, anchor, ``EA``, the body the anchor is on.
+``cables (n, CABLE_COLUMNS)``: exit point, anchor, ``EA``, the body the anchor is on, and
+the axis and radius of a swivelling pulley (:func:`cable_path`).
 
 Status per state: :data:`OK`, :data:`GIMBAL_LOCK` (the rate matrix is singular),
 :data:`ZERO_LENGTH` (a cable without direction), :data:`SINGULAR_INERTIA` (``M_X`` is not
@@ -40,7 +41,9 @@ References
    (docs/references.bib: featherstone2008)
 .. [2] B. Siciliano, L. Sciavicco, L. Villani, G. Oriolo, "Robotics: Modelling, Planning and
    Control", Springer, 2009, §7.1–7.2. (docs/references.bib: siciliano2009)
-.. [3] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
+.. [3] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+   Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+.. [4] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
    Bachelor thesis, Czech Technical University in Prague, 2020, §3.3, Eqs. 3.3.7–3.3.12.
    (docs/references.bib: lieskovsky2020)
 """
@@ -62,7 +65,9 @@ __all__ = [
     "OK",
     "PLATFORM_FLOATS",
     "SINGULAR_INERTIA",
+    "SWIVEL_TOL",
     "ZERO_LENGTH",
+    "cable_path",
     "tree_acceleration",
     "tree_wrench",
 ]
@@ -76,8 +81,12 @@ PLATFORM_FLOATS = 46
 #: Per body: joint axis (3, unit, parent frame), joint origin (3), mass, centre of mass (3),
 #: inertia about it (9, body frame), constant force at it (3, fixed frame).
 BODY_FLOATS = 22
-#: Columns of ``cables``: exit point (3), anchor (3, in its body's frame), ``EA``, body index.
-CABLE_COLUMNS = 8
+#: Columns of ``cables``: exit point (3), anchor (3, in its body's frame), ``EA``, body index,
+#: swivel axis (3, unit) and pulley radius (0: a fixed exit point).
+CABLE_COLUMNS = 12
+#: Relative tolerance of a swivelling pulley's singular configurations (the anchor on the
+#: swivel axis, or on the pulley circle), as :mod:`taut.kinematics._swivel` takes them.
+SWIVEL_TOL = 1e-9
 
 #: Below this ``|det U|`` the rate matrix counts as singular (gimbal lock).
 GIMBAL_TOL = 1e-9
@@ -114,6 +123,58 @@ def _rodrigues(k: np.ndarray, angle: float, out: np.ndarray) -> None:
     out[0, 0], out[0, 1], out[0, 2] = c + k[0] * k[0] * C, k[0] * k[1] * C - k[2] * s, k[0] * k[2] * C + k[1] * s
     out[1, 0], out[1, 1], out[1, 2] = k[1] * k[0] * C + k[2] * s, c + k[1] * k[1] * C, k[1] * k[2] * C - k[0] * s
     out[2, 0], out[2, 1], out[2, 2] = k[2] * k[0] * C - k[1] * s, k[2] * k[1] * C + k[0] * s, c + k[2] * k[2] * C
+
+
+@njit(cache=True, nogil=True)
+def cable_path(cable: np.ndarray, anchor: np.ndarray, u: np.ndarray) -> float:
+    """The length of a cable (a row of ``cables``) to the anchor ``b`` in the fixed frame, and
+    into ``u`` its unit direction at the anchor; −1 where it has none (a zero length, an anchor
+    on the swivel axis or on the pulley).
+
+    A straight cable runs to its exit point ``a``: ``l = ‖a − b‖``, ``u = (a − b)/l``.  A cable
+    through a swivelling pulley (axis ``k``, radius ``r``, running onto it at ``a``) wraps the
+    arc ``β`` and leaves at the tangent point ``C``: with ``v = b − a``, ``h = v·k``, ``w = v −
+    h k``, ``d = ‖w‖``, ``e = w/d``, ``x = d − r`` and the free length ``l_f = √(x² + h² −
+    r²)``, ``β = atan2(x, h) + atan2(r, l_f)`` in ``[0, 2π)``, ``C = a + r e + r (−cos β e +
+    sin β k)``, ``l = r β + l_f`` and ``u = (C − b)/l_f``, since ``∂l/∂b = (b − C)/l_f`` (Pott
+    2018; :mod:`taut.kinematics._swivel`).  The pulley's own inertia is neglected."""
+    r = cable[11]
+    if r == 0.0:
+        for j in range(3):
+            u[j] = cable[j] - anchor[j]
+        length = np.sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2])
+        if length < MIN_LENGTH:
+            return -1.0
+        for j in range(3):
+            u[j] /= length
+        return length
+    k = cable[8:11]
+    h, vv = 0.0, 0.0
+    for j in range(3):
+        v = anchor[j] - cable[j]
+        h += v * k[j]
+        vv += v * v
+    ww = 0.0
+    for j in range(3):
+        w = anchor[j] - cable[j] - h * k[j]
+        ww += w * w
+        u[j] = w
+    dist = np.sqrt(ww)
+    scale = r + np.sqrt(vv)
+    if dist <= SWIVEL_TOL * scale:
+        return -1.0
+    x = dist - r
+    free = np.sqrt(max(x * x + h * h - r * r, 0.0))
+    if free <= SWIVEL_TOL * scale or free < MIN_LENGTH:
+        return -1.0
+    wrap = np.arctan2(x, h) + np.arctan2(r, free)
+    if wrap < 0.0:
+        wrap += 2.0 * np.pi
+    c, s = np.cos(wrap), np.sin(wrap)
+    for j in range(3):
+        e = u[j] / dist
+        u[j] = (cable[j] + r * e + r * (-c * e + s * k[j]) - anchor[j]) / free
+    return r * wrap + free
 
 
 @njit(cache=True, nogil=True)
@@ -294,13 +355,10 @@ def tree_terms(
         body = int(cables[i, 7])
         _mv(rot[body], cables[i, 3:6], anchor)
         anchor += pos[body]
-        for j in range(3):
-            v3[j] = cables[i, j] - anchor[j]
-        length = np.sqrt(v3[0] * v3[0] + v3[1] * v3[1] + v3[2] * v3[2])
-        if length < MIN_LENGTH:
+        length = cable_path(cables[i], anchor, v3)
+        if length < 0.0:
             return ZERO_LENGTH
         lengths[i] = length
-        v3 /= length
         for j in range(d):
             A[j, i] = v3[j]
         _cross(anchor - pos[0], v3, v4)
