@@ -9,18 +9,15 @@ from taut.model import load_robot, robot_from_dict, robot_to_dict
 SPIDERBOT = Path(__file__).parent / "model" / "fixtures" / "caspr" / "real" / "SpiderBot_UR3_bodies.xml"
 
 
+#: adjustable-8cable with assumed masses and inertias (Lieskovský 2020 gives none).
+ADJUSTABLE = Path(__file__).parent / "model" / "fixtures" / "taut" / "adjustable_weighted.yaml"
+
+
 def adjustable():
     """adjustable-8cable with assumed masses (Lieskovský 2020 gives none): a 20 kg lower body
-    and an 8 kg upper body, their centres of mass off the joint axis, with products of inertia."""
-    robot = taut.example("adjustable-8cable")
-    upper = robot.platform.bodies[0].model_copy(
-        update={"mass": 8.0, "com": (0.1, -0.05, 0.2), "inertia": (3.0, 5.0, 7.0, 0.2, -0.1, 0.3)}
-    )
-    platform = robot.platform.model_copy(
-        update={"mass": 20.0, "inertia": (9.0, 4.0, 12.0, -0.5, 0.4, 0.2), "wrench_point": (0.05, 0.1, 0.6)}
-    )
-    platform = platform.model_copy(update={"bodies": (upper,)})
-    return robot.model_copy(update={"platform": platform})
+    and an 8 kg upper body, their centres of mass off the joint axis, with products of inertia
+    (the fixture :data:`ADJUSTABLE`)."""
+    return load_robot(ADJUSTABLE)
 
 
 def branching():

@@ -35,7 +35,7 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
         (
             "bench_dynamics.py",
             ["--samples", "2000", "--loop", "20", "--seconds", "0.5"],
-            "same tensions as the statics path: True",
+            "same tensions as the NumPy path: True",
         ),
         (
             "bench_dgp_random.py",

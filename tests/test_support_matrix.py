@@ -74,7 +74,11 @@ SUSPENDED_PULLEYS = Subject(
     "x=2.756745,y=3.986807,z=5.487456",
     True,
 )
+#: adjustable-8cable with assumed masses: its passive prismatic joint is moved by the cables
+#: acting across it, where the chain fixture's two joints have no cable able to hold them.
+ADJUSTABLE = Subject(fixture("taut/adjustable_weighted.yaml"), (5, 5, 1.5, 0, 0, 0, 1.5), "", "")
 OVERRIDES = {
+    ("taut simulate", "jointed"): ADJUSTABLE,
     ("taut fk", "spatial rigid"): SUSPENDED,
     ("taut igp", "spatial rigid"): SUSPENDED,
     ("taut fk", "swivelling pulleys"): SUSPENDED_PULLEYS,

@@ -313,9 +313,9 @@ def test_bad_input(spatial, no_inertia):
 
 
 def test_swivelling_pulleys(spatial):
-    """Cables through swivelling pulleys take the NumPy path of the kinematics: the
-    acceleration solves the Lagrange form with their structure matrix, RK4 agrees with
-    DOP853, and inverse dynamics balances the required wrench."""
+    """Cables through swivelling pulleys in the compiled kernels: the acceleration solves the
+    Lagrange form with the structure matrix of the kinematics (tangent points), RK4 agrees
+    with DOP853, and inverse dynamics balances the required wrench."""
     from taut.dynamics import bias_forces, generalized_forces, mass_matrix, required_wrench
     from taut.kinematics import structure_matrix
 

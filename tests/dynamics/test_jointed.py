@@ -10,7 +10,6 @@ from jointed_robots import ROBOTS, adjustable
 from taut.dynamics import (
     bias_forces,
     coriolis_matrix,
-    forward_dynamics,
     generalized_forces,
     gravity_forces,
     mass_matrix,
@@ -228,10 +227,3 @@ def test_coriolis_matrix_factorizes_the_bias_with_a_skew_symmetric_remainder(nam
         Mdot = (mass_matrix(robot, q + step * qd) - mass_matrix(robot, q - step * qd)) / (2 * step)
         N = Mdot - 2 * C
         assert np.abs(N + N.T).max() < 1e-8 * np.abs(N).max()
-
-
-def test_forward_dynamics_of_jointed_platforms_is_refused():
-    robot = adjustable()
-    q = random_poses(robot, 1, np.random.default_rng(44))[0]
-    with pytest.raises(UnsupportedRobotError, match="jointed"):
-        forward_dynamics(robot, q, np.zeros(q.size), 0.01, tensions=lambda t: np.full(robot.n_cables, 50.0))

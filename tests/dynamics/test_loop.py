@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from taut.dynamics import inverse_dynamics, loop_model, rk4_step
-from taut.errors import SingularConfigurationError, TautError, UnsupportedRobotError
+from taut.errors import SingularConfigurationError, TautError
 
 
 def test_step_and_tensions_match_the_checked_functions(spatial, rng):
@@ -43,12 +43,3 @@ def test_errors(spatial):
         lm.step(np.array([0, 0, 0, 0, np.pi / 2, 0]), np.zeros(6), np.full(8, 10.0), 1e-3)
     with pytest.raises(TautError, match="unknown"):
         loop_model(spatial, method="magic")
-    swivel = spatial.model_copy(
-        update={
-            "cables": tuple(
-                c.model_copy(update={"swivel": {"axis": (0, 0, 1), "radius": 0.02}}) for c in spatial.cables
-            )
-        }
-    )
-    with pytest.raises(UnsupportedRobotError, match="swivel"):
-        loop_model(swivel)

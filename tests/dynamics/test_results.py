@@ -57,6 +57,7 @@ def test_forward_dynamics_result(spatial):
         "velocity",
         "tensions",
         "slack",
+        "beyond_limits",
         "method",
         "evaluations",
         "elapsed_s",
@@ -65,6 +66,7 @@ def test_forward_dynamics_result(spatial):
     same(d["times"], np.arange(11) * 1e-3)
     same(d["poses"], res.poses)
     np.testing.assert_array_equal(d["poses"][0], q0)
+    assert d["beyond_limits"] == [[]] * 11  # no joints
     assert d["complete"] is True and d["elapsed_s"] > 0 and d["evaluations"] == 40 and d["method"] == "RK4"
 
 

@@ -63,12 +63,15 @@ RESULT_KEYS = {
     "upper_tension_margin": "upper_margin",
     "distribution_failures": "failures",
     "feasible": "all_feasible",
+    "joint_limit_violations": "joint_limit_violations",
+    "first_joint_limit_time": "first_joint_limit_time",
 }
 
 DISTURBANCE_HELP = (
     "external wrench on the platform, unknown to the controller: T0:W (a step from T0 s on) or "
     "T0:T1:W (from T0 to T1 s), W the wrench's components comma-separated (forces [N], then "
-    "moments [N m] about the reference point, fixed frame); several joined by ';' add up. "
+    "moments [N m] about the reference point, fixed frame; on a jointed platform optionally "
+    "followed by one force or torque per joint); several joined by ';' add up. "
     "Example: '1:5,0,0,0,0,0;2:2.5:0,0,-20,0,0,0'"
 )
 
@@ -105,11 +108,15 @@ def disturbance(robot: Robot, text: str) -> WrenchSteps:
         if not (start >= 0 and end > start):
             raise TautError(f"--disturbance: times must satisfy 0 <= T0 < T1, got {part!r}")
         w = A.vector(fields[-1], "--disturbance wrench")
-        if w.size != robot.wrench_dim:
+        if w.size not in (robot.wrench_dim, robot.pose_size):
+            joints = f" (or {robot.pose_size} with its joint forces)" if robot.n_joints else ""
             raise TautError(
-                f"--disturbance: {robot.name} takes a wrench of {robot.wrench_dim} components, got {w.size} in {part!r}"
+                f"--disturbance: {robot.name} takes a wrench of {robot.wrench_dim} components{joints}, "
+                f"got {w.size} in {part!r}"
             )
-        steps.append((start, end, tuple(float(x) for x in w)))
+        # a wrench on the platform alone leaves the joints unloaded
+        full = tuple(float(x) for x in w) + (0.0,) * (robot.pose_size - w.size)
+        steps.append((start, end, full))
     return WrenchSteps(tuple(steps))
 
 
@@ -210,6 +217,11 @@ def run(ns: argparse.Namespace) -> int:
         errs = ", ".join(f"{p}={e:.3g}" for p, e in zip(robot.pose_names, d["tracking_error_max"]))
         con.print(f"max tracking error: {errs} (m, rad)")
         con.print(f"min tension margin: {d['min_tension_margin']:.4g} N; slack events: {d['slack_events']}")
+        if d["joint_limit_violations"]:
+            con.print(
+                f"[bold red]joints beyond their limits[/] at {d['joint_limit_violations']} updates "
+                f"(first at t = {d['first_joint_limit_time']:g} s)"
+            )
         if d["feasible"]:
             con.print("tension distribution admissible at every update")
         else:

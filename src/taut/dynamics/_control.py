@@ -24,6 +24,13 @@ order (about 4 times smaller at twice the rate).  Measuring ``a`` rather than as
 commanded one keeps the loop's static gain: a constant disturbance is met by ``K_p e``
 exactly.
 
+A platform carrying jointed bodies (prismatic and revolute joints in a tree) is controlled
+in its pose and joint coordinates alike: ``M̂``, ``ĥ`` are the tree's
+(:mod:`taut.dynamics._tree`), the wrench is the generalized force in the twist coordinates
+and the distribution solves it with the cable columns of the jointed structure matrix, its
+joints passive (moved by the cables acting across them).  The plant has no joint stops: an
+update at which a joint coordinate is outside its limits is counted and its time reported.
+
 Angle errors take the short way: the orientation components of ``e`` are wrapped into
 ``[−π, π)``.  The error is thus measured in the pose coordinates the law is written in, so
 that with an exact model and no disturbance it obeys ``ë + K_d ė + K_p e = 0`` (up to the
@@ -269,6 +276,11 @@ class ControlResult(Result):
         Updates at which the distribution failed (the last admissible tensions were held).
     first_failure_time : float or None
         Time of the first failed update [s], or None.
+    joint_limit_violations : int
+        Updates at which a joint coordinate of the simulated motion is outside its
+        ``limits`` (the plant has no joint stops: the violation is reported, not prevented).
+    first_joint_limit_time : float or None
+        Time of the first such update [s], or None.
 
     Examples
     --------
@@ -311,6 +323,8 @@ class ControlResult(Result):
     slack_events: int  #: updates at which some commanded tension is at or below its minimum
     failures: int  #: updates at which the distribution failed (the last tensions were held)
     first_failure_time: float | None  #: time of the first failed update [s], or None
+    joint_limit_violations: int  #: updates at which a joint coordinate is outside its limits
+    first_joint_limit_time: float | None  #: time of the first such update [s], or None
     elapsed_s: float = 0.0  #: wall-clock seconds of the simulation
     complete: bool = True  #: the simulation reached the end of the motion
 
@@ -349,8 +363,9 @@ def _slack(tensions: np.ndarray, tmin: np.ndarray) -> np.ndarray:
 
 
 def with_mass_error(robot: Robot, error: float) -> Robot:
-    """``robot`` with its platform's mass and inertia scaled by ``1 + error``: a controller's
-    model with a mass error (``error = 0.1``: a model 10 % too heavy).
+    """``robot`` with its platform's mass and inertia scaled by ``1 + error``, and those of its
+    jointed bodies: a controller's model with a mass error (``error = 0.1``: a model 10 % too
+    heavy).
 
     Parameters
     ----------
@@ -383,6 +398,15 @@ def with_mass_error(robot: Robot, error: float) -> Robot:
     fields: dict[str, object] = {"mass": plat.mass * scale}
     if plat.inertia is not None:
         fields["inertia"] = tuple(x * scale for x in plat.inertia)
+    bodies = []
+    for body in plat.bodies:
+        scaled: dict[str, object] = {}
+        if body.mass is not None:
+            scaled["mass"] = body.mass * scale
+        if body.inertia is not None:
+            scaled["inertia"] = tuple(x * scale for x in body.inertia)
+        bodies.append(body.model_copy(update=scaled))
+    fields["bodies"] = tuple(bodies)
     return robot.model_copy(update={"platform": plat.model_copy(update=fields)})
 
 
@@ -508,6 +532,10 @@ def simulate_control(
     """Simulate ``robot`` tracking ``motion`` under computed-torque control with the tension
     distribution in the loop, from ``t = 0`` to ``motion.duration``.
 
+    Cables may leave through swivelling pulleys: their lengths hold the wound arc and they
+    pull along the tangent from the moving tangent point (Pott 2018), in the controller's
+    model and in the plant; the pulleys' own inertia and friction are neglected.
+
     Parameters
     ----------
     robot : Robot
@@ -553,7 +581,7 @@ def simulate_control(
         :data:`MAX_STEPS` updates; kept samples beyond :data:`MAX_RESULT_BYTES` (a larger
         ``decimate`` keeps fewer).
     UnsupportedRobotError
-        A robot without mass or inertia, a jointed platform, cables through swivelling pulleys.
+        A robot without mass or inertia (a jointed platform: any of its bodies, named).
     InfeasiblePoseError
         No admissible tensions at the start (nothing to hold).
     IntegrationError
@@ -572,6 +600,8 @@ def simulate_control(
     .. [2] D. Lau, J. Eden, Y. Tan, D. Oetomo, "CASPR: A comprehensive cable-robot analysis
        and simulation platform for the research of cable-driven parallel robots", IROS, 2016.
        (docs/references.bib: lau2016)
+    .. [3] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+       Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
 
     Examples
     --------
@@ -653,8 +683,10 @@ def simulate_control(
     err_max, err_sq = np.zeros(dof), np.zeros(dof)
     pos_max = rot_max = 0.0
     lower = upper = math.inf
-    slack_events = failures = 0
+    slack_events = failures = beyond = 0
     first_failure: float | None = None
+    first_beyond: float | None = None
+    limits, m = robot.joint_limits, robot.wrench_dim
     v_prev = np.zeros(dof)
     for k0 in range(0, K + 1, BLOCK_UPDATES):
         k1 = min(k0 + BLOCK_UPDATES, K + 1)
@@ -734,6 +766,11 @@ def simulate_control(
         failures += bad.size
         if first_failure is None and bad.size:
             first_failure = float(tb[bad[0]])
+        joints = Q[new, m:]
+        out = np.flatnonzero(((joints < limits[:, 0]) | (joints > limits[:, 1])).any(axis=1))
+        beyond += out.size
+        if first_beyond is None and out.size:
+            first_beyond = float(tb[out[0]])
         keep = np.flatnonzero((g[new] % every == 0) | (g[new] == K))
         rows = keep + new.start
         at = slice(stored, stored + keep.size)
@@ -779,5 +816,7 @@ def simulate_control(
         slack_events=slack_events,
         failures=failures,
         first_failure_time=first_failure,
+        joint_limit_violations=beyond,
+        first_joint_limit_time=first_beyond,
         elapsed_s=perf_counter() - started,
     )

@@ -33,6 +33,7 @@ import numpy.typing as npt
 from taut._results import Result
 from taut.dynamics._platform import (
     CONVENTION_FACTORS,
+    PLANAR,
     SPATIAL,
     PlatformDynamics,
     as_rates,
@@ -40,7 +41,7 @@ from taut.dynamics._platform import (
     platform_dynamics,
     positive,
 )
-from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError
+from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError, UnsupportedRobotError
 from taut.kinematics import as_poses, robot_stiffness, tension_from_stretch
 from taut.model import MAX_MAGNITUDE, Robot
 
@@ -88,6 +89,8 @@ class ForwardDynamicsResult(Result):
         The tensions that acted [N] (elastic cables: from the stretch).
     slack : ndarray of bool, shape (K, n)
         Elastic cables not stretched (always False for given tensions).
+    beyond_limits : ndarray of bool, shape (K, n_joints)
+        Joint coordinates outside their ``limits`` (the dynamics has no joint stops).
     method : str
         The integrator.
     evaluations : int
@@ -112,6 +115,7 @@ class ForwardDynamicsResult(Result):
     velocity: np.ndarray  #: ``(K, dof)`` pose rates ``q̇``
     tensions: np.ndarray  #: ``(K, n)`` the tensions that acted (elastic cables: from the stretch)
     slack: np.ndarray  #: ``(K, n)`` bool: elastic cables not stretched (always False for given tensions)
+    beyond_limits: np.ndarray  #: ``(K, n_joints)`` bool: joint coordinates outside their limits
     method: str
     evaluations: int  #: right-hand side evaluations
     elapsed_s: float = 0.0  #: wall-clock seconds of the integration
@@ -120,12 +124,11 @@ class ForwardDynamicsResult(Result):
 
 @dataclass(frozen=True)
 class KernelModel:
-    """The compiled kernels' arguments for one robot (straight cables, or none when the
-    cable wrench is computed outside: swivelling pulleys)."""
+    """The compiled kernels' arguments for one robot (:mod:`taut.dynamics._kernels`; cables
+    straight or through swivelling pulleys, platforms with or without jointed bodies)."""
 
     pd: PlatformDynamics
     args: tuple[np.ndarray, np.ndarray, np.ndarray]
-    straight: bool
     n: int
 
 
@@ -139,19 +142,23 @@ def kernel_model(robot: Robot) -> KernelModel:
     if hit is not None and hit[0] is robot:
         return hit[1]
     from taut.dynamics._kernels import FLOAT_LAYOUT
+    from taut.dynamics._tree import CABLE_COLUMNS, PLATFORM_FLOATS
 
     pd = platform_dynamics(robot)
     axes, T = CONVENTION_FACTORS[pd.orientation]
     Tm = np.array(T, dtype=float)
-    straight = not robot.swivel_cables
-    n = robot.n_cables if straight else 0
-    cables = np.zeros((n, 7))
-    if straight:
-        d = pd.dimension
-        cables[:, :d], cables[:, 3 : 3 + d] = robot.exits, robot.anchors
-        if all(c.stiffness is not None for c in robot.cables):
-            cables[:, 6] = robot_stiffness(robot)
-    fp = np.zeros(46)
+    d = pd.dimension
+    cables = np.zeros((robot.n_cables, CABLE_COLUMNS))
+    cables[:, :d], cables[:, 3 : 3 + d] = robot.exits, robot.anchors
+    cables[:, 7] = robot.cable_bodies
+    if all(c.stiffness is not None for c in robot.cables):
+        cables[:, 6] = robot_stiffness(robot)
+    if robot.swivel_cables:
+        from taut.kinematics import swivel_parameters
+
+        which, axes_, radii = swivel_parameters(robot)
+        cables[which, 8 : 8 + d], cables[which, 11] = axes_, radii
+    fp = np.zeros(PLATFORM_FLOATS)
     fp[FLOAT_LAYOUT["mass"]] = pd.mass
     fp[FLOAT_LAYOUT["com"]][: pd.dimension] = pd.com
     fp[FLOAT_LAYOUT["inertia"]] = pd.inertia.ravel()
@@ -162,15 +169,52 @@ def kernel_model(robot: Robot) -> KernelModel:
     fp[FLOAT_LAYOUT["T"]] = Tm.ravel()
     fp[FLOAT_LAYOUT["Tinv"]] = np.linalg.inv(Tm).ravel()
     ip = np.array([pd.kind, *axes], dtype=np.int64)
-    model = KernelModel(pd, (ip, fp, cables), straight, robot.n_cables)
+    if robot.n_joints:
+        ip, fp = _tree_arrays(robot, pd, ip, fp)
+    model = KernelModel(pd, (ip, fp, cables), robot.n_cables)
     if len(_MODELS) >= 16:
         _MODELS.pop(next(iter(_MODELS)))
     _MODELS[id(robot)] = (robot, model)
     return model
 
 
+def _tree_arrays(robot: Robot, pd: PlatformDynamics, ip: np.ndarray, fp: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``ip`` and ``fp`` of a jointed platform for :mod:`taut.dynamics._tree`: the platform's,
+    then its bodies' joints, masses and inertias (:func:`taut.dynamics._jointed.body_inertia`
+    names a body without them)."""
+    from taut.dynamics._jointed import body_inertia
+    from taut.dynamics._tree import BODY_FLOATS, JOINTED
+
+    if pd.kind not in (PLANAR, SPATIAL):
+        raise UnsupportedRobotError(f"{robot.name}: the dynamics of jointed bodies needs a rigid platform")
+    inertia = body_inertia(robot)
+    index = {"platform": 0} | {b.name: k for k, b in enumerate(robot.platform.bodies, 1)}
+    bodies = robot.platform.bodies
+    parents = [index[b.parent] for b in bodies]
+    revolute = [int(b.joint.kind == "revolute") for b in bodies]
+    extra = np.zeros((len(bodies), BODY_FLOATS))
+    d = robot.dimension
+    for k, body in enumerate(bodies):
+        axis = np.zeros(3)
+        if revolute[k] and d == 2:
+            axis[2] = 1.0
+        else:
+            axis[:d] = np.asarray(body.joint.axis, dtype=float)
+            axis /= np.linalg.norm(axis)
+        extra[k, :3] = axis
+        if body.joint.origin is not None:
+            extra[k, 3 : 3 + d] = body.joint.origin
+        extra[k, 6] = inertia.masses[k + 1]
+        extra[k, 7:10] = inertia.coms[k + 1]
+        extra[k, 10:19] = inertia.inertias[k + 1].ravel()
+        extra[k, 19:22] = inertia.forces[k + 1]
+    ip = np.array([JOINTED, *ip[1:4], pd.kind, len(bodies), *parents, *revolute], dtype=np.int64)
+    return ip, np.concatenate([fp, extra.ravel()])
+
+
 def _status_error(robot: Robot, status: np.ndarray, where: str) -> TautError:
     from taut.dynamics._kernels import GIMBAL_LOCK
+    from taut.dynamics._tree import SINGULAR_INERTIA
 
     k = int(np.flatnonzero(status)[0])
     if status[k] == GIMBAL_LOCK:
@@ -178,7 +222,14 @@ def _status_error(robot: Robot, status: np.ndarray, where: str) -> TautError:
             f"{robot.name}: {where} {k + 1}: the orientation is at the gimbal lock of the "
             f"{robot.orientation} convention (the angle rates are undefined)"
         )
-    return InfeasiblePoseError(f"{robot.name}: {where} {k + 1}: a cable has zero length")
+    if status[k] == SINGULAR_INERTIA:
+        return SingularConfigurationError(
+            f"{robot.name}: {where} {k + 1}: the mass matrix is singular (a body without inertia about its joint axis)"
+        )
+    return InfeasiblePoseError(
+        f"{robot.name}: {where} {k + 1}: a cable has no direction (zero length, or its anchor on a swivel axis "
+        "or on its pulley)"
+    )
 
 
 def _inputs(
@@ -254,22 +305,6 @@ def _checked_inputs(
     return np.ascontiguousarray(arr), vel, cab, w, single
 
 
-def _cable_wrench(robot: Robot, q: np.ndarray, u: np.ndarray, elastic: bool) -> tuple[np.ndarray, np.ndarray]:
-    """``W τ (N, dof)`` and the tensions ``(N, n)`` through :func:`taut.kinematics.ik_status`
-    (cables through swivelling pulleys)."""
-    from taut.kinematics import CABLE_OK, ik_status
-
-    ik, status = ik_status(robot, q)
-    bad = (status != CABLE_OK).any(axis=1)
-    if bad.any():
-        k = int(np.flatnonzero(bad)[0])
-        raise InfeasiblePoseError(
-            f"{robot.name}: state {k + 1}: a cable has no direction (zero length or on its pulley)"
-        )
-    tau = tension_from_stretch(ik.lengths, u, robot_stiffness(robot)) if elastic else u
-    return np.einsum("kij,kj->ki", ik.structure_matrix, tau), tau
-
-
 def _accelerate(
     robot: Robot, model: KernelModel, q: np.ndarray, qd: np.ndarray, u: np.ndarray, w: np.ndarray, elastic: bool
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -279,14 +314,9 @@ def _accelerate(
     N = q.shape[0]
     qdd = np.empty((N, robot.pose_size))
     status = np.empty(N, np.int64)
-    if model.straight:
-        tau = np.empty((N, model.n))
-        accelerations(*model.args, elastic, q, qd, u, w, qdd, tau, status)
-        return qdd, tau, status
-    wc, tau = _cable_wrench(robot, q, u, elastic)
-    none = np.zeros((N, 0))
-    accelerations(*model.args, False, q, qd, none, w + wc, qdd, none, status)
-    return qdd, np.asarray(tau, dtype=float), status
+    tau = np.empty((N, model.n))
+    accelerations(*model.args, elastic, q, qd, u, w, qdd, tau, status)
+    return qdd, tau, status
 
 
 def acceleration(
@@ -300,7 +330,10 @@ def acceleration(
     """The pose accelerations ``q̈`` of the platform under given cable tensions.
 
     The solution of ``M q̈ + C q̇ + g = Jᵀ (W τ + w)`` (compiled Newton–Euler), with ``w`` an
-    external wrench besides the robot's own weight.
+    external wrench besides the robot's own weight.  On a platform carrying jointed bodies
+    ``q`` holds the joint coordinates too, ``W`` is the cable part of the jointed structure
+    matrix (:func:`taut.kinematics.jointed_structure_matrix`) and ``w`` a wrench on the
+    platform followed by joint forces (joint actuators; zero: passive joints).
 
     Parameters
     ----------
@@ -325,7 +358,7 @@ def acceleration(
     InfeasiblePoseError
         Where a cable has zero length.
     UnsupportedRobotError
-        For a robot without mass or inertia, or a jointed platform.
+        For a robot without mass or inertia (a jointed platform: any of its bodies, named).
 
     References
     ----------
@@ -486,23 +519,11 @@ def _rk4(
     dt: float,
     elastic: bool,
 ) -> tuple[np.ndarray, np.ndarray]:
-    status = np.zeros(q.shape[0], np.int64)
-    if model.straight:
-        from taut.dynamics._kernels import rk4_steps
+    from taut.dynamics._kernels import rk4_steps
 
-        qn, vn = np.empty_like(q), np.empty_like(qd)
-        rk4_steps(*model.args, elastic, q, qd, u, w, dt, qn, vn, status)
-    else:
-        a1, _, s1 = _accelerate(robot, model, q, qd, u, w, elastic)
-        v2 = qd + 0.5 * dt * a1
-        a2, _, s2 = _accelerate(robot, model, q + 0.5 * dt * qd, v2, u, w, elastic)
-        v3 = qd + 0.5 * dt * a2
-        a3, _, s3 = _accelerate(robot, model, q + 0.5 * dt * v2, v3, u, w, elastic)
-        v4 = qd + dt * a3
-        a4, _, s4 = _accelerate(robot, model, q + dt * v3, v4, u, w, elastic)
-        status = s1 | s2 | s3 | s4
-        qn = q + dt / 6 * (qd + 2 * v2 + 2 * v3 + v4)
-        vn = qd + dt / 6 * (a1 + 2 * a2 + 2 * a3 + a4)
+    status = np.zeros(q.shape[0], np.int64)
+    qn, vn = np.empty_like(q), np.empty_like(qd)
+    rk4_steps(*model.args, elastic, q, qd, u, w, dt, qn, vn, status)
     if status.any():
         raise _status_error(robot, status, "state")
     return qn, vn
@@ -543,6 +564,13 @@ def forward_dynamics(
     Exactly one input drives the cables: ``tensions(t)``, or ``lengths(t)``, the commanded
     unstretched lengths of elastic cables (each cable's ``stiffness`` is its ``EA``; a slack
     cable pulls nothing).
+
+    A platform carrying jointed bodies (``platform.bodies``, prismatic and revolute joints in
+    a tree) moves in its pose and joint coordinates under the tree's dynamics
+    (:mod:`taut.dynamics._tree`; every body needs a mass and an inertia).  Its joints are
+    passive unless ``wrench(t)`` gives joint forces after the platform wrench (joint
+    actuators).  The model has no joint stops: a joint coordinate that leaves its ``limits``
+    is reported in :attr:`ForwardDynamicsResult.beyond_limits`, not stopped.
 
     Parameters
     ----------
@@ -786,5 +814,7 @@ def _result(
     nfev: int,
 ) -> ForwardDynamicsResult:
     slack = taus <= 0 if elastic else np.zeros(taus.shape, dtype=bool)
-    t, q, v, tau, sl = (np.array(a) for a in (time, Q, V, taus, slack))
-    return ForwardDynamicsResult(t, q, v, tau, sl, method=method, evaluations=nfev)
+    limits, joints = robot.joint_limits, Q[:, robot.wrench_dim :]
+    beyond = (joints < limits[:, 0]) | (joints > limits[:, 1])
+    t, q, v, tau, sl, out = (np.array(a) for a in (time, Q, V, taus, slack, beyond))
+    return ForwardDynamicsResult(t, q, v, tau, sl, out, method=method, evaluations=nfev)

@@ -160,7 +160,8 @@ def required_wrench(
     TautError
         Bad shapes or values (:class:`~taut.errors.PoseError` for poses and rates).
     UnsupportedRobotError
-        A robot without mass (or inertia, for a rigid platform), or a jointed platform.
+        A robot without mass (or inertia, for a rigid platform; a jointed platform: any of its
+        bodies, named).
 
     References
     ----------
@@ -202,7 +203,7 @@ def _samples(
     closed_form: bool,
     cables: bool = True,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Compiled wrenches ``(N, dof)``, structure matrices ``(N, dof, n)`` of straight cables,
+    """Compiled wrenches ``(N, dof)``, structure matrices ``(N, dof, n)``,
     closed-form tensions ``(N, n)`` and the kernel status ``(N,)`` (see
     :func:`taut.dynamics._kernels.inverse_samples`)."""
     from taut.dynamics._kernels import inverse_samples
@@ -251,7 +252,15 @@ def inverse_dynamics(
     """Cable tensions along a sampled motion ``(q, q̇, q̈)``.
 
     Samples without an admissible distribution get zero tensions, ``feasible = False`` and a
-    reason.  The wrenches, structure matrices and, for ``closed-form``, the tensions are
+    reason.
+
+    On a platform carrying jointed bodies the samples hold the joint coordinates too (within
+    their ``limits``: :func:`taut.kinematics.as_poses` refuses a sample beyond them), the
+    wrench is the generalized force ``A τ`` in the twist coordinates (a wrench about ``p``,
+    then one force or torque per joint; :mod:`taut.dynamics._tree`) and the distribution
+    solves it with the cable columns ``A`` of the jointed structure matrix
+    (:func:`taut.kinematics.jointed_structure_matrix`): the joints are passive, moved by the
+    cables acting across them.  The wrenches, structure matrices and, for ``closed-form``, the tensions are
     computed by a compiled kernel; the samples it does not accept, and every sample of the
     other methods, go to :func:`taut.statics.solve_tensions`, so that ``feasible`` means what
     it means there.
@@ -283,7 +292,8 @@ def inverse_dynamics(
     TautError
         Bad shapes or values, an unknown method, bad tension bounds or times.
     UnsupportedRobotError
-        A robot without mass (or inertia, for a rigid platform), or a jointed platform.
+        A robot without mass (or inertia, for a rigid platform; a jointed platform: any of its
+        bodies, named).
     WrappedCableError
         A sample where a cable of a variable-structure robot, taken as a straight line, meets
         one of its obstacles (its wrapped length depends on the motion).
@@ -340,14 +350,10 @@ def inverse_dynamics(
     code = np.full(N, STATUSES.index("undefined"), dtype=np.int64)
     for start in range(0, N, CHUNK):
         part = slice(start, min(start + CHUNK, N))
-        closed = method == "closed-form" and model.straight
+        closed = method == "closed-form"
         wr, W, tau, st = _samples(model, arr[part], vel[part], acc[part], w[part], bounds, closed)
         need[part] = wr
         ok = st != ZERO_LENGTH
-        if not model.straight:
-            from taut.kinematics import batch_structure_matrices
-
-            _, W, ok = batch_structure_matrices(robot, arr[part])
         done = ok & (st == 0) if closed else np.zeros_like(ok)
         if closed:
             tensions[part][done], feasible[part][done], code[part][done] = tau[done], True, STATUSES.index("optimal")

@@ -2,7 +2,7 @@
 
 One pass per state computes the rotation, the angular velocity ``ω = Σₖ uₖ ṫₖ`` and
 ``Ė φ̇ = Σₖ (Σ_{j<k} uⱼ ṫⱼ) × uₖ ṫₖ`` from the carried axes ``uₖ`` of the convention
-(:mod:`taut.geometry._rates`), the cable wrench ``W τ`` from straight cables (Rushton 2022,
+(:mod:`taut.geometry._rates`), the cable wrench ``W τ`` from the cables (Rushton 2022,
 Eqs. 2.1 and 2.8; elastic cables: Eq. 2.15 with a slack cable pulling nothing), and solves
 the Newton–Euler equations about ``p`` in closed form through the centre of mass: with
 ``F`` and ``N`` the total force and moment about ``p`` and ``r = R c``,
@@ -13,11 +13,16 @@ then ``φ̈ = T⁻¹ U⁻¹ (α − Ė φ̇)`` with ``E = U T`` (Siciliano et al
 equations as :mod:`taut.dynamics._platform` in the other direction, without forming or
 factorizing ``M``: a state costs about a microsecond, which is what a control loop needs.
 
-Robots whose cables leave through swivelling pulleys pass their cable wrench in ``w`` and
-no cables (:mod:`taut.dynamics._forward` computes it with :mod:`taut.kinematics._inverse`).
+A cable that leaves through a swivelling pulley pulls along its tangent, and its length
+holds the wound arc (:func:`taut.dynamics._tree.cable_path`; the pulley's inertia is
+neglected).
 
 Status per state: 0 success, 1 the rate matrix is singular (gimbal lock), 2 a cable has zero
-length (no direction).
+length (no direction), 3 the mass matrix of a jointed platform is not positive definite.
+
+A platform carrying jointed bodies has its own kernels (:mod:`taut.dynamics._tree`), to which
+:func:`acceleration_one` and :func:`wrench_one` hand its states, so that every loop here
+(RK4 steps, inverse-dynamics samples, control updates) runs it too.
 
 References
 ----------
@@ -32,14 +37,18 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from taut.dynamics._tree import (
+    GIMBAL_LOCK,
+    GIMBAL_TOL,
+    JOINTED,
+    OK,
+    ZERO_LENGTH,
+    cable_path,
+    tree_acceleration,
+    tree_wrench,
+)
 from taut.geometry import rotate_about_axis
-from taut.kinematics import MIN_LENGTH
 from taut.model import MAX_MAGNITUDE
-
-#: Below this ``|det U|`` the rate matrix counts as singular (gimbal lock).
-GIMBAL_TOL = 1e-9
-
-OK, GIMBAL_LOCK, ZERO_LENGTH = 0, 1, 2
 
 #: Slices of the packed float parameters ``fp`` of the kernels.
 FLOAT_LAYOUT = {
@@ -100,8 +109,11 @@ def acceleration_one(
     packed in three arrays (few arguments: a call's cost is mostly its arguments' dispatch):
     ``ip = (kind, axis₁, axis₂, axis₃)``, ``fp = (m, c, I, I⁻¹, force, moment, T, T⁻¹)``
     (see :data:`FLOAT_LAYOUT`) and ``cables (n, 7)`` = exit point, anchor, ``EA``.  ``vec
-    (VECTORS, 3)`` and ``mat (MATRICES, 3, 3)`` are work space."""
+    (VECTORS, 3)`` and ``mat (MATRICES, 3, 3)`` are work space.  A jointed platform
+    (``ip[0] == JOINTED``) goes to :func:`taut.dynamics._tree.tree_acceleration`."""
     kind = ip[0]
+    if kind == JOINTED:
+        return tree_acceleration(ip, fp, cables, elastic, q, qd, u, w, qdd, tau)
     mass = fp[0]
     com, force, moment = fp[1:4], fp[22:25], fp[25:28]
     inertia, inertia_inv = fp[4:13].reshape((3, 3)), fp[13:22].reshape((3, 3))
@@ -161,16 +173,14 @@ def acceleration_one(
         _matvec(R, cables[i, 3:6], arm)
         for j in range(3):
             b[j] = p[j] + arm[j]
-            v[j] = cables[i, j] - b[j]
-        length = np.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
-        if length < MIN_LENGTH:
+        length = cable_path(cables[i], b, v)
+        if length < 0.0:
             return ZERO_LENGTH
         if elastic:
             tau[i] = max(cables[i, 6] * (length - u[i]) / u[i], 0.0)
         else:
             tau[i] = u[i]
         for j in range(3):
-            v[j] /= length
             F[j] += tau[i] * v[j]
         _cross(arm, v, mom)
         for j in range(3):
@@ -312,9 +322,12 @@ def wrench_one(
 ) -> int:
     """The wrench ``W τ`` the cables must apply for the sample ``(q, q̇, q̈)`` into ``wrench``
     (the rate of momentum about ``p`` minus the weight, the constant load and ``w_ext``;
-    Newton–Euler through the centre of mass) and the structure matrix of the straight cables
-    into ``W (dof, n)``; returns the status (:data:`ZERO_LENGTH` for a cable without direction)."""
+    Newton–Euler through the centre of mass) and the structure matrix of the cables
+    into ``W (dof, n)``; returns the status (:data:`ZERO_LENGTH` for a cable without direction).
+    A jointed platform goes to :func:`taut.dynamics._tree.tree_wrench`."""
     kind = ip[0]
+    if kind == JOINTED:
+        return tree_wrench(ip, fp, cables, q, qd, qdd, w_ext, wrench, W)
     mass = fp[0]
     com, force, moment = fp[1:4], fp[22:25], fp[25:28]
     inertia = fp[4:13].reshape((3, 3))
@@ -398,12 +411,9 @@ def wrench_one(
         _matvec(R, cables[i, 3:6], arm)
         for j in range(3):
             b[j] = p[j] + arm[j]
-            v[j] = cables[i, j] - b[j]
-        length = np.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
-        if length < MIN_LENGTH:
+        length = cable_path(cables[i], b, v)
+        if length < 0.0:
             return ZERO_LENGTH
-        for j in range(3):
-            v[j] /= length
         for j in range(d):
             W[j, i] = v[j]
         if kind != 0:

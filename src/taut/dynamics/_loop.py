@@ -25,7 +25,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.dynamics._forward import KernelModel, kernel_model
-from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError, UnsupportedRobotError
+from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError
 from taut.model import Robot
 
 __all__ = ["LoopModel", "loop_model"]
@@ -136,7 +136,10 @@ class LoopModel:
         )
         status = b["status"][0]
         if status == ZERO_LENGTH:
-            raise InfeasiblePoseError(f"{self.robot.name}: a cable has zero length at {np.asarray(q).tolist()}")
+            raise InfeasiblePoseError(
+                f"{self.robot.name}: a cable has no direction (zero length, or its anchor on a swivel axis or on "
+                f"its pulley) at {np.asarray(q).tolist()}"
+            )
         if status == OK:
             return b["tau"][0].copy(), True
         res = solve_tensions(b["W"][0], -b["wrench"][0], tension_bounds=(lo, hi), method=self.method)
@@ -187,6 +190,7 @@ class LoopModel:
         (array([ 0.     , -0.04905,  0.     ]), array([ 0.   , -0.981,  0.   ]))
         """
         from taut.dynamics._kernels import GIMBAL_LOCK, OK, rk4_steps
+        from taut.dynamics._tree import SINGULAR_INERTIA
 
         b = self.buffers
         try:
@@ -204,6 +208,10 @@ class LoopModel:
         if status == GIMBAL_LOCK:
             raise SingularConfigurationError(
                 f"{self.robot.name}: the step from {np.asarray(q).tolist()} reaches the gimbal lock"
+            )
+        if status == SINGULAR_INERTIA:
+            raise SingularConfigurationError(
+                f"{self.robot.name}: the step from {np.asarray(q).tolist()} reaches a singular mass matrix"
             )
         if status != OK:
             raise InfeasiblePoseError(
@@ -229,8 +237,7 @@ def loop_model(robot: Robot, *, method: str = "qp") -> LoopModel:
     Raises
     ------
     UnsupportedRobotError
-        Robots the dynamics does not handle, and robots with swivelling pulleys (their cables
-        are not straight; use the checked functions).
+        Robots the dynamics does not handle (without masses or inertias).
     TautError
         An unknown method.
 
@@ -251,10 +258,6 @@ def loop_model(robot: Robot, *, method: str = "qp") -> LoopModel:
     if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
     kernels = kernel_model(robot)
-    if not kernels.straight:
-        raise UnsupportedRobotError(
-            f"{robot.name}: cables through swivelling pulleys are not in the compiled loop; use rk4_step and inverse_dynamics"
-        )
     dof, n = robot.pose_size, robot.n_cables
     rows = {"q": dof, "qd": dof, "qdd": dof, "w": dof, "u": n, "wrench": dof, "tau": n, "q_next": dof, "qd_next": dof}
     buffers: dict[str, np.ndarray] = {name: np.zeros((1, width)) for name, width in rows.items()}

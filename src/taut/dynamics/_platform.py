@@ -33,8 +33,8 @@ the joint coordinates: :func:`mass_matrix`, :func:`bias_forces`, :func:`gravity_
 :func:`velocity_jacobian` (``T = diag(1, E, 1)``) and :func:`generalized_forces` (of the rows
 of :func:`taut.kinematics.jointed_structure_matrix`: a wrench about ``p``, then joint
 forces) and :func:`coriolis_matrix` take it to :mod:`taut.dynamics._jointed` when every body
-has a mass and an inertia; :func:`platform_dynamics` (hence forward and inverse dynamics)
-refuses it (:class:`~taut.errors.UnsupportedRobotError`).
+has a mass and an inertia; :func:`platform_dynamics` describes its platform body alone, and
+forward and inverse dynamics run its bodies in :mod:`taut.dynamics._tree`.
 
 References
 ----------
@@ -149,8 +149,8 @@ def platform_dynamics(robot: Robot) -> PlatformDynamics:
     Raises
     ------
     UnsupportedRobotError
-        For a jointed platform, a platform without ``mass``, or a rigid platform without a
-        positive definite ``inertia``.
+        For a platform without ``mass``, or a rigid platform without a positive definite
+        ``inertia``.  (On a jointed platform the data are the platform body's alone.)
 
     Examples
     --------
@@ -160,12 +160,6 @@ def platform_dynamics(robot: Robot) -> PlatformDynamics:
     0.004167
     """
     plat, d = robot.platform, robot.dimension
-    if robot.n_joints:
-        names = ", ".join(b.name for b in plat.bodies)
-        raise UnsupportedRobotError(
-            f"{robot.name}: forward and inverse dynamics are not supported for jointed platforms (bodies {names}); "
-            "their equations of motion are (mass_matrix, coriolis_matrix, bias_forces)"
-        )
     if plat.mass is None:
         raise UnsupportedRobotError(f"{robot.name}: the dynamics needs the platform's mass (platform.mass)")
     kind = POINT_MASS if robot.is_point_mass else (PLANAR if d == 2 else SPATIAL)
