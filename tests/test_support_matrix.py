@@ -134,6 +134,17 @@ def workspace(s: Subject, tmp: Path):
     return ["workspace", s.robot, "--condition", "wrench-feasible", "--grid", "2"], check
 
 
+def certified_workspace(s: Subject, tmp: Path):
+    def check(d: dict, s: Subject) -> None:
+        assert len(d["axis_names"]) == load(s.robot).dimension
+        volumes = d["inner_volume"] + d["outer_volume"] + d["undecided_volume"]
+        assert abs(volumes - d["region_volume"]) <= 1e-9 * d["region_volume"]
+        assert d["boxes"]["undecided"] > 0 or d["complete"]
+
+    argv = ["workspace", s.robot, "--condition", "static", "--certified", "--eps", "0.5", "--max-boxes", "5000"]
+    return argv, check
+
+
 def _pose_of(solution: dict) -> list[float]:
     return [*solution["position"], *(solution.get("orientation") or []), *(solution.get("joints") or [])]
 
@@ -241,6 +252,7 @@ QUERIES: dict[str, Query] = {
     "taut ik": ik,
     "taut tensions": tensions,
     "taut workspace": workspace,
+    "taut workspace --certified": certified_workspace,
     "taut fk": fk,
     "taut igp": igp,
     "taut plan": plan,

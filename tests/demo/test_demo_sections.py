@@ -13,6 +13,7 @@ import pytest  # noqa: E402
 
 import taut  # noqa: E402
 from taut.demo._atlas import atlas_section  # noqa: E402
+from taut.demo._certified import certified_section  # noqa: E402
 from taut.demo._check import check_section  # noqa: E402
 from taut.demo._control import control_section  # noqa: E402
 from taut.demo._plan import plan_section  # noqa: E402
@@ -33,6 +34,24 @@ def test_atlas_section(tmp_path):
     out = report.write(tmp_path)
     html = out.read_text() if out.is_file() else (out / "index.html").read_text()
     assert "structure atlas" in html and "queries/s" in html
+
+
+def test_certified_section_brackets_the_grid_estimate():
+    report = Report("t")
+    certified_section(report)
+    (sec,) = report.sections
+    data = sec.json
+    assert data["complete"] and data["boxes"]["inner"] > 0 and data["boxes"]["outer"] > 0
+    low, high = data["inner_volume"], data["inner_volume"] + data["undecided_volume"]
+    # a Monte Carlo estimate of the area, within four of its standard errors
+    region = np.array(data["region"])
+    rng = np.random.default_rng(0)
+    poses = np.hstack([rng.uniform(region[:, 0], region[:, 1], (200_000, 2)), np.zeros((200_000, 1))])
+    inside = taut.workspace.make_condition("wrench-feasible").evaluate(taut.example("planar-4cable"), poses)
+    p = inside.mean()
+    estimate, error = p * data["region_volume"], 4 * np.sqrt(p * (1 - p) / len(poses)) * data["region_volume"]
+    assert low - error <= estimate <= high + error and high - low < 0.05 * high
+    assert [f.filename for f in sec.figures] == ["planar-4cable-certified.png"] and sec.figures[0].png
 
 
 def test_check_section_reports_step_71():

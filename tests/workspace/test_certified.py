@@ -15,19 +15,22 @@ import taut
 from taut.errors import ArgumentError, GridSizeError, UnsupportedRobotError
 from taut.interval import Interval, separating_directions, zonotope_verdicts
 from taut.model import random_planar_robot, random_point_mass_robot
-from taut.parallel import ProcessExecutor
+from taut.parallel import ProcessExecutor, get_executor
 from taut.statics import BoxWrenchSet, wrench_feasible
 from taut.workspace import certified, evaluate_workspace, make_condition
 
 
-def contradictions(robot, res, condition, samples, seed=0, orientations=None):
-    """Poses drawn uniformly in random boxes of each kind, judged by the point test."""
+def contradictions(robot, res, condition, samples, seed=0, orientations=None, drawn=None):
+    """Poses drawn uniformly in random boxes of each kind, judged by the point test (``drawn``
+    collects how many)."""
     rng = np.random.default_rng(seed)
     cond = make_condition(condition)
     bad = 0
     for boxes, want in ((res.inner, True), (res.outer, False)):
         if not len(boxes):
             continue
+        if drawn is not None:
+            drawn.append(samples)
         pick = rng.integers(0, len(boxes), samples)
         P = rng.uniform(boxes[pick, :, 0], boxes[pick, :, 1])
         if orientations is None:
@@ -61,6 +64,29 @@ def test_inner_and_outer_boxes_agree_with_the_point_test(name, condition, eps):
     total = res.inner_volume + res.outer_volume + res.undecided_volume
     assert total == pytest.approx(res.region_volume, rel=1e-9)
     assert np.all((res.undecided[:, :, 1] - res.undecided[:, :, 0]).max(axis=1) <= eps)
+
+
+@pytest.mark.slow
+def test_a_million_samples_across_the_built_in_robots_agree_with_the_point_test():
+    """Every built-in robot a certificate takes, each of its kinds (planar and spatial, point
+    mass and rigid, suspended and fully constrained) and the three conditions: no sample of
+    an inner box fails the point test, none of an outer box passes it."""
+    cases = [
+        ("planar-4cable", "static", None, 0.01),
+        ("planar-4cable", "wrench-feasible", None, 0.01),
+        ("planar-4cable", "wrench-closure", None, 0.02),
+        ("camera-4cable", "static", None, 0.25),
+        ("printer-5cable", "wrench-closure", None, 0.25),
+        ("robocrane", "static", None, 0.25),
+        ("spatial-8cable", "wrench-feasible", [[0.0, 1.5], [0.0, 1.0], [0.0, 1.0]], 0.1),
+    ]
+    drawn: list[int] = []
+    for seed, (name, condition, region, eps) in enumerate(cases):
+        robot = taut.example(name)
+        res = certified(robot, condition, region, eps=eps)
+        assert res.complete and len(res.outer)
+        assert contradictions(robot, res, condition, 80_000, seed=seed, drawn=drawn) == 0, (name, condition)
+    assert sum(drawn) >= 1_000_000
 
 
 @settings(max_examples=15, deadline=None)
@@ -110,13 +136,25 @@ def test_volumes_bracket_the_grid_and_the_boundary_layer_halves_with_eps():
 
 
 @pytest.mark.slow
-def test_the_same_boxes_on_every_executor():
-    robot = taut.example("planar-4cable")
-    serial = certified(robot, "wrench-feasible", eps=0.01)
+@pytest.mark.parametrize(
+    ("name", "region", "eps"),
+    [("planar-4cable", None, 0.01), ("spatial-8cable", [[0.0, 1.5], [0.0, 1.0], [0.0, 1.0]], 0.1)],
+)
+def test_the_same_boxes_serial_on_processes_and_on_dask(name, region, eps):
+    distributed = pytest.importorskip("distributed")
+    robot = taut.example(name)
+    serial = certified(robot, "wrench-feasible", region, eps=eps)
     with ProcessExecutor(2) as ex:
-        parallel = certified(robot, "wrench-feasible", eps=0.01, executor=ex)
-    for name in ("inner", "outer", "undecided"):
-        assert np.array_equal(getattr(serial, name), getattr(parallel, name))
+        runs = [certified(robot, "wrench-feasible", region, eps=eps, executor=ex)]
+    with (
+        distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster,
+        get_executor(scheduler=cluster.scheduler_address) as ex,
+    ):
+        runs.append(certified(robot, "wrench-feasible", region, eps=eps, executor=ex))
+    assert len(serial.inner) and len(serial.outer) and len(serial.undecided)
+    for run in runs:
+        for kind in ("inner", "outer", "undecided"):
+            assert np.array_equal(getattr(serial, kind), getattr(run, kind))
 
 
 def test_a_budget_that_runs_out_is_reported():

@@ -6,6 +6,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from taut.demo._atlas import atlas_section
+from taut.demo._certified import certified_section
 from taut.demo._check import check_section
 from taut.demo._control import control_section
 from taut.demo._dgp import dgp_section
@@ -19,6 +20,7 @@ SECTIONS: list[Callable[[Report], object]] = [
     robots_section,
     lambda r: standard_model_section(r, "planar-4cable", shift=[0.8, 0.6], resolution=80),
     lambda r: standard_model_section(r, "spatial-8cable", shift=[1.2, 0.0, 0.8], resolution=30),
+    certified_section,
     dgp_section,
     trajectory_section,
     atlas_section,
