@@ -19,8 +19,9 @@ and three tests run in turn:
   (:func:`taut.interval.zonotope_verdicts`) on what is left, for planar robots and point
   masses (:data:`FACET_ROWS`), and alone for wrench closure.
 
-A box none of them decides is bisected across its widest side, breadth first, until it is
-no wider than ``eps``; what is left is the undecided boundary layer.
+A box none of them decides is cut across each side at least half as wide as its widest
+(and wider than ``eps``), breadth first, until it is no wider than ``eps``; what is left is
+the undecided boundary layer.
 
 * The volumes bound the workspace's: ``inner ≤ true ≤ inner + undecided`` (within the
   region).
@@ -225,9 +226,10 @@ class _Spec:
     vertices: np.ndarray | None
 
 
-def _rotations(spec: _Spec, angles: Interval) -> tuple[Interval, list[Interval]]:
-    """Enclosures of the rotation matrices ``(B, d, d)`` of boxes of angles ``(B, k)``, and of
-    their derivatives in each angle (the product rule over the elementary factors)."""
+def _rotations(spec: _Spec, angles: Interval, *, derivatives: bool) -> tuple[Interval, list[Interval]]:
+    """Enclosures of the rotation matrices ``(B, d, d)`` of boxes of angles ``(B, k)``, and
+    with ``derivatives`` of their derivatives in each angle (the product rule over the
+    elementary factors)."""
     B = angles.shape[0]
     if spec.exits.shape[1] == 2:
         c, s = angles[:, 0].cos(), angles[:, 0].sin()
@@ -239,7 +241,7 @@ def _rotations(spec: _Spec, angles: Interval) -> tuple[Interval, list[Interval]]
             np.stack([np.stack([-s.hi, -c.hi], -1), np.stack([c.lo, -s.hi], -1)], -2),
             np.stack([np.stack([-s.lo, -c.lo], -1), np.stack([c.hi, -s.lo], -1)], -2),
         )
-        return R, [dR]
+        return R, [dR] if derivatives else []
 
     def axis(k: int, t: Interval, derivative: bool) -> Interval:
         # R_x = [[1, 0, 0], [0, c, −s], [0, s, c]] and its cyclic shifts R_y, R_z;
@@ -288,7 +290,7 @@ def _rotations(spec: _Spec, angles: Interval) -> tuple[Interval, list[Interval]]
             total = total + term
         return total
 
-    return product(factors), [derivative(var) for var in range(3)]
+    return product(factors), [derivative(var) for var in range(3)] if derivatives else []
 
 
 def _matmul(A: Interval, Bm: Interval) -> Interval:
@@ -330,9 +332,13 @@ def _enclosures(
         rb = Interval(np.zeros((B, 1, d)))
         drb: list[Interval] = []
     else:
-        R, dR = _rotations(spec, angles)
+        # one orientation for every box (a fixed one): its rotation once
+        same = not by_angles and bool(np.all(angles.lo == angles.lo[:1]) and np.all(angles.hi == angles.hi[:1]))
+        R, dR = _rotations(spec, angles[:1] if same else angles, derivatives=by_angles)
+        if same:
+            R = Interval(np.broadcast_to(R.lo, (B, *R.shape[1:])), np.broadcast_to(R.hi, (B, *R.shape[1:])))
         rb = _rotate(R, spec.anchors)
-        drb = [_rotate(D, spec.anchors) for D in dR] if by_angles else []
+        drb = [_rotate(D, spec.anchors) for D in dR]
     v = Interval(spec.exits[None]) - rb - p  # (B, n, d)
     length = v[..., 0].sqr()
     for k in range(1, d):
@@ -555,7 +561,8 @@ def _tensions_proven(
     weight = np.maximum(np.minimum(tc - tmin, tmax - tc), 1e-12)
     A = W0 * weight[:, None, :]
     S = A @ np.swapaxes(W0, 1, 2)
-    ok &= np.linalg.cond(S) < 1e12
+    ev = np.linalg.eigvalsh(S)  # S is symmetric: its condition from its eigenvalues
+    ok &= ev[:, 0] > 1e-12 * ev[:, -1]
     R = np.swapaxes(A, 1, 2) @ np.linalg.inv(np.where(ok[:, None, None], S, np.eye(m)))  # (B, n, m)
     # the first-order change of the tensions is taken out exactly: with T = −R ∂(W τ_c)/∂q at
     # the centre, τ = τ_c + T Δq + R y leaves only a second-order remainder to y
@@ -679,16 +686,31 @@ def _as_box(value: npt.ArrayLike, rows: int, what: str) -> np.ndarray:
     return box
 
 
-def _bisect(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Each box cut in two across its widest side (the first of equal ones): the lower halves,
-    then the upper halves, interleaved per box."""
-    axis = np.argmax(hi - lo, axis=1)
-    rows = np.arange(len(lo))
-    mid = 0.5 * (lo[rows, axis] + hi[rows, axis])
-    lo2, hi2 = np.repeat(lo, 2, axis=0), np.repeat(hi, 2, axis=0)
-    hi2[2 * rows, axis] = mid
-    lo2[2 * rows + 1, axis] = mid
-    return lo2, hi2
+def _split(lo: np.ndarray, hi: np.ndarray, eps: float) -> tuple[np.ndarray, np.ndarray]:
+    """Each box cut across every side at least half as wide as its widest and wider than
+    ``eps`` (near-cubes into ``2^d`` children at once: the halves a one-side cut would leave
+    undecided are not evaluated on the way); the children of a box follow one another."""
+    width = hi - lo
+    cut = (width >= 0.5 * width.max(axis=1, keepdims=True)) & (width > eps)
+    cut[np.arange(len(lo)), np.argmax(width, axis=1)] = True
+    mid = 0.5 * (lo + hi)
+    parts_lo, parts_hi = [lo], [hi]
+    for axis in range(lo.shape[1]):
+        new_lo, new_hi = [], []
+        for a, b in zip(parts_lo, parts_hi):
+            upper_lo, lower_hi = a.copy(), b.copy()
+            upper_lo[:, axis] = np.where(cut[:, axis], mid[:, axis], a[:, axis])
+            lower_hi[:, axis] = np.where(cut[:, axis], mid[:, axis], b[:, axis])
+            new_lo += [a, upper_lo]
+            new_hi += [lower_hi, b]
+        parts_lo, parts_hi = new_lo, new_hi
+    k = len(parts_lo)
+    los, his = np.stack(parts_lo, 1), np.stack(parts_hi, 1)  # (B, 2^d, d)
+    # a side not cut gives two copies of one box: keep the lower one
+    d = lo.shape[1]
+    upper = np.array([[(j >> (d - 1 - a)) & 1 for a in range(d)] for j in range(k)], dtype=bool)  # (2^d, d)
+    keep = ~np.any(upper[None, :, :] & ~cut[:, None, :], axis=2)
+    return los[keep], his[keep]
 
 
 def certified(
@@ -730,7 +752,7 @@ def certified(
         is inner when it is inner for every piece (the enclosures widen with the angles'
         range: spatial platforms may need 0.005).
     eps : float, default 0.01
-        Boxes no wider than this [m] are not bisected further.
+        Boxes no wider than this [m] are not cut further.
     max_boxes : int, default 2000000
         Budget of boxes evaluated (:data:`taut.interval.MAX_BOXES`, as the interval solvers');
         beyond it the boxes left are reported undecided and the result is incomplete.
@@ -849,7 +871,7 @@ def certified(
                 decided_volume += float(np.prod(hi[mask] - lo[mask], axis=1).sum())
         if progress is not None:
             progress(min(1000, int(1000 * decided_volume / total)), 1000)
-        lo, hi = _bisect(lo[keep], hi[keep])
+        lo, hi = _split(lo[keep], hi[keep], eps)
 
     def stacked(parts: list[np.ndarray]) -> np.ndarray:
         return np.concatenate(parts) if parts else np.zeros((0, d, 2))
