@@ -17,7 +17,7 @@ from taut.interval import Interval, separating_directions, zonotope_verdicts
 from taut.model import random_planar_robot, random_point_mass_robot
 from taut.parallel import ProcessExecutor, get_executor
 from taut.statics import BoxWrenchSet, wrench_feasible
-from taut.workspace import certified, evaluate_workspace, make_condition
+from taut.workspace import WorkspaceCondition, certified, evaluate_workspace, make_condition
 
 
 def contradictions(robot, res, condition, samples, seed=0, orientations=None, drawn=None):
@@ -79,12 +79,13 @@ def test_a_million_samples_across_the_built_in_robots_agree_with_the_point_test(
         ("printer-5cable", "wrench-closure", None, 0.25),
         ("robocrane", "static", None, 0.25),
         ("spatial-8cable", "wrench-feasible", [[0.0, 1.5], [0.0, 1.0], [0.0, 1.0]], 0.1),
+        ("camera-4cable", "interference-free", None, 0.5),
     ]
     drawn: list[int] = []
     for seed, (name, condition, region, eps) in enumerate(cases):
         robot = taut.example(name)
         res = certified(robot, condition, region, eps=eps)
-        assert res.complete and len(res.outer)
+        assert res.complete and len(res.inner) + len(res.outer)
         assert contradictions(robot, res, condition, 80_000, seed=seed, drawn=drawn) == 0, (name, condition)
     assert sum(drawn) >= 1_000_000
 
@@ -102,6 +103,31 @@ def test_random_robots_are_certified_soundly(seed, n, kind):
         return
     res = certified(robot, "static", eps=0.1, max_boxes=20_000)
     assert contradictions(robot, res, "static", 3000, seed=seed) == 0
+
+
+@settings(max_examples=20, deadline=None)
+@given(seed=st.integers(0, 2**31), kind=st.sampled_from(["planar", "point-mass 2-D", "point-mass 3-D"]))
+def test_interference_free_boxes_agree_with_the_capsule_test(seed, kind):
+    """Cables that cross (planar robots), and cables sharing their anchor (point masses, cut
+    back at the shared end as the point test cuts them)."""
+    if kind == "planar":
+        robot, _ = random_planar_robot(5, seed=seed)
+    else:
+        robot, _ = random_point_mass_robot(4, dimension=int(kind[-3]), seed=seed)
+    res = certified(robot, "interference-free", eps=0.05, max_boxes=20_000)
+    assert contradictions(robot, res, "interference-free", 3000, seed=seed) == 0
+
+
+def test_crossing_cables_are_outside_for_every_orientation_of_a_box():
+    robot, _ = random_planar_robot(5, seed=0)
+    box = [[-0.05, 0.05]]
+    res = certified(robot, "interference-free", eps=0.05, orientation_box=box, max_boxes=50_000)
+    assert len(res.inner) and len(res.outer)
+
+    def spread(rng, k):
+        return rng.uniform(-0.05, 0.05, (k, 1))
+
+    assert contradictions(robot, res, "interference-free", 20_000, orientations=spread) == 0
 
 
 def test_every_orientation_of_an_orientation_box():
@@ -163,6 +189,15 @@ def test_a_budget_that_runs_out_is_reported():
     assert res.inner_volume + res.outer_volume + res.undecided_volume == pytest.approx(res.region_volume)
 
 
+class LeftHalf(WorkspaceCondition):
+    """A condition of the user's own, which no certificate knows."""
+
+    name = "left-half"
+
+    def evaluate(self, robot, poses):
+        return np.asarray(poses)[:, 0] < 0
+
+
 @pytest.mark.parametrize(
     ("kwargs", "error", "match"),
     [
@@ -171,7 +206,7 @@ def test_a_budget_that_runs_out_is_reported():
         ({"region": [[1.0, 0.0], [0.0, 1.0]]}, ArgumentError, "inverted"),
         ({"region": [[0.0, np.nan], [0.0, 1.0]]}, ArgumentError, "finite"),
         ({"eps": 1e-9, "region": [[-1e3, 1e3], [-1e3, 1e3]]}, GridSizeError, "1e12 boxes"),
-        ({"condition": "interference-free"}, ArgumentError, "cannot be certified"),
+        ({"condition": LeftHalf()}, ArgumentError, "'left-half' condition cannot be certified"),
         ({"orientation_box": [[0.3, 0.1]]}, ArgumentError, "inverted"),
         ({"max_boxes": 0}, ArgumentError, "max_boxes"),
     ],
@@ -298,6 +333,17 @@ def test_cli_certified_json_and_plot(tmp_path):
     assert d["inner_volume"] == pytest.approx(lib.inner_volume) and d["complete"] is True
     assert set(d) >= {"inner_volume", "undecided_volume", "boxes", "elapsed_s"}
     assert plot.stat().st_size > 10_000
+
+
+def test_cli_certified_interference_free_where_no_cables_ever_meet():
+    """The cables of planar-4cable stay in their own quarter of the platform frame: the
+    whole region is one inner box, and a grid of the capsule test finds no contact."""
+    p = taut_cli("workspace", "planar-4cable", "--condition", "interference-free", "--certified", "--json")
+    assert p.returncode == 0, p.stderr
+    d = json.loads(p.stdout)
+    assert d["inner_volume"] == pytest.approx(d["region_volume"]) and d["boxes"]["inner"] >= 1
+    grid = evaluate_workspace(taut.example("planar-4cable"), "interference-free", resolution=60)
+    assert grid.count == grid.size
 
 
 @pytest.mark.parametrize(

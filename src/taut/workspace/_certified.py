@@ -32,9 +32,11 @@ the undecided boundary layer.
   executor of :mod:`taut.parallel`; each box is decided alone, so the boxes are the same
   whatever the executor.
 
-Conditions: ``wrench-feasible`` (box, polytope or single-wrench sets), ``static`` and
-``wrench-closure``.  ``interference-free`` and ellipsoidal wrench sets are refused (no
-certificate is implemented for them).  Robots: point masses and rigid platforms, planar and
+Conditions: ``wrench-feasible`` (box, polytope or single-wrench sets), ``static``,
+``wrench-closure`` and ``interference-free`` (the capsule pairs of the collision model,
+:mod:`taut.workspace._clearance`: in 3-D, cables of radius 0 that always meet — coplanar
+crossing pairs — leave their boxes undecided, since no interval proves a distance of exactly
+0).  Ellipsoidal wrench sets and conditions of one's own are refused.  Robots: point masses and rigid platforms, planar and
 spatial, whose cables leave from fixed exit points; jointed platforms, swivelling pulleys
 and obstacles are refused.
 
@@ -63,7 +65,9 @@ from taut.interval import MAX_BOXES, OUTSIDE_RTOL, Interval, separating_directio
 from taut.model import Robot
 from taut.parallel import Executor, as_executor
 from taut.statics import BoxWrenchSet, PolytopeWrenchSet, SingleWrench
+from taut.workspace._clearance import Clearance, clearance_spec, clearance_verdicts
 from taut.workspace._conditions import (
+    InterferenceFree,
     StaticEquilibrium,
     WorkspaceCondition,
     WrenchClosure,
@@ -224,6 +228,7 @@ class _Spec:
     centre: np.ndarray
     radius: np.ndarray
     vertices: np.ndarray | None
+    clearance: Clearance | None  # the capsule pairs of ``interference-free``
 
 
 def _rotations(spec: _Spec, angles: Interval, *, derivatives: bool) -> tuple[Interval, list[Interval]]:
@@ -412,6 +417,8 @@ def _decide(task: tuple[_Spec, np.ndarray, np.ndarray]) -> np.ndarray:
 def _verdicts(spec: _Spec, lo: np.ndarray, hi: np.ndarray, a_lo: np.ndarray, a_hi: np.ndarray) -> np.ndarray:
     """Verdicts of boxes of positions ``[lo, hi]`` for every orientation of ``[a_lo, a_hi]``;
     the mean-value form runs over the positions, and over the angles when they span a box."""
+    if spec.clearance is not None:
+        return _clearances(spec, spec.clearance, lo, hi, a_lo, a_hi)
     by_angles = bool(np.any(a_hi > a_lo))
     W, G, wrench = _enclosures(spec, lo, hi, Interval(a_lo, a_hi), by_angles=by_angles)
     mid = 0.5 * (lo + hi)
@@ -474,6 +481,21 @@ def _verdicts(spec: _Spec, lo: np.ndarray, hi: np.ndarray, a_lo: np.ndarray, a_h
     # a box where a cable may have no direction (an exit point in it) decides nothing
     out[bad] = 0
     return out
+
+
+def _clearances(
+    spec: _Spec, clearance: Clearance, lo: np.ndarray, hi: np.ndarray, a_lo: np.ndarray, a_hi: np.ndarray
+) -> np.ndarray:
+    """Interference-free verdicts (:mod:`taut.workspace._clearance`) of boxes of positions for
+    every orientation of ``[a_lo, a_hi]``."""
+    B, d = lo.shape
+    mid = 0.5 * (lo + hi)
+    if spec.point_mass:
+        R = R_mid = Interval(np.broadcast_to(np.eye(d), (B, d, d)))
+    else:
+        R, _ = _rotations(spec, Interval(a_lo, a_hi), derivatives=False)
+        R_mid, _ = _rotations(spec, Interval(0.5 * (a_lo + a_hi)), derivatives=False)
+    return clearance_verdicts(clearance, Interval(lo, hi), R, mid, R_mid.mid)
 
 
 def _separated(
@@ -640,9 +662,10 @@ def _spec(
             raise ArgumentError(
                 f"a certified workspace takes a box, polytope or single-wrench set; a {type(ws).__name__} cannot be certified"
             )
-    elif not isinstance(condition, (StaticEquilibrium, WrenchClosure)):
+    elif not isinstance(condition, (StaticEquilibrium, WrenchClosure, InterferenceFree)):
         raise ArgumentError(
-            f"the {condition.name!r} condition cannot be certified; certified conditions: wrench-feasible, static, wrench-closure"
+            f"the {condition.name!r} condition cannot be certified; certified conditions: "
+            "wrench-feasible, static, wrench-closure, interference-free"
         )
     plat = robot.platform
     force = robot.weight + robot.body_weights.sum(axis=0)
@@ -669,6 +692,7 @@ def _spec(
         centre=centre,
         radius=radius,
         vertices=vertices,
+        clearance=clearance_spec(robot) if isinstance(condition, InterferenceFree) else None,
     )
 
 
@@ -736,8 +760,8 @@ def certified(
     robot : Robot
         A point mass or a rigid platform, planar or spatial, with fixed exit points.
     condition : str or WorkspaceCondition, default "wrench-feasible"
-        ``wrench-feasible`` (box, polytope or single-wrench sets), ``static`` or
-        ``wrench-closure``, by name or instance.
+        ``wrench-feasible`` (box, polytope or single-wrench sets), ``static``,
+        ``wrench-closure`` or ``interference-free``, by name or instance.
     region : array_like, shape (d, 2), optional
         ``[lo, hi]`` of each position coordinate (default: the box of the exit points,
         :func:`~taut.workspace.default_bounds`).
