@@ -173,7 +173,7 @@ def test_the_same_boxes_serial_on_processes_and_on_dask(name, region, eps):
     with ProcessExecutor(2) as ex:
         runs = [certified(robot, "wrench-feasible", region, eps=eps, executor=ex)]
     with (
-        distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster,
+        distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster,
         get_executor(scheduler=cluster.scheduler_address) as ex,
     ):
         runs.append(certified(robot, "wrench-feasible", region, eps=eps, executor=ex))

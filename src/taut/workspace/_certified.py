@@ -93,7 +93,7 @@ CHUNK_BOXES = 4096
 FACET_ROWS = 3
 #: Margins (fractions of each tension range) and closed forms tried in turn for the tensions at
 #: a box's centre: Pott's (one pseudo-inverse) well inside, then the improved one.
-CENTRE_MARGINS = ((0.25, "closed-form"),) + tuple((f, "improved-closed-form") for f in (0.05, 0.01, 0.002, 0.0004, 0.0))
+CENTRE_MARGINS = ((0.25, "closed-form"),) + tuple((f, "improved-closed-form") for f in (0.05, 0.01, 0.002))
 
 
 @dataclass(frozen=True)
