@@ -43,6 +43,7 @@ from taut.dynamics._tree import (
     JOINTED,
     OK,
     ZERO_LENGTH,
+    _cholesky_solve,
     cable_path,
     tree_acceleration,
     tree_wrench,
@@ -449,29 +450,8 @@ def closed_form_one(
             for i in range(n):
                 g += W[r, i] * W[c, i]
             G[r, c] = g
-    # Cholesky G = L Lᵀ in place (lower triangle), then L Lᵀ y = r
-    for j in range(m):
-        s = G[j, j]
-        for k in range(j):
-            s -= G[j, k] * G[j, k]
-        if not s > 1e-14 * (G[j, j] + 1e-300):
-            return False
-        G[j, j] = np.sqrt(s)
-        for i in range(j + 1, m):
-            s = G[i, j]
-            for k in range(j):
-                s -= G[i, k] * G[j, k]
-            G[i, j] = s / G[j, j]
-    for i in range(m):
-        s = y[i]
-        for k in range(i):
-            s -= G[i, k] * y[k]
-        y[i] = s / G[i, i]
-    for i in range(m - 1, -1, -1):
-        s = y[i]
-        for k in range(i + 1, m):
-            s -= G[k, i] * y[k]
-        y[i] = s / G[i, i]
+    if not _cholesky_solve(G, y):  # G = L Lᵀ in place (lower triangle), then L Lᵀ y = r
+        return False
     wmax, tmaxabs, Wmax = 0.0, 0.0, 0.0
     for i in range(n):
         acc = 0.0

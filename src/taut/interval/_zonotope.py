@@ -396,6 +396,30 @@ def _combinations(n: int, k: int) -> tuple[np.ndarray, np.ndarray]:
     return combos, changed
 
 
+def _bounds(tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike], n: int) -> tuple[np.ndarray, np.ndarray]:
+    """``τ_min``, ``τ_max`` of ``n`` cables as contiguous arrays, or an :class:`ArgumentError`."""
+    tmin = np.ascontiguousarray(np.broadcast_to(np.asarray(tension_bounds[0], float), (n,)))
+    tmax = np.ascontiguousarray(np.broadcast_to(np.asarray(tension_bounds[1], float), (n,)))
+    if not (np.all(np.isfinite(tmin)) and np.all(tmin >= 0) and not np.isnan(tmax).any() and np.all(tmax >= tmin)):
+        raise ArgumentError("tension bounds must be 0 ≤ τ_min ≤ τ_max (τ_max may be inf), τ_min finite")
+    return tmin, tmax
+
+
+def _required_set(
+    m: int, centre: npt.ArrayLike | None, radius: npt.ArrayLike | None, vertices: npt.ArrayLike | None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The box ``centre ± radius`` and the polytope's ``vertices`` (``(0, m)`` when none) of
+    ``m`` components, or an :class:`ArgumentError`."""
+    c = np.zeros(m) if centre is None else np.asarray(centre, float)
+    r = np.zeros(m) if radius is None else np.asarray(radius, float)
+    if c.shape != (m,) or r.shape != (m,) or not (np.all(np.isfinite(c)) and np.all(np.isfinite(r)) and np.all(r >= 0)):
+        raise ArgumentError(f"centre and radius must be finite of shape ({m},), the radius ≥ 0")
+    V = np.zeros((0, m)) if vertices is None else np.ascontiguousarray(vertices, dtype=float)
+    if V.ndim != 2 or V.shape[1] != m or not np.all(np.isfinite(V)):
+        raise ArgumentError(f"vertices must be finite of shape (K, {m})")
+    return c, r, V
+
+
 def zonotope_verdicts(
     W_lo: npt.ArrayLike,
     W_hi: npt.ArrayLike,
@@ -489,10 +513,7 @@ def zonotope_verdicts(
         raise ArgumentError(f"the matrices need 2 ≤ m ≤ n (rows ≤ columns), got m = {m}, n = {n}")
     if np.isnan(Wlo).any() or np.isnan(Whi).any() or np.any(Wlo > Whi):
         raise ArgumentError("the interval matrices need lower ends ≤ upper ends, without NaN")
-    tmin = np.ascontiguousarray(np.broadcast_to(np.asarray(tension_bounds[0], float), (n,)))
-    tmax = np.ascontiguousarray(np.broadcast_to(np.asarray(tension_bounds[1], float), (n,)))
-    if not (np.all(np.isfinite(tmin)) and np.all(tmin >= 0) and not np.isnan(tmax).any() and np.all(tmax >= tmin)):
-        raise ArgumentError("tension bounds must be 0 ≤ τ_min ≤ τ_max (τ_max may be inf), τ_min finite")
+    tmin, tmax = _bounds(tension_bounds, n)
 
     def per_box(x: npt.ArrayLike | None, name: str) -> np.ndarray:
         a = np.zeros(m) if x is None else np.asarray(x, float)
@@ -503,13 +524,7 @@ def zonotope_verdicts(
     olo, ohi = per_box(wrench_lo, "wrench_lo"), per_box(wrench_hi, "wrench_hi")
     if np.any(olo > ohi):
         raise ArgumentError("wrench_lo must be ≤ wrench_hi")
-    c = np.zeros(m) if centre is None else np.asarray(centre, float)
-    r = np.zeros(m) if radius is None else np.asarray(radius, float)
-    if c.shape != (m,) or r.shape != (m,) or not (np.all(np.isfinite(c)) and np.all(np.isfinite(r)) and np.all(r >= 0)):
-        raise ArgumentError(f"centre and radius must be finite of shape ({m},), the radius ≥ 0")
-    V = np.zeros((0, m)) if vertices is None else np.ascontiguousarray(vertices, dtype=float)
-    if V.ndim != 2 or V.shape[1] != m or not np.all(np.isfinite(V)):
-        raise ArgumentError(f"vertices must be finite of shape (K, {m})")
+    c, r, V = _required_set(m, centre, radius, vertices)
     if mean_value is None:
         Wt = np.stack([Wlo, Whi, Wlo, Whi], axis=-1)
         half = np.zeros((B, 0))
@@ -626,20 +641,11 @@ def separating_directions(
     B, m, n = Wf.shape
     if not 1 < m <= n:
         raise ArgumentError(f"the matrices need 2 ≤ m ≤ n (rows ≤ columns), got m = {m}, n = {n}")
-    tmin = np.ascontiguousarray(np.broadcast_to(np.asarray(tension_bounds[0], float), (n,)))
-    tmax = np.ascontiguousarray(np.broadcast_to(np.asarray(tension_bounds[1], float), (n,)))
-    if not (np.all(np.isfinite(tmin)) and np.all(tmin >= 0) and not np.isnan(tmax).any() and np.all(tmax >= tmin)):
-        raise ArgumentError("tension bounds must be 0 ≤ τ_min ≤ τ_max (τ_max may be inf), τ_min finite")
+    tmin, tmax = _bounds(tension_bounds, n)
     o = np.zeros(m) if wrench is None else np.asarray(wrench, float)
     if o.shape not in ((m,), (B, m)) or not np.all(np.isfinite(o)):
         raise ArgumentError(f"wrench must be finite with shape ({m},) or ({B}, {m})")
-    c = np.zeros(m) if centre is None else np.asarray(centre, float)
-    r = np.zeros(m) if radius is None else np.asarray(radius, float)
-    if c.shape != (m,) or r.shape != (m,) or not (np.all(np.isfinite(c)) and np.all(np.isfinite(r)) and np.all(r >= 0)):
-        raise ArgumentError(f"centre and radius must be finite of shape ({m},), the radius ≥ 0")
-    V = np.zeros((0, m)) if vertices is None else np.ascontiguousarray(vertices, dtype=float)
-    if V.ndim != 2 or V.shape[1] != m or not np.all(np.isfinite(V)):
-        raise ArgumentError(f"vertices must be finite of shape (K, {m})")
+    c, r, V = _required_set(m, centre, radius, vertices)
     combos, _ = _combinations(n, m - 1)
     directions = np.zeros((B, m))
     gaps = np.empty(B)
