@@ -9,9 +9,10 @@ import pytest
 
 mujoco = pytest.importorskip("mujoco")
 
+from mujoco_start import mujoco_start  # noqa: E402
+
 from taut.dynamics import forward_dynamics  # noqa: E402
-from taut.geometry import rate_matrix, rotation_matrix  # noqa: E402
-from taut.model import mjcf_text, pose_to_qpos  # noqa: E402
+from taut.geometry import rotation_matrix  # noqa: E402
 from taut.statics import distribute_tensions  # noqa: E402
 
 DT = 1e-3
@@ -28,14 +29,7 @@ def test_same_motion_as_mujoco(spatial):
 
     taut_run = forward_dynamics(spatial, q0, qd0, 1.0, tensions=tensions, method="RK4", step=DT)
 
-    model = mujoco.MjModel.from_xml_string(mjcf_text(spatial))
-    model.opt.timestep = DT
-    model.opt.integrator = mujoco.mjtIntegrator.mjINT_RK4
-    data = mujoco.MjData(model)
-    data.qpos[:] = pose_to_qpos(spatial, q0)
-    R0 = rotation_matrix(q0[3:6])
-    data.qvel[:3] = qd0[:3]
-    data.qvel[3:] = R0.T @ rate_matrix(q0[3:6]) @ qd0[3:6]  # the freejoint's ω is in the body frame
+    model, data = mujoco_start(spatial, q0, qd0, DT)
     mujoco.mj_forward(model, data)
     body = model.body("platform").id
     worst_p, worst_R, moved = 0.0, 0.0, 0.0
