@@ -44,6 +44,8 @@ from taut.dynamics._tree import (
     OK,
     ZERO_LENGTH,
     _cholesky_solve,
+    _cross,
+    _mv,
     cable_path,
     tree_acceleration,
     tree_wrench,
@@ -62,21 +64,6 @@ FLOAT_LAYOUT = {
     "T": slice(28, 37),
     "Tinv": slice(37, 46),
 }
-
-
-@njit(cache=True, nogil=True)
-def _cross(a: np.ndarray, b: np.ndarray, out: np.ndarray) -> None:
-    x = a[1] * b[2] - a[2] * b[1]
-    y = a[2] * b[0] - a[0] * b[2]
-    z = a[0] * b[1] - a[1] * b[0]
-    out[0], out[1], out[2] = x, y, z
-
-
-@njit(cache=True, nogil=True)
-def _matvec(A: np.ndarray, x: np.ndarray, out: np.ndarray) -> None:
-    """``out = A x`` for 3×3 ``A`` (loops: a BLAS call costs more than the product)."""
-    for i in range(3):
-        out[i] = A[i, 0] * x[0] + A[i, 1] * x[1] + A[i, 2] * x[2]
 
 
 @njit(cache=True, nogil=True)
@@ -145,8 +132,8 @@ def acceleration_one(
         R[0, 0], R[0, 1], R[1, 0], R[1, 1] = c, -s, s, c
         omega[2] = qd[2]
     elif kind == 2:
-        _matvec(T, q[3:6], t)
-        _matvec(T, qd[3:6], td)
+        _mv(T, q[3:6], t)
+        _mv(T, qd[3:6], td)
         for k in range(3):
             ax = ip[1 + k]
             for i in range(3):
@@ -163,7 +150,7 @@ def acceleration_one(
     for i in range(d):
         p[i] = q[i]
         F[i] = force[i] + w[i]
-    _matvec(R, com, rc)
+    _mv(R, com, rc)
     if kind == 1:
         N[2] = moment[0] + w[2] + rc[0] * force[1] - rc[1] * force[0]
     elif kind == 2:
@@ -171,7 +158,7 @@ def acceleration_one(
         for i in range(3):
             N[i] = moment[i] + w[3 + i] + mom[i]
     for i in range(n):
-        _matvec(R, cables[i, 3:6], arm)
+        _mv(R, cables[i, 3:6], arm)
         for j in range(3):
             b[j] = p[j] + arm[j]
         length = cable_path(cables[i], b, v)
@@ -204,13 +191,13 @@ def acceleration_one(
         return OK
     wb, h, gyro, nb, ab, alpha = vec[16], vec[17], vec[18], vec[19], vec[20], vec[21]
     _matTvec(R, omega, wb)
-    _matvec(inertia, wb, h)
+    _mv(inertia, wb, h)
     _cross(wb, h, gyro)
     _matTvec(R, nc, nb)
     for j in range(3):
         nb[j] -= gyro[j]
-    _matvec(inertia_inv, nb, ab)
-    _matvec(R, ab, alpha)
+    _mv(inertia_inv, nb, ab)
+    _mv(R, ab, alpha)
     _cross(rc, alpha, mom)
     for k in range(3):
         qdd[k] = F[k] / mass + mom[k] - wwr[k]
@@ -230,7 +217,7 @@ def acceleration_one(
         a, c = (k + 1) % 3, (k + 2) % 3
         _cross(U[:, a], U[:, c], cr)
         tdd[k] = (cr[0] * rhs[0] + cr[1] * rhs[1] + cr[2] * rhs[2]) / det
-    _matvec(Tinv, tdd, qdd[3:6])
+    _mv(Tinv, tdd, qdd[3:6])
     return OK
 
 
@@ -368,9 +355,9 @@ def wrench_one(
         R[0, 0], R[0, 1], R[1, 0], R[1, 1] = c, -s, s, c
         omega[2], alpha[2] = qd[2], qdd[2]
     elif kind == 2:
-        _matvec(T, q[3:6], t)
-        _matvec(T, qd[3:6], td)
-        _matvec(T, qdd[3:6], tdd)
+        _mv(T, q[3:6], t)
+        _mv(T, qd[3:6], td)
+        _mv(T, qdd[3:6], tdd)
         for k in range(3):
             ax = ip[1 + k]
             for i in range(3):
@@ -382,7 +369,7 @@ def wrench_one(
                 omega[i] += U[i, k] * td[k]
             rotate_about_axis(ax, t[k], R, tmp)
             R[:, :] = tmp
-    _matvec(R, com, rc)
+    _mv(R, com, rc)
     if kind != 0:
         _cross(alpha, rc, cr)
         _cross(omega, rc, wxr)
@@ -394,11 +381,11 @@ def wrench_one(
     if kind != 0:
         # N = I_c α + ω × I_c ω + r × m a_c − r × f₀ − moment, with I_c = R I Rᵀ
         _matTvec(R, omega, b)
-        _matvec(inertia, b, v)
-        _matvec(R, v, h)
+        _mv(inertia, b, v)
+        _mv(R, v, h)
         _matTvec(R, alpha, b)
-        _matvec(inertia, b, v)
-        _matvec(R, v, Ia)
+        _mv(inertia, b, v)
+        _mv(R, v, Ia)
         _cross(omega, h, cr)
         for i in range(3):
             v[i] = mass * ac[i] - force[i]
@@ -409,7 +396,7 @@ def wrench_one(
             for i in range(3):
                 wrench[3 + i] = Ia[i] + cr[i] + mom[i] - moment[i] - w_ext[3 + i]
     for i in range(cables.shape[0]):
-        _matvec(R, cables[i, 3:6], arm)
+        _mv(R, cables[i, 3:6], arm)
         for j in range(3):
             b[j] = p[j] + arm[j]
         length = cable_path(cables[i], b, v)
