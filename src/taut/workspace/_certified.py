@@ -21,7 +21,9 @@ and three tests run in turn:
 
 A box none of them decides is cut across each side at least half as wide as its widest
 (and wider than ``eps``), breadth first, until it is no wider than ``eps``; what is left is
-the undecided boundary layer.
+the undecided boundary layer.  This is set inversion (SIVIA, Jaulin et al. 2001), not the
+zero-finding branch-and-prune of :func:`taut.interval.branch_and_prune`: a box is kept for
+its verdict, not contracted towards solutions.
 
 * The volumes bound the workspace's: ``inner ≤ true ≤ inner + undecided`` (within the
   region).
@@ -47,6 +49,8 @@ References
    27(1), 2011, §III–V. (docs/references.bib: gouttefarde2011)
 .. [2] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University of
    Waterloo, 2022, §2.1.4. (docs/references.bib: rushton2022)
+.. [3] L. Jaulin, M. Kieffer, O. Didrit, É. Walter, "Applied Interval Analysis", Springer, 2001,
+   §3.4.1 (SIVIA). (docs/references.bib: jaulin2001)
 """
 
 from __future__ import annotations
