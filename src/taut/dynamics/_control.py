@@ -27,8 +27,10 @@ exactly.
 A platform carrying jointed bodies (prismatic and revolute joints in a tree) is controlled
 in its pose and joint coordinates alike: ``M̂``, ``ĥ`` are the tree's
 (:mod:`taut.dynamics._tree`), the wrench is the generalized force in the twist coordinates
-and the distribution solves it with the cable columns of the jointed structure matrix, its
-joints passive (moved by the cables acting across them).  The plant has no joint stops: an
+and the distribution solves it with the cable columns of the jointed structure matrix and,
+for the joints with an actuator (``joint.actuator``), one unit column each with the
+actuator's bounds (:mod:`taut.dynamics._actuators`); the other joints are passive, moved by
+the cables acting across them.  The plant has no joint stops: an
 update at which a joint coordinate is outside its limits is counted and its time reported.
 
 Angle errors take the short way: the orientation components of ``e`` are wrapped into
@@ -281,6 +283,16 @@ class ControlResult(Result):
         ``limits`` (the plant has no joint stops: the violation is reported, not prevented).
     first_joint_limit_time : float or None
         Time of the first such update [s], or None.
+    actuator_forces : ndarray, shape (S, n_actuators)
+        The forces [N] or torques [N m] of the joint actuators applied from each update, in
+        the order of :attr:`taut.model.Robot.actuated_joints` (no columns without actuators).
+    actuator_min, actuator_max : ndarray, shape (n_actuators,)
+        Their bounds (``±inf`` where unbounded).
+    actuator_margin : ndarray, shape (n_actuators,)
+        The smallest distance of each actuator's force to its bounds over every update
+        (``inf`` for an unbounded actuator).
+    actuator_peak : ndarray, shape (n_actuators,)
+        The largest ``|ζ|`` of each actuator over every update.
 
     Examples
     --------
@@ -325,6 +337,11 @@ class ControlResult(Result):
     first_failure_time: float | None  #: time of the first failed update [s], or None
     joint_limit_violations: int  #: updates at which a joint coordinate is outside its limits
     first_joint_limit_time: float | None  #: time of the first such update [s], or None
+    actuator_forces: np.ndarray  #: ``(S, n_actuators)`` the joint actuators' forces from each update
+    actuator_min: np.ndarray  #: ``(n_actuators,)``
+    actuator_max: np.ndarray  #: ``(n_actuators,)``
+    actuator_margin: np.ndarray  #: ``(n_actuators,)`` the smallest distance to a bound (``inf``: unbounded)
+    actuator_peak: np.ndarray  #: ``(n_actuators,)`` the largest ``|ζ|`` over every update
     elapsed_s: float = 0.0  #: wall-clock seconds of the simulation
     complete: bool = True  #: the simulation reached the end of the motion
 
@@ -634,17 +651,20 @@ def simulate_control(
         raise TautError(f"model must be a Robot (the controller's model), got {type(model).__name__}")
     check_callable(disturbance, "disturbance")
     check_callable(progress, "progress")
-    dof, n = robot.pose_size, robot.n_cables
+    dof, nc = robot.pose_size, robot.n_cables
     kp_, kd_ = _gains(kp, dof, "kp"), _gains(kd, dof, "kd")
     plant = loop_model(robot, method=method)
+    n = plant.kernels.n  # the cables, then the joint actuators
     if model is not None and (
         model.pose_size != dof
         or model.orientation != robot.orientation
         or not np.array_equal(model.exits, robot.exits)
         or not np.array_equal(model.anchors, robot.anchors)
+        or not np.array_equal(model.actuated_joints, robot.actuated_joints)
     ):
         raise TautError(
-            f"the controller's model {model.name} must have the cables and pose coordinates of {robot.name}"
+            f"the controller's model {model.name} must have the cables, joint actuators and pose coordinates of "
+            f"{robot.name}"
         )
     ctrl = plant if model is None else loop_model(model, method=method)
     duration = motion.duration
@@ -668,7 +688,7 @@ def simulate_control(
     qd = np.array(first.velocity[0]) if qd0 is None else np.array(as_rates(robot, qd0, 1)[0])
     angles = angle_columns(robot)
     d = robot.dimension
-    lo, hi = robot.tension_bounds
+    lo, hi = plant.buffers["lo"], plant.buffers["hi"]
     gains = np.array([kp_, kd_])
     columns = np.array([angles.start, angles.stop], np.int64)
     # q, q̇ (advanced in place), then q, q̇, e, q̈_cmd at the start of an update done here
@@ -683,6 +703,7 @@ def simulate_control(
     err_max, err_sq = np.zeros(dof), np.zeros(dof)
     pos_max = rot_max = 0.0
     lower = upper = math.inf
+    act_margin, act_peak = np.full(n - nc, math.inf), np.zeros(n - nc)
     slack_events = failures = beyond = 0
     first_failure: float | None = None
     first_beyond: float | None = None
@@ -759,9 +780,12 @@ def simulate_control(
         err_max = np.maximum(err_max, np.abs(Eb).max(axis=0))
         err_sq += (Eb**2).sum(axis=0)
         pos_max, rot_max = max(pos_max, float(pos.max())), max(rot_max, float(rot.max()))
-        lower = min(lower, float((Tb - lo).min()))
-        upper = min(upper, float((hi - Tb).min()))
-        slack_events += int(np.count_nonzero(_slack(Tb, lo).any(axis=1)))
+        lower = min(lower, float((Tb[:, :nc] - lo[:nc]).min()))
+        upper = min(upper, float((hi[:nc] - Tb[:, :nc]).min()))
+        if n > nc:
+            act_margin = np.minimum(act_margin, np.minimum(Tb[:, nc:] - lo[nc:], hi[nc:] - Tb[:, nc:]).min(axis=0))
+            act_peak = np.maximum(act_peak, np.abs(Tb[:, nc:]).max(axis=0))
+        slack_events += int(np.count_nonzero(_slack(Tb[:, :nc], lo[:nc]).any(axis=1)))
         bad = np.flatnonzero(~okb)
         failures += bad.size
         if first_failure is None and bad.size:
@@ -780,10 +804,12 @@ def simulate_control(
         stored += keep.size
         v_prev = V[end - 1].copy()
     assert stored == kept, "every kept update is stored once"
-    frozen = [out_t, out_ref, out_q, out_v, out_e, out_pos, out_rot, out_a, out_tau, out_ok, out_d, kp_, kd_]
-    tmin, tmax = np.array(lo, float), np.array(hi, float)
+    tensions, forces = out_tau[:, :nc].copy(), out_tau[:, nc:].copy()
+    frozen = [out_t, out_ref, out_q, out_v, out_e, out_pos, out_rot, out_a, tensions, forces, out_ok, out_d, kp_, kd_]
+    tmin, tmax = np.array(lo[:nc], float), np.array(hi[:nc], float)
+    amin, amax = np.array(lo[nc:], float), np.array(hi[nc:], float)
     rms = np.sqrt(err_sq / (K + 1))
-    for a in (*frozen, tmin, tmax, err_max, rms):
+    for a in (*frozen, tmin, tmax, amin, amax, act_margin, act_peak, err_max, rms):
         a.setflags(write=False)
     return ControlResult(
         times=out_t,
@@ -794,7 +820,7 @@ def simulate_control(
         position_error=out_pos,
         rotation_error=out_rot,
         command=out_a,
-        tensions=out_tau,
+        tensions=tensions,
         feasible=out_ok,
         disturbance=out_d,
         tension_min=tmin,
@@ -818,5 +844,10 @@ def simulate_control(
         first_failure_time=first_failure,
         joint_limit_violations=beyond,
         first_joint_limit_time=first_beyond,
+        actuator_forces=forces,
+        actuator_min=amin,
+        actuator_max=amax,
+        actuator_margin=act_margin,
+        actuator_peak=act_peak,
         elapsed_s=perf_counter() - started,
     )
