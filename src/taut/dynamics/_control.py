@@ -609,6 +609,10 @@ def simulate_control(
         variable-structure robot, as a straight line, meets one of its obstacles
         (:func:`taut.kinematics.obstacles_met`): the loop models straight cables, and the
         wrapped cable's length and direction are not theirs.
+    InfeasiblePoseError
+        Also where the reference or the simulated motion brings a cable's anchor within its
+        swivelling pulley's radius of the pulley's axis
+        (:func:`taut.kinematics.refuse_near_swivel_axis`), named with the time.
 
     References
     ----------
@@ -636,7 +640,7 @@ def simulate_control(
     """
     from taut.dynamics._kernels import control_updates
     from taut.geometry import rotation_matrix
-    from taut.kinematics import as_poses, refuse_wrapped
+    from taut.kinematics import as_poses, refuse_near_swivel_axis, refuse_wrapped
     from taut.statics import EQUILIBRIUM_RTOL
 
     started = perf_counter()
@@ -722,6 +726,7 @@ def simulate_control(
         ahead = np.array([mid.poses, mid.velocity, mid.acceleration])
         D = _tabulate(disturbance, time, int(substeps), dof)
         refuse_wrapped(robot, samples.poses, times=time, what="of the reference")
+        refuse_near_swivel_axis(robot, samples.poses, times=time, what="of the reference")
         Q, V, E, A = (np.zeros((g.size, dof)) for _ in range(4))
         T = np.zeros((g.size, n))
         ok_all = np.ones(g.size, dtype=bool)
@@ -767,6 +772,7 @@ def simulate_control(
             k += 1
         new = slice(k0 - g0, end)
         refuse_wrapped(robot, Q[new], times=time[new], what="of the simulated motion")
+        refuse_near_swivel_axis(robot, Q[new], times=time[new], what="of the simulated motion")
         Eb, Tb, okb, tb = E[new], T[new], ok_all[new], time[new]
         pos = np.linalg.norm(Eb[:, :d], axis=1)
         rot = np.zeros(pos.size)

@@ -35,7 +35,7 @@ from taut._results import Result
 from taut.dynamics._forward import KernelModel, kernel_model, quick_rows
 from taut.dynamics._platform import as_rates, check_callable
 from taut.errors import TautError
-from taut.kinematics import as_poses, refuse_wrapped
+from taut.kinematics import as_poses, refuse_near_swivel_axis, refuse_wrapped
 from taut.model import Robot
 
 __all__ = ["InverseDynamicsResult", "required_wrench", "inverse_dynamics"]
@@ -303,6 +303,9 @@ def inverse_dynamics(
     WrappedCableError
         A sample where a cable of a variable-structure robot, taken as a straight line, meets
         one of its obstacles (its wrapped length depends on the motion).
+    InfeasiblePoseError
+        A sample where a cable's anchor is within its swivelling pulley's radius of the
+        pulley's axis (:func:`taut.kinematics.refuse_near_swivel_axis`).
 
     References
     ----------
@@ -348,6 +351,7 @@ def inverse_dynamics(
         if sample_times.shape != (N,) or not np.isfinite(sample_times).all():
             raise TautError(f"sample times must be {N} finite numbers, got shape {sample_times.shape}")
     refuse_wrapped(robot, arr, times=sample_times, what="of the motion")
+    refuse_near_swivel_axis(robot, arr, times=sample_times, what="of the motion")
     from taut.dynamics._kernels import ZERO_LENGTH
 
     w = _ext(robot, wrench, N)
