@@ -80,16 +80,16 @@ def test_simulate_spiderbot_with_its_joint_motors(taut_cli, tmp_path):
     actuated joints); the report has every coordinate's error, the cables' margins and the
     motors' forces, as the library computes them.  Without motors the arm, which no cable
     reaches, cannot be held: one line, exit 2."""
-    run = taut_cli("simulate", str(SPIDERBOT), SPIDER_WAYPOINTS, "--duration", "2", "--json")
+    run = taut_cli("simulate", str(SPIDERBOT), SPIDER_WAYPOINTS, "--duration", "1", "--json")
     assert run.code == 0, run.err
     d = run.json()
     robot = load_robot(SPIDERBOT)
     assert d["pose_names"] == robot.pose_names and len(d["tracking_error_max"]) == 12
     assert d["actuated_joints"] == robot.pose_names[6:]
     assert d["feasible"] is True and d["slack_events"] == 0 and d["min_tension_margin"] > 0
-    assert max(d["tracking_error_max"]) < 1e-6
+    assert max(d["tracking_error_max"]) < 1e-5
     W = np.array([[float(x) for x in p.split(",")] for p in SPIDER_WAYPOINTS.split("=", 1)[1].split(";")])
-    lib = simulate_control(robot, trajectory_from_waypoints(robot, W, duration=2.0), rate_hz=1000)
+    lib = simulate_control(robot, trajectory_from_waypoints(robot, W, duration=1.0), rate_hz=1000)
     np.testing.assert_allclose(d["tracking_error_max"], lib.tracking_error_max, rtol=1e-9, atol=1e-15)
     np.testing.assert_allclose(d["actuator_force_max"], lib.actuator_peak, rtol=1e-12)
     assert (lib.actuator_peak >= np.abs(lib.actuator_forces).max(axis=0)).all()
@@ -99,6 +99,6 @@ def test_simulate_spiderbot_with_its_joint_motors(taut_cli, tmp_path):
     convert = taut_cli("convert", str(SPIDERBOT), str(passive))
     assert convert.code == 0
     passive.write_text("\n".join(line for line in passive.read_text().splitlines() if "actuator" not in line))
-    run = taut_cli("simulate", str(passive), SPIDER_WAYPOINTS, "--duration", "2", "--json")
+    run = taut_cli("simulate", str(passive), SPIDER_WAYPOINTS, "--duration", "1", "--rate", "100", "--json")
     assert run.code == 2 and run.out == "" and len(run.err.splitlines()) == 1
     assert "no admissible tensions at the start" in run.err

@@ -173,5 +173,15 @@ def test_simulate_refuses_an_anchor_within_its_pulley_radius_of_the_axis(tmp_pat
         return float(np.linalg.norm(np.cross(b - exit_, k)))
 
     assert distance(t) < 0.1 <= distance(t - 1e-3)
-    away = taut_cli("simulate", str(path), "--waypoints", "0,0,0,0,0,0;0.1,-0.1,0,0,0,0", "--duration", "1", "--json")
+    away = taut_cli(
+        "simulate",
+        str(path),
+        "--waypoints",
+        "0,0,0,0,0,0;0.1,-0.1,0,0,0,0",
+        "--duration",
+        "1",
+        "--rate",
+        "200",
+        "--json",
+    )
     assert away.code == 0, away.err

@@ -91,14 +91,14 @@ def test_actuator_bounds_decide_feasibility(data: st.DataObject) -> None:
 
 def test_spiderbot_tracks_a_motion_with_its_joint_motors() -> None:
     """The base moves and all six joints turn; with an exact model every coordinate tracks to
-    a micrometre (a microradian); without its motors the arm cannot be held (no cable reaches
+    a few micrometres (microradians); without its motors the arm cannot be held (no cable reaches
     it), and a motor too weak for its joint is reported at every update."""
     robot = spiderbot()
     a = [0.0, 0.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.5708, 0.0]
     b = [0.1, 0.05, 0.35, 0.0, 0.0, 0.05, 0.3, -0.4, 0.5, 0.2, -1.2, 0.1]
-    motion = trajectory_from_waypoints(robot, [a, b], duration=1.0)
+    motion = trajectory_from_waypoints(robot, [a, b], duration=0.5)
     run = simulate_control(robot, motion, rate_hz=1000)
-    assert run.all_feasible and run.tracking_error_max.max() < 1e-6
+    assert run.all_feasible and run.tracking_error_max.max() < 1e-5
     assert run.actuator_forces.shape == (run.times.size, 6)
     np.testing.assert_array_equal(run.actuator_min, -np.inf)
     # at the end, at rest, the motors hold the arm as the statics says
@@ -106,18 +106,18 @@ def test_spiderbot_tracks_a_motion_with_its_joint_motors() -> None:
     np.testing.assert_allclose(run.actuator_forces[-1], joint_forces(robot, end, run.tensions[-1]), atol=1e-2)
     passive = with_actuators(robot, dict.fromkeys(range(6)))
     with pytest.raises(InfeasiblePoseError, match="no admissible tensions at the start"):
-        simulate_control(passive, motion, rate_hz=1000)
+        simulate_control(passive, motion, rate_hz=200)
     weak = with_actuators(robot, {1: (-1.0, 1.0)})  # the upper arm needs about 18 N m
     with pytest.raises(InfeasiblePoseError, match="no admissible tensions at the start"):
-        simulate_control(weak, motion, rate_hz=1000)
+        simulate_control(weak, motion, rate_hz=200)
     # enough for the start (18.3 N m at rest), not for the end (17.0 N m at rest)
     start = joint_forces(robot, a, np.zeros(robot.n_cables))[1]
-    tight = with_actuators(robot, {1: (start - 0.3, start + 0.3)})
-    run = simulate_control(tight, motion, rate_hz=1000)
+    tight = with_actuators(robot, {1: (start - 0.5, start + 0.5)})
+    run = simulate_control(tight, motion, rate_hz=200)
     assert run.failures > 0 and run.first_failure_time is not None and run.first_failure_time > 0
-    assert (run.actuator_forces[:, 1] >= start - 0.3 - 1e-9).all()
-    assert (run.actuator_forces[:, 1] <= start + 0.3 + 1e-9).all()
-    assert run.actuator_margin[1] < 0.3 and np.isinf(run.actuator_margin[0])
+    assert (run.actuator_forces[:, 1] >= start - 0.5 - 1e-9).all()
+    assert (run.actuator_forces[:, 1] <= start + 0.5 + 1e-9).all()
+    assert run.actuator_margin[1] < 0.5 and np.isinf(run.actuator_margin[0])
 
 
 def test_a_bounded_actuator_beside_the_cables_of_the_adjustable_platform() -> None:

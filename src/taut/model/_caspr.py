@@ -31,15 +31,17 @@ inertia are the (last) body's ``mass``, ``com`` and ``inertia``. A joint with ``
 has a joint actuator on each of its degrees of freedom (``joint.actuator``), unbounded as
 CASPR's are (its ``tau_min``/``tau_max`` are ±∞ and the files give none); without it the joint
 is passive, moved by the cables across it. taut's pose is CASPR's ``q``: the platform's
-coordinates, then the joint coordinates in link order. Cables attached to a further link get its
+coordinates, then the joint coordinates in link order (a further link's ``S_FIXED_XYZ`` in the
+chain's order above). Cables attached to a further link get its
 name as ``body`` (``link k`` for an unnamed or repeated name). On a planar platform a revolute
 joint must turn about the plane's normal and a prismatic one move in the plane; the plane maps
 as below, and a joint turning against taut's planar angles (``R_Y`` in the XZ plane) gets the
 coordinate ``−q`` (stated in the description).
 
 What does not map onto a platform carrying a tree of bodies is refused, with the reason: a
-chain of links jointed to the ground (CASPR's multilink arms, whose first link turns about a
-fixed joint: taut's platform is free), a link jointed to the ground or to the ``T_XYZ`` carrier
+chain of links jointed to the ground (a multilink arm whose first link turns about a fixed
+joint, like the ``R_Z`` chain of ``tests/model/fixtures/caspr/multilink``: taut's platform is
+free), a link jointed to the ground or to the ``T_XYZ`` carrier
 beside the platform (not reachable from the platform), the quaternion joints of CASPR's earlier
 releases (``SPHERICAL``, ``SPATIAL``: four coordinates for three degrees of freedom), a
 ``PLANAR_*`` joint between two links, further links on a point-mass platform, an actuated
@@ -71,8 +73,8 @@ Cable attachments are relative to the joint (``attachment_reference="joint"``) o
 centre of mass (``"com"``); inertia is given about the centre of mass (``ref="com"``) or the
 joint (``ref="joint"``, shifted to the centre of mass: ``I_G = I_O − m(|c|² E − c cᵀ)``).
 ``cable_linear_spring``'s ``<K>`` is the cable's axial rigidity EA [N]: CASPR's stiffness is
-``K / length`` [N/m]; taut's ``stiffness`` is EA. ``q_min``/``q_max`` and ``q_initial`` bound
-and start CASPR's simulations and are not part of the robot.
+``K / length`` [N/m]; taut's ``stiffness`` is EA. The platform link's ``q_min``/``q_max`` and
+every ``q_initial`` bound and start CASPR's simulations and are not part of the robot.
 
 A ``base_rotating_pulley`` (CASPR's ``BaseRotatingPulleyAttachment``, the first attachment of
 a cable) is taut's swivelling pulley (``cables[].swivel``): ``fixed_location`` (in the base
