@@ -94,6 +94,9 @@ def test_simulate_spiderbot_with_its_joint_motors(taut_cli, tmp_path):
     np.testing.assert_allclose(d["actuator_force_max"], lib.actuator_peak, rtol=1e-12)
     assert (lib.actuator_peak >= np.abs(lib.actuator_forces).max(axis=0)).all()
     assert d["actuator_margin"] == [None] * 6  # unbounded, as CASPR's motors are
+    assert min(d["tension_margin_per_cable"]) == d["min_tension_margin"]
+    np.testing.assert_allclose(d["tension_margin_per_cable"], lib.cable_margin, rtol=1e-9)
+    assert d["slack_events_per_cable"] == [0] * 8
     assert 15 < d["actuator_force_max"][1] < 20  # the upper arm holds the arm's weight
     passive = tmp_path / "spiderbot_passive.yaml"
     convert = taut_cli("convert", str(SPIDERBOT), str(passive))

@@ -70,6 +70,8 @@ RESULT_KEYS = {
     "actuator_max": "actuator_max",
     "actuator_margin": "actuator_margin",
     "actuator_force_max": "actuator_peak",
+    "tension_margin_per_cable": "cable_margin",
+    "slack_events_per_cable": "cable_slack_events",
 }
 
 DISTURBANCE_HELP = (

@@ -293,6 +293,11 @@ class ControlResult(Result):
         (``inf`` for an unbounded actuator).
     actuator_peak : ndarray, shape (n_actuators,)
         The largest ``|ζ|`` of each actuator over every update.
+    cable_margin : ndarray, shape (n,)
+        Each cable's smallest distance to its tension bounds over every update [N]
+        (``min(lower_margin, upper_margin)`` is their minimum).
+    cable_slack_events : ndarray of int, shape (n,)
+        The updates at which each cable's commanded tension is at or below its minimum.
 
     Examples
     --------
@@ -342,6 +347,8 @@ class ControlResult(Result):
     actuator_max: np.ndarray  #: ``(n_actuators,)``
     actuator_margin: np.ndarray  #: ``(n_actuators,)`` the smallest distance to a bound (``inf``: unbounded)
     actuator_peak: np.ndarray  #: ``(n_actuators,)`` the largest ``|ζ|`` over every update
+    cable_margin: np.ndarray  #: ``(n,)`` each cable's smallest distance to its tension bounds [N]
+    cable_slack_events: np.ndarray  #: ``(n,)`` int: updates at which each cable is at or below its minimum
     elapsed_s: float = 0.0  #: wall-clock seconds of the simulation
     complete: bool = True  #: the simulation reached the end of the motion
 
@@ -708,6 +715,7 @@ def simulate_control(
     pos_max = rot_max = 0.0
     lower = upper = math.inf
     act_margin, act_peak = np.full(n - nc, math.inf), np.zeros(n - nc)
+    cable_margin, cable_slack = np.full(nc, math.inf), np.zeros(nc, dtype=np.int64)
     slack_events = failures = beyond = 0
     first_failure: float | None = None
     first_beyond: float | None = None
@@ -791,7 +799,10 @@ def simulate_control(
         if n > nc:
             act_margin = np.minimum(act_margin, np.minimum(Tb[:, nc:] - lo[nc:], hi[nc:] - Tb[:, nc:]).min(axis=0))
             act_peak = np.maximum(act_peak, np.abs(Tb[:, nc:]).max(axis=0))
-        slack_events += int(np.count_nonzero(_slack(Tb[:, :nc], lo[:nc]).any(axis=1)))
+        slack = _slack(Tb[:, :nc], lo[:nc])
+        slack_events += int(np.count_nonzero(slack.any(axis=1)))
+        cable_slack += slack.sum(axis=0)
+        cable_margin = np.minimum(cable_margin, np.minimum(Tb[:, :nc] - lo[:nc], hi[:nc] - Tb[:, :nc]).min(axis=0))
         bad = np.flatnonzero(~okb)
         failures += bad.size
         if first_failure is None and bad.size:
@@ -815,7 +826,7 @@ def simulate_control(
     tmin, tmax = np.array(lo[:nc], float), np.array(hi[:nc], float)
     amin, amax = np.array(lo[nc:], float), np.array(hi[nc:], float)
     rms = np.sqrt(err_sq / (K + 1))
-    for a in (*frozen, tmin, tmax, amin, amax, act_margin, act_peak, err_max, rms):
+    for a in (*frozen, tmin, tmax, amin, amax, act_margin, act_peak, cable_margin, cable_slack, err_max, rms):
         a.setflags(write=False)
     return ControlResult(
         times=out_t,
@@ -855,5 +866,7 @@ def simulate_control(
         actuator_max=amax,
         actuator_margin=act_margin,
         actuator_peak=act_peak,
+        cable_margin=cable_margin,
+        cable_slack_events=cable_slack,
         elapsed_s=perf_counter() - started,
     )
