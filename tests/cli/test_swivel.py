@@ -144,3 +144,44 @@ def test_igp_models_the_pulleys(taut_cli: Callable) -> None:
     for s in res["solutions"]:
         ik = inverse_kinematics(robot, [*s["position"], *s["orientation"]])
         np.testing.assert_allclose(s["lengths"], ik.lengths, atol=1e-12)
+
+
+def test_simulate_refuses_an_anchor_within_its_pulley_radius_of_the_axis(tmp_path: Path, taut_cli: Callable) -> None:
+    """Cable 1's pulley axis points at the frame's centre: the reference motion brings its
+    anchor within the pulley's 0.1 m radius of the axis, which is one line naming the time,
+    the cable, the distance and the pose, and exit 2; the same motion the other way is simulated."""
+    text = ROBOT_YAML.replace(
+        "swivel: {axis: [0, 0, 1], radius: 0.08}}", "swivel: {axis: [1.5, 1, 1], radius: 0.1}}", 1
+    ).replace("  mass: 5.0\n", "  mass: 5.0\n  inertia: [0.05, 0.05, 0.08, 0, 0, 0]\n")
+    path = tmp_path / "near_axis.yaml"
+    path.write_text(text)
+    run = taut_cli("simulate", str(path), "--waypoints", "0,0,0,0,0,0;-0.1,0.1,0,0,0,0", "--duration", "1", "--json")
+    assert run.code == 2 and run.out == "" and len(run.err.splitlines()) == 1, run.err
+    assert "of the reference cable 1's anchor is" in run.err and "within the pulley's radius 0.1 m" in run.err
+    assert "Traceback" not in run.err
+    # the first such time: the anchor's distance from the axis, along the quintic reference
+    robot = load_robot(path)
+    t = float(run.err.split("at t = ")[1].split(" s")[0])
+    from taut.motion import trajectory_from_waypoints
+
+    motion = trajectory_from_waypoints(robot, [[0.0] * 6, [-0.1, 0.1, 0, 0, 0, 0]], duration=1.0)
+    k = np.array([1.5, 1.0, 1.0]) / np.linalg.norm([1.5, 1.0, 1.0])
+    exit_, anchor = np.array([-1.5, -1.0, -1.0]), np.array([0.15, -0.1, 0.05])
+
+    def distance(time: float) -> float:
+        b = motion.at([time]).poses[0, :3] + anchor
+        return float(np.linalg.norm(np.cross(b - exit_, k)))
+
+    assert distance(t) < 0.1 <= distance(t - 1e-3)
+    away = taut_cli(
+        "simulate",
+        str(path),
+        "--waypoints",
+        "0,0,0,0,0,0;0.1,-0.1,0,0,0,0",
+        "--duration",
+        "1",
+        "--rate",
+        "200",
+        "--json",
+    )
+    assert away.code == 0, away.err

@@ -121,7 +121,12 @@ def test_infeasible_demand_holds_the_last_admissible_tensions(robot):
     assert lp.feasible[res.feasible].all()
     lo, hi = robot.tension_bounds
     assert (res.tensions >= lo - 1e-9).all() and (res.tensions <= hi + 1e-9).all()
-    assert res.slack_events == int(np.count_nonzero((res.tensions <= lo + 1e-6 * np.maximum(1, lo)).any(axis=1)))
+    slack = res.tensions <= lo + 1e-6 * np.maximum(1, lo)
+    assert res.slack_events == int(np.count_nonzero(slack.any(axis=1)))
+    # per cable, over every update (all kept here)
+    np.testing.assert_array_equal(res.cable_slack_events, slack.sum(axis=0))
+    np.testing.assert_allclose(res.cable_margin, np.minimum(res.tensions - lo, hi - res.tensions).min(axis=0))
+    assert res.cable_margin.min() == min(res.lower_margin, res.upper_margin)
 
 
 @settings(max_examples=12, deadline=None)

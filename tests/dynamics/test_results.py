@@ -38,7 +38,7 @@ def test_inverse_dynamics_result(spatial):
     qdd[-1, 2] = 400.0  # no admissible tensions there
     res = inverse_dynamics(spatial, q, qd, qdd, method="qp", times=t)
     d = check_result(res)
-    assert set(d) == {"times", "wrench", "tensions", "feasible", "status", "reasons", "method"}
+    assert set(d) == {"times", "wrench", "tensions", "feasible", "status", "reasons", "method", "actuator_forces"}
     same(d["times"], t)
     same(d["wrench"], required_wrench(spatial, q, qd, qdd))
     assert d["feasible"] == [True] * 5 + [False] and d["status"][-1] == "infeasible" and d["reasons"][0] == ""

@@ -592,3 +592,30 @@ def test_caspr_planar_point_mass_pulley(tmp_path: Path) -> None:
         ik = inverse_kinematics(robot, [x, z])
         assert ik.lengths[0] == pytest.approx(length, abs=1e-9)
         np.testing.assert_allclose(ik.exit_points[0], tangent[[0, 2]] - [0.05, 0.02], atol=1e-8)
+
+
+@settings(max_examples=100, deadline=None)
+@given(
+    position=st.tuples(*[st.floats(-1.0, 1.0)] * 3),
+    axis=st.tuples(*[st.floats(-1.0, 1.0)] * 3).filter(lambda v: np.linalg.norm(v) > 0.1),
+    radius=st.floats(0.01, 1.0),
+)
+def test_refuse_near_swivel_axis_is_the_distance_to_the_axis(position, axis, radius) -> None:
+    """A pose is refused exactly when an anchor is nearer its pulley's axis than the radius
+    (the distance ``‖(b − a) × k‖`` of the anchor from the axis line), naming that cable."""
+    from taut.kinematics import refuse_near_swivel_axis
+
+    base = taut.example("spatial-8cable")
+    k = np.array(axis) / np.linalg.norm(axis)
+    cables = list(base.cables)
+    cables[2] = cables[2].model_copy(update={"swivel": {"axis": tuple(axis), "radius": radius}})
+    robot = base.model_copy(update={"cables": tuple(cables)})
+    pose = np.array([*position, 0.0, 0.0, 0.0])
+    b = pose[:3] + robot.anchors[2]
+    distance = np.linalg.norm(np.cross(b - robot.exits[2], k))
+    assume(abs(distance - radius) > 1e-9)
+    if distance < radius:
+        with pytest.raises(InfeasiblePoseError, match=r"at pose 1 cable 3's anchor is .* within the pulley's radius"):
+            refuse_near_swivel_axis(robot, pose)
+    else:
+        assert refuse_near_swivel_axis(robot, pose) is None

@@ -28,6 +28,7 @@ FIXTURES = Path(__file__).parent / "fixtures" / "caspr"
 ARM = FIXTURES / "jointed_arm_bodies.xml"
 CHAIN = FIXTURES / "jointed_chain_bodies.xml"
 SPIDER = FIXTURES / "real" / "SpiderBot_UR3_bodies.xml"
+MULTIDOF = FIXTURES / "multidof_bodies.xml"
 G = 9.81  # CASPR's gravity, along -z
 
 #: (bodies file, cable set, platform position offset) of the models checked at random poses;
@@ -36,6 +37,7 @@ MODELS = {
     "arm": (ARM, None, np.array([0.0, 0.0, 1.0])),
     "chain": (CHAIN, None, np.array([0.0, 0.0, 1.0])),
     "spiderbot": (SPIDER, "set_1", np.zeros(3)),
+    "multidof": (MULTIDOF, None, np.array([0.0, 0.0, 1.0])),
 }
 
 
@@ -102,14 +104,18 @@ def raw_cables(bodies: Path, cable_set: str | None) -> list[dict]:
 
 DOFS = {"SPATIAL_EULER_XYZ": 6, "T_XYZ": 3, "S_EULER_XYZ": 3, "S_FIXED_XYZ": 3}
 DOFS |= {"PLANAR_XY": 3, "PLANAR_XZ": 3, "PLANAR_YZ": 3}
+DOFS |= {"U_XY": 2, "U_YZ": 2, "U_XZ": 2, "P_XY": 2, "P_XZ": 2}
 
 
 def frames(links: list[dict], q: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
-    """World position of each link's joint origin and its rotation at CASPR's ``q``: ``R_0k =
-    R_0p R_pe(q_k)``, ``p_k = p_p + R_0p (location_k + r_rel(q_k))``."""
+    """World position of each link's joint origin and its rotation at taut's pose ``q``: ``R_0k =
+    R_0p R_pe(q_k)``, ``p_k = p_p + R_0p (location_k + r_rel(q_k))``.  taut's pose is CASPR's
+    ``q``, but for a further link's S_FIXED_XYZ joint, whose chain taut turns γ first: its
+    coordinates come as (γ, β, α) (the module docstring of ``taut.model._caspr``)."""
     out: list[tuple[np.ndarray, np.ndarray]] = []
     i = 0
-    for link in links:
+    first = platform_index(links)
+    for k, link in enumerate(links):
         t = link["type"]
         n = DOFS.get(t, 1)
         qk = q[i : i + n]
@@ -122,7 +128,15 @@ def frames(links: list[dict], q: np.ndarray) -> list[tuple[np.ndarray, np.ndarra
         elif t == "S_EULER_XYZ":
             R_pe = rx(qk[0]) @ ry(qk[1]) @ rz(qk[2])
         elif t == "S_FIXED_XYZ":
-            R_pe = rz(qk[2]) @ ry(qk[1]) @ rx(qk[0])
+            a, b, g = qk if k <= first else qk[::-1]
+            R_pe = rz(g) @ ry(b) @ rx(a)
+        elif t in ("U_XY", "U_YZ", "U_XZ"):
+            first_axis, second_axis = {"U_XY": (rx, ry), "U_YZ": (ry, rz), "U_XZ": (rx, rz)}[t]
+            R_pe = first_axis(qk[0]) @ second_axis(qk[1])
+        elif t == "P_XY":
+            r_rel = np.array([qk[0], qk[1], 0.0])
+        elif t == "P_XZ":
+            r_rel = np.array([qk[0], 0.0, qk[1]])
         elif t == "PLANAR_XY":
             r_rel, R_pe = np.array([qk[0], qk[1], 0.0]), rz(qk[2])
         elif t == "PLANAR_XZ":
@@ -324,10 +338,25 @@ def same(s: str) -> str:
 REFUSED = [
     (
         ARM,
-        lambda s: s.replace('type="R_Y"', 'type="U_XY"'),
+        lambda s: s.replace('type="R_Y"', 'type="SPHERICAL"'),
         same,
         UnsupportedRobotError,
-        r"link 2 \('elbow'\) has a U_XY joint",
+        r"link 2 \('elbow'\) has a SPHERICAL joint, whose coordinates are a quaternion",
+    ),
+    (
+        ARM,
+        lambda s: s.replace('type="R_Y"', 'type="PLANAR_XZ"'),
+        same,
+        UnsupportedRobotError,
+        r"link 2 \('elbow'\) has a PLANAR_XZ joint, which taut reads for the platform link only",
+    ),
+    (ARM, lambda s: s.replace('type="R_Y"', 'type="R_W"'), same, RobotFileError, "unknown joint type 'R_W'"),
+    (
+        ARM,
+        lambda s: s.replace('type="R_Y"', 'type="U_XY"'),
+        same,
+        RobotFileError,
+        r"U_XY joint's q_min/q_max \(one number per degree of freedom\): expected 2 numbers",
     ),
     (
         ARM,
@@ -336,7 +365,6 @@ REFUSED = [
         UnsupportedRobotError,
         r"link 4 \('slider'\) is jointed to the ground \(link 0\)",
     ),
-    (ARM, lambda s: s.replace('type="P_X" actuated="true"', 'type="P_X"'), same, UnsupportedRobotError, "passive"),
     (
         ARM,
         lambda s: s.replace('"SPATIAL_EULER_XYZ"', '"SPATIAL_EULER_XYZ" actuated="true"'),
@@ -552,6 +580,7 @@ def assert_same_robot(back: Robot, robot: Robot, poses: np.ndarray) -> None:
         assert (a.joint.kind, a.joint.axis, a.joint.limits) == (b.joint.kind, b.joint.axis, b.joint.limits)
         assert a.joint.origin == (b.joint.origin or (0.0,) * robot.dimension)
         assert (a.mass, a.com, a.inertia) == (b.mass, b.com, b.inertia)
+        assert a.joint.actuator == b.joint.actuator
     assert [c.body for c in back.cables] == [c.body for c in robot.cables]
     np.testing.assert_array_equal(back.exits, robot.exits)
     np.testing.assert_array_equal(back.anchors, robot.anchors)
@@ -587,6 +616,8 @@ def random_poses(robot: Robot, centre: np.ndarray, n: int = 50) -> np.ndarray:
         (CHAIN, None, (0, 0, 1)),
         (SPIDER, None, (1.1, 1.1, 1.0)),
         (SPIDER, "set_1", (0, 0, 0)),
+        (SPIDER, "set_IPAnema_inspired", (0, 0, 0.3)),
+        (MULTIDOF, None, (0, 0, 1)),
         (XZ, None, (0, 1)),
         (XY, None, (0, 0)),
         (YZ, None, (0, 1)),
@@ -620,7 +651,7 @@ def test_adjustable_platform_round_trip(tmp_path: Path) -> None:
     robot = without_cable_radii(robot)
     out = tmp_path / "adjustable_bodies.xml"
     write_caspr(robot, out)
-    assert '<joint type="P_AXIS" actuated="true"' in out.read_text()
+    assert '<joint type="P_AXIS" actuated="false"' in out.read_text()  # a passive joint: no actuator
     back = read_caspr(out)
     poses = random_poses(robot, np.array([5.0, 5.0, 4.0]))
     assert_same_robot(back, robot, poses)
@@ -662,18 +693,32 @@ def test_cli_ik_of_a_jointed_caspr_model(taut_cli) -> None:  # noqa: ANN001
 @pytest.mark.parametrize(
     ("edit", "words"),
     [
-        (lambda s: s.replace('type="R_Y"', 'type="U_XY"'), ("U_XY",)),
-        (lambda s: s.replace('type="P_X" actuated="true"', 'type="P_X"'), ("passive",)),
+        (lambda s: s.replace('type="R_Y"', 'type="U_XY"'), ("U_XY", "expected 2 numbers")),
+        (lambda s: s.replace('type="R_Y"', 'type="R_W"'), ("link 2", "unknown joint type 'R_W'")),
+        (lambda s: s.replace('type="R_Y"', 'type="SPHERICAL"'), ("SPHERICAL", "quaternion")),
         (lambda s: s.replace(' axis="0 1 1"', ""), ("R_AXIS", "axis")),
     ],
 )
-def test_cli_bad_jointed_files_one_line_exit_2(tmp_path: Path, taut_cli, edit, words: tuple[str, ...]) -> None:  # noqa: ANN001
+@pytest.mark.parametrize("command", ["ik", "convert", "check"])
+def test_cli_bad_jointed_files_one_line_exit_2(
+    tmp_path: Path,
+    taut_cli,  # noqa: ANN001
+    edit,  # noqa: ANN001
+    words: tuple[str, ...],
+    command: str,
+) -> None:
     path = edited(tmp_path, ARM, edit, same)
-    run = taut_cli("ik", str(path), "--pose=0,0,1,0,0,0,0,0,0,0")
+    options = {
+        "ik": ["--pose=0,0,1,0,0,0,0,0,0,0"],
+        "convert": [str(tmp_path / "out.yaml")],
+        "check": ["--trajectory", "any"],
+    }[command]
+    run = taut_cli(command, str(path), *options)
     assert run.code == 2
     assert run.err.count("\n") == 1 and run.err.startswith("taut: error: ")
     assert all(w in run.err for w in words), run.err
     assert "Traceback" not in run.err
+    assert not (tmp_path / "out.yaml").exists()
 
 
 def test_cli_convert_jointed(tmp_path: Path, taut_cli) -> None:  # noqa: ANN001

@@ -219,6 +219,24 @@ def test_the_model_holds_the_bodies_numbers():
     assert [m.jnt_qposadr[m.joint(f"joint{k}").id] for k in (1, 2, 3)] == [7, 9, 8]
 
 
+def test_bounded_joint_motors_limit_their_drives():
+    """A joint actuator with finite bounds limits its drive's control to them in MuJoCo, which
+    then clamps a larger command; an unbounded or missing one leaves the drive unlimited."""
+    robot = ROBOTS["branching tree"]()
+    bodies = list(robot.platform.bodies)
+    for k, force in ((0, (-30.0, 30.0)), (1, (-5.0, float("inf")))):
+        joint = bodies[k].joint.model_copy(update={"actuator": taut.model.JointActuator(force=force)})
+        bodies[k] = bodies[k].model_copy(update={"joint": joint})
+    robot = robot.model_copy(update={"platform": robot.platform.model_copy(update={"bodies": tuple(bodies)})})
+    m, d = model_of(robot)
+    assert m.actuator("drive1").ctrllimited[0] == 1 and m.actuator("drive1").ctrlrange.tolist() == [-30.0, 30.0]
+    assert m.actuator("drive2").ctrllimited[0] == 0 and m.actuator("drive3").ctrllimited[0] == 0
+    d.ctrl[:] = 0.0
+    d.ctrl[m.actuator("drive1").id] = 100.0
+    mujoco.mj_forward(m, d)
+    assert d.actuator_force[m.actuator("drive1").id] == 30.0
+
+
 def test_pose_to_qpos_puts_each_joint_coordinate_at_its_joint():
     robot = ROBOTS["branching tree"]()
     m, _ = model_of(robot)

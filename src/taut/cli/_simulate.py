@@ -65,6 +65,13 @@ RESULT_KEYS = {
     "feasible": "all_feasible",
     "joint_limit_violations": "joint_limit_violations",
     "first_joint_limit_time": "first_joint_limit_time",
+    "actuator_forces": "actuator_forces",
+    "actuator_min": "actuator_min",
+    "actuator_max": "actuator_max",
+    "actuator_margin": "actuator_margin",
+    "actuator_force_max": "actuator_peak",
+    "tension_margin_per_cable": "cable_margin",
+    "slack_events_per_cable": "cable_slack_events",
 }
 
 DISTURBANCE_HELP = (
@@ -187,6 +194,7 @@ def run(ns: argparse.Namespace) -> int:
         if wd is None
         else [{"start": a, "end": None if math.isinf(b) else b, "wrench": list(w)} for a, b, w in wd.steps],
         "samples": len(result["times"]),
+        "actuated_joints": [robot.pose_names[robot.wrench_dim + j] for j in robot.actuated_joints],
     } | {key: result[name] for key, name in RESULT_KEYS.items()}
     if out is not None:
         n = robot.n_cables
@@ -217,6 +225,9 @@ def run(ns: argparse.Namespace) -> int:
         errs = ", ".join(f"{p}={e:.3g}" for p, e in zip(robot.pose_names, d["tracking_error_max"]))
         con.print(f"max tracking error: {errs} (m, rad)")
         con.print(f"min tension margin: {d['min_tension_margin']:.4g} N; slack events: {d['slack_events']}")
+        if d["actuated_joints"]:
+            forces = ", ".join(f"{j}={f:.4g}" for j, f in zip(d["actuated_joints"], d["actuator_force_max"]))
+            con.print(f"max joint actuator force: {forces} (N, N m)")
         if d["joint_limit_violations"]:
             con.print(
                 f"[bold red]joints beyond their limits[/] at {d['joint_limit_violations']} updates "

@@ -27,8 +27,10 @@ exactly.
 A platform carrying jointed bodies (prismatic and revolute joints in a tree) is controlled
 in its pose and joint coordinates alike: ``M̂``, ``ĥ`` are the tree's
 (:mod:`taut.dynamics._tree`), the wrench is the generalized force in the twist coordinates
-and the distribution solves it with the cable columns of the jointed structure matrix, its
-joints passive (moved by the cables acting across them).  The plant has no joint stops: an
+and the distribution solves it with the cable columns of the jointed structure matrix and,
+for the joints with an actuator (``joint.actuator``), one unit column each with the
+actuator's bounds (:mod:`taut.dynamics._actuators`); the other joints are passive, moved by
+the cables acting across them.  The plant has no joint stops: an
 update at which a joint coordinate is outside its limits is counted and its time reported.
 
 Angle errors take the short way: the orientation components of ``e`` are wrapped into
@@ -281,6 +283,21 @@ class ControlResult(Result):
         ``limits`` (the plant has no joint stops: the violation is reported, not prevented).
     first_joint_limit_time : float or None
         Time of the first such update [s], or None.
+    actuator_forces : ndarray, shape (S, n_actuators)
+        The forces [N] or torques [N m] of the joint actuators applied from each update, in
+        the order of :attr:`taut.model.Robot.actuated_joints` (no columns without actuators).
+    actuator_min, actuator_max : ndarray, shape (n_actuators,)
+        Their bounds (``±inf`` where unbounded).
+    actuator_margin : ndarray, shape (n_actuators,)
+        The smallest distance of each actuator's force to its bounds over every update
+        (``inf`` for an unbounded actuator).
+    actuator_peak : ndarray, shape (n_actuators,)
+        The largest ``|ζ|`` of each actuator over every update.
+    cable_margin : ndarray, shape (n,)
+        Each cable's smallest distance to its tension bounds over every update [N]
+        (``min(lower_margin, upper_margin)`` is their minimum).
+    cable_slack_events : ndarray of int, shape (n,)
+        The updates at which each cable's commanded tension is at or below its minimum.
 
     Examples
     --------
@@ -325,6 +342,13 @@ class ControlResult(Result):
     first_failure_time: float | None  #: time of the first failed update [s], or None
     joint_limit_violations: int  #: updates at which a joint coordinate is outside its limits
     first_joint_limit_time: float | None  #: time of the first such update [s], or None
+    actuator_forces: np.ndarray  #: ``(S, n_actuators)`` the joint actuators' forces from each update
+    actuator_min: np.ndarray  #: ``(n_actuators,)``
+    actuator_max: np.ndarray  #: ``(n_actuators,)``
+    actuator_margin: np.ndarray  #: ``(n_actuators,)`` the smallest distance to a bound (``inf``: unbounded)
+    actuator_peak: np.ndarray  #: ``(n_actuators,)`` the largest ``|ζ|`` over every update
+    cable_margin: np.ndarray  #: ``(n,)`` each cable's smallest distance to its tension bounds [N]
+    cable_slack_events: np.ndarray  #: ``(n,)`` int: updates at which each cable is at or below its minimum
     elapsed_s: float = 0.0  #: wall-clock seconds of the simulation
     complete: bool = True  #: the simulation reached the end of the motion
 
@@ -592,6 +616,10 @@ def simulate_control(
         variable-structure robot, as a straight line, meets one of its obstacles
         (:func:`taut.kinematics.obstacles_met`): the loop models straight cables, and the
         wrapped cable's length and direction are not theirs.
+    InfeasiblePoseError
+        Also where the reference or the simulated motion brings a cable's anchor within its
+        swivelling pulley's radius of the pulley's axis
+        (:func:`taut.kinematics.refuse_near_swivel_axis`), named with the time.
 
     References
     ----------
@@ -619,7 +647,7 @@ def simulate_control(
     """
     from taut.dynamics._kernels import control_updates
     from taut.geometry import rotation_matrix
-    from taut.kinematics import as_poses, refuse_wrapped
+    from taut.kinematics import as_poses, refuse_near_swivel_axis, refuse_wrapped
     from taut.statics import EQUILIBRIUM_RTOL
 
     started = perf_counter()
@@ -634,17 +662,20 @@ def simulate_control(
         raise TautError(f"model must be a Robot (the controller's model), got {type(model).__name__}")
     check_callable(disturbance, "disturbance")
     check_callable(progress, "progress")
-    dof, n = robot.pose_size, robot.n_cables
+    dof, nc = robot.pose_size, robot.n_cables
     kp_, kd_ = _gains(kp, dof, "kp"), _gains(kd, dof, "kd")
     plant = loop_model(robot, method=method)
+    n = plant.kernels.n  # the cables, then the joint actuators
     if model is not None and (
         model.pose_size != dof
         or model.orientation != robot.orientation
         or not np.array_equal(model.exits, robot.exits)
         or not np.array_equal(model.anchors, robot.anchors)
+        or not np.array_equal(model.actuated_joints, robot.actuated_joints)
     ):
         raise TautError(
-            f"the controller's model {model.name} must have the cables and pose coordinates of {robot.name}"
+            f"the controller's model {model.name} must have the cables, joint actuators and pose coordinates of "
+            f"{robot.name}"
         )
     ctrl = plant if model is None else loop_model(model, method=method)
     duration = motion.duration
@@ -668,7 +699,7 @@ def simulate_control(
     qd = np.array(first.velocity[0]) if qd0 is None else np.array(as_rates(robot, qd0, 1)[0])
     angles = angle_columns(robot)
     d = robot.dimension
-    lo, hi = robot.tension_bounds
+    lo, hi = plant.buffers["lo"], plant.buffers["hi"]
     gains = np.array([kp_, kd_])
     columns = np.array([angles.start, angles.stop], np.int64)
     # q, q̇ (advanced in place), then q, q̇, e, q̈_cmd at the start of an update done here
@@ -683,6 +714,8 @@ def simulate_control(
     err_max, err_sq = np.zeros(dof), np.zeros(dof)
     pos_max = rot_max = 0.0
     lower = upper = math.inf
+    act_margin, act_peak = np.full(n - nc, math.inf), np.zeros(n - nc)
+    cable_margin, cable_slack = np.full(nc, math.inf), np.zeros(nc, dtype=np.int64)
     slack_events = failures = beyond = 0
     first_failure: float | None = None
     first_beyond: float | None = None
@@ -701,6 +734,7 @@ def simulate_control(
         ahead = np.array([mid.poses, mid.velocity, mid.acceleration])
         D = _tabulate(disturbance, time, int(substeps), dof)
         refuse_wrapped(robot, samples.poses, times=time, what="of the reference")
+        refuse_near_swivel_axis(robot, samples.poses, times=time, what="of the reference")
         Q, V, E, A = (np.zeros((g.size, dof)) for _ in range(4))
         T = np.zeros((g.size, n))
         ok_all = np.ones(g.size, dtype=bool)
@@ -746,6 +780,7 @@ def simulate_control(
             k += 1
         new = slice(k0 - g0, end)
         refuse_wrapped(robot, Q[new], times=time[new], what="of the simulated motion")
+        refuse_near_swivel_axis(robot, Q[new], times=time[new], what="of the simulated motion")
         Eb, Tb, okb, tb = E[new], T[new], ok_all[new], time[new]
         pos = np.linalg.norm(Eb[:, :d], axis=1)
         rot = np.zeros(pos.size)
@@ -759,9 +794,15 @@ def simulate_control(
         err_max = np.maximum(err_max, np.abs(Eb).max(axis=0))
         err_sq += (Eb**2).sum(axis=0)
         pos_max, rot_max = max(pos_max, float(pos.max())), max(rot_max, float(rot.max()))
-        lower = min(lower, float((Tb - lo).min()))
-        upper = min(upper, float((hi - Tb).min()))
-        slack_events += int(np.count_nonzero(_slack(Tb, lo).any(axis=1)))
+        lower = min(lower, float((Tb[:, :nc] - lo[:nc]).min()))
+        upper = min(upper, float((hi[:nc] - Tb[:, :nc]).min()))
+        if n > nc:
+            act_margin = np.minimum(act_margin, np.minimum(Tb[:, nc:] - lo[nc:], hi[nc:] - Tb[:, nc:]).min(axis=0))
+            act_peak = np.maximum(act_peak, np.abs(Tb[:, nc:]).max(axis=0))
+        slack = _slack(Tb[:, :nc], lo[:nc])
+        slack_events += int(np.count_nonzero(slack.any(axis=1)))
+        cable_slack += slack.sum(axis=0)
+        cable_margin = np.minimum(cable_margin, np.minimum(Tb[:, :nc] - lo[:nc], hi[:nc] - Tb[:, :nc]).min(axis=0))
         bad = np.flatnonzero(~okb)
         failures += bad.size
         if first_failure is None and bad.size:
@@ -780,10 +821,12 @@ def simulate_control(
         stored += keep.size
         v_prev = V[end - 1].copy()
     assert stored == kept, "every kept update is stored once"
-    frozen = [out_t, out_ref, out_q, out_v, out_e, out_pos, out_rot, out_a, out_tau, out_ok, out_d, kp_, kd_]
-    tmin, tmax = np.array(lo, float), np.array(hi, float)
+    tensions, forces = out_tau[:, :nc].copy(), out_tau[:, nc:].copy()
+    frozen = [out_t, out_ref, out_q, out_v, out_e, out_pos, out_rot, out_a, tensions, forces, out_ok, out_d, kp_, kd_]
+    tmin, tmax = np.array(lo[:nc], float), np.array(hi[:nc], float)
+    amin, amax = np.array(lo[nc:], float), np.array(hi[nc:], float)
     rms = np.sqrt(err_sq / (K + 1))
-    for a in (*frozen, tmin, tmax, err_max, rms):
+    for a in (*frozen, tmin, tmax, amin, amax, act_margin, act_peak, cable_margin, cable_slack, err_max, rms):
         a.setflags(write=False)
     return ControlResult(
         times=out_t,
@@ -794,7 +837,7 @@ def simulate_control(
         position_error=out_pos,
         rotation_error=out_rot,
         command=out_a,
-        tensions=out_tau,
+        tensions=tensions,
         feasible=out_ok,
         disturbance=out_d,
         tension_min=tmin,
@@ -818,5 +861,12 @@ def simulate_control(
         first_failure_time=first_failure,
         joint_limit_violations=beyond,
         first_joint_limit_time=first_beyond,
+        actuator_forces=forces,
+        actuator_min=amin,
+        actuator_max=amax,
+        actuator_margin=act_margin,
+        actuator_peak=act_peak,
+        cable_margin=cable_margin,
+        cable_slack_events=cable_slack,
         elapsed_s=perf_counter() - started,
     )

@@ -132,13 +132,16 @@ class KernelModel:
     n: int
 
 
-_MODELS: dict[int, tuple[Robot, KernelModel]] = {}
+_MODELS: dict[tuple[int, bool], tuple[Robot, KernelModel]] = {}
 
 
-def kernel_model(robot: Robot) -> KernelModel:
+def kernel_model(robot: Robot, *, actuators: bool = False) -> KernelModel:
     """The kernel arguments of ``robot``, built once per robot object (a control loop calls
-    :func:`acceleration` thousands of times with the same robot)."""
-    hit = _MODELS.get(id(robot))
+    :func:`acceleration` thousands of times with the same robot).  With ``actuators`` the
+    joint actuators follow the cables as inputs (:data:`taut.dynamics._tree.ACTUATOR` rows):
+    ``n`` counts both."""
+    key = (id(robot), actuators)
+    hit = _MODELS.get(key)
     if hit is not None and hit[0] is robot:
         return hit[1]
     from taut.dynamics._kernels import FLOAT_LAYOUT
@@ -171,10 +174,16 @@ def kernel_model(robot: Robot) -> KernelModel:
     ip = np.array([pd.kind, *axes], dtype=np.int64)
     if robot.n_joints:
         ip, fp = _tree_arrays(robot, pd, ip, fp)
-    model = KernelModel(pd, (ip, fp, cables), robot.n_cables)
+    if actuators and robot.actuated_joints.size:
+        from taut.dynamics._tree import ACTUATOR
+
+        rows = np.zeros((robot.actuated_joints.size, CABLE_COLUMNS))
+        rows[:, 7] = ACTUATOR - robot.actuated_joints
+        cables = np.concatenate([cables, rows])
+    model = KernelModel(pd, (ip, fp, cables), cables.shape[0])
     if len(_MODELS) >= 16:
         _MODELS.pop(next(iter(_MODELS)))
-    _MODELS[id(robot)] = (robot, model)
+    _MODELS[key] = (robot, model)
     return model
 
 

@@ -35,7 +35,7 @@ from taut._results import Result
 from taut.dynamics._forward import KernelModel, kernel_model, quick_rows
 from taut.dynamics._platform import as_rates, check_callable
 from taut.errors import TautError
-from taut.kinematics import as_poses, refuse_wrapped
+from taut.kinematics import as_poses, refuse_near_swivel_axis, refuse_wrapped
 from taut.model import Robot
 
 __all__ = ["InverseDynamicsResult", "required_wrench", "inverse_dynamics"]
@@ -79,6 +79,10 @@ class InverseDynamicsResult(Result):
         Why a sample has no admissible tensions, ``""`` where feasible.
     method : str
         The tension distribution method.
+    actuator_forces : ndarray, shape (N, n_actuators)
+        The forces [N] or torques [N m] of the joint actuators of a jointed platform, in the
+        order of :attr:`taut.model.Robot.actuated_joints` (no columns without actuators);
+        zeros where no admissible distribution was found.
 
     Examples
     --------
@@ -99,6 +103,7 @@ class InverseDynamicsResult(Result):
     status: np.ndarray
     reasons: np.ndarray  #: ``(N,)`` str: why a sample has no admissible tensions, ``""`` where feasible
     method: str
+    actuator_forces: np.ndarray  #: ``(N, n_actuators)`` the joint actuators' forces
 
     def failures(self) -> list[tuple[int, str]]:
         """The samples without admissible tensions.
@@ -259,8 +264,9 @@ def inverse_dynamics(
     wrench is the generalized force ``A τ`` in the twist coordinates (a wrench about ``p``,
     then one force or torque per joint; :mod:`taut.dynamics._tree`) and the distribution
     solves it with the cable columns ``A`` of the jointed structure matrix
-    (:func:`taut.kinematics.jointed_structure_matrix`): the joints are passive, moved by the
-    cables acting across them.  The wrenches, structure matrices and, for ``closed-form``, the tensions are
+    (:func:`taut.kinematics.jointed_structure_matrix`) and, for each joint with an actuator
+    (``joint.actuator``), a unit column with the actuator's bounds (its force in
+    ``actuator_forces``); the other joints are passive, moved by the cables acting across them.  The wrenches, structure matrices and, for ``closed-form``, the tensions are
     computed by a compiled kernel; the samples it does not accept, and every sample of the
     other methods, go to :func:`taut.statics.solve_tensions`, so that ``feasible`` means what
     it means there.
@@ -297,6 +303,9 @@ def inverse_dynamics(
     WrappedCableError
         A sample where a cable of a variable-structure robot, taken as a straight line, meets
         one of its obstacles (its wrapped length depends on the motion).
+    InfeasiblePoseError
+        A sample where a cable's anchor is within its swivelling pulley's radius of the
+        pulley's axis (:func:`taut.kinematics.refuse_near_swivel_axis`).
 
     References
     ----------
@@ -323,14 +332,15 @@ def inverse_dynamics(
     >>> res.feasible, res.first_failure
     (array([ True,  True, False]), 2)
     """
-    from taut.statics import METHODS, solve_tensions
+    from taut.dynamics._actuators import input_bounds, solve_inputs
+    from taut.statics import METHODS
 
     if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
     check_callable(progress, "progress")
-    model = kernel_model(robot)
+    model = kernel_model(robot, actuators=True)
     arr, vel, acc, single = _motion(robot, q, qd, qdd)
-    N, n = arr.shape[0], robot.n_cables
+    N, n, nc = arr.shape[0], model.n, robot.n_cables
     sample_times = None
     if times is not None:
         try:
@@ -341,10 +351,11 @@ def inverse_dynamics(
         if sample_times.shape != (N,) or not np.isfinite(sample_times).all():
             raise TautError(f"sample times must be {N} finite numbers, got shape {sample_times.shape}")
     refuse_wrapped(robot, arr, times=sample_times, what="of the motion")
+    refuse_near_swivel_axis(robot, arr, times=sample_times, what="of the motion")
     from taut.dynamics._kernels import ZERO_LENGTH
 
     w = _ext(robot, wrench, N)
-    bounds = _tension_bounds(robot, tension_bounds)
+    bounds = input_bounds(robot, _tension_bounds(robot, tension_bounds))
     need, tensions = np.empty((N, robot.pose_size)), np.zeros((N, n))
     feasible = np.zeros(N, dtype=bool)
     code = np.full(N, STATUSES.index("undefined"), dtype=np.int64)
@@ -359,19 +370,21 @@ def inverse_dynamics(
             tensions[part][done], feasible[part][done], code[part][done] = tau[done], True, STATUSES.index("optimal")
         rest = np.flatnonzero(ok & ~done)
         if rest.size:
-            res = solve_tensions(W[rest], -wr[rest], tension_bounds=bounds, method=method)
+            x, ok_rest, status = solve_inputs(W[rest], wr[rest], *bounds, nc, method)
             idx = rest + start
-            tensions[idx], feasible[idx] = res.tensions, res.feasible
-            code[idx] = _ORDER[np.searchsorted(STATUSES, res.status, sorter=_ORDER)]
+            tensions[idx], feasible[idx] = x, ok_rest
+            code[idx] = _ORDER[np.searchsorted(STATUSES, status, sorter=_ORDER)]
         if progress is not None:
             progress(part.stop, N)
     labels = np.array(STATUSES)[code]
     reasons = np.array([_reason(s, method) for s in STATUSES])[code]
-    arrays = [need, tensions, feasible, labels, reasons] + ([] if sample_times is None else [sample_times])
+    forces = tensions[:, nc:].copy()
+    arrays = [need, tensions[:, :nc].copy(), feasible, labels, reasons, forces]
+    arrays += [] if sample_times is None else [sample_times]
     if single:
         arrays = [np.array(a[0]) for a in arrays]
-    w_, tau, ok, st, why = arrays[:5]
-    return InverseDynamicsResult(None if sample_times is None else arrays[5], w_, tau, ok, st, why, method)
+    w_, tau, ok, st, why, zeta = arrays[:6]
+    return InverseDynamicsResult(None if sample_times is None else arrays[6], w_, tau, ok, st, why, method, zeta)
 
 
 def _tension_bounds(

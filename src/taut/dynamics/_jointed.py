@@ -110,12 +110,15 @@ def _in_space(values: np.ndarray) -> np.ndarray:
 def body_inertia(robot: Robot) -> BodyInertia:
     """The masses, centres of mass, inertias and constant loads of the platform and its bodies.
 
+    A body without mass and inertia that carries other bodies is a massless frame between two
+    joints (the chain of a universal or spherical joint): it gets zero mass and inertia.
+
     Raises
     ------
     UnsupportedRobotError
-        When the platform or one of ``platform.bodies`` has no ``mass`` or no ``inertia``
-        (bodies are numbered from 1, as in the robot file's checks), or the platform's inertia
-        is not positive definite."""
+        When the platform or one of ``platform.bodies`` that carries no other body has no
+        ``mass`` or no ``inertia`` (bodies are numbered from 1, as in the robot file's checks),
+        or the platform's inertia is not positive definite."""
     plat, d = robot.platform, robot.dimension
     if plat.mass is None:
         raise UnsupportedRobotError(f"{robot.name}: the dynamics needs the platform's mass (platform.mass)")
@@ -129,8 +132,14 @@ def body_inertia(robot: Robot) -> BodyInertia:
         raise UnsupportedRobotError(
             f"{robot.name}: platform.inertia {list(plat.inertia)} is singular: a rigid platform needs a positive definite inertia"
         )
+    parents = {b.parent for b in plat.bodies}
     for k, body in enumerate(plat.bodies, 1):
         what = f"platform.bodies[{k}] ({body.name})"
+        if body.mass is None and body.inertia is None and body.name in parents:
+            # a frame between two joints of a chain (a universal or spherical joint's): it
+            # carries the bodies beyond it and nothing of its own
+            tensors.append(np.zeros((3, 3)))
+            continue
         if body.mass is None or body.inertia is None:
             missing = "mass" if body.mass is None else "inertia"
             raise UnsupportedRobotError(

@@ -420,12 +420,19 @@ def closed_form_one(
 ) -> bool:
     """The closed-form distribution of Pott, Bruckmann and Mikelsons (2009): ``τ = τm + Wᵀ
     (W Wᵀ)⁻¹ (wrench − W τm)``, ``τm`` the middle of the bounds (``τ_min`` without an upper
-    bound), by a Cholesky factorization of ``W Wᵀ`` (``G`` is work space ``(dof, dof)``).
+    bound; zero, within its bounds, for a joint actuator unbounded below), by a Cholesky
+    factorization of ``W Wᵀ`` (``G`` is work space ``(dof, dof)``).
     True when ``W`` has full row rank and ``τ`` is within the bounds with ``‖W τ − wrench‖∞ ≤
     rtol · max(‖wrench‖∞, max|W| ‖τ‖∞)`` (the acceptance test of :mod:`taut.statics._tension`)."""
     m, n = W.shape
     for i in range(n):
-        tau[i] = 0.5 * (tmin[i] + tmax[i]) if np.isfinite(tmax[i]) else tmin[i]
+        lo, hi = tmin[i], tmax[i]
+        if np.isfinite(lo) and np.isfinite(hi):
+            tau[i] = 0.5 * (lo + hi)
+        elif np.isfinite(lo):
+            tau[i] = max(lo, 0.0)
+        else:  # a joint actuator unbounded below: about no force, within its bound
+            tau[i] = min(hi, 0.0) if np.isfinite(hi) else 0.0
     y = np.empty(m)
     for r in range(m):
         acc = wrench[r]

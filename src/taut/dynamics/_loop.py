@@ -6,7 +6,8 @@ one state.  A control loop at 1 kHz calls them every millisecond with states it 
 itself, so :class:`LoopModel` checks the robot once and then runs the kernels on
 preallocated buffers: :meth:`LoopModel.tensions` (the required wrench and a tension
 distribution: the compiled closed form of Pott et al. 2009, or any method of
-:mod:`taut.statics._tension` where it gives up) and :meth:`LoopModel.step` (one RK4 step with
+:mod:`taut.statics._tension` where it gives up; the joint actuators of a jointed platform as
+extra columns with their bounds, :mod:`taut.dynamics._actuators`) and :meth:`LoopModel.step` (one RK4 step with
 the tensions held).  A singular configuration still raises.
 
 References
@@ -79,10 +80,11 @@ class LoopModel:
 
         Returns
         -------
-        tensions : ndarray, shape (n,)
-            [N]; zeros when not admissible.
+        tensions : ndarray, shape (n,) or (n + n_actuators,)
+            [N]; zeros when not admissible.  A platform whose joints have actuators gets
+            their forces [N or N m] after the tensions (:attr:`taut.model.Robot.actuated_joints`).
         admissible : bool
-            Whether the tensions are within their bounds and give the wrench.
+            Whether the tensions (and actuator forces) are within their bounds and give the wrench.
 
         Raises
         ------
@@ -104,8 +106,9 @@ class LoopModel:
         >>> ok, (structure_matrix(robot, np.zeros(3)) @ tau).round(6) + 0.0
         (True, array([0.  , 9.81, 0.  ]))
         """
+        from taut.dynamics._actuators import solve_inputs
         from taut.dynamics._kernels import OK, ZERO_LENGTH, inverse_samples
-        from taut.statics import EQUILIBRIUM_RTOL, solve_tensions
+        from taut.statics import EQUILIBRIUM_RTOL
 
         b = self.buffers
         try:
@@ -142,8 +145,8 @@ class LoopModel:
             )
         if status == OK:
             return b["tau"][0].copy(), True
-        res = solve_tensions(b["W"][0], -b["wrench"][0], tension_bounds=(lo, hi), method=self.method)
-        return np.array(res.tensions), bool(res.feasible)
+        x, ok, _ = solve_inputs(b["W"][0], b["wrench"][0], lo, hi, self.robot.n_cables, self.method)
+        return x, bool(ok)
 
     def step(
         self,
@@ -160,8 +163,8 @@ class LoopModel:
         ----------
         q, qd : array_like, shape (dof,)
             The state.
-        tensions : array_like, shape (n,)
-            [N].
+        tensions : array_like, shape (n,) or (n + n_actuators,)
+            [N], then the joint actuators' forces where the platform has some.
         dt : float
             The step [s].
         wrench : array_like, shape (dof,), optional
@@ -253,15 +256,16 @@ def loop_model(robot: Robot, *, method: str = "qp") -> LoopModel:
     >>> loop_model(example("planar-4cable"), method="lp").method
     'lp'
     """
+    from taut.dynamics._actuators import input_bounds
     from taut.statics import METHODS
 
     if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
-    kernels = kernel_model(robot)
-    dof, n = robot.pose_size, robot.n_cables
+    kernels = kernel_model(robot, actuators=True)
+    dof, n = robot.pose_size, kernels.n
     rows = {"q": dof, "qd": dof, "qdd": dof, "w": dof, "u": n, "wrench": dof, "tau": n, "q_next": dof, "qd_next": dof}
     buffers: dict[str, np.ndarray] = {name: np.zeros((1, width)) for name, width in rows.items()}
-    buffers["lo"], buffers["hi"] = robot.tension_bounds
+    buffers["lo"], buffers["hi"] = input_bounds(robot, robot.tension_bounds)
     buffers["W"] = np.zeros((1, dof, n))
     buffers["status"] = np.zeros(1, np.int64)
     return LoopModel(robot, method, kernels, buffers)

@@ -28,7 +28,11 @@ Robot data, packed for the kernels (:func:`taut.dynamics._forward.kernel_model`)
 :data:`taut.dynamics._kernels.FLOAT_LAYOUT`) then :data:`BODY_FLOATS` per body (joint axis
 and origin in the parent frame, mass, centre of mass, inertia, constant force), and
 ``cables (n, CABLE_COLUMNS)``: exit point, anchor, ``EA``, the body the anchor is on, and
-the axis and radius of a swivelling pulley (:func:`cable_path`).
+the axis and radius of a swivelling pulley (:func:`cable_path`).  A row whose body is
+``−(j + 1)`` is the actuator of joint ``j`` (:data:`ACTUATOR`): its column of ``A`` is the unit
+column of that joint's coordinate, its input the force it exerts (also under ``elastic``), so
+that joint actuators enter the distribution as extra columns of the structure matrix with their
+bounds (Lau, Oetomo & Halgamuge 2013).
 
 Status per state: :data:`OK`, :data:`GIMBAL_LOCK` (the rate matrix is singular),
 :data:`ZERO_LENGTH` (a cable without direction), :data:`SINGULAR_INERTIA` (``M_X`` is not
@@ -46,6 +50,10 @@ References
 .. [4] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
    Bachelor thesis, Czech Technical University in Prague, 2020, §3.3, Eqs. 3.3.7–3.3.12.
    (docs/references.bib: lieskovsky2020)
+.. [5] D. Lau, D. Oetomo, S. K. Halgamuge, "Generalized modeling of multilink cable-driven
+   manipulators with arbitrary routing using the cable-routing matrix", IEEE Transactions on
+   Robotics 29(5), 2013 (cables and joint actuators in the joint-space equations of motion).
+   (docs/references.bib: lau2013)
 """
 
 from __future__ import annotations
@@ -57,6 +65,7 @@ from taut.geometry import rotate_about_axis
 from taut.kinematics import MIN_LENGTH
 
 __all__ = [
+    "ACTUATOR",
     "BODY_FLOATS",
     "CABLE_COLUMNS",
     "GIMBAL_LOCK",
@@ -81,6 +90,8 @@ PLATFORM_FLOATS = 46
 #: Per body: joint axis (3, unit, parent frame), joint origin (3), mass, centre of mass (3),
 #: inertia about it (9, body frame), constant force at it (3, fixed frame).
 BODY_FLOATS = 22
+#: ``cables[i, 7]`` of joint ``j``'s actuator is ``ACTUATOR − j``.
+ACTUATOR = -1
 #: Columns of ``cables``: exit point (3), anchor (3, in its body's frame), ``EA``, body index,
 #: swivel axis (3, unit) and pulley radius (0: a fixed exit point).
 CABLE_COLUMNS = 12
@@ -353,6 +364,13 @@ def tree_terms(
             h[3 + i] -= fp[25 + i]
     for i in range(cables.shape[0]):
         body = int(cables[i, 7])
+        if body < 0:
+            # a joint actuator: its force is the generalized force of its joint's coordinate
+            for j in range(P):
+                A[j, i] = 0.0
+            A[m - body - 1, i] = 1.0
+            lengths[i] = 0.0
+            continue
         _mv(rot[body], cables[i, 3:6], anchor)
         anchor += pos[body]
         length = cable_path(cables[i], anchor, v3)
@@ -437,7 +455,7 @@ def tree_acceleration(
         return status
     x = w - h
     for i in range(n):
-        if elastic:
+        if elastic and cables[i, 7] >= 0:
             tau[i] = max(cables[i, 6] * (lengths[i] - u[i]) / u[i], 0.0)
         else:
             tau[i] = u[i]

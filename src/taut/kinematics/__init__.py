@@ -22,7 +22,14 @@ if TYPE_CHECKING:
     from taut.kinematics._jointed import actuator_jacobian, joint_forces, jointed_structure_matrix
     from taut.kinematics._paths import CABLE_OK, MIN_LENGTH, cable_paths, obstacles_met, refuse_wrapped
     from taut.kinematics._pose import anchor_points, anchors_at, as_poses, body_frames, platform_frame
-    from taut.kinematics._swivel import SwivelPaths, refuse_swivels, swivel_angles, swivel_parameters, swivel_paths
+    from taut.kinematics._swivel import (
+        SwivelPaths,
+        refuse_near_swivel_axis,
+        refuse_swivels,
+        swivel_angles,
+        swivel_parameters,
+        swivel_paths,
+    )
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
@@ -53,6 +60,7 @@ _LAZY = {
     "body_frames": "taut.kinematics._pose",
     "platform_frame": "taut.kinematics._pose",
     "SwivelPaths": "taut.kinematics._swivel",
+    "refuse_near_swivel_axis": "taut.kinematics._swivel",
     "refuse_swivels": "taut.kinematics._swivel",
     "swivel_angles": "taut.kinematics._swivel",
     "swivel_parameters": "taut.kinematics._swivel",
@@ -82,6 +90,7 @@ __all__ = [
     "lengths_at",
     "obstacles_met",
     "platform_frame",
+    "refuse_near_swivel_axis",
     "refuse_swivels",
     "refuse_wrapped",
     "robot_stiffness",

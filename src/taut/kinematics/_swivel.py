@@ -328,3 +328,73 @@ def refuse_swivels(robot: Robot, analysis: str) -> None:
             f"{robot.name}: {analysis} models cable exits as fixed points; cable(s) {numbers} leave "
             "through swivelling pulleys (cables[].swivel), which it does not handle yet"
         )
+
+
+def refuse_near_swivel_axis(
+    robot: Robot, poses: npt.ArrayLike, *, times: npt.ArrayLike | None = None, what: str = ""
+) -> None:
+    """Refuse poses where a cable's anchor comes nearer the axis of its swivelling pulley than
+    the pulley's radius: analyses along a motion (``taut simulate``) call it on the motion's poses.
+
+    The pulley turns about its axis to face the anchor, its centre a radius ``r`` off the
+    axis.  An anchor at ``d < r`` from the axis lies between the axis and the circle the
+    centre sweeps: there the swivel angle's rate, the anchor's speed across the pulley plane
+    over ``d``, exceeds that speed over ``r`` and grows without bound towards the axis, and
+    the pulley models of CASPR (wraps of at most half a turn) and of the MuJoCo export
+    (``taut.model._mjcf``, whose wrapping takes the other way round for some such anchors)
+    part from taut's arc model.  A motion that takes an anchor there is refused rather than
+    simulated.
+
+    Parameters
+    ----------
+    robot : Robot
+    poses : array_like, shape (N, pose_size) or (pose_size,)
+    times : array_like, shape (N,), optional
+        The poses' times [s], to name the first such pose by its time instead of its number.
+    what : str, optional
+        What the poses are (e.g. ``"of the reference"``), after its time or number.
+
+    Raises
+    ------
+    InfeasiblePoseError
+        At the first such pose: the cable (1-based), the anchor's distance from the axis and
+        the pulley's radius, the pose.
+    PoseError
+        Poses that :func:`~taut.kinematics.as_poses` refuses.
+
+    References
+    ----------
+    .. [1] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
+       Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+
+    Examples
+    --------
+    The cables of ``suspended-3pulley`` come down along z onto 0.1 m pulleys; cable 1's anchor
+    is 0.817 m from the platform's reference point, so that a platform at ``x = −0.75`` brings
+    it within 0.067 m of its pulley's axis:
+
+    >>> from taut.model import example
+    >>> from taut.kinematics import refuse_near_swivel_axis
+    >>> robot = example("suspended-3pulley")
+    >>> refuse_near_swivel_axis(robot, [[2.75, 3.98, 5.5, 0, 0, 0], [-0.75, 0, 5.5, 0, 0, 0]], times=[0, 1])
+    Traceback (most recent call last):
+    ...
+    taut.errors.InfeasiblePoseError: suspended 3-pulley robot: at t = 1 s cable 1's anchor is 0.067 m from the axis of its swivelling pulley, within the pulley's radius 0.1 m (pose [-0.75, 0.0, 5.5, 0.0, 0.0, 0.0]); taut's swivelling pulleys keep their anchors beyond their radius from the axis
+    """
+    if not robot.swivel_cables:
+        return
+    arr, _ = as_poses(robot, poses)
+    idx, axes, radii = swivel_parameters(robot)
+    v = anchors_at(robot, arr)[:, idx] - robot.exits[idx][None]
+    h = np.einsum("nsi,si->ns", v, axes)
+    dist = np.linalg.norm(v - h[..., None] * axes[None], axis=-1)
+    near = np.argwhere(dist < radii[None])
+    if near.size:
+        k, j = (int(x) for x in near[0])
+        where = f"at pose {k + 1}" if times is None else f"at t = {float(np.asarray(times, float)[k]):g} s"
+        raise InfeasiblePoseError(
+            f"{robot.name}: {where}{' ' + what if what else ''} cable {idx[j] + 1}'s anchor is {dist[k, j]:.3g} m from "
+            f"the axis of its swivelling pulley, within the pulley's radius {radii[j]:g} m (pose "
+            f"{np.round(arr[k], 6).tolist()}); taut's swivelling pulleys keep their anchors beyond their radius from "
+            "the axis"
+        )

@@ -14,21 +14,49 @@ mass, centre of mass and inertia) in ``X_bodies.xml`` and by named cable sets in
 
 A rigid platform (``SPATIAL_EULER_XYZ``, the ``T_XYZ`` + ``S_*`` pair, ``PLANAR_*``) may carry
 further links: a jointed platform (``platform.bodies``, like the adjustable platform of
-Lieskovský 2020). Each further link hangs from the platform link or a later link by an
-actuated (``actuated="true"``) one-degree-of-freedom joint: ``R_X``, ``R_Y``, ``R_Z``, ``R_AXIS``
-(taut's ``revolute`` about that axis) or ``P_X``, ``P_AXIS`` (``prismatic``), with
-``origin`` = its ``<parent><location>``, ``limits`` = ``q_min``/``q_max`` (CASPR's defaults
-±π for revolute joints when not given; an unbounded prismatic joint gets ±1e9
-(``MAX_MAGNITUDE``), the largest pose coordinate taut accepts, so the same poses) and its ``mass``, ``com_location`` and
-inertia as the body's ``mass``, ``com`` and ``inertia``. taut's pose is CASPR's ``q``: the
-platform's coordinates, then the joint coordinates in link order. Cables attached to a
-further link get its name as ``body`` (``link k`` for an unnamed or repeated name). On a
-planar platform a revolute joint must turn about the plane's normal and a prismatic one move
-in the plane; the plane maps as below, and a joint turning against taut's planar angles
-(``R_Y`` in the XZ plane) gets the coordinate ``−q`` (stated in the description). Passive
-joints (taut's statics gives every joint an actuator force), other joints (universal,
-spherical, planar), links jointed to the ground or to the ``T_XYZ`` carrier, and further
-links on point-mass platforms are refused.
+Lieskovský 2020, or the multilink manipulators of Lau, Oetomo & Halgamuge 2013). Each further
+link hangs from the platform link or a later link (a tree rooted at the platform). Its joint is
+a one-degree-of-freedom joint, ``R_X``, ``R_Y``, ``R_Z``, ``R_AXIS`` (taut's ``revolute`` about
+that axis) or ``P_X``, ``P_AXIS`` (``prismatic``), with ``origin`` = its ``<parent><location>``,
+or a joint of several degrees of freedom, read as the chain of one-DOF joints CASPR composes it
+of (its ``R_pe`` and ``r_rel``), through massless intermediate bodies named ``"link [R_X of
+U_XY]"``: the universal joints ``U_XY`` (``Rx(q1) Ry(q2)``), ``U_YZ``, ``U_XZ``, the spherical
+joints ``S_EULER_XYZ`` (``Rx Ry Rz``) and ``S_FIXED_XYZ`` (``Rz(q3) Ry(q2) Rx(q1)``: the chain
+turns ``q3`` first, so taut's coordinates of that link come as ``q3, q2, q1``, stated in the
+description), the translations ``P_XY``, ``P_XZ``, ``T_XYZ`` and ``SPATIAL_EULER_XYZ``.
+``limits`` = ``q_min``/``q_max`` (one number per degree of freedom; CASPR's defaults ±π for
+rotations when not given; an unbounded translation gets ±1e9 (``MAX_MAGNITUDE``), the largest
+pose coordinate taut accepts, so the same poses), and the link's ``mass``, ``com_location`` and
+inertia are the (last) body's ``mass``, ``com`` and ``inertia``. A joint with ``actuated="true"``
+has a joint actuator on each of its degrees of freedom (``joint.actuator``), unbounded as
+CASPR's are (its ``tau_min``/``tau_max`` are ±∞ and the files give none); without it the joint
+is passive, moved by the cables across it. taut's pose is CASPR's ``q``: the platform's
+coordinates, then the joint coordinates in link order (a further link's ``S_FIXED_XYZ`` in the
+chain's order above). Cables attached to a further link get its
+name as ``body`` (``link k`` for an unnamed or repeated name). On a planar platform a revolute
+joint must turn about the plane's normal and a prismatic one move in the plane; the plane maps
+as below, and a joint turning against taut's planar angles (``R_Y`` in the XZ plane) gets the
+coordinate ``−q`` (stated in the description).
+
+What does not map onto a platform carrying a tree of bodies is refused, with the reason: a
+chain of links jointed to the ground (a multilink arm whose first link turns about a fixed
+joint, like the ``R_Z`` chain of ``tests/model/fixtures/caspr/multilink``: taut's platform is
+free), a link jointed to the ground or to the ``T_XYZ`` carrier
+beside the platform (not reachable from the platform), the quaternion joints of CASPR's earlier
+releases (``SPHERICAL``, ``SPATIAL``: four coordinates for three degrees of freedom), a
+``PLANAR_*`` joint between two links, further links on a point-mass platform, an actuated
+platform joint, and a cable routed through more than two attachments (several segments of the
+cable-routing matrix of Lau et al. 2013, a cable across several links): a taut cable is one
+segment from a base exit to one anchor. Since every link has one parent, a CASPR bodies file
+holds no closed chain. An unknown joint type is a :class:`~taut.errors.RobotFileError` naming
+it.
+
+CASPR's own models, as taut reads them (the files of ``tests/model/fixtures/caspr/real``, tested
+there): CoGiRo (``SCDM``, a ``SPATIAL_EULER_XYZ`` platform, 8 cables) and KNTU_planar (a
+``PLANAR_XY`` platform, 4 cables) load; SpiderBot_UR3 (``HCDM``: a ``SPATIAL_EULER_XYZ`` base
+carrying a UR3 arm on six actuated ``R_Y``/``R_Z`` joints) loads with every cable set
+(``CUcablerobot``, through swivelling pulleys; ``set_1``; ``set_IPAnema_inspired``), its six
+joints with their actuators.
 
 Planes map onto taut's ``(x, y)`` so that CASPR's gravity (9.81 m/s² along −z) stays along
 taut's −y: ``PLANAR_XZ`` takes ``(x, y) = (X, Z)`` and ``θ = −θ_CASPR`` (CASPR rotates about
@@ -45,8 +73,8 @@ Cable attachments are relative to the joint (``attachment_reference="joint"``) o
 centre of mass (``"com"``); inertia is given about the centre of mass (``ref="com"``) or the
 joint (``ref="joint"``, shifted to the centre of mass: ``I_G = I_O − m(|c|² E − c cᵀ)``).
 ``cable_linear_spring``'s ``<K>`` is the cable's axial rigidity EA [N]: CASPR's stiffness is
-``K / length`` [N/m]; taut's ``stiffness`` is EA. ``q_min``/``q_max`` and ``q_initial`` bound
-and start CASPR's simulations and are not part of the robot.
+``K / length`` [N/m]; taut's ``stiffness`` is EA. The platform link's ``q_min``/``q_max`` and
+every ``q_initial`` bound and start CASPR's simulations and are not part of the robot.
 
 A ``base_rotating_pulley`` (CASPR's ``BaseRotatingPulleyAttachment``, the first attachment of
 a cable) is taut's swivelling pulley (``cables[].swivel``): ``fixed_location`` (in the base
@@ -63,8 +91,8 @@ Refused with :class:`UnsupportedRobotError`, never approximated: other pulley at
 (``screw_base_rotating_pulley``), swivelling pulleys of planar robots whose entry vector
 leaves the plane (in the plane, the pulley is taut's planar swivel), cables routed through
 more than two attachments (a cable through several links), chains of links from the ground,
-actuated platform joints, passive joints of further links, other joint and cable types,
-planar cables that leave the plane.
+actuated platform joints, the joints and cable types above, planar cables that leave the
+plane.
 
 References
 ----------
@@ -75,6 +103,10 @@ References
 .. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
    Bachelor thesis, Czech Technical University in Prague, 2020, §3.1–3.3.
    (docs/references.bib: lieskovsky2020)
+.. [3] D. Lau, D. Oetomo, S. K. Halgamuge, "Generalized modeling of multilink cable-driven
+   manipulators with arbitrary routing using the cable-routing matrix", IEEE Transactions on
+   Robotics 29(5), 2013 (multilink cable robots, the cable-routing matrix).
+   (docs/references.bib: lau2013)
 """
 
 from __future__ import annotations
@@ -140,6 +172,37 @@ _ONE_DOF: dict[str, tuple[str, tuple[float, float, float] | None]] = {
     "P_AXIS": ("prismatic", None),
 }
 _AXIS_JOINTS = ("R_AXIS", "P_AXIS")
+#: Joints of several degrees of freedom as chains of one-DOF joints, each about or along an
+#: axis of the frame the previous one leaves (CASPR composes ``R_pe`` and ``r_rel`` so):
+#: (one-DOF joint, index of its coordinate in CASPR's ``q``) from the parent outwards.
+_CHAINS: dict[str, tuple[tuple[str, int], ...]] = {
+    "U_XY": (("R_X", 0), ("R_Y", 1)),
+    "U_YZ": (("R_Y", 0), ("R_Z", 1)),
+    "U_XZ": (("R_X", 0), ("R_Z", 1)),
+    "S_EULER_XYZ": (("R_X", 0), ("R_Y", 1), ("R_Z", 2)),
+    # R = Rz(γ) Ry(β) Rx(α): the chain turns γ first, so its coordinates come as (γ, β, α)
+    "S_FIXED_XYZ": (("R_Z", 2), ("R_Y", 1), ("R_X", 0)),
+    "P_XY": (("P_X", 0), ("P_Y", 1)),
+    "P_XZ": (("P_X", 0), ("P_Z", 1)),
+    "T_XYZ": (("P_X", 0), ("P_Y", 1), ("P_Z", 2)),
+    "SPATIAL_EULER_XYZ": (("P_X", 0), ("P_Y", 1), ("P_Z", 2), ("R_X", 3), ("R_Y", 4), ("R_Z", 5)),
+}
+#: The elementary joints of the chains that CASPR has no one-DOF type for.
+_ELEMENTARY = _ONE_DOF | {"P_Y": ("prismatic", (0.0, 1.0, 0.0)), "P_Z": ("prismatic", (0.0, 0.0, 1.0))}
+#: Joint types of CASPR's bodies files (its ``JointType``, with the quaternion joints of its
+#: earlier releases), for telling an unknown type from one taut does not read.
+_CASPR_JOINTS = (
+    *_ONE_DOF,
+    *_CHAINS,
+    "PLANAR_XY",
+    "PLANAR_XZ",
+    "PLANAR_YZ",
+    "SPHERICAL",
+    "S_QUATERNION",
+    "SPATIAL",
+    "SPATIAL_QUATERNION",
+)
+_QUATERNION = ("SPHERICAL", "S_QUATERNION", "SPATIAL", "SPATIAL_QUATERNION")
 #: Bounds CASPR's joint classes give ``q`` when the file gives no ``q_min`` / ``q_max``.
 _DEFAULT_LIMITS = {"revolute": (-math.pi, math.pi), "prismatic": (-math.inf, math.inf)}
 #: taut refuses pose coordinates beyond this (``taut.kinematics.as_poses``): an
@@ -256,6 +319,10 @@ def _read_link(elem: ET.Element, where: str) -> _Link:
     where = f"{where} (link {num_text})"
     joint = _one(elem, "joint", where)
     _attrs(joint, ("type", "q_initial", "q_min", "q_max", "actuated", "axis"), f"{where} <joint>")
+    if joint.get("type") not in _CASPR_JOINTS:
+        raise RobotFileError(
+            f"{where} <joint>: unknown joint type {joint.get('type')!r}; CASPR's joint types are {', '.join(_CASPR_JOINTS)}"
+        )
     axis = None
     if joint.get("axis") is not None:
         if joint.get("type") not in _AXIS_JOINTS:
@@ -382,15 +449,18 @@ def _read_cable(elem: ET.Element, n_links: int, where: str) -> _Cable:
         points.append((link, _vector(el, "location", f"{aw} <attachment>")))
     if len(points) != 2:
         if len(points) > 2:
+            route = " -> ".join(str(link) for link, _ in points)
             raise UnsupportedRobotError(
-                f"{aw}: cable {name!r} is routed through {len(points)} attachments; taut models a cable from the base to one body"
+                f"{aw}: cable {name!r} is routed through {len(points)} attachments (links {route}), {len(points) - 1} "
+                "segments of CASPR's cable-routing matrix; a taut cable is one segment from a base exit to one "
+                "anchor, so a cable across several links has no taut equivalent"
             )
         raise RobotFileError(f"{aw}: cable {name!r} needs two attachments, got {len(points)}")
     points.sort(key=lambda p: p[0])
     (l0, base), (l1, loc) = points
     if l0 != 0 or l1 == 0:
         raise UnsupportedRobotError(
-            f"{aw}: cable {name!r} must run from the base (link 0) to a body, got links {l0} and {l1}"
+            f"{aw}: cable {name!r} runs between links {l0} and {l1}; a taut cable runs from the base (link 0) to a body"
         )
     return _Cable(name, elem.tag, reference, (lo, hi), stiffness, base, l1, loc, swivel)
 
@@ -532,17 +602,31 @@ def _platform_link(links: list[_Link], source: str) -> tuple[_Link, np.ndarray, 
     return link, origin, mapping
 
 
-def _joint_limits(link: _Link, kind: str, where: str) -> tuple[tuple[float, float], bool]:
-    """``q_min`` / ``q_max`` of a one-DOF joint (CASPR's class bounds when not given), and
-    whether an infinite bound became ±``_UNBOUNDED``."""
-    bounds = []
-    for text, default in zip((link.q_min, link.q_max), _DEFAULT_LIMITS[kind]):
-        bounds.append(default if text is None else _numbers(text, 1, f"{where} q_min/q_max", allow_inf=True)[0])
-    lo, hi = bounds
-    if lo > hi:
-        raise RobotFileError(f"{where}: q_min {lo:g} > q_max {hi:g}")
-    clipped = (max(lo, -_UNBOUNDED), min(hi, _UNBOUNDED))
-    return clipped, clipped != (lo, hi)
+def _joint_limits(link: _Link, kinds: list[str], where: str) -> tuple[list[tuple[float, float]], bool]:
+    """``q_min`` / ``q_max`` of a joint's coordinates in CASPR's order (one number per degree
+    of freedom; CASPR's class bounds when not given), and whether an infinite bound became
+    ±``_UNBOUNDED``."""
+    columns = []
+    for text, side in ((link.q_min, 0), (link.q_max, 1)):
+        if text is None:
+            columns.append([_DEFAULT_LIMITS[k][side] for k in kinds])
+        else:
+            columns.append(
+                _numbers(
+                    text,
+                    len(kinds),
+                    f"{where}: its {link.joint} joint's q_min/q_max (one number per degree of freedom)",
+                    allow_inf=True,
+                )
+            )
+    out, unbounded = [], False
+    for lo, hi in zip(*columns):
+        if lo > hi:
+            raise RobotFileError(f"{where}: q_min {lo:g} > q_max {hi:g}")
+        clipped = (max(lo, -_UNBOUNDED), min(hi, _UNBOUNDED))
+        unbounded = unbounded or clipped != (lo, hi)
+        out.append(clipped)
+    return out, unbounded
 
 
 @dataclass(frozen=True)
@@ -550,11 +634,14 @@ class _Jointed:
     """The further links of a CASPR model as taut's ``platform.bodies``."""
 
     bodies: list[dict]
+    #: link number → the taut body its cables are anchored on (the last of its joint's chain)
+    body_of: dict[int, str]
     #: link number → its frame's offset along a planar model's normal (0 for the platform)
     normal_offsets: dict[int, float]
     unbounded: bool  #: a joint's infinite bound became ±``_UNBOUNDED``
     negated: list[str]  #: joints whose taut coordinate is −q (CASPR's turns the other way)
     massive: bool  #: a further link has a mass
+    permuted: list[str]  #: links whose joint coordinates taut orders otherwise than CASPR's q
 
 
 def _planar_joint(
@@ -576,18 +663,54 @@ def _planar_joint(
     return [1.0], math.copysign(1.0, axis[n]) * normal
 
 
+def _elementary(link: _Link, where: str) -> list[tuple[str, str, tuple[float, float, float], int]]:
+    """A further link's joint as a chain of one-DOF joints from the parent outwards: (CASPR
+    name, taut kind, axis, index of its coordinate in CASPR's ``q``)."""
+    if link.joint in _ONE_DOF:
+        kind, unit = _ONE_DOF[link.joint]
+        if unit is None:
+            if link.axis is None:
+                raise RobotFileError(f"{where}: a {link.joint} joint needs an axis attribute")
+            unit = (float(link.axis[0]), float(link.axis[1]), float(link.axis[2]))
+        return [(link.joint, kind, unit, 0)]
+    if link.joint in _CHAINS:
+        out = []
+        for name, index in _CHAINS[link.joint]:
+            kind, unit = _ELEMENTARY[name]
+            assert unit is not None, "chains are made of coordinate-axis joints"
+            out.append((name, kind, unit, index))
+        return out
+    if link.joint in _QUATERNION:
+        raise UnsupportedRobotError(
+            f"{where} has a {link.joint} joint, whose coordinates are a quaternion (4 numbers for 3 degrees of "
+            "freedom); taut's joint coordinates are one angle or distance per one-DOF joint (S_EULER_XYZ or "
+            "S_FIXED_XYZ hold the same rotation)"
+        )
+    raise UnsupportedRobotError(
+        f"{where} has a {link.joint} joint, which taut reads for the platform link only; a further link's joint "
+        f"is one of {', '.join((*_ONE_DOF, *_CHAINS))}"
+    )
+
+
 def _jointed_bodies(links: list[_Link], platform: _Link, rigid: bool, plane: _Plane | None, source: str) -> _Jointed:
     """``platform.bodies`` of taut for the links after the platform link.
 
-    Each such link must hang from the platform link or a later link by an actuated
-    one-degree-of-freedom joint of :data:`_ONE_DOF`: CASPR's ``R_X``/``R_Y``/``R_Z``/``R_AXIS``
-    rotate the link about the axis through its ``<parent><location>`` and ``P_X``/``P_AXIS``
-    translate it by ``q·axis`` from there (``RevoluteAxis``, ``PrismaticAxis``; the link's
-    frame is the parent's moved by ``location + r_rel(q)`` and rotated by ``R_pe(q)``,
+    Each such link must hang from the platform link or a later link.  A one-degree-of-freedom
+    joint (:data:`_ONE_DOF`) is one body: CASPR's ``R_X``/``R_Y``/``R_Z``/``R_AXIS`` rotate the
+    link about the axis through its ``<parent><location>`` and ``P_X``/``P_AXIS`` translate it
+    by ``q·axis`` from there (``RevoluteAxis``, ``PrismaticAxis``; the link's frame is the
+    parent's moved by ``location + r_rel(q)`` and rotated by ``R_pe(q)``,
     ``SystemModelBodies.update``), which are taut's ``revolute`` and ``prismatic`` joints with
-    ``origin = location``.  On a planar platform a revolute joint must turn about the plane's
-    normal and a prismatic one move in the plane; the plane maps as the platform's does, so a
-    joint turning the other way round than taut's planar angles gets the coordinate −q.
+    ``origin = location``.  A joint of several degrees of freedom (:data:`_CHAINS`: universal
+    ``U_*``, spherical ``S_EULER_XYZ``/``S_FIXED_XYZ``, ``P_XY``/``P_XZ``, ``T_XYZ``,
+    ``SPATIAL_EULER_XYZ``) is the chain of one-DOF joints its ``R_pe`` and ``r_rel`` compose,
+    through massless intermediate bodies named ``"link [R_X of U_XY]"``; the link's mass and
+    cables are on the last.  A joint with ``actuated="true"`` gets an actuator on each of its
+    degrees of freedom, unbounded (CASPR's ``tau_min``/``tau_max`` are ±∞ and its files give
+    none); others are passive.  On a planar platform a revolute joint must turn about the
+    plane's normal and a prismatic one move in the plane; the plane maps as the platform's
+    does, so a joint turning the other way round than taut's planar angles gets the
+    coordinate −q.
 
     References
     ----------
@@ -595,6 +718,10 @@ def _jointed_bodies(links: list[_Link], platform: _Link, rigid: bool, plane: _Pl
        simulation platform for the research of cable-driven parallel robots", IEEE/RSJ
        International Conference on Intelligent Robots and Systems (IROS), 2016.
        (docs/references.bib: lau2016)
+    .. [2] D. Lau, D. Oetomo, S. K. Halgamuge, "Generalized modeling of multilink cable-driven
+       manipulators with arbitrary routing using the cable-routing matrix", IEEE Transactions
+       on Robotics 29(5), 2013 (links on joints of several degrees of freedom).
+       (docs/references.bib: lau2013)
     """
     rest = links[platform.num :]
     if rest and not rigid:
@@ -604,65 +731,66 @@ def _jointed_bodies(links: list[_Link], platform: _Link, rigid: bool, plane: _Pl
         )
     names = {platform.num: "platform"}
     offsets = {platform.num: 0.0}
+    taken = {"platform"}
     bodies: list[dict] = []
     negated: list[str] = []
+    permuted: list[str] = []
     unbounded = massive = False
     for link in rest:
         where = f"{source}: link {link.num} ({link.name!r})"
-        if link.joint not in _ONE_DOF:
-            raise UnsupportedRobotError(
-                f"{where} has a {link.joint or '(missing)'} joint; taut's jointed bodies have the one-DOF joints "
-                f"{', '.join(_ONE_DOF)}"
-            )
+        chain = _elementary(link, where)
         if link.parent not in names:
             to = "the ground (link 0)" if link.parent == 0 else f"link {link.parent} ({links[link.parent - 1].joint})"
             raise UnsupportedRobotError(
-                f"{where} is jointed to {to}; taut's bodies are jointed to the platform (link {platform.num}) or to "
-                "other bodies"
+                f"{where} is jointed to {to}, which is not the platform (link {platform.num}) nor carried by it; "
+                "taut's bodies form a tree rooted at the one free platform"
             )
-        if not link.actuated:
-            raise UnsupportedRobotError(
-                f'{where}: its {link.joint} joint is passive (no actuated="true"); taut\'s joint coordinates are '
-                "set by joint actuators"
-            )
-        kind, unit = _ONE_DOF[link.joint]
-        if unit is None:
-            if link.axis is None:
-                raise RobotFileError(f"{where}: a {link.joint} joint needs an axis attribute")
-            unit = (float(link.axis[0]), float(link.axis[1]), float(link.axis[2]))
-        (lo, hi), clipped = _joint_limits(link, kind, where)
+        limits, clipped = _joint_limits(link, [kind for _, kind, _, _ in chain], where)
         unbounded, massive = unbounded or clipped, massive or link.mass > 0
         name = link.name.strip() or f"link {link.num}"
-        while name in names.values():
+        while name in taken:
             name = f"{name} (link {link.num})"
+        taken.add(name)
+        if [index for *_, index in chain] != list(range(len(chain))):
+            permuted.append(f"{name} ({link.joint}: {', '.join(f'q{index + 1}' for *_, index in chain)})")
+        parent = names[link.parent]
+        for step, (elem, kind, unit, index) in enumerate(chain):
+            last = step == len(chain) - 1
+            body_name = name if last else f"{name} [{elem} of {link.joint}]"
+            while not last and body_name in taken:
+                body_name = f"{body_name} (link {link.num})"
+            taken.add(body_name)
+            lo, hi = limits[index]
+            origin = link.location if step == 0 else np.zeros(3)
+            axis, com = list(unit), link.com
+            if plane is not None:
+                axis, sign = _planar_joint(kind, unit, plane, where, link.joint)
+                origin, com = origin[list(plane.axes)], com[list(plane.axes)]
+                if sign < 0:
+                    lo, hi = -hi, -lo
+                    negated.append(body_name)
+            joint: dict[str, object] = {"kind": kind, "axis": axis, "origin": origin.tolist(), "limits": [lo, hi]}
+            if link.actuated:
+                joint["actuator"] = {"force": [-math.inf, math.inf]}
+            body: dict[str, object] = {"name": body_name, "parent": parent, "joint": joint}
+            if last and link.mass > 0:
+                body["mass"] = link.mass
+                if np.any(com != 0):
+                    body["com"] = com.tolist()
+                if np.any(link.inertia != 0):
+                    t = link.inertia
+                    body["inertia"] = (
+                        [t[0, 0], t[1, 1], t[2, 2], t[0, 1], t[0, 2], t[1, 2]]
+                        if plane is None
+                        else [t[plane.normal, plane.normal]]
+                    )
+            bodies.append(body)
+            parent = body_name
         names[link.num] = name
-        axis, origin, com, sign = list(unit), link.location, link.com, 1.0
         if plane is not None:
-            axis, sign = _planar_joint(kind, unit, plane, where, link.joint)
             offsets[link.num] = offsets[link.parent] + float(link.location[plane.normal])
-            origin, com = origin[list(plane.axes)], com[list(plane.axes)]
-            if sign < 0:
-                lo, hi = -hi, -lo
-                negated.append(name)
-        limits = [lo, hi]
-        body: dict[str, object] = {
-            "name": name,
-            "parent": names[link.parent],
-            "joint": {"kind": kind, "axis": axis, "origin": origin.tolist(), "limits": limits},
-        }
-        if link.mass > 0:
-            body["mass"] = link.mass
-            if np.any(com != 0):
-                body["com"] = com.tolist()
-            if np.any(link.inertia != 0):
-                t = link.inertia
-                body["inertia"] = (
-                    [t[0, 0], t[1, 1], t[2, 2], t[0, 1], t[0, 2], t[1, 2]]
-                    if plane is None
-                    else [t[plane.normal, plane.normal]]
-                )
-        bodies.append(body)
-    return _Jointed(bodies, offsets, unbounded, negated, massive)
+    body_of = {num: body for num, body in names.items() if num != platform.num}
+    return _Jointed(bodies, body_of, offsets, unbounded, negated, massive, permuted)
 
 
 def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) -> Robot:
@@ -670,7 +798,7 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
     link, origin, (dim, rigid, plane_name, orientation) = _platform_link(links, source)
     plane = _PLANES[plane_name] if plane_name is not None else None
     jointed = _jointed_bodies(links, link, rigid, plane, source)
-    body_of = {link.num + k: b["name"] for k, b in enumerate(jointed.bodies, 1)}
+    body_of = jointed.body_of
     scale = max(1.0, float(np.abs(origin).max()))
     out = []
     shifted = False
@@ -741,6 +869,8 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
         notes.append(f"unbounded joints limited to +-{_UNBOUNDED:g} (the largest pose coordinate taut takes)")
     if jointed.negated:
         notes.append(f"joint coordinates negated (-q of CASPR): {', '.join(jointed.negated)}")
+    if jointed.permuted:
+        notes.append(f"joint coordinates in the chain's order: {'; '.join(jointed.permuted)}")
     data = {
         "name": stem,
         "description": "; ".join(notes),
@@ -812,8 +942,8 @@ def _joint_type(kind: str, axis: tuple[float, ...]) -> str:
 def _write_bodies(
     robot: Robot, links: ET.Element, platform_num: int, lift: Callable[[np.ndarray], np.ndarray], horizontal: bool
 ) -> dict[str, str]:
-    """Append ``platform.bodies`` to ``links`` as actuated one-DOF links after the platform's
-    link ``platform_num`` (the inverse of :func:`_jointed_bodies`; ``lift`` takes a planar
+    """Append ``platform.bodies`` to ``links`` as one-DOF links after the platform's
+    link ``platform_num`` (``actuated="true"`` where the joint has an actuator) (the inverse of :func:`_jointed_bodies`; ``lift`` takes a planar
     robot's vectors into its CASPR plane, ``horizontal`` the XY plane); return the CASPR link
     number of each body name (``platform`` included).  Joint names and collision capsules
     have no place in a CASPR model and are not written."""
@@ -834,7 +964,15 @@ def _write_bodies(
             axis = lift(np.array(j.axis, dtype=float))
         kind = _joint_type(j.kind, tuple(axis))
         lo, hi = j.limits
-        attrs = {"type": kind, "actuated": "true", "q_initial": repr(float(min(max(0.0, lo), hi)))}
+        attrs = {"type": kind, "actuated": "false", "q_initial": repr(float(min(max(0.0, lo), hi)))}
+        if j.actuator is not None:
+            if any(math.isfinite(f) for f in j.actuator.force):
+                raise _refuse(
+                    robot,
+                    f"the force bounds {list(j.actuator.force)} of the actuator of {b.name}'s joint (CASPR's joint "
+                    "actuators are unbounded)",
+                )
+            attrs["actuated"] = "true"
         attrs |= {"q_min": repr(float(lo)), "q_max": repr(float(hi))}
         if kind in _AXIS_JOINTS:
             attrs["axis"] = _fmt(axis)
@@ -867,7 +1005,8 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
     ``PLANAR_XZ`` link (taut's ``y`` is CASPR's ``z``, where its gravity acts), or ``PLANAR_XY``
     when it has a mass and no gravity in its plane; point masses ``T_XYZ``, ``P_XZ`` or ``P_XY``.
     A constant external wrench that is a downward force becomes the mass whose weight it is.
-    Jointed bodies become actuated links after the platform's (``R_X``/``R_Y``/``R_Z``/``P_X``
+    Jointed bodies become links after the platform's, actuated where their joint has an
+    (unbounded) actuator (``R_X``/``R_Y``/``R_Z``/``P_X``
     along a positive coordinate axis, else ``R_AXIS``/``P_AXIS``; a planar revolute joint
     ``R_Z`` in the XY plane, ``R_AXIS`` about −y in the XZ plane, so that CASPR's ``q`` is
     taut's) with their masses.  Reference data, trajectories, joint names and the collision
@@ -883,7 +1022,7 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
     ------
     UnsupportedRobotError
         For what the format cannot hold: obstacles, exit pulleys, length bounds, cable radii,
-        other wrenches and gravities, the ``tilt-torsion`` convention.
+        other wrenches and gravities, the ``tilt-torsion`` convention, bounded joint actuators.
     RobotFileError
         For a name that does not end in :data:`BODIES_SUFFIX`, or files that cannot be written.
 

@@ -42,8 +42,9 @@ frame translated by ``origin + q·axis``, or by ``origin`` and turned by ``q`` a
 order of the body tree (:func:`joint_order`).  Its ``inertial`` holds the body's ``mass`` at
 its ``com`` and its ``inertia`` about the ``com`` (``fullinertia``; a planar body's ``Izz``
 as the platform's), and the anchor sites of its cables are in it.  The motor ``drive<k>``
-(``gear = 1``, no control range: taut gives no joint force bounds; the drives follow the
-tension actuators, so that ``ctrl = (τ, ζ)``) acts on ``joint<k>``: its control is taut's
+(``gear = 1``; its ``ctrlrange`` the bounds of the joint's actuator, ``joint.actuator``, where
+both are finite, else no control range; a passive joint's drive stays at zero in taut's use;
+the drives follow the tension actuators, so that ``ctrl = (τ, ζ)``) acts on ``joint<k>``: its control is taut's
 joint force ``ζ_k`` of :func:`taut.kinematics.joint_forces`, the force along
 ``+axis`` or the torque about ``+axis`` that the joint's actuator exerts on the child body,
 which is MuJoCo's generalised force of that joint (the reaction on the parent is MuJoCo's, as
@@ -471,8 +472,12 @@ def mjcf_text(robot: Robot) -> str:
             ctrllimited="true",
             ctrlrange=_vector([tmin[i - 1], tmax[i - 1]]),
         )
-    for k in range(1, robot.n_joints + 1):
-        ET.SubElement(actuators, "general", name=f"drive{k}", joint=f"joint{k}", gear="1", ctrllimited="false")
+    for k, body in enumerate(robot.platform.bodies, 1):
+        drive = {"name": f"drive{k}", "joint": f"joint{k}", "gear": "1", "ctrllimited": "false"}
+        motor = body.joint.actuator
+        if motor is not None and all(math.isfinite(f) for f in motor.force):
+            drive |= {"ctrllimited": "true", "ctrlrange": _vector(list(motor.force))}
+        ET.SubElement(actuators, "general", drive)
     ET.indent(root)
     return ET.tostring(root, encoding="unicode") + "\n"
 

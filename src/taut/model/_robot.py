@@ -285,6 +285,48 @@ class Cable(_Strict):
         return None if v is None else _check_bounds(v, "length")
 
 
+class JointActuator(_Strict):
+    """A motor acting along a joint: the force (prismatic joint) or torque (revolute joint) it
+    exerts on the child body along or about ``+axis``, within ``force``.
+
+    The dynamics gives its force to the tension distribution as one more column of the jointed
+    structure matrix, a unit column on the joint's row (Lau, Oetomo & Halgamuge 2013: a
+    multilink cable robot's joint actuators beside its cables); a joint without one is
+    passive, moved only by the cables across it.
+
+    Attributes
+    ----------
+    force : (float, float)
+        Lower and upper bounds [N or N m]; either may be infinite (the default: unbounded).
+
+    References
+    ----------
+    .. [1] D. Lau, D. Oetomo, S. K. Halgamuge, "Generalized modeling of multilink cable-driven
+       manipulators with arbitrary routing using the cable-routing matrix", IEEE Transactions
+       on Robotics 29(5), 2013 (joint actuators beside the cables in the equations of motion).
+       (docs/references.bib: lau2013)
+
+    Examples
+    --------
+    >>> JointActuator(force=(-20.0, 20.0)).force
+    (-20.0, 20.0)
+    """
+
+    force: tuple[Number, Number] = (-math.inf, math.inf)
+
+    @field_validator("force")
+    @classmethod
+    def _force(cls, v: tuple[float, float]) -> tuple[float, float]:
+        lo, hi = v
+        if math.isnan(lo) or math.isnan(hi):
+            raise RobotFileError(f"joint actuator force bounds must be numbers, got {list(v)}")
+        if lo > hi or lo == math.inf or hi == -math.inf:
+            raise RobotFileError(f"joint actuator force bounds must satisfy lower <= upper, got {list(v)}")
+        if any(math.isfinite(x) and abs(x) > MAX_MAGNITUDE for x in v):
+            raise RobotFileError(f"joint actuator force bounds beyond {MAX_MAGNITUDE:g}, got {list(v)}")
+        return (float(lo), float(hi))
+
+
 class Joint(_Strict):
     """A one-degree-of-freedom joint between a body and its parent.
 
@@ -304,6 +346,8 @@ class Joint(_Strict):
         Bounds of ``q`` [m or rad].
     name : str or None
         The coordinate's name in poses (the body's name when not given).
+    actuator : JointActuator or None
+        The joint's motor; None: a passive joint.
 
     Examples
     --------
@@ -316,6 +360,9 @@ class Joint(_Strict):
     origin: tuple[Coordinate, ...] | None = None
     limits: tuple[Finite, Finite]
     name: str | None = None
+    actuator: JointActuator | None = Field(
+        default=None, description="the joint's motor with its force or torque bounds; none: a passive joint"
+    )
 
     @field_validator("axis")
     @classmethod
@@ -853,6 +900,28 @@ class Robot(_Strict):
             return t[:, 0], t[:, 1]
 
         return self._derived("length_bounds", build)
+
+    @property
+    def actuated_joints(self) -> np.ndarray:
+        """Indices (0-based, in ``platform.bodies``) of the joints with an actuator, ``(n_actuators,)``."""
+        return self._derived(
+            "actuated_joints",
+            lambda: np.array(
+                [k for k, b in enumerate(self.platform.bodies) if b.joint.actuator is not None], dtype=int
+            ),
+        )
+
+    @property
+    def actuator_bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """Lower and upper force bounds of the joint actuators [N or N m], each ``(n_actuators,)``
+        in the order of :attr:`actuated_joints`."""
+
+        def build() -> tuple[np.ndarray, np.ndarray]:
+            t = [b.joint.actuator.force for b in self.platform.bodies if b.joint.actuator is not None]
+            a = np.array(t, dtype=float).reshape(-1, 2)
+            return a[:, 0], a[:, 1]
+
+        return self._derived("actuator_bounds", build)
 
     @property
     def joint_limits(self) -> np.ndarray:
