@@ -25,6 +25,7 @@ from taut.errors import ArgumentError
 from taut.viz._style import CABLE_COLORS
 from taut.viz.interactive._plotly import graph_objects
 from taut.viz.interactive._scene import (
+    DRAWN,
     Poses,
     at_poses,
     bounds,
@@ -163,16 +164,19 @@ def _animate(
     first = len(fig.data)
     for tr in robot_at(0):
         fig.add_trace(tr, row=1, col=1)
+    x = times.astype(DRAWN)
     for i in range(n):
         style = dict(color=CABLE_COLORS[i % len(CABLE_COLORS)], width=1.5)
         fig.add_trace(
-            go.Scatter(x=times, y=lengths[:, i], mode="lines", name=f"cable {i + 1}", line=style, legendgroup="2d"),
+            go.Scatter(x=x, y=lengths[:, i].astype(DRAWN), mode="lines", name=f"cable {i + 1}", line=style),
             row=2,
             col=1,
         )
         if tensions is not None:
             fig.add_trace(
-                go.Scatter(x=times, y=tensions[:, i], mode="lines", name=f"τ{i + 1}", line=style, showlegend=False),
+                go.Scatter(
+                    x=x, y=tensions[:, i].astype(DRAWN), mode="lines", name=f"τ{i + 1}", line=style, showlegend=False
+                ),
                 row=3,
                 col=1,
             )

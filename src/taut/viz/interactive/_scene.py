@@ -64,7 +64,13 @@ def _circle(centre: np.ndarray, radius: float, e1: np.ndarray, e2: np.ndarray, n
     return centre + radius * (np.cos(t)[:, None] * e1 + np.sin(t)[:, None] * e2)
 
 
+#: The type of drawn coordinates: single precision (7 digits) is finer than any screen, and
+#: halves a view's file; the numbers a view reports (lengths, tensions) stay double.
+DRAWN = np.float32
+
+
 def _line(go: Any, pts: np.ndarray, name: str, **style: Any) -> BaseTraceType:
+    pts = pts.astype(DRAWN)
     return go.Scatter3d(x=pts[:, 0], y=pts[:, 1], z=pts[:, 2], mode="lines", name=name, **style)
 
 
@@ -354,19 +360,23 @@ def pose_traces(
         runs.append(run)
     head = f"{label}<br>" if label else ""
 
-    # the colour values as a list: plotly.js reads a typed array there as one colour, not one per vertex
-    def cable_lines(which: np.ndarray) -> tuple[np.ndarray, list[float], list[str]]:
+    # the colour values as a list: plotly.js reads a typed array there as one colour, not one
+    # per vertex; the hover's numbers go in a compact array, its words in one template
+    def cable_lines(which: np.ndarray) -> tuple[np.ndarray, list[float], np.ndarray]:
         idx = np.flatnonzero(which)
         pts = polylines([runs[i] for i in idx])
         values: list[float] = []
-        hover: list[str] = []
+        data: list[list[float]] = []
         for i in idx:
-            tau = "" if tensions is None else f"<br>tension {tensions[i]:.4g} N"
-            text = f"{head}cable {i + 1}{' (slack)' if slack[i] else ''}<br>length {lengths[i]:.4g} m{tau}"
             k = len(runs[i]) + 1
-            values += [float(tensions[i]) if tensions is not None else float(i)] * k
-            hover += [text] * k
-        return pts, values, hover
+            tau = float(tensions[i]) if tensions is not None else 0.0
+            values += [tau if tensions is not None else float(i)] * k
+            data += [[i + 1.0, float(lengths[i]), tau]] * k
+        return pts, values, np.array(data, DRAWN).reshape(-1, 3)
+
+    def template(what: str) -> str:
+        tau = "" if tensions is None else "<br>tension %{customdata[2]:.4g} N"
+        return f"{head}cable %{{customdata[0]}}{what}<br>length %{{customdata[1]:.4g}} m{tau}<extra></extra>"
 
     tight, tvals, thover = cable_lines(~slack)
     loose, _, lhover = cable_lines(slack)
@@ -418,8 +428,8 @@ def pose_traces(
             tight,
             "cables",
             line=dict(width=6) | colour,
-            hovertext=thover,
-            hoverinfo="text",
+            customdata=thover,
+            hovertemplate=template(""),
             showlegend=False,
             **common,
         ),
@@ -428,8 +438,8 @@ def pose_traces(
             loose,
             "slack cables",
             line=dict(width=4, dash="dash", color="#888888"),
-            hovertext=lhover,
-            hoverinfo="text",
+            customdata=lhover,
+            hovertemplate=template(" (slack)"),
             **common,
         ),
         go.Scatter3d(
