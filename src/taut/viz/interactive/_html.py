@@ -47,7 +47,8 @@ def html_fragment(fig: Figure, *, div_id: str | None = None) -> str:
     >>> 'id="robot"' in text, "Plotly.newPlot" in text, "http" in text
     (True, True, False)
     """
-    return str(fig.to_html(full_html=False, include_plotlyjs=False, div_id=div_id, config=CONFIG))
+    # no auto-play: plotly would otherwise run through every frame as the page opens
+    return str(fig.to_html(full_html=False, include_plotlyjs=False, div_id=div_id, config=CONFIG, auto_play=False))
 
 
 def write_plotly_js(directory: str | os.PathLike[str]) -> Path:
