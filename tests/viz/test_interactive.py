@@ -175,3 +175,19 @@ def test_write_html_shares_plotly_js_or_embeds_it(tmp_path):
     assert embedded.stat().st_size > (tmp_path / "plotly.min.js").stat().st_size
     with pytest.raises(ArgumentError):
         write_html(fig, tmp_path / "missing" / "c.html")
+
+
+def test_report_embeds_views_and_writes_plotly_js_once(tmp_path):
+    from taut.viz import Report
+
+    report = Report("views")
+    report.add_section("one", views=[(view_robot(PLANAR, [0, 0, 0]), "planar")])
+    report.add_section("two", views=[(view_robot(SPATIAL), "spatial")])
+    index = report.write(tmp_path)
+    page = index.read_text()
+    assert page.count('<script src="plotly.min.js"') == 1 and page.count("Plotly.newPlot") == 2
+    assert 'id="view-1"' in page and 'id="view-2"' in page and "<figcaption>spatial</figcaption>" in page
+    assert (tmp_path / "plotly.min.js").stat().st_size > 1_000_000
+    plain = Report("no views")
+    plain.add_section("text only", text="nothing to draw")
+    assert "plotly" not in plain.html()
