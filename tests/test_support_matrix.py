@@ -229,6 +229,16 @@ def simulate(s: Subject, tmp: Path):
     return ["simulate", s.robot, moves, "--duration", "0.05"], check
 
 
+def view(s: Subject, tmp: Path):
+    out = tmp / "view.html"
+
+    def check(d: dict, s: Subject) -> None:
+        assert d["cables"] == load(s.robot).n_cables and d["out"] == str(out)
+        assert out.stat().st_size == d["bytes"] > 0
+
+    return ["view", s.robot, f"--pose={numbers(s.pose)}", "--out", str(out)], check
+
+
 def convert(suffix: str) -> Query:
     def query(s: Subject, tmp: Path):
         out = tmp / f"robot{suffix}"
@@ -260,6 +270,7 @@ QUERIES: dict[str, Query] = {
     "taut trajectory": trajectory,
     "taut check": check_command,
     "taut simulate": simulate,
+    "taut view": view,
     "taut convert to taut YAML": convert(".yaml"),
     "taut convert to CASPR": convert("_bodies.xml"),
     "taut convert to WireX": convert(".wcrfx"),

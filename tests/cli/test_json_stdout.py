@@ -178,6 +178,11 @@ CASES: list[tuple[str, list[str], Check]] = [
         ),
     ),
     (
+        "view",
+        ["view", "spatial-8cable", "--pose", "0.1,0,0.2,0,0,0", "--out", "{tmp}/v.html", "--plotlyjs", "beside"],
+        lambda d, tmp: d["view"] == "robot" and (tmp / "v.html").stat().st_size == d["bytes"] and d["cables"] == 8,
+    ),
+    (
         "convert",
         ["convert", "cogiro", "{tmp}/c_bodies.xml"],
         lambda d, tmp: d["format"] == "caspr" and (tmp / "c_bodies.xml").is_file() and (tmp / "c_cables.xml").is_file(),
@@ -217,6 +222,7 @@ QUICK = {
     "plan",
     "plan-atlasrrt",
     "simulate",
+    "view",
     "convert",
 }
 

@@ -36,6 +36,7 @@ from taut.cli import _schema as schema
 from taut.cli import _simulate as simulate
 from taut.cli import _tensions as tensions
 from taut.cli import _trajectory as trajectory
+from taut.cli import _view as view
 from taut.cli import _workspace as workspace
 from taut.cli._output import BAD_INPUT, INTERRUPTED, error
 from taut.errors import TautError
@@ -55,6 +56,7 @@ COMMANDS: tuple[tuple[str, ModuleType], ...] = (
     ("trajectory", trajectory),
     ("check", check),
     ("simulate", simulate),
+    ("view", view),
     ("convert", convert),
     ("demo", demo),
 )

@@ -6,6 +6,7 @@ local processes or on a dask cluster."""
 from __future__ import annotations
 
 import argparse
+import json
 from typing import TYPE_CHECKING, Any
 
 from taut.cli import _args as A
@@ -63,7 +64,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--max-boxes", type=A.count(1), metavar="N", help="--certified: budget of boxes (default 2000000)"
     )
-    parser.add_argument("--out", metavar="FILE.npz", help="save poses and verdicts")
+    parser.add_argument(
+        "--out",
+        metavar="FILE.npz|FILE.json",
+        help="save poses and verdicts (.npz); with --certified the boxes (.json, as --json with inner_boxes, "
+        "outer_boxes, undecided_boxes); taut view --workspace draws either",
+    )
     parser.add_argument("--plot", metavar="FILE.png", help="plot the workspace")
     A.add_parallel(parser, workers=None)
 
@@ -114,10 +120,9 @@ def _certified(ns: argparse.Namespace) -> int:
     from taut.parallel import get_executor
     from taut.workspace import certified
 
-    if ns.out is not None or ns.grid is not None or ns.max_poses is not None:
-        raise TautError(
-            "--certified takes --region, --eps and --max-boxes; --grid, --max-poses and --out are for grids"
-        )
+    if ns.grid is not None or ns.max_poses is not None:
+        raise TautError("--certified takes --region, --eps and --max-boxes; --grid and --max-poses are for grids")
+    out = A.output_file(ns.out, "--out", {".json"})
     plot = A.plot_file(ns.plot)
     robot = A.load(ns.robot, ns.cable_set)
     options: dict[str, Any] = {}
@@ -141,6 +146,10 @@ def _certified(ns: argparse.Namespace) -> int:
             **options,
         )
     data = res.as_dict()
+    if out is not None:
+        with written(out, "--out") as tmp:
+            tmp.write_text(json.dumps(res.as_dict(boxes=True), allow_nan=False), encoding="utf-8")
+        data["out"] = str(out)
     if plot is not None:
         from taut.viz import plot_certified
 

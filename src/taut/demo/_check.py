@@ -12,9 +12,12 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+import numpy as np
+
 from taut.collision import check_poses, trajectory_poses
 from taut.model import example
 from taut.viz import plot_check
+from taut.viz.interactive import view_motion
 
 if TYPE_CHECKING:
     from taut.viz import Report
@@ -23,7 +26,8 @@ if TYPE_CHECKING:
 def check_section(report: Report) -> None:
     """Demo section: simulation c of ``adjustable-8cable`` (rotation about x at s23 = 2)."""
     robot = example("adjustable-8cable")
-    res = check_poses(robot, trajectory_poses(robot, "sim-c"))
+    poses = trajectory_poses(robot, "sim-c")
+    res = check_poses(robot, poses)
     first = res.first(res.collides)
     pairs = ", ".join(f"{i + 1} & {j + 1}" for i, j in res.proximity.collisions(first)) if first is not None else "none"
     text = (
@@ -40,4 +44,16 @@ def check_section(report: Report) -> None:
         text=text,
         figures=[(fig, "adjustable-8cable-check.png", "clearance over the steps; robot at the first collision")],
         json={"first_collision": first, "collisions": res.proximity.collisions(first - 1) if first else []},
+        views=[
+            (
+                view_motion(
+                    robot,
+                    np.arange(1, len(poses) + 1, dtype=float),
+                    poses,
+                    time_label="step",
+                    title=f"{robot.name}: simulation c, {len(poses)} steps",
+                ),
+                "simulation c step by step: the two bodies, their capsules and the cables",
+            )
+        ],
     )

@@ -19,6 +19,7 @@ from taut.dgp import solve_dgp, track_path
 from taut.errors import TautError
 from taut.model import example
 from taut.viz import plot_equilibria, plot_tracking
+from taut.viz.interactive import view_equilibria
 
 if TYPE_CHECKING:
     from taut.viz import Report
@@ -73,4 +74,5 @@ def dgp_section(report: Report) -> None:
         figures=figures,
         table=rows,
         json=summary,
+        views=[(view_equilibria(robot, res.solutions), "every equilibrium, one at a time: choose it in the selector")],
     )

@@ -19,6 +19,7 @@ from taut.errors import TautError
 from taut.model import example
 from taut.planning import Atlas, PathResult, WrenchFeasibleManifold, plan_path, slice_map, verify_path
 from taut.viz import plot_plan
+from taut.viz.interactive import view_motion
 
 if TYPE_CHECKING:
     from taut.viz import Report
@@ -50,6 +51,20 @@ def plan_section(report: Report, radius: float = 0.2) -> PathResult:
         "paper [s]": 20.0,
         "independent check": None if check is None else check.all_feasible,
     }
+    views = []
+    if res.found:
+        lo, hi = M.tension_range(res.path)
+        poses = M.align(M.pose(res.path), q["q1"])
+        shown = view_motion(
+            robot,
+            np.arange(len(poses), dtype=float),
+            poses,
+            tensions=(lo + hi) / 2,
+            time_label="path step",
+            tension_label="f₀ [N]",
+            title=f"{robot.name}: the path q1 → q2, cables coloured by f₀ (the centre of their tension range)",
+        )
+        views.append((shown, "the planned path: slide along it or play it"))
     report.add_section(
         "Wrench-feasible path planning (Robocrane)",
         text=(
@@ -68,5 +83,6 @@ def plan_section(report: Report, radius: float = 0.2) -> PathResult:
             )
         ],
         table=[row],
+        views=views,
     )
     return res

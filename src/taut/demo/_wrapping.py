@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 
 from taut.model import example
 from taut.viz import plot_trajectory
+from taut.viz.interactive import view_trajectory
 from taut.wrapping import builtin_trajectory, run_trajectory
 
 if TYPE_CHECKING:
@@ -21,7 +22,7 @@ if TYPE_CHECKING:
 
 def trajectory_section(report: Report) -> None:
     """One trajectory of each VSCR example: lengths, transitions, snapshots, tensions."""
-    rows, figures = [], []
+    rows, figures, views = [], [], []
     for name in ["vscr-single-cable", "vscr-four-cable", "vscr-agriculture", "vscr-rehabilitation", "vscr-t-shaped"]:
         robot = example(name)
         traj = next(iter(robot.trajectories))
@@ -39,6 +40,8 @@ def trajectory_section(report: Report) -> None:
             }
         )
         figures.append((plot_trajectory(robot, res), f"{name}-trajectory.png", f"{name}: {traj}"))
+        if name == "vscr-t-shaped":
+            views.append((view_trajectory(robot, res), f"{name}: {traj}, the cables along their wrapped paths"))
     report.add_section(
         "Variable-structure robots: wrapping cables along trajectories",
         text=(
@@ -48,4 +51,5 @@ def trajectory_section(report: Report) -> None:
         ),
         figures=figures,
         table=rows,
+        views=views,
     )

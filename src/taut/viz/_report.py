@@ -1,10 +1,13 @@
 """A small self-contained HTML report: :class:`Report`.
 
 A report is a title and a list of sections; each section may hold paragraphs of text,
-figures (saved as PNG next to ``index.html`` and linked relatively), a table (a list of
-dict rows) and a JSON block.  ``Report.write(out_dir)`` writes ``index.html`` (one file, its
-CSS inline, every text HTML-escaped) and the PNGs.  Figures are rendered to PNG (dpi 110)
-and closed as soon as they are added, so that a long report does not keep them open.
+figures (saved as PNG next to ``index.html`` and linked relatively), interactive views
+(plotly figures of :mod:`taut.viz.interactive`, drawn in the page beside the PNGs, which stay
+for print), a table (a list of dict rows) and a JSON block.  ``Report.write(out_dir)``
+writes ``index.html`` (one file, its CSS inline, every text HTML-escaped), the PNGs and,
+when there are views, plotly.js once beside them, so that the report opens offline.  Figures
+are rendered to PNG (dpi 110) and closed as soon as they are added, so that a long report does
+not keep them open.
 No figure of the sources is imitated here.
 """
 
@@ -25,10 +28,12 @@ from urllib.parse import quote
 import numpy as np
 
 from taut.errors import ArgumentError
+from taut.viz.interactive import PLOTLY_JS
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure, SubFigure
+    from plotly.graph_objects import Figure as PlotlyFigure
 
 __all__ = ["Report"]
 
@@ -45,6 +50,7 @@ nav ol { padding-left: 1.4em; } nav a { text-decoration: none; }
 figure { margin: 0; max-width: 100%; }
 figure img { max-width: 100%; max-height: 560px; border: 1px solid #eee; }
 figcaption { font-size: 0.9em; color: #555; text-align: center; }
+figure.view { width: 100%; border: 1px solid #eee; }
 table { border-collapse: collapse; font-size: 0.92em; margin: 0.8em 0; }
 th, td { border: 1px solid #ddd; padding: 0.25em 0.6em; }
 th { background: #f4f4f4; text-align: left; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
@@ -66,6 +72,7 @@ class _Section:
     figures: list[_Figure] = field(default_factory=list)
     table: list[dict[str, object]] | None = None
     json: object = None
+    views: list[tuple[str, str]] = field(default_factory=list)  #: (HTML of the figure, caption)
 
 
 def _jsonable(obj: object) -> object:
@@ -127,6 +134,7 @@ class Report:
         self.title = str(title)
         self.sections: list[_Section] = []
         self._files: set[str] = set()
+        self._views = 0
 
     def add_section(
         self,
@@ -136,6 +144,7 @@ class Report:
         | None = None,
         table: Iterable[Mapping[str, object]] | None = None,
         json: object = None,
+        views: Iterable[tuple[PlotlyFigure, str]] | None = None,
     ) -> None:
         """Append a section.
 
@@ -145,6 +154,8 @@ class Report:
         PNG and closed now; ``filename`` is a plain file name (``.png`` added if missing),
         unique in the report.  ``table``: a list of dict rows (columns in order of first
         appearance).  ``json``: any JSON-serialisable value (NumPy values accepted).
+        ``views``: ``(plotly Figure, caption)`` pairs, interactive views drawn in the page
+        (the ``view`` extra).
         A figure item of another length or a file name that is not plain or is used twice
         raises :class:`~taut.errors.ArgumentError`."""
         figs = []
@@ -164,7 +175,13 @@ class Report:
         rows = None
         if table is not None:
             rows = [dict(r) for r in table]
-        self.sections.append(_Section(str(title), None if text is None else str(text), figs, rows, json))
+        shown = []
+        for view, caption in views or []:
+            from taut.viz.interactive import html_fragment
+
+            self._views += 1
+            shown.append((html_fragment(view, div_id=f"view-{self._views}"), str(caption)))
+        self.sections.append(_Section(str(title), None if text is None else str(text), figs, rows, json, shown))
 
     # ---- rendering -----------------------------------------------------------------
     def _section_html(self, s: _Section, slug: str) -> str:
@@ -182,6 +199,8 @@ class Report:
                     out.append(f"<figcaption>{html.escape(f.caption)}</figcaption>")
                 out.append("</figure>")
             out.append("</div>")
+        for view, caption in s.views:
+            out.append(f'<figure class="view">{view}<figcaption>{html.escape(caption)}</figcaption></figure>')
         if s.table:
             cols: list[str] = []
             for r in s.table:
@@ -215,7 +234,9 @@ class Report:
         return (
             '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'
             '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
-            f"<title>{title}</title>\n<style>{_CSS}</style>\n</head>\n<body>\n"
+            f"<title>{title}</title>\n<style>{_CSS}</style>\n"
+            + (f'<script src="{PLOTLY_JS}" charset="utf-8"></script>\n' if self._views else "")
+            + "</head>\n<body>\n"
             f'<header><h1>{title}</h1><p class="meta">written by taut {html.escape(__version__)}</p></header>\n'
             + (f"<nav><ol>{nav}</ol></nav>\n" if len(self.sections) > 1 else "")
             + body
@@ -230,6 +251,10 @@ class Report:
         for s in self.sections:
             for f in s.figures:
                 (out / f.filename).write_bytes(f.png)
+        if self._views:
+            from taut.viz.interactive import write_plotly_js
+
+            write_plotly_js(out)
         index = out / "index.html"
         index.write_text(self.html(), encoding="utf-8")
         return index
