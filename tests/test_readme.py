@@ -30,7 +30,17 @@ def test_readme_has_the_two_setup_commands():
     assert [line.split()[0:2] for line in setup.splitlines()] == [["make", "demo"], ["make", "test"]]
 
 
-@pytest.mark.parametrize("code", PYTHON, ids=[f"python-{i}" for i in range(len(PYTHON))])
+#: Blocks that compile the control loop's or the all-solutions search's kernels from cold (half
+#: a minute each on a fresh clone) run with the slow suite of ``make check``, so that
+#: ``make test`` stays under five minutes.
+HEAVY = ("simulate_control(", "solve_igp(")
+
+
+@pytest.mark.parametrize(
+    "code",
+    [pytest.param(c, marks=pytest.mark.slow) if any(h in c for h in HEAVY) else c for c in PYTHON],
+    ids=[f"python-{i}" for i in range(len(PYTHON))],
+)
 def test_python_blocks(code, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     exec(compile(code, "README.md", "exec"), {})
