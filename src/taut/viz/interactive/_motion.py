@@ -132,31 +132,22 @@ def _animate(
     def now(k: int) -> list[Any]:
         s = int(picks[k])
         colours = [CABLE_COLORS[i % len(CABLE_COLORS)] for i in range(n)]
-        out = [
-            go.Scatter(
+
+        def markers(values: np.ndarray, name: str, unit: str) -> Any:
+            return go.Scatter(
                 x=np.full(n, times[s]),
-                y=lengths[s],
+                y=values,
                 mode="markers",
-                name="lengths now",
+                name=name,
                 marker=dict(color=colours, size=9, line=dict(color="black", width=1)),
-                hovertext=[f"cable {i + 1}: {lengths[s, i]:.6g} m" for i in range(n)],
+                hovertext=[f"cable {i + 1}: {values[i]:.6g}{unit}" for i in range(n)],
                 hoverinfo="text",
                 showlegend=False,
             )
-        ]
+
+        out = [markers(lengths[s], "lengths now", " m")]
         if tensions is not None:
-            out.append(
-                go.Scatter(
-                    x=np.full(n, times[s]),
-                    y=tensions[s],
-                    mode="markers",
-                    name="tensions now",
-                    marker=dict(color=colours, size=9, line=dict(color="black", width=1)),
-                    hovertext=[f"cable {i + 1}: {tensions[s, i]:.6g}" for i in range(n)],
-                    hoverinfo="text",
-                    showlegend=False,
-                )
-            )
+            out.append(markers(tensions[s], "tensions now", ""))
         return out
 
     for tr in scene_traces(robot):
