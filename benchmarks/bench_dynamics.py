@@ -10,7 +10,7 @@ of ``spatial-8cable`` with swivelling pulleys: batched inverse dynamics and a 1 
   closed-form distribution in the loop, a step disturbance, one RK4 step of the plant per
   period), against MuJoCo stepping the MJCF export of the same robot (RK4, 1 ms, the tensions
   held as controls, no controller) in the same run.  Target: >= 50x real time.
-* The same for ``adjustable-8cable`` with the masses of ``adjustable_weighted.yaml`` (the
+* The same for ``adjustable-8cable`` with its assumed masses (the
   source gives none; a 20 kg platform, an 8 kg upper body on a passive prismatic joint):
   inverse dynamics through the compiled body tree (:mod:`taut.dynamics._tree`) against the
   NumPy equations of motion and jointed structure matrix, target >= 100,000 samples/s; 1 kHz
@@ -43,7 +43,6 @@ of ``spatial-8cable`` with swivelling pulleys: batched inverse dynamics and a 1 
 
 import argparse
 import time
-from pathlib import Path
 
 import numpy as np
 from _common import best_of  # first: it pins the thread pools to one core
@@ -55,7 +54,6 @@ from taut.motion import trajectory_from_waypoints
 from taut.statics import solve_tensions
 
 INERTIA = (0.12, 0.2, 0.15, 0.01, -0.02, 0.005)
-ADJUSTABLE = Path(__file__).parents[1] / "tests" / "model" / "fixtures" / "taut" / "adjustable_weighted.yaml"
 
 
 def sampled_motion(n, duration=10.0):
@@ -169,9 +167,8 @@ def jointed(args):
     """adjustable-8cable with assumed masses (its passive joint moved by the cables)."""
     from taut.dynamics import bias_forces, mass_matrix, velocity_jacobian
     from taut.kinematics import jointed_structure_matrix
-    from taut.model import load_robot
 
-    robot = load_robot(ADJUSTABLE)
+    robot = taut.example("adjustable-8cable")
     n = args.samples
     t = np.linspace(0, 10, n)[:, None]
     centre = np.array([5, 5, 1.5, 0, 0, 0, 1.5])

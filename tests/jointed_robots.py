@@ -9,15 +9,11 @@ from taut.model import load_robot, robot_from_dict, robot_to_dict
 SPIDERBOT = Path(__file__).parent / "model" / "fixtures" / "caspr" / "real" / "SpiderBot_UR3_bodies.xml"
 
 
-#: adjustable-8cable with assumed masses and inertias (Lieskovský 2020 gives none).
-ADJUSTABLE = Path(__file__).parent / "model" / "fixtures" / "taut" / "adjustable_weighted.yaml"
-
-
 def adjustable():
-    """adjustable-8cable with assumed masses (Lieskovský 2020 gives none): a 20 kg lower body
-    and an 8 kg upper body, their centres of mass off the joint axis, with products of inertia
-    (the fixture :data:`ADJUSTABLE`)."""
-    return load_robot(ADJUSTABLE)
+    """The built-in adjustable-8cable, with its assumed masses (Lieskovský 2020 gives none): a
+    20 kg lower body and an 8 kg upper body, their centres of mass off the joint axis, with
+    products of inertia."""
+    return taut.example("adjustable-8cable")
 
 
 def branching():

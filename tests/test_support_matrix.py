@@ -76,7 +76,7 @@ SUSPENDED_PULLEYS = Subject(
 )
 #: adjustable-8cable with assumed masses: its passive prismatic joint is moved by the cables
 #: acting across it, where the chain fixture's two joints have no cable able to hold them.
-ADJUSTABLE = Subject(fixture("taut/adjustable_weighted.yaml"), (5, 5, 1.5, 0, 0, 0, 1.5), "", "")
+ADJUSTABLE = Subject("adjustable-8cable", (5, 5, 1.5, 0, 0, 0, 1.5), "", "")
 OVERRIDES = {
     ("taut simulate", "jointed"): ADJUSTABLE,
     ("taut fk", "spatial rigid"): SUSPENDED,

@@ -147,7 +147,6 @@ def test_convert_a_jointed_caspr_model_to_mujoco(taut_cli: Callable[..., Any], t
     ("argv", "message"),
     [
         (["convert", "cogiro", "cogiro.mjcf.xml"], "no platform.mass"),
-        (["convert", "adjustable-8cable", "adjustable.mjcf.xml"], "no platform.mass"),
         (["ik", str(FIXTURES / "multilink_bodies.xml")], "multi-link"),
         (["ik", str(COGIRO), "--cable-set", "nope"], "no cable set 'nope'"),
         (["ik", "planar-4cable", "--cable-set", "x"], "--cable-set"),
@@ -171,11 +170,12 @@ def test_missing_cables_file(taut_cli: Callable[..., Any], tmp_path: Path) -> No
 
 
 def test_a_jointed_body_without_a_mass_is_refused_by_name(taut_cli: Callable[..., Any], tmp_path: Path) -> None:
-    """adjustable-8cable given a platform mass and inertia still has a massless body: one line
-    naming it, exit 2, no file written."""
+    """adjustable-8cable with its platform's mass and inertia but none for its upper body: one
+    line naming the body, exit 2, no file written."""
     taut_cli("convert", "adjustable-8cable", str(tmp_path / "r.yaml"), "--json")
     data = yaml.safe_load((tmp_path / "r.yaml").read_text())
-    data["platform"] |= {"mass": 20.0, "inertia": [9.0, 4.0, 12.0, 0.0, 0.0, 0.0]}
+    for field in ("mass", "com", "inertia"):
+        data["platform"]["bodies"][0].pop(field)
     (tmp_path / "r.yaml").write_text(yaml.safe_dump(data))
     out = tmp_path / "r.mjcf.xml"
     run = taut_cli("convert", str(tmp_path / "r.yaml"), str(out))

@@ -1,28 +1,34 @@
-"""``taut simulate`` on a jointed platform (adjustable-8cable, with the masses of the fixture
-``adjustable_weighted.yaml`` where the source gives none), through real subprocesses."""
+"""``taut simulate`` on a jointed platform (adjustable-8cable, with the masses its description
+states as assumed where the source gives none), through real subprocesses."""
 
 from pathlib import Path
 
 import numpy as np
+import yaml
 
+import taut
 from taut.dynamics import WrenchSteps, simulate_control
-from taut.model import load_robot
+from taut.model import load_robot, robot_to_dict
 from taut.motion import trajectory_from_waypoints
 
-WEIGHTED = Path(__file__).parents[1] / "model" / "fixtures" / "taut" / "adjustable_weighted.yaml"
 WAYPOINTS = "--waypoints=5,5,1.5,0,0,0,1.5;5.3,5.2,1.2,0.05,0,0.1,2"
 
 
 def test_a_jointed_robot_without_masses_is_one_line_naming_the_body(taut_cli, tmp_path):
-    run = taut_cli("simulate", "adjustable-8cable", WAYPOINTS, "--duration", "1", "--json")
+    data = robot_to_dict(taut.example("adjustable-8cable"))
+    for field in ("mass", "inertia", "wrench_point"):
+        data["platform"].pop(field)
+    bare = tmp_path / "bare.yaml"
+    bare.write_text(yaml.safe_dump(data, allow_unicode=True))
+    run = taut_cli("simulate", str(bare), WAYPOINTS, "--duration", "1", "--json")
     assert run.code == 2 and run.out == ""
     assert run.err.splitlines() == [
         "taut: error: adjustable 8-cable robot: the dynamics needs the platform's mass (platform.mass)"
     ]
-    text = WEIGHTED.read_text().replace("      mass: 8.0\n      com: [0.1, -0.05, 0.2]\n", "")
-    text = text.replace("      inertia: [3.0, 5.0, 7.0, 0.2, -0.1, 0.3]\n", "")
-    bare = tmp_path / "bare.yaml"
-    bare.write_text(text)
+    data = robot_to_dict(taut.example("adjustable-8cable"))
+    for field in ("mass", "com", "inertia"):
+        data["platform"]["bodies"][0].pop(field)
+    bare.write_text(yaml.safe_dump(data, allow_unicode=True))
     run = taut_cli("simulate", str(bare), WAYPOINTS, "--duration", "1", "--json")
     assert run.code == 2 and run.out == "" and len(run.err.splitlines()) == 1
     assert "platform.bodies[1] (upper) has no mass" in run.err
@@ -32,14 +38,14 @@ def test_simulate_reports_every_coordinate_joints_included(taut_cli):
     """The command's figures are the library's, per coordinate (s23 the joint's), with a push
     on the platform (6 components: the joint unloaded) that the controller rejects."""
     run = taut_cli(
-        "simulate", str(WEIGHTED), WAYPOINTS, "--duration", "1", "--disturbance", "0.5:20,0,0,0,0,0", "--json"
+        "simulate", "adjustable-8cable", WAYPOINTS, "--duration", "1", "--disturbance", "0.5:20,0,0,0,0,0", "--json"
     )
     d = run.json()
     assert d["pose_names"] == ["x", "y", "z", "a", "b", "c", "s23"]
     assert len(d["tracking_error_max"]) == 7 and len(d["tracking_error_rms"]) == 7
     assert d["feasible"] is True and d["slack_events"] == 0 and d["min_tension_margin"] > 0
     assert d["joint_limit_violations"] == 0 and d["first_joint_limit_time"] is None
-    robot = load_robot(WEIGHTED)
+    robot = taut.example("adjustable-8cable")
     motion = trajectory_from_waypoints(robot, [[5, 5, 1.5, 0, 0, 0, 1.5], [5.3, 5.2, 1.2, 0.05, 0, 0.1, 2]], duration=1)
 
     push = WrenchSteps.step(0.5, [20, 0, 0, 0, 0, 0, 0])
@@ -54,7 +60,7 @@ def test_simulate_reports_every_coordinate_joints_included(taut_cli):
 def test_a_joint_force_disturbance_pushes_the_joint_past_its_limit(taut_cli):
     run = taut_cli(
         "simulate",
-        str(WEIGHTED),
+        "adjustable-8cable",
         "--waypoints=5,5,1.5,0,0,0,0.45;5,5,1.5,0,0,0,0.46",
         "--duration",
         "1",
@@ -64,7 +70,7 @@ def test_a_joint_force_disturbance_pushes_the_joint_past_its_limit(taut_cli):
     )
     d = run.json()
     assert d["joint_limit_violations"] > 0 and 0.5 < d["first_joint_limit_time"] < 1
-    run = taut_cli("simulate", str(WEIGHTED), WAYPOINTS, "--duration", "1", "--disturbance", "0:1,2,3")
+    run = taut_cli("simulate", "adjustable-8cable", WAYPOINTS, "--duration", "1", "--disturbance", "0:1,2,3")
     assert run.code == 2 and "takes a wrench of 6 components (or 7 with its joint forces)" in run.err
 
 

@@ -1,5 +1,5 @@
 """MuJoCo as an independent engine for a jointed platform: adjustable-8cable with assumed
-masses (``adjustable_weighted.yaml``), exported to MJCF (``taut.model._mjcf``: the upper body
+masses (the built-in example's), exported to MJCF (``taut.model._mjcf``: the upper body
 on a slide joint, cable tensions as tendon actuator controls, the joint's motor at zero: a
 passive joint) and driven by the same tension profile, follows the motion of
 ``taut.dynamics.forward_dynamics`` over 1 s.  Both integrate with RK4 at the same step, the

@@ -13,6 +13,18 @@ from taut.kinematics._jointed import actuator_jacobian, actuator_positions, join
 from taut.model import robot_from_dict, robot_to_dict
 
 ROBOT = taut.example("adjustable-8cable")
+#: Lieskovský 2020's model, without the example's assumed masses.
+MASSLESS = ROBOT.model_copy(
+    update={
+        "platform": ROBOT.platform.model_copy(
+            update={
+                "bodies": tuple(
+                    b.model_copy(update={"mass": None, "com": None, "inertia": None}) for b in ROBOT.platform.bodies
+                )
+            }
+        )
+    }
+)
 
 
 def _skew(w):
@@ -107,10 +119,10 @@ def test_structure_matrix_and_joint_force():
     assert np.allclose(A[:, 6, 8], 1.0) and np.allclose(A[:, :6, 8], 0.0)
     for pose, Ak in zip(poses, A):
         # tensions balancing zero external wrench (Eq. 3.3.5): the joint force of Eq. 3.3.11
-        # is the same from either body's cables
+        # is the same from either body's cables (Lieskovský's model has no masses)
         N = null_space(Ak[:6, :8])
         tau = N @ np.ones(N.shape[1])
-        zeta = joint_forces(ROBOT, pose, tau)
+        zeta = joint_forces(MASSLESS, pose, tau)
         ik = inverse_kinematics(ROBOT, pose)
         u23 = rotation_matrix(pose[3:6], ROBOT.orientation) @ [0, 0, 1]
         upper = ik.directions[4:] @ u23 @ tau[4:]
@@ -118,6 +130,9 @@ def test_structure_matrix_and_joint_force():
         assert np.isclose(zeta[0], -upper) and np.isclose(zeta[0], lower)
         # generalised equilibrium holds with the joint force included
         assert np.allclose(Ak @ np.concatenate([tau, zeta]), 0.0, atol=1e-9)
+        # the assumed 8 kg upper body adds its weight along the joint axis to the joint's load
+        weighted = joint_forces(ROBOT, pose, tau)
+        assert np.isclose(weighted[0] - zeta[0], 8.0 * 9.81 * u23[2])
 
 
 def test_joint_outside_limits_is_rejected():

@@ -145,9 +145,7 @@ def test_tendon_lengths_are_taut_lengths(name):
 
 
 #: Why each built-in example the MuJoCo model cannot hold is refused (words of the message);
-#: adjustable-8cable's source gives no masses: with them it is exported (test_mjcf_jointed.py).
 REFUSED_EXAMPLES = {
-    "adjustable-8cable": "no platform.mass",
     "cogiro": "no platform.mass",
     "marionet-vr": "no platform.mass",
     "robocrane": "no platform.mass",

@@ -19,10 +19,12 @@ def with_inertia(name, **platform):
 
 
 def adjustable(cables=None, **upper):
-    """adjustable-8cable with a platform mass and inertia, its body ``upper`` updated by
-    ``upper``, and its cables' dicts updated by ``cables`` ({index: fields})."""
-    data = robot_to_dict(with_inertia("adjustable-8cable", mass=20.0, inertia=(9, 4, 12, 0, 0, 0)))
+    """adjustable-8cable with its body ``upper`` massless and then updated by ``upper``, and its
+    cables' dicts updated by ``cables`` ({index: fields})."""
+    data = robot_to_dict(taut.example("adjustable-8cable"))
     data.pop("trajectories")
+    for field in ("mass", "com", "inertia"):
+        data["platform"]["bodies"][0].pop(field)
     data["platform"]["bodies"][0] |= upper
     for i, fields in (cables or {}).items():
         data["cables"][i] |= fields
@@ -35,7 +37,7 @@ MASSIVE = {"mass": 8.0, "inertia": [3.0, 5.0, 7.0, 0.0, 0.0, 0.0]}
 @pytest.mark.parametrize(
     "robot, words",
     [
-        (taut.example("adjustable-8cable"), "no platform.mass"),
+        (with_inertia("adjustable-8cable", mass=None, inertia=None), "no platform.mass"),
         (adjustable(), "platform.bodies[1] (upper) has no mass"),
         (adjustable(mass=8.0), "platform.bodies[1] (upper) has no inertia"),
         (adjustable(mass=8.0, inertia=[1, 1, 3, 0, 0, 0]), "platform.bodies[1] (upper) inertia [1.0, 1.0, 3.0"),

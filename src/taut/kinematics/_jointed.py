@@ -237,7 +237,7 @@ def joint_forces(robot: Robot, poses: npt.ArrayLike, tensions: npt.ArrayLike) ->
     >>> from taut.kinematics import default_guess, joint_forces
     >>> robot = example("adjustable-8cable")
     >>> joint_forces(robot, default_guess(robot), np.full(8, 100.0)).round(3)
-    array([247.014])
+    array([325.494])
     """
     arr, single = as_poses(robot, poses)
     A = jointed_structure_matrix(robot, arr)
