@@ -115,6 +115,14 @@ def test_the_selector_switches_equilibria(open_page, pages):
         taut = ",".join(str(i) for i in solutions[k]["taut"])
         title = page.page.evaluate("() => document.querySelector('.js-plotly-plot').layout.title.text")
         assert title.startswith(f"#{k + 1}: cables {taut} taut")
+        # the hover of the shown solution's anchors: its taut set, stability and tensions
+        hover = page.page.evaluate(
+            "() => document.querySelector('.js-plotly-plot')._fullData"
+            ".filter(t => t.name === 'anchors' && t.visible === true).map(t => t.hovertext[0])"
+        )
+        stability = "stable" if solutions[k]["stable"] else "unstable"
+        tensions = ", ".join(f"{t:.4g}" for t in solutions[k]["tensions"])
+        assert hover == [f"#{k + 1}: cables {taut} taut, {stability}<br>τ = {tensions}<br>anchor of cable 1"]
     assert not np.array_equal(page.scene_pixels(0), before)
     assert page.errors == []
 

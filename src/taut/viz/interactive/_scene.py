@@ -74,6 +74,12 @@ def _line(go: Any, pts: np.ndarray, name: str, **style: Any) -> BaseTraceType:
     return go.Scatter3d(x=pts[:, 0], y=pts[:, 1], z=pts[:, 2], mode="lines", name=name, **style)
 
 
+def mesh(go: Any, vertices: np.ndarray, triangles: np.ndarray, name: str, **style: Any) -> BaseTraceType:
+    """A triangle mesh: ``vertices`` ``(V, 3)`` and the vertex indices of its ``triangles`` ``(F, 3)``."""
+    v, t = np.asarray(vertices), np.asarray(triangles)
+    return go.Mesh3d(x=v[:, 0], y=v[:, 1], z=v[:, 2], i=t[:, 0], j=t[:, 1], k=t[:, 2], name=name, **style)
+
+
 def scene_traces(robot: Robot) -> list[BaseTraceType]:
     """The traces of everything of ``robot`` that does not move: the frame (the hull of the
     exit points, dotted), the installation space and disallowed regions, the obstacles
@@ -391,16 +397,13 @@ def pose_traces(
     marks = np.vstack([b, p[None]])
     common = dict(visible=visible, scene=scene)
     return [
-        go.Mesh3d(
-            x=v[:, 0],
-            y=v[:, 1],
-            z=v[:, 2],
-            i=t[:, 0],
-            j=t[:, 1],
-            k=t[:, 2],
+        mesh(
+            go,
+            v,
+            t,
+            "platform",
             color=PLATFORM,
             opacity=0.35,
-            name="platform",
             hoverinfo="skip",
             flatshading=True,
             **common,
@@ -408,16 +411,13 @@ def pose_traces(
         _line(
             go, edges, "platform edges", line=dict(color="black", width=3), hoverinfo="skip", showlegend=False, **common
         ),
-        go.Mesh3d(
-            x=cv[:, 0],
-            y=cv[:, 1],
-            z=cv[:, 2],
-            i=ct[:, 0],
-            j=ct[:, 1],
-            k=ct[:, 2],
+        mesh(
+            go,
+            cv,
+            ct,
+            "capsules",
             color=PLATFORM,
             opacity=0.3,
-            name="capsules",
             hoverinfo="skip",
             **common,
         ),

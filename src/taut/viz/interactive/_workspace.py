@@ -20,7 +20,7 @@ import numpy.typing as npt
 from taut.errors import ArgumentError
 from taut.viz.interactive._plotly import graph_objects
 from taut.viz.interactive._robot import view_robot
-from taut.viz.interactive._scene import lift
+from taut.viz.interactive._scene import lift, mesh
 
 if TYPE_CHECKING:
     from plotly.graph_objects import Figure
@@ -115,16 +115,13 @@ def view_workspace(
         for key, name in names.items():
             v, t = _boxes(np.asarray(getattr(result, key), float))
             layers.append(
-                go.Mesh3d(
-                    x=v[:, 0],
-                    y=v[:, 1],
-                    z=v[:, 2],
-                    i=t[:, 0],
-                    j=t[:, 1],
-                    k=t[:, 2],
+                mesh(
+                    go,
+                    v,
+                    t,
+                    name,
                     color=_COLOURS[key],
                     opacity=0.35 if d == 3 else 0.6,
-                    name=name,
                     legendgroup="workspace",
                     showlegend=True,
                     hoverinfo="name",
