@@ -7,6 +7,9 @@ import taut
 from taut.model import load_robot, robot_from_dict, robot_to_dict
 
 SPIDERBOT = Path(__file__).parent / "model" / "fixtures" / "caspr" / "real" / "SpiderBot_UR3_bodies.xml"
+#: CASPR's universal, spherical and planar-translation joints: chains of one-DOF joints through
+#: massless joint frames.
+MULTIDOF = Path(__file__).parent / "model" / "fixtures" / "caspr" / "multidof_bodies.xml"
 
 
 def adjustable():
@@ -75,6 +78,7 @@ def planar():
 ROBOTS = {
     "adjustable-8cable": adjustable,
     "SpiderBot_UR3": lambda: load_robot(SPIDERBOT),
+    "CASPR multi-DOF joints": lambda: load_robot(MULTIDOF),
     "branching tree": branching,
     "planar slider and arm": planar,
 }

@@ -82,7 +82,8 @@ ROBOTS = {
 
 def random_poses(robot, n, rng, spread=0.5, tilt=0.6):
     """Poses around the centre of the exit points: positions within ``spread`` of the
-    half-extent of the frame, angles within ``tilt`` rad of zero (any convention)."""
+    half-extent of the frame, angles within ``tilt`` rad of zero (any convention), joint
+    coordinates strictly inside their limits."""
     lo, hi = robot.exits.min(0), robot.exits.max(0)
     centre, half = (lo + hi) / 2, (hi - lo) / 2
     half = np.where(half > 0, half, 1.0)
@@ -92,7 +93,9 @@ def random_poses(robot, n, rng, spread=0.5, tilt=0.6):
     ang = rng.uniform(-tilt, tilt, (n, k))
     if robot.orientation == "tilt-torsion" and k == 3:
         ang[:, 1] = np.abs(ang[:, 1])
-    return np.concatenate([pos, ang], axis=1)
+    limits = robot.joint_limits
+    q = limits[:, 0] + (limits[:, 1] - limits[:, 0]) * rng.uniform(1e-6, 1 - 1e-6, (n, robot.n_joints))
+    return np.concatenate([pos, ang, q], axis=1)
 
 
 def model_of(robot):
@@ -165,8 +168,8 @@ REFUSED_EXAMPLES = {
 def test_every_builtin_example_is_exported_or_refused_by_name(name, tmp_path, taut_cli):
     """Every built-in example either becomes a model whose tendon lengths are taut's IK at
     1,000 random poses (through ``taut convert``, as a user runs it), or is refused with
-    its reason; the examples with a mass (spatial-8cable, planar-4cable and the point-mass
-    camera-4cable and printer-5cable) are exported."""
+    its reason; the examples with a mass (spatial-8cable, planar-4cable, the point-mass
+    camera-4cable and printer-5cable, and adjustable-8cable with its jointed body) are exported."""
     robot = taut.example(name)
     out = tmp_path / "robot.mjcf.xml"
     run = taut_cli("convert", name, str(out))
@@ -200,7 +203,14 @@ def test_the_examples_with_a_mass_are_the_exported_ones():
             continue
         exported.add(name)
     assert exported == set(example_names()) - set(REFUSED_EXAMPLES)
-    assert exported == {"spatial-8cable", "planar-4cable", "planar-2cable", "camera-4cable", "printer-5cable"}
+    assert exported == {
+        "adjustable-8cable",
+        "spatial-8cable",
+        "planar-4cable",
+        "planar-2cable",
+        "camera-4cable",
+        "printer-5cable",
+    }
 
 
 @pytest.mark.parametrize("name", list(ROBOTS))
@@ -254,7 +264,9 @@ def hanging_poses(robot, n, rng, tilt=0.2):
     ang = rng.uniform(-tilt, tilt, (n, k))
     if robot.orientation == "tilt-torsion" and k == 3:
         ang[:, 1] = np.abs(ang[:, 1])
-    return np.concatenate([pos, ang], axis=1)
+    limits = robot.joint_limits
+    q = limits[:, 0] + (limits[:, 1] - limits[:, 0]) * rng.uniform(1e-6, 1 - 1e-6, (n, robot.n_joints))
+    return np.concatenate([pos, ang, q], axis=1)
 
 
 def equilibrium_poses(robot, n, rng):

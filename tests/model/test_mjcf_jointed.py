@@ -13,7 +13,7 @@ import taut
 from taut.geometry import rotation_matrix
 from taut.kinematics import body_frames, inverse_kinematics, joint_forces
 from taut.model import robot_from_dict, robot_to_dict
-from taut.model._mjcf import joint_order, mjcf_text, pose_to_qpos, swivel_wraps_agree
+from taut.model._mjcf import joint_frames, joint_order, mjcf_text, pose_to_qpos, swivel_wraps_agree
 from taut.statics import distribute_tensions, external_wrench
 
 mujoco = pytest.importorskip("mujoco")
@@ -56,6 +56,12 @@ def generalised(robot, wrench, pose):
     return np.concatenate([wrench[:3], R.T @ wrench[3:]])
 
 
+def bodies(robot):
+    """The 0-based indices of ``platform.bodies`` that are MuJoCo bodies: all but the joint
+    frames, whose joints their child body carries."""
+    return np.array([k for k in range(robot.n_joints) if k not in joint_frames(robot)], dtype=int)
+
+
 def mass_matrix(m, data):
     M = np.zeros((m.nv, m.nv))
     column = np.zeros(m.nv)
@@ -76,7 +82,8 @@ def test_body_frames_and_tendon_lengths_are_taut_s(name):
     pos, rot = body_frames(robot, poses)
     d = robot.dimension
     m, data = model_of(robot)
-    ids = [m.body(f"body{k}").id for k in range(1, robot.n_joints + 1)]
+    shown = bodies(robot)
+    ids = [m.body(f"body{k + 1}").id for k in shown]
     got = np.empty_like(expected)
     frames = 0.0
     for k, qpos in enumerate(pose_to_qpos(robot, poses)):
@@ -85,7 +92,7 @@ def test_body_frames_and_tendon_lengths_are_taut_s(name):
         got[k] = data.ten_length
         xpos = data.xpos[ids][:, :d]
         xmat = data.xmat[ids].reshape(-1, 3, 3)[:, :d, :d]
-        frames = max(frames, np.abs(xpos - pos[k, 1:]).max(), np.abs(xmat - rot[k, 1:]).max())
+        frames = max(frames, np.abs(xpos - pos[k, shown + 1]).max(), np.abs(xmat - rot[k, shown + 1]).max())
     assert frames < 1e-12
     assert np.abs(got - expected).max() < 1e-9
 
@@ -307,7 +314,8 @@ def test_any_body_tree_is_taut_s_kinematics_and_statics(tree):
     pos, rot = body_frames(robot, poses)
     m, data = model_of(robot)
     platform, joints = dofs(robot, m)
-    ids = [m.body(f"body{k}").id for k in range(1, robot.n_joints + 1)]
+    shown = bodies(robot)
+    ids = [m.body(f"body{k + 1}").id for k in shown]
     n = robot.n_cables
     for k, qpos in enumerate(pose_to_qpos(robot, poses)):
         data.qpos[:] = qpos
@@ -315,8 +323,8 @@ def test_any_body_tree_is_taut_s_kinematics_and_statics(tree):
         data.ctrl[:] = 0
         data.ctrl[:n] = tau[k]
         mujoco.mj_forward(m, data)
-        assert np.abs(data.xpos[ids] - pos[k, 1:]).max() < 1e-12
-        assert np.abs(data.xmat[ids].reshape(-1, 3, 3) - rot[k, 1:]).max() < 1e-12
+        assert np.abs(data.xpos[ids] - pos[k, shown + 1]).max() < 1e-12
+        assert np.abs(data.xmat[ids].reshape(-1, 3, 3) - rot[k, shown + 1]).max() < 1e-12
         assert np.abs(data.ten_length - ik.lengths[k]).max() < 1e-9
         tendons = data.qfrc_actuator.copy()
         data.qacc[:] = 0

@@ -41,7 +41,12 @@ frame translated by ``origin + q·axis``, or by ``origin`` and turned by ``q`` a
 ``axis``), so the joint's ``qpos`` is taut's joint coordinate ``q``, in MuJoCo's depth-first
 order of the body tree (:func:`joint_order`).  Its ``inertial`` holds the body's ``mass`` at
 its ``com`` and its ``inertia`` about the ``com`` (``fullinertia``; a planar body's ``Izz``
-as the platform's), and the anchor sites of its cables are in it.  The motor ``drive<k>``
+as the platform's), and the anchor sites of its cables are in it.  A joint frame — a body
+without mass, com or inertia, carrying no cable, whose one child is jointed at its origin, as
+CASPR's universal and spherical joints are read (:func:`joint_frames`) — is no MuJoCo body:
+its joint is the first joint of its child's body, which MuJoCo applies in order, each about
+its axis in the frame the joints before it have turned (MuJoCo moves no massless body, and
+this is the same chain).  The motor ``drive<k>``
 (``gear = 1``; its ``ctrlrange`` the bounds of the joint's actuator, ``joint.actuator``, where
 both are finite, else no control range; a passive joint's drive stays at zero in taut's use;
 the drives follow the tension actuators, so that ``ctrl = (τ, ζ)``) acts on ``joint<k>``: its control is taut's
@@ -205,16 +210,19 @@ def _check_bodies(robot: Robot) -> None:
     """Every jointed body needs a mass, an inertia (MuJoCo moves no massless body, and taut's
     statics know no other mass) and a joint range, and a cable anchored on one has no
     swivelling pulley.  Bodies are numbered from 1 in messages, as the robot file's checks do."""
+    frames = joint_frames(robot)
     for k, body in enumerate(robot.platform.bodies, 1):
         what = f"platform.bodies[{k}] ({body.name})"
+        lo, hi = body.joint.limits
+        if lo == hi:
+            raise _refuse(robot, f"{what} joint limits [{lo:g}, {hi:g}] are equal; MuJoCo needs a joint range of width")
+        if k - 1 in frames:
+            continue
         if body.mass is None:
             raise _refuse(robot, f"{what} has no mass (a moving MuJoCo body needs one; add its mass, com and inertia)")
         if body.inertia is None:
             raise _refuse(robot, f"{what} has no inertia (a moving MuJoCo body needs its inertia tensor)")
         _check_inertia(robot, f"{what} inertia", body.inertia)
-        lo, hi = body.joint.limits
-        if lo == hi:
-            raise _refuse(robot, f"{what} joint limits [{lo:g}, {hi:g}] are equal; MuJoCo needs a joint range of width")
     for i, cable in enumerate(robot.cables, 1):
         if cable.swivel is not None and cable.body is not None:
             raise _refuse(
@@ -306,16 +314,49 @@ def _body_inertial(robot: Robot, k: int) -> dict[str, str]:
     return attrs | {"fullinertia": _vector(values)}
 
 
+def joint_frames(robot: Robot) -> frozenset[int]:
+    """The 0-based indices of ``platform.bodies`` that are joint frames: bodies without mass,
+    com or inertia, carrying no cable, whose one child body is jointed at their origin (as
+    CASPR's universal and spherical joints are read: chains of one-DOF joints).  Each is no
+    MuJoCo body of its own: its joint is the first of its child's (see the module's
+    docstring)."""
+    bodies = robot.platform.bodies
+    children: dict[str, list[int]] = {}
+    for k, body in enumerate(bodies):
+        children.setdefault(body.parent, []).append(k)
+    loaded = {cable.body for cable in robot.cables}
+    frames = set()
+    for k, body in enumerate(bodies):
+        kids = children.get(body.name, [])
+        if (
+            body.mass is None
+            and body.inertia is None
+            and body.com is None
+            and body.name not in loaded
+            and len(kids) == 1
+        ):
+            origin = bodies[kids[0]].joint.origin
+            if origin is None or not np.any(origin):
+                frames.add(k)
+    return frozenset(frames)
+
+
 def _jointed_bodies(robot: Robot, platform: ET.Element) -> dict[str, ET.Element]:
     """The MuJoCo body of each of ``platform.bodies`` inside its parent's, by taut name (with
-    ``platform``): ``body<k>`` at the joint's origin, on ``joint<k>`` (see the module's
-    docstring)."""
+    ``platform``): ``body<k>`` at the joint's origin, on ``joint<k>``, preceded by the joints
+    of the joint frames that lead to it (:func:`joint_frames`; see the module's docstring)."""
     d = robot.dimension
+    frames = joint_frames(robot)
     elements = {"platform": platform}
+    #: a joint frame's MuJoCo parent, position and joints, handed on to its child
+    pending: dict[str, tuple[ET.Element, np.ndarray, list[dict[str, str]]]] = {}
     for k, body in enumerate(robot.platform.bodies, 1):
         joint = body.joint
         origin = _in_space(joint.origin if joint.origin is not None else np.zeros(d), d)
-        element = ET.SubElement(elements[body.parent], "body", name=f"body{k}", pos=_vector(origin))
+        if body.parent in pending:
+            parent, origin, joints = pending.pop(body.parent)
+        else:
+            parent, joints = elements[body.parent], []
         if joint.kind == "prismatic":
             axis = _in_space(joint.axis, d)
             attrs = {"type": "slide", "axis": _vector(axis / np.linalg.norm(axis))}
@@ -325,9 +366,13 @@ def _jointed_bodies(robot: Robot, platform: ET.Element) -> dict[str, ET.Element]
         else:
             axis = np.asarray(joint.axis, dtype=float)
             attrs = {"type": "hinge", "axis": _vector(axis / np.linalg.norm(axis))}
-        ET.SubElement(
-            element, "joint", {"name": f"joint{k}", **attrs, "limited": "true", "range": _vector(joint.limits)}
-        )
+        joints = [*joints, {"name": f"joint{k}", **attrs, "limited": "true", "range": _vector(joint.limits)}]
+        if k - 1 in frames:
+            pending[body.name] = (parent, origin, joints)
+            continue
+        element = ET.SubElement(parent, "body", name=f"body{k}", pos=_vector(origin))
+        for attributes in joints:
+            ET.SubElement(element, "joint", attributes)
         ET.SubElement(element, "inertial", _body_inertial(robot, k - 1))
         elements[body.name] = element
     return elements
