@@ -12,12 +12,11 @@ from hypothesis import strategies as st
 from jointed_robots import SPIDERBOT, adjustable
 
 from taut.dynamics import inverse_dynamics, simulate_control
-from taut.dynamics._actuators import solve_inputs
 from taut.errors import InfeasiblePoseError
 from taut.kinematics import joint_forces, jointed_structure_matrix, structure_matrix
 from taut.model import JointActuator, Robot, load_robot
 from taut.motion import trajectory_from_waypoints
-from taut.statics import external_wrench
+from taut.statics import external_wrench, solve_inputs
 
 SET = "set_IPAnema_inspired"
 

@@ -15,8 +15,8 @@ import taut
 from taut.errors import TautError
 from taut.kinematics import structure_matrix
 from taut.model import robot_from_dict
-from taut.statics import external_wrench
-from taut.statics._tension import METHODS, TensionResult, distribute_tensions, solve_tensions
+from taut.statics import distribute_tensions, external_wrench
+from taut.statics._tension import METHODS, TensionResult, solve_tensions
 
 EXACT = ["lp", "qp", "inf", "barycentric"]
 CLOSED = ["closed-form", "improved-closed-form"]
@@ -125,6 +125,7 @@ def test_result_is_frozen_read_only_and_json():
         "feasible": many.feasible.tolist(),
         "status": many.status.tolist(),
         "method": "lp",
+        "actuator_forces": [[] for _ in many.tensions],
     }
     one = distribute_tensions(robot, POSES["planar-4cable"][1], method="qp").as_dict()
     assert one["feasible"] is True and one["status"] == "optimal" and len(one["tensions"]) == 4

@@ -13,7 +13,7 @@ from scipy.optimize import linprog
 
 import taut
 from taut.errors import GridSizeError, PoseError, TautError
-from taut.kinematics import batch_structure_matrices, structure_matrix
+from taut.kinematics import batch_structure_matrices, jointed_structure_matrix, structure_matrix
 from taut.model import robot_from_dict
 from taut.statics import BoxWrenchSet, external_wrench
 from taut.workspace import (
@@ -223,8 +223,9 @@ def test_jointed_robot_uses_the_numpy_path():
     res = evaluate_workspace(robot, "wrench-closure", resolution=4)
     assert res.grid_shape == (4, 4, 4) and res.poses.shape == (64, robot.pose_size)
     assert np.all(res.poses[:, -1] == robot.joint_limits.mean(axis=1))  # joint at mid-range
-    W = structure_matrix(robot, res.poses)
-    assert res.inside.tolist() == [lp_closure(W[k]) for k in range(64)]
+    # the passive joint's row too: the cables alone must span it (the jointed structure matrix)
+    A = jointed_structure_matrix(robot, res.poses)[:, :, : robot.n_cables]
+    assert res.inside.tolist() == [lp_closure(A[k]) for k in range(64)]
 
 
 #: The orientation conventions written out from elementary rotations (docs/architecture.md §2.3).

@@ -49,6 +49,14 @@ def run(ns: argparse.Namespace) -> int:
             return
         rows = [[str(i + 1), fmt(t)] for i, t in enumerate(res.tensions)]
         print_table(con, table(f"tensions ({res.method})", ["cable", "tension [N]"], rows))
+        if robot.n_joints:
+            names = robot.pose_names[robot.wrench_dim :]
+            acting = dict(zip(robot.actuated_joints.tolist(), res.actuator_forces.tolist()))
+            rows = [
+                [names[j], fmt(acting[j]) if j in acting else "0 (passive: held by the cables)"]
+                for j in range(robot.n_joints)
+            ]
+            print_table(con, table("joint forces", ["joint", "force [N] or torque [N m]"], rows))
 
     emit(data, ns.json, human)
     return 0

@@ -29,7 +29,7 @@ in its pose and joint coordinates alike: ``M̂``, ``ĥ`` are the tree's
 (:mod:`taut.dynamics._tree`), the wrench is the generalized force in the twist coordinates
 and the distribution solves it with the cable columns of the jointed structure matrix and,
 for the joints with an actuator (``joint.actuator``), one unit column each with the
-actuator's bounds (:mod:`taut.dynamics._actuators`); the other joints are passive, moved by
+actuator's bounds (:func:`taut.statics.solve_inputs`); the other joints are passive, moved by
 the cables acting across them.  The plant has no joint stops: an
 update at which a joint coordinate is outside its limits is counted and its time reported.
 

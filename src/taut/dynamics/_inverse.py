@@ -332,8 +332,7 @@ def inverse_dynamics(
     >>> res.feasible, res.first_failure
     (array([ True,  True, False]), 2)
     """
-    from taut.dynamics._actuators import input_bounds, solve_inputs
-    from taut.statics import METHODS
+    from taut.statics import METHODS, input_bounds, solve_inputs
 
     if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")

@@ -7,7 +7,7 @@ itself, so :class:`LoopModel` checks the robot once and then runs the kernels on
 preallocated buffers: :meth:`LoopModel.tensions` (the required wrench and a tension
 distribution: the compiled closed form of Pott et al. 2009, or any method of
 :mod:`taut.statics._tension` where it gives up; the joint actuators of a jointed platform as
-extra columns with their bounds, :mod:`taut.dynamics._actuators`) and :meth:`LoopModel.step` (one RK4 step with
+extra columns with their bounds, :mod:`taut.statics`, :func:`~taut.statics.solve_inputs`) and :meth:`LoopModel.step` (one RK4 step with
 the tensions held).  A singular configuration still raises.
 
 References
@@ -106,9 +106,8 @@ class LoopModel:
         >>> ok, (structure_matrix(robot, np.zeros(3)) @ tau).round(6) + 0.0
         (True, array([0.  , 9.81, 0.  ]))
         """
-        from taut.dynamics._actuators import solve_inputs
         from taut.dynamics._kernels import OK, ZERO_LENGTH, inverse_samples
-        from taut.statics import EQUILIBRIUM_RTOL
+        from taut.statics import EQUILIBRIUM_RTOL, solve_inputs
 
         b = self.buffers
         try:
@@ -256,8 +255,7 @@ def loop_model(robot: Robot, *, method: str = "qp") -> LoopModel:
     >>> loop_model(example("planar-4cable"), method="lp").method
     'lp'
     """
-    from taut.dynamics._actuators import input_bounds
-    from taut.statics import METHODS
+    from taut.statics import METHODS, input_bounds
 
     if not isinstance(method, str) or method not in METHODS:
         raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")

@@ -10,7 +10,8 @@ from taut._lazy import lazy_exports
 if TYPE_CHECKING:
     from taut.statics._feasibility import FEASIBILITY_METHODS, static_equilibrium, wrench_closure, wrench_feasible
     from taut.statics._highs import QuietHighs
-    from taut.statics._tension import EQUILIBRIUM_RTOL, METHODS, TensionResult, distribute_tensions, solve_tensions
+    from taut.statics._inputs import distribute_tensions, equilibrium_equations, input_bounds, solve_inputs
+    from taut.statics._tension import EQUILIBRIUM_RTOL, METHODS, TensionResult, solve_tensions
     from taut.statics._wrench import (
         BoxWrenchSet,
         EllipsoidWrenchSet,
@@ -27,10 +28,13 @@ _LAZY = {
     "wrench_closure": "taut.statics._feasibility",
     "wrench_feasible": "taut.statics._feasibility",
     "QuietHighs": "taut.statics._highs",
+    "equilibrium_equations": "taut.statics._inputs",
+    "input_bounds": "taut.statics._inputs",
+    "solve_inputs": "taut.statics._inputs",
     "EQUILIBRIUM_RTOL": "taut.statics._tension",
     "METHODS": "taut.statics._tension",
     "TensionResult": "taut.statics._tension",
-    "distribute_tensions": "taut.statics._tension",
+    "distribute_tensions": "taut.statics._inputs",
     "solve_tensions": "taut.statics._tension",
     "BoxWrenchSet": "taut.statics._wrench",
     "EllipsoidWrenchSet": "taut.statics._wrench",
@@ -52,7 +56,10 @@ __all__ = [
     "TensionResult",
     "WrenchSet",
     "distribute_tensions",
+    "equilibrium_equations",
     "external_wrench",
+    "input_bounds",
+    "solve_inputs",
     "solve_tensions",
     "static_equilibrium",
     "wrench_closure",

@@ -73,10 +73,8 @@ import numpy.typing as npt
 
 from taut._results import Result
 from taut.errors import TautError
-from taut.kinematics import inverse_kinematics
-from taut.model import Robot
 from taut.statics._highs import QuietHighs
-from taut.statics._wrench import bounds_pair, external_wrench
+from taut.statics._wrench import bounds_pair
 
 #: Relative equilibrium tolerance of a reported solution.
 EQUILIBRIUM_RTOL = 1e-9
@@ -108,10 +106,15 @@ class TensionResult(Result):
         wrench, proved) or ``"not-found"`` (a closed-form method gave up).
     method : str
         The method of :data:`METHODS` that computed them.
+    actuator_forces : ndarray, shape (N, n_actuators) or (n_actuators,)
+        The forces [N] or torques [N m] of a jointed platform's joint actuators, in the order
+        of :attr:`taut.model.Robot.actuated_joints` (empty without them; zeros where no
+        solution was found, ``None`` in :meth:`as_dict`).
 
     Examples
     --------
     >>> from taut.model import example
+    >>> from taut.statics import distribute_tensions
     >>> res = distribute_tensions(example("planar-4cable"), [0.0, 0.0, 0.0])
     >>> res.status, bool(res.feasible)
     ('optimal', True)
@@ -123,6 +126,7 @@ class TensionResult(Result):
     feasible: np.ndarray | bool  #: ``(N,)`` bool: equilibrium (to 1e-9 relative) and bounds hold
     status: np.ndarray | str  #: ``(N,)`` str: ``"optimal"``, ``"infeasible"`` (proved) or ``"not-found"``
     method: str
+    actuator_forces: np.ndarray  #: ``(N, n_actuators)``; zeros where no solution was found
 
     def as_dict(self) -> dict[str, Any]:
         """The fields in plain JSON types, with ``tensions`` ``None`` (for one pose) or a row
@@ -131,14 +135,15 @@ class TensionResult(Result):
         Returns
         -------
         dict
-            ``tensions``, ``feasible``, ``status`` and ``method``;
+            ``tensions``, ``feasible``, ``status``, ``method`` and ``actuator_forces``;
             ``json.dumps(result.as_dict(), allow_nan=False)`` accepts it.
         """
         d = super().as_dict()
-        if isinstance(self.feasible, np.ndarray):
-            d["tensions"] = [row if ok else None for row, ok in zip(d["tensions"], self.feasible.tolist())]
-        elif not self.feasible:
-            d["tensions"] = None
+        for key in ("tensions", "actuator_forces"):
+            if isinstance(self.feasible, np.ndarray):
+                d[key] = [row if ok else None for row, ok in zip(d[key], self.feasible.tolist())]
+            elif not self.feasible:
+                d[key] = None
         return d
 
 
@@ -770,69 +775,5 @@ def solve_tensions(
     tau, ok = _verify(W, w, tmin, tmax, cand)
     status = np.where(ok, "optimal", np.where(infeasible, "infeasible", "not-found"))
     if single:
-        return TensionResult(tau[0], bool(ok[0]), str(status[0]), method)
-    return TensionResult(tau, ok, status, method)
-
-
-def distribute_tensions(
-    robot: Robot,
-    poses: npt.ArrayLike,
-    *,
-    wrench: npt.ArrayLike | None = None,
-    method: str = "lp",
-    tension_bounds: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
-) -> TensionResult:
-    """Tension distribution of ``robot`` at ``poses``: :func:`solve_tensions` with the
-    structure matrix of :func:`taut.kinematics.inverse_kinematics`.
-
-    Parameters
-    ----------
-    robot : Robot
-        The robot.
-    poses : array_like, shape (N, pose_size) or (pose_size,)
-        Poses (``robot.pose_names``), one or a batch.
-    wrench : array_like, shape (N, m) or (m,), optional
-        External wrench on the platform [N, N m]; default :func:`external_wrench`, the
-        robot's own wrench and weight.
-    method : str, default "lp"
-        One of :data:`METHODS`.
-    tension_bounds : (tmin, tmax), optional
-        Tension bounds [N], each a number or ``(n,)``; default ``robot.tension_bounds``.
-
-    Returns
-    -------
-    TensionResult
-        One pose: fields without a batch axis.
-
-    Raises
-    ------
-    TautError
-        For a bad pose (:class:`~taut.errors.PoseError`), wrench, bounds or method.
-
-    References
-    ----------
-        .. [1] M. Rushton, "Variable-Structure Cable-Driven Parallel Robots", PhD thesis, University
-           of Waterloo, 2022, §2.1.2, Eqs. 2.11–2.13. (docs/references.bib: rushton2022)
-
-    Examples
-    --------
-    The platform of the planar 4-cable robot hangs at the centre of its frame: the least sum
-    of tensions keeps the lower cables at their 1 N minimum and the upper ones carry the
-    weight, ``2 · 7.757 · sin 46.5° − 2 · 1 · sin 46.5° = 9.81`` N.
-
-    >>> from taut.model import example
-    >>> robot = example("planar-4cable")
-    >>> res = distribute_tensions(robot, [0.0, 0.0, 0.0])
-    >>> np.round(res.tensions, 3)
-    array([1.   , 1.   , 7.757, 7.757])
-    >>> bool(distribute_tensions(robot, [0.0, 0.0, 0.0], tension_bounds=(1.0, 5.0)).feasible)
-    False
-    """
-    if not isinstance(method, str) or method not in METHODS:
-        raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
-    W = inverse_kinematics(robot, poses).structure_matrix
-    w = external_wrench(robot, poses) if wrench is None else wrench
-    if wrench is not None and W.ndim == 2 and np.ndim(wrench) == 2:
-        raise TautError(f"one pose but a batch of wrenches of shape {np.shape(wrench)}")
-    bounds = robot.tension_bounds if tension_bounds is None else tension_bounds
-    return solve_tensions(W, w, tension_bounds=bounds, method=method)
+        return TensionResult(tau[0], bool(ok[0]), str(status[0]), method, np.zeros(0))
+    return TensionResult(tau, ok, status, method, np.zeros((len(tau), 0)))

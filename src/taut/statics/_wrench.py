@@ -107,11 +107,12 @@ def external_wrench(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
 
 
 def _body_weights(robot: Robot, poses: np.ndarray) -> np.ndarray:
-    """The weights of the jointed bodies as a wrench on the platform ``(N, m)``: with the
-    joints held by their actuators the bodies move with the platform, so each weight ``F_k``
-    adds its force and its moment ``(c_k − p) × F_k`` about the reference point ``p``, ``c_k``
-    the body's centre of mass in the fixed frame (the rows of ``A`` for the platform twist,
-    Lieskovský 2020, Eqs. 3.3.7–3.3.10)."""
+    """The weights of the jointed bodies as a wrench on the platform ``(N, m)``: the platform
+    rows of the jointed equilibrium balance the whole robot (the joints' reactions are
+    internal), so each weight ``F_k`` adds its force and its moment ``(c_k − p) × F_k`` about
+    the reference point ``p``, ``c_k`` the body's centre of mass in the fixed frame (the rows
+    of ``A`` for the platform twist, Lieskovský 2020, Eqs. 3.3.7–3.3.10); the joints' own rows
+    are in :func:`taut.statics.equilibrium_equations`."""
     pos, rot = body_frames(robot, poses)
     d = robot.dimension
     out = np.zeros((poses.shape[0], robot.wrench_dim))

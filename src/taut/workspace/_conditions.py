@@ -35,10 +35,20 @@ from typing import ClassVar
 import numpy as np
 
 from taut.collision import proximity
-from taut.errors import TautError
+from taut.errors import TautError, UnsupportedRobotError
 from taut.kinematics import as_poses, batch_structure_matrices
 from taut.model import Robot
-from taut.statics import BoxWrenchSet, WrenchSet, external_wrench, static_equilibrium, wrench_closure, wrench_feasible
+from taut.statics import (
+    BoxWrenchSet,
+    PolytopeWrenchSet,
+    SingleWrench,
+    WrenchSet,
+    equilibrium_equations,
+    external_wrench,
+    static_equilibrium,
+    wrench_closure,
+    wrench_feasible,
+)
 
 __all__ = [
     "CONDITIONS",
@@ -215,8 +225,27 @@ class WrenchClosure(WrenchCondition):
     description = "the cables positively span the wrench space (any wrench, positive tensions)"
 
     def test(self, robot: Robot, poses: np.ndarray, W: np.ndarray) -> np.ndarray:
-        """:func:`taut.statics.wrench_closure` of ``W``: ``(N,)`` bool."""
+        """:func:`taut.statics.wrench_closure` of ``W`` (of a jointed platform: of its
+        equilibrium equations, :func:`taut.statics.equilibrium_equations`): ``(N,)`` bool."""
+        if robot.n_joints:
+            W = equilibrium_equations(robot, poses)[0]
         return wrench_closure(W)
+
+
+def _on_platform(ws: WrenchSet, joints: int) -> WrenchSet:
+    """``ws`` acting on the platform of a jointed one: no wrench on its ``joints`` (the
+    rows of the equilibrium equations after the platform's)."""
+    zero = np.zeros(joints)
+    if isinstance(ws, SingleWrench):
+        return SingleWrench(np.concatenate([ws.wrench, zero]))
+    if isinstance(ws, BoxWrenchSet):
+        return BoxWrenchSet(np.concatenate([ws.lower, zero]), np.concatenate([ws.upper, zero]))
+    if isinstance(ws, PolytopeWrenchSet):
+        return PolytopeWrenchSet(np.column_stack([ws.vertices, np.zeros((len(ws.vertices), joints))]))
+    raise UnsupportedRobotError(
+        f"a {type(ws).__name__} on a jointed platform: its wrench-feasible workspace takes a single wrench, a box "
+        "or a polytope (the set then acts on the platform, not on the joints)"
+    )
 
 
 def default_wrench_set(robot: Robot) -> BoxWrenchSet:
@@ -335,10 +364,16 @@ class WrenchFeasible(WrenchCondition):
         return ws
 
     def test(self, robot: Robot, poses: np.ndarray, W: np.ndarray) -> np.ndarray:
-        """:func:`taut.statics.wrench_feasible` of ``W`` and the required set: ``(N,)`` bool."""
+        """:func:`taut.statics.wrench_feasible` of ``W`` and the required set: ``(N,)`` bool.
+        On a jointed platform, of its equilibrium equations
+        (:func:`taut.statics.equilibrium_equations`): the set acts on the platform, the
+        bodies' weights on the joints."""
         ws = self.required_set(robot)
-        wrench = external_wrench(robot, poses) if self.around_external else None
-        return wrench_feasible(W, ws, tension_bounds=robot.tension_bounds, wrench=wrench)
+        if not robot.n_joints:
+            wrench = external_wrench(robot, poses) if self.around_external else None
+            return wrench_feasible(W, ws, tension_bounds=robot.tension_bounds, wrench=wrench)
+        W, w, bounds = equilibrium_equations(robot, poses, wrench=None if self.around_external else np.zeros(ws.dim))
+        return wrench_feasible(W, _on_platform(ws, robot.n_joints), tension_bounds=bounds, wrench=w)
 
 
 class StaticEquilibrium(WrenchCondition):
@@ -366,7 +401,12 @@ class StaticEquilibrium(WrenchCondition):
     description = "the external wrench (weight included) is balanced within the tension bounds"
 
     def test(self, robot: Robot, poses: np.ndarray, W: np.ndarray) -> np.ndarray:
-        """:func:`taut.statics.static_equilibrium` at the external wrench: ``(N,)`` bool."""
+        """:func:`taut.statics.static_equilibrium` at the external wrench (of a jointed
+        platform: of its equilibrium equations, :func:`taut.statics.equilibrium_equations`):
+        ``(N,)`` bool."""
+        if robot.n_joints:
+            W, w, bounds = equilibrium_equations(robot, poses)
+            return static_equilibrium(W, w, tension_bounds=bounds)
         return static_equilibrium(W, external_wrench(robot, poses), tension_bounds=robot.tension_bounds)
 
 
