@@ -223,6 +223,7 @@ def _example(name):
 def _result(key, tmp_path):
     """A small instance of the exported result class ``key``, from a public function."""
     import taut.atlas as atlas
+    import taut.cables as cables
     import taut.collision as collision
     import taut.dynamics as dynamics
     import taut.interval as interval
@@ -242,6 +243,10 @@ def _result(key, tmp_path):
         "atlas.Edge": lambda: _atlas().edges[0],
         "atlas.StructureAtlas": _atlas,
         "atlas.StructureChart": lambda: _atlas().charts[0],
+        "cables.Catenary": lambda: cables.catenary_forces([10.0, 8.0], [0.0, 2.0], [10.05, 8.5], 10.0, 2e5),
+        "cables.SaggingIKResult": lambda: cables.sagging_ik(
+            _example("cogiro-sagging"), [[0.0, 0.0, 2.0, 0.0, 0.0, 0.0], [6.5, 4.5, 5.0, 0.0, 0.0, 0.0]]
+        ),
         "collision.CapsuleModel": lambda: collision.capsule_model(adjustable),
         "collision.CheckResult": lambda: collision.check_poses(adjustable, sim_b),
         "collision.ProximityResult": lambda: collision.proximity(adjustable, sim_b),

@@ -114,6 +114,7 @@ def test_shape_integrates_the_strained_tangent(H, V, L0, w, EA):
     (quadrature here): the horizontal force is the same all along the cable."""
     c = catenary_forces(*_irvine_any(H, V, L0, w, EA), L0, w, EA)
     pts = catenary_shape(c, 5)
+    H, V = float(c.horizontal_forces), float(c.vertical_forces)  # the forces the shape is drawn with
     flex = 0.0 if math.isinf(EA) else 1.0 / EA
 
     def T(t):

@@ -214,3 +214,36 @@ def largest_sag(span: Array, rise: Array, H: Array, V: Array, L0: Array, w: Arra
     s = np.where(w > 0, s, 0.0)
     x, z = points(H, V, w, EA, s)
     return np.abs(x * rise - z * span) / np.hypot(span, rise)
+
+
+def solve_tension(
+    span: Array, rise: Array, T0: Array, w: Array, EA: Array, H: Array, V: Array, L0: Array
+) -> tuple[Array, Array, Array, Array]:
+    """``(H, V, L0, ok)`` of the elastic catenary through the chord whose tension at the
+    platform end is ``T0``: Newton on the angle ``φ`` of the end force (``H = T0 cos φ``,
+    ``V = T0 sin φ``) and ``L0``, from the catenary ``(H, V, L0)`` given as a start."""
+    phi = np.arctan2(V, H)
+    scale = np.hypot(span, rise) + L0
+    ok = np.zeros(np.shape(T0), dtype=bool)
+    for _ in range(MAX_NEWTON):
+        H, V = T0 * np.cos(phi), T0 * np.sin(phi)
+        x, z, (xH, xV, xL, zH, zV, zL) = ends(H, V, L0, w, EA)
+        fx, fz = x - span, z - rise
+        ok = np.hypot(fx, fz) <= NEWTON_RTOL * scale
+        if ok.all():
+            break
+        a, c = xV * H - xH * V, zV * H - zH * V
+        det = a * zL - xL * c
+        dphi = -(zL * fx - xL * fz) / det
+        dL = -(-c * fx + a * fz) / det
+        # the angle stays within a quarter turn of the start and the length positive
+        dphi = np.clip(dphi, -0.5, 0.5)
+        step = np.ones_like(dL)
+        for _ in range(30):
+            bad = (L0 + step * dL <= 0) | (np.abs(phi + step * dphi) >= np.pi / 2)
+            if not bad.any():
+                break
+            step = np.where(bad, step / 2, step)
+        phi, L0 = phi + step * dphi, L0 + step * dL
+    H, V = T0 * np.cos(phi), T0 * np.sin(phi)
+    return H, V, L0, ok & (H > 0) & np.isfinite(L0)
