@@ -265,7 +265,7 @@ def sag_map(
             res = sagging_ik(robot, poses[k], method=method)
             ref = distribute_tensions(straight, poses[k], method=method)
             feasible[k], straight_feasible[k] = res.feasible, ref.feasible
-            both = res.feasible & ref.feasible
+            both = np.asarray(res.feasible) & np.asarray(ref.feasible)
             lengths = res.chord_lengths / (1.0 + ref.tensions / ea)
             difference[k] = np.where(both[:, None], res.unstrained_lengths - lengths, 0.0)
             increase[k] = np.where(both[:, None], res.exit_tensions - ref.tensions, 0.0)
