@@ -14,6 +14,12 @@ inextensible cable, Newton for an elastic one), and its new tangent; until the t
 change by less than ``tol``.  With 6 cables (``n = m``) the distribution is the unique
 solution of the square system and the iteration solves the square nonlinear problem.
 
+The model takes taut catenaries: a sagging cable's tension at its lower end is kept at least
+:data:`TAUT_WEIGHTS` times the weight of a cable as long as its chord, whatever its lower
+tension bound (with less, a cable over a level span sags by more than an eighth of it; a
+slack cable hangs from its exit, and reaches the platform only right below it): at the
+platform, ``w (l + max(0, −rise))`` for a chord ``l`` whose exit lies ``−rise`` below it.
+
 A straight cable (no ``weight``) keeps its straight-line direction; its unstrained length is
 ``l / (1 + τ/EA)`` (Rushton 2022, Eq. 2.15), ``l`` when inextensible.
 
@@ -54,6 +60,8 @@ from taut.statics import EQUILIBRIUM_RTOL, METHODS, external_wrench, solve_tensi
 SAG_TOL = 1e-11
 #: Steps of the iteration before a pose counts as ``"not-converged"``.
 MAX_SAG_STEPS = 200
+#: A sagging cable's least tension at its lower end, in weights of a cable as long as its chord.
+TAUT_WEIGHTS = 1.0
 #: Steps of the iteration whose differences Anderson's acceleration combines.
 ANDERSON_DEPTH = 3
 #: Horizontal span, relative to the chord, below which a sagging cable hangs vertically.
@@ -205,7 +213,8 @@ def sagging_ik(
     method : str, default "lp"
         A tension distribution method of :data:`taut.statics.METHODS`.
     tension_bounds : (tmin, tmax), optional
-        Tension bounds [N]; default ``robot.tension_bounds``.
+        Tension bounds [N] at both ends of every cable; default ``robot.tension_bounds`` (a
+        sagging cable pulls at least its weight, :data:`TAUT_WEIGHTS`).
     tol : float, default SAG_TOL
         Largest change of a unit tangent between two steps at convergence.
     max_steps : int, default MAX_SAG_STEPS
@@ -275,6 +284,9 @@ def sagging_ik(
     up = -robot.gravity / np.linalg.norm(robot.gravity)
     c = robot.exits[None] - ik.anchors
     rise = c @ up
+    # taut catenaries only: a cable pulling at its lower end with less than its own weight sags
+    # by more than an eighth of its chord, and a slack one hangs from its exit
+    lo0 = np.maximum(lo0, TAUT_WEIGHTS * wgt * (chord + np.maximum(-rise, 0.0)))
     hvec = c - rise[..., None] * up
     span = np.linalg.norm(hvec, axis=-1)
     vertical = heavy & (span <= VERTICAL_RTOL * chord)

@@ -29,6 +29,18 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         default="lp",
         help="tension distribution of both models: lp | qp | inf | closed-form | improved-closed-form | barycentric",
     )
+    parser.add_argument(
+        "--weight",
+        type=A.real(above=0),
+        metavar="N_PER_M",
+        help="give every cable this weight per metre [N/m] (what if the robot's cables were heavy)",
+    )
+    parser.add_argument(
+        "--stiffness",
+        type=A.real(above=0),
+        metavar="EA",
+        help="give every cable this axial stiffness EA [N] (default: the robot's; none: inextensible)",
+    )
     parser.add_argument("--plot", metavar="FILE.png", help="draw the largest sags and the map of length differences")
 
 
@@ -37,8 +49,13 @@ def run(ns: argparse.Namespace) -> int:
 
     plot = A.plot_file(ns.plot)
     robot = A.load(ns.robot, ns.cable_set)
+    update = {k: v for k, v in (("weight", ns.weight), ("stiffness", ns.stiffness)) if v is not None}
+    if update:
+        robot = robot.model_copy(update={"cables": tuple(c.model_copy(update=update) for c in robot.cables)})
     if not robot.sagging_cables:
-        raise TautError(f"{robot.name}: no sagging cables (give cables[].weight, the weight per metre in N/m)")
+        raise TautError(
+            f"{robot.name}: no sagging cables (give cables[].weight in the robot file, or --weight, in N/m)"
+        )
     grid, resolution = A.grid(ns.grid, robot.dimension)
     orientation = A.vector(ns.orientation, "--orientation") if ns.orientation is not None else None
     with progress_bar("sag", wanted(ns.json)) as progress:
