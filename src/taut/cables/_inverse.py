@@ -41,6 +41,7 @@ References
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from typing import Any
 
@@ -64,6 +65,8 @@ MAX_SAG_STEPS = 200
 TAUT_WEIGHTS = 1.0
 #: Steps of the iteration whose differences Anderson's acceleration combines.
 ANDERSON_DEPTH = 3
+#: Poses solved at once (a larger batch is solved in chunks: the arrays of one stay in cache).
+IK_CHUNK = 8192
 #: Horizontal span, relative to the chord, below which a sagging cable hangs vertically.
 VERTICAL_RTOL = 1e-9
 
@@ -261,6 +264,21 @@ def sagging_ik(
     tol = as_number(tol, "tol", positive=True)
     max_steps = as_count(max_steps, "max_steps")
     arr, single = as_poses(robot, poses)
+    if arr.shape[0] > IK_CHUNK:
+        chunks: list[tuple[np.ndarray, npt.ArrayLike | None]]
+        if wrench is not None and np.ndim(wrench) == 2:
+            chunks = [
+                (arr[k : k + IK_CHUNK], np.asarray(wrench)[k : k + IK_CHUNK]) for k in range(0, len(arr), IK_CHUNK)
+            ]
+        else:
+            chunks = [(arr[k : k + IK_CHUNK], wrench) for k in range(0, len(arr), IK_CHUNK)]
+        parts = [
+            sagging_ik(robot, p, wrench=w, method=method, tension_bounds=tension_bounds, tol=tol, max_steps=max_steps)
+            for p, w in chunks
+        ]
+        fields = [f.name for f in dataclasses.fields(SaggingIKResult) if f.name != "method"]
+        joined = {f: np.concatenate([getattr(r, f) for r in parts]) for f in fields}
+        return SaggingIKResult(**joined, method=method)
     N, n, d = arr.shape[0], robot.n_cables, robot.dimension
     ik = inverse_kinematics(robot, arr)
     if wrench is None:

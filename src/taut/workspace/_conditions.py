@@ -396,8 +396,8 @@ class SaggingStatic(WorkspaceCondition):
     Parameters
     ----------
     method : str, default "lp"
-        The tension distribution method iterated to consistency; ``lp`` is exact at every
-        step, the closed forms faster and incomplete.
+        The tension distribution method iterated to consistency where Pott's improved closed
+        form (tried first, fast, incomplete) finds none; ``lp`` is exact at every step.
 
     References
     ----------
@@ -432,8 +432,13 @@ class SaggingStatic(WorkspaceCondition):
         poses = as_poses(robot, poses)[0]
         ok = batch_structure_matrices(robot, poses)[2]
         out = np.zeros(poses.shape[0], bool)
-        if ok.any():
-            out[ok] = sagging_ik(robot, poses[ok], method=self.method).feasible
+        if not ok.any():
+            return out
+        # consistent tensions found by the fast closed form are a proof; the rest is decided by `method`
+        out[ok] = sagging_ik(robot, poses[ok], method="improved-closed-form").feasible
+        rest = ok & ~out
+        if rest.any() and self.method != "improved-closed-form":
+            out[rest] = sagging_ik(robot, poses[rest], method=self.method).feasible
         return out
 
 
