@@ -244,6 +244,12 @@ def _result(key, tmp_path):
         "atlas.StructureAtlas": _atlas,
         "atlas.StructureChart": lambda: _atlas().charts[0],
         "cables.Catenary": lambda: cables.catenary_forces([10.0, 8.0], [0.0, 2.0], [10.05, 8.5], 10.0, 2e5),
+        "cables.SaggingFKResult": lambda: cables.sagging_fk(
+            _example("cogiro-sagging"),
+            cables.sagging_ik(
+                _example("cogiro-sagging"), [0.0, 0.0, 2.0, 0.0, 0.0, 0.0], method="qp"
+            ).unstrained_lengths,
+        ),
         "cables.SaggingIKResult": lambda: cables.sagging_ik(
             _example("cogiro-sagging"), [[0.0, 0.0, 2.0, 0.0, 0.0, 0.0], [6.5, 4.5, 5.0, 0.0, 0.0, 0.0]]
         ),
@@ -293,6 +299,9 @@ def _result(key, tmp_path):
             planning.WrenchFeasibleManifold.from_robot(crane), crane.reference.poses["q1"], resolution=(4, 3)
         ),
         "statics.TensionResult": lambda: statics.distribute_tensions(planar, [[0.0, 0.0, 0.0], [0.99, 0.99, 0.0]]),
+        "workspace.SagMap": lambda: workspace.sag_map(
+            _example("cogiro-sagging"), grid=[(-1.0, 1.0, 2), (0.0, 0.0, 1), (2.0, 7.0, 2)], method="qp"
+        ),
         "workspace.PoseGrid": lambda: workspace.position_grid(planar, resolution=5),
         "workspace.WorkspaceResult": lambda: workspace.evaluate_workspace(planar, "static", resolution=5),
         "workspace.CertifiedWorkspace": lambda: workspace.certified(planar, "static", eps=0.2),

@@ -1,6 +1,7 @@
 """Sagging cables: Irvine's elastic catenary for one cable, vectorised over many (end
 forces, unstrained lengths, shape and sag), and the statics of robots whose cables sag
-(static inverse kinematics with the tension distribution iterated to consistency)."""
+(static inverse kinematics with the tension distribution iterated to consistency; static
+forward kinematics by Newton continuation from the straight-cable pose, with stability)."""
 
 from __future__ import annotations
 
@@ -9,11 +10,14 @@ from typing import TYPE_CHECKING
 from taut._lazy import lazy_exports
 
 if TYPE_CHECKING:
+    from taut.cables._forward import SaggingFKResult, sagging_fk
     from taut.cables._inverse import MAX_SAG_STEPS, SAG_TOL, SaggingIKResult, sagging_ik
     from taut.cables._sagging import Catenary, catenary_forces, catenary_lengths, catenary_shape
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
+    "SaggingFKResult": "taut.cables._forward",
+    "sagging_fk": "taut.cables._forward",
     "MAX_SAG_STEPS": "taut.cables._inverse",
     "SAG_TOL": "taut.cables._inverse",
     "SaggingIKResult": "taut.cables._inverse",
@@ -28,10 +32,12 @@ __all__ = [
     "Catenary",
     "MAX_SAG_STEPS",
     "SAG_TOL",
+    "SaggingFKResult",
     "SaggingIKResult",
     "catenary_forces",
     "catenary_lengths",
     "catenary_shape",
+    "sagging_fk",
     "sagging_ik",
 ]
 
