@@ -228,3 +228,19 @@ def test_cli_bad_robot_file_is_one_line(taut_cli, tmp_path, field, value, words)
     run = taut_cli("ik", str(text))
     assert run.code == 2
     assert run.err.count("\n") == 1 and words in run.err
+
+
+def test_cli_tensions_on_a_sagging_robot(taut_cli):
+    d = taut_cli("tensions", "cogiro-sagging", "--method", "qp", "--json").json()
+    res = sagging_ik(COGIRO, [0.0, 0.0, 2.0, 0.0, 0.0, 0.0], method="qp")
+    assert d["tensions"] == pytest.approx(res.platform_tensions.tolist(), rel=1e-12)
+    assert d["exit_tensions"] == pytest.approx(res.exit_tensions.tolist(), rel=1e-12)
+    assert "catenary" in d["model"]
+
+
+def test_cli_refuses_to_simulate_and_warns_of_straight_conditions(taut_cli):
+    run = taut_cli("simulate", "cogiro-sagging", "--waypoints=0,0,2,0,0,0;0.01,0,2,0,0,0", "--duration", "0.1")
+    assert run.code == 2 and run.err.count("\n") == 1 and "catenary forces are not simulated" in run.err
+    ws = taut_cli("workspace", "cogiro-sagging", "--condition", "static", "--grid", "2", "--json")
+    assert ws.code == 0 and ws.err.startswith("taut: warning:") and "sagging-static" in ws.err
+    json.loads(ws.out)
