@@ -16,6 +16,15 @@ from taut.cables import catenary_forces, catenary_lengths, catenary_shape
 from taut.cables._catenary import ends
 from taut.errors import ArgumentError, TautError, UnreachableLengthsError
 
+#: End forces, unstrained lengths, weights and stiffnesses (inextensible too) of the properties.
+CABLES = {
+    "H": st.floats(5.0, 500.0),
+    "V": st.floats(-400.0, 400.0),
+    "L0": st.floats(0.5, 20.0),
+    "w": st.floats(0.05, 20.0),
+    "EA": st.one_of(st.just(math.inf), st.floats(1e3, 1e7)),
+}
+
 
 def test_horizontal_span_is_the_cosh_catenary():
     """``y = a cosh(x/a)`` through two supports at one level: ``L0 = 2a sinh(l/2a)``, ``H = w a``,
@@ -79,13 +88,7 @@ def test_elastic_forward_matches_irvine_and_inverts(H, V, L0, w, EA):
 
 
 @settings(max_examples=40, deadline=None)
-@given(
-    H=st.floats(5.0, 500.0),
-    V=st.floats(-400.0, 400.0),
-    L0=st.floats(0.5, 20.0),
-    w=st.floats(0.05, 20.0),
-    EA=st.one_of(st.just(math.inf), st.floats(1e3, 1e7)),
-)
+@given(**CABLES)
 def test_flexibility_is_the_derivative_and_symmetric(H, V, L0, w, EA):
     x, z, J = ends(*(np.array(v) for v in (H, V, L0, w, EA)))
     flex = np.array(J, dtype=float).reshape(2, 3)
@@ -102,13 +105,7 @@ def test_flexibility_is_the_derivative_and_symmetric(H, V, L0, w, EA):
 
 
 @settings(max_examples=40, deadline=None)
-@given(
-    H=st.floats(5.0, 500.0),
-    V=st.floats(-400.0, 400.0),
-    L0=st.floats(0.5, 20.0),
-    w=st.floats(0.05, 20.0),
-    EA=st.one_of(st.just(math.inf), st.floats(1e3, 1e7)),
-)
+@given(**CABLES)
 def test_shape_integrates_the_strained_tangent(H, V, L0, w, EA):
     """Each point is the integral of the strained unit tangent ``(H, V + w s)/T (1 + T/EA)``
     (quadrature here): the horizontal force is the same all along the cable."""

@@ -211,8 +211,8 @@ def test_cli_bad_input_is_one_line(taut_cli, argv, words):
     ("field", "value", "words"),
     [
         ("weight", "-1", "weight: input should be greater than or equal to 0"),
-        ("weight", ".nan", "weight: expected a finite number"),
-        ("stiffness", "0", "stiffness: input should be greater than 0"),
+        pytest.param("weight", ".nan", "weight: expected a finite number", marks=pytest.mark.slow),
+        pytest.param("stiffness", "0", "stiffness: input should be greater than 0", marks=pytest.mark.slow),
     ],
 )
 def test_cli_bad_robot_file_is_one_line(taut_cli, tmp_path, field, value, words):

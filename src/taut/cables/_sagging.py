@@ -76,7 +76,16 @@ class Catenary(Result):
     flexibility: np.ndarray
 
 
-def _inputs(named: list[tuple[npt.ArrayLike, str]]) -> list[np.ndarray]:
+def _inputs(
+    span: npt.ArrayLike,
+    rise: npt.ArrayLike,
+    third: tuple[npt.ArrayLike, str],
+    weight: npt.ArrayLike,
+    stiffness: npt.ArrayLike,
+) -> list[np.ndarray]:
+    """The five arguments as float arrays of one shape, checked: a span > 0, weights >= 0,
+    stiffnesses > 0 (``inf`` allowed); ``third`` (a value and its name) finite."""
+    named = [(span, "span"), (rise, "rise"), third, (weight, "weight"), (stiffness, "stiffness")]
     arrays = [as_array(v, what, finite=what != "stiffness", error=ArgumentError) for v, what in named]
     try:
         out = [np.array(a, dtype=float) for a in np.broadcast_arrays(*arrays)]
@@ -157,15 +166,7 @@ def catenary_forces(
     >>> round(float(c.platform_tensions), 2) == round(float(c.exit_tensions), 2)
     True
     """
-    span, rise, L0, w, ea = _inputs(
-        [
-            (span, "span"),
-            (rise, "rise"),
-            (unstrained_lengths, "unstrained_lengths"),
-            (weight, "weight"),
-            (stiffness, "stiffness"),
-        ]
-    )
+    span, rise, L0, w, ea = _inputs(span, rise, (unstrained_lengths, "unstrained_lengths"), weight, stiffness)
     if np.any(L0 <= 0):
         raise ArgumentError("unstrained_lengths: expected lengths > 0")
     if np.any((w == 0) & np.isinf(ea)):
@@ -231,15 +232,7 @@ def catenary_lengths(
     >>> round(float(c.unstrained_lengths), 3)
     10.05
     """
-    span, rise, H, w, ea = _inputs(
-        [
-            (span, "span"),
-            (rise, "rise"),
-            (horizontal_forces, "horizontal_forces"),
-            (weight, "weight"),
-            (stiffness, "stiffness"),
-        ]
-    )
+    span, rise, H, w, ea = _inputs(span, rise, (horizontal_forces, "horizontal_forces"), weight, stiffness)
     if np.any(H <= 0):
         raise ArgumentError("horizontal_forces: expected forces > 0")
     L0, V, ok = K.solve_inverse(span, rise, H, w, ea)
