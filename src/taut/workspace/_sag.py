@@ -186,7 +186,23 @@ def sag_bounds(robot: Robot) -> np.ndarray:
 
 
 def straight_model(robot: Robot) -> Robot:
-    """``robot`` with weightless (straight) cables, their stiffness kept."""
+    """``robot`` with weightless (straight) cables, their stiffness kept: the model
+    :func:`sag_map` compares the sagging cables with.
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    Robot
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> straight_model(example("cogiro-sagging")).sagging_cables
+    ()
+    """
     return robot.model_copy(update={"cables": tuple(c.model_copy(update={"weight": None}) for c in robot.cables)})
 
 
