@@ -114,3 +114,13 @@ def test_cli_sag_bad_input_is_one_line(taut_cli, argv, words):
     run = taut_cli(*argv)
     assert run.code == 2, run.err
     assert run.err.count("\n") == 1 and words in run.err
+
+
+@pytest.mark.slow
+def test_worker_processes_give_the_same_verdicts():
+    from taut.parallel import get_executor
+
+    serial = evaluate_workspace(COGIRO, "sagging-static", grid=GRID)
+    with get_executor(workers=2) as executor:
+        parallel = evaluate_workspace(COGIRO, SaggingStatic(), grid=GRID, executor=executor)
+    assert np.array_equal(serial.inside, parallel.inside)
