@@ -19,6 +19,7 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
     "script, args, expect",
     [
         ("bench_ik.py", ["--poses", "2000", "--loop", "50"], "all poses valid: True"),
+        ("bench_sag.py", ["--poses", "2000", "--resolution", "5"], "poses where the verdicts differ: 0"),
         ("bench_certified.py", ["--planar-eps", "0.01", "--no-spatial"], "inside the bracket: True"),
         ("bench_workspace.py", ["--resolution", "6", "--check-resolution", "3"], "poses where the verdicts differ: 0"),
         ("bench_wrapping.py", ["--samples", "2001"], "state updates per second per cable"),

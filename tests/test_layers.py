@@ -19,6 +19,7 @@ LAYERS = {
     "model": 1,
     "parallel": 1,
     "kinematics": 2,
+    "cables": 3,
     "motion": 2,
     "statics": 3,
     "collision": 4,

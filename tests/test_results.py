@@ -223,6 +223,7 @@ def _example(name):
 def _result(key, tmp_path):
     """A small instance of the exported result class ``key``, from a public function."""
     import taut.atlas as atlas
+    import taut.cables as cables
     import taut.collision as collision
     import taut.dynamics as dynamics
     import taut.interval as interval
@@ -242,6 +243,16 @@ def _result(key, tmp_path):
         "atlas.Edge": lambda: _atlas().edges[0],
         "atlas.StructureAtlas": _atlas,
         "atlas.StructureChart": lambda: _atlas().charts[0],
+        "cables.Catenary": lambda: cables.catenary_forces([10.0, 8.0], [0.0, 2.0], [10.05, 8.5], 10.0, 2e5),
+        "cables.SaggingFKResult": lambda: cables.sagging_fk(
+            _example("cogiro-sagging"),
+            cables.sagging_ik(
+                _example("cogiro-sagging"), [0.0, 0.0, 2.0, 0.0, 0.0, 0.0], method="qp"
+            ).unstrained_lengths,
+        ),
+        "cables.SaggingIKResult": lambda: cables.sagging_ik(
+            _example("cogiro-sagging"), [[0.0, 0.0, 2.0, 0.0, 0.0, 0.0], [6.5, 4.5, 5.0, 0.0, 0.0, 0.0]]
+        ),
         "collision.CapsuleModel": lambda: collision.capsule_model(adjustable),
         "collision.CheckResult": lambda: collision.check_poses(adjustable, sim_b),
         "collision.ProximityResult": lambda: collision.proximity(adjustable, sim_b),
@@ -288,6 +299,9 @@ def _result(key, tmp_path):
             planning.WrenchFeasibleManifold.from_robot(crane), crane.reference.poses["q1"], resolution=(4, 3)
         ),
         "statics.TensionResult": lambda: statics.distribute_tensions(planar, [[0.0, 0.0, 0.0], [0.99, 0.99, 0.0]]),
+        "workspace.SagMap": lambda: workspace.sag_map(
+            _example("cogiro-sagging"), grid=[(-1.0, 1.0, 2), (0.0, 0.0, 1), (2.0, 7.0, 2)], method="qp"
+        ),
         "workspace.PoseGrid": lambda: workspace.position_grid(planar, resolution=5),
         "workspace.WorkspaceResult": lambda: workspace.evaluate_workspace(planar, "static", resolution=5),
         "workspace.CertifiedWorkspace": lambda: workspace.certified(planar, "static", eps=0.2),

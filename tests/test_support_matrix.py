@@ -149,6 +149,15 @@ def _pose_of(solution: dict) -> list[float]:
     return [*solution["position"], *(solution.get("orientation") or []), *(solution.get("joints") or [])]
 
 
+def sag(s: Subject, tmp: Path):
+    def check(d: dict, s: Subject) -> None:
+        summary = d["summary"]
+        assert summary["poses"] == 2 ** load(s.robot).dimension == len(d["poses"])
+        assert 0 <= summary["both"] <= min(summary["feasible"], summary["straight_feasible"])
+
+    return ["sag", s.robot, "--weight", "0.01", "--grid", "2"], check
+
+
 def fk(s: Subject, tmp: Path):
     from taut.kinematics import cable_lengths
 
@@ -263,6 +272,7 @@ QUERIES: dict[str, Query] = {
     "taut tensions": tensions,
     "taut workspace": workspace,
     "taut workspace --certified": certified_workspace,
+    "taut sag": sag,
     "taut fk": fk,
     "taut igp": igp,
     "taut plan": plan,

@@ -109,6 +109,11 @@ CASES: list[tuple[str, list[str], Check]] = [
         lambda d, tmp: (tmp / "w.npz").is_file() and (tmp / "w.png").is_file() and d["out"].endswith("w.npz"),
     ),
     (
+        "sag",
+        ["sag", "cogiro-sagging", "--grid", "2", "--method", "qp", "--plot", "{tmp}/sag.png"],
+        lambda d, tmp: d["summary"]["poses"] == 8 == len(d["poses"]) and (tmp / "sag.png").stat().st_size > 1000,
+    ),
+    (
         "fk",
         ["fk", "suspended-3cable", "--max-taut", "2"],
         # Table 4.3 of the thesis: no equilibrium with at most 2 taut cables, 6 sub-problems

@@ -245,3 +245,34 @@ POSE_HELP = (
     "pose x,y | x,y,theta | x,y,z,a,b,c then joint coordinates (angles in rad, or 30deg, pi/8); "
     "write --pose=-1,... for a leading minus"
 )
+
+
+def grid(text: str | None, dimension: int) -> tuple[list[tuple[float, float, int]] | None, int | None]:
+    """``--grid N`` (points per axis) or ``lo:hi:n;lo:hi:n[;...]`` (one range per axis), with
+    at least one point per axis and at most :data:`MAX_GRID_POSES` poses in all."""
+    import numpy as np
+
+    from taut.workspace import MAX_GRID_POSES
+
+    if text is None:
+        return None, None
+    if text.strip().isdigit():
+        # more than 10 digits is more than MAX_GRID_POSES on one axis (and Python refuses
+        # to convert thousands of digits)
+        n = int(text) if len(text.strip()) <= 10 else MAX_GRID_POSES + 1
+        count = n**dimension
+        axes = None
+    else:
+        axes = []
+        for part in text.split(";"):
+            lo, hi, k = (part.split(":") + [None, None])[:3]
+            if lo is None or hi is None or k is None or not k.strip().isdigit() or len(k.strip()) > 9:
+                raise TautError(f"--grid: expected N or lo:hi:n;lo:hi:n[;...], got {text!r}")
+            axes.append((number(lo, "--grid"), number(hi, "--grid"), int(k)))
+        n = min(k for _, _, k in axes)
+        count = int(np.prod([float(k) for _, _, k in axes]))
+    if n < 1:
+        raise TautError(f"--grid: every axis needs at least one point, got {text!r}")
+    if count > MAX_GRID_POSES:
+        raise TautError(f"--grid: {text!r} makes {float(count):.3g} poses, more than {MAX_GRID_POSES:,}")
+    return axes, None if axes is not None else n

@@ -7,11 +7,20 @@ used.  No equilibrium is an empty list, not an error."""
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
+from typing import TYPE_CHECKING
 
 from taut.cli import _args as A
 from taut.cli._cables import cable_numbers, numbered
 from taut.cli._incomplete import EXIT_STATUS, add_strict, report
-from taut.cli._output import console, emit, print_table, save_figure, table
+from taut.cli._output import console, emit, markup, print_table, save_figure, table
+from taut.errors import TautError
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
+
+    from taut.model import Robot
 from taut.cli._progress import progress_bar, wanted
 
 SUMMARY = "all equilibria for given cable lengths (direct geometrico-static problem)"
@@ -54,6 +63,8 @@ def run(ns: argparse.Namespace) -> int:
     plot = A.plot_file(ns.plot)
     robot = A.load(ns.robot, ns.cable_set)
     lengths = A.vector(ns.lengths, "--lengths") if ns.lengths is not None else None
+    if robot.sagging_cables:
+        return _sagging(ns, robot, lengths, plot)
     with (
         get_executor(workers=ns.workers, scheduler=ns.scheduler) as executor,
         progress_bar("fk", wanted(ns.json)) as progress,
@@ -102,8 +113,57 @@ def run(ns: argparse.Namespace) -> int:
     return status
 
 
+#: How the output names the model of a robot with sagging cables.
+SAG_MODEL = (
+    "static FK with sagging cables (Irvine's elastic catenary): Newton continuation from the straight-cable "
+    "pose, one local equilibrium, not a certified list"
+)
+
+
+def _sagging(ns: argparse.Namespace, robot: Robot, lengths: npt.NDArray[np.float64] | None, plot: Path | None) -> int:
+    import numpy as np
+
+    from taut.cables import sagging_fk
+
+    if lengths is None:
+        lengths = (
+            None if robot.reference is None or robot.reference.lengths is None else np.array(robot.reference.lengths)
+        )
+    if lengths is None:
+        raise TautError(f"--lengths: {robot.name} has no reference lengths; give its cables' unstrained lengths")
+    if ns.max_taut is not None or ns.max_boxes is not None:
+        raise TautError("--max-taut and --max-boxes go with the certified search of straight cables")
+    res = sagging_fk(robot, lengths)
+    data = {"robot": robot.name, "model": SAG_MODEL, "lengths": lengths.tolist()} | res.as_dict()
+    if plot is not None and res.found:
+        from taut.viz import draw_robot
+
+        save_figure(draw_robot(robot, res.pose).figure, plot, data)
+
+    def human(d: dict) -> None:
+        con = console()
+        con.print(f"[bold]{markup(robot.name)}[/]: {SAG_MODEL}")
+        if not res.found:
+            con.print("no equilibrium found for these unstrained lengths")
+            return
+        at = ", ".join(f"{n}={v:.6g}" for n, v in zip(robot.pose_names, res.pose))
+        con.print(f"equilibrium at {at}: {'stable' if res.stable else 'unstable'}")
+        rows = [
+            [str(i + 1), f"{t0:.6g}", f"{t1:.6g}", f"{sg:.4g}"]
+            for i, (t0, t1, sg) in enumerate(zip(res.platform_tensions, res.exit_tensions, res.sag))
+        ]
+        head = ["cable", "tension at platform [N]", "tension at exit [N]", "sag [m]"]
+        print_table(con, table("cables", head, rows))
+
+    emit(data, ns.json, human)
+    return 0
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--lengths", help="cable lengths L1,...,Ln (default: the robot's reference lengths)")
+    parser.add_argument(
+        "--lengths",
+        help="cable lengths L1,...,Ln (default: the robot's reference lengths); unstrained lengths of sagging cables",
+    )
     parser.add_argument(
         "--max-taut",
         type=A.count(),

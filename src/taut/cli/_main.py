@@ -32,6 +32,7 @@ from taut.cli import _fk as fk
 from taut.cli import _igp as igp
 from taut.cli import _ik as ik
 from taut.cli import _plan as plan
+from taut.cli import _sag as sag
 from taut.cli import _schema as schema
 from taut.cli import _simulate as simulate
 from taut.cli import _tensions as tensions
@@ -49,6 +50,7 @@ COMMANDS: tuple[tuple[str, ModuleType], ...] = (
     ("ik", ik),
     ("tensions", tensions),
     ("workspace", workspace),
+    ("sag", sag),
     ("fk", fk),
     ("igp", igp),
     ("plan", plan),

@@ -4,10 +4,16 @@ balancing the wrench at one pose; an infeasible pose is an answer (``docs/archit
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
 from taut.cli import _args as A
 from taut.cli._output import console, emit, fmt, print_table, table
 from taut.errors import TautError
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from taut.model import Robot
 
 SUMMARY = "tension distribution at a pose"
 ROBOT = True
@@ -33,6 +39,8 @@ def run(ns: argparse.Namespace) -> int:
             raise TautError(
                 f"--wrench: {robot.name} takes a wrench of {robot.wrench_dim} components, got {wrench.size}"
             )
+    if robot.sagging_cables:
+        return _sagging(ns, robot, pose, wrench)
     res = distribute_tensions(robot, pose, wrench=wrench, method=ns.method)
     feasible = bool(res.feasible)
     data = {"robot": robot.name, "pose": pose.tolist()} | res.as_dict()
@@ -57,6 +65,30 @@ def run(ns: argparse.Namespace) -> int:
                 for j in range(robot.n_joints)
             ]
             print_table(con, table("joint forces", ["joint", "force [N] or torque [N m]"], rows))
+
+    emit(data, ns.json, human)
+    return 0
+
+
+def _sagging(ns: argparse.Namespace, robot: Robot, pose: np.ndarray, wrench: np.ndarray | None) -> int:
+    """The tensions of a robot with sagging cables: the static IK's, at both ends of each cable."""
+    from taut.cables import sagging_ik
+    from taut.cli._ik import SAG_MODEL
+
+    res = sagging_ik(robot, pose, wrench=wrench, method=ns.method)
+    data = {"robot": robot.name, "pose": pose.tolist(), "model": SAG_MODEL} | res.as_dict()
+    data["tensions"] = data["platform_tensions"]
+
+    def human(d: dict) -> None:
+        con = console()
+        con.print(f"{SAG_MODEL}, tensions by {res.method}")
+        if not res.feasible:
+            con.print(f"[bold red]infeasible[/]: no consistent tensions ({res.status}) within the bounds at both ends")
+            return
+        rows = [
+            [str(i + 1), fmt(t0), fmt(t1)] for i, (t0, t1) in enumerate(zip(res.platform_tensions, res.exit_tensions))
+        ]
+        print_table(con, table(f"tensions ({res.method})", ["cable", "at platform [N]", "at exit [N]"], rows))
 
     emit(data, ns.json, human)
     return 0

@@ -10,7 +10,7 @@ import json
 from typing import TYPE_CHECKING, Any
 
 from taut.cli import _args as A
-from taut.cli._output import console, emit, markup, save_figure, written
+from taut.cli._output import console, emit, markup, save_figure, warning, written
 from taut.cli._progress import progress_bar, wanted
 from taut.errors import TautError
 
@@ -24,7 +24,9 @@ ROBOT = True
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
-        "--condition", required=True, help="wrench-closure | wrench-feasible | static | interference-free"
+        "--condition",
+        required=True,
+        help="wrench-closure | wrench-feasible | static | sagging-static | interference-free",
     )
     parser.add_argument(
         "--grid",
@@ -72,37 +74,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--plot", metavar="FILE.png", help="plot the workspace")
     A.add_parallel(parser, workers=None)
-
-
-def _grid(text: str | None, dimension: int) -> tuple[list[tuple[float, float, int]] | None, int | None]:
-    """``--grid N`` (points per axis) or ``lo:hi:n;lo:hi:n[;...]`` (one range per axis), with
-    at least one point per axis and at most :data:`MAX_GRID_POSES` poses in all."""
-    import numpy as np
-
-    from taut.workspace import MAX_GRID_POSES
-
-    if text is None:
-        return None, None
-    if text.strip().isdigit():
-        # more than 10 digits is more than MAX_GRID_POSES on one axis (and Python refuses
-        # to convert thousands of digits)
-        n = int(text) if len(text.strip()) <= 10 else MAX_GRID_POSES + 1
-        count = n**dimension
-        axes = None
-    else:
-        axes = []
-        for part in text.split(";"):
-            lo, hi, k = (part.split(":") + [None, None])[:3]
-            if lo is None or hi is None or k is None or not k.strip().isdigit() or len(k.strip()) > 9:
-                raise TautError(f"--grid: expected N or lo:hi:n;lo:hi:n[;...], got {text!r}")
-            axes.append((A.number(lo, "--grid"), A.number(hi, "--grid"), int(k)))
-        n = min(k for _, _, k in axes)
-        count = int(np.prod([float(k) for _, _, k in axes]))
-    if n < 1:
-        raise TautError(f"--grid: every axis needs at least one point, got {text!r}")
-    if count > MAX_GRID_POSES:
-        raise TautError(f"--grid: {text!r} makes {float(count):.3g} poses, more than {MAX_GRID_POSES:,}")
-    return axes, None if axes is not None else n
 
 
 def _ranges(text: str, what: str) -> list[list[float]]:
@@ -200,7 +171,12 @@ def run(ns: argparse.Namespace) -> int:
     out = A.output_file(ns.out, "--out", {".npz"})
     plot = A.plot_file(ns.plot)
     robot = A.load(ns.robot, ns.cable_set)
-    grid, resolution = _grid(ns.grid, robot.dimension)
+    if robot.sagging_cables and ns.condition != "sagging-static":
+        warning(
+            f"{robot.name} has sagging cables (cables[].weight); the {ns.condition} condition takes them as "
+            "straight lines (--condition sagging-static includes their weight)"
+        )
+    grid, resolution = A.grid(ns.grid, robot.dimension)
     orientation = A.vector(ns.orientation, "--orientation") if ns.orientation is not None else None
     wrench_set = None if ns.box is None else _box_set(robot, ns.box, ns.condition)
     with (

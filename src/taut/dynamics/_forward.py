@@ -140,6 +140,11 @@ def kernel_model(robot: Robot, *, actuators: bool = False) -> KernelModel:
     :func:`acceleration` thousands of times with the same robot).  With ``actuators`` the
     joint actuators follow the cables as inputs (:data:`taut.dynamics._tree.ACTUATOR` rows):
     ``n`` counts both."""
+    if robot.sagging_cables:
+        raise UnsupportedRobotError(
+            f"{robot.name}: the dynamics model straight cables, and its cables "
+            f"{[i + 1 for i in robot.sagging_cables]} sag (cables[].weight): catenary forces are not simulated"
+        )
     key = (id(robot), actuators)
     hit = _MODELS.get(key)
     if hit is not None and hit[0] is robot:

@@ -92,7 +92,7 @@ Refused with :class:`UnsupportedRobotError`, never approximated: other pulley at
 leaves the plane (in the plane, the pulley is taut's planar swivel), cables routed through
 more than two attachments (a cable through several links), chains of links from the ground,
 actuated platform joints, the joints and cable types above, planar cables that leave the
-plane.
+plane; on writing, sagging cables (``cables[].weight``: CASPR's cable models are straight).
 
 References
 ----------
@@ -1055,6 +1055,8 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
             raise _refuse(robot, f"the length bounds of cable {i}")
         if c.radius != 0:
             raise _refuse(robot, f"the radius of cable {i}")
+        if c.weight:
+            raise _refuse(robot, f"the weight of cable {i} (a sagging cable; CASPR's cable models are straight)")
     if robot.orientation == "tilt-torsion" and not robot.is_point_mass and robot.dimension == 3:
         raise _refuse(robot, "the tilt-torsion orientation convention")
     mass, com = _weight(robot)

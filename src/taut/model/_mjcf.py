@@ -108,7 +108,7 @@ naming the construct: no ``platform.mass``, a rigid platform without a positive-
 ``platform.inertia``, a constant ``platform.wrench`` (MJCF has no constant applied wrench),
 a jointed body without a ``mass`` or an ``inertia`` (MuJoCo moves no body without them, and
 a made-up mass would change the statics taut computes) or whose joint limits are equal
-(MuJoCo refuses an empty ``range``), exit pulleys of non-zero radius and obstacles (the
+(MuJoCo refuses an empty ``range``), sagging cables (``cables[].weight``), exit pulleys of non-zero radius and obstacles (the
 tendons run straight from exit to anchor, or over swivelling pulleys), swivelling pulleys
 smaller than :data:`MIN_PULLEY_RADIUS` or on a cable anchored on a jointed body (the
 pulley's angle is computed from the platform's frame), and an exit point, anchor or centre
@@ -240,6 +240,8 @@ def check_mjcf(robot: Robot) -> None:
     if robot.obstacles:
         raise _refuse(robot, f"obstacles ({len(robot.obstacles)}): MuJoCo tendons here do not wrap around obstacles")
     for i, cable in enumerate(robot.cables, 1):
+        if cable.weight:
+            raise _refuse(robot, f"cable {i} has a weight (it sags); the tendon would run straight")
         if cable.pulley is not None and cable.pulley.radius > 0:
             raise _refuse(
                 robot,

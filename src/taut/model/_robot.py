@@ -243,7 +243,12 @@ class Cable(_Strict):
     length : (float, float) or None
         Length bounds [m].
     stiffness : float or None
-        Axial stiffness ``EA`` [N] (elastic cables in the dynamics).
+        Axial stiffness ``EA`` [N] (elastic cables in the dynamics; with ``weight``, the
+        elastic catenary's; none: inextensible).
+    weight : float or None
+        Weight per unit length of the unstrained cable [N/m], ``≥ 0``: a cable with a positive
+        weight sags along the robot's gravity (an elastic catenary, ``taut.cables``); none or
+        0: a straight cable.
     radius : float
         Cable radius for interference checks [m].
     pulley : Pulley or None
@@ -265,6 +270,14 @@ class Cable(_Strict):
     tension: tuple[Number, Number] = (0.0, math.inf)
     length: tuple[Number, Number] | None = None
     stiffness: Finite | None = Field(default=None, gt=0, description="axial stiffness EA [N]")
+    weight: Finite | None = Field(
+        default=None,
+        ge=0,
+        le=MAX_MAGNITUDE,
+        description="weight per unit length of the unstrained cable [N/m]: a positive weight makes the cable "
+        "sag along the robot's gravity (Irvine's elastic catenary, with `stiffness` its EA; inextensible "
+        "without one); none or 0: a straight cable",
+    )
     radius: Finite = Field(default=0.0, ge=0, description="cable radius for interference checks [m]")
     pulley: Pulley | None = None
     swivel: SwivelPulley | None = Field(
@@ -744,6 +757,10 @@ class Robot(_Strict):
                 )
             if c.body is not None and c.body not in bodies:
                 raise RobotFileError(f"cables[{i}].body: unknown body {c.body!r}; expected one of {sorted(bodies)}")
+            if c.weight and (c.swivel is not None or c.pulley is not None):
+                raise RobotFileError(
+                    f"cables[{i}].weight: a sagging cable runs from a fixed exit point (no swivel or pulley)"
+                )
         keys: dict[tuple[tuple[float, ...], tuple[float, ...], str], int] = {}
         for i, c in enumerate(self.cables, 1):
             key = (tuple(c.exit), tuple(c.anchor or [0.0] * d), c.body or "platform")
@@ -764,6 +781,8 @@ class Robot(_Strict):
             _check_inertia(p.inertia, d, "platform")
         if p.gravity is not None and p.mass is None and not any(b.mass is not None for b in p.bodies):
             raise RobotFileError("platform.gravity is given without platform.mass (or a mass of platform.bodies)")
+        if any(c.weight for c in self.cables) and not np.any(self.gravity):
+            raise RobotFileError("cables[].weight: sagging cables need a gravity (platform.gravity is zero)")
         if pm and p.bodies:
             raise RobotFileError("platform.bodies: a point-mass platform cannot carry jointed bodies")
         seen = {"platform"}
@@ -814,6 +833,11 @@ class Robot(_Strict):
     def swivel_cables(self) -> tuple[int, ...]:
         """0-based indices of the cables that leave the frame through a swivelling pulley."""
         return tuple(i for i, c in enumerate(self.cables) if c.swivel is not None)
+
+    @property
+    def sagging_cables(self) -> tuple[int, ...]:
+        """0-based indices of the cables with a positive ``weight``: they sag (elastic catenaries)."""
+        return tuple(i for i, c in enumerate(self.cables) if c.weight)
 
     @property
     def is_point_mass(self) -> bool:
@@ -890,6 +914,20 @@ class Robot(_Strict):
             return t[:, 0], t[:, 1]
 
         return self._derived("tension_bounds", build)
+
+    @property
+    def cable_weights(self) -> np.ndarray:
+        """Weight per unit length of each cable [N/m], shape ``(n,)``: 0 for a straight cable."""
+        return self._derived("cable_weights", lambda: np.array([c.weight or 0.0 for c in self.cables], dtype=float))
+
+    @property
+    def axial_stiffness(self) -> np.ndarray:
+        """Axial stiffness ``EA`` of each cable [N], shape ``(n,)``: ``inf`` for a cable without
+        ``stiffness`` (inextensible)."""
+        return self._derived(
+            "axial_stiffness",
+            lambda: np.array([math.inf if c.stiffness is None else c.stiffness for c in self.cables], dtype=float),
+        )
 
     @property
     def length_bounds(self) -> tuple[np.ndarray, np.ndarray]:

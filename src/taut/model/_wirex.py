@@ -510,6 +510,8 @@ def _refusal(robot: Robot) -> str | None:
                 return f"cables[{i}].{field}"
         if c.radius > 0:
             return f"cables[{i}].radius (a cable radius)"
+        if c.weight:
+            return f"cables[{i}].weight (a sagging cable; WireX's cables are straight)"
     if len({c.tension for c in robot.cables}) > 1:
         return "different tension bounds per cable (WireX has one min_cable_load and max_cable_load)"
     lo, hi = robot.cables[0].tension
@@ -606,7 +608,7 @@ def write_wirex(robot: Robot, path: str | Path) -> None:
     ------
     UnsupportedRobotError
         For what a WireX file cannot hold: jointed platforms, obstacles, platform shapes,
-        planar exit pulleys, cable stiffness, radius or length bounds, different tension bounds per cable,
+        planar exit pulleys, cable stiffness, radius, weight or length bounds, different tension bounds per cable,
         other wrenches or gravities, a weight in a planar robot's plane, and spatial rigid
         platforms whose angles are not ``xyz-fixed``.
 

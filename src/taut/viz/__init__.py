@@ -26,7 +26,7 @@ instead and returns that ``Figure``: the given one, which must be empty (a figur
 already has axes raises :class:`~taut.errors.ArgumentError`), or a new one.  These are
 :func:`taut.viz._atlas.plot_atlas`, :func:`taut.viz._check.plot_check`,
 :func:`taut.viz._dgp.plot_equilibria`, :func:`taut.viz._dgp.plot_tracking`,
-:func:`taut.viz._plan.plot_plan` and :func:`taut.viz._trajectory.plot_trajectory`.
+:func:`taut.viz._plan.plot_plan`, :func:`taut.viz._sag.plot_sag` and :func:`taut.viz._trajectory.plot_trajectory`.
 
 Cable *i* has the same colour in every figure and is labelled with its 1-based number.
 """
@@ -46,6 +46,7 @@ if TYPE_CHECKING:
     from taut.viz._plan import plot_plan
     from taut.viz._report import Report
     from taut.viz._robot import draw_robot
+    from taut.viz._sag import plot_sag
     from taut.viz._tensions import plot_tensions
     from taut.viz._trajectory import plot_trajectory
     from taut.viz._workspace import plot_workspace
@@ -62,6 +63,7 @@ _LAZY = {
     "plot_plan": "taut.viz._plan",
     "Report": "taut.viz._report",
     "draw_robot": "taut.viz._robot",
+    "plot_sag": "taut.viz._sag",
     "plot_tensions": "taut.viz._tensions",
     "plot_trajectory": "taut.viz._trajectory",
     "plot_workspace": "taut.viz._workspace",
@@ -77,6 +79,7 @@ __all__ = [
     "plot_equilibria",
     "plot_motion_tensions",
     "plot_plan",
+    "plot_sag",
     "plot_tensions",
     "plot_tracking",
     "plot_trajectory",

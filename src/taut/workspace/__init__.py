@@ -22,6 +22,7 @@ if TYPE_CHECKING:
     from taut.workspace._certified import CertifiedWorkspace, certified
     from taut.workspace._conditions import (
         CONDITIONS,
+        SaggingStatic,
         StaticEquilibrium,
         WorkspaceCondition,
         WrenchClosure,
@@ -32,12 +33,18 @@ if TYPE_CHECKING:
     )
     from taut.workspace._evaluate import WorkspaceResult, evaluate_workspace
     from taut.workspace._grid import MAX_GRID_POSES, PoseGrid, default_bounds, make_grid, pose_grid, position_grid
+    from taut.workspace._sag import SagMap, sag_bounds, sag_map, straight_model
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
     "CertifiedWorkspace": "taut.workspace._certified",
     "certified": "taut.workspace._certified",
+    "SagMap": "taut.workspace._sag",
+    "sag_bounds": "taut.workspace._sag",
+    "sag_map": "taut.workspace._sag",
+    "straight_model": "taut.workspace._sag",
     "CONDITIONS": "taut.workspace._conditions",
+    "SaggingStatic": "taut.workspace._conditions",
     "StaticEquilibrium": "taut.workspace._conditions",
     "WorkspaceCondition": "taut.workspace._conditions",
     "WrenchClosure": "taut.workspace._conditions",
@@ -60,6 +67,8 @@ __all__ = [
     "CertifiedWorkspace",
     "MAX_GRID_POSES",
     "PoseGrid",
+    "SagMap",
+    "SaggingStatic",
     "StaticEquilibrium",
     "WorkspaceCondition",
     "WorkspaceResult",
@@ -74,6 +83,9 @@ __all__ = [
     "make_grid",
     "pose_grid",
     "position_grid",
+    "sag_bounds",
+    "sag_map",
+    "straight_model",
 ]
 
 __getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

@@ -10,6 +10,10 @@ registry, so that adding a condition is adding one class and one entry of
   their bounds: the WFW of a single wrench.  It also serves under-constrained robots
   (fewer cables than degrees of freedom), through the exact LP of
   :mod:`taut.statics._feasibility`;
+* ``sagging-static`` — the static condition with sagging cables (``cables[].weight``):
+  the cables, each an elastic catenary carrying its own weight, balance the robot's
+  external wrench with tensions within their bounds at both ends
+  (:func:`taut.cables.sagging_ik`; Riehl et al. 2009, §IV);
 * ``interference-free`` — no two capsules of the collision model interfere (cable–cable,
   cable–platform body; Lieskovský (2020), §3.4, :mod:`taut.collision`).  Cables of radius 0 are
   lines; cables sharing an end point (a point-mass platform) are compared without the
@@ -25,6 +29,9 @@ References
 .. [2] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
    Bachelor thesis, Czech Technical University in Prague, 2020, §3.4.
    (docs/references.bib: lieskovsky2020)
+.. [3] N. Riehl, M. Gouttefarde, S. Krut, C. Baradat, F. Pierrot, "Effects of non-negligible
+   cable mass on the static behavior of large workspace cable-driven parallel mechanisms",
+   IEEE ICRA, 2009, §IV. (docs/references.bib: riehl2009)
 """
 
 from __future__ import annotations
@@ -34,11 +41,13 @@ from typing import ClassVar
 
 import numpy as np
 
+from taut.cables import sagging_ik
 from taut.collision import proximity
 from taut.errors import TautError, UnsupportedRobotError
 from taut.kinematics import as_poses, batch_structure_matrices
 from taut.model import Robot
 from taut.statics import (
+    METHODS,
     BoxWrenchSet,
     PolytopeWrenchSet,
     SingleWrench,
@@ -53,6 +62,7 @@ from taut.statics import (
 __all__ = [
     "CONDITIONS",
     "InterferenceFree",
+    "SaggingStatic",
     "StaticEquilibrium",
     "WorkspaceCondition",
     "WrenchClosure",
@@ -410,6 +420,61 @@ class StaticEquilibrium(WrenchCondition):
         return static_equilibrium(W, external_wrench(robot, poses), tension_bounds=robot.tension_bounds)
 
 
+class SaggingStatic(WorkspaceCondition):
+    """The static workspace of a robot with sagging cables: the cables, sagging ones as
+    elastic catenaries carrying their own weight, balance the robot's external wrench with
+    tensions within their bounds at both ends (:func:`taut.cables.sagging_ik`).  Without
+    sagging cables it is the ``static`` condition.
+
+    Parameters
+    ----------
+    method : str, default "lp"
+        The tension distribution method iterated to consistency where Pott's improved closed
+        form (tried first, fast, incomplete) finds none; ``lp`` is exact at every step.
+
+    References
+    ----------
+    .. [1] N. Riehl, M. Gouttefarde, S. Krut, C. Baradat, F. Pierrot, "Effects of non-negligible
+       cable mass on the static behavior of large workspace cable-driven parallel mechanisms",
+       IEEE ICRA, 2009, §IV. (docs/references.bib: riehl2009)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.workspace import SaggingStatic
+    >>> poses = np.array([[0.0, 0.0, 2.0, 0, 0, 0], [0.0, 0.0, 7.0, 0, 0, 0]])  # above the exits: no
+    >>> SaggingStatic().evaluate(example("cogiro-sagging"), poses)
+    array([ True, False])
+    """
+
+    name = "sagging-static"
+    description = (
+        "the external wrench is balanced by the cables, sagging ones as elastic catenaries carrying their own "
+        "weight, within the tension bounds at both ends"
+    )
+
+    def __init__(self, *, method: str = "lp") -> None:
+        if not isinstance(method, str) or method not in METHODS:
+            raise TautError(f"unknown tension distribution method {method!r}; valid methods: {', '.join(METHODS)}")
+        self.method = method
+
+    def evaluate(self, robot: Robot, poses: np.ndarray) -> np.ndarray:
+        """Whether :func:`taut.cables.sagging_ik` finds consistent tensions: ``(N,)`` bool
+        (False where a cable has no direction)."""
+        poses = as_poses(robot, poses)[0]
+        ok = batch_structure_matrices(robot, poses)[2]
+        out = np.zeros(poses.shape[0], bool)
+        if not ok.any():
+            return out
+        # consistent tensions found by the fast closed form are a proof; the rest is decided by `method`
+        out[ok] = sagging_ik(robot, poses[ok], method="improved-closed-form").feasible
+        rest = ok & ~out
+        if rest.any() and self.method != "improved-closed-form":
+            out[rest] = sagging_ik(robot, poses[rest], method=self.method).feasible
+        return out
+
+
 class InterferenceFree(WorkspaceCondition):
     """The interference-free workspace: no two capsules of the collision model interfere
     (cable–cable, cable–body; :func:`taut.collision._proximity`).
@@ -438,10 +503,10 @@ class InterferenceFree(WorkspaceCondition):
 
 #: The registry of workspace conditions: name (as on the command line) → class:
 #: ``wrench-closure`` :class:`WrenchClosure`, ``wrench-feasible`` :class:`WrenchFeasible`,
-#: ``static`` :class:`StaticEquilibrium`, ``interference-free`` (no two capsules of the
+#: ``static`` :class:`StaticEquilibrium`, ``sagging-static`` :class:`SaggingStatic`, ``interference-free`` (no two capsules of the
 #: collision model interfere, :mod:`taut.collision`).
 CONDITIONS: dict[str, type[WorkspaceCondition]] = {
-    cls.name: cls for cls in (WrenchClosure, WrenchFeasible, StaticEquilibrium, InterferenceFree)
+    cls.name: cls for cls in (WrenchClosure, WrenchFeasible, StaticEquilibrium, SaggingStatic, InterferenceFree)
 }
 
 
