@@ -8,13 +8,18 @@ solved as a bundle adjustment (Triggs et al. 2000): ``scipy.optimize.least_squar
 region reflective) with the analytic sparse Jacobian of :mod:`taut.calibration._model`.
 
 Start.  The nominal robot is the start of its parameters; the poses and offsets start from a
-multi-start that needs no pose guess: every unknown pose is fitted to its own row on the
-nominal geometry (Levenberg–Marquardt per row, batched) from each of :data:`START_POSES`
-poses — the exits' centroid and six points around it along the axes — and keeps the best;
-the offsets of length changes are then re-estimated as the median over the rows of
-``l(q_k) − Δl_k``, and the two steps alternate :data:`START_ROUNDS` times.  Where two starts
-fit a row equally (a pose and its mirror image in the plane of coplanar exits), the one lower
-along the platform's weight is kept: a suspended platform hangs below its exits.
+multi-start that needs no pose guess.  Every unknown pose is fitted to its own row on the nominal
+geometry (Levenberg–Marquardt per row, batched) from each of :data:`START_POSES` poses — the
+exits' centroid and six points around it along the axes — and keeps the best; the offsets of
+length changes then take a Gauss–Newton step of the variable projection (the residuals projected
+off each row's pose directions; Golub & Pereyra 1973), and the two alternate up to
+:data:`START_ROUNDS` times, rows that fit far worse than the others restarted from every start
+pose.  The offsets start from hypotheses — the medians of the changes measured at the centroid,
+or one of the :data:`START_ROWS` most central rows measured there — each fitted on a short
+budget; the best is fitted to convergence.  Then rows left in another branch of their pose are
+restarted on the fitted geometry and everything refitted (:data:`RESEED_ROUNDS`).  Where two
+starts fit a row equally (a pose and its mirror image in the plane of coplanar exits), the one
+lower along the platform's weight is kept: a suspended platform hangs below its exits.
 
 Robust fit.  With ``robust``, a first fit with that loss (``soft_l1`` or ``huber``, scale
 :data:`ROBUST_SCALE`), a second with the scale set to twice the residuals' robust standard
@@ -46,6 +51,9 @@ References
    and §9. (docs/references.bib: triggs2000)
 .. [4] W. Kabsch, "A solution for the best rotation to relate two sets of vectors", Acta
    Crystallographica A 32, 1976. (docs/references.bib: kabsch1976)
+.. [5] G. H. Golub, V. Pereyra, "The differentiation of pseudo-inverses and nonlinear least
+   squares problems whose variables separate", SIAM Journal on Numerical Analysis 10(2), 1973.
+   (docs/references.bib: golub1973)
 """
 
 from __future__ import annotations
@@ -72,9 +80,9 @@ ROBUST_LOSSES = ("soft_l1", "huber")
 #: noise, centimetres of nominal error fitted away in the same run).
 ROBUST_SCALE = 0.01
 
-#: A row is an outlier when one of its residuals exceeds this many robust standard deviations
-#: of all residuals (1.4826 × their median absolute value): under Gaussian noise one residual in
-#: 1.7 million goes that far.
+#: A row is an outlier when one of its residuals, divided by ``√(1 − h)`` (``h`` its leverage in
+#: its row's pose block), exceeds this many robust standard deviations of all of them (1.4826 ×
+#: their median absolute value): under Gaussian noise one residual in 1.7 million goes that far.
 OUTLIER_THRESHOLD = 5.0
 
 #: Starting poses tried for every unknown pose: the exits' centroid and ± along each axis.
@@ -84,17 +92,33 @@ START_POSES = 7
 #: row fitted on the nominal geometry with wrong offsets can turn its platform half a turn.
 START_PRIOR = 0.05
 
-#: Central rows whose pose the start's offset hypotheses take at each start pose.
-START_ROWS = 3
+#: Central rows (their changes nearest the medians) that the start's offset hypotheses take as
+#: measured at the exits' centroid.
+START_ROWS = 2
 
 #: Rows (at most) on which the start scores its offset hypotheses.
 SCORE_ROWS = 200
 
-#: Hypotheses of the start fitted by least squares: the best one's fit is kept.
-FITTED_STARTS = 2
+#: Residual evaluations each start's fit may take before the best one is fitted to convergence.
+START_EVALUATIONS = 30
 
-#: Rounds of the start's alternation of per-row poses and offsets.
-START_ROUNDS = 3
+#: Rounds of re-seeding the poses after the fit (:func:`_reseed`), and the factor by which a
+#: row's new pose must lower its squared residuals to be taken.
+RESEED_ROUNDS = 3
+RESEED_GAIN = 0.5
+
+#: Hypotheses of the start fitted by least squares: the best one's fit is kept.
+FITTED_STARTS = 3
+
+#: The start's offsets have converged when a step moves none by more than this [m].
+START_TOL = 1e-6
+
+#: A row whose squared residuals exceed this many times the median row's is started afresh
+#: from every start pose in the next step of the start.
+RESTART_FACTOR = 4.0
+
+#: Gauss–Newton steps of the start's offsets (each after a refit of the rows' poses).
+START_ROUNDS = 12
 
 #: Iterations of the per-row Levenberg–Marquardt of the start.
 START_ITERATIONS = 30
@@ -249,14 +273,15 @@ def _move_poses(robot: Robot, poses: np.ndarray, Q: np.ndarray, t: np.ndarray, b
 
 def _row_poses(
     robot: Robot,
+    geometry: tuple[np.ndarray, np.ndarray],
     offsets: np.ndarray,
     data: Measurements,
     rows: np.ndarray,
     start: np.ndarray,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Each row's pose fitted to its own cables on the nominal geometry, from ``start (U, s)``:
-    batched Levenberg–Marquardt with a weak prior holding the orientation near zero
-    (:data:`START_PRIOR`); ``(poses (U, s), cost (U,))``."""
+    """Each row's pose fitted to its own cables on the ``geometry`` (exits, anchors), from
+    ``start (U, s)``: batched Levenberg–Marquardt with a weak prior holding the orientation near
+    zero (:data:`START_PRIOR`); ``(poses (U, s), sum of squared residuals (U,))``."""
     n, s, d = robot.n_cables, robot.pose_size, robot.dimension
     U = rows.size
     mask = data.measured[rows]
@@ -267,7 +292,7 @@ def _row_poses(
     prior[d:, d:] = START_PRIOR**2 * np.eye(s - d)
 
     def evaluate(q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        length, _, _, dq = partials(robot, robot.exits, robot.anchors, q, rr, cc)
+        length, _, _, dq = partials(robot, geometry[0], geometry[1], q, rr, cc)
         r = (length.reshape(U, n) - target) * mask
         cost = (r * r).sum(axis=1) + START_PRIOR**2 * (q[:, d:] ** 2).sum(axis=1)
         return r, dq.reshape(U, n, s) * mask[..., None], cost
@@ -289,7 +314,7 @@ def _row_poses(
         J = np.where(better[:, None, None], J2, J)
         cost = np.where(better, cost2, cost)
         lam = np.where(better, lam / 3, lam * 4)
-    return q, cost
+    return q, (r * r).sum(axis=1)
 
 
 def _starts(robot: Robot) -> np.ndarray:
@@ -309,47 +334,68 @@ def _starts(robot: Robot) -> np.ndarray:
     return np.array(out)
 
 
-def _multistart_poses(robot: Robot, offsets: np.ndarray, data: Measurements, rows: np.ndarray) -> np.ndarray:
+def _multistart_poses(
+    robot: Robot, geometry: tuple[np.ndarray, np.ndarray], offsets: np.ndarray, data: Measurements, rows: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
     """Each row's pose from the best of the :func:`_starts`; of two that fit equally (a pose and
     its mirror image in the plane of coplanar exits), the one lower along the weight."""
     weight = robot.weight[: robot.dimension]
     norm = float(np.linalg.norm(weight))
     down = weight / norm if norm > 0 else np.zeros(robot.dimension)
-    tries = [_row_poses(robot, offsets, data, rows, np.tile(q0, (rows.size, 1))) for q0 in _starts(robot)]
+    tries = [_row_poses(robot, geometry, offsets, data, rows, np.tile(q0, (rows.size, 1))) for q0 in _starts(robot)]
     costs = np.array([c for _, c in tries])
     best = costs.min(axis=0)
     height = np.array([-(q[:, : robot.dimension] @ down) for q, _ in tries])
     pick = np.argmin(np.where(costs <= best * 1.01 + 1e-12, height, np.inf), axis=0)
-    return np.stack([q for q, _ in tries])[pick, np.arange(rows.size)]
+    return np.stack([q for q, _ in tries])[pick, np.arange(rows.size)], costs[pick, np.arange(rows.size)]
 
 
-def _alternate(
+def _project(
     robot: Robot, data: Measurements, rows: np.ndarray, offsets: np.ndarray, used: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, float]:
-    """:data:`START_ROUNDS` rounds of per-row poses (multi-start in the first, warm afterwards)
-    and median offsets over the rows ``used``: ``(poses (N, s), offsets (n,), rms)``."""
+    """Offsets by Gauss–Newton on the variable projection of the nominal-geometry problem: each
+    step refits every row's pose (multi-start in the first, warm afterwards), then moves the
+    offsets by the least-squares step of the residuals projected off each row's pose directions
+    (Golub & Pereyra 1973).  ``(poses (N, s), offsets (n,), rms over the rows used)``."""
+    n, s = robot.n_cables, robot.pose_size
     poses = np.where(data.pose_known[:, None], data.poses, 0.0)
     changed = np.flatnonzero(data.changes)
     offsets = offsets.copy()
-    for round_ in range(START_ROUNDS):
+    unknown = np.isin(used, rows)
+    rr = np.repeat(used, n)
+    cc = np.tile(np.arange(n), used.size)
+    mask = data.measured[used]
+    nominal = (robot.exits, robot.anchors)
+    for step in range(START_ROUNDS):
         if rows.size:
-            if round_ == 0:
-                poses[rows] = _multistart_poses(robot, offsets, data, rows)
+            if step == 0:
+                poses[rows] = _multistart_poses(robot, nominal, offsets, data, rows)[0]
             else:
-                poses[rows] = _row_poses(robot, offsets, data, rows, poses[rows])[0]
+                poses[rows], cost = _row_poses(robot, nominal, offsets, data, rows, poses[rows])
+                # rows that fit far worse than the others may sit in another branch: start them afresh
+                stray = rows[cost > RESTART_FACTOR * np.median(cost)]
+                if stray.size:
+                    fresh, fresh_cost = _multistart_poses(robot, nominal, offsets, data, stray)
+                    take = fresh_cost < cost[np.searchsorted(rows, stray)]
+                    poses[stray[take]] = fresh[take]
+        length, _, _, dq = partials(robot, robot.exits, robot.anchors, poses, rr, cc)
+        r = (length.reshape(-1, n) - np.where(data.changes, offsets, 0.0) - data.values[used]) * mask
         if not changed.size:
             break
-        rr = np.repeat(used, changed.size)
-        cc = np.tile(changed, used.size)
-        length = partials(robot, robot.exits, robot.anchors, poses, rr, cc)[0].reshape(used.size, changed.size)
-        for j, i in enumerate(changed):
-            col = data.measured[used, i]
-            if col.any():
-                offsets[i] = np.median(length[col, j] - data.values[used[col], i])
-    rr, cc = np.nonzero(data.measured[used])
-    length = partials(robot, robot.exits, robot.anchors, poses, used[rr], cc)[0]
-    r = length - np.where(data.changes[cc], offsets[cc], 0.0) - data.values[used[rr], cc]
-    return poses, offsets, float(np.sqrt(np.mean(r * r))) if r.size else 0.0
+        Jq = dq.reshape(-1, n, s) * (mask & unknown[:, None])[..., None]
+        A = np.einsum("kis,kit->kst", Jq, Jq) + 1e-12 * np.eye(s)
+        # the residuals and the offsets' columns (−1 on each changed cable's cell), projected off
+        # each row's pose directions
+        Jo = -(mask[:, :, None] & (np.arange(n)[:, None] == changed[None, :])[None]).astype(float)
+        X = np.linalg.solve(A, np.einsum("kis,kic->ksc", Jq, np.concatenate([Jo, r[..., None]], axis=2)))
+        proj = np.concatenate([Jo, r[..., None]], axis=2) - np.einsum("kis,ksc->kic", Jq, X)
+        H = np.einsum("kic,kid->cd", proj[..., :-1], proj[..., :-1])
+        g = np.einsum("kic,ki->c", proj[..., :-1], proj[..., -1])
+        delta = np.linalg.lstsq(H, g, rcond=None)[0]
+        offsets[changed] -= delta
+        if np.abs(delta).max() < START_TOL:
+            break
+    return poses, offsets, float(np.sqrt((r * r).sum() / max(int(mask.sum()), 1)))
 
 
 def _start(robot: Robot, data: Measurements, rows: np.ndarray, keep: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
@@ -358,37 +404,59 @@ def _start(robot: Robot, data: Measurements, rows: np.ndarray, keep: np.ndarray)
     used = np.flatnonzero(keep & data.measured.any(axis=1))
     changed = np.flatnonzero(data.changes)
     if not changed.size:
-        poses, offsets, _ = _alternate(robot, data, rows, np.zeros(robot.n_cables), used)
+        poses, offsets, _ = _project(robot, data, rows, np.zeros(robot.n_cables), used)
         return [(poses, offsets)]
     from taut.kinematics import cable_lengths
 
-    # hypotheses: a central row (its changes nearest the medians) was measured at a start pose
+    # hypotheses: the medians of the changes were measured at the centroid, or a central row was
     values = np.where(data.measured, data.values, np.nan)[used]
     median = np.nanmedian(values, axis=0)
     distance = np.nansum((np.nan_to_num(values - median, nan=0.0)) ** 2, axis=1)
     central = used[np.argsort(distance)[:START_ROWS]]
     sample = used[:: max(1, used.size // SCORE_ROWS)]
     sample_unknown = np.intersect1d(sample, rows)
+    start = _starts(robot)[0]
+    lengths = np.atleast_2d(cable_lengths(robot, start))[0]
     hypotheses = []
-    for r in central:
-        for q0 in _starts(robot):
-            offsets = np.zeros(robot.n_cables)
-            lengths = np.atleast_2d(cable_lengths(robot, q0))[0]
-            measured = data.measured[r]
-            offsets[changed] = np.where(
-                measured[changed], lengths[changed] - data.values[r, changed], lengths[changed] - median[changed]
-            )
-            _, offsets, rms = _alternate(robot, data, sample_unknown, offsets, sample)
-            hypotheses.append((rms, offsets))
+    for r in [-1, *central]:
+        offsets = np.zeros(robot.n_cables)
+        measured = data.measured[r] if r >= 0 else np.zeros(robot.n_cables, bool)
+        offsets[changed] = np.where(
+            measured[changed], lengths[changed] - data.values[r, changed], lengths[changed] - median[changed]
+        )
+        poses, offsets, rms = _project(robot, data, sample_unknown, offsets, sample)
+        hypotheses.append((rms, offsets, poses))
     hypotheses.sort(key=lambda h: h[0])
-    out = []
-    for _, offsets in hypotheses[:FITTED_STARTS]:
-        poses, offsets, _ = _alternate(robot, data, rows, offsets, used)
-        out.append((poses, offsets))
-    return out
+    if sample.size == used.size:
+        return [(poses, offsets) for _, offsets, poses in hypotheses[:FITTED_STARTS]]
+    return [_project(robot, data, rows, offsets, used)[:2] for _, offsets, _ in hypotheses[:FITTED_STARTS]]
 
 
-def _fit(problem: Problem, x0: np.ndarray, loss: str, scale: float, dense: bool) -> Any:
+def _reseed(
+    problem: Problem, data: Measurements, fit: Any, x: np.ndarray, loss: tuple[str, float], dense: bool
+) -> tuple[Any, np.ndarray, bool, int]:
+    """Refit every unknown pose from the :func:`_starts` on the fitted geometry; where one fits
+    its row markedly better (a row left in another branch of its pose, which its few redundant
+    cables fit almost as well), take it and fit everything again.  ``(fit, x, moved, evaluations)``."""
+    L = problem.layout
+    exits, offsets, anchors, poses = problem.unpack(x)
+    rows = L.unknown_rows
+    if not rows.size:
+        return fit, x, False, 0
+    fresh, cost = _multistart_poses(L.robot, (exits, anchors), offsets, data, rows)
+    r = problem.residuals(x)
+    now = np.bincount(L.rows, r * r, minlength=len(L.known_poses))[rows]
+    better = cost < RESEED_GAIN * now
+    if not better.any():
+        return fit, x, False, 0
+    poses[rows[better]] = fresh[better]
+    trial = _fit(problem, L.pack(exits, offsets, anchors, poses), loss[0], loss[1], dense)
+    if trial.cost >= fit.cost:
+        return fit, x, False, trial.nfev
+    return trial, trial.x, True, trial.nfev
+
+
+def _fit(problem: Problem, x0: np.ndarray, loss: str, scale: float, dense: bool, budget: int | None = None) -> Any:
     from scipy.optimize import least_squares
 
     jac = (lambda x: problem.jacobian(x).toarray()) if dense else problem.jacobian
@@ -407,8 +475,21 @@ def _fit(problem: Problem, x0: np.ndarray, loss: str, scale: float, dense: bool)
         xtol=1e-12,
         ftol=1e-12,
         gtol=1e-10,
-        max_nfev=MAX_EVALUATIONS * max(len(x0), 1),
+        max_nfev=budget or MAX_EVALUATIONS * max(len(x0), 1),
     )
+
+
+def _standardized(problem: Problem, x: np.ndarray) -> np.ndarray:
+    """Each residual over ``√(1 − h)``, ``h`` its leverage in its row's pose block: a row's few
+    redundant cables leave its residuals far smaller than the noise, unequally.  0 for a
+    residual that its row's pose fits exactly (no redundancy: no outlier can be seen there)."""
+    L = problem.layout
+    residual = problem.residuals(x)
+    _, Jq, _ = problem.blocks(x)
+    A = np.linalg.pinv(np.einsum("kis,kit->kst", Jq, Jq), rcond=1e-12, hermitian=True)
+    h = np.einsum("kis,kst,kit->ki", Jq, A, Jq)[L.rows, L.cables]
+    free = 1.0 - h
+    return np.where(free > 1e-6, residual / np.sqrt(np.maximum(free, 1e-6)), 0.0)
 
 
 def _robust_sigma(r: np.ndarray) -> float:
@@ -501,24 +582,36 @@ def calibrate(
     problem = Problem(layout, robot.exits, robot.anchors)
     evaluations = 0
     best = None
-    for poses, offsets in _start(robot, data, layout.unknown_rows, keep):
+    starts = _start(robot, data, layout.unknown_rows, keep)
+    # each start is fitted on a short budget, the best one to convergence
+    for poses, offsets in starts:
         x = layout.pack(robot.exits, offsets, robot.anchors, poses)
+        loss = ("linear", 1.0)
         if robust is not None:
             for f_scale in (scale, None):
                 if f_scale is None:
                     f_scale = max(2.0 * _robust_sigma(problem.residuals(x)), 1e-12)
-                fit = _fit(problem, x, robust, f_scale, dense)
+                loss = (robust, f_scale)
+                fit = _fit(problem, x, *loss, dense, None if len(starts) == 1 else START_EVALUATIONS)
                 x, evaluations = fit.x, evaluations + fit.nfev
         else:
-            fit = _fit(problem, x, "linear", 1.0, dense)
+            fit = _fit(problem, x, *loss, dense, None if len(starts) == 1 else START_EVALUATIONS)
             x, evaluations = fit.x, evaluations + fit.nfev
         if best is None or fit.cost < best[0].cost:
-            best = (fit, x)
+            best = (fit, x, loss)
     assert best is not None
-    fit, x = best
-    residual = problem.residuals(x)
-    noise = _robust_sigma(residual)
-    bad = np.abs(residual) > OUTLIER_THRESHOLD * noise if noise > 0 else np.zeros(residual.size, bool)
+    fit, x, loss = best
+    if len(starts) > 1:
+        fit = _fit(problem, x, *loss, dense)
+        x, evaluations = fit.x, evaluations + fit.nfev
+    for _ in range(RESEED_ROUNDS):
+        fit, x, moved, spent = _reseed(problem, data, fit, x, loss, dense)
+        evaluations += spent
+        if not moved:
+            break
+    scaled = _standardized(problem, x)
+    noise = _robust_sigma(scaled)
+    bad = np.abs(scaled) > OUTLIER_THRESHOLD * noise if noise > 0 else np.zeros(scaled.size, bool)
     outliers = np.unique(layout.rows[bad])
     if robust is not None:
         keep[outliers] = False
