@@ -363,19 +363,28 @@ def identifiability(
     >>> rep.identifiable, rep.undetermined[0]
     (False, 'all poses on one line: each exit can turn about that line')
     """
-    from taut.kinematics import as_poses, cable_lengths
+    from taut.kinematics import as_poses
 
     arr, _ = as_poses(robot, poses)
-    lengths = np.atleast_2d(cable_lengths(robot, arr))
+    problem, x, data = design(robot, arr, estimate=estimate, changes=changes, known_poses=known_poses)
+    return report(problem, x, data, np.ones(data.rows, bool)).result
+
+
+def design(
+    robot: Robot, poses: np.ndarray, *, estimate: object, changes: bool, known_poses: bool
+) -> tuple[Problem, np.ndarray, Measurements]:
+    """The calibration problem of measuring every cable of the nominal ``robot`` at checked
+    ``poses``, and its point ``x`` at the nominal robot (zero residuals)."""
+    from taut.kinematics import cable_lengths
+
+    lengths = np.atleast_2d(cable_lengths(robot, poses))
     data = measurements(
         robot,
         None if changes else lengths,
         changes=lengths if changes else None,
-        poses=arr if known_poses else None,
+        poses=poses if known_poses else None,
     )
     exits_on, anchors_on = parse_estimate(robot, estimate, data)
     layout = Layout.build(robot, data, exits=exits_on, anchors=anchors_on)
     problem = Problem(layout, robot.exits, robot.anchors)
-    offsets = np.zeros(robot.n_cables)
-    x = layout.pack(robot.exits, offsets, robot.anchors, arr)
-    return report(problem, x, data, np.ones(data.rows, bool)).result
+    return problem, layout.pack(robot.exits, np.zeros(robot.n_cables), robot.anchors, poses), data

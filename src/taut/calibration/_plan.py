@@ -24,16 +24,16 @@ import numpy as np
 
 from taut._checks import as_count, as_number, as_rng
 from taut._results import Result
-from taut.calibration._data import measurements, refuse_unsupported
+from taut.calibration._data import refuse_unsupported
 from taut.calibration._identify import (
     Identifiability,
+    design,
     gauge_basis,
     gauge_directions,
     identifiability,
     parse_estimate,
     row_information,
 )
-from taut.calibration._model import Layout, Problem
 from taut.errors import TautError
 from taut.model import Robot
 
@@ -163,19 +163,8 @@ def plan_poses(
         raise TautError(
             f"{robot.name}: {len(pool)} of the random candidate poses meet {condition}; fewer than the {n} asked"
         )
-    from taut.kinematics import cable_lengths
-
-    lengths = np.atleast_2d(cable_lengths(robot, pool))
-    data = measurements(
-        robot,
-        None if changes else lengths,
-        changes=lengths if changes else None,
-        poses=pool if known_poses else None,
-    )
-    exits_on, anchors_on = parse_estimate(robot, estimate, data)
-    layout = Layout.build(robot, data, exits=exits_on, anchors=anchors_on)
-    problem = Problem(layout, robot.exits, robot.anchors)
-    x = layout.pack(robot.exits, np.zeros(robot.n_cables), robot.anchors, pool)
+    problem, x, _ = design(robot, pool, estimate=estimate, changes=changes, known_poses=known_poses)
+    layout = problem.layout
     S, _ = row_information(problem, x)
     Z = gauge_basis(gauge_directions(layout, robot.exits, robot.anchors), layout.n_params)
     T = np.einsum("pa,kpq,qb->kab", Z, S, Z)
