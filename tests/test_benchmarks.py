@@ -24,6 +24,11 @@ BENCH = Path(__file__).parents[1] / "benchmarks"
         ("bench_workspace.py", ["--resolution", "6", "--check-resolution", "3"], "poses where the verdicts differ: 0"),
         ("bench_wrapping.py", ["--samples", "2001"], "state updates per second per cable"),
         ("bench_check.py", ["--poses", "2000", "--loop", "30"], "poses where the verdicts differ: 0"),
+        (
+            "bench_calibrate.py",
+            ["--rows", "200,400", "--trials", "1", "--plan", "20", "--dense-poses", "30", "--repeat", "1"],
+            "random / planned",
+        ),
         pytest.param(
             "bench_plan.py",
             ["--repeat", "1", "--seeds", "2", "--pose-seeds", "1", "--ompl-time", "2"],

@@ -29,6 +29,7 @@ LAYERS = {
     "dynamics": 4,
     "workspace": 5,
     "atlas": 6,
+    "calibration": 6,
     "viz": 7,
     "demo": 8,
     "cli": 9,

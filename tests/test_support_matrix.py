@@ -248,6 +248,32 @@ def view(s: Subject, tmp: Path):
     return ["view", s.robot, f"--pose={numbers(s.pose)}", "--out", str(out)], check
 
 
+def calibrate(s: Subject, tmp: Path):
+    """Noise-free lengths at 30 poses around the subject's: the fit reproduces them."""
+    from taut.errors import TautError
+    from taut.kinematics import cable_lengths
+
+    robot = load(s.robot)
+    rng = np.random.default_rng(0)
+    poses = np.tile(np.asarray(s.pose, float), (30, 1))
+    poses[:, : robot.dimension] += rng.uniform(-0.1, 0.1, (30, robot.dimension))
+    try:
+        lengths = cable_lengths(robot, poses)
+    except TautError:  # a kind the command refuses before it reads the lengths
+        lengths = np.ones((30, robot.n_cables))
+    data = tmp / "data.csv"
+    data.write_text(
+        ",".join(f"l{i + 1}" for i in range(robot.n_cables)) + "\n" + "".join(numbers(row) + "\n" for row in lengths)
+    )
+
+    def check(d: dict, s: Subject) -> None:
+        robot = load(s.robot)
+        assert np.shape(d["exits"]) == robot.exits.shape
+        assert max(d["residual_rms"]) < 1e-6
+
+    return ["calibrate", s.robot, "--data", str(data)], check
+
+
 def convert(suffix: str) -> Query:
     def query(s: Subject, tmp: Path):
         out = tmp / f"robot{suffix}"
@@ -279,6 +305,7 @@ QUERIES: dict[str, Query] = {
     "taut atlas": atlas,
     "taut trajectory": trajectory,
     "taut check": check_command,
+    "taut calibrate": calibrate,
     "taut simulate": simulate,
     "taut view": view,
     "taut convert to taut YAML": convert(".yaml"),

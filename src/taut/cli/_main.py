@@ -24,6 +24,7 @@ from types import ModuleType
 from typing import NoReturn
 
 from taut.cli import _atlas as atlas
+from taut.cli import _calibrate as calibrate
 from taut.cli import _check as check
 from taut.cli import _convert as convert
 from taut.cli import _demo as demo
@@ -57,6 +58,7 @@ COMMANDS: tuple[tuple[str, ModuleType], ...] = (
     ("atlas", atlas),
     ("trajectory", trajectory),
     ("check", check),
+    ("calibrate", calibrate),
     ("simulate", simulate),
     ("view", view),
     ("convert", convert),

@@ -1,0 +1,713 @@
+"""Calibration: a built robot's exits, encoder offsets and anchors, and the unknown poses of its
+measurements, by nonlinear least squares over all of them at once.
+
+The method is the self-calibration of Borgstrom et al. (2009) and the auto-calibration of
+Miermeister & Pott (2012): the redundant cable lengths measured at poses that are unknown (or
+measured by a tracker) determine the geometry and the encoder offsets together.  The problem is
+solved as a bundle adjustment (Triggs et al. 2000): ``scipy.optimize.least_squares`` (trust
+region reflective) with the analytic sparse Jacobian of :mod:`taut.calibration._model`.
+
+Start.  The nominal robot is the start of its parameters; the poses and offsets start from a
+multi-start that needs no pose guess.  Every unknown pose is fitted to its own row on the nominal
+geometry (Levenberg–Marquardt per row, batched) from each of :data:`START_POSES` poses — the
+exits' centroid and six points around it along the axes — and keeps the best; the offsets of
+length changes then take a Gauss–Newton step of the variable projection (the residuals projected
+off each row's pose directions; Golub & Pereyra 1973), and the two alternate up to
+:data:`START_ROUNDS` times, rows that fit far worse than the others restarted from every start
+pose.  The offsets start from hypotheses — the medians of the changes measured at the centroid,
+or one of the :data:`START_ROWS` most central rows measured there — each fitted on a short
+budget; the best is fitted to convergence.  Then rows left in another branch of their pose are
+restarted on the fitted geometry and everything refitted (:data:`RESEED_ROUNDS`).  Where two
+starts fit a row equally (a pose and its mirror image in the plane of coplanar exits), the one
+lower along the platform's weight is kept: a suspended platform hangs below its exits.
+
+Robust fit.  With ``robust``, a first fit with that loss (``soft_l1`` or ``huber``, scale
+:data:`ROBUST_SCALE`), a second with the scale set to twice the residuals' robust standard
+deviation (1.4826 × their median absolute value), then the rows with a residual beyond
+:data:`OUTLIER_THRESHOLD` of those deviations are flagged as outliers and the others refitted
+by plain least squares, which gives the estimate and its standard deviations.  Without it, the
+same rows are flagged but kept.
+
+Gauge.  With no measured pose, a rigid motion of the exits and every pose together (and, when
+the anchors are estimated, a change of the platform frame) changes no length.  The rule: after
+the fit, the estimated exits are moved by the proper rigid motion that best aligns them onto
+the nominal ones in the least-squares sense (Kabsch 1976), and the poses with them; estimated
+anchors likewise onto the nominal anchors, the poses' frames changing to match.  The standard
+deviations are those of that gauge: ``σ² Z (Zᵀ S Z)⁻¹ Zᵀ`` with ``S`` the information about
+the parameters once the poses are eliminated and ``Z`` the directions that the alignment leaves
+free (:mod:`taut.calibration._identify`), ``σ²`` the residual variance (sum of squares over
+the degrees of freedom).
+
+References
+----------
+.. [1] P. H. Borgstrom et al., "NIMS-PL: A Cable-Driven Robot With Self-Calibration
+   Capabilities", IEEE Transactions on Robotics 25(5), 2009, the self-calibration section.
+   (docs/references.bib: borgstrom2009)
+.. [2] P. Miermeister, A. Pott, "Auto-Calibration Method for Overconstrained Cable-Driven
+   Parallel Robots", IEEE ICRA 2012, the estimation of poses and length offsets.
+   (docs/references.bib: miermeister2012)
+.. [3] B. Triggs, P. F. McLauchlan, R. I. Hartley, A. W. Fitzgibbon, "Bundle Adjustment — A
+   Modern Synthesis", Vision Algorithms: Theory and Practice, LNCS 1883, Springer, 2000, §6
+   and §9. (docs/references.bib: triggs2000)
+.. [4] W. Kabsch, "A solution for the best rotation to relate two sets of vectors", Acta
+   Crystallographica A 32, 1976. (docs/references.bib: kabsch1976)
+.. [5] G. H. Golub, V. Pereyra, "The differentiation of pseudo-inverses and nonlinear least
+   squares problems whose variables separate", SIAM Journal on Numerical Analysis 10(2), 1973.
+   (docs/references.bib: golub1973)
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from taut._checks import as_count, as_number
+from taut._results import Result, jsonable
+from taut.calibration._data import Measurements, refuse_unsupported
+from taut.calibration._identify import Identifiability, parse_estimate, report
+from taut.calibration._model import Layout, Problem, frames, partials
+from taut.errors import TautError
+from taut.geometry import angles_from_matrix
+from taut.model import Robot
+
+#: Robust losses ``robust`` takes (``scipy.optimize.least_squares``'s names).
+ROBUST_LOSSES = ("soft_l1", "huber")
+
+#: The scale [m] of the first robust fit: residuals beyond it count as outliers' (a few mm of
+#: noise, centimetres of nominal error fitted away in the same run).
+ROBUST_SCALE = 0.01
+
+#: A row is an outlier when one of its residuals, divided by ``√(1 − h)`` (``h`` its leverage in
+#: its row's pose block), exceeds this many robust standard deviations of all of them (1.4826 ×
+#: their median absolute value): under Gaussian noise one residual in 1.7 million goes that far.
+OUTLIER_THRESHOLD = 5.0
+
+#: Starting poses tried for every unknown pose: the exits' centroid and ± along each axis.
+START_POSES = 7
+
+#: Weight [m/rad] of the start's prior that keeps each row's orientation near zero: without it a
+#: row fitted on the nominal geometry with wrong offsets can turn its platform half a turn.
+START_PRIOR = 0.05
+
+#: Central rows (their changes nearest the medians) that the start's offset hypotheses take as
+#: measured at the exits' centroid.
+START_ROWS = 2
+
+#: Rows (at most) on which the start scores its offset hypotheses.
+SCORE_ROWS = 200
+
+#: Residual evaluations each start's fit may take before the best one is fitted to convergence.
+START_EVALUATIONS = 30
+
+#: Rounds of re-seeding the poses after the fit (:func:`_reseed`), and the factor by which a
+#: row's new pose must lower its squared residuals to be taken.
+RESEED_ROUNDS = 3
+RESEED_GAIN = 0.5
+
+#: Hypotheses of the start fitted by least squares: the best one's fit is kept.
+FITTED_STARTS = 3
+
+#: The start's offsets have converged when a step moves none by more than this [m].
+START_TOL = 1e-6
+
+#: A row whose squared residuals exceed this many times the median row's is started afresh
+#: from every start pose in the next step of the start.
+RESTART_FACTOR = 4.0
+
+#: Gauss–Newton steps of the start's offsets (each after a refit of the rows' poses).
+START_ROUNDS = 12
+
+#: Iterations of the per-row Levenberg–Marquardt of the start.
+START_ITERATIONS = 30
+
+#: Budget of residual evaluations of a least-squares fit, per unknown (scipy's default is 100
+#: per unknown for the dense solver).
+MAX_EVALUATIONS = 200
+
+#: The rule that fixes the gauge, as the result and the CLI state it.
+GAUGE_RULE = (
+    "no pose measured: the estimated exits are aligned onto the nominal ones by the least-squares "
+    "rigid motion (Kabsch), the poses moved with them"
+)
+GAUGE_RULE_ANCHORS = "; the estimated anchors likewise onto the nominal anchors (the platform frame)"
+GAUGE_MEASURED = "measured poses fix the frame"
+GAUGE_FIXED_EXITS = "the nominal exits, not estimated, fix the frame"
+
+
+@dataclass(frozen=True)
+class CalibrationResult(Result):
+    """The estimate of :func:`calibrate`.
+
+    Attributes
+    ----------
+    robot_name : str
+    estimate : tuple of str
+        What was estimated (``exits``, ``offsets``, ``anchors``).
+    exits, exits_std : ndarray, shape (n, d)
+        Estimated exit points [m] (the nominal ones where not estimated) and their standard
+        deviations (0 where not estimated, ``inf`` where the data do not determine them).
+    offsets, offsets_std : ndarray, shape (n,)
+        Encoder offsets [m]: the length at the encoder's zero of each cable measured by length
+        changes (0 for the others), ``length = change + offset``.
+    anchors, anchors_std : ndarray, shape (n, d)
+        Anchors in the platform frame [m] and their standard deviations.
+    poses : ndarray, shape (N, pose_size)
+        The pose of every row: measured, or estimated.
+    pose_known : ndarray of bool, shape (N,)
+    residual_rms : ndarray, shape (n,)
+        Root-mean-square residual of each cable over the rows used [m] (0 for a cable never
+        measured).
+    sigma : float
+        Residual standard deviation [m] (sum of squares over the degrees of freedom; ``inf``
+        with none).
+    outliers : tuple of int
+        0-based rows flagged as outliers (:data:`OUTLIER_THRESHOLD`); left out of the final
+        fit when ``robust``.
+    robust : str or None
+    gauge : str
+        The rule that fixed the frame.
+    identifiability : Identifiability
+    converged : bool
+        The final least-squares fit met its tolerance within its budget.
+    evaluations : int
+        Residual evaluations of all fits.
+    elapsed_s : float
+    """
+
+    robot_name: str
+    estimate: tuple[str, ...]
+    exits: np.ndarray
+    exits_std: np.ndarray
+    offsets: np.ndarray
+    offsets_std: np.ndarray
+    anchors: np.ndarray
+    anchors_std: np.ndarray
+    poses: np.ndarray
+    pose_known: np.ndarray
+    residual_rms: np.ndarray
+    sigma: float
+    outliers: tuple[int, ...]
+    robust: str | None
+    gauge: str
+    identifiability: Identifiability
+    converged: bool
+    evaluations: int
+    elapsed_s: float
+
+    @property
+    def identifiable(self) -> bool:
+        """Whether the data determine every estimated parameter (:class:`Identifiability`)."""
+        return self.identifiability.identifiable
+
+    def as_dict(self) -> dict[str, Any]:
+        """The fields in JSON types, with ``identifiable`` and ``undetermined`` at the top level."""
+        out = super().as_dict()
+        out["identifiable"] = self.identifiability.identifiable
+        out["undetermined"] = jsonable(self.identifiability.undetermined)
+        return out
+
+    def calibrated_robot(self, robot: Robot) -> Robot:
+        """``robot`` (the nominal robot of the fit) with the estimated exits and anchors written
+        in and a description saying how it was calibrated.
+
+        Parameters
+        ----------
+        robot : Robot
+
+        Returns
+        -------
+        Robot
+
+        Examples
+        --------
+        See :func:`calibrate`.
+        """
+        cables = []
+        for i, c in enumerate(robot.cables):
+            update: dict[str, Any] = {"exit": tuple(float(v) for v in self.exits[i])}
+            if "anchors" in self.estimate:
+                update["anchor"] = tuple(float(v) for v in self.anchors[i])
+            cables.append(c.model_copy(update=update))
+        rows = len(self.poses) - len(self.outliers) if self.robust else len(self.poses)
+        note = (
+            f"calibrated by taut calibrate: {', '.join(self.estimate)} from {rows} rows by least squares"
+            f"{f' ({self.robust} loss)' if self.robust else ''}, residual {self.sigma * 1000:.3g} mm; "
+            f"gauge: {self.gauge}; {'identifiable' if self.identifiable else 'NOT identifiable'}"
+        )
+        return robot.model_copy(update={"cables": tuple(cables), "description": note})
+
+
+def kabsch(source: np.ndarray, target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The proper rigid motion ``x ↦ Q x + t`` that best maps ``source (n, d)`` onto
+    ``target`` in the least-squares sense (Kabsch 1976): ``(Q, t)``."""
+    cs, ct = source.mean(axis=0), target.mean(axis=0)
+    U, _, Vt = np.linalg.svd((source - cs).T @ (target - ct))
+    D = np.eye(source.shape[1])
+    D[-1, -1] = np.sign(np.linalg.det(Vt.T @ U.T)) or 1.0
+    Q = Vt.T @ D @ U.T
+    return Q, ct - Q @ cs
+
+
+def _move_poses(robot: Robot, poses: np.ndarray, Q: np.ndarray, t: np.ndarray, body: bool) -> np.ndarray:
+    """Poses after the world moves by ``x ↦ Q x + t`` (``body`` False), or after the platform
+    frame changes so that anchors become ``Q r + t`` (``body`` True)."""
+    d = robot.dimension
+    p, R, _ = frames(robot, poses)
+    out = poses.copy()
+    if body:
+        Rn = R @ Q.T
+        out[:, :d] = p - Rn @ t
+    else:
+        Rn = Q @ R
+        out[:, :d] = p @ Q.T + t
+    if not robot.is_point_mass:
+        if d == 2:
+            out[:, 2] = poses[:, 2] + (-1.0 if body else 1.0) * np.arctan2(Q[1, 0], Q[0, 0])
+        else:
+            out[:, 3:6] = angles_from_matrix(Rn, robot.orientation)
+    return out
+
+
+def _row_poses(
+    robot: Robot,
+    geometry: tuple[np.ndarray, np.ndarray],
+    offsets: np.ndarray,
+    data: Measurements,
+    rows: np.ndarray,
+    start: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Each row's pose fitted to its own cables on the ``geometry`` (exits, anchors), from
+    ``start (U, s)``: batched Levenberg–Marquardt with a weak prior holding the orientation near
+    zero (:data:`START_PRIOR`); ``(poses (U, s), sum of squared residuals (U,))``."""
+    n, s, d = robot.n_cables, robot.pose_size, robot.dimension
+    U = rows.size
+    mask = data.measured[rows]
+    target = data.values[rows] + np.where(data.changes, offsets, 0.0)
+    rr = np.repeat(np.arange(U), n)
+    cc = np.tile(np.arange(n), U)
+    prior = np.zeros((s, s))
+    prior[d:, d:] = START_PRIOR**2 * np.eye(s - d)
+
+    def evaluate(q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        length, _, _, dq = partials(robot, geometry[0], geometry[1], q, rr, cc)
+        r = (length.reshape(U, n) - target) * mask
+        cost = (r * r).sum(axis=1) + START_PRIOR**2 * (q[:, d:] ** 2).sum(axis=1)
+        return r, dq.reshape(U, n, s) * mask[..., None], cost
+
+    q = start.copy()
+    r, J, cost = evaluate(q)
+    lam = np.full(U, 1e-3)
+    for _ in range(START_ITERATIONS):
+        A = np.einsum("kis,kit->kst", J, J) + prior
+        g = np.einsum("kis,ki->ks", J, r)
+        g[:, d:] += START_PRIOR**2 * q[:, d:]
+        diag = np.einsum("kss->ks", A)
+        A = A + (lam[:, None] * diag + 1e-12)[:, :, None] * np.eye(s)
+        trial = q - np.linalg.solve(A, g[..., None])[..., 0]
+        r2, J2, cost2 = evaluate(trial)
+        better = cost2 < cost
+        q = np.where(better[:, None], trial, q)
+        r = np.where(better[:, None], r2, r)
+        J = np.where(better[:, None, None], J2, J)
+        cost = np.where(better, cost2, cost)
+        lam = np.where(better, lam / 3, lam * 4)
+    return q, (r * r).sum(axis=1)
+
+
+def _starts(robot: Robot) -> np.ndarray:
+    """The :data:`START_POSES` starting poses: the exits' centroid and ± along each axis, a
+    third of the exits' largest extent away, zero orientation."""
+    from taut.kinematics import default_guess
+
+    centre = default_guess(robot)
+    d = robot.dimension
+    extent = float(np.ptp(robot.exits, axis=0).max()) or 1.0
+    out = [centre]
+    for k in range(d):
+        for sign in (-1.0, 1.0):
+            q = centre.copy()
+            q[k] += sign * extent / 3
+            out.append(q)
+    return np.array(out)
+
+
+def _multistart_poses(
+    robot: Robot, geometry: tuple[np.ndarray, np.ndarray], offsets: np.ndarray, data: Measurements, rows: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Each row's pose from the best of the :func:`_starts`; of two that fit equally (a pose and
+    its mirror image in the plane of coplanar exits), the one lower along the weight."""
+    weight = robot.weight[: robot.dimension]
+    norm = float(np.linalg.norm(weight))
+    down = weight / norm if norm > 0 else np.zeros(robot.dimension)
+    tries = [_row_poses(robot, geometry, offsets, data, rows, np.tile(q0, (rows.size, 1))) for q0 in _starts(robot)]
+    costs = np.array([c for _, c in tries])
+    best = costs.min(axis=0)
+    height = np.array([-(q[:, : robot.dimension] @ down) for q, _ in tries])
+    pick = np.argmin(np.where(costs <= best * 1.01 + 1e-12, height, np.inf), axis=0)
+    return np.stack([q for q, _ in tries])[pick, np.arange(rows.size)], costs[pick, np.arange(rows.size)]
+
+
+def _project(
+    robot: Robot, data: Measurements, rows: np.ndarray, offsets: np.ndarray, used: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, float]:
+    """Offsets by Gauss–Newton on the variable projection of the nominal-geometry problem: each
+    step refits every row's pose (multi-start in the first, warm afterwards), then moves the
+    offsets by the least-squares step of the residuals projected off each row's pose directions
+    (Golub & Pereyra 1973).  ``(poses (N, s), offsets (n,), rms over the rows used)``."""
+    n, s = robot.n_cables, robot.pose_size
+    poses = np.where(data.pose_known[:, None], data.poses, 0.0)
+    changed = np.flatnonzero(data.changes)
+    offsets = offsets.copy()
+    unknown = np.isin(used, rows)
+    rr = np.repeat(used, n)
+    cc = np.tile(np.arange(n), used.size)
+    mask = data.measured[used]
+    nominal = (robot.exits, robot.anchors)
+    for step in range(START_ROUNDS):
+        if rows.size:
+            if step == 0:
+                poses[rows] = _multistart_poses(robot, nominal, offsets, data, rows)[0]
+            else:
+                poses[rows], cost = _row_poses(robot, nominal, offsets, data, rows, poses[rows])
+                # rows that fit far worse than the others may sit in another branch: start them afresh
+                stray = rows[cost > RESTART_FACTOR * np.median(cost)]
+                if stray.size:
+                    fresh, fresh_cost = _multistart_poses(robot, nominal, offsets, data, stray)
+                    take = fresh_cost < cost[np.searchsorted(rows, stray)]
+                    poses[stray[take]] = fresh[take]
+        length, _, _, dq = partials(robot, robot.exits, robot.anchors, poses, rr, cc)
+        r = (length.reshape(-1, n) - np.where(data.changes, offsets, 0.0) - data.values[used]) * mask
+        if not changed.size:
+            break
+        Jq = dq.reshape(-1, n, s) * (mask & unknown[:, None])[..., None]
+        A = np.einsum("kis,kit->kst", Jq, Jq) + 1e-12 * np.eye(s)
+        # the residuals and the offsets' columns (−1 on each changed cable's cell), projected off
+        # each row's pose directions
+        Jo = -(mask[:, :, None] & (np.arange(n)[:, None] == changed[None, :])[None]).astype(float)
+        X = np.linalg.solve(A, np.einsum("kis,kic->ksc", Jq, np.concatenate([Jo, r[..., None]], axis=2)))
+        proj = np.concatenate([Jo, r[..., None]], axis=2) - np.einsum("kis,ksc->kic", Jq, X)
+        H = np.einsum("kic,kid->cd", proj[..., :-1], proj[..., :-1])
+        g = np.einsum("kic,ki->c", proj[..., :-1], proj[..., -1])
+        delta = np.linalg.lstsq(H, g, rcond=None)[0]
+        offsets[changed] -= delta
+        if np.abs(delta).max() < START_TOL:
+            break
+    return poses, offsets, float(np.sqrt((r * r).sum() / max(int(mask.sum()), 1)))
+
+
+def _start(robot: Robot, data: Measurements, rows: np.ndarray, keep: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Start poses and offsets (module docstring): the best :data:`FITTED_STARTS` hypotheses,
+    each ``(poses (N, s), offsets (n,))``."""
+    used = np.flatnonzero(keep & data.measured.any(axis=1))
+    changed = np.flatnonzero(data.changes)
+    if not changed.size:
+        poses, offsets, _ = _project(robot, data, rows, np.zeros(robot.n_cables), used)
+        return [(poses, offsets)]
+    from taut.kinematics import cable_lengths
+
+    # hypotheses: the medians of the changes were measured at the centroid, or a central row was
+    values = np.where(data.measured, data.values, np.nan)[used]
+    median = np.nanmedian(values, axis=0)
+    distance = np.nansum((np.nan_to_num(values - median, nan=0.0)) ** 2, axis=1)
+    central = used[np.argsort(distance)[:START_ROWS]]
+    sample = used[:: max(1, used.size // SCORE_ROWS)]
+    sample_unknown = np.intersect1d(sample, rows)
+    start = _starts(robot)[0]
+    lengths = np.atleast_2d(cable_lengths(robot, start))[0]
+    hypotheses = []
+    for r in [-1, *central]:
+        offsets = np.zeros(robot.n_cables)
+        measured = data.measured[r] if r >= 0 else np.zeros(robot.n_cables, bool)
+        offsets[changed] = np.where(
+            measured[changed], lengths[changed] - data.values[r, changed], lengths[changed] - median[changed]
+        )
+        poses, offsets, rms = _project(robot, data, sample_unknown, offsets, sample)
+        hypotheses.append((rms, offsets, poses))
+    hypotheses.sort(key=lambda h: h[0])
+    if sample.size == used.size:
+        return [(poses, offsets) for _, offsets, poses in hypotheses[:FITTED_STARTS]]
+    return [_project(robot, data, rows, offsets, used)[:2] for _, offsets, _ in hypotheses[:FITTED_STARTS]]
+
+
+def _reseed(
+    problem: Problem, data: Measurements, fit: Any, x: np.ndarray, loss: tuple[str, float], dense: bool
+) -> tuple[Any, np.ndarray, bool, int]:
+    """Refit every unknown pose from the :func:`_starts` on the fitted geometry; where one fits
+    its row markedly better (a row left in another branch of its pose, which its few redundant
+    cables fit almost as well), take it and fit everything again.  ``(fit, x, moved, evaluations)``."""
+    L = problem.layout
+    exits, offsets, anchors, poses = problem.unpack(x)
+    rows = L.unknown_rows
+    if not rows.size:
+        return fit, x, False, 0
+    fresh, cost = _multistart_poses(L.robot, (exits, anchors), offsets, data, rows)
+    r = problem.residuals(x)
+    now = np.bincount(L.rows, r * r, minlength=len(L.known_poses))[rows]
+    better = cost < RESEED_GAIN * now
+    if not better.any():
+        return fit, x, False, 0
+    poses[rows[better]] = fresh[better]
+    trial = _fit(problem, L.pack(exits, offsets, anchors, poses), loss[0], loss[1], dense)
+    if trial.cost >= fit.cost:
+        return fit, x, False, trial.nfev
+    return trial, trial.x, True, trial.nfev
+
+
+def _fit(problem: Problem, x0: np.ndarray, loss: str, scale: float, dense: bool, budget: int | None = None) -> Any:
+    from scipy.optimize import least_squares
+
+    jac = (lambda x: problem.jacobian(x).toarray()) if dense else problem.jacobian
+    return least_squares(
+        problem.residuals,
+        x0,
+        jac=jac,
+        method="trf",
+        tr_solver="exact" if dense else "lsmr",
+        # LSMR's default tolerances leave the trust-region steps inexact on these ill-conditioned
+        # problems: thousands of iterations instead of ten
+        **({} if dense else {"tr_options": {"atol": 1e-12, "btol": 1e-12}}),
+        x_scale="jac",
+        loss=loss,
+        f_scale=scale,
+        xtol=1e-12,
+        ftol=1e-12,
+        gtol=1e-10,
+        max_nfev=budget or MAX_EVALUATIONS * max(len(x0), 1),
+    )
+
+
+def _standardized(problem: Problem, x: np.ndarray) -> np.ndarray:
+    """Each residual over ``√(1 − h)``, ``h`` its leverage in its row's pose block: a row's few
+    redundant cables leave its residuals far smaller than the noise, unequally.  0 for a
+    residual that its row's pose fits exactly (no redundancy: no outlier can be seen there)."""
+    L = problem.layout
+    residual = problem.residuals(x)
+    _, Jq, _ = problem.blocks(x)
+    A = np.linalg.pinv(np.einsum("kis,kit->kst", Jq, Jq), rcond=1e-12, hermitian=True)
+    h = np.einsum("kis,kst,kit->ki", Jq, A, Jq)[L.rows, L.cables]
+    free = 1.0 - h
+    return np.where(free > 1e-6, residual / np.sqrt(np.maximum(free, 1e-6)), 0.0)
+
+
+def _robust_sigma(r: np.ndarray) -> float:
+    return float(1.4826 * np.median(np.abs(r))) if r.size else 0.0
+
+
+def calibrate(
+    robot: Robot,
+    data: Measurements,
+    *,
+    estimate: tuple[str, ...] = ("exits", "offsets"),
+    robust: str | None = None,
+    scale: float = ROBUST_SCALE,
+    dense: bool = False,
+) -> CalibrationResult:
+    """Estimate a built robot's geometry from its own cable measurements (module docstring).
+
+    Parameters
+    ----------
+    robot : Robot
+        The nominal robot: the start of the estimated parameters and the value of the others.
+    data : Measurements
+        Rows of lengths or length changes, with measured poses where known
+        (:func:`read_measurements`, :func:`measurements`, :func:`simulate_measurements`).
+    estimate : sequence of str
+        From ``exits``, ``offsets`` (of the cables measured as changes: required with them),
+        ``anchors``; ``radii`` is refused (no modelled pulley has a radius).
+    robust : {None, "soft_l1", "huber"}
+        Robust loss of the outlier-resistant first fits.
+    scale : float
+        The first robust fit's residual scale [m].
+    dense : bool
+        Solve with a dense Jacobian (the benchmark's baseline; same answer, slower).
+
+    Returns
+    -------
+    CalibrationResult
+
+    Raises
+    ------
+    UnsupportedRobotError
+        A robot with swivelling pulleys, jointed bodies or obstacles; ``radii``; anchors of a
+        point mass.
+    TautError
+        An unknown estimate or loss; changes measured without estimating their offsets.
+
+    References
+    ----------
+    .. [1] P. H. Borgstrom et al., "NIMS-PL: A Cable-Driven Robot With Self-Calibration
+       Capabilities", IEEE Transactions on Robotics 25(5), 2009, the self-calibration section.
+       (docs/references.bib: borgstrom2009)
+    .. [2] P. Miermeister, A. Pott, "Auto-Calibration Method for Overconstrained Cable-Driven
+       Parallel Robots", IEEE ICRA 2012. (docs/references.bib: miermeister2012)
+    .. [3] B. Triggs, P. F. McLauchlan, R. I. Hartley, A. W. Fitzgibbon, "Bundle Adjustment —
+       A Modern Synthesis", LNCS 1883, Springer, 2000, §6 and §9.
+       (docs/references.bib: triggs2000)
+
+    Examples
+    --------
+    Exits 2 cm off, encoders counting from an unknown zero, 40 unknown poses:
+
+    >>> import numpy as np
+    >>> from taut.model import example
+    >>> from taut.calibration import calibrate, plan_poses, simulate_measurements
+    >>> nominal = example("printer-5cable")
+    >>> rng = np.random.default_rng(1)
+    >>> exits = nominal.exits + rng.uniform(-0.02, 0.02, nominal.exits.shape)
+    >>> built = nominal.model_copy(update={"cables": tuple(
+    ...     c.model_copy(update={"exit": tuple(e)}) for c, e in zip(nominal.cables, exits))})
+    >>> poses = plan_poses(nominal, 40, seed=0).poses
+    >>> data = simulate_measurements(built, poses, offsets=[2.0] * 5, sigma=1e-4, seed=2)
+    >>> res = calibrate(nominal, data)
+    >>> res.identifiable, bool(np.all(res.exits_std < 0.01)), res.offsets.round(2).tolist()
+    (True, True, [2.0, 2.0, 2.0, 2.0, 2.0])
+    """
+    began = time.perf_counter()
+    refuse_unsupported(robot)
+    if not isinstance(data, Measurements) or data.values.shape[1:] != (robot.n_cables,):
+        raise TautError(f"data: expected Measurements of {robot.name}'s {robot.n_cables} cables")
+    if data.poses.shape[1] != robot.pose_size:
+        raise TautError(f"data: its poses have {data.poses.shape[1]} coordinates, {robot.name}'s {robot.pose_size}")
+    exits_on, anchors_on = parse_estimate(robot, estimate, data)
+    names = tuple(e for e in ("exits", "offsets", "anchors") if e in estimate)
+    if robust is not None and robust not in ROBUST_LOSSES:
+        raise TautError(f"robust: unknown loss {robust!r}; expected None or one of {', '.join(ROBUST_LOSSES)}")
+    scale = as_number(scale, "scale", positive=True)
+    as_count(data.rows, "data rows")
+    keep = np.ones(data.rows, bool)
+    layout = Layout.build(robot, data, exits=exits_on, anchors=anchors_on)
+    problem = Problem(layout, robot.exits, robot.anchors)
+    evaluations = 0
+    best = None
+    starts = _start(robot, data, layout.unknown_rows, keep)
+    # each start is fitted on a short budget, the best one to convergence
+    for poses, offsets in starts:
+        x = layout.pack(robot.exits, offsets, robot.anchors, poses)
+        loss = ("linear", 1.0)
+        if robust is not None:
+            for f_scale in (scale, None):
+                if f_scale is None:
+                    f_scale = max(2.0 * _robust_sigma(problem.residuals(x)), 1e-12)
+                loss = (robust, f_scale)
+                fit = _fit(problem, x, *loss, dense, None if len(starts) == 1 else START_EVALUATIONS)
+                x, evaluations = fit.x, evaluations + fit.nfev
+        else:
+            fit = _fit(problem, x, *loss, dense, None if len(starts) == 1 else START_EVALUATIONS)
+            x, evaluations = fit.x, evaluations + fit.nfev
+        if best is None or fit.cost < best[0].cost:
+            best = (fit, x, loss)
+    assert best is not None
+    fit, x, loss = best
+    if len(starts) > 1:
+        fit = _fit(problem, x, *loss, dense)
+        x, evaluations = fit.x, evaluations + fit.nfev
+    for _ in range(RESEED_ROUNDS):
+        fit, x, moved, spent = _reseed(problem, data, fit, x, loss, dense)
+        evaluations += spent
+        if not moved:
+            break
+    scaled = _standardized(problem, x)
+    noise = _robust_sigma(scaled)
+    bad = np.abs(scaled) > OUTLIER_THRESHOLD * noise if noise > 0 else np.zeros(scaled.size, bool)
+    outliers = np.unique(layout.rows[bad])
+    if robust is not None:
+        keep[outliers] = False
+        exits, offsets, anchors, poses = problem.unpack(x)
+        layout = Layout.build(robot, data, exits=exits_on, anchors=anchors_on, keep=keep)
+        problem = Problem(layout, robot.exits, robot.anchors)
+        fit = _fit(problem, layout.pack(exits, offsets, anchors, poses), "linear", 1.0, dense)
+        x, evaluations = fit.x, evaluations + fit.nfev
+        full_poses = poses
+    exits, offsets, anchors, poses = problem.unpack(x)
+    if robust is not None:
+        poses[~keep] = full_poses[~keep]
+    gauge = _gauge(layout)
+    if gauge == GAUGE_RULE or gauge == GAUGE_RULE + GAUGE_RULE_ANCHORS:
+        if anchors_on:
+            Q, t = kabsch(anchors, robot.anchors)
+            anchors = anchors @ Q.T + t
+            poses = _move_poses(robot, poses, Q, t, body=True)
+        if exits_on:
+            Q, t = kabsch(exits, robot.exits)
+            exits = exits @ Q.T + t
+            poses = _move_poses(robot, poses, Q, t, body=False)
+        x = layout.pack(exits, offsets, anchors, poses)
+    residual = problem.residuals(x)
+    rep = report(problem, x, data, keep)
+    std = _std(layout, residual, rep)
+    sigma = _sigma(layout, residual, rep)
+    n, d = robot.n_cables, robot.dimension
+    exits_std = np.zeros((n, d))
+    offsets_std = np.zeros(n)
+    anchors_std = np.zeros((n, d))
+    at = 0
+    if exits_on:
+        exits_std = std[: n * d].reshape(n, d)
+        at = n * d
+    offsets_std[layout.offset_cables] = std[at : at + layout.offset_cables.size]
+    at += layout.offset_cables.size
+    if anchors_on:
+        anchors_std = std[at : at + n * d].reshape(n, d)
+    sq = np.bincount(layout.cables, residual**2, minlength=n)
+    count = np.bincount(layout.cables, minlength=n)
+    return CalibrationResult(
+        robot_name=robot.name,
+        estimate=names,
+        exits=exits,
+        exits_std=exits_std,
+        offsets=offsets,
+        offsets_std=offsets_std,
+        anchors=anchors,
+        anchors_std=anchors_std,
+        poses=poses,
+        pose_known=data.pose_known.copy(),
+        residual_rms=np.sqrt(sq / np.maximum(count, 1)),
+        sigma=sigma,
+        outliers=tuple(int(k) for k in outliers),
+        robust=robust,
+        gauge=gauge,
+        identifiability=rep.result,
+        converged=bool(fit.status > 0),
+        evaluations=int(evaluations),
+        elapsed_s=time.perf_counter() - began,
+    )
+
+
+def _gauge(layout: Layout) -> str:
+    """The gauge rule that applies to ``layout``."""
+    if layout.unknown_rows.size < len(layout.known_poses) or not layout.unknown_rows.size:
+        return GAUGE_MEASURED
+    if not layout.exits and not layout.anchors:
+        return GAUGE_FIXED_EXITS
+    if not layout.exits:
+        return GAUGE_FIXED_EXITS + "; the estimated anchors are aligned onto the nominal ones (the platform frame)"
+    return GAUGE_RULE + (GAUGE_RULE_ANCHORS if layout.anchors else "")
+
+
+def _sigma(layout: Layout, residual: np.ndarray, rep: Any) -> float:
+    dof = residual.size - rep.result.unknowns
+    return float(np.sqrt(residual @ residual / dof)) if dof > 0 else float("inf")
+
+
+def _std(layout: Layout, residual: np.ndarray, rep: Any) -> np.ndarray:
+    """Standard deviation of each parameter in the gauge of the result (module docstring);
+    ``inf`` for a parameter that an undetermined direction moves."""
+    P = layout.n_params
+    sigma = _sigma(layout, residual, rep)
+    if not np.isfinite(sigma) or rep.M.size == 0:
+        return np.full(P, np.inf if not np.isfinite(sigma) else 0.0)
+    w, V = np.linalg.eigh(rep.M)
+    top = max(float(w.max()), 0.0)
+    good = w > top / 1e12 if top > 0 else np.zeros(w.size, bool)
+    if rep.null.size:
+        good &= ~np.isin(np.arange(w.size), np.flatnonzero(np.sqrt(np.clip(w, 0, None)) <= np.sqrt(top) / 1e6))
+    ZV = rep.Z @ V
+    cov_diag = (ZV[:, good] ** 2 / w[good]).sum(axis=1) * sigma**2
+    std = np.sqrt(cov_diag)
+    if (~good).any():
+        moved = (np.abs(ZV[:, ~good]) > 1e-6).any(axis=1)
+        std[moved] = np.inf
+    return std
