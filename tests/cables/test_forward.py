@@ -132,6 +132,10 @@ def test_cli_fk_on_a_sagging_robot(taut_cli):
     assert d["found"] and d["stable"]
     assert np.allclose(d["pose"], [0.5, 0.2, 2.0, 0.0, 0.0, 0.0], atol=1e-9)
     assert "catenary" in d["model"]
+
+
+@pytest.mark.slow
+def test_cli_fk_needs_lengths(taut_cli):
     missing = taut_cli("fk", "cogiro-sagging")
     assert missing.code == 2 and missing.err.count("\n") == 1 and "--lengths" in missing.err
 

@@ -92,6 +92,10 @@ def test_cli_sag_json_and_plot(taut_cli, tmp_path):
     m = sag_map(COGIRO, grid=[(-2.0, 2.0, 3), (0.0, 0.0, 1), (1.0, 3.0, 2)], method="qp")
     assert d["summary"]["largest_sag"] == pytest.approx(m.summary()["largest_sag"], rel=1e-12)
     assert "catenary" in d["model"]
+
+
+@pytest.mark.slow
+def test_cli_sag_of_a_robot_given_a_weight(taut_cli):
     human = taut_cli("sag", "spatial-8cable", "--weight", "0.5", "--stiffness", "1e5", "--grid", "3")
     assert human.code == 0 and "largest sag" in human.out
 
