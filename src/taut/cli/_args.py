@@ -11,7 +11,7 @@ from collections.abc import Callable, Collection
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from taut.cli._output import check_writable
+from taut.cli._output import check_writable, warning
 from taut.errors import PoseError, TautError
 from taut.model import MAX_MAGNITUDE
 
@@ -125,6 +125,15 @@ def load(spec: str, cable_set: str | None = None) -> Robot:
     from taut.model import load_robot
 
     return load_robot(spec, cable_set=cable_set)
+
+
+def straight_cables(robot: Robot, what: str, hint: str = "") -> None:
+    """Warn, on stderr, that ``what`` takes ``robot``'s sagging cables (``cables[].weight``) as
+    straight lines: its answer is the straight model's (``hint``: what models them)."""
+    if robot.sagging_cables:
+        cables = ", ".join(str(i + 1) for i in robot.sagging_cables)
+        after = f" ({hint})" if hint else ""
+        warning(f"{robot.name}: cables {cables} sag (cables[].weight); {what} takes them as straight lines{after}")
 
 
 # ---- argparse types: numeric options are checked as the command line is parsed ----------

@@ -51,6 +51,7 @@ def run(ns: argparse.Namespace) -> int:
 
     plot = A.plot_file(ns.plot)
     robot = A.load(ns.robot, ns.cable_set)
+    A.straight_cables(robot, "the collision and singularity checks")
     spec = ns.trajectory
     if spec in robot.trajectories:
         poses = trajectory_poses(robot, spec)

@@ -79,6 +79,7 @@ def run(ns: argparse.Namespace) -> int:
     from taut.dgp import solve_igp
 
     robot = A.load(ns.robot, ns.cable_set)
+    A.straight_cables(robot, "the inverse geometrico-static problem")
     cables = _cables(ns.taut)
     with progress_bar("igp (boxes)", wanted(ns.json)) as progress:
         res = solve_igp(

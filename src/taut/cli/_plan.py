@@ -315,6 +315,7 @@ def run(ns: argparse.Namespace) -> int:
             "give a smaller --subdivide"
         )
     robot = A.load(ns.robot, ns.cable_set)
+    A.straight_cables(robot, "the planner")
     planner = ns.planner
     if planner == "auto" and not _on_manifold(robot):
         planner = "grid" if robot.pose_size <= GRID_DIMENSIONS else "rrtconnect"

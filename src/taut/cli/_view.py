@@ -289,6 +289,7 @@ def run(ns: argparse.Namespace) -> int:
 
     out = A.output_file(ns.out, "--out", {".html", ".htm"})
     robot = A.load(ns.robot, ns.cable_set)
+    A.straight_cables(robot, "the view")
     pose = A.pose(robot, ns.pose) if ns.pose is not None else None
     kind = next((s for s in SOURCES if getattr(ns, s) is not None), "robot")
     if pose is not None and kind not in ("robot", "workspace"):

@@ -10,7 +10,7 @@ import json
 from typing import TYPE_CHECKING, Any
 
 from taut.cli import _args as A
-from taut.cli._output import console, emit, markup, save_figure, warning, written
+from taut.cli._output import console, emit, markup, save_figure, written
 from taut.cli._progress import progress_bar, wanted
 from taut.errors import TautError
 
@@ -96,6 +96,7 @@ def _certified(ns: argparse.Namespace) -> int:
     out = A.output_file(ns.out, "--out", {".json"})
     plot = A.plot_file(ns.plot)
     robot = A.load(ns.robot, ns.cable_set)
+    A.straight_cables(robot, "the certified workspace")
     options: dict[str, Any] = {}
     if ns.box is not None:
         options["wrench_set"] = _box_set(robot, ns.box, ns.condition)
@@ -171,11 +172,8 @@ def run(ns: argparse.Namespace) -> int:
     out = A.output_file(ns.out, "--out", {".npz"})
     plot = A.plot_file(ns.plot)
     robot = A.load(ns.robot, ns.cable_set)
-    if robot.sagging_cables and ns.condition != "sagging-static":
-        warning(
-            f"{robot.name} has sagging cables (cables[].weight); the {ns.condition} condition takes them as "
-            "straight lines (--condition sagging-static includes their weight)"
-        )
+    if ns.condition != "sagging-static":
+        A.straight_cables(robot, f"the {ns.condition} condition", "--condition sagging-static includes their weight")
     grid, resolution = A.grid(ns.grid, robot.dimension)
     orientation = A.vector(ns.orientation, "--orientation") if ns.orientation is not None else None
     wrench_set = None if ns.box is None else _box_set(robot, ns.box, ns.condition)
