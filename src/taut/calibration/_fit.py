@@ -399,8 +399,9 @@ def _project(
 
 
 def _start(robot: Robot, data: Measurements, rows: np.ndarray, keep: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
-    """Start poses and offsets (module docstring): the best :data:`FITTED_STARTS` hypotheses,
-    each ``(poses (N, s), offsets (n,))``."""
+    """Start poses and offsets (module docstring): the best :data:`FITTED_STARTS` hypotheses
+    (the best one alone when more than :data:`SCORE_ROWS` rows rank them), each
+    ``(poses (N, s), offsets (n,))``."""
     used = np.flatnonzero(keep & data.measured.any(axis=1))
     changed = np.flatnonzero(data.changes)
     if not changed.size:
@@ -429,7 +430,8 @@ def _start(robot: Robot, data: Measurements, rows: np.ndarray, keep: np.ndarray)
     hypotheses.sort(key=lambda h: h[0])
     if sample.size == used.size:
         return [(poses, offsets) for _, offsets, poses in hypotheses[:FITTED_STARTS]]
-    return [_project(robot, data, rows, offsets, used)[:2] for _, offsets, _ in hypotheses[:FITTED_STARTS]]
+    # more rows than the sample: the sample ranks the hypotheses, the best one starts the fit
+    return [_project(robot, data, rows, hypotheses[0][1], used)[:2]]
 
 
 def _reseed(
