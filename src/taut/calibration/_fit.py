@@ -67,7 +67,7 @@ import numpy as np
 from taut._checks import as_count, as_number
 from taut._results import Result, jsonable
 from taut.calibration._data import Measurements, refuse_unsupported
-from taut.calibration._identify import Identifiability, parse_estimate, report
+from taut.calibration._identify import MAX_CONDITION, Identifiability, parse_estimate, report
 from taut.calibration._model import Layout, Problem, frames, partials
 from taut.errors import TautError
 from taut.geometry import angles_from_matrix
@@ -702,10 +702,9 @@ def _std(layout: Layout, residual: np.ndarray, rep: Any) -> np.ndarray:
     if not np.isfinite(sigma) or rep.M.size == 0:
         return np.full(P, np.inf if not np.isfinite(sigma) else 0.0)
     w, V = np.linalg.eigh(rep.M)
-    top = max(float(w.max()), 0.0)
-    good = w > top / 1e12 if top > 0 else np.zeros(w.size, bool)
-    if rep.null.size:
-        good &= ~np.isin(np.arange(w.size), np.flatnonzero(np.sqrt(np.clip(w, 0, None)) <= np.sqrt(top) / 1e6))
+    # the directions the report calls undetermined (condition beyond MAX_CONDITION) get no variance
+    sv = np.sqrt(np.clip(w, 0.0, None))
+    good = sv > sv.max() / MAX_CONDITION if sv.max() > 0 else np.zeros(w.size, bool)
     ZV = rep.Z @ V
     cov_diag = (ZV[:, good] ** 2 / w[good]).sum(axis=1) * sigma**2
     std = np.sqrt(cov_diag)
