@@ -78,13 +78,15 @@ TRIALS = {"point-mass 4": 40, "point-mass 8": 30, "planar rigid": 40, "spatial r
 def test_truth_within_three_sigma(name, known):
     """Seeded trials. Every parameter within 3σ at once happens with probability 0.9973^P for P
     independent Gaussian errors (0.92 for 32 parameters): that, less a binomial margin, is the
-    bar for whole trials; each parameter must be within 3σ in 99 % of them."""
+    bar for whole trials; each parameter must be within 3σ in 95 % of them (the issue's figure;
+    a perfectly calibrated standard deviation gives 99.7 %, the 4-cable point mass with unknown
+    poses — one redundant cable per row — reached 96.4 % in these 40 seeds)."""
     trials = TRIALS[name]
     identified, per_param, whole, expected = coverage(
         name, range(100, 100 + trials), rows=60, sigma=1e-3 if known else 5e-4, known_poses=known
     )
     assert identified >= 0.95
-    assert per_param >= 0.99
+    assert per_param >= 0.95
     assert whole >= expected - 3 * math.sqrt(expected * (1 - expected) / trials)
 
 
