@@ -72,21 +72,36 @@ def test_truth_within_three_sigma_quick(name, known):
 TRIALS = {"point-mass 4": 40, "point-mass 8": 30, "planar rigid": 40, "spatial rigid": 12}
 
 
+#: Known shortfall (issue 31): the 4-cable point mass with unknown poses, one redundant cable per
+#: row, had every parameter within 3σ in 32 of 38 identifiable trials (84 %; 96 % of the
+#: parameters) and 2 of 40 trials answered not identifiable.  Strict: it fails when fixed.
+SHORTFALL = pytest.mark.xfail(
+    strict=True, reason="4-cable point mass, unknown poses: standard deviations too small in 16 % of trials"
+)
+
+
 @pytest.mark.slow
-@pytest.mark.parametrize("known", [False, True], ids=["unknown poses", "known poses"])
-@pytest.mark.parametrize("name", list(CASES))
+@pytest.mark.parametrize(
+    ("name", "known"),
+    [
+        pytest.param(
+            name, known, marks=SHORTFALL if (name, known) == ("point-mass 4", False) else (), id=f"{name}-{label}"
+        )
+        for name in CASES
+        for known, label in ((False, "unknown poses"), (True, "known poses"))
+    ],
+)
 def test_truth_within_three_sigma(name, known):
     """Seeded trials. Every parameter within 3σ at once happens with probability 0.9973^P for P
     independent Gaussian errors (0.92 for 32 parameters): that, less a binomial margin, is the
-    bar for whole trials; each parameter must be within 3σ in 95 % of them (the issue's figure;
-    a perfectly calibrated standard deviation gives 99.7 %, the 4-cable point mass with unknown
-    poses — one redundant cable per row — reached 96.4 % in these 40 seeds)."""
+    bar for whole trials (the issue's "95 % of trials" cannot hold for 32 parameters at once);
+    each parameter must be within 3σ in 99 % of them, 95 % of the trials answer identifiable."""
     trials = TRIALS[name]
     identified, per_param, whole, expected = coverage(
         name, range(100, 100 + trials), rows=60, sigma=1e-3 if known else 5e-4, known_poses=known
     )
     assert identified >= 0.95
-    assert per_param >= 0.95
+    assert per_param >= 0.99
     assert whole >= expected - 3 * math.sqrt(expected * (1 - expected) / trials)
 
 
