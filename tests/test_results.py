@@ -220,10 +220,25 @@ def _example(name):
     return example(name)
 
 
+def _calibration():
+    from taut.calibration import calibrate, simulate_measurements
+    from taut.model import example
+
+    robot = example("printer-5cable")
+    poses = [
+        [x, y, z]
+        for x, y, z in zip(
+            [-0.5, 0.4, 0.0, 0.3, -0.3, 0.5], [-0.4, 0.3, 0.5, -0.5, 0.1, 0.0], [0.5, 1.5, 1.0, 0.8, 1.3, 0.6]
+        )
+    ]
+    return calibrate(robot, simulate_measurements(robot, poses * 3, offsets=[1.0] * 5, sigma=1e-4, seed=0))
+
+
 def _result(key, tmp_path):
     """A small instance of the exported result class ``key``, from a public function."""
     import taut.atlas as atlas
     import taut.cables as cables
+    import taut.calibration as calibration
     import taut.collision as collision
     import taut.dynamics as dynamics
     import taut.interval as interval
@@ -253,6 +268,12 @@ def _result(key, tmp_path):
         "cables.SaggingIKResult": lambda: cables.sagging_ik(
             _example("cogiro-sagging"), [[0.0, 0.0, 2.0, 0.0, 0.0, 0.0], [6.5, 4.5, 5.0, 0.0, 0.0, 0.0]]
         ),
+        "calibration.CalibrationResult": _calibration,
+        "calibration.Identifiability": lambda: _calibration().identifiability,
+        "calibration.Measurements": lambda: calibration.measurements(
+            _example("planar-4cable"), [[1.0, None, 1.2, 1.3]]
+        ),
+        "calibration.PosePlan": lambda: calibration.plan_poses(_example("printer-5cable"), 10),
         "collision.CapsuleModel": lambda: collision.capsule_model(adjustable),
         "collision.CheckResult": lambda: collision.check_poses(adjustable, sim_b),
         "collision.ProximityResult": lambda: collision.proximity(adjustable, sim_b),

@@ -34,7 +34,7 @@ from taut.model import MAX_MAGNITUDE, Robot
 MAX_ROWS = 1_000_000
 
 #: Largest measurement file read [bytes].
-MAX_FILE_BYTES = 256 * 2**20
+MAX_MEASUREMENT_BYTES = 256 * 2**20
 
 
 class MeasurementError(TautError):
@@ -377,8 +377,8 @@ def read_measurements(robot: Robot, path: str | Path) -> Measurements:
     try:
         if not p.is_file():
             raise MeasurementError(f"{str(p)!r}: not a regular file")
-        if p.stat().st_size > MAX_FILE_BYTES:
-            raise MeasurementError(f"{str(p)!r}: larger than {MAX_FILE_BYTES // 2**20} MiB")
+        if p.stat().st_size > MAX_MEASUREMENT_BYTES:
+            raise MeasurementError(f"{str(p)!r}: larger than {MAX_MEASUREMENT_BYTES // 2**20} MiB")
         text = p.read_text(encoding="utf-8")
     except OSError as exc:
         raise MeasurementError(f"{str(p)!r}: cannot read: {exc.strerror or exc}") from None

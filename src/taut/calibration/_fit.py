@@ -67,7 +67,7 @@ import numpy as np
 from taut._checks import as_count, as_number
 from taut._results import Result, jsonable
 from taut.calibration._data import Measurements, refuse_unsupported
-from taut.calibration._identify import Identifiability, parse_estimate, report
+from taut.calibration._identify import MAX_CONDITION, Identifiability, parse_estimate, report
 from taut.calibration._model import Layout, Problem, frames, partials
 from taut.errors import TautError
 from taut.geometry import angles_from_matrix
@@ -399,8 +399,9 @@ def _project(
 
 
 def _start(robot: Robot, data: Measurements, rows: np.ndarray, keep: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
-    """Start poses and offsets (module docstring): the best :data:`FITTED_STARTS` hypotheses,
-    each ``(poses (N, s), offsets (n,))``."""
+    """Start poses and offsets (module docstring): the best :data:`FITTED_STARTS` hypotheses
+    (the best one alone when more than :data:`SCORE_ROWS` rows rank them), each
+    ``(poses (N, s), offsets (n,))``."""
     used = np.flatnonzero(keep & data.measured.any(axis=1))
     changed = np.flatnonzero(data.changes)
     if not changed.size:
@@ -429,7 +430,8 @@ def _start(robot: Robot, data: Measurements, rows: np.ndarray, keep: np.ndarray)
     hypotheses.sort(key=lambda h: h[0])
     if sample.size == used.size:
         return [(poses, offsets) for _, offsets, poses in hypotheses[:FITTED_STARTS]]
-    return [_project(robot, data, rows, offsets, used)[:2] for _, offsets, _ in hypotheses[:FITTED_STARTS]]
+    # more rows than the sample: the sample ranks the hypotheses, the best one starts the fit
+    return [_project(robot, data, rows, hypotheses[0][1], used)[:2]]
 
 
 def _reseed(
@@ -700,10 +702,9 @@ def _std(layout: Layout, residual: np.ndarray, rep: Any) -> np.ndarray:
     if not np.isfinite(sigma) or rep.M.size == 0:
         return np.full(P, np.inf if not np.isfinite(sigma) else 0.0)
     w, V = np.linalg.eigh(rep.M)
-    top = max(float(w.max()), 0.0)
-    good = w > top / 1e12 if top > 0 else np.zeros(w.size, bool)
-    if rep.null.size:
-        good &= ~np.isin(np.arange(w.size), np.flatnonzero(np.sqrt(np.clip(w, 0, None)) <= np.sqrt(top) / 1e6))
+    # the directions the report calls undetermined (condition beyond MAX_CONDITION) get no variance
+    sv = np.sqrt(np.clip(w, 0.0, None))
+    good = sv > sv.max() / MAX_CONDITION if sv.max() > 0 else np.zeros(w.size, bool)
     ZV = rep.Z @ V
     cov_diag = (ZV[:, good] ** 2 / w[good]).sum(axis=1) * sigma**2
     std = np.sqrt(cov_diag)
