@@ -20,6 +20,9 @@ from taut.kinematics import structure_matrix
 from taut.statics import METHODS, external_wrench
 from taut.workspace import CONDITIONS
 
+#: Lengths measured on a printer built off its drawing (tests/calibration).
+CALIBRATION_DATA = Path(__file__).parents[1] / "calibration" / "fixtures" / "printer-5cable.csv"
+
 #: Asserts on the JSON document (and files in the temporary directory); a check written as
 #: one expression returns its truth instead.
 Check = Callable[[dict, Path], object]
@@ -107,6 +110,16 @@ CASES: list[tuple[str, list[str], Check]] = [
         ["workspace", "vscr-four-cable", "--condition", "static", "--grid", "4"]
         + ["--out", "{tmp}/w.npz", "--plot", "{tmp}/w.png"],
         lambda d, tmp: (tmp / "w.npz").is_file() and (tmp / "w.png").is_file() and d["out"].endswith("w.npz"),
+    ),
+    (
+        "calibrate",
+        ["calibrate", "printer-5cable", "--data", str(CALIBRATION_DATA)] + ["--out", "{tmp}/cal.yaml"],
+        lambda d, tmp: d["identifiable"] is True and len(d["exits"]) == 5 and (tmp / "cal.yaml").is_file(),
+    ),
+    (
+        "calibrate-plan",
+        ["calibrate", "--plan", "8", "printer-5cable"],
+        lambda d, tmp: len(d["poses"]) == 8,
     ),
     (
         "sag",
@@ -213,6 +226,7 @@ def test_every_command_has_a_case():
 #: command is tests/cli/test_igp.py::test_igp_json_table_4_3.
 QUICK = {
     "examples",
+    "calibrate",
     "schema",
     "ik",
     "tensions-lp",
