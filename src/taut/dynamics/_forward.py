@@ -42,7 +42,7 @@ from taut.dynamics._platform import (
     positive,
 )
 from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError, UnsupportedRobotError
-from taut.kinematics import as_poses, robot_stiffness, tension_from_stretch
+from taut.kinematics import as_poses, refuse_routed, robot_stiffness, tension_from_stretch
 from taut.model import MAX_MAGNITUDE, Robot
 
 __all__ = [
@@ -145,6 +145,7 @@ def kernel_model(robot: Robot, *, actuators: bool = False) -> KernelModel:
             f"{robot.name}: the dynamics model straight cables, and its cables "
             f"{[i + 1 for i in robot.sagging_cables]} sag (cables[].weight): catenary forces are not simulated"
         )
+    refuse_routed(robot, "the compiled dynamics")
     key = (id(robot), actuators)
     hit = _MODELS.get(key)
     if hit is not None and hit[0] is robot:

@@ -37,7 +37,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import PoseError
-from taut.kinematics import anchor_points, as_poses, body_frames
+from taut.kinematics import anchor_points, as_poses, body_frames, refuse_routed
 from taut.model import Circle, Robot
 from taut.viz._style import (
     DISALLOWED,
@@ -358,6 +358,7 @@ def draw_robot(robot: Robot, pose: npt.ArrayLike | None = None, ax: Axes | None 
     axes of the other kind raise :class:`~taut.errors.ArgumentError`, several poses a
     :class:`~taut.errors.PoseError`.  Each cable is one line with
     ``gid="cable-<i>"`` and label ``"cable <i>"`` (1-based ``i``)."""
+    refuse_routed(robot, "the robot drawing")
     pose = _default_pose(robot) if pose is None else pose
     arr, _ = as_poses(robot, pose)
     if arr.shape[0] != 1:
