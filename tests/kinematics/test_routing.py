@@ -19,8 +19,8 @@ from taut.model import robot_from_dict, robot_to_dict
 
 
 def routed():
-    """adjustable-8cable carrying a third body, ``arm``, turning on the upper body with a
-    motor of ±20 N m, and two more cables: cable 9 from its exit through a fixed eyelet and an
+    """adjustable-8cable carrying a third body, ``arm``, hanging from the upper body on a
+    joint with a motor of ±20 N m, and two more cables: cable 9 from its exit through a fixed eyelet and an
     eyelet on the lower body to the upper body, cable 10 through an eyelet on the upper body
     to the arm."""
     data = robot_to_dict(taut.example("adjustable-8cable"))
@@ -38,7 +38,7 @@ def routed():
                 "actuator": {"force": [-20, 20]},
             },
             "mass": 1.0,
-            "com": [0.0, 0.0, 0.25],
+            "com": [0.0, 0.0, -0.25],
             "inertia": [0.02, 0.02, 0.005, 0.0, 0.0, 0.0],
         }
     )
@@ -49,7 +49,12 @@ def routed():
             "anchor": [1.25, 0, 0],
             "body": "upper",
         },
-        {"exit": [0, 5, 8], "via": [{"point": [-1.25, 0, 0.3], "body": "upper"}], "anchor": [0, 0, 0.5], "body": "arm"},
+        {
+            "exit": [0, 5, 8],
+            "via": [{"point": [-1.25, 0, 0.3], "body": "upper"}],
+            "anchor": [0, 0, -0.5],
+            "body": "arm",
+        },
     ]
     return robot_from_dict(data)
 

@@ -27,20 +27,8 @@ import numpy as np
 from taut.kinematics._pose import body_frames, require_checked
 from taut.model import Robot
 
-#: The body index of a via point on the fixed frame.
+#: The body index of a via point on the fixed frame (:attr:`~taut.model.Robot.via_points`).
 FIXED = -1
-
-
-def routing(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The via points of every routed cable, in cable order then path order: the cable of
-    each ``(V,)``, its body ``(V,)`` (0 the platform, ``k`` ``platform.bodies[k − 1]``,
-    :data:`FIXED` the fixed frame) and the point in that body's frame ``(V, d)``."""
-    index = {"platform": 0, "fixed": FIXED} | {b.name: k for k, b in enumerate(robot.platform.bodies, 1)}
-    rows = [(i, index[v.body], v.point) for i, c in enumerate(robot.cables) for v in c.via]
-    cables = np.array([r[0] for r in rows], dtype=int)
-    bodies = np.array([r[1] for r in rows], dtype=int)
-    points = np.array([r[2] for r in rows], dtype=float).reshape(len(rows), robot.dimension)
-    return cables, bodies, points
 
 
 def via_points_at(robot: Robot, poses: np.ndarray) -> np.ndarray:
@@ -82,7 +70,7 @@ def via_points_at(robot: Robot, poses: np.ndarray) -> np.ndarray:
     array([[[0.2, 0. , 0.1]]])
     """
     require_checked(robot, poses)
-    _, bodies, points = routing(robot)
+    _, bodies, points = robot.via_points
     out = np.broadcast_to(points, (poses.shape[0], *points.shape)).copy()
     moving = bodies != FIXED
     if moving.any():
@@ -103,7 +91,7 @@ def routed_segments(
     part of each chain ``(N, n)`` (``inf`` for the others) and the directions
     ``f_k`` of the force the cable's unit tension exerts on each via point ``(N, V, d)``
     (zero where a segment is shorter than 1e-300 m)."""
-    cables, _, _ = routing(robot)
+    cables, _, _ = robot.via_points
     N = vias.shape[0]
     prev = np.empty_like(vias)
     first = np.r_[True, cables[1:] != cables[:-1]]
@@ -129,7 +117,7 @@ def routed_segments(
 def via_wrench(robot: Robot, poses: np.ndarray, vias: np.ndarray, forces: np.ndarray) -> np.ndarray:
     """The via points' part of the structure matrix, ``Σ_k [f_k ; (P_k − p) × f_k]`` over the
     via points on moving bodies, ``(N, m, n)``."""
-    cables, bodies, _ = routing(robot)
+    cables, bodies, _ = robot.via_points
     d, m = robot.dimension, robot.wrench_dim
     moving = bodies != FIXED
     f = np.where(moving[None, :, None], forces, 0.0)

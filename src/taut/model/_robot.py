@@ -43,7 +43,7 @@ Finite = Annotated[float, Field(allow_inf_nan=False)]
 #: Coordinates [m], within :data:`~taut.model._limits.MAX_MAGNITUDE`.
 Coordinate = Annotated[float, Field(allow_inf_nan=False, ge=-MAX_MAGNITUDE, le=MAX_MAGNITUDE)]
 
-Derived = TypeVar("Derived", np.ndarray, tuple[np.ndarray, np.ndarray])
+Derived = TypeVar("Derived", np.ndarray, tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray])
 
 
 #: A numpydoc section header (``Attributes`` and its underline): where a model's docstring
@@ -967,6 +967,24 @@ class Robot(_Strict):
         """Index of each cable's body: 0 for the platform, ``k`` for ``platform.bodies[k-1]``."""
         index = {"platform": 0} | {b.name: k for k, b in enumerate(self.platform.bodies, 1)}
         return self._derived("cable_bodies", lambda: np.array([index[c.body or "platform"] for c in self.cables]))
+
+    @property
+    def via_points(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The via points of the routed cables (``cables[].via``), in cable order then in the
+        order each cable runs through them: the cable of each ``(V,)``, its body ``(V,)`` (0
+        the platform, ``k`` ``platform.bodies[k-1]``, −1 the fixed frame) and the point in that
+        body's frame ``(V, d)``."""
+
+        def build() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+            index = {"platform": 0, "fixed": -1} | {b.name: k for k, b in enumerate(self.platform.bodies, 1)}
+            rows = [(i, index[v.body], v.point) for i, c in enumerate(self.cables) for v in c.via]
+            return (
+                np.array([r[0] for r in rows], dtype=int),
+                np.array([r[1] for r in rows], dtype=int),
+                np.array([r[2] for r in rows], dtype=float).reshape(len(rows), self.dimension),
+            )
+
+        return self._derived("via_points", build)
 
     @property
     def tension_bounds(self) -> tuple[np.ndarray, np.ndarray]:
