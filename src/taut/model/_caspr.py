@@ -45,11 +45,17 @@ free), a link jointed to the ground or to the ``T_XYZ`` carrier
 beside the platform (not reachable from the platform), the quaternion joints of CASPR's earlier
 releases (``SPHERICAL``, ``SPATIAL``: four coordinates for three degrees of freedom), a
 ``PLANAR_*`` joint between two links, further links on a point-mass platform, an actuated
-platform joint, and a cable routed through more than two attachments (several segments of the
-cable-routing matrix of Lau et al. 2013, a cable across several links): a taut cable is one
-segment from a base exit to one anchor. Since every link has one parent, a CASPR bodies file
-holds no closed chain. An unknown joint type is a :class:`~taut.errors.RobotFileError` naming
-it.
+platform joint, and a cable whose attachments do not start or end on the base (link 0): a
+taut cable runs from a base exit to an anchor on a body. Since every link has one parent, a
+CASPR bodies file holds no closed chain. An unknown joint type is a
+:class:`~taut.errors.RobotFileError` naming it.
+
+A cable of more than two attachments (the cable-routing matrix of Lau et al. 2013, a cable
+across several links) is a routed cable (``cables[].via``): its first attachment, on the base,
+is the exit point, its last the anchor, and the ones between are via points, on the base
+(``fixed``, relative to the platform's joint origin as the exits are) or on a link (in its
+frame, as anchors are, ``com`` references shifted).  A cable listed from its link to the base
+is read in the other direction.  Via points on a planar robot must lie in its plane.
 
 CASPR's own models, as taut reads them (the files of ``tests/model/fixtures/caspr/real``, tested
 there): CoGiRo (``SCDM``, a ``SPATIAL_EULER_XYZ`` platform, 8 cables) and KNTU_planar (a
@@ -90,7 +96,7 @@ swivel back as a ``base_rotating_pulley``.
 Refused with :class:`UnsupportedRobotError`, never approximated: other pulley attachments
 (``screw_base_rotating_pulley``), swivelling pulleys of planar robots whose entry vector
 leaves the plane (in the plane, the pulley is taut's planar swivel), cables routed through
-more than two attachments (a cable through several links), chains of links from the ground,
+attachments that do not start or end on the base, chains of links from the ground,
 actuated platform joints, the joints and cable types above, planar cables that leave the
 plane; on writing, sagging cables (``cables[].weight``: CASPR's cable models are straight).
 
