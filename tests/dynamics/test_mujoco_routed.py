@@ -14,10 +14,11 @@ import pytest
 mujoco = pytest.importorskip("mujoco")
 
 from kinematics.test_routing import routed  # noqa: E402
+from mujoco_start import mujoco_start  # noqa: E402
 
 from taut.dynamics import forward_dynamics, inverse_dynamics  # noqa: E402
-from taut.geometry import rate_matrix, rotation_matrix  # noqa: E402
-from taut.model import load_robot, mjcf_text, pose_to_qpos  # noqa: E402
+from taut.geometry import rotation_matrix  # noqa: E402
+from taut.model import load_robot  # noqa: E402
 
 RIGID = Path(__file__).parents[1] / "model" / "fixtures" / "taut" / "routed.yaml"
 
@@ -53,14 +54,7 @@ def test_same_motion_as_mujoco(robot, q0):
 
     run = forward_dynamics(robot, q0, qd0, 1.0, tensions=tensions, wrench=wrench, method="RK4", step=dt)
 
-    model = mujoco.MjModel.from_xml_string(mjcf_text(robot))
-    model.opt.timestep = dt
-    model.opt.integrator = mujoco.mjtIntegrator.mjINT_RK4
-    data = mujoco.MjData(model)
-    data.qpos[:] = pose_to_qpos(robot, q0)
-    R0 = rotation_matrix(q0[3:6], robot.orientation)
-    data.qvel[:3] = qd0[:3]
-    data.qvel[3:6] = R0.T @ rate_matrix(q0[3:6], robot.orientation) @ qd0[3:6]
+    model, data = mujoco_start(robot, q0, qd0, dt)
     joints = [model.joint(f"joint{k}") for k in range(1, nj + 1)]
     for k, joint in enumerate(joints):
         data.qvel[joint.dofadr[0]] = qd0[6 + k]
