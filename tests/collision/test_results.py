@@ -13,7 +13,7 @@ ROBOT = taut.example("adjustable-8cable")
 def test_capsule_model_and_proximity():
     model = capsule_model(ROBOT)
     d = check_result(model)
-    assert set(d) == {"names", "radii", "body", "local", "n_cables", "pairs", "shared", "cut"}
+    assert set(d) == {"names", "radii", "body", "local", "n_cables", "pairs", "shared", "cut", "flip"}
     assert d["names"][0] == "cable 1" and d["n_cables"] == 8 and d["body"][:8] == [-1] * 8
     assert [0, 1] in d["pairs"] and all(i < j for i, j in d["pairs"])
     for name in ("radii", "local", "pairs", "shared", "cut"):

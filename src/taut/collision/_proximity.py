@@ -68,6 +68,7 @@ def _proximity_kernel(
     pairs: np.ndarray,
     shared: np.ndarray,
     cut: np.ndarray,
+    flip: np.ndarray,
     rho: np.ndarray,
     dist: np.ndarray,
 ) -> None:
@@ -76,6 +77,8 @@ def _proximity_kernel(
         for p in range(pairs.shape[0]):
             i, j = pairs[p, 0], pairs[p, 1]
             ai, bi, aj, bj = A[k, i], B[k, i], A[k, j], B[k, j]
+            if flip[p]:
+                aj, bj = bj, aj
             if shared[p, 0] or shared[p, 1]:
                 li = np.sqrt(np.sum((bi - ai) ** 2))
                 lj = np.sqrt(np.sum((bj - aj) ** 2))
@@ -214,5 +217,5 @@ def proximity(robot: Robot, poses: npt.ArrayLike, *, model: CapsuleModel | None 
     A, B = capsule_segments(robot, arr, model=model)
     dist = np.empty((arr.shape[0], len(model.pairs)))
     rho = model.radii[model.pairs[:, 0]] + model.radii[model.pairs[:, 1]]
-    _proximity_kernel(A, B, model.pairs, model.shared, model.cut, rho, dist)
+    _proximity_kernel(A, B, model.pairs, model.shared, model.cut, model.flip, rho, dist)
     return ProximityResult(model, dist, dist - rho[None, :])
