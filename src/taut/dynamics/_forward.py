@@ -135,15 +135,17 @@ class KernelModel:
 _MODELS: dict[tuple[int, bool], tuple[Robot, KernelModel]] = {}
 
 
-def kernel_model(robot: Robot, *, actuators: bool = False) -> KernelModel:
+def kernel_model(robot: Robot, *, actuators: bool = False, sagging: bool = False) -> KernelModel:
     """The kernel arguments of ``robot``, built once per robot object (a control loop calls
     :func:`acceleration` thousands of times with the same robot).  With ``actuators`` the
     joint actuators follow the cables as inputs (:data:`taut.dynamics._tree.ACTUATOR` rows):
-    ``n`` counts both."""
-    if robot.sagging_cables:
+    ``n`` counts both.  The kernels pull along chords: a robot with sagging cables is
+    refused unless its caller (``sagging``, the control loop) applies their pull itself."""
+    if robot.sagging_cables and not sagging:
         raise UnsupportedRobotError(
-            f"{robot.name}: the dynamics model straight cables, and its cables "
-            f"{[i + 1 for i in robot.sagging_cables]} sag (cables[].weight): catenary forces are not simulated"
+            f"{robot.name}: forward dynamics under given tensions or lengths models straight cables, and its cables "
+            f"{[i + 1 for i in robot.sagging_cables]} sag (cables[].weight); simulate_control (taut simulate) "
+            "models them as quasi-static catenaries"
         )
     key = (id(robot), actuators)
     hit = _MODELS.get(key)
