@@ -7,7 +7,9 @@ Pott et al. (2009) and Pott (2014) as the distribution, in scalar arithmetic: th
 functions are those of :mod:`taut.cables._catenary` (Irvine 1981, §1.3) written for one
 cable, and the pseudo-inverse of the structure matrix comes from a Cholesky factorization of
 ``W Wᵀ`` instead of a singular value decomposition (the same tensions where ``W`` is well
-conditioned).  A pose this path does not settle the way the vectorised iteration would (a
+conditioned).  :func:`tension_catenaries` solves the
+catenaries of given platform-end tensions with the same scalar functions.  A pose this path
+does not settle the way the vectorised iteration would (a
 rank-deficient or ill-conditioned ``W``, a distribution that gives up, tension bounds that
 cross, a cable too slack for its catenary or hanging vertically) is handed back
 (:data:`HANDED_BACK`) to the vectorised iteration, which decides it.
@@ -33,7 +35,7 @@ from taut.cables._catenary import MAX_NEWTON, NEWTON_RTOL
 # The kernels take numpy's error model: a division by zero gives inf or NaN, which the
 # iterations flag, as the vectorised kernels do under np.errstate.
 
-__all__ = ["CONVERGED", "HANDED_BACK", "NOT_CONVERGED", "sagging_steps"]
+__all__ = ["CONVERGED", "HANDED_BACK", "NOT_CONVERGED", "sagging_steps", "tension_catenaries"]
 
 #: Status of a pose: the iteration converged.
 CONVERGED = 0
@@ -124,13 +126,13 @@ def _solve_tension(
 ) -> tuple[float, float, float, bool]:
     """``(H, V, L0, ok)``: :func:`taut.cables._catenary.solve_tension` of one cable, from the
     angle ``phi`` of its end force and ``L0``."""
-    scale = math.hypot(span, rise) + L0
+    chord = math.hypot(span, rise)
     ok = False
     for _ in range(MAX_NEWTON):
         H, V = T0 * math.cos(phi), T0 * math.sin(phi)
         x, z, xH, xV, xL, zV, zL = _ends(H, V, L0, w, EA)
         fx, fz = x - span, z - rise
-        ok = math.hypot(fx, fz) <= NEWTON_RTOL * scale
+        ok = math.hypot(fx, fz) <= NEWTON_RTOL * (chord + L0)
         if ok:
             break
         a, c = xV * H - xH * V, zV * H - xV * V
@@ -399,3 +401,30 @@ def sagging_steps(
                 break
             _anderson(X, Gs, step - 1, phi[k].copy(), g, nxt)
             phi[k] = nxt
+
+
+@njit(cache=True, nogil=True, error_model="numpy")
+def tension_catenaries(
+    span: np.ndarray,
+    rise: np.ndarray,
+    T0: np.ndarray,
+    w: np.ndarray,
+    EA: np.ndarray,
+    phi: np.ndarray,
+    L0: np.ndarray,
+    cold: bool,
+    H: np.ndarray,
+    V: np.ndarray,
+    ok: np.ndarray,
+) -> None:
+    """The catenaries of platform-end tensions ``T0`` through the chords, flat arrays: the
+    end forces into ``H, V``, the unstrained lengths into ``L0`` (in place) and whether Newton
+    converged into ``ok``; from the angles ``phi`` of the end forces and ``L0``, or ``cold``
+    from the catenary whose horizontal force is the tension's share along the chord."""
+    for k in range(span.size):
+        start, length = phi[k], L0[k]
+        if cold:
+            h = T0[k] * span[k] / math.hypot(span[k], rise[k])
+            length, v = _solve_inverse(span[k], rise[k], h, w[k], EA[k])
+            start = math.atan2(v, h)
+        H[k], V[k], L0[k], ok[k] = _solve_tension(span[k], rise[k], T0[k], w[k], EA[k], start, length)

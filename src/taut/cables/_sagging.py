@@ -255,7 +255,7 @@ def catenary_tensions(
 
     Newton's method on the angle of the end force above the horizontal and the unstrained
     length, with the analytic Jacobian of Irvine's two equations (module
-    :mod:`taut.cables._catenary`), from ``start`` (a catenary of the same shape near the
+    :mod:`taut.cables._catenary`, compiled for one cable in :mod:`taut.cables._kernels`), from ``start`` (a catenary of the same shape near the
     answer: the last one of a motion) or from the catenary whose horizontal force is the
     tension's share along the chord.
 
@@ -299,18 +299,26 @@ def catenary_tensions(
     >>> round(float(t.unstrained_lengths), 6), round(float(t.vertical_forces), 2)
     (10.05, -50.25)
     """
+    from taut.cables._kernels import tension_catenaries
+
     span, rise, T0, w, ea = _inputs(span, rise, (platform_tensions, "platform_tensions"), weight, stiffness)
     if np.any(T0 <= 0):
         raise ArgumentError("platform_tensions: expected tensions > 0")
-    with np.errstate(all="ignore"):  # a catenary that overflows is flagged by Newton, not used
-        if start is None:
-            H = T0 * span / np.hypot(span, rise)
-            L0, V, _ = K.solve_inverse(span, rise, H, w, ea)
-        else:
-            if not isinstance(start, Catenary) or start.span.shape != span.shape:
-                raise ArgumentError(f"start: expected a Catenary of shape {span.shape}")
-            H, V, L0 = start.horizontal_forces, start.vertical_forces, start.unstrained_lengths
-        H, V, L0, ok = K.solve_tension(span, rise, T0, w, ea, H, V, L0)
+    if start is not None and (not isinstance(start, Catenary) or start.span.shape != span.shape):
+        raise ArgumentError(f"start: expected a Catenary of shape {span.shape}")
+    size = span.size
+    if start is None:
+        phi, lengths = np.zeros(size), np.zeros(size)
+    else:
+        phi = np.arctan2(start.vertical_forces, start.horizontal_forces).ravel()
+        lengths = np.array(start.unstrained_lengths, dtype=float).ravel()
+    forces, converged = np.empty((2, size)), np.empty(size, dtype=bool)
+    flat = np.ascontiguousarray(np.stack([span, rise, T0, w, ea]).reshape(5, size))
+    tension_catenaries(
+        flat[0], flat[1], flat[2], flat[3], flat[4], phi, lengths, start is None, forces[0], forces[1], converged
+    )
+    H, V = forces.reshape((2, *span.shape))
+    L0, ok = lengths.reshape(span.shape), converged.reshape(span.shape)
     if not ok.all():
         k = np.argwhere(~ok)[0] if ok.ndim else ()
         raise ArgumentError(
