@@ -26,7 +26,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.dynamics._forward import KernelModel, kernel_model
-from taut.dynamics._sagging import Anderson, SaggingCables
+from taut.dynamics._sagging import LEAST_RTOL, Anderson, SaggingCables
 from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError
 from taut.model import Robot
 
@@ -182,11 +182,15 @@ class LoopModel:
         lo0, hi0 = b["lo"].copy(), b["hi"].copy()
         lo0[k] = np.maximum(lo0[k], TAUT_WEIGHTS * sag.weights * (chord + np.maximum(-rise, 0.0)))
         W = W.copy()
+        # from the chords turned by the last update's sag angles (where the cables hardly sag, the
+        # straight distribution first), but for a cable that was at its least tension: it sagged
+        # as much as it does at any tension, and started so, it could stay there where the
+        # distribution from its chord pulls it taut (two consistent answers; sagging_ik's is this)
         catenary = sag.controller
-        if catenary is None:
-            phi, delta = np.arctan2(rise, span), np.zeros(k.size)
-        else:
-            phi = np.arctan2(catenary.vertical_forces, catenary.horizontal_forces)
+        phi, delta = np.arctan2(rise, span), np.zeros(k.size)
+        if catenary is not None:
+            turn = np.arctan2(catenary.vertical_forces, catenary.horizontal_forces)
+            phi += np.where(sag.least, 0.0, turn - np.arctan2(catenary.rise, catenary.span))
             delta = catenary.exit_tensions - catenary.platform_tensions
         history = Anderson()
         failed = np.zeros(self.kernels.n), False
@@ -207,6 +211,7 @@ class LoopModel:
             delta = catenary.exit_tensions - catenary.platform_tensions
             if np.abs(g - phi).max() <= SAG_TOL:
                 sag.controller = catenary
+                sag.least = tau[k] <= lo[k] + LEAST_RTOL * np.maximum(lo[k], 1.0)
                 return tau, True
             phi = history.step(phi, g)
         return failed

@@ -33,12 +33,14 @@ from taut.model import Robot
 if TYPE_CHECKING:
     from taut.cables import Catenary
 
-__all__ = ["ANDERSON_DEPTH", "CABLE_MODELS", "Anderson", "SaggingCables", "cable_model"]
+__all__ = ["ANDERSON_DEPTH", "CABLE_MODELS", "LEAST_RTOL", "Anderson", "SaggingCables", "cable_model"]
 
 #: What :func:`cable_model` calls the two ways the loop models cables.
 CABLE_MODELS = ("straight", "quasi-static elastic catenary")
 
 
+#: A tension within this fraction (at least this many newtons) of its least counts as at it.
+LEAST_RTOL = 1e-6
 #: Steps of the iteration whose differences Anderson's acceleration combines.
 ANDERSON_DEPTH = 3
 
@@ -74,8 +76,9 @@ def cable_model(robot: Robot) -> str:
 
 
 class SaggingCables:
-    """The sagging cables of one robot and the last catenaries of the controller and of the
-    plant, from which the next ones are solved (mutable: a loop's state, not a result)."""
+    """The sagging cables of one robot and the last catenaries of the controller (with the
+    cables that were at their least tension) and of the plant, from which the next ones are
+    solved (mutable: a loop's state, not a result)."""
 
     def __init__(self, robot: Robot) -> None:
         if robot.n_joints:
@@ -87,6 +90,7 @@ class SaggingCables:
         self.exits = robot.exits[self.which]
         self.up = -robot.gravity / np.linalg.norm(robot.gravity)
         self.controller: Catenary | None = None
+        self.least = np.zeros(self.which.size, dtype=bool)
         self.plant: Catenary | None = None
 
     def geometry(self, q: np.ndarray) -> tuple[np.ndarray, ...]:
@@ -100,7 +104,9 @@ class SaggingCables:
         rise = chord @ self.up
         level = chord - rise[:, None] * self.up
         span = np.linalg.norm(level, axis=1)
-        return anchors - q[:d], span, rise, np.linalg.norm(chord, axis=1), level / span[:, None]
+        # a cable hanging vertically (span 0) has no catenary: catenary_tensions names it
+        level /= np.where(span > 0, span, 1.0)[:, None]
+        return anchors - q[:d], span, rise, np.linalg.norm(chord, axis=1), level
 
     def columns(self, arms: np.ndarray, directions: np.ndarray) -> np.ndarray:
         """The structure matrix's columns ``[u_i ; (b_i − p) × u_i]`` of the cables, ``(m, k)``."""
