@@ -205,17 +205,20 @@ def run(ns: argparse.Namespace) -> int:
     } | {key: result[name] for key, name in RESULT_KEYS.items()}
     if out is not None:
         n = robot.n_cables
+        # a sagging cable's tension at its exit too (the platform's is the commanded one)
+        exits = [i for i in range(n) if i in res.sagging_cables]
         head = [
             "time",
             *robot.pose_names,
             *(f"ref_{p}" for p in robot.pose_names),
             *(f"tau{i + 1}" for i in range(n)),
+            *(f"exit_tau{i + 1}" for i in exits),
             "admissible",
         ]
         with written(out, "--out") as tmp, open(tmp, "w") as fh:
             fh.write(",".join(head) + "\n")
             for k in range(res.times.size):
-                vals = [res.times[k], *res.poses[k], *res.reference[k], *res.tensions[k]]
+                vals = [res.times[k], *res.poses[k], *res.reference[k], *res.tensions[k], *res.exit_tensions[k, exits]]
                 fh.write(",".join(f"{v:.9g}" for v in vals) + f",{int(res.feasible[k])}\n")
         data["out"] = str(out)
     if plot is not None:
@@ -309,5 +312,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         default=100.0,
         help="samples per second kept for the JSON and CSV output (default 100; statistics cover every update)",
     )
-    parser.add_argument("--out", metavar="FILE.csv", help="per-sample time, pose, reference pose, tensions, admissible")
+    parser.add_argument(
+        "--out",
+        metavar="FILE.csv",
+        help="per-sample time, pose, reference pose, tensions (sagging cables: at the platform, then at the exits), "
+        "admissible",
+    )
     parser.add_argument("--plot", metavar="FILE.png", help="tensions and tracking error against time")
