@@ -238,13 +238,13 @@ def test_cli_tensions_on_a_sagging_robot(taut_cli):
     assert "catenary" in d["model"]
 
 
-def test_forward_dynamics_refuses_sagging_cables_and_the_cli_warns_of_straight_conditions(taut_cli):
-    """Forward dynamics under given tensions pulls along chords: it refuses sagging cables and
-    names the loop that models them (taut simulate is tested in tests/cli/test_simulate_sagging.py)."""
-    from taut.dynamics import forward_dynamics
+def test_the_chord_kernels_refuse_sagging_cables_and_the_cli_warns_of_straight_conditions(taut_cli):
+    """The dynamics' kernels under given tensions pull along chords: acceleration refuses sagging
+    cables and names what models them (tests/dynamics/test_sagging.py tests those)."""
+    from taut.dynamics import acceleration
 
-    with pytest.raises(UnsupportedRobotError, match=r"cables \[1, 2, 3, 4, 5, 6, 7, 8\] sag .* simulate_control"):
-        forward_dynamics(example("cogiro-sagging"), [0, 0, 2, 0, 0, 0], np.zeros(6), 0.1, tensions=lambda t: np.ones(8))
+    with pytest.raises(UnsupportedRobotError, match=r"cables \[1, 2, 3, 4, 5, 6, 7, 8\] sag .* forward_dynamics"):
+        acceleration(example("cogiro-sagging"), [0, 0, 2, 0, 0, 0], np.zeros(6), np.ones(8))
     ws = taut_cli("workspace", "cogiro-sagging", "--condition", "static", "--grid", "2", "--json")
     assert ws.code == 0 and ws.err.startswith("taut: warning:") and "sagging-static" in ws.err
     json.loads(ws.out)

@@ -6,7 +6,7 @@ import pytest
 
 import taut
 from taut.cables import catenary_forces, sagging_ik
-from taut.dynamics import loop_model, simulate_control
+from taut.dynamics import IntegrationError, forward_dynamics, loop_model, simulate_control
 from taut.errors import UnsupportedRobotError
 from taut.kinematics import anchor_points
 from taut.motion import trajectory_from_waypoints
@@ -87,3 +87,37 @@ def test_sagging_cables_on_a_jointed_platform_are_refused():
     heavy = robot.model_copy(update={"cables": (robot.cables[0].model_copy(update={"weight": 1.0}), *robot.cables[1:])})
     with pytest.raises(UnsupportedRobotError, match="sagging-cable dynamics handle platforms without joints"):
         loop_model(heavy)
+
+
+def test_forward_dynamics_under_given_tensions_reduces_to_straight_cables():
+    """forward_dynamics pulls a sagging cable with its given (platform-end) tension along its
+    tangent: weightless and stiff, the straight cables' motion, fixed-step and adaptive."""
+    robot = taut.example("cogiro-sagging")
+    light, straight = with_cables(robot, weight=1e-12, stiffness=None), with_cables(robot, weight=None, stiffness=None)
+    tau = np.linspace(300.0, 500.0, 8)
+    for options in ({"method": "RK4", "step": 0.01}, {"method": "DOP853", "times": np.linspace(0, 0.3, 7)}):
+        a, b = (
+            forward_dynamics(r, HOME, np.zeros(6), 0.3, tensions=lambda t: tau, **options) for r in (light, straight)
+        )
+        assert np.abs(b.poses[-1] - b.poses[0]).max() > 0.01
+        assert np.abs(a.poses - b.poses).max() <= 1e-9 * np.abs(b.poses).max()
+        assert np.array_equal(a.tensions, b.tensions)
+
+
+def test_forward_dynamics_holds_the_static_ik_lengths_and_not_the_straight_ones():
+    """Commanded unstrained lengths: the catenaries of the static IK's lengths hold the platform
+    at rest; the lengths of the straight elastic model (chord / (1 + τ/EA)) let it move."""
+    robot = taut.example("cogiro-sagging")
+    ik = sagging_ik(robot, HOME, method="qp")
+    held = forward_dynamics(
+        robot, HOME, np.zeros(6), 0.1, lengths=lambda t: ik.unstrained_lengths, method="RK4", step=1e-3
+    )
+    assert np.abs(held.poses - HOME).max() < 1e-8
+    assert np.allclose(held.tensions[0], ik.platform_tensions, rtol=1e-7)
+    straight = ik.chord_lengths / (1 + ik.platform_tensions / robot.axial_stiffness)
+    moved = forward_dynamics(robot, HOME, np.zeros(6), 0.1, lengths=lambda t: straight, method="RK4", step=1e-3)
+    assert np.abs(moved.poses - HOME).max() > 1e-4
+    # an inextensible cable shorter than its chord has no catenary: the motion cannot start
+    rigid = with_cables(robot, stiffness=None)
+    with pytest.raises(IntegrationError, match="not longer than its chord"):
+        forward_dynamics(rigid, HOME, np.zeros(6), 0.1, lengths=lambda t: np.full(8, 5.0), method="RK4", step=1e-3)

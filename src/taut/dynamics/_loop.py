@@ -344,45 +344,23 @@ class LoopModel:
         dt: float,
         wrench: npt.ArrayLike | None,
     ) -> tuple[np.ndarray, np.ndarray]:
-        """:meth:`step` with the sagging cables' pull recomputed at every stage (the stages of
-        :func:`taut.dynamics._kernels.rk4_steps`)."""
-        from taut.dynamics._kernels import GIMBAL_LOCK, OK, accelerations
+        """:meth:`step` with the sagging cables' pull recomputed at every stage
+        (:func:`taut.dynamics._forward.sagging_rk4`)."""
+        from taut.dynamics._forward import sagging_rk4
 
-        b, dof = self.buffers, self.robot.pose_size
+        dof = self.robot.pose_size
         try:
-            x0, v0 = (np.array(a, dtype=float).reshape(dof) for a in (q, qd))
+            x0, v0 = (np.array(a, dtype=float).reshape(1, dof) for a in (q, qd))
             u = np.array(tensions, dtype=float).reshape(1, self.kernels.n)
-            w = np.zeros(dof) if wrench is None else np.array(wrench, dtype=float).reshape(dof)
+            w = np.zeros((1, dof)) if wrench is None else np.array(wrench, dtype=float).reshape(1, dof)
             h = float(dt)
         except (TypeError, ValueError):
             raise TautError(
                 f"{self.robot.name}: q, qd and wrench must be {dof} numbers each, tensions "
                 f"{self.kernels.n} and dt a number"
             ) from None
-        held = u[0, sag.which].copy()
-        u[0, sag.which] = 0.0
-        ip, fp, cab = self.kernels.args
-
-        def acceleration(x: np.ndarray, v: np.ndarray) -> np.ndarray:
-            b["q"][0], b["qd"][0], b["w"][0] = x, v, w + sag.pull(x, held)
-            accelerations(ip, fp, cab, False, b["q"], b["qd"], u, b["w"], b["qdd"], b["tau"], b["status"])
-            if b["status"][0] == GIMBAL_LOCK:
-                raise SingularConfigurationError(
-                    f"{self.robot.name}: the step from {x0.tolist()} reaches the gimbal lock"
-                )
-            if b["status"][0] != OK:
-                raise InfeasiblePoseError(f"{self.robot.name}: the step from {x0.tolist()} reaches a zero-length cable")
-            return b["qdd"][0].copy()
-
-        half = 0.5 * h
-        a1 = acceleration(x0, v0)
-        v2 = v0 + half * a1
-        a2 = acceleration(x0 + half * v0, v2)
-        v3 = v0 + half * a2
-        a3 = acceleration(x0 + half * v2, v3)
-        v4 = v0 + h * a3
-        a4 = acceleration(x0 + h * v3, v4)
-        return x0 + h / 6.0 * (v0 + 2.0 * v2 + 2.0 * v3 + v4), v0 + h / 6.0 * (a1 + 2.0 * a2 + 2.0 * a3 + a4)
+        qn, vn = sagging_rk4(self.robot, self.kernels, sag, x0, v0, u, w, h, False)
+        return qn[0], vn[0]
 
 
 def loop_model(robot: Robot, *, method: str = "qp") -> LoopModel:

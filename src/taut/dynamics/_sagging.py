@@ -133,3 +133,17 @@ class SaggingCables:
         self.plant = catenary_tensions(span, rise, tensions, self.weights, self.stiffness, start=self.plant)
         wrench: np.ndarray = self.columns(arms, self.tangents(self.plant, level)) @ tensions
         return wrench
+
+    def pull_lengths(self, q: np.ndarray, lengths: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The wrench of the sagging cables at the pose ``q`` with unstrained lengths ``L0``
+        (:func:`taut.cables.catenary_forces`), and their tensions at the platform.
+
+        Raises UnreachableLengthsError where an inextensible cable is not longer than its
+        chord, ArgumentError where no catenary is found."""
+        from taut.cables import catenary_forces
+
+        arms, span, rise, _, level = self.geometry(q)
+        catenary = catenary_forces(span, rise, lengths, self.weights, self.stiffness)
+        tensions = catenary.platform_tensions
+        wrench: np.ndarray = self.columns(arms, self.tangents(catenary, level)) @ tensions
+        return wrench, tensions
