@@ -231,7 +231,7 @@ def _calibration():
             [-0.5, 0.4, 0.0, 0.3, -0.3, 0.5], [-0.4, 0.3, 0.5, -0.5, 0.1, 0.0], [0.5, 1.5, 1.0, 0.8, 1.3, 0.6]
         )
     ]
-    return calibrate(robot, simulate_measurements(robot, poses * 3, offsets=[1.0] * 5, sigma=1e-4, seed=0))
+    return calibrate(robot, simulate_measurements(robot, poses, offsets=[1.0] * 5, sigma=1e-4, seed=0))
 
 
 def _result(key, tmp_path):

@@ -59,6 +59,7 @@ SUBJECTS = {
         fixture("caspr/jointed_chain_bodies.xml"), (0, 0, 1.45, 0, 0, 0, 0, 0), "1,2,3", "x=0,y=0,z=1.45"
     ),
     "wrapping (VSCR)": Subject(fixture("taut/vscr_weighted.yaml"), (0.75, -0.5), "1,2", "x=0.75,y=-0.5"),
+    "routed cables": Subject(fixture("taut/routed.yaml"), (0, 0, 0, 0, 0, 0), "1,2,3", "x=0,y=0,z=0"),
 }
 
 #: The geometrico-static problems on a fully-constrained 8-cable robot search every taut subset

@@ -384,11 +384,11 @@ REFUSED = [
         ARM,
         same,
         lambda s: s.replace(
-            "<attachment><link>2</link>",
+            "<attachment><link>0</link><location>2 -2 0</location></attachment><attachment><link>2</link>",
             "<attachment><link>3</link><location>0 0 0</location></attachment><attachment><link>2</link>",
         ),
         UnsupportedRobotError,
-        "routed through 3 attachments",
+        r"runs through links 3 -> 2; a taut cable runs from the base \(link 0\) to a body",
     ),
     (ARM, lambda s: s.replace(' axis="0 1 1"', ""), same, RobotFileError, "R_AXIS joint needs an axis"),
     (ARM, lambda s: s.replace('axis="0 1 1"', 'axis="0 0 0"'), same, RobotFileError, "non-zero"),

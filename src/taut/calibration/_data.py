@@ -57,6 +57,11 @@ def refuse_unsupported(robot: Robot) -> None:
         raise UnsupportedRobotError(
             f"{robot.name}: calibration models straight cables; it has obstacles its cables may wrap around"
         )
+    if robot.routed_cables:
+        cables = ", ".join(str(i + 1) for i in robot.routed_cables)
+        raise UnsupportedRobotError(
+            f"{robot.name}: calibration models straight cables from fixed exit points; cables {cables} run through via points"
+        )
 
 
 @dataclass(frozen=True)

@@ -41,7 +41,7 @@ import numpy as np
 
 from taut._results import Result
 from taut.errors import TautError
-from taut.kinematics import anchors_at, body_frames, cable_paths
+from taut.kinematics import anchors_at, body_frames, cable_paths, refuse_routed
 from taut.model import Robot
 
 __all__ = ["CapsuleModel", "capsule_model", "capsule_segments"]
@@ -128,6 +128,12 @@ def capsule_model(robot: Robot) -> CapsuleModel:
     -------
     CapsuleModel
 
+    Raises
+    ------
+    UnsupportedRobotError
+        Cables routed through via points (a capsule per cable runs from its exit point to its
+        anchor).
+
     References
     ----------
     .. [1] J. Lieskovský, "Cable-driven Parallel Manipulator With Adjustable Platform Geometry",
@@ -144,6 +150,7 @@ def capsule_model(robot: Robot) -> CapsuleModel:
     >>> model.n_capsules, model.pairs.tolist()
     (4, [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]])
     """
+    refuse_routed(robot, "the interference check")
     n = robot.n_cables
     caps = robot.body_capsules
     pad = np.zeros(3 - robot.dimension)

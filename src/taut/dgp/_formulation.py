@@ -72,7 +72,7 @@ from taut.dgp._undecided import REFERENCE_UNKNOWNS, scaled
 from taut.errors import CableSetError, SingularConfigurationError, UnsupportedRobotError
 from taut.geometry import angles_from_matrix
 from taut.interval import Expr, LinearFilter, System, compile_system, compile_tape, const, evaluate_point, variables
-from taut.kinematics import refuse_swivels
+from taut.kinematics import refuse_routed, refuse_swivels
 from taut.model import Robot
 
 #: Three body points whose triangle has a smaller area ratio than this are collinear.
@@ -88,8 +88,9 @@ OTHER_POLES_UP_TO = 4
 def refuse_unmodelled(robot: Robot, analysis: str) -> None:
     """Refuse what the geometrico-static equations do not model: cables that wrap around
     obstacles or around a planar winch's exit pulley (their lengths and directions depend on
-    the wrapping, :mod:`taut.wrapping`), swivelling pulleys off a spatial rigid platform, and
-    jointed platforms (their joint forces are not balanced).
+    the wrapping, :mod:`taut.wrapping`), swivelling pulleys off a spatial rigid platform,
+    jointed platforms (their joint forces are not balanced) and cables routed through via
+    points.
 
     Raises
     ------
@@ -115,6 +116,7 @@ def refuse_unmodelled(robot: Robot, analysis: str) -> None:
         raise UnsupportedRobotError(
             f"{robot.name}: {analysis} handles platforms without joints (a jointed platform's joint forces are not balanced)"
         )
+    refuse_routed(robot, analysis)
 
 
 def load(robot: Robot) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -156,6 +156,10 @@ def kernel_model(robot: Robot, *, actuators: bool = False, sagging: bool = False
             f"{[i + 1 for i in robot.sagging_cables]} sag (cables[].weight); forward_dynamics and simulate_control "
             "(taut simulate) model them as quasi-static catenaries"
         )
+    if robot.routed_cables and robot.is_point_mass:
+        raise UnsupportedRobotError(
+            f"{robot.name}: the dynamics of cables routed through via points (cables[].via) needs a rigid platform"
+        )
     key = (id(robot), actuators)
     hit = _MODELS.get(key)
     if hit is not None and hit[0] is robot:
@@ -188,7 +192,7 @@ def kernel_model(robot: Robot, *, actuators: bool = False, sagging: bool = False
     fp[FLOAT_LAYOUT["T"]] = Tm.ravel()
     fp[FLOAT_LAYOUT["Tinv"]] = np.linalg.inv(Tm).ravel()
     ip = np.array([pd.kind, *axes], dtype=np.int64)
-    if robot.n_joints:
+    if robot.n_joints or robot.routed_cables:
         ip, fp = _tree_arrays(robot, pd, ip, fp)
     if actuators and robot.actuated_joints.size:
         from taut.dynamics._tree import ACTUATOR
@@ -204,11 +208,12 @@ def kernel_model(robot: Robot, *, actuators: bool = False, sagging: bool = False
 
 
 def _tree_arrays(robot: Robot, pd: PlatformDynamics, ip: np.ndarray, fp: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """``ip`` and ``fp`` of a jointed platform for :mod:`taut.dynamics._tree`: the platform's,
-    then its bodies' joints, masses and inertias (:func:`taut.dynamics._jointed.body_inertia`
-    names a body without them)."""
+    """``ip`` and ``fp`` of a jointed platform, or of one with routed cables, for
+    :mod:`taut.dynamics._tree`: the platform's, then its bodies' joints, masses and inertias
+    (:func:`taut.dynamics._jointed.body_inertia` names a body without them), then the via
+    points of the routed cables."""
     from taut.dynamics._jointed import body_inertia
-    from taut.dynamics._tree import BODY_FLOATS, JOINTED
+    from taut.dynamics._tree import BODY_FLOATS, JOINTED, VIA_FLOATS
 
     if pd.kind not in (PLANAR, SPATIAL):
         raise UnsupportedRobotError(f"{robot.name}: the dynamics of jointed bodies needs a rigid platform")
@@ -233,8 +238,11 @@ def _tree_arrays(robot: Robot, pd: PlatformDynamics, ip: np.ndarray, fp: np.ndar
         extra[k, 7:10] = inertia.coms[k + 1]
         extra[k, 10:19] = inertia.inertias[k + 1].ravel()
         extra[k, 19:22] = inertia.forces[k + 1]
-    ip = np.array([JOINTED, *ip[1:4], pd.kind, len(bodies), *parents, *revolute], dtype=np.int64)
-    return ip, np.concatenate([fp, extra.ravel()])
+    cables, via_bodies, points = robot.via_points
+    vias = np.zeros((cables.size, VIA_FLOATS))
+    vias[:, 0], vias[:, 1], vias[:, 2 : 2 + d] = cables, via_bodies, points
+    ip = np.array([JOINTED, *ip[1:4], pd.kind, len(bodies), *parents, *revolute, cables.size], dtype=np.int64)
+    return ip, np.concatenate([fp, extra.ravel(), vias.ravel()])
 
 
 def _status_error(robot: Robot, status: np.ndarray, where: str) -> TautError:

@@ -23,10 +23,13 @@ evaluates ``M_X Ẋ + h_X − w``.  The orientation angles follow from ``α = E 
 (:mod:`taut.dynamics._kernels`).
 
 Robot data, packed for the kernels (:func:`taut.dynamics._forward.kernel_model`):
-``ip = (JOINTED, axis₁, axis₂, axis₃, platform kind, n_joints, parents…, revolute…)``,
+``ip = (JOINTED, axis₁, axis₂, axis₃, platform kind, n_joints, parents…, revolute…, n_via)``,
 ``fp`` the platform's floats (:data:`PLATFORM_FLOATS`, the layout of
 :data:`taut.dynamics._kernels.FLOAT_LAYOUT`) then :data:`BODY_FLOATS` per body (joint axis
-and origin in the parent frame, mass, centre of mass, inertia, constant force), and
+and origin in the parent frame, mass, centre of mass, inertia, constant force), then
+:data:`VIA_FLOATS` per via point of a routed cable (``cables[].via``, in cable order: a chain
+of straight segments whose length is their sum, and whose tension pulls each via point on a
+moving body towards both its neighbours, Lau, Oetomo & Halgamuge 2013), and
 ``cables (n, CABLE_COLUMNS)``: exit point, anchor, ``EA``, the body the anchor is on, and
 the axis and radius of a swivelling pulley (:func:`cable_path`).  A row whose body is
 ``−(j + 1)`` is the actuator of joint ``j`` (:data:`ACTUATOR`): its column of ``A`` is the unit
@@ -75,6 +78,7 @@ __all__ = [
     "PLATFORM_FLOATS",
     "SINGULAR_INERTIA",
     "SWIVEL_TOL",
+    "VIA_FLOATS",
     "ZERO_LENGTH",
     "cable_path",
     "tree_acceleration",
@@ -90,6 +94,9 @@ PLATFORM_FLOATS = 46
 #: Per body: joint axis (3, unit, parent frame), joint origin (3), mass, centre of mass (3),
 #: inertia about it (9, body frame), constant force at it (3, fixed frame).
 BODY_FLOATS = 22
+#: Per via point of a routed cable, after the bodies' floats: its cable, its body (−1: the
+#: fixed frame) and the point (3, in that body's frame).
+VIA_FLOATS = 5
 #: ``cables[i, 7]`` of joint ``j``'s actuator is ``ACTUATOR − j``.
 ACTUATOR = -1
 #: Columns of ``cables``: exit point (3), anchor (3, in its body's frame), ``EA``, body index,
@@ -362,6 +369,11 @@ def tree_terms(
     else:
         for i in range(3):
             h[3 + i] -= fp[25 + i]
+    n_via = ip[6 + 2 * nj]
+    vias = fp[PLATFORM_FLOATS + nj * BODY_FLOATS :].reshape((n_via, VIA_FLOATS))
+    world = np.empty((n_via, 3))
+    row, prev, f = np.empty(CABLE_COLUMNS), np.empty(3), np.empty(3)
+    first = 0  # the cable's first via row (the rows are in cable order)
     for i in range(cables.shape[0]):
         body = int(cables[i, 7])
         if body < 0:
@@ -373,29 +385,84 @@ def tree_terms(
             continue
         _mv(rot[body], cables[i, 3:6], anchor)
         anchor += pos[body]
-        length = cable_path(cables[i], anchor, v3)
+        row[:] = cables[i]
+        last = first
+        while last < n_via and int(vias[last, 0]) == i:
+            last += 1
+        # a routed cable's chain up to its last via point, whose straight segment ends at the anchor
+        chain = 0.0
+        prev[:] = cables[i, :3]
+        for v in range(first, last):
+            b = int(vias[v, 1])
+            if b < 0:
+                world[v] = vias[v, 2:5]
+            else:
+                _mv(rot[b], vias[v, 2:5], world[v])
+                world[v] += pos[b]
+            seg = np.sqrt(np.sum((world[v] - prev) ** 2))
+            if seg < MIN_LENGTH:
+                return ZERO_LENGTH
+            chain += seg
+            prev[:] = world[v]
+        row[:3] = prev
+        length = cable_path(row, anchor, v3)
         if length < 0.0:
             return ZERO_LENGTH
-        lengths[i] = length
-        for j in range(d):
-            A[j, i] = v3[j]
-        _cross(anchor - pos[0], v3, v4)
-        if pk == 1:
-            A[2, i] = v4[2]
-        else:
-            for j in range(3):
-                A[3 + j, i] = v4[j]
-        for j in range(m, P):
+        lengths[i] = length + chain
+        for j in range(P):
             A[j, i] = 0.0
-        for j in range(1, B):
-            if not beyond[body, j]:
+        _add_point_column(A, i, body, anchor, v3, pos, axes, beyond, ip, m, d, pk, v4, v5)
+        for v in range(first, last):
+            b = int(vias[v, 1])
+            if b < 0:
                 continue
-            if ip[5 + nj + j] == 1:
-                _cross(axes[j], anchor - pos[j], v5)
-            else:
-                v5[:] = axes[j]
-            A[m + j - 1, i] = v3[0] * v5[0] + v3[1] * v5[1] + v3[2] * v5[2]
+            # pulled towards both its neighbours along the chain
+            before = cables[i, :3] if v == first else world[v - 1]
+            after = anchor if v == last - 1 else world[v + 1]
+            f[:] = (before - world[v]) / np.sqrt(np.sum((before - world[v]) ** 2))
+            f += (after - world[v]) / np.sqrt(np.sum((after - world[v]) ** 2))
+            _add_point_column(A, i, b, world[v], f, pos, axes, beyond, ip, m, d, pk, v4, v5)
+        first = last
     return OK
+
+
+@njit(cache=True, nogil=True)
+def _add_point_column(
+    A: np.ndarray,
+    i: int,
+    body: int,
+    point: np.ndarray,
+    f: np.ndarray,
+    pos: np.ndarray,
+    axes: np.ndarray,
+    beyond: np.ndarray,
+    ip: np.ndarray,
+    m: int,
+    d: int,
+    pk: int,
+    v4: np.ndarray,
+    v5: np.ndarray,
+) -> None:
+    """Add to cable ``i``'s column of ``A`` the generalized force of a unit force ``f`` at the
+    point ``point`` of body ``body``: ``f`` and ``(point − p) × f`` on the platform rows,
+    ``f · ∂point/∂q_j`` on the rows of the joints between the body and the platform."""
+    nj = ip[5]
+    for j in range(d):
+        A[j, i] += f[j]
+    _cross(point - pos[0], f, v4)
+    if pk == 1:
+        A[2, i] += v4[2]
+    else:
+        for j in range(3):
+            A[3 + j, i] += v4[j]
+    for j in range(1, nj + 1):
+        if not beyond[body, j]:
+            continue
+        if ip[5 + nj + j] == 1:
+            _cross(axes[j], point - pos[j], v5)
+        else:
+            v5[:] = axes[j]
+        A[m + j - 1, i] += f[0] * v5[0] + f[1] * v5[1] + f[2] * v5[2]
 
 
 @njit(cache=True, nogil=True)

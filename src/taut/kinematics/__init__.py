@@ -20,8 +20,9 @@ if TYPE_CHECKING:
         structure_matrix,
     )
     from taut.kinematics._jointed import actuator_jacobian, joint_forces, jointed_structure_matrix
-    from taut.kinematics._paths import CABLE_OK, MIN_LENGTH, cable_paths, obstacles_met, refuse_wrapped
+    from taut.kinematics._paths import CABLE_OK, MIN_LENGTH, cable_paths, obstacles_met, refuse_routed, refuse_wrapped
     from taut.kinematics._pose import anchor_points, anchors_at, as_poses, body_frames, platform_frame
+    from taut.kinematics._routing import via_points_at
     from taut.kinematics._swivel import (
         SwivelPaths,
         refuse_near_swivel_axis,
@@ -53,12 +54,14 @@ _LAZY = {
     "MIN_LENGTH": "taut.kinematics._paths",
     "cable_paths": "taut.kinematics._paths",
     "obstacles_met": "taut.kinematics._paths",
+    "refuse_routed": "taut.kinematics._paths",
     "refuse_wrapped": "taut.kinematics._paths",
     "anchor_points": "taut.kinematics._pose",
     "anchors_at": "taut.kinematics._pose",
     "as_poses": "taut.kinematics._pose",
     "body_frames": "taut.kinematics._pose",
     "platform_frame": "taut.kinematics._pose",
+    "via_points_at": "taut.kinematics._routing",
     "SwivelPaths": "taut.kinematics._swivel",
     "refuse_near_swivel_axis": "taut.kinematics._swivel",
     "refuse_swivels": "taut.kinematics._swivel",
@@ -92,6 +95,7 @@ __all__ = [
     "platform_frame",
     "refuse_near_swivel_axis",
     "refuse_swivels",
+    "refuse_routed",
     "refuse_wrapped",
     "robot_stiffness",
     "structure_matrix",
@@ -100,6 +104,7 @@ __all__ = [
     "swivel_paths",
     "tension_from_stretch",
     "unstretched_length",
+    "via_points_at",
 ]
 
 __getattr__, __dir__ = lazy_exports(__name__, _LAZY, __all__)

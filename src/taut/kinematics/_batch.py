@@ -146,8 +146,13 @@ def _ik_kernel(
 
 def supports_batch(robot: Robot) -> bool:
     """True when the kernel handles the robot (no jointed bodies, no swivelling pulleys on a
-    planar robot, no obstacles its straight cables could meet)."""
-    return robot.n_joints == 0 and not (robot.dimension == 2 and robot.swivel_cables) and not robot.obstacles
+    planar robot, no obstacles its straight cables could meet, no cables through via points)."""
+    return (
+        robot.n_joints == 0
+        and not (robot.dimension == 2 and robot.swivel_cables)
+        and not robot.obstacles
+        and not robot.routed_cables
+    )
 
 
 def kernel_structure_matrices(robot: Robot, arr: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

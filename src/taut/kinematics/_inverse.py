@@ -43,6 +43,7 @@ from taut.kinematics._paths import (
     wrapped_error,
 )
 from taut.kinematics._pose import anchors_at, as_poses
+from taut.kinematics._routing import routed_segments, via_points_at, via_wrench
 from taut.model import Robot
 
 #: From this many poses on, rigid platforms go through the Numba kernel; below it NumPy is
@@ -144,7 +145,8 @@ def ik_status(robot: Robot, poses: np.ndarray) -> tuple[IKResult, np.ndarray]:
     """
     d = robot.dimension
     b = anchors_at(robot, poses)
-    lengths, exits, status = cable_paths(robot, b)
+    vias = _vias(robot, poses)
+    lengths, exits, status = cable_paths(robot, b, via=vias)
     v = exits - b
     free = np.sqrt(np.einsum("nki,nki->nk", v, v))
     good = status == CABLE_OK
@@ -154,6 +156,8 @@ def ik_status(robot: Robot, poses: np.ndarray) -> tuple[IKResult, np.ndarray]:
         m = cross(b - poses[:, None, :d], u)
         m = m[..., None] if m.ndim == 2 else m
         W = np.concatenate([W, np.swapaxes(m, 1, 2)], axis=1)
+    if vias is not None:
+        W = W + via_wrench(robot, poses, vias, routed_segments(robot, b, vias)[3])
     W = np.where(good.all(axis=1)[:, None, None], W, 0.0)
     return IKResult(lengths, u, b, W, exits), status
 
@@ -187,7 +191,11 @@ def lengths_at(robot: Robot, poses: np.ndarray) -> np.ndarray:
     >>> lengths_at(example("planar-4cable"), np.zeros((1, 3))).round(4)
     array([[1.3086, 1.3086, 1.3086, 1.3086]])
     """
-    return cable_paths(robot, anchors_at(robot, poses))[0]
+    return cable_paths(robot, anchors_at(robot, poses), via=_vias(robot, poses))[0]
+
+
+def _vias(robot: Robot, poses: np.ndarray) -> np.ndarray | None:
+    return via_points_at(robot, poses) if robot.routed_cables else None
 
 
 def inverse_kinematics(robot: Robot, poses: npt.ArrayLike) -> IKResult:
@@ -262,7 +270,7 @@ def _batched(robot: Robot, poses: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
     """``(lengths, W, ok)`` of :func:`batch_structure_matrices`, or None
     for fewer than :data:`BATCH_POSES` poses, a robot the kernel does not handle, or one with
     swivelling pulleys (the kernel does not return their tangent points)."""
-    if poses.shape[0] < BATCH_POSES or robot.swivel_cables:
+    if poses.shape[0] < BATCH_POSES or robot.swivel_cables or robot.routed_cables:
         return None
     from taut.kinematics._batch import kernel_structure_matrices, supports_batch  # Numba, for large batches only
 

@@ -40,6 +40,7 @@ import numpy.typing as npt
 from taut.errors import TautError
 from taut.kinematics._inverse import inverse_kinematics, lengths_at
 from taut.kinematics._pose import as_poses, body_frames
+from taut.kinematics._routing import routed_segments, via_points_at
 from taut.model import Robot
 
 __all__ = ["actuator_jacobian", "actuator_positions", "joint_forces", "jointed_structure_matrix"]
@@ -148,6 +149,14 @@ def actuator_jacobian(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     if nj:
         db = _joint_derivatives(robot, arr, ik.anchors)
         J[:, :n, m:] = -np.einsum("nid,nijd->nij", ik.directions, db)
+        if robot.routed_cables:
+            cables, bodies, _ = robot.via_points
+            vias = via_points_at(robot, arr)
+            f = routed_segments(robot, ik.anchors, vias)[3]
+            on = bodies > 0  # points on the platform or fixed do not move with the joints
+            dv = _point_derivatives(robot, arr, vias[:, on], bodies[on])
+            joint_columns = J[:, :, m:].transpose(1, 0, 2)  # a view: (cable rows, N, joints)
+            np.add.at(joint_columns, cables[on], -np.einsum("nvd,nvjd->vnj", f[:, on], dv))
         J[:, n:, m:] = np.eye(nj)
     return J[0] if single else J
 

@@ -17,6 +17,7 @@ import numpy.typing as npt
 from taut.errors import PoseError, UnsupportedRobotError, WrappedCableError
 from taut.geometry import segment_enters_polygon, segment_meets_circle
 from taut.kinematics._pose import anchors_at, as_poses
+from taut.kinematics._routing import routed_segments
 from taut.kinematics._swivel import swivel_parameters, swivel_paths
 from taut.model import Robot
 
@@ -140,7 +141,9 @@ def obstacles_met(robot: Robot, poses: npt.ArrayLike) -> np.ndarray:
     return met[0] if single else met
 
 
-def cable_paths(robot: Robot, anchors: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def cable_paths(
+    robot: Robot, anchors: np.ndarray, *, via: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Where each cable runs, given its platform anchor: its length, the start of its straight
     part and whether its direction exists.
 
@@ -149,22 +152,30 @@ def cable_paths(robot: Robot, anchors: np.ndarray) -> tuple[np.ndarray, np.ndarr
     robot : Robot
     anchors : ndarray, shape (N, n, d)
         Platform anchors in the fixed frame [m] (:func:`~taut.kinematics.anchors_at`).
+    via : ndarray, shape (N, V, d), optional
+        The via points of the routed cables (``cables[].via``) in the fixed frame, in cable
+        order then path order; needed, and only allowed, when the robot has routed cables.
 
     Returns
     -------
     lengths : ndarray, shape (N, n)
-        Cable lengths [m], the arc on a swivelling pulley included.
+        Cable lengths [m], the arc on a swivelling pulley and the segments through via points
+        included.
     starts : ndarray, shape (N, n, d)
-        Where the straight part of each cable begins [m]: its exit point, or the tangent
-        point of its swivelling pulley.
+        Where the straight part of each cable that ends at its anchor begins [m]: its exit
+        point, the tangent point of its swivelling pulley, or its last via point.
     status : ndarray of int, shape (N, n)
-        :data:`CABLE_OK` or why the cable has no direction (see :func:`ik_status`), or why its
-        straight line is not the cable (it meets an obstacle, :func:`obstacles_met`).
+        :data:`CABLE_OK` or why the cable has no direction (see :func:`ik_status`; a routed
+        cable with a segment of zero length has none), or why its straight line is not the
+        cable (it meets an obstacle, :func:`obstacles_met`).
 
     Raises
     ------
     PoseError
         ``anchors`` is not an ``(N, n, d)`` array.
+    UnsupportedRobotError
+        A robot with routed cables without ``via`` (an analysis that takes each cable as one
+        straight segment), or with obstacles.
 
     References
     ----------
@@ -188,9 +199,21 @@ def cable_paths(robot: Robot, anchors: np.ndarray) -> tuple[np.ndarray, np.ndarr
             f"{robot.name}: expected anchors of shape (N, {robot.n_cables}, {robot.dimension}), got {np.shape(anchors)}"
         )
     exits = np.broadcast_to(robot.exits[None], anchors.shape)
+    chain = None
+    if robot.routed_cables:
+        refuse_routed(robot, "" if via is None else None)
+        if robot.obstacles:
+            raise UnsupportedRobotError(
+                f"{robot.name}: cables run through via points (cables[].via) on a robot with obstacles, "
+                "whose cables taut wraps as single straight segments"
+            )
+        chain, exits, shortest, _ = routed_segments(robot, anchors, np.asarray(via))
     v = exits - anchors
     lengths = np.sqrt(np.einsum("nki,nki->nk", v, v))
     status = np.where(lengths < MIN_LENGTH, ZERO_LENGTH, CABLE_OK)
+    if chain is not None:
+        lengths = lengths + chain
+        status = np.where(shortest < MIN_LENGTH, ZERO_LENGTH, status)
     if robot.swivel_cables:
         idx, axes, radii = swivel_parameters(robot)
         paths = swivel_paths(robot.exits[idx], axes, radii, anchors[:, idx])
@@ -201,6 +224,35 @@ def cable_paths(robot: Robot, anchors: np.ndarray) -> tuple[np.ndarray, np.ndarr
     if robot.obstacles:
         status = np.where((status == CABLE_OK) & (first_obstacle(robot, exits, anchors) >= 0), WRAPPED, status)
     return lengths, exits, status
+
+
+def refuse_routed(robot: Robot, what: str | None) -> None:
+    """Refuse a robot with routed cables (``cables[].via``) in an analysis ``what`` that takes
+    each cable as one straight segment from its exit point to its anchor (``""``: an unnamed
+    one; ``None``: the analysis handles them).
+
+    Parameters
+    ----------
+    robot : Robot
+    what : str or None
+        The analysis, for the message.
+
+    Raises
+    ------
+    UnsupportedRobotError
+        The robot has routed cables and ``what`` is not None.
+
+    Examples
+    --------
+    >>> from taut.model import example
+    >>> refuse_routed(example("planar-4cable"), "the DGP")
+    """
+    if robot.routed_cables and what is not None:
+        cables = ", ".join(str(i + 1) for i in robot.routed_cables)
+        raise UnsupportedRobotError(
+            f"{robot.name}: cables {cables} run through via points (cables[].via), and "
+            f"{what or 'this analysis'} takes each cable as one straight segment from its exit point to its anchor"
+        )
 
 
 def refuse_wrapped(robot: Robot, poses: npt.ArrayLike, *, times: npt.ArrayLike | None = None, what: str = "") -> None:

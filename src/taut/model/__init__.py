@@ -29,6 +29,7 @@ if TYPE_CHECKING:
         Shape,
         SwivelPulley,
         Trajectory,
+        ViaPoint,
     )
     from taut.model._schema import robot_schema, schema_text
 
@@ -71,6 +72,7 @@ _LAZY = {
     "Robot": "taut.model._robot",
     "Shape": "taut.model._robot",
     "SwivelPulley": "taut.model._robot",
+    "ViaPoint": "taut.model._robot",
     "Trajectory": "taut.model._robot",
     "robot_schema": "taut.model._schema",
     "schema_text": "taut.model._schema",
@@ -94,6 +96,7 @@ __all__ = [
     "Shape",
     "SwivelPulley",
     "Trajectory",
+    "ViaPoint",
     "example",
     "example_descriptions",
     "example_names",

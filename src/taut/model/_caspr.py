@@ -45,11 +45,17 @@ free), a link jointed to the ground or to the ``T_XYZ`` carrier
 beside the platform (not reachable from the platform), the quaternion joints of CASPR's earlier
 releases (``SPHERICAL``, ``SPATIAL``: four coordinates for three degrees of freedom), a
 ``PLANAR_*`` joint between two links, further links on a point-mass platform, an actuated
-platform joint, and a cable routed through more than two attachments (several segments of the
-cable-routing matrix of Lau et al. 2013, a cable across several links): a taut cable is one
-segment from a base exit to one anchor. Since every link has one parent, a CASPR bodies file
-holds no closed chain. An unknown joint type is a :class:`~taut.errors.RobotFileError` naming
-it.
+platform joint, and a cable whose attachments do not start or end on the base (link 0): a
+taut cable runs from a base exit to an anchor on a body. Since every link has one parent, a
+CASPR bodies file holds no closed chain. An unknown joint type is a
+:class:`~taut.errors.RobotFileError` naming it.
+
+A cable of more than two attachments (the cable-routing matrix of Lau et al. 2013, a cable
+across several links) is a routed cable (``cables[].via``): its first attachment, on the base,
+is the exit point, its last the anchor, and the ones between are via points, on the base
+(``fixed``, relative to the platform's joint origin as the exits are) or on a link (in its
+frame, as anchors are, ``com`` references shifted).  A cable listed from its link to the base
+is read in the other direction.  Via points on a planar robot must lie in its plane.
 
 CASPR's own models, as taut reads them (the files of ``tests/model/fixtures/caspr/real``, tested
 there): CoGiRo (``SCDM``, a ``SPATIAL_EULER_XYZ`` platform, 8 cables) and KNTU_planar (a
@@ -90,7 +96,7 @@ swivel back as a ``base_rotating_pulley``.
 Refused with :class:`UnsupportedRobotError`, never approximated: other pulley attachments
 (``screw_base_rotating_pulley``), swivelling pulleys of planar robots whose entry vector
 leaves the plane (in the plane, the pulley is taut's planar swivel), cables routed through
-more than two attachments (a cable through several links), chains of links from the ground,
+attachments that do not start or end on the base, chains of links from the ground,
 actuated platform joints, the joints and cable types above, planar cables that leave the
 plane; on writing, sagging cables (``cables[].weight``: CASPR's cable models are straight).
 
@@ -398,6 +404,8 @@ class _Cable:
     link: int
     location: np.ndarray
     swivel: tuple[np.ndarray, float] | None = None  #: ``cable_entry_vector``, ``pulley_radius``
+    #: the attachments between the first and the last, in the cable's order from the base
+    via: tuple[tuple[int, np.ndarray], ...] = ()
 
 
 def _read_cable(elem: ET.Element, n_links: int, where: str) -> _Cable:
@@ -447,22 +455,18 @@ def _read_cable(elem: ET.Element, n_links: int, where: str) -> _Cable:
         if not 0 <= link <= n_links:
             raise RobotFileError(f"{aw}: attachment on link {link}, but the bodies file has links 1..{n_links}")
         points.append((link, _vector(el, "location", f"{aw} <attachment>")))
-    if len(points) != 2:
-        if len(points) > 2:
-            route = " -> ".join(str(link) for link, _ in points)
-            raise UnsupportedRobotError(
-                f"{aw}: cable {name!r} is routed through {len(points)} attachments (links {route}), {len(points) - 1} "
-                "segments of CASPR's cable-routing matrix; a taut cable is one segment from a base exit to one "
-                "anchor, so a cable across several links has no taut equivalent"
-            )
+    if len(points) < 2:
         raise RobotFileError(f"{aw}: cable {name!r} needs two attachments, got {len(points)}")
-    points.sort(key=lambda p: p[0])
-    (l0, base), (l1, loc) = points
+    # a cable's segments join consecutive attachments; taut's runs from its exit on the base
+    if points[0][0] != 0 and points[-1][0] == 0 and swivel is None:
+        points.reverse()
+    (l0, base), (l1, loc) = points[0], points[-1]
     if l0 != 0 or l1 == 0:
+        route = " -> ".join(str(link) for link, _ in points)
         raise UnsupportedRobotError(
-            f"{aw}: cable {name!r} runs between links {l0} and {l1}; a taut cable runs from the base (link 0) to a body"
+            f"{aw}: cable {name!r} runs through links {route}; a taut cable runs from the base (link 0) to a body"
         )
-    return _Cable(name, elem.tag, reference, (lo, hi), stiffness, base, l1, loc, swivel)
+    return _Cable(name, elem.tag, reference, (lo, hi), stiffness, base, l1, loc, swivel, tuple(points[1:-1]))
 
 
 def _read_cables(root: ET.Element, source: str, n_links: int, cable_set: str | None) -> tuple[str, list[_Cable]]:
@@ -793,6 +797,50 @@ def _jointed_bodies(links: list[_Link], platform: _Link, rigid: bool, plane: _Pl
     return _Jointed(bodies, body_of, offsets, unbounded, negated, massive, permuted)
 
 
+def _via_points(
+    c: _Cable,
+    i: int,
+    links: list[_Link],
+    platform: _Link,
+    body_of: dict[int, str],
+    origin: np.ndarray,
+    plane: _Plane | None,
+    jointed: _Jointed,
+    rigid: bool,
+    source: str,
+) -> list[dict[str, object]]:
+    """The via points of cable ``i``: its attachments between the first and the last, on the
+    base (``fixed``, relative to the platform's joint origin as the exits are) or on a link
+    (in its frame, as anchors are)."""
+    if not rigid and np.any(c.location != 0):
+        raise UnsupportedRobotError(
+            f"{source}: cable {i} ({c.name!r}) runs through via points to an attachment {c.location.tolist()} off a "
+            "point mass, which taut takes at the point mass by moving the exit: the segments before it would change"
+        )
+    out = []
+    for link, location in c.via:
+        if link == 0:
+            point, body, offset = location - origin, "fixed", 0.0
+        elif link == platform.num or link in body_of:
+            point = location + links[link - 1].com if c.reference == "com" else location
+            body = "platform" if link == platform.num else body_of[link]
+            offset = jointed.normal_offsets.get(link, 0.0)
+        else:
+            raise UnsupportedRobotError(
+                f"{source}: cable {i} ({c.name!r}) runs through link {link}, which carries no cables in taut's model"
+            )
+        if plane is not None:
+            off = float(point[plane.normal]) + offset  # a link's plane lies -offset along the normal in its frame
+            if abs(off) > 1e-9 * max(1.0, float(np.abs(point).max())):
+                raise UnsupportedRobotError(
+                    f"{source}: cable {i} ({c.name!r}) runs through a point {off:g} m off the robot's plane; "
+                    "taut's planar robots keep cables in the plane"
+                )
+            point = point[list(plane.axes)]
+        out.append({"point": point.tolist(), "body": body})
+    return out
+
+
 def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) -> Robot:
     source = str(path)
     link, origin, (dim, rigid, plane_name, orientation) = _platform_link(links, source)
@@ -829,6 +877,8 @@ def _robot(path: Path, links: list[_Link], set_id: str, cables: list[_Cable]) ->
                 )
             exit_, anchor = exit_[list(plane.axes)], anchor[list(plane.axes)]
         cable: dict[str, object] = {"name": c.name or None, "exit": exit_.tolist(), "tension": list(c.force)}
+        if c.via:
+            cable["via"] = _via_points(c, i, links, link, body_of, origin, plane, jointed, rigid, source)
         if c.link in body_of:
             cable["body"] = body_of[c.link]
         if rigid:
@@ -1005,6 +1055,8 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
     ``PLANAR_XZ`` link (taut's ``y`` is CASPR's ``z``, where its gravity acts), or ``PLANAR_XY``
     when it has a mass and no gravity in its plane; point masses ``T_XYZ``, ``P_XZ`` or ``P_XY``.
     A constant external wrench that is a downward force becomes the mass whose weight it is.
+    A cable routed through via points has them as attachments between its first (link 0) and
+    its last, on link 0 for a point on the fixed frame.
     Jointed bodies become links after the platform's, actuated where their joint has an
     (unbounded) actuator (``R_X``/``R_Y``/``R_Z``/``P_X``
     along a positive coordinate axis, else ``R_AXIS``/``P_AXIS``; a planar revolute joint
@@ -1124,8 +1176,11 @@ def write_caspr(robot: Robot, bodies_path: str | Path) -> None:
             ET.SubElement(pulley, "fixed_location").text = _fmt(exits[i - 1])
             ET.SubElement(pulley, "pulley_radius").text = repr(float(c.swivel.radius))
             ET.SubElement(pulley, "cable_entry_vector").text = _fmt(lift(np.array(c.swivel.axis)))
-        for link_num, point in (("0", exits[i - 1]), (link_of[c.body or "platform"], lift(robot.anchors[i - 1]))):
-            if link_num == "0" and c.swivel is not None:
+        route = [("0", exits[i - 1])]
+        route += [("0" if v.body == "fixed" else link_of[v.body], lift(np.array(v.point, float))) for v in c.via]
+        route.append((link_of[c.body or "platform"], lift(robot.anchors[i - 1])))
+        for k, (link_num, point) in enumerate(route):
+            if k == 0 and c.swivel is not None:
                 continue
             att = ET.SubElement(atts, "attachment")
             ET.SubElement(att, "link").text = link_num

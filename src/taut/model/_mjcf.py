@@ -19,7 +19,10 @@ feels, because MuJoCo refuses moving bodies without one.  ``option gravity`` is 
 Cable *i* is the spatial tendon ``cable{i}`` through the site ``exit{i}`` (world body, at
 ``a_i``) and the site ``anchor{i}`` (platform body, or the jointed body it hangs from, at
 ``r_i``), so that MuJoCo's tendon length is ``‖a_i − b_i‖`` (a cable over a swivelling pulley
-wraps it, below); its length bounds, where the robot gives them, are the tendon's ``range``.
+wraps it, below); a cable routed through via points (``cables[].via``) runs through the sites
+``via{i}_{k}`` between them, on the world body or the body each point is fixed to, so that the
+tendon's length is the sum of its segments; its length bounds, where the robot gives them, are
+the tendon's ``range``.
 The actuator ``tension{i}`` is a force actuator on that tendon with ``gear = −1``: its control
 is the cable tension ``τ_i`` [N] pulling the platform towards the exit point, its
 ``ctrlrange`` the tension bounds.  Cables are ideal (massless, inextensible): their
@@ -493,6 +496,9 @@ def mjcf_text(robot: Robot) -> str:
     bodies = _jointed_bodies(robot, platform)
     for i, (anchor, cable) in enumerate(zip(robot.anchors, robot.cables), 1):
         ET.SubElement(bodies[cable.body or "platform"], "site", name=f"anchor{i}", pos=_vector(_in_space(anchor, d)))
+        for k, via in enumerate(cable.via, 1):
+            where = world if via.body == "fixed" else bodies[via.body]
+            ET.SubElement(where, "site", name=f"via{i}_{k}", pos=_vector(_in_space(via.point, d)))
     idx, axes, zeros, radii = swivel_frames(robot)
     for j, i in enumerate(idx):
         _pulley(robot, world, int(i) + 1, axes[j], zeros[j], float(radii[j]))
@@ -506,6 +512,8 @@ def mjcf_text(robot: Robot) -> str:
         ET.SubElement(tendon, "site", site=f"exit{i}")
         if i - 1 in swivel:
             ET.SubElement(tendon, "geom", geom=f"wheel{i}", sidesite=f"side{i}")
+        for k in range(1, len(robot.cables[i - 1].via) + 1):
+            ET.SubElement(tendon, "site", site=f"via{i}_{k}")
         ET.SubElement(tendon, "site", site=f"anchor{i}")
     actuators = ET.SubElement(root, "actuator")
     tmin, tmax = robot.tension_bounds

@@ -43,7 +43,7 @@ Finite = Annotated[float, Field(allow_inf_nan=False)]
 #: Coordinates [m], within :data:`~taut.model._limits.MAX_MAGNITUDE`.
 Coordinate = Annotated[float, Field(allow_inf_nan=False, ge=-MAX_MAGNITUDE, le=MAX_MAGNITUDE)]
 
-Derived = TypeVar("Derived", np.ndarray, tuple[np.ndarray, np.ndarray])
+Derived = TypeVar("Derived", np.ndarray, tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray])
 
 
 #: A numpydoc section header (``Attributes`` and its underline): where a model's docstring
@@ -223,6 +223,39 @@ class SwivelPulley(_Strict):
         return v
 
 
+class ViaPoint(_Strict):
+    """A point that a routed cable runs through between its exit point and its anchor: an
+    eyelet or a frictionless guide on the fixed frame or on a platform body.  A cable through
+    via points is a chain of straight segments, exit → via points → anchor, its length their
+    sum and its tension the same along it: CASPR's cables of more than two attachments, whose
+    segments the cable-routing matrix of Lau, Oetomo & Halgamuge (2013, §III) assigns to links.
+
+    Attributes
+    ----------
+    point : tuple of float
+        The point in the frame of its body [m] (``dimension`` numbers).
+    body : str
+        ``fixed`` (the fixed frame), ``platform`` (default) or a name of ``platform.bodies``.
+
+    References
+    ----------
+    .. [1] D. Lau, D. Oetomo, S. K. Halgamuge, "Generalized modeling of multilink cable-driven
+       manipulators with arbitrary routing using the cable-routing matrix", IEEE Transactions
+       on Robotics 29(5), 2013, §III. (docs/references.bib: lau2013)
+
+    Examples
+    --------
+    >>> ViaPoint(point=(0.0, 0.1, 0.0), body="arm").body
+    'arm'
+    """
+
+    point: tuple[Coordinate, ...]
+    body: str = Field(
+        default="platform",
+        description="`fixed` (the fixed frame), `platform` or a name of `platform.bodies`: where the point is fixed",
+    )
+
+
 class Cable(_Strict):
     """Cable *i*: from the fixed exit point ``a_i`` to the anchor ``r_i`` on a platform body.
 
@@ -255,6 +288,9 @@ class Cable(_Strict):
         Exit pulley of a planar winch, that collidable cables wrap around.
     swivel : SwivelPulley or None
         Swivelling exit pulley.
+    via : tuple of ViaPoint
+        Points the cable runs through, in order from its exit point to its anchor (a routed
+        cable: a chain of straight segments).
 
     Examples
     --------
@@ -285,6 +321,12 @@ class Cable(_Strict):
         description="swivelling exit pulley: the cable runs onto it at `exit` and leaves "
         "it tangentially towards the anchor (not to be confused with `pulley`, the exit pulley of a planar "
         "winch that collidable cables wrap around)",
+    )
+    via: tuple[ViaPoint, ...] = Field(
+        default=(),
+        description="points the cable runs through from its exit point to its anchor, in order: a routed "
+        "cable, a chain of straight segments whose length is their sum (CASPR's cables of more than two "
+        "attachments)",
     )
 
     @field_validator("tension")
@@ -757,13 +799,27 @@ class Robot(_Strict):
                 )
             if c.body is not None and c.body not in bodies:
                 raise RobotFileError(f"cables[{i}].body: unknown body {c.body!r}; expected one of {sorted(bodies)}")
+            for k, v in enumerate(c.via, 1):
+                need(v.point, d, f"cables[{i}].via[{k}].point")
+                if v.body != "fixed" and v.body not in bodies:
+                    raise RobotFileError(
+                        f"cables[{i}].via[{k}].body: unknown body {v.body!r}; expected 'fixed' or one of {sorted(bodies)}"
+                    )
+                if pm and v.body == "platform":
+                    raise RobotFileError(
+                        f"cables[{i}].via[{k}]: a point-mass platform has no extent for a cable to run through"
+                    )
+            if c.via and (c.swivel is not None or c.pulley is not None or c.weight):
+                raise RobotFileError(
+                    f"cables[{i}].via: a routed cable runs straight between its points (no swivel, pulley or weight)"
+                )
             if c.weight and (c.swivel is not None or c.pulley is not None):
                 raise RobotFileError(
                     f"cables[{i}].weight: a sagging cable runs from a fixed exit point (no swivel or pulley)"
                 )
-        keys: dict[tuple[tuple[float, ...], tuple[float, ...], str], int] = {}
+        keys: dict[tuple[tuple[float, ...], tuple[float, ...], str, tuple[ViaPoint, ...]], int] = {}
         for i, c in enumerate(self.cables, 1):
-            key = (tuple(c.exit), tuple(c.anchor or [0.0] * d), c.body or "platform")
+            key = (tuple(c.exit), tuple(c.anchor or [0.0] * d), c.body or "platform", c.via)
             if key in keys:
                 raise RobotFileError(
                     f"cables[{i}]: same exit point and anchor as cables[{keys[key]}] (a duplicated cable)"
@@ -789,6 +845,8 @@ class Robot(_Strict):
         for j, b in enumerate(p.bodies, 1):
             if b.name in seen:
                 raise RobotFileError(f"platform.bodies[{j}].name: duplicate body name {b.name!r}")
+            if b.name == "fixed":
+                raise RobotFileError(f"platform.bodies[{j}].name: 'fixed' names the fixed frame (cables[].via)")
             if b.parent not in seen:
                 raise RobotFileError(f"platform.bodies[{j}].parent: unknown or later body {b.parent!r}")
             seen.add(b.name)
@@ -838,6 +896,11 @@ class Robot(_Strict):
     def sagging_cables(self) -> tuple[int, ...]:
         """0-based indices of the cables with a positive ``weight``: they sag (elastic catenaries)."""
         return tuple(i for i, c in enumerate(self.cables) if c.weight)
+
+    @property
+    def routed_cables(self) -> tuple[int, ...]:
+        """The 0-based indices of the cables routed through via points (``cables[].via``)."""
+        return tuple(i for i, c in enumerate(self.cables) if c.via)
 
     @property
     def is_point_mass(self) -> bool:
@@ -904,6 +967,24 @@ class Robot(_Strict):
         """Index of each cable's body: 0 for the platform, ``k`` for ``platform.bodies[k-1]``."""
         index = {"platform": 0} | {b.name: k for k, b in enumerate(self.platform.bodies, 1)}
         return self._derived("cable_bodies", lambda: np.array([index[c.body or "platform"] for c in self.cables]))
+
+    @property
+    def via_points(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The via points of the routed cables (``cables[].via``), in cable order then in the
+        order each cable runs through them: the cable of each ``(V,)``, its body ``(V,)`` (0
+        the platform, ``k`` ``platform.bodies[k-1]``, −1 the fixed frame) and the point in that
+        body's frame ``(V, d)``."""
+
+        def build() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+            index = {"platform": 0, "fixed": -1} | {b.name: k for k, b in enumerate(self.platform.bodies, 1)}
+            rows = [(i, index[v.body], v.point) for i, c in enumerate(self.cables) for v in c.via]
+            return (
+                np.array([r[0] for r in rows], dtype=int),
+                np.array([r[1] for r in rows], dtype=int),
+                np.array([r[2] for r in rows], dtype=float).reshape(len(rows), self.dimension),
+            )
+
+        return self._derived("via_points", build)
 
     @property
     def tension_bounds(self) -> tuple[np.ndarray, np.ndarray]:

@@ -512,6 +512,8 @@ def _refusal(robot: Robot) -> str | None:
             return f"cables[{i}].radius (a cable radius)"
         if c.weight:
             return f"cables[{i}].weight (a sagging cable; WireX's cables are straight)"
+        if c.via:
+            return f"cables[{i}].via (a cable routed through via points; a WireX cable runs from its exit point to its anchor)"
     if len({c.tension for c in robot.cables}) > 1:
         return "different tension bounds per cable (WireX has one min_cable_load and max_cable_load)"
     lo, hi = robot.cables[0].tension

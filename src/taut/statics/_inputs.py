@@ -66,13 +66,23 @@ def input_bounds(robot: Robot, cables: tuple[np.ndarray, np.ndarray]) -> tuple[n
     return np.concatenate([cables[0], lo]), np.concatenate([cables[1], hi])
 
 
-def _split_bounds(
-    lo: np.ndarray, hi: np.ndarray
-) -> tuple[tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]:
-    """The bounds ``(lower, upper)`` of the pushing and of the pulling columns of actuators
-    whose forces lie in ``[lo, hi]`` (module docstring)."""
-    zero = np.zeros_like(lo)
-    return (np.maximum(lo, zero), np.maximum(hi, zero)), (np.maximum(-hi, zero), np.maximum(-lo, zero))
+def _split(
+    W: np.ndarray, lo: np.ndarray, hi: np.ndarray, n_cables: int
+) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
+    """``W``'s actuator columns (those after the first ``n_cables``) as a pushing and a pulling
+    column each, with their bounds (module docstring): ``[W_cables, W_act, −W_act]``."""
+    act = slice(n_cables, W.shape[-1])
+    zero = np.zeros_like(lo[act])
+    low = np.concatenate([lo[:n_cables], np.maximum(lo[act], zero), np.maximum(-hi[act], zero)])
+    high = np.concatenate([hi[:n_cables], np.maximum(hi[act], zero), np.maximum(-lo[act], zero)])
+    return np.concatenate([W, -W[..., act]], axis=-1), (low, high)
+
+
+def _joined(x: np.ndarray, n_cables: int) -> tuple[np.ndarray, np.ndarray]:
+    """The tensions and the actuator forces ``ζ = ζ⁺ − ζ⁻`` of a solution ``x`` of
+    :func:`_split`'s system."""
+    k = (x.shape[-1] - n_cables) // 2
+    return x[..., :n_cables].copy(), x[..., n_cables : n_cables + k] - x[..., n_cables + k :]
 
 
 def solve_inputs(
@@ -120,18 +130,10 @@ def solve_inputs(
     >>> x, bool(ok)
     (array([ 1., -3.]), True)
     """
-    n = W.shape[-1]
-    if n == n_cables:
-        res = solve_tensions(W, -wrench, tension_bounds=(lo, hi), method=method)
-        return np.array(res.tensions), np.asarray(res.feasible), np.asarray(res.status)
-    act = slice(n_cables, n)
-    split = np.concatenate([W, -W[..., act]], axis=-1)
-    push, pull = _split_bounds(lo[act], hi[act])
-    low, high = np.concatenate([lo[:n_cables], push[0], pull[0]]), np.concatenate([hi[:n_cables], push[1], pull[1]])
-    res = solve_tensions(split, -wrench, tension_bounds=(low, high), method=method)
-    x = np.array(res.tensions[..., :n])
-    x[..., act] -= res.tensions[..., n:]
-    return x, np.asarray(res.feasible), np.asarray(res.status)
+    split, bounds = _split(W, lo, hi, n_cables)
+    res = solve_tensions(split, -wrench, tension_bounds=bounds, method=method)
+    tensions, forces = _joined(np.asarray(res.tensions), n_cables)
+    return np.concatenate([tensions, forces], axis=-1), np.asarray(res.feasible), np.asarray(res.status)
 
 
 def equilibrium_equations(
@@ -210,12 +212,9 @@ def equilibrium_equations(
         W = inverse_kinematics(robot, arr).structure_matrix
         return (W[0], w[0], cables) if single else (W, w, cables)
     A = jointed_structure_matrix(robot, arr)
-    acting = n + robot.actuated_joints
-    W = np.concatenate([A[..., :n], A[..., acting], -A[..., acting]], axis=-1)
+    W, bounds = _split(A[..., np.r_[:n, n + robot.actuated_joints]], *input_bounds(robot, cables), n)
     loads = -joint_forces(robot, arr, np.zeros(n)) if wrench is None else np.zeros((N, robot.n_joints))
     wj = np.concatenate([w, loads], axis=-1)
-    push, pull = _split_bounds(*robot.actuator_bounds)
-    bounds = np.concatenate([cables[0], push[0], pull[0]]), np.concatenate([cables[1], push[1], pull[1]])
     return (W[0], wj[0], bounds) if single else (W, wj, bounds)
 
 
@@ -288,7 +287,5 @@ def distribute_tensions(
     res = solve_tensions(W, w, tension_bounds=bounds, method=method)
     if not robot.n_joints:
         return res
-    n, k = robot.n_cables, len(robot.actuated_joints)
-    x = np.asarray(res.tensions)
-    forces = x[..., n : n + k] - x[..., n + k :]
-    return TensionResult(x[..., :n].copy(), res.feasible, res.status, method, forces)
+    tensions, forces = _joined(np.asarray(res.tensions), robot.n_cables)
+    return TensionResult(tensions, res.feasible, res.status, method, forces)

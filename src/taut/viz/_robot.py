@@ -37,7 +37,7 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import PoseError
-from taut.kinematics import anchor_points, as_poses, body_frames
+from taut.kinematics import anchor_points, as_poses, body_frames, via_points_at
 from taut.model import Circle, Robot
 from taut.viz._style import (
     DISALLOWED,
@@ -356,7 +356,7 @@ def draw_robot(robot: Robot, pose: npt.ArrayLike | None = None, ax: Axes | None 
     A planar robot is drawn on 2-D axes, a spatial one on 3-D axes (an ``Axes3D``, made by
     ``projection="3d"``); with ``ax=None`` a new figure with axes of the right kind is made,
     axes of the other kind raise :class:`~taut.errors.ArgumentError`, several poses a
-    :class:`~taut.errors.PoseError`.  Each cable is one line with
+    :class:`~taut.errors.PoseError`.  Each cable is one line, through its via points, with
     ``gid="cable-<i>"`` and label ``"cable <i>"`` (1-based ``i``)."""
     pose = _default_pose(robot) if pose is None else pose
     arr, _ = as_poses(robot, pose)
@@ -368,6 +368,13 @@ def draw_robot(robot: Robot, pose: npt.ArrayLike | None = None, ax: Axes | None 
     return drawn
 
 
+def _cable_runs(robot: Robot, arr: np.ndarray, anchors: np.ndarray) -> list[np.ndarray]:
+    """Each cable as the polyline its line is drawn along: from its exit point through its
+    via points (``cables[].via``) to its anchor."""
+    vias, owner = via_points_at(robot, arr)[0], robot.via_points[0]
+    return [np.vstack([robot.exits[i], vias[owner == i], anchors[i]]) for i in range(robot.n_cables)]
+
+
 def _draw_2d(ax: Axes, robot: Robot, arr: np.ndarray) -> Axes:
     from matplotlib.patches import Polygon as PolygonPatch
     from shapely import LineString, Point
@@ -376,10 +383,10 @@ def _draw_2d(ax: Axes, robot: Robot, arr: np.ndarray) -> Axes:
     b = anchor_points(robot, arr)[0]
     pos, rot = body_frames(robot, arr)
     pos, rot = pos[0], rot[0]
-    for i, (a, bi) in enumerate(zip(robot.exits, b)):
+    for i, run in enumerate(_cable_runs(robot, arr, b)):
         ax.plot(
-            [a[0], bi[0]],
-            [a[1], bi[1]],
+            run[:, 0],
+            run[:, 1],
             color=cable_color(i),
             lw=1.6,
             zorder=2,
@@ -466,11 +473,11 @@ def _draw_3d(ax: Axes3D, robot: Robot, arr: np.ndarray) -> Axes3D:
     pos, rot = body_frames(robot, arr)
     pos, rot = pos[0], rot[0]
     drawn.append(b)
-    for i, (a, bi) in enumerate(zip(robot.exits, b)):
+    for i, run in enumerate(_cable_runs(robot, arr, b)):
         ax.plot(
-            [a[0], bi[0]],
-            [a[1], bi[1]],
-            [a[2], bi[2]],
+            run[:, 0],
+            run[:, 1],
+            run[:, 2],
             color=cable_color(i),
             lw=1.4,
             label=f"cable {i + 1}",

@@ -646,6 +646,8 @@ def _spec(
         why = "its cables leave through swivelling pulleys, whose exit points move"
     elif robot.obstacles:
         why = "it has obstacles its cables may wrap around"
+    elif robot.routed_cables:
+        why = "its cables run through via points"
     elif robot.n_cables < m:
         why = f"it has {robot.n_cables} cables for {m} wrench components: its workspace has no interior to certify"
     if why is not None:

@@ -20,7 +20,15 @@ import numpy as np
 import numpy.typing as npt
 
 from taut.errors import ArgumentError
-from taut.kinematics import anchor_points, as_poses, body_frames, cable_paths, swivel_parameters, swivel_paths
+from taut.kinematics import (
+    anchor_points,
+    as_poses,
+    body_frames,
+    cable_paths,
+    swivel_parameters,
+    swivel_paths,
+    via_points_at,
+)
 from taut.model import Circle, Robot
 from taut.viz._robot import _exit_labels, _frame_outline, _hull_faces_3d, _sphere, _transform
 from taut.viz._style import CABLE_COLORS, DISALLOWED, FRAME, OBSTACLE, PLATFORM
@@ -154,8 +162,10 @@ class Poses:
     """The geometry of a robot at ``N`` poses, computed once for every frame of a view.
 
     ``anchors`` ``(N, n, 3)``; ``origins`` ``(N, B, 3)`` and ``rotations`` ``(N, B, d, d)`` of
-    the platform's bodies; ``starts`` ``(N, n, 3)``, where each straight cable begins (its
-    exit point or its pulley's tangent point); ``lengths`` ``(N, n)`` of straight cables."""
+    the platform's bodies; ``starts`` ``(N, n, 3)``, where the straight segment of each cable
+    that ends at its anchor begins (its exit point, its pulley's tangent point or its last via
+    point); ``lengths`` ``(N, n)`` of straight or routed cables; ``vias`` ``(N, V, 3)``, the via
+    points of the routed cables (:func:`taut.kinematics.via_points_at`)."""
 
     poses: np.ndarray
     anchors: np.ndarray
@@ -163,6 +173,7 @@ class Poses:
     rotations: np.ndarray
     starts: np.ndarray
     lengths: np.ndarray
+    vias: np.ndarray
 
 
 def at_poses(robot: Robot, poses: npt.ArrayLike) -> Poses:
@@ -170,8 +181,9 @@ def at_poses(robot: Robot, poses: npt.ArrayLike) -> Poses:
     arr, _ = as_poses(robot, poses)
     b = anchor_points(robot, arr)
     origins, rotations = body_frames(robot, arr)
-    lengths, starts, _ = cable_paths(robot, b)
-    return Poses(arr, lift(b), lift(origins), rotations, lift(starts), lengths)
+    vias = via_points_at(robot, arr)
+    lengths, starts, _ = cable_paths(robot, b, via=vias if robot.routed_cables else None)
+    return Poses(arr, lift(b), lift(origins), rotations, lift(starts), lengths, lift(vias))
 
 
 def bounds(robot: Robot, geometry: Sequence[Poses], extra: Sequence[np.ndarray] = ()) -> dict[str, Any]:
@@ -357,10 +369,13 @@ def pose_traces(
     lengths = g.lengths[s] if lengths is None else lengths
     slack = np.zeros(n, bool) if slack is None else np.asarray(slack, bool)
     pulley_lines, arcs = _pulleys(robot, g, s)
+    via_cables = robot.via_points[0]
     runs = []
     for i in range(n):
         if paths is not None:
             run = lift(paths[i])
+        elif i in robot.routed_cables:
+            run = np.vstack([lift(robot.exits[i])[None], g.vias[s, via_cables == i], g.anchors[s, i][None]])
         else:
             run = np.vstack([p for p in (arcs.get(i), g.starts[s, i][None], g.anchors[s, i][None]) if p is not None])
         runs.append(run)
