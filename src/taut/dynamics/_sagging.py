@@ -83,6 +83,10 @@ class SaggingCables:
     def __init__(self, robot: Robot) -> None:
         if robot.n_joints:
             raise UnsupportedRobotError(f"{robot.name}: the sagging-cable dynamics handle platforms without joints")
+        if robot.routed_cables:
+            raise UnsupportedRobotError(
+                f"{robot.name}: the sagging-cable dynamics handle robots without cables routed through via points"
+            )
         self.robot = robot
         self.which = np.array(robot.sagging_cables, dtype=np.int64)
         self.weights = robot.cable_weights[self.which]
