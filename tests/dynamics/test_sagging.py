@@ -110,12 +110,12 @@ def test_forward_dynamics_holds_the_static_ik_lengths_and_not_the_straight_ones(
     robot = taut.example("cogiro-sagging")
     ik = sagging_ik(robot, HOME, method="qp")
     held = forward_dynamics(
-        robot, HOME, np.zeros(6), 0.1, lengths=lambda t: ik.unstrained_lengths, method="RK4", step=1e-3
+        robot, HOME, np.zeros(6), 0.05, lengths=lambda t: ik.unstrained_lengths, method="RK4", step=1e-3
     )
     assert np.abs(held.poses - HOME).max() < 1e-8
     assert np.allclose(held.tensions[0], ik.platform_tensions, rtol=1e-7)
     straight = ik.chord_lengths / (1 + ik.platform_tensions / robot.axial_stiffness)
-    moved = forward_dynamics(robot, HOME, np.zeros(6), 0.1, lengths=lambda t: straight, method="RK4", step=1e-3)
+    moved = forward_dynamics(robot, HOME, np.zeros(6), 0.05, lengths=lambda t: straight, method="RK4", step=1e-3)
     assert np.abs(moved.poses - HOME).max() > 1e-4
     # an inextensible cable shorter than its chord has no catenary: the motion cannot start
     rigid = with_cables(robot, stiffness=None)
