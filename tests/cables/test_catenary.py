@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 from scipy.integrate import quad
 from scipy.optimize import brentq, minimize
 
-from taut.cables import catenary_forces, catenary_lengths, catenary_shape
+from taut.cables import catenary_forces, catenary_lengths, catenary_shape, catenary_tensions
 from taut.cables._catenary import ends
 from taut.errors import ArgumentError, TautError, UnreachableLengthsError
 
@@ -247,3 +247,33 @@ def test_bad_input_is_one_line(call, error, words):
     with pytest.raises(error, match=words) as info:
         call()
     assert "\n" not in str(info.value)
+
+
+def test_the_catenary_of_a_platform_tension_is_the_one_of_its_length():
+    """catenary_tensions inverts catenary_forces' platform-end tension: 64 cables, inclined up
+    and down, elastic and inextensible, slack and taut, from a nearby start and cold."""
+    rng = np.random.default_rng(3)
+    span, rise = rng.uniform(1.0, 20.0, 64), rng.uniform(-10.0, 10.0, 64)
+    L0 = np.hypot(span, rise) * rng.uniform(1.0005, 1.1, 64)
+    w, ea = rng.uniform(0.5, 30.0, 64), np.where(rng.random(64) < 0.5, np.inf, rng.uniform(1e4, 1e7, 64))
+    ref = catenary_forces(span, rise, L0, w, ea)
+    cold = catenary_tensions(span, rise, ref.platform_tensions, w, ea)
+    near = catenary_forces(span, rise, L0 * 1.001, w, ea)
+    warm = catenary_tensions(span, rise, ref.platform_tensions, w, ea, start=near)
+    assert np.allclose(warm.unstrained_lengths, L0, rtol=1e-9)
+    assert np.allclose(warm.horizontal_forces, ref.horizontal_forces, rtol=1e-8)
+    assert np.allclose(warm.vertical_forces, ref.vertical_forces, rtol=1e-8, atol=1e-8 * ref.platform_tensions)
+    assert np.allclose(warm.exit_tensions, ref.exit_tensions, rtol=1e-9)
+    # a tension may have two catenaries through the ends, a taut and a slacker one: cold, either,
+    # whose length gives that tension back by the forward problem (to the conditioning of a taut
+    # inextensible cable, whose tension changes 1e6 times faster than its length)
+    back = catenary_forces(span, rise, cold.unstrained_lengths, w, ea)
+    assert np.allclose(back.platform_tensions, ref.platform_tensions, rtol=1e-6)
+    assert np.allclose(back.horizontal_forces, cold.horizontal_forces, rtol=1e-6)
+    with pytest.raises(ArgumentError, match="platform_tensions"):
+        catenary_tensions(span, rise, -ref.platform_tensions, w, ea)
+    with pytest.raises(ArgumentError, match="start"):
+        catenary_tensions(span, rise, ref.platform_tensions, w, ea, start=near.span)
+    # 1 N cannot hold up 10 m of a 10 N/m cable hanging from an exit 5 m higher
+    with pytest.raises(ArgumentError, match="too slack"):
+        catenary_tensions(10.0, 5.0, 1.0, 10.0)

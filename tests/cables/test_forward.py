@@ -11,7 +11,7 @@ import pytest
 from scipy.optimize import root
 
 from taut.cables import sagging_fk, sagging_ik
-from taut.errors import TautError, UnsupportedRobotError
+from taut.errors import TautError, UnreachableLengthsError, UnsupportedRobotError
 from taut.kinematics import inverse_kinematics
 from taut.model import example
 from taut.statics import external_wrench
@@ -103,8 +103,10 @@ def test_inextensible_limit():
 
 
 def test_no_equilibrium_is_an_answer():
+    """8.5 m inextensible cables reach across the frame pairwise (no triangle inequality
+    refuses them) but leave no pose where every one is longer than its chord."""
     rigid = _with(COGIRO, stiffness=None)
-    fk = sagging_fk(rigid, [5.0] * 8)
+    fk = sagging_fk(rigid, [8.5] * 8)
     assert not fk.found
     d = fk.as_dict()
     assert d["pose"] is None and d["found"] is False
@@ -145,5 +147,29 @@ def test_cli_no_equilibrium_is_an_answer(taut_cli, tmp_path):
     from taut.model import save_robot
 
     save_robot(_with(COGIRO, stiffness=None), tmp_path / "rigid.yaml")
-    d = taut_cli("fk", str(tmp_path / "rigid.yaml"), "--lengths", "5,5,5,5,5,5,5,5", "--json").json()
+    d = taut_cli("fk", str(tmp_path / "rigid.yaml"), "--lengths", "8.5,8.5,8.5,8.5,8.5,8.5,8.5,8.5", "--json").json()
     assert d["found"] is False and d["pose"] is None
+
+
+def test_lengths_no_pose_fits_are_refused_by_the_triangle_inequality():
+    """Two inextensible cables whose lengths and anchors' distance fall short of their exits'
+    distance: each cannot be longer than its chord at any pose.  A hair longer, they pass."""
+    rigid = _with(COGIRO, stiffness=None)
+    reach = np.linalg.norm(rigid.exits[2] - rigid.exits[7]) - np.linalg.norm(rigid.anchors[2] - rigid.anchors[7])
+    for margin, refused in ((-1e-6, True), (1e-6, False)):
+        L = np.full(8, 30.0)
+        L[[2, 7]] = (reach + margin) / 2
+        if refused:
+            with pytest.raises(UnreachableLengthsError, match="cables 3 and 8 .* shorter than its chord"):
+                sagging_fk(rigid, L)
+        else:  # an answer, found or not
+            assert sagging_fk(rigid, L).as_dict()["found"] in (True, False)
+
+
+def test_cli_fk_lengths_no_pose_fits_exit_2(taut_cli, tmp_path):
+    from taut.model import save_robot
+
+    save_robot(_with(COGIRO, stiffness=None), tmp_path / "rigid.yaml")
+    run = taut_cli("fk", str(tmp_path / "rigid.yaml"), "--lengths", "5,5,5,5,5,5,5,5", "--json")
+    assert run.code == 2 and run.out == "" and run.err.count("\n") == 1
+    assert run.err.startswith("taut: error: ") and "no pose fits the lengths" in run.err and "cables 3 and 8" in run.err

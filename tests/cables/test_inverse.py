@@ -238,9 +238,51 @@ def test_cli_tensions_on_a_sagging_robot(taut_cli):
     assert "catenary" in d["model"]
 
 
-def test_cli_refuses_to_simulate_and_warns_of_straight_conditions(taut_cli):
-    run = taut_cli("simulate", "cogiro-sagging", "--waypoints=0,0,2,0,0,0;0.01,0,2,0,0,0", "--duration", "0.1")
-    assert run.code == 2 and run.err.count("\n") == 1 and "catenary forces are not simulated" in run.err
+def test_the_chord_kernels_refuse_sagging_cables_and_the_cli_warns_of_straight_conditions(taut_cli):
+    """The dynamics' kernels under given tensions pull along chords: acceleration refuses sagging
+    cables and names what models them (tests/dynamics/test_sagging.py tests those)."""
+    from taut.dynamics import acceleration
+
+    with pytest.raises(UnsupportedRobotError, match=r"cables \[1, 2, 3, 4, 5, 6, 7, 8\] sag .* forward_dynamics"):
+        acceleration(example("cogiro-sagging"), [0, 0, 2, 0, 0, 0], np.zeros(6), np.ones(8))
     ws = taut_cli("workspace", "cogiro-sagging", "--condition", "static", "--grid", "2", "--json")
     assert ws.code == 0 and ws.err.startswith("taut: warning:") and "sagging-static" in ws.err
     json.loads(ws.out)
+
+
+@pytest.mark.parametrize(
+    "name, weight, stiffness, method, low, high",
+    [
+        (
+            "spatial-8cable",
+            0.5,
+            1e5,
+            "improved-closed-form",
+            [-0.6, -0.4, -0.4, -0.1, -0.1, -0.1],
+            [0.6, 0.4, 0.4] + [0.1] * 3,
+        ),
+        ("planar-4cable", 0.2, 1e4, "improved-closed-form", [-0.3, -0.3, -0.1], [0.3, 0.3, 0.1]),
+        ("camera-4cable", 2.0, None, "closed-form", [-6.0, -10.0, 3.0], [6.0, 10.0, 10.0]),
+    ],
+)
+def test_the_compiled_iteration_answers_as_the_vectorised_one(monkeypatch, name, weight, stiffness, method, low, high):
+    """The closed forms run pose by pose in a compiled kernel; the vectorised iteration (every
+    other method's) is the reference, over 200 poses of a spatial, a planar and a point-mass
+    robot.  Where the iteration hardly converges (100 steps or more) rounding decides whether it
+    converges within its budget, in either."""
+    import taut.cables._inverse as inverse
+
+    robot = _with(example(name), weight=weight, stiffness=stiffness)
+    poses = np.random.default_rng(1).uniform(low, high, (200, len(low)))
+    compiled = sagging_ik(robot, poses, method=method)
+    monkeypatch.setattr(inverse, "COMPILED_METHODS", ())
+    reference = sagging_ik(robot, poses, method=method)
+    steady = (compiled.steps < 100) & (reference.steps < 100)
+    assert steady.mean() > 0.95 and (compiled.status == "optimal").sum() >= 20
+    assert (compiled.status[steady] == reference.status[steady]).all()
+    for field in ("unstrained_lengths", "platform_tensions", "exit_tensions", "sag", "structure_matrix"):
+        a, b = getattr(compiled, field)[steady], getattr(reference, field)[steady]
+        assert np.allclose(a, b, rtol=1e-9, atol=1e-9 * np.abs(b).max()), field
+    k = int(np.flatnonzero(compiled.status == "optimal")[0])
+    single = sagging_ik(robot, poses[k], method=method)
+    assert _balance(robot, poses[k], single) < 1e-9

@@ -223,13 +223,14 @@ def solve_tension(
     platform end is ``T0``: Newton on the angle ``φ`` of the end force (``H = T0 cos φ``,
     ``V = T0 sin φ``) and ``L0``, from the catenary ``(H, V, L0)`` given as a start."""
     phi = np.arctan2(V, H)
-    scale = np.hypot(span, rise) + L0
+    chord = np.hypot(span, rise)
     ok = np.zeros(np.shape(T0), dtype=bool)
     for _ in range(MAX_NEWTON):
         H, V = T0 * np.cos(phi), T0 * np.sin(phi)
         x, z, (xH, xV, xL, zH, zV, zL) = ends(H, V, L0, w, EA)
         fx, fz = x - span, z - rise
-        ok = np.hypot(fx, fz) <= NEWTON_RTOL * scale
+        # relative to the current length: a far-off start (a slack catenary's) sets no tolerance
+        ok = np.hypot(fx, fz) <= NEWTON_RTOL * (chord + L0)
         if ok.all():
             break
         a, c = xV * H - xH * V, zV * H - zH * V

@@ -41,7 +41,7 @@ import numpy.typing as npt
 from taut._checks import as_array
 from taut._results import Result
 from taut.cables import _catenary as K
-from taut.errors import TautError, UnsupportedRobotError
+from taut.errors import TautError, UnreachableLengthsError, UnsupportedRobotError
 from taut.geometry import cross, rate_matrix
 from taut.kinematics import as_poses, default_guess, forward_kinematics, inverse_kinematics
 from taut.model import MAX_MAGNITUDE, Robot
@@ -236,6 +236,28 @@ def _newton(balance: _Balance, q: np.ndarray, lam: float, scale: float, force: f
     return q, bool(np.abs(r).max() <= FK_RTOL * force), MAX_FK_STEPS
 
 
+def _refuse_unreachable(robot: Robot, L0: np.ndarray) -> None:
+    """Raise :class:`UnreachableLengthsError` where two inextensible sagging cables ``i, j``
+    cannot both be longer than their chords at any pose: ``‖a_i − a_j‖ ≥ L0_i + L0_j +
+    ‖r_i − r_j‖`` (the triangle inequality through the anchors, ``‖r_i − r_j‖`` apart on the
+    rigid platform); the pair that misses by most is named."""
+    rigid = np.flatnonzero(np.isinf(robot.axial_stiffness) & (robot.cable_weights > 0))
+    if rigid.size < 2:
+        return
+    exits, anchors = robot.exits[rigid], robot.anchors[rigid]
+    apart = np.linalg.norm(exits[:, None] - exits[None], axis=-1)
+    arms = np.linalg.norm(anchors[:, None] - anchors[None], axis=-1)
+    gap = apart - (L0[rigid][:, None] + L0[rigid][None]) - arms
+    i, j = np.unravel_index(int(np.argmax(gap)), gap.shape)
+    if gap[i, j] >= 0:
+        a, b = sorted((int(rigid[i]), int(rigid[j])))
+        raise UnreachableLengthsError(
+            f"{robot.name}: inextensible cables {a + 1} and {b + 1} of unstrained lengths {L0[a]:g} m and "
+            f"{L0[b]:g} m cannot span their exits {apart[i, j]:.4g} m apart with their anchors {arms[i, j]:.4g} m "
+            "apart: no pose fits the lengths (a cable would be shorter than its chord)"
+        )
+
+
 def sagging_fk(
     robot: Robot,
     unstrained_lengths: npt.ArrayLike,
@@ -271,6 +293,10 @@ def sagging_fk(
     UnsupportedRobotError
         A platform with jointed bodies, a straight inextensible cable (its tension is not a
         function of the pose), or no sagging cable.
+    UnreachableLengthsError
+        Lengths that no pose fits: two inextensible sagging cables whose lengths and the
+        distance of their anchors on the platform do not span the distance of their exits,
+        so that one of them would be shorter than its chord (a triangle inequality).
 
     References
     ----------
@@ -280,13 +306,19 @@ def sagging_fk(
 
     Examples
     --------
-    Inextensible cables shorter than any pose's chords have no equilibrium:
+    Inextensible cables of 8.5 m reach across the frame pairwise, but no pose leaves every one
+    longer than its chord: no equilibrium, an answer; 5 m ones do not even reach pairwise,
+    lengths no pose fits:
 
     >>> from taut.model import example
     >>> robot = example("cogiro-sagging")
     >>> rigid = robot.model_copy(update={"cables": tuple(c.model_copy(update={"stiffness": None}) for c in robot.cables)})
-    >>> sagging_fk(rigid, [5.0] * 8).found
+    >>> sagging_fk(rigid, [8.5] * 8).found
     False
+    >>> sagging_fk(rigid, [5.0] * 8)
+    Traceback (most recent call last):
+    ...
+    taut.errors.UnreachableLengthsError: CoGiRo with sagging cables: inextensible cables 3 and 8 of unstrained lengths 5 m and 5 m cannot span their exits 17.88 m apart with their anchors 1.001 m apart: no pose fits the lengths (a cable would be shorter than its chord)
     """
     if robot.n_joints:
         raise UnsupportedRobotError(f"{robot.name}: the sagging-cable statics handle platforms without joints")
@@ -301,6 +333,7 @@ def sagging_fk(
     L0 = as_array(unstrained_lengths, "unstrained_lengths", shape=(robot.n_cables,))
     if np.any(L0 <= 0) or np.any(L0 > MAX_MAGNITUDE):
         raise TautError(f"unstrained_lengths: expected lengths in (0, {MAX_MAGNITUDE:g}] m, got {L0.tolist()}")
+    _refuse_unreachable(robot, L0)
     ext = None if wrench is None else as_array(wrench, "wrench", shape=(robot.wrench_dim,))
     if guess is None:
         # the centroid of the exits, and below it: a suspended robot hangs under its exits

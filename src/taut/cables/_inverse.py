@@ -12,7 +12,10 @@ tension difference between its ends, so that both ends stay within them); each c
 horizontal force ``H = τ u·ĥ`` gives its catenary through the chord (closed form for an
 inextensible cable, Newton for an elastic one), and its new tangent; until the tangents
 change by less than ``tol``.  With 6 cables (``n = m``) the distribution is the unique
-solution of the square system and the iteration solves the square nonlinear problem.
+solution of the square system and the iteration solves the square nonlinear problem.  With the
+closed forms (``closed-form``, ``improved-closed-form``) the iteration runs compiled, pose by
+pose (:mod:`taut.cables._kernels`), and hands the poses it does not settle back to the
+vectorised one.
 
 The model takes taut catenaries: a sagging cable's tension at its lower end is kept at least
 :data:`TAUT_WEIGHTS` times the weight of a cable as long as its chord, whatever its lower
@@ -69,6 +72,8 @@ ANDERSON_DEPTH = 3
 IK_CHUNK = 8192
 #: Horizontal span, relative to the chord, below which a sagging cable hangs vertically.
 VERTICAL_RTOL = 1e-9
+#: The tension distribution methods the compiled iteration runs (:mod:`taut.cables._kernels`).
+COMPILED_METHODS = ("closed-form", "improved-closed-form")
 
 
 @dataclass(frozen=True)
@@ -186,6 +191,121 @@ class _Anderson:
         reg = 1e-10 * np.einsum("kii->k", A)[:, None, None] + 1e-300
         gamma = np.linalg.solve(A + reg * np.eye(ANDERSON_DEPTH), np.einsum("kin,kn->ki", dF, f[:, -1])[..., None])
         return g - np.einsum("kin,ki->kn", dG, gamma[..., 0])
+
+
+def _iterate(
+    robot: Robot,
+    method: str,
+    tol: float,
+    max_steps: int,
+    r: np.ndarray,
+    u: np.ndarray,
+    ext: np.ndarray,
+    lo0: np.ndarray,
+    hi0: np.ndarray,
+    catenary: np.ndarray,
+    vertical: np.ndarray,
+    span: np.ndarray,
+    rise: np.ndarray,
+    hhat: np.ndarray,
+    up: np.ndarray,
+    wgt: np.ndarray,
+    ea: np.ndarray,
+    chord: np.ndarray,
+) -> tuple[np.ndarray, ...]:
+    """The iteration of :func:`sagging_ik`, vectorised over the poses: the unstrained lengths,
+    the tensions at both ends, the final tangent angles, the statuses and the steps taken
+    (``u``, the straight cables' directions, is overwritten)."""
+    N, n = chord.shape
+    L0 = np.zeros((N, n))
+    T0 = np.zeros((N, n))
+    T1 = np.zeros((N, n))
+    delta = np.zeros((N, n))
+    # the angle of each cable's force above the horizontal, the unknowns of the iteration
+    phi = np.where(catenary, np.arctan2(rise, np.where(catenary, span, 1.0)), 0.0)
+    history = _Anderson(N, n)
+    status = np.full(N, "not-converged", dtype=object)
+    steps = np.zeros(N, dtype=int)
+    active = np.arange(N)
+    for step in range(1, max_steps + 1):
+        if active.size == 0:
+            break
+        k = active
+        cat, ver = catenary[k], vertical[k]
+        u[k] = np.where(cat[..., None], np.cos(phi[k])[..., None] * hhat[k] + np.sin(phi[k])[..., None] * up, u[k])
+        lo = np.maximum(lo0[k], lo0[k] - delta[k])
+        hi = np.minimum(hi0[k], hi0[k] - delta[k])
+        narrow = (lo > hi).any(axis=1)
+        hi = np.maximum(hi, lo)
+        res = solve_tensions(_moments(r[k], u[k], robot), ext[k], tension_bounds=(lo, hi), method=method)
+        good = np.asarray(res.feasible) & ~narrow
+        status[k[~good]] = np.where(narrow[~good], "infeasible", np.asarray(res.status)[~good])
+        steps[k] = step
+        k, tau = k[good], res.tensions[good]
+        cat, ver = catenary[k], vertical[k]
+        w_k, ea_k, sp = wgt[k], ea[k], np.where(cat, span[k], 1.0)
+        t = np.where(cat, tau, 1.0)
+        with np.errstate(all="ignore"):  # a cable too slack for its catenary overflows: flagged, not used
+            if step == 1:
+                H = t * np.cos(phi[k])
+                L, V, _ = K.solve_inverse(sp, rise[k], H, w_k, ea_k)
+            else:
+                H, V, L = t * np.cos(phi[k]), t * np.sin(phi[k]), L0[k]
+            H, V, L, ok = K.solve_tension(sp, rise[k], t, w_k, ea_k, H, V, L)
+            Lv, okv = _vertical(rise[k], tau, w_k, ea_k)
+        slack = (cat & ~ok).any(axis=1) | (ver & ~okv).any(axis=1)
+        flex = tau / np.where(np.isinf(ea_k), np.inf, ea_k)
+        newL = np.where(cat, L, np.where(ver, Lv, chord[k] / (1.0 + flex)))
+        sign = np.sign(rise[k])
+        t1 = np.where(cat, np.hypot(H, V + w_k * L), np.where(ver, tau + sign * w_k * Lv, tau))
+        g = np.where(cat, np.arctan2(V, H), 0.0)
+        keep = ~slack
+        kk, g = k[keep], g[keep]
+        change = np.abs(g - phi[kk]).max(axis=1)
+        L0[kk], T0[kk], T1[kk] = newL[keep], tau[keep], t1[keep]
+        delta[kk] = t1[keep] - tau[keep]
+        status[k[slack]] = "slack"
+        done = change <= tol
+        status[kk[done]] = "optimal"
+        phi[kk[done]] = g[done]
+        go = kk[~done]
+        phi[go] = history.step(go, phi[go], g[~done])
+        active = go
+    return L0, T0, T1, phi, status, steps
+
+
+def _compiled(
+    robot: Robot,
+    method: str,
+    tol: float,
+    max_steps: int,
+    *data: np.ndarray,
+) -> tuple[np.ndarray, ...]:
+    """:func:`_iterate` by the compiled kernel (:mod:`taut.cables._kernels`), the poses it
+    hands back by :func:`_iterate`.  The two agree to rounding, but where the iteration hardly
+    converges rounding decides whether it does within ``max_steps`` (as it does between
+    batches of the vectorised one)."""
+    from taut.cables._kernels import CONVERGED, HANDED_BACK, sagging_steps
+
+    r, u, ext, lo0, hi0, catenary, vertical, span, rise, hhat, up, wgt, ea, chord = (
+        np.ascontiguousarray(a) for a in data
+    )
+    N, n = chord.shape
+    L0, T0, T1, phi = (np.zeros((N, n)) for _ in range(4))
+    code, steps = np.zeros(N, dtype=np.int64), np.zeros(N, dtype=np.int64)
+    moments = 0 if robot.is_point_mass else (1 if robot.dimension == 2 else 3)
+    rounds = 1 if method == "closed-form" else n + 1
+    arrays = (r, u, ext, lo0, hi0, catenary, vertical, span, rise, hhat, up, wgt, ea, chord)
+    options = (moments, rounds, ANDERSON_DEPTH, tol, max_steps, EQUILIBRIUM_RTOL)
+    sagging_steps(*arrays, *options, L0, T0, T1, phi, code, steps)
+    status = np.where(code == CONVERGED, "optimal", "not-converged").astype(object)
+    back = np.flatnonzero(code == HANDED_BACK)
+    if back.size:
+        per_pose = [a if a is up else a[back] for a in arrays]
+        parts = _iterate(robot, method, tol, max_steps, *per_pose)
+        for whole, part in zip((L0, T0, T1, phi, status, steps), parts):
+            whole[back] = part
+    return L0, T0, T1, phi, status, steps
 
 
 def sagging_ik(
@@ -311,60 +431,9 @@ def sagging_ik(
     hhat = hvec / np.where(span > 0, span, 1.0)[..., None]
     catenary = heavy & ~vertical
 
-    L0 = np.zeros((N, n))
-    T0 = np.zeros((N, n))
-    T1 = np.zeros((N, n))
-    delta = np.zeros((N, n))
-    # the angle of each cable's force above the horizontal, the unknowns of the iteration
-    phi = np.where(catenary, np.arctan2(rise, np.where(catenary, span, 1.0)), 0.0)
-    history = _Anderson(N, n)
-    status = np.full(N, "not-converged", dtype=object)
-    steps = np.zeros(N, dtype=int)
-    active = np.arange(N)
-    for step in range(1, max_steps + 1):
-        if active.size == 0:
-            break
-        k = active
-        cat, ver = catenary[k], vertical[k]
-        u[k] = np.where(cat[..., None], np.cos(phi[k])[..., None] * hhat[k] + np.sin(phi[k])[..., None] * up, u[k])
-        lo = np.maximum(lo0[k], lo0[k] - delta[k])
-        hi = np.minimum(hi0[k], hi0[k] - delta[k])
-        narrow = (lo > hi).any(axis=1)
-        hi = np.maximum(hi, lo)
-        res = solve_tensions(_moments(r[k], u[k], robot), ext[k], tension_bounds=(lo, hi), method=method)
-        good = np.asarray(res.feasible) & ~narrow
-        status[k[~good]] = np.where(narrow[~good], "infeasible", np.asarray(res.status)[~good])
-        steps[k] = step
-        k, tau = k[good], res.tensions[good]
-        cat, ver = catenary[k], vertical[k]
-        w_k, ea_k, sp = wgt[k], ea[k], np.where(cat, span[k], 1.0)
-        t = np.where(cat, tau, 1.0)
-        with np.errstate(all="ignore"):  # a cable too slack for its catenary overflows: flagged, not used
-            if step == 1:
-                H = t * np.cos(phi[k])
-                L, V, _ = K.solve_inverse(sp, rise[k], H, w_k, ea_k)
-            else:
-                H, V, L = t * np.cos(phi[k]), t * np.sin(phi[k]), L0[k]
-            H, V, L, ok = K.solve_tension(sp, rise[k], t, w_k, ea_k, H, V, L)
-            Lv, okv = _vertical(rise[k], tau, w_k, ea_k)
-        slack = (cat & ~ok).any(axis=1) | (ver & ~okv).any(axis=1)
-        flex = tau / np.where(np.isinf(ea_k), np.inf, ea_k)
-        newL = np.where(cat, L, np.where(ver, Lv, chord[k] / (1.0 + flex)))
-        sign = np.sign(rise[k])
-        t1 = np.where(cat, np.hypot(H, V + w_k * L), np.where(ver, tau + sign * w_k * Lv, tau))
-        g = np.where(cat, np.arctan2(V, H), 0.0)
-        keep = ~slack
-        kk, g = k[keep], g[keep]
-        change = np.abs(g - phi[kk]).max(axis=1)
-        L0[kk], T0[kk], T1[kk] = newL[keep], tau[keep], t1[keep]
-        delta[kk] = t1[keep] - tau[keep]
-        status[k[slack]] = "slack"
-        done = change <= tol
-        status[kk[done]] = "optimal"
-        phi[kk[done]] = g[done]
-        go = kk[~done]
-        phi[go] = history.step(go, phi[go], g[~done])
-        active = go
+    data = (r, u, ext, lo0, hi0, catenary, vertical, span, rise, hhat, up, wgt, ea, chord)
+    solve = _compiled if method in COMPILED_METHODS else _iterate
+    L0, T0, T1, phi, status, steps = solve(robot, method, tol, max_steps, *data)
     cat = catenary[..., None]
     u = np.where(cat, np.cos(phi)[..., None] * hhat + np.sin(phi)[..., None] * up, u)
     W = _moments(r, u, robot)

@@ -241,6 +241,93 @@ def catenary_lengths(
     return _catenary(span, rise, L0, w, ea, H, V)
 
 
+def catenary_tensions(
+    span: npt.ArrayLike,
+    rise: npt.ArrayLike,
+    platform_tensions: npt.ArrayLike,
+    weight: npt.ArrayLike,
+    stiffness: npt.ArrayLike = np.inf,
+    *,
+    start: Catenary | None = None,
+) -> Catenary:
+    """The elastic catenaries between given points whose tension at the platform end is given:
+    their unstrained lengths and the direction of their pull on the platform.
+
+    Newton's method on the angle of the end force above the horizontal and the unstrained
+    length, with the analytic Jacobian of Irvine's two equations (module
+    :mod:`taut.cables._catenary`, compiled for one cable in :mod:`taut.cables._kernels`), from ``start`` (a catenary of the same shape near the
+    answer: the last one of a motion) or from the catenary whose horizontal force is the
+    tension's share along the chord.
+
+    Parameters
+    ----------
+    span : array_like
+        Horizontal distance from the platform end to the exit [m], ``> 0``.
+    rise : array_like
+        Height of the exit above the platform end [m].
+    platform_tensions : array_like
+        ``√(H² + V²)`` [N], ``> 0``.
+    weight : array_like
+        Weight per unit unstrained length [N/m], ``≥ 0``.
+    stiffness : array_like, default inf
+        Axial stiffness ``EA`` [N], ``> 0`` or ``inf``.  The arguments broadcast together.
+    start : Catenary, optional
+        Catenaries of the broadcast shape to start from.
+
+    Returns
+    -------
+    Catenary
+
+    Raises
+    ------
+    ArgumentError
+        Arguments that are not finite numbers or do not broadcast, a span or tension ``≤ 0``,
+        a negative weight, a stiffness ``≤ 0``, a ``start`` of another shape, or a tension too
+        low for a catenary through the ends (Newton does not converge).
+
+    References
+    ----------
+    .. [1] H. M. Irvine, "Cable Structures", MIT Press, 1981, Ch. 1, §1.3.
+       (docs/references.bib: irvine1981)
+
+    Examples
+    --------
+    The 10.05 m cable of :func:`catenary_forces` pulled with its own platform-end tension:
+
+    >>> c = catenary_forces(10.0, 0.0, 10.05, 10.0)
+    >>> t = catenary_tensions(10.0, 0.0, c.platform_tensions, 10.0)
+    >>> round(float(t.unstrained_lengths), 6), round(float(t.vertical_forces), 2)
+    (10.05, -50.25)
+    """
+    from taut.cables._kernels import tension_catenaries
+
+    span, rise, T0, w, ea = _inputs(span, rise, (platform_tensions, "platform_tensions"), weight, stiffness)
+    if np.any(T0 <= 0):
+        raise ArgumentError("platform_tensions: expected tensions > 0")
+    if start is not None and (not isinstance(start, Catenary) or start.span.shape != span.shape):
+        raise ArgumentError(f"start: expected a Catenary of shape {span.shape}")
+    size = span.size
+    if start is None:
+        phi, lengths = np.zeros(size), np.zeros(size)
+    else:
+        phi = np.arctan2(start.vertical_forces, start.horizontal_forces).ravel()
+        lengths = np.array(start.unstrained_lengths, dtype=float).ravel()
+    forces, converged = np.empty((2, size)), np.empty(size, dtype=bool)
+    flat = np.ascontiguousarray(np.stack([span, rise, T0, w, ea]).reshape(5, size))
+    tension_catenaries(
+        flat[0], flat[1], flat[2], flat[3], flat[4], phi, lengths, start is None, forces[0], forces[1], converged
+    )
+    H, V = forces.reshape((2, *span.shape))
+    L0, ok = lengths.reshape(span.shape), converged.reshape(span.shape)
+    if not ok.all():
+        k = np.argwhere(~ok)[0] if ok.ndim else ()
+        raise ArgumentError(
+            f"no elastic catenary with a platform-end tension of {float(T0[tuple(k)]):g} N through a span of "
+            f"{float(span[tuple(k)]):g} m and a rise of {float(rise[tuple(k)]):g} m (too slack)"
+        )
+    return _catenary(span, rise, L0, w, ea, H, V)
+
+
 def catenary_shape(catenary: Catenary, samples: int = 50) -> np.ndarray:
     """Points of the cables, evenly spaced in unstrained length from the platform end to the exit.
 

@@ -1,5 +1,6 @@
 """``taut simulate ROBOT``: a trajectory through waypoints, tracked under computed-torque
-control with the tension distribution in the loop (:mod:`taut.dynamics._control`).
+control with the tension distribution in the loop (:mod:`taut.dynamics._control`); sagging
+cables as quasi-static elastic catenaries.
 
 References
 ----------
@@ -9,6 +10,8 @@ References
    simulation platform for the research of cable-driven parallel robots", IEEE/RSJ
    International Conference on Intelligent Robots and Systems (IROS), 2016.
    (docs/references.bib: lau2016)
+.. [3] H. M. Irvine, "Cable Structures", MIT Press, 1981, Ch. 1, §1.3 (the elastic catenary).
+   (docs/references.bib: irvine1981)
 """
 
 from __future__ import annotations
@@ -18,6 +21,7 @@ import math
 from typing import TYPE_CHECKING
 
 from taut.cli import _args as A
+from taut.cli._cables import cable_numbers
 from taut.cli._output import console, emit, markup, save_figure, written
 from taut.errors import TautError
 
@@ -48,6 +52,8 @@ RESULT_KEYS = {
     "updates": "updates",
     "reference": "reference",
     "tensions": "tensions",
+    "exit_tensions": "exit_tensions",
+    "cable_model": "cable_model",
     "tracking_error_max": "tracking_error_max",
     "tracking_error_rms": "tracking_error_rms",
     "position_error_max": "position_error_max",
@@ -195,20 +201,24 @@ def run(ns: argparse.Namespace) -> int:
         else [{"start": a, "end": None if math.isinf(b) else b, "wrench": list(w)} for a, b, w in wd.steps],
         "samples": len(result["times"]),
         "actuated_joints": [robot.pose_names[robot.wrench_dim + j] for j in robot.actuated_joints],
+        "sagging_cables": cable_numbers(res.sagging_cables),
     } | {key: result[name] for key, name in RESULT_KEYS.items()}
     if out is not None:
         n = robot.n_cables
+        # a sagging cable's tension at its exit too (the platform's is the commanded one)
+        exits = [i for i in range(n) if i in res.sagging_cables]
         head = [
             "time",
             *robot.pose_names,
             *(f"ref_{p}" for p in robot.pose_names),
             *(f"tau{i + 1}" for i in range(n)),
+            *(f"exit_tau{i + 1}" for i in exits),
             "admissible",
         ]
         with written(out, "--out") as tmp, open(tmp, "w") as fh:
             fh.write(",".join(head) + "\n")
             for k in range(res.times.size):
-                vals = [res.times[k], *res.poses[k], *res.reference[k], *res.tensions[k]]
+                vals = [res.times[k], *res.poses[k], *res.reference[k], *res.tensions[k], *res.exit_tensions[k, exits]]
                 fh.write(",".join(f"{v:.9g}" for v in vals) + f",{int(res.feasible[k])}\n")
         data["out"] = str(out)
     if plot is not None:
@@ -222,6 +232,14 @@ def run(ns: argparse.Namespace) -> int:
             f"[bold]{markup(robot.name)}[/]: {ns.law} trajectory through {len(W)} waypoints over {duration:g} s, "
             f"{ns.controller} control at {rate:g} Hz ({d['updates']} updates)"
         )
+        if d["sagging_cables"]:
+            con.print(
+                f"cable model: {d['cable_model']} (Irvine 1981, §1.3) for cables "
+                f"{', '.join(map(str, d['sagging_cables']))}: each pulls along its tangent at the platform with its "
+                "commanded tension there; their mass is left out of the platform's inertia"
+            )
+        else:
+            con.print(f"cable model: {d['cable_model']}")
         errs = ", ".join(f"{p}={e:.3g}" for p, e in zip(robot.pose_names, d["tracking_error_max"]))
         con.print(f"max tracking error: {errs} (m, rad)")
         con.print(f"min tension margin: {d['min_tension_margin']:.4g} N; slack events: {d['slack_events']}")
@@ -294,5 +312,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         default=100.0,
         help="samples per second kept for the JSON and CSV output (default 100; statistics cover every update)",
     )
-    parser.add_argument("--out", metavar="FILE.csv", help="per-sample time, pose, reference pose, tensions, admissible")
+    parser.add_argument(
+        "--out",
+        metavar="FILE.csv",
+        help="per-sample time, pose, reference pose, tensions (sagging cables: at the platform, then at the exits), "
+        "admissible",
+    )
     parser.add_argument("--plot", metavar="FILE.png", help="tensions and tracking error against time")

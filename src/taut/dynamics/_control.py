@@ -33,6 +33,15 @@ actuator's bounds (:func:`taut.statics.solve_inputs`); the other joints are pass
 the cables acting across them.  The plant has no joint stops: an
 update at which a joint coordinate is outside its limits is counted and its time reported.
 
+Sagging cables (``cables[].weight``) are quasi-static elastic catenaries (Irvine 1981,
+§1.3): the commanded tension of such a cable is its tension at the platform end, and it pulls
+along the catenary's tangent at the anchor, which depends on that tension and on the pose
+(:mod:`taut.dynamics._sagging`).  The distribution uses the structure matrix of those
+tangents, iterated to consistency with the catenaries as :func:`taut.cables.sagging_ik` does
+(both ends of the cable within its bounds), and the plant recomputes each catenary at every
+stage of its RK4 steps, the tension held.  The cables' own inertia is neglected: their mass
+does not join the platform's.
+
 Angle errors take the short way: the orientation components of ``e`` are wrapped into
 ``[−π, π)``.  The error is thus measured in the pose coordinates the law is written in, so
 that with an exact model and no disturbance it obeys ``ë + K_d ė + K_p e = 0`` (up to the
@@ -60,6 +69,8 @@ References
    simulation platform for the research of cable-driven parallel robots", IEEE/RSJ
    International Conference on Intelligent Robots and Systems (IROS), 2016.
    (docs/references.bib: lau2016)
+.. [3] H. M. Irvine, "Cable Structures", MIT Press, 1981, Ch. 1, §1.3 (the elastic catenary).
+   (docs/references.bib: irvine1981)
 """
 
 from __future__ import annotations
@@ -78,6 +89,7 @@ from taut._results import Result, jsonable
 from taut.dynamics._forward import IntegrationError
 from taut.dynamics._loop import LoopModel, loop_model
 from taut.dynamics._platform import as_rates, check_callable, positive
+from taut.dynamics._sagging import cable_model
 from taut.errors import InfeasiblePoseError, TautError
 from taut.model import MAX_MAGNITUDE, Robot
 from taut.motion import Motion, angle_columns
@@ -238,7 +250,15 @@ class ControlResult(Result):
     command : ndarray, shape (S, dof)
         The commanded pose accelerations ``q̈_cmd``.
     tensions : ndarray, shape (S, n)
-        The tensions applied from each update [N].
+        The tensions applied from each update [N] (a sagging cable's at its platform end).
+    exit_tensions : ndarray, shape (S, n)
+        Each cable's tension at its exit at the update's pose [N] (``tensions`` for a
+        straight cable).
+    cable_model : str
+        ``"straight"``, or ``"quasi-static elastic catenary"`` for a robot with sagging
+        cables (its straight cables stay straight).
+    sagging_cables : tuple of int
+        The sagging cables (0-based).
     feasible : ndarray of bool, shape (S,)
         The distribution found admissible tensions.
     disturbance : ndarray, shape (S, dof)
@@ -269,9 +289,9 @@ class ControlResult(Result):
     rotation_error_max : float
         The largest rotation error [rad].
     lower_margin : float
-        The smallest ``τ − τ_min`` over updates and cables [N].
+        The smallest ``τ − τ_min`` over updates and cables [N], at both ends of sagging cables.
     upper_margin : float
-        The smallest ``τ_max − τ`` [N] (``inf`` without upper limits).
+        The smallest ``τ_max − τ`` [N] (``inf`` without upper limits), at both ends.
     slack_events : int
         Updates at which some cable's commanded tension is at or below its minimum.
     failures : int
@@ -318,7 +338,10 @@ class ControlResult(Result):
     position_error: np.ndarray  #: ``(S,)`` ``‖p_r − p‖`` [m]
     rotation_error: np.ndarray  #: ``(S,)`` the angle of ``R_rᵀ R`` [rad] (zeros for a point mass)
     command: np.ndarray  #: ``(S, dof)`` the commanded pose accelerations ``q̈_cmd``
-    tensions: np.ndarray  #: ``(S, n)`` the tensions applied from each update
+    tensions: np.ndarray  #: ``(S, n)`` the tensions applied from each update (sagging: at the platform)
+    exit_tensions: np.ndarray  #: ``(S, n)`` the tensions at the exits (``tensions`` for straight cables)
+    cable_model: str  #: ``"straight"`` or ``"quasi-static elastic catenary"``
+    sagging_cables: tuple[int, ...]  #: the sagging cables, 0-based
     feasible: np.ndarray  #: ``(S,)`` bool: the distribution found admissible tensions
     disturbance: np.ndarray  #: ``(S, dof)`` the external wrench at each update
     tension_min: np.ndarray  #: ``(n,)``
@@ -360,8 +383,9 @@ class ControlResult(Result):
     @property
     def slack(self) -> np.ndarray:
         """``(S, n)`` bool, at the kept updates: the commanded tension is at or below its
-        minimum (the cable has no margin left to stay taut; at a minimum of 0, it is slack)."""
-        return _slack(self.tensions, self.tension_min)
+        minimum (the cable has no margin left to stay taut; at a minimum of 0, it is slack), at
+        either end of a sagging cable."""
+        return _slack(np.minimum(self.tensions, self.exit_tensions), self.tension_min)
 
     @property
     def all_feasible(self) -> bool:
@@ -485,14 +509,15 @@ def _update(
     D: np.ndarray,
     state: np.ndarray,
     previous: np.ndarray,
-    last: np.ndarray,
+    held: tuple[np.ndarray, np.ndarray],
 ) -> bool:
     """Update ``k`` as :func:`taut.dynamics._kernels.control_updates` does it, with the
     controller's fallback distribution and the checked RK4 step: ``state[2:6]`` get ``q, q̇,
-    e, q̈_cmd`` at its start, ``state[:2]`` the state at the next update, ``last`` the held
-    tensions (``previous``: ``q̇`` at update ``k − 1``); returns whether the distribution found
-    admissible tensions."""
+    e, q̈_cmd`` at its start, ``state[:2]`` the state at the next update, ``held`` the held
+    tensions and the cables' exit tensions (``previous``: ``q̇`` at update ``k − 1``); returns
+    whether the distribution found admissible tensions."""
     plant, ctrl = models
+    last, last_exit = held
     ref, ahead = refs
     K = time.size - 1
     t = float(time[k])
@@ -518,6 +543,10 @@ def _update(
         raise InfeasiblePoseError(
             f"{robot.name}: no admissible tensions at the start (t = {t:g} s, pose {q.tolist()}): nothing to hold"
         )
+    try:
+        last_exit[:] = plant.exit_tensions(q, last)
+    except TautError as exc:
+        raise IntegrationError(f"at t = {t:g} s: {exc}") from None
     state[2], state[3], state[4], state[5] = q, qd, e, cmd
     if k == K:
         return bool(ok)
@@ -555,6 +584,11 @@ def simulate_control(
 ) -> ControlResult:
     """Simulate ``robot`` tracking ``motion`` under computed-torque control with the tension
     distribution in the loop, from ``t = 0`` to ``motion.duration``.
+
+    Sagging cables (``cables[].weight``) are quasi-static elastic catenaries: each pulls along
+    its tangent at the anchor with its commanded (platform-end) tension; the distribution is
+    iterated to consistency with the catenaries and the plant recomputes them at every RK4
+    stage (module docstring; the cables' mass is neglected in the platform's inertia).
 
     Cables may leave through swivelling pulleys: their lengths hold the wound arc and they
     pull along the tangent from the moving tangent point (Pott 2018), in the controller's
@@ -630,6 +664,8 @@ def simulate_control(
        (docs/references.bib: lau2016)
     .. [3] A. Pott, "Cable-Driven Parallel Robots: Theory and Application", Springer Tracts in
        Advanced Robotics 120, Springer, 2018, pulley kinematics. (docs/references.bib: pott2018)
+    .. [4] H. M. Irvine, "Cable Structures", MIT Press, 1981, Ch. 1, §1.3 (the elastic
+       catenary). (docs/references.bib: irvine1981)
 
     Examples
     --------
@@ -672,6 +708,8 @@ def simulate_control(
         or not np.array_equal(model.exits, robot.exits)
         or not np.array_equal(model.anchors, robot.anchors)
         or not np.array_equal(model.actuated_joints, robot.actuated_joints)
+        or not np.array_equal(model.cable_weights, robot.cable_weights)
+        or not np.array_equal(model.axial_stiffness, robot.axial_stiffness)
     ):
         raise TautError(
             f"the controller's model {model.name} must have the cables, joint actuators and pose coordinates of "
@@ -686,7 +724,9 @@ def simulate_control(
         raise TautError(f"decimate must be a whole number >= 1, got {decimate!r}")
     every = int(decimate)
     kept = K // every + 1 + (K % every != 0)
-    per_sample = 8 * (1 + 6 * dof + n + 2) + 1
+    sagging = plant.sag is not None
+    # the exit tensions of straight cables are their tensions: stored once
+    per_sample = 8 * (1 + 6 * dof + n + nc * sagging + 2) + 1
     if kept * per_sample > MAX_RESULT_BYTES:
         need = math.ceil((K + 1) * per_sample / MAX_RESULT_BYTES)
         raise TautError(
@@ -705,10 +745,12 @@ def simulate_control(
     # q, q̇ (advanced in place), then q, q̇, e, q̈_cmd at the start of an update done here
     state = np.array([q, qd, q, qd, q, q])
     last = np.full(n, np.nan)
+    last_exit = np.full(nc, np.nan)
     out_t = np.empty(kept)
     out_ref, out_q, out_v, out_e, out_a, out_d = (np.empty((kept, dof)) for _ in range(6))
     out_pos, out_rot = np.empty(kept), np.empty(kept)
     out_tau = np.empty((kept, n))
+    out_exit = np.empty((kept if sagging else 0, nc))
     out_ok = np.empty(kept, bool)
     stored = 0
     err_max, err_sq = np.zeros(dof), np.zeros(dof)
@@ -737,51 +779,72 @@ def simulate_control(
         refuse_near_swivel_axis(robot, samples.poses, times=time, what="of the reference")
         Q, V, E, A = (np.zeros((g.size, dof)) for _ in range(4))
         T = np.zeros((g.size, n))
+        X = np.zeros((g.size, nc))
         ok_all = np.ones(g.size, dtype=bool)
         V[0] = v_prev
         k, end = k0 - g0, k1 - g0
         while k < end:
             stop = min(k + PROGRESS_EVERY, end)
-            k = control_updates(
-                *plant.kernels.args[:2],
-                *ctrl.kernels.args,
-                k,
-                stop,
-                time,
-                ref,
-                ahead,
-                gains,
-                columns,
-                predict,
-                D,
-                lo,
-                hi,
-                EQUILIBRIUM_RTOL,
-                state,
-                last,
-                Q,
-                V,
-                E,
-                A,
-                T,
+            # sagging cables' pull is the catenaries', outside the compiled loop: every update here
+            k = (
+                k
+                if sagging
+                else control_updates(
+                    *plant.kernels.args[:2],
+                    *ctrl.kernels.args,
+                    k,
+                    stop,
+                    time,
+                    ref,
+                    ahead,
+                    gains,
+                    columns,
+                    predict,
+                    D,
+                    lo,
+                    hi,
+                    EQUILIBRIUM_RTOL,
+                    state,
+                    last,
+                    Q,
+                    V,
+                    E,
+                    A,
+                    T,
+                )
             )
             if progress is not None:
                 progress(g0 + k, K + 1)
             if k == stop:
                 continue
-            # the closed form gave up, or a step failed: this update here, with the fallback
-            # distribution, and the checked step that names a failure
+            # the closed form gave up, a step failed, or cables sag: this update here, with the
+            # fallback distribution, and the checked step that names a failure
             previous = V[k - 1] if k else V[0]
             ok_all[k] = _update(
-                robot, (plant, ctrl), k, time, (ref, ahead), gains, angles, predict, D, state, previous, last
+                robot,
+                (plant, ctrl),
+                k,
+                time,
+                (ref, ahead),
+                gains,
+                angles,
+                predict,
+                D,
+                state,
+                previous,
+                (last, last_exit),
             )
-            Q[k], V[k], T[k] = state[2], state[3], last
+            Q[k], V[k], T[k], X[k] = state[2], state[3], last, last_exit
             E[k], A[k] = state[4], state[5]
             k += 1
         new = slice(k0 - g0, end)
         refuse_wrapped(robot, Q[new], times=time[new], what="of the simulated motion")
         refuse_near_swivel_axis(robot, Q[new], times=time[new], what="of the simulated motion")
+        if not sagging:
+            X = T[:, :nc]
         Eb, Tb, okb, tb = E[new], T[new], ok_all[new], time[new]
+        # both ends of a sagging cable within its bounds: the lower and the higher of its tensions
+        low, high = np.minimum(Tb[:, :nc], X[new]), np.maximum(Tb[:, :nc], X[new])
         pos = np.linalg.norm(Eb[:, :d], axis=1)
         rot = np.zeros(pos.size)
         if angles.stop > angles.start:
@@ -794,15 +857,15 @@ def simulate_control(
         err_max = np.maximum(err_max, np.abs(Eb).max(axis=0))
         err_sq += (Eb**2).sum(axis=0)
         pos_max, rot_max = max(pos_max, float(pos.max())), max(rot_max, float(rot.max()))
-        lower = min(lower, float((Tb[:, :nc] - lo[:nc]).min()))
-        upper = min(upper, float((hi[:nc] - Tb[:, :nc]).min()))
+        lower = min(lower, float((low - lo[:nc]).min()))
+        upper = min(upper, float((hi[:nc] - high).min()))
         if n > nc:
             act_margin = np.minimum(act_margin, np.minimum(Tb[:, nc:] - lo[nc:], hi[nc:] - Tb[:, nc:]).min(axis=0))
             act_peak = np.maximum(act_peak, np.abs(Tb[:, nc:]).max(axis=0))
-        slack = _slack(Tb[:, :nc], lo[:nc])
+        slack = _slack(low, lo[:nc])
         slack_events += int(np.count_nonzero(slack.any(axis=1)))
         cable_slack += slack.sum(axis=0)
-        cable_margin = np.minimum(cable_margin, np.minimum(Tb[:, :nc] - lo[:nc], hi[:nc] - Tb[:, :nc]).min(axis=0))
+        cable_margin = np.minimum(cable_margin, np.minimum(low - lo[:nc], hi[:nc] - high).min(axis=0))
         bad = np.flatnonzero(~okb)
         failures += bad.size
         if first_failure is None and bad.size:
@@ -817,12 +880,17 @@ def simulate_control(
         at = slice(stored, stored + keep.size)
         out_t[at], out_ref[at], out_q[at], out_v[at] = time[rows], ref[0, rows], Q[rows], V[rows]
         out_e[at], out_a[at], out_d[at], out_tau[at] = E[rows], A[rows], D[rows, 0], T[rows]
+        if sagging:
+            out_exit[at] = X[rows]
         out_pos[at], out_rot[at], out_ok[at] = pos[keep], rot[keep], ok_all[rows]
         stored += keep.size
         v_prev = V[end - 1].copy()
     assert stored == kept, "every kept update is stored once"
     tensions, forces = out_tau[:, :nc].copy(), out_tau[:, nc:].copy()
-    frozen = [out_t, out_ref, out_q, out_v, out_e, out_pos, out_rot, out_a, tensions, forces, out_ok, out_d, kp_, kd_]
+    if not sagging:
+        out_exit = tensions
+    frozen = [out_t, out_ref, out_q, out_v, out_e, out_pos, out_rot, out_a, tensions, forces, out_ok, out_d, out_exit]
+    frozen += [kp_, kd_]
     tmin, tmax = np.array(lo[:nc], float), np.array(hi[:nc], float)
     amin, amax = np.array(lo[nc:], float), np.array(hi[nc:], float)
     rms = np.sqrt(err_sq / (K + 1))
@@ -838,6 +906,9 @@ def simulate_control(
         rotation_error=out_rot,
         command=out_a,
         tensions=tensions,
+        exit_tensions=out_exit,
+        cable_model=cable_model(robot),
+        sagging_cables=tuple(robot.sagging_cables),
         feasible=out_ok,
         disturbance=out_d,
         tension_min=tmin,

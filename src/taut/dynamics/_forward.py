@@ -8,7 +8,12 @@ loop); :func:`forward_dynamics` integrates a motion with :func:`scipy.integrate.
 ``Radau``, ``BDF``, ``LSODA``, ``RK23``) or fixed RK4 steps.  The cables are driven either by
 tensions given as a function of time, or by commanded (unstretched) lengths ``l0(t)`` of
 elastic cables: ``τ = EA (l − l0)/l0`` while ``l > l0``, and a slack cable pulls nothing
-(Rushton 2022, Eq. 2.15; ``EA`` is each cable's ``stiffness``).
+(Rushton 2022, Eq. 2.15; ``EA`` is each cable's ``stiffness``).  A sagging cable
+(``cables[].weight``) is a quasi-static elastic catenary (Irvine 1981, §1.3,
+:mod:`taut.dynamics._sagging`): given its tension, it is its tension at the platform end and it
+pulls along the catenary's tangent there; given its unstrained length, the catenary through
+its ends gives its pull (:func:`taut.cables.catenary_forces`); its mass is left out of the
+platform's inertia.
 
 References
 ----------
@@ -18,6 +23,8 @@ References
    Waterloo, 2022, §2.1.6, Eq. 2.15. (docs/references.bib: rushton2022)
 .. [3] E. Hairer, S. P. Nørsett, G. Wanner, "Solving Ordinary Differential Equations I: Nonstiff
    Problems", 2nd ed., Springer, 1993 (the DOP853 code). (docs/references.bib: hairer1993)
+.. [4] H. M. Irvine, "Cable Structures", MIT Press, 1981, Ch. 1, §1.3 (the elastic catenary).
+   (docs/references.bib: irvine1981)
 """
 
 from __future__ import annotations
@@ -41,6 +48,7 @@ from taut.dynamics._platform import (
     platform_dynamics,
     positive,
 )
+from taut.dynamics._sagging import SaggingCables
 from taut.errors import InfeasiblePoseError, SingularConfigurationError, TautError, UnsupportedRobotError
 from taut.kinematics import as_poses, robot_stiffness, tension_from_stretch
 from taut.model import MAX_MAGNITUDE, Robot
@@ -135,15 +143,18 @@ class KernelModel:
 _MODELS: dict[tuple[int, bool], tuple[Robot, KernelModel]] = {}
 
 
-def kernel_model(robot: Robot, *, actuators: bool = False) -> KernelModel:
+def kernel_model(robot: Robot, *, actuators: bool = False, sagging: bool = False) -> KernelModel:
     """The kernel arguments of ``robot``, built once per robot object (a control loop calls
     :func:`acceleration` thousands of times with the same robot).  With ``actuators`` the
     joint actuators follow the cables as inputs (:data:`taut.dynamics._tree.ACTUATOR` rows):
-    ``n`` counts both."""
-    if robot.sagging_cables:
+    ``n`` counts both.  The kernels pull along chords: a robot with sagging cables is
+    refused unless its caller (``sagging``: :func:`forward_dynamics`, the control loop)
+    applies their pull itself, the kernels' sagging cables pulling nothing."""
+    if robot.sagging_cables and not sagging:
         raise UnsupportedRobotError(
-            f"{robot.name}: the dynamics model straight cables, and its cables "
-            f"{[i + 1 for i in robot.sagging_cables]} sag (cables[].weight): catenary forces are not simulated"
+            f"{robot.name}: acceleration, rk4_step and cable_tensions model straight cables, and its cables "
+            f"{[i + 1 for i in robot.sagging_cables]} sag (cables[].weight); forward_dynamics and simulate_control "
+            "(taut simulate) model them as quasi-static catenaries"
         )
     if robot.routed_cables and robot.is_point_mass:
         raise UnsupportedRobotError(
@@ -163,8 +174,8 @@ def kernel_model(robot: Robot, *, actuators: bool = False) -> KernelModel:
     cables = np.zeros((robot.n_cables, CABLE_COLUMNS))
     cables[:, :d], cables[:, 3 : 3 + d] = robot.exits, robot.anchors
     cables[:, 7] = robot.cable_bodies
-    if all(c.stiffness is not None for c in robot.cables):
-        cables[:, 6] = robot_stiffness(robot)
+    # EA of the straight elastic cables; 0 for the others, which then pull nothing when elastic
+    cables[:, 6] = [0.0 if c.weight or c.stiffness is None else c.stiffness for c in robot.cables]
     if robot.swivel_cables:
         from taut.kinematics import swivel_parameters
 
@@ -551,6 +562,59 @@ def _rk4(
     return qn, vn
 
 
+def sagging_accelerate(
+    model: KernelModel, sag: SaggingCables, q: np.ndarray, qd: np.ndarray, u: np.ndarray, w: np.ndarray, elastic: bool
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`_accelerate` of one state ``(1, ·)`` of a robot with sagging cables: their inputs
+    ``u`` (tensions at the platform, or with ``elastic`` unstrained lengths) go to their
+    catenaries, whose pull joins the external wrench; the tensions returned are theirs at the
+    platform.  Raises a :class:`~taut.errors.TautError` where a catenary has no solution."""
+    from taut.dynamics._kernels import accelerations
+
+    held = u[0, sag.which]
+    straight = u.copy()
+    # the kernels' sagging cables pull nothing: no tension, or a length with EA = 0
+    straight[0, sag.which] = 1.0 if elastic else 0.0
+    pull, tensions = sag.pull_lengths(q[0], held) if elastic else (sag.pull(q[0], held), held)
+    qdd, status = np.empty_like(q), np.empty(1, np.int64)
+    tau = np.empty((1, model.n))
+    accelerations(*model.args, elastic, q, qd, straight, w + pull, qdd, tau, status)
+    tau[0, sag.which] = tensions
+    return qdd, tau, status
+
+
+def sagging_rk4(
+    robot: Robot,
+    model: KernelModel,
+    sag: SaggingCables,
+    q: np.ndarray,
+    qd: np.ndarray,
+    u: np.ndarray,
+    w: np.ndarray,
+    dt: float,
+    elastic: bool,
+) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`_rk4` of one state ``(1, ·)`` of a robot with sagging cables: the stages of
+    :func:`taut.dynamics._kernels.rk4_steps`, the catenaries solved at each
+    (:func:`sagging_accelerate`)."""
+
+    def acceleration(x: np.ndarray, v: np.ndarray) -> np.ndarray:
+        a, _, status = sagging_accelerate(model, sag, x, v, u, w, elastic)
+        if status.any():
+            raise _status_error(robot, status, "state")
+        return a
+
+    half = 0.5 * dt
+    a1 = acceleration(q, qd)
+    v2 = qd + half * a1
+    a2 = acceleration(q + half * qd, v2)
+    v3 = qd + half * a2
+    a3 = acceleration(q + half * v2, v3)
+    v4 = qd + dt * a3
+    a4 = acceleration(q + dt * v3, v4)
+    return q + dt / 6.0 * (qd + 2.0 * v2 + 2.0 * v3 + v4), qd + dt / 6.0 * (a1 + 2.0 * a2 + 2.0 * a3 + a4)
+
+
 def _call(f: Callable[[float], npt.ArrayLike], t: float, what: str, shape: tuple[int, ...]) -> np.ndarray:
     try:
         v = np.asarray(f(t), dtype=float)
@@ -585,7 +649,11 @@ def forward_dynamics(
 
     Exactly one input drives the cables: ``tensions(t)``, or ``lengths(t)``, the commanded
     unstretched lengths of elastic cables (each cable's ``stiffness`` is its ``EA``; a slack
-    cable pulls nothing).
+    cable pulls nothing).  A sagging cable (``cables[].weight``) is a quasi-static elastic
+    catenary: its tension is the one at the platform end, along the catenary's tangent there,
+    and its length gives its pull by :func:`taut.cables.catenary_forces` (inextensible without
+    a ``stiffness``); both are solved at every stage of the integrator, and its mass is left
+    out of the platform's inertia.
 
     A platform carrying jointed bodies (``platform.bodies``, prismatic and revolute joints in
     a tree) moves in its pose and joint coordinates under the tree's dynamics
@@ -630,6 +698,8 @@ def forward_dynamics(
     TautError
         Bad input (no or two drives, an unknown method, a callable returning the wrong shape
         or non-finite values, a non-positive duration, step or tolerance).
+    UnsupportedRobotError
+        Sagging cables on a platform with jointed bodies.
     IntegrationError
         When the integrator fails or the motion reaches a singular configuration.  A trial
         stage of an adaptive step that leaves the representable range (a coordinate beyond
@@ -645,6 +715,8 @@ def forward_dynamics(
        of Waterloo, 2022, Eq. 2.15. (docs/references.bib: rushton2022)
     .. [3] E. Hairer, S. P. Nørsett, G. Wanner, "Solving Ordinary Differential Equations I",
        2nd ed., Springer, 1993 (the DOP853 code). (docs/references.bib: hairer1993)
+    .. [4] H. M. Irvine, "Cable Structures", MIT Press, 1981, Ch. 1, §1.3 (the elastic
+       catenary). (docs/references.bib: irvine1981)
 
     Examples
     --------
@@ -667,10 +739,15 @@ def forward_dynamics(
     duration = positive(duration, "duration")
     step = None if step is None else positive(step, "step")
     rtol, atol = positive(rtol, "rtol"), positive(atol, "atol")
-    model = kernel_model(robot)
+    sag = SaggingCables(robot) if robot.sagging_cables else None
+    model = kernel_model(robot, sagging=sag is not None)
     elastic = lengths is not None
-    if elastic:
+    if elastic and sag is None:
         robot_stiffness(robot)
+    elif elastic:
+        rigid = [i + 1 for i, c in enumerate(robot.cables) if not c.weight and c.stiffness is None]
+        if rigid:
+            raise TautError(f"{robot.name}: commanded lengths need the stiffness of the straight cables {rigid}")
     n, dof = robot.n_cables, robot.pose_size
     drive = lengths if lengths is not None else tensions
     assert drive is not None
@@ -688,17 +765,29 @@ def forward_dynamics(
         raise TautError(f"{robot.name}: one initial pose, got {x0.shape[0]}")
     started = perf_counter()
     if method == "RK4":
-        res = _fixed_steps(robot, model, x0[0], v0[0], float(duration), step, inputs, elastic, progress)
+        res = _fixed_steps(robot, (model, sag), x0[0], v0[0], float(duration), step, inputs, elastic, progress)
     else:
         res = _adaptive(
-            robot, model, x0[0], v0[0], float(duration), inputs, elastic, method, rtol, atol, step, times, progress
+            robot,
+            (model, sag),
+            x0[0],
+            v0[0],
+            float(duration),
+            inputs,
+            elastic,
+            method,
+            rtol,
+            atol,
+            step,
+            times,
+            progress,
         )
     return replace(res, elapsed_s=perf_counter() - started)
 
 
 def _fixed_steps(
     robot: Robot,
-    model: KernelModel,
+    models: tuple[KernelModel, SaggingCables | None],
     q: np.ndarray,
     qd: np.ndarray,
     duration: float,
@@ -709,6 +798,7 @@ def _fixed_steps(
 ) -> ForwardDynamicsResult:
     if step is None:
         raise TautError("method 'RK4' needs a step size (step=...)")
+    model, sag = models
     K = int(np.ceil(duration / step - 1e-9))
     time = np.minimum(np.arange(K + 1) * step, duration)
     Q, V = np.empty((K + 1, q.size)), np.empty((K + 1, q.size))
@@ -717,14 +807,21 @@ def _fixed_steps(
     x, v = q[None], qd[None]
     for k in range(K + 1):
         u, w = inputs(float(time[k]))
-        if elastic:
-            taus[k] = cable_tensions(robot, x, u)[0]
-        else:
-            taus[k] = u[0]
-        if k == K:
-            break
         try:
-            x, v = _rk4(robot, model, x, v, u, w, float(time[k + 1] - time[k]), elastic)
+            if sag is not None:
+                taus[k] = sagging_accelerate(model, sag, x, v, u, w, elastic)[1][0, : robot.n_cables]
+            elif elastic:
+                taus[k] = cable_tensions(robot, x, u)[0]
+            else:
+                taus[k] = u[0]
+            if k == K:
+                break
+            dt = float(time[k + 1] - time[k])
+            x, v = (
+                _rk4(robot, model, x, v, u, w, dt, elastic)
+                if sag is None
+                else sagging_rk4(robot, model, sag, x, v, u, w, dt, elastic)
+            )
         except TautError as e:
             raise IntegrationError(f"RK4 failed at t = {time[k]:g} s: {e}") from None
         if not (np.isfinite(x).all() and np.isfinite(v).all()) or np.abs(x).max() > MAX_MAGNITUDE:
@@ -737,7 +834,7 @@ def _fixed_steps(
 
 def _adaptive(
     robot: Robot,
-    model: KernelModel,
+    models: tuple[KernelModel, SaggingCables | None],
     q: np.ndarray,
     qd: np.ndarray,
     duration: float,
@@ -752,6 +849,7 @@ def _adaptive(
 ) -> ForwardDynamicsResult:
     from scipy import integrate
 
+    model, sag = models
     dof = q.size
     t_eval = None
     if times is not None:
@@ -775,7 +873,11 @@ def _adaptive(
             failures.append(f"the motion left the representable range at t = {t:g} s")
             return np.full_like(y, np.nan)
         try:
-            a, _, status = _accelerate(robot, model, np.ascontiguousarray(x), np.ascontiguousarray(v), u, w, elastic)
+            x, v = np.ascontiguousarray(x), np.ascontiguousarray(v)
+            if sag is None:
+                a, _, status = _accelerate(robot, model, x, v, u, w, elastic)
+            else:
+                a, _, status = sagging_accelerate(model, sag, x, v, u, w, elastic)
         except TautError as e:
             failures.append(f"at t = {t:g} s: {e}")
             return np.full_like(y, np.nan)
@@ -820,7 +922,11 @@ def _adaptive(
         raise IntegrationError(f"{method} failed: the solution is not finite")
     times_out = np.array(out_t, dtype=float)
     taus = np.array([inputs(float(t))[0][0] for t in times_out]).reshape(len(times_out), robot.n_cables)
-    if elastic:
+    if sag is not None:
+        for k, (t, y) in enumerate(zip(times_out, Y)):
+            u, w = inputs(float(t))
+            taus[k] = sagging_accelerate(model, sag, y[None, :dof], y[None, dof:], u, w, elastic)[1][0]
+    elif elastic:
         taus = cable_tensions(robot, Y[:, :dof], taus) if len(times_out) else taus
     return _result(robot, times_out, Y[:, :dof], Y[:, dof:], taus, elastic, method, int(solver.nfev) + 1)
 
