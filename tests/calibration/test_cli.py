@@ -49,6 +49,36 @@ def test_plan_then_calibrate(tmp_path, built):
     assert human.code == 0 and "identifiable: yes" in human.out and "Kabsch" in human.out
 
 
+def test_calibrated_encoder_zeros_drive_ik_and_fk(tmp_path, built):
+    """``--out`` writes each encoder's zero (``length_offset``); ``taut ik`` then reports what the
+    encoders read at a pose, and ``taut fk --readings`` turns readings back into the pose —
+    both checked against the built robot's own lengths."""
+    from taut.calibration import plan_poses
+
+    poses = plan_poses(PRINTER, 30, seed=3).poses
+    data = write_data(tmp_path / "data.csv", built, poses, offsets=np.array([1.1, 1.2, 1.3, 1.4, 1.5]))
+    out = tmp_path / "calibrated.yaml"
+    assert run_taut("calibrate", "printer-5cable", "--data", str(data), "--out", str(out)).code == 0
+    robot = load_robot(out)
+    assert robot.encoder_cables == (0, 1, 2, 3, 4)
+    assert np.allclose(robot.length_offsets, [1.1, 1.2, 1.3, 1.4, 1.5], atol=0.01)
+    # a pose in the middle of the measured ones, in the calibrated (nominal-aligned) frame
+    pose = np.array([0.02, -0.01, 0.3]) + poses.mean(axis=0) * [1, 1, 0]
+    truth = align(built, PRINTER.exits)
+    readings = lengths(PRINTER, truth, PRINTER.anchors, pose[None])[0] - [1.1, 1.2, 1.3, 1.4, 1.5]
+    ik = run_taut("ik", str(out), "--pose", ",".join(map(str, pose)), "--json").json()
+    assert np.allclose(ik["encoder_readings"], readings, atol=2e-3)
+    assert np.allclose(np.array(ik["lengths"]) - ik["encoder_readings"], robot.length_offsets)
+    fk = run_taut("fk", str(out), "--readings", ",".join(map(repr, readings.tolist())), "--json").json()
+    # lengths a few tenths of a millimetre off the calibrated geometry admit no equilibrium of
+    # five inextensible cables; the least-squares fit is what a printer's firmware uses
+    assert np.linalg.norm(np.array(fk["least_squares"]["position"]) - pose) < 5e-3
+    nominal = run_taut("fk", "printer-5cable", "--readings", "1,1,1,1,1")
+    assert nominal.code == 2 and "no encoder zero" in nominal.err and len(nominal.err.splitlines()) == 1
+    ik_plain = run_taut("ik", "printer-5cable", "--json").json()
+    assert "encoder_readings" not in ik_plain
+
+
 def test_identical_rows_answer_not_identifiable(tmp_path):
     data = tmp_path / "same.csv"
     data.write_text("dl1,dl2,dl3,dl4,dl5\n" + "0.1,0.2,0.3,0.4,0.5\n" * 8)

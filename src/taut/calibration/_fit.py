@@ -152,6 +152,8 @@ class CalibrationResult(Result):
     offsets, offsets_std : ndarray, shape (n,)
         Encoder offsets [m]: the length at the encoder's zero of each cable measured by length
         changes (0 for the others), ``length = change + offset``.
+    changes : ndarray of bool, shape (n,)
+        The cables measured as length changes, whose offsets are estimated.
     anchors, anchors_std : ndarray, shape (n, d)
         Anchors in the platform frame [m] and their standard deviations.
     poses : ndarray, shape (N, pose_size)
@@ -183,6 +185,7 @@ class CalibrationResult(Result):
     exits_std: np.ndarray
     offsets: np.ndarray
     offsets_std: np.ndarray
+    changes: np.ndarray
     anchors: np.ndarray
     anchors_std: np.ndarray
     poses: np.ndarray
@@ -210,8 +213,9 @@ class CalibrationResult(Result):
         return out
 
     def calibrated_robot(self, robot: Robot) -> Robot:
-        """``robot`` (the nominal robot of the fit) with the estimated exits and anchors written
-        in and a description saying how it was calibrated.
+        """``robot`` (the nominal robot of the fit) with the estimated exits, anchors and
+        encoder offsets (``cables[].length_offset``) written in and a description saying how it
+        was calibrated.
 
         Parameters
         ----------
@@ -228,6 +232,8 @@ class CalibrationResult(Result):
         cables = []
         for i, c in enumerate(robot.cables):
             update: dict[str, Any] = {"exit": tuple(float(v) for v in self.exits[i])}
+            if self.changes[i]:
+                update["length_offset"] = float(self.offsets[i])
             if "anchors" in self.estimate:
                 update["anchor"] = tuple(float(v) for v in self.anchors[i])
             cables.append(c.model_copy(update=update))
@@ -662,6 +668,7 @@ def calibrate(
         exits_std=exits_std,
         offsets=offsets,
         offsets_std=offsets_std,
+        changes=data.changes.copy(),
         anchors=anchors,
         anchors_std=anchors_std,
         poses=poses,

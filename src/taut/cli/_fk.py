@@ -1,8 +1,10 @@
-"""``taut fk ROBOT [--lengths L1,...,Ln] [--max-taut K] [--max-boxes N] [--strict] [--workers N]
+"""``taut fk ROBOT [--lengths L1,...,Ln | --readings R1,...,Rn] [--max-taut K] [--max-boxes N] [--strict] [--workers N]
 [--scheduler ADDRESS] [--plot FILE] [--json]``:
 all equilibrium poses for given cable lengths (the direct geometrico-static problem,
 :func:`taut.dgp.solve_dgp`).  Without ``--lengths`` the robot's ``reference.lengths`` are
-used.  No equilibrium is an empty list, not an error."""
+used; ``--readings`` gives encoder readings instead, each length its reading plus the
+cable's encoder zero (``cables[].length_offset``, written by ``taut calibrate``).  No
+equilibrium is an empty list, not an error."""
 
 from __future__ import annotations
 
@@ -63,6 +65,8 @@ def run(ns: argparse.Namespace) -> int:
     plot = A.plot_file(ns.plot)
     robot = A.load(ns.robot, ns.cable_set)
     lengths = A.vector(ns.lengths, "--lengths") if ns.lengths is not None else None
+    if ns.readings is not None:
+        lengths = _from_readings(robot, ns)
     if robot.sagging_cables:
         return _sagging(ns, robot, lengths, plot)
     with (
@@ -159,10 +163,31 @@ def _sagging(ns: argparse.Namespace, robot: Robot, lengths: npt.NDArray[np.float
     return 0
 
 
+def _from_readings(robot: Robot, ns: argparse.Namespace) -> npt.NDArray[np.float64]:
+    """The lengths of ``--readings``: each encoder's reading plus the length at its zero."""
+    if ns.lengths is not None:
+        raise TautError("give --lengths or --readings, not both")
+    readings = A.vector(ns.readings, "--readings")
+    if readings.size != robot.n_cables:
+        raise TautError(f"--readings: expected {robot.n_cables} numbers, got {readings.size}")
+    missing = [i + 1 for i in range(robot.n_cables) if i not in robot.encoder_cables]
+    if missing:
+        raise TautError(
+            f"--readings: {robot.name} has no encoder zero (cables[].length_offset) for cables "
+            f"{', '.join(map(str, missing))}; calibrate it (taut calibrate --out) or give --lengths"
+        )
+    return readings + robot.length_offsets
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--lengths",
         help="cable lengths L1,...,Ln (default: the robot's reference lengths); unstrained lengths of sagging cables",
+    )
+    parser.add_argument(
+        "--readings",
+        help="encoder readings R1,...,Rn instead of lengths: each cable's length is its reading plus its "
+        "cables[].length_offset (written by taut calibrate --out)",
     )
     parser.add_argument(
         "--max-taut",

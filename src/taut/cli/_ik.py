@@ -1,5 +1,6 @@
 """``taut ik ROBOT [--pose POSE]``: inverse kinematics — cable lengths, unit directions,
-platform anchors and the structure matrix at one pose; on a robot with sagging cables
+platform anchors and the structure matrix at one pose, and what each encoder reads there when
+the robot carries encoder zeros (``cables[].length_offset``, written by ``taut calibrate``); on a robot with sagging cables
 (``cables[].weight``) the static inverse kinematics of the elastic catenaries (unstrained
 lengths, chord lengths, tensions at both ends, sag)."""
 
@@ -48,6 +49,11 @@ def run(ns: argparse.Namespace) -> int:
         raise TautError(f"--method: {robot.name} has no sagging cables (cables[].weight); its IK needs no tensions")
     ik = inverse_kinematics(robot, pose)
     data = {"robot": robot.name, "pose": pose.tolist()} | ik.as_dict()
+    readings = None
+    if robot.encoder_cables:
+        # what each winch's encoder reads there, from the zero that calibration estimated
+        readings = ik.lengths - robot.length_offsets
+        data["encoder_readings"] = readings.tolist()
 
     def human(d: dict) -> None:
         con = console()
@@ -58,7 +64,12 @@ def run(ns: argparse.Namespace) -> int:
             [str(i + 1), fmt(length), *(fmt(c) for c in u)]
             for i, (length, u) in enumerate(zip(ik.lengths, ik.directions))
         ]
-        print_table(con, table("cables", ["cable", "length [m]", *(f"u_{c}" for c in dims)], rows))
+        head = ["cable", "length [m]", *(f"u_{c}" for c in dims)]
+        if readings is not None:
+            head.insert(2, "encoder [m]")
+            for row, reading in zip(rows, readings):
+                row.insert(2, fmt(reading))
+        print_table(con, table("cables", head, rows))
         W = ik.structure_matrix
         rows = [[f"{x:.4g}" for x in row] for row in W]
         print_table(con, table("structure matrix W", [str(i + 1) for i in range(W.shape[1])], rows))

@@ -291,6 +291,9 @@ class Cable(_Strict):
     via : tuple of ViaPoint
         Points the cable runs through, in order from its exit point to its anchor (a routed
         cable: a chain of straight segments).
+    length_offset : float or None
+        The cable's length [m] when its winch encoder reads zero, as ``taut calibrate``
+        estimates it: an encoder reading is the length minus this.
 
     Examples
     --------
@@ -327,6 +330,11 @@ class Cable(_Strict):
         description="points the cable runs through from its exit point to its anchor, in order: a routed "
         "cable, a chain of straight segments whose length is their sum (CASPR's cables of more than two "
         "attachments)",
+    )
+    length_offset: Finite | None = Field(
+        default=None,
+        description="the cable's length [m] when its winch encoder reads zero (estimated by `taut calibrate`): "
+        "an encoder reading is the length minus this",
     )
 
     @field_validator("tension")
@@ -903,6 +911,11 @@ class Robot(_Strict):
         return tuple(i for i, c in enumerate(self.cables) if c.via)
 
     @property
+    def encoder_cables(self) -> tuple[int, ...]:
+        """The 0-based indices of the cables with a ``length_offset`` (an encoder zero)."""
+        return tuple(i for i, c in enumerate(self.cables) if c.length_offset is not None)
+
+    @property
     def is_point_mass(self) -> bool:
         """Whether the platform is a point mass (no orientation)."""
         return self.platform.kind == "point-mass"
@@ -985,6 +998,14 @@ class Robot(_Strict):
             )
 
         return self._derived("via_points", build)
+
+    @property
+    def length_offsets(self) -> np.ndarray:
+        """Each cable's length at its encoder's zero [m] (``cables[].length_offset``; 0 for a
+        cable without one, whose reading is its length), shape ``(n,)``."""
+        return self._derived(
+            "length_offsets", lambda: np.array([c.length_offset or 0.0 for c in self.cables], dtype=float)
+        )
 
     @property
     def tension_bounds(self) -> tuple[np.ndarray, np.ndarray]:
