@@ -57,6 +57,11 @@ def refuse_unsupported(robot: Robot) -> None:
         raise UnsupportedRobotError(
             f"{robot.name}: calibration models straight cables; it has obstacles its cables may wrap around"
         )
+    if robot.sagging_cables:
+        cables = ", ".join(str(i + 1) for i in robot.sagging_cables)
+        raise UnsupportedRobotError(
+            f"{robot.name}: calibration models straight cables; cables {cables} sag (cables[].weight)"
+        )
     if robot.routed_cables:
         cables = ", ".join(str(i + 1) for i in robot.routed_cables)
         raise UnsupportedRobotError(

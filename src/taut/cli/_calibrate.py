@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import argparse
 import io
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from taut.cli import _args as A
@@ -13,6 +14,8 @@ from taut.cli._output import console, emit, fmt, markup, print_table, table, wri
 from taut.errors import TautError
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from taut.calibration import CalibrationResult, PosePlan
     from taut.model import Robot
 
@@ -47,6 +50,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--plan", type=A.count(1, 10_000), metavar="N", help="print N poses to measure as a CSV")
     parser.add_argument("--seed", type=A.seed, default=0, help="--plan: seed of the candidate poses (default 0)")
+    parser.add_argument(
+        "--candidates",
+        metavar="POSES.csv",
+        help="--plan: choose among these reachable poses (a CSV with the pose columns `taut fk` names) "
+        "instead of random ones",
+    )
 
 
 def _estimate(text: str) -> tuple[str, ...]:
@@ -56,10 +65,50 @@ def _estimate(text: str) -> tuple[str, ...]:
     return names
 
 
+def _read_poses(robot: Robot, path: str) -> np.ndarray:
+    """The poses of a CSV whose header names every pose coordinate (in any order)."""
+    import csv
+
+    import numpy as np
+
+    file = Path(path)
+    try:
+        if not file.is_file():
+            raise TautError(f"--candidates: {path!r} is not a regular file")
+        text = file.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise TautError(f"--candidates: cannot read {path!r}: {exc}") from None
+    rows = [row for row in csv.reader(text.splitlines()) if any(cell.strip() for cell in row)]
+    if not rows:
+        raise TautError(f"{file.name}: empty; expected a header {','.join(robot.pose_names)} and one pose per row")
+    header = [name.strip() for name in rows[0]]
+    missing = [name for name in robot.pose_names if name not in header]
+    if missing or len(set(header)) != len(header) or len(header) != robot.pose_size:
+        raise TautError(
+            f"{file.name}: header {','.join(header)}; expected the pose columns {','.join(robot.pose_names)}"
+        )
+    order = [header.index(name) for name in robot.pose_names]
+    poses = np.empty((len(rows) - 1, robot.pose_size))
+    for k, row in enumerate(rows[1:]):
+        if len(row) != len(header):
+            raise TautError(f"{file.name}: row {k + 2} has {len(row)} cells, the header {len(header)}")
+        for j, column in enumerate(order):
+            try:
+                poses[k, j] = float(row[column])
+            except ValueError:
+                raise TautError(
+                    f"{file.name}: row {k + 2}, column {header[column]}: {row[column]!r} is not a number"
+                ) from None
+    if not np.isfinite(poses).all():
+        raise TautError(f"{file.name}: a cell that is not a finite number")
+    return poses
+
+
 def _plan(ns: argparse.Namespace, robot: Robot) -> int:
     from taut.calibration import plan_poses
 
-    plan: PosePlan = plan_poses(robot, ns.plan, estimate=_estimate(ns.estimate), seed=ns.seed)
+    candidates = None if ns.candidates is None else _read_poses(robot, ns.candidates)
+    plan: PosePlan = plan_poses(robot, ns.plan, estimate=_estimate(ns.estimate), candidates=candidates, seed=ns.seed)
     data = plan.as_dict()
 
     def human(d: dict) -> None:
@@ -120,6 +169,9 @@ def run(ns: argparse.Namespace) -> int:
     if ns.plan is not None:
         if ns.data is not None or ns.out is not None or ns.robust is not None:
             raise TautError("--plan prints poses to measure; --data, --out and --robust are for calibrating")
+    elif ns.candidates is not None:
+        raise TautError("--candidates: the poses --plan chooses from; give --plan N")
+    if ns.plan is not None:
         return _plan(ns, robot)
     if ns.data is None:
         raise TautError("give --data FILE.csv to calibrate, or --plan N to plan poses")
