@@ -202,6 +202,11 @@ def _candidates(
     if condition is None and robot.n_cables < robot.pose_size and _load(robot).any():
         count = max(MIN_EQUILIBRIA, EQUILIBRIA_PER_POSE * n)
         pool = hanging_poses(robot, _random_poses(robot, count, 0.0, rng))
+        if len(pool) < n:
+            raise TautError(
+                f"{robot.name}: at the lengths of {count} random poses it hangs with every cable taut in "
+                f"{len(pool)} stable equilibria, fewer than the {n} asked; give candidate poses it can reach"
+            )
         return pool, "stable equilibria with every cable taut (fewer cables than pose coordinates)"
     count = max(MIN_CANDIDATES, CANDIDATES_PER_POSE * n)
     tried = []
