@@ -33,8 +33,8 @@ def test_same_motion_as_mujoco():
     1 ms step the two engines agree to 1e-6 m in the base's position, 1e-6 rad in its
     orientation and in each joint coordinate (measured: 2.6e-9 m, 1.6e-8 rad, 2.4e-10 rad on
     the joints).  The cable set is the file's ``set_IPAnema_inspired``, whose cables run
-    straight: the default set's swivelling pulleys are hinged wheels in MuJoCo, whose free
-    equilibrium is unstable there (``taut.model._mjcf``), and taut's are massless."""
+    straight; the default set, through swivelling pulleys, is checked in
+    ``test_mujoco_spiderbot_pulleys.py``."""
     dt = 1e-3
     robot = load_robot(SPIDER, cable_set="set_IPAnema_inspired")
     q0 = np.array([0.0, 0.0, 0.3, 0.02, -0.01, 0.03, 0.1, -0.3, 0.4, 0.1, -1.5708, 0.05])

@@ -104,7 +104,9 @@ force a check of that angle.  That equilibrium is mostly unstable in MuJoCo's mo
 a wrapping cylinder is infinite and lets the tendon slide along its axis (a helix), so
 turning the pulley out of the anchor's plane usually shortens the tendon (for 91–98 % of the
 cables and poses sampled on three robots), and the tension turns it further.  A free simulation should
-therefore drive or damp the hinges, e.g. towards the angles of :func:`pose_to_qpos`.
+therefore drive or damp the hinges, e.g. towards the angles of :func:`pose_to_qpos`: set before
+every step to the angles facing the anchors in MuJoCo's state, and to their rates, the exported
+SpiderBot follows taut's forward dynamics through its eight pulleys to 2e-9 m over 1 s.
 
 A robot this description cannot hold raises :class:`~taut.errors.UnsupportedRobotError`
 naming the construct: no ``platform.mass``, a rigid platform without a positive-definite
