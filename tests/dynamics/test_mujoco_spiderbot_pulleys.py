@@ -32,6 +32,7 @@ def rotation_angle(Ra, Rb):
     return float(np.linalg.norm([S[2, 1] - S[1, 2], S[0, 2] - S[2, 0], S[1, 0] - S[0, 1]]) / 2)
 
 
+@pytest.mark.slow
 def test_same_motion_as_mujoco_through_swivelling_pulleys():
     """At every 1 ms step the two engines agree to 1e-6 m in the base's position, 1e-6 rad in
     its orientation and in each joint coordinate, while the base moves by centimetres and
