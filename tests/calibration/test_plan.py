@@ -28,6 +28,7 @@ def test_every_built_in_gets_a_plan_or_a_reason(name):
         return
     plan = plan_poses(robot, 8, known_poses=True)
     assert plan.poses.shape == (8, robot.pose_size) and np.isfinite(plan.log_det)
+    assert len({tuple(p) for p in plan.poses}) == 8  # eight distinct poses, none chosen twice
     # each pose is in equilibrium on non-negative tensions, by least squares on W τ = −w
     for pose in plan.poses:
         W, w = structure_matrix(robot, pose), external_wrench(robot, pose)

@@ -59,7 +59,7 @@ MIN_CANDIDATES = 500
 #: Equilibria computed per planned pose for a robot with fewer cables than pose coordinates (at
 #: least :data:`MIN_EQUILIBRIA`): each is a constrained minimisation, not a test.
 EQUILIBRIA_PER_POSE = 5
-MIN_EQUILIBRIA = 200
+MIN_EQUILIBRIA = 100
 
 #: The workspace conditions tried in turn when none is given (the second for a loaded robot).
 DEFAULT_CONDITIONS = ("wrench-feasible", "static")
@@ -158,8 +158,9 @@ def hanging_poses(robot: Robot, poses: np.ndarray) -> np.ndarray:
     """The stable equilibria the platform hangs in at the cable lengths of ``poses``, those with
     every cable taut and tensions within bounds (module docstring): the potential energy of the
     platform's load ``−F·(p + R c)`` (weight and constant force ``F`` at the wrench point ``c``)
-    minimised subject to ``l_i(q) ≤ L_i`` by SLSQP from each pose."""
-    from scipy.optimize import minimize
+    minimised subject to ``l_i(q) ≤ L_i`` by SLSQP from each pose, then the lengths and the
+    balance ``W τ + w = 0`` solved together by Newton's method (Powell's hybrid) from there."""
+    from scipy.optimize import minimize, root
 
     from taut.calibration._model import frames, partials
     from taut.workspace import evaluate_workspace
@@ -177,6 +178,13 @@ def hanging_poses(robot: Robot, poses: np.ndarray) -> np.ndarray:
         p, R, _ = frames(robot, q[None])
         return -float(force @ (p[0] + R[0] @ point))
 
+    from taut.kinematics import structure_matrix
+    from taut.statics import external_wrench
+
+    def balance(z: np.ndarray, target: np.ndarray) -> np.ndarray:
+        q, tau = z[:-n], z[-n:]
+        return np.concatenate([lengths(q)[0] - target, structure_matrix(robot, q) @ tau + external_wrench(robot, q)])
+
     found = []
     for q0 in poses:
         target = lengths(q0)[0]
@@ -189,8 +197,14 @@ def hanging_poses(robot: Robot, poses: np.ndarray) -> np.ndarray:
             ],
             options={"ftol": 1e-12, "maxiter": 200},
         )
-        if res.success and np.all(np.abs(lengths(res.x)[0] - target) <= TAUT_RTOL * target.max()):
-            found.append(res.x)
+        if not res.success or np.any(np.abs(lengths(res.x)[0] - target) > TAUT_RTOL * target.max()):
+            continue
+        # SLSQP stops within ~1e-8 of the balance; Newton on lengths and balance together
+        # (square: pose and tensions) makes it exact, from the tensions that balance it best
+        tau = np.linalg.lstsq(structure_matrix(robot, res.x), -external_wrench(robot, res.x), rcond=None)[0]
+        exact = root(balance, np.concatenate([res.x, tau]), args=(target,), method="hybr")
+        if exact.success:
+            found.append(exact.x[:-n])
     out = np.array(found).reshape(-1, robot.pose_size)
     return out[evaluate_workspace(robot, "static", poses=out).inside] if len(out) else out
 
