@@ -58,11 +58,12 @@ frame, as anchors are, ``com`` references shifted).  A cable listed from its lin
 is read in the other direction.  Via points on a planar robot must lie in its plane.
 
 CASPR's own models, as taut reads them (the files of ``tests/model/fixtures/caspr/real``, tested
-there): CoGiRo (``SCDM``, a ``SPATIAL_EULER_XYZ`` platform, 8 cables) and KNTU_planar (a
+there; every model and cable set, with the reasons for the refusals, in ``docs/caspr-models.md``):
+CoGiRo (``SCDM``, a ``SPATIAL_EULER_XYZ`` platform, 8 cables) and KNTU_planar (a
 ``PLANAR_XY`` platform, 4 cables) load; SpiderBot_UR3 (``HCDM``: a ``SPATIAL_EULER_XYZ`` base
 carrying a UR3 arm on six actuated ``R_Y``/``R_Z`` joints) loads with every cable set
 (``CUcablerobot``, through swivelling pulleys; ``set_1``; ``set_IPAnema_inspired``), its six
-joints with their actuators.
+joints with their actuators, and so does SpiderBot_X52 (its arm on four joints).
 
 Planes map onto taut's ``(x, y)`` so that CASPR's gravity (9.81 m/s² along −z) stays along
 taut's −y: ``PLANAR_XZ`` takes ``(x, y) = (X, Z)`` and ``θ = −θ_CASPR`` (CASPR rotates about
