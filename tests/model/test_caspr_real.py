@@ -97,6 +97,30 @@ CATALOGUE: dict[tuple[str, str], Loads | Refused] = {
     ("MCDM/8S_neck/8S_neck_bodies.xml", "opensim_vasavada"): Refused(
         UnsupportedRobotError, link_cable("deepmult-C4/5-C2 (right)", "3 -> 6"), (LINK_CABLE, GROUND)
     ),
+    ("MCDM/4U_modular_units_arm/4U_modular_units_arm_bodies.xml", "basic"): Refused(
+        UnsupportedRobotError, link_cable("M2_1", "1 -> 2"), (LINK_CABLE, GROUND)
+    ),
+    ("MCDM/4U_modular_units_arm/4U_modular_units_arm_bodies.xml", "co_shared_cable"): Refused(
+        UnsupportedRobotError, link_cable("M2_1", "1 -> 2"), (LINK_CABLE, GROUND)
+    ),
+    ("MCDM/4U_modular_units_arm/4U_modular_units_arm_bodies.xml", "alternatively_co_shared_cables"): Refused(
+        UnsupportedRobotError, link_cable("M2_2", "1 -> 2 -> 2 -> 3"), (LINK_CABLE, GROUND)
+    ),
+    ("MCDM/4U_modular_units_arm/4U_modular_units_arm_bodies.xml", "cable_set_4"): Refused(
+        UnsupportedRobotError, chain("1:U_YZ, 2:U_YZ, 3:U_YZ, 4:U_YZ", "U_YZ"), (GROUND,)
+    ),
+    ("MCDM/4U_modular_units_arm/4U_modular_units_arm_bodies.xml", "cable_set_5"): Refused(
+        UnsupportedRobotError, chain("1:U_YZ, 2:U_YZ, 3:U_YZ, 4:U_YZ", "U_YZ"), (GROUND,)
+    ),
+    ("MCDM/RoboyUpperBody/RoboyUpperBody_bodies.xml", "DEFAULT"): Refused(
+        UnsupportedRobotError, link_cable("shoulder_left_motor0", "9 -> 16"), (LINK_CABLE, GROUND)
+    ),
+    ("MCDM/SJTUSnake/SJTUSnake_bodies.xml", "link to link cable connection"): Refused(
+        UnsupportedRobotError, link_cable("cable 1 (link 2)", "2 -> 1"), (LINK_CABLE, GROUND)
+    ),
+    ("MCDM/SJTUSnake/SJTUSnake_bodies.xml", "base to link cable connection"): Refused(
+        UnsupportedRobotError, chain(", ".join(f"{k}:U_XZ" for k in range(1, 13)), "U_XZ"), (GROUND,)
+    ),
     ("MCDM/BMArm/BMArm_bodies.xml", "WORKING"): Refused(
         UnsupportedRobotError, chain("1:S_EULER_XYZ, 2:R_X", "S_EULER_XYZ"), (GROUND,)
     ),
