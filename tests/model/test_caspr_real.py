@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from axis_rotations import rx, ry, rz
 
-from taut.errors import RobotFileError, TautError, UnsupportedRobotError
+from taut.errors import TautError, UnsupportedRobotError
 from taut.kinematics import inverse_kinematics, jointed_structure_matrix
 from taut.model._caspr import cables_path, read_caspr
 
@@ -89,7 +89,9 @@ CATALOGUE: dict[tuple[str, str], Loads | Refused] = {
         UnsupportedRobotError, link_cable("cable1", "1 -> 3"), (LINK_CABLE, MOBILE_BASE)
     ),
     ("HCDM/PlanarSnakeArm/PlanarSnakeArm_bodies.xml", "Empty"): Refused(
-        RobotFileError, "<cable_set id='Empty'>: the cable set holds no cables", (NO_CABLES,)
+        UnsupportedRobotError,
+        "<cable_set id='Empty'>: the cable set holds no cables; taut models robots moved by cables",
+        (NO_CABLES,),
     ),
     ("HCDM/PlanarSnakeArm/PlanarSnakeArm_bodies.xml", "PlaceHOlder"): Refused(
         UnsupportedRobotError, chain(", ".join(f"{k}:R_X" for k in range(1, 8)), "R_X"), (GROUND,)

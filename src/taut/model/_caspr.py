@@ -45,8 +45,9 @@ free), a link jointed to the ground or to the ``T_XYZ`` carrier
 beside the platform (not reachable from the platform), the quaternion joints of CASPR's earlier
 releases (``SPHERICAL``, ``SPATIAL``: four coordinates for three degrees of freedom), a
 ``PLANAR_*`` joint between two links, further links on a point-mass platform, an actuated
-platform joint, and a cable whose attachments do not start or end on the base (link 0): a
-taut cable runs from a base exit to an anchor on a body. Since every link has one parent, a
+platform joint, a cable whose attachments do not start or end on the base (link 0): a
+taut cable runs from a base exit to an anchor on a body, and an empty cable set (CASPR's arms
+moved by their joints alone). Since every link has one parent, a
 CASPR bodies file holds no closed chain. An unknown joint type is a
 :class:`~taut.errors.RobotFileError` naming it.
 
@@ -500,7 +501,9 @@ def _read_cables(root: ET.Element, source: str, n_links: int, cable_set: str | N
             )
         cables.append(_read_cable(el, n_links, where))
     if not cables:
-        raise RobotFileError(f"{where}: the cable set holds no cables")
+        # CASPR accepts an empty set (PlanarSnakeArm's default: an arm moved by its joints alone);
+        # a well-formed file, but a robot taut does not model
+        raise UnsupportedRobotError(f"{where}: the cable set holds no cables; taut models robots moved by cables")
     return wanted, cables
 
 
