@@ -16,22 +16,25 @@ import numpy as np
 import pytest
 from axis_rotations import rx, ry, rz
 
-from taut.errors import TautError, UnsupportedRobotError
+from taut.errors import RobotFileError, TautError, UnsupportedRobotError
 from taut.kinematics import inverse_kinematics, jointed_structure_matrix
 from taut.model._caspr import cables_path, read_caspr
 
 REAL = Path(__file__).parent / "fixtures" / "caspr" / "real"
 DOC = Path(__file__).parents[2] / "docs" / "caspr-models.md"
 
-# What stands in the way of a refused model; the first three are features taut's reader lacks,
-# the last is a model taut has nothing to analyse in.
+# What stands in the way of a refused model: features taut's reader lacks (MISSING), a model
+# taut has nothing to analyse in, and a number beyond the range taut takes.
 GROUND = "chain jointed to the ground"
 LINK_CABLE = "cable between two links"
 SCREW_PULLEY = "screw_base_rotating_pulley"
-VSD_CABLE = "cable_vsd_polynomial"
+VSD_CABLE = "variable-stiffness cable"
+PASSIVE_SPRING = "passive spring"
+FORCE_ERROR = "force_error property"
 MOBILE_BASE = "actuated platform joint"
+MISSING = (GROUND, LINK_CABLE, SCREW_PULLEY, VSD_CABLE, PASSIVE_SPRING, FORCE_ERROR, MOBILE_BASE)
 NO_CABLES = "no cables"
-MISSING = (GROUND, LINK_CABLE, SCREW_PULLEY, VSD_CABLE, MOBILE_BASE)
+OUT_OF_RANGE = "tension bound out of range"
 
 #: CASPR's family of the models stored beside this catalogue's subdirectories, before them
 ROOT_FAMILY = {"CoGiRo_bodies.xml": "SCDM", "KNTU_planar_bodies.xml": "SCDM", "SpiderBot_UR3_bodies.xml": "HCDM"}
@@ -64,7 +67,12 @@ def link_cable(name: str, route: str) -> str:
     return f"cable {name!r} runs through links {route}; a taut cable runs from the base (link 0) to a body"
 
 
-VSD = "<cable_vsd_polynomial> cables are not modelled by taut (only cable_ideal, cable_linear_spring)"
+def cable_type(tag: str) -> str:
+    return f"<{tag}> cables are not modelled by taut (only cable_ideal, cable_linear_spring)"
+
+
+VSD = cable_type("cable_vsd_polynomial")
+SPHERICAL = "link 1 has a S_EULER_XYZ joint; taut reads SPATIAL_EULER_XYZ"
 
 
 def screw(name: str) -> str:
@@ -79,6 +87,56 @@ CATALOGUE: dict[tuple[str, str], Loads | Refused] = {
     ("SpiderBot_UR3_bodies.xml", "set_1"): Loads("rigid", 8, 6),
     ("SpiderBot_UR3_bodies.xml", "set_IPAnema_inspired"): Loads("rigid", 8, 6),
     ("HCDM/SpiderBot_X52/SpiderBot_X52_bodies.xml", "original"): Loads("rigid", 8, 4),
+    ("SCDM/2_DoF_VSD/2_DoF_VSD_bodies.xml", "basic_linear"): Loads("point-mass", 4, 0),
+    ("SCDM/2_DoF_VSD/2_DoF_VSD_bodies.xml", "stiff"): Loads("point-mass", 4, 0),
+    ("SCDM/ACROBOT/ACROBOT_bodies.xml", "original"): Loads("rigid", 8, 0),
+    ("SCDM/CAROCA/CAROCA_bodies.xml", "original"): Loads("rigid", 8, 0),
+    ("SCDM/CAROCA/CAROCA_bodies.xml", "with_rotating_pulleys"): Loads("rigid", 8, 0),
+    ("SCDM/CAROCA/CAROCA_bodies.xml", "gazebo_sim"): Loads("rigid", 8, 0),
+    ("SCDM/FAST/FAST_bodies.xml", "original"): Loads("rigid", 6, 0),
+    ("SCDM/IPAnema_1/IPAnema_1_bodies.xml", "original"): Loads("rigid", 8, 0),
+    ("SCDM/IPAnema_1/IPAnema_1_bodies.xml", "IROS_CASPR_2016"): Loads("rigid", 8, 0),
+    ("SCDM/IPAnema_2/IPAnema_2_bodies.xml", "original"): Loads("rigid", 8, 0),
+    ("SCDM/IPAnema_2/IPAnema_2_bodies.xml", "IROS_CASPR_2016"): Loads("rigid", 8, 0),
+    ("SCDM/MACARM/MACARM_bodies.xml", "original"): Loads("rigid", 8, 0),
+    ("SCDM/NIST_RoboCrane/NIST_RoboCrane_bodies.xml", "original"): Loads("rigid", 6, 0),
+    ("SCDM/SEGESTA/SEGESTA_bodies.xml", "original"): Loads("rigid", 10, 0),
+    ("SCDM/The_Cable_Robot_Simulator/The_Cable_Robot_Simulator_bodies.xml", "original"): Loads("rigid", 8, 0),
+    ("SCDM/The_Cable_Robot_Simulator/The_Cable_Robot_Simulator_bodies.xml", "normal"): Loads("rigid", 8, 0),
+    ("examples/Example_planar_XY/Example_planar_XY_bodies.xml", "basic"): Loads("rigid", 4, 0),
+    ("examples/Example_planar_XY/Example_planar_XY_bodies.xml", "basic_notouch"): Loads("rigid", 4, 0),
+    ("examples/Example_planar_XY/Example_planar_XY_bodies.xml", "basic_cross"): Loads("rigid", 4, 0),
+    ("examples/Example_spatial/Example_spatial_bodies.xml", "basic_7_cables"): Loads("rigid", 7, 0),
+    ("examples/Example_spatial/Example_spatial_bodies.xml", "basic_8_cables"): Loads("rigid", 8, 0),
+    ("examples/Example_spatial/Example_spatial_bodies.xml", "cross_8_cables"): Loads("rigid", 8, 0),
+    ("SCDM/2_DoF_VSD/2_DoF_VSD_bodies.xml", "basic"): Refused(
+        UnsupportedRobotError, cable_type("cable_vsd_torsion_spring"), (VSD_CABLE,)
+    ),
+    ("SCDM/Passive_springs_planar/Passive_springs_planar_bodies.xml", "one_spring"): Refused(
+        UnsupportedRobotError, cable_type("cable_passive_linear_spring"), (PASSIVE_SPRING,)
+    ),
+    ("SCDM/Passive_springs_planar/Passive_springs_planar_bodies.xml", "four_springs"): Refused(
+        UnsupportedRobotError, cable_type("cable_passive_linear_spring"), (PASSIVE_SPRING,)
+    ),
+    ("SCDM/Myorob_shoulder/Myorob_shoulder_bodies.xml", "original"): Refused(
+        RobotFileError,
+        "<properties>: unknown element <force_error> (expected force_min, force_max)",
+        (FORCE_ERROR, GROUND),
+    ),
+    ("examples/Example_spatial/Example_spatial_bodies.xml", "alternative_7_cables"): Refused(
+        RobotFileError,
+        "cables[7].tension[2]: 1e+10 is out of range (taut takes magnitudes up to 1e+09 in SI units)",
+        (OUT_OF_RANGE,),
+    ),
+    ("examples/Example_spherical/Example_spherical_bodies.xml", "basic_4_cables"): Refused(
+        UnsupportedRobotError, SPHERICAL, (GROUND,)
+    ),
+    ("examples/Example_spherical/Example_spherical_bodies.xml", "VSD_6_cables"): Refused(
+        UnsupportedRobotError, cable_type("cable_vsd_flexure_linear"), (VSD_CABLE, GROUND)
+    ),
+    ("examples/Example_spherical/Example_spherical_bodies.xml", "VSD_6_cables_2"): Refused(
+        UnsupportedRobotError, cable_type("cable_vsd_flexure_linear"), (VSD_CABLE, GROUND)
+    ),
     ("HCDM/SpiderBot_UR3_Test/SpiderBot_UR3_Test_bodies.xml", "CUcablerobot"): Refused(
         UnsupportedRobotError, screw("X"), (SCREW_PULLEY,)
     ),
@@ -229,7 +287,7 @@ def test_the_doc_table_is_the_catalogue() -> None:
     models = {bodies for bodies, _ in CATALOGUE}
     summary = f"{len(CATALOGUE)} (model, cable set) pairs of {len(models)} models, {len(table) - len(refused)} load and {len(refused)} are refused"
     assert summary in DOC.read_text()
-    for blocker in {*MISSING, NO_CABLES}:
+    for blocker in {*MISSING, NO_CABLES, OUT_OF_RANGE}:
         first = sum(o.blockers[0] == blocker for o in refused)
         assert (f"| {blocker} | {first} |" in DOC.read_text()) == bool(first), blocker
 
@@ -237,7 +295,7 @@ def test_the_doc_table_is_the_catalogue() -> None:
 def test_every_blocker_is_named() -> None:
     for outcome in CATALOGUE.values():
         if isinstance(outcome, Refused):
-            assert outcome.blockers and set(outcome.blockers) <= {*MISSING, NO_CABLES}
+            assert outcome.blockers and set(outcome.blockers) <= {*MISSING, NO_CABLES, OUT_OF_RANGE}
 
 
 @pytest.mark.parametrize(
