@@ -274,6 +274,25 @@ def test_spiderbot_x52_lengths_from_the_raw_attachments() -> None:
     np.testing.assert_allclose(lengths, expected, rtol=1e-12)
 
 
+def test_example_planar_xy_lengths_from_the_raw_attachments() -> None:
+    """CASPR's planar example turns its ``PLANAR_XY`` link about +z and takes the anchors from
+    its centre of mass, which is the joint: each length is ``|a − (p + R(θ) r)|`` in the plane."""
+    bodies = REAL / "examples" / "Example_planar_XY" / "Example_planar_XY_bodies.xml"
+    q = np.array([0.4, 0.55, 0.3])
+    rotation = rz(q[2])[:2, :2]
+    cable_set = ET.parse(cables_path(bodies)).getroot().find("cable_set[@id='basic_notouch']")
+    assert cable_set is not None
+    expected = []
+    for cable in cable_set:
+        base, anchor = [
+            np.array([float(x) for x in (a.findtext("location") or "").split()])[:2] for a in cable.iter("attachment")
+        ]
+        expected.append(np.linalg.norm(base - (q[:2] + rotation @ anchor)))
+    lengths = inverse_kinematics(read_caspr(bodies, cable_set="basic_notouch"), q).lengths
+    assert len(expected) == 4
+    np.testing.assert_allclose(lengths, expected, rtol=1e-12)
+
+
 def test_the_doc_table_is_the_catalogue() -> None:
     rows = re.findall(r"^\| (\w+) \| `([^`]+)` \| `([^`]+)` \| (loads|refused) \|", DOC.read_text(), re.M)
     table = {(family, model, cable_set): result for family, model, cable_set, result in rows}
