@@ -45,8 +45,9 @@ free), a link jointed to the ground or to the ``T_XYZ`` carrier
 beside the platform (not reachable from the platform), the quaternion joints of CASPR's earlier
 releases (``SPHERICAL``, ``SPATIAL``: four coordinates for three degrees of freedom), a
 ``PLANAR_*`` joint between two links, further links on a point-mass platform, an actuated
-platform joint, and a cable whose attachments do not start or end on the base (link 0): a
-taut cable runs from a base exit to an anchor on a body. Since every link has one parent, a
+platform joint, a cable whose attachments do not start or end on the base (link 0): a
+taut cable runs from a base exit to an anchor on a body, and an empty cable set (CASPR's arms
+moved by their joints alone). Since every link has one parent, a
 CASPR bodies file holds no closed chain. An unknown joint type is a
 :class:`~taut.errors.RobotFileError` naming it.
 
@@ -58,11 +59,12 @@ frame, as anchors are, ``com`` references shifted).  A cable listed from its lin
 is read in the other direction.  Via points on a planar robot must lie in its plane.
 
 CASPR's own models, as taut reads them (the files of ``tests/model/fixtures/caspr/real``, tested
-there): CoGiRo (``SCDM``, a ``SPATIAL_EULER_XYZ`` platform, 8 cables) and KNTU_planar (a
+there; every model and cable set, with the reasons for the refusals, in ``docs/caspr-models.md``):
+CoGiRo (``SCDM``, a ``SPATIAL_EULER_XYZ`` platform, 8 cables) and KNTU_planar (a
 ``PLANAR_XY`` platform, 4 cables) load; SpiderBot_UR3 (``HCDM``: a ``SPATIAL_EULER_XYZ`` base
 carrying a UR3 arm on six actuated ``R_Y``/``R_Z`` joints) loads with every cable set
 (``CUcablerobot``, through swivelling pulleys; ``set_1``; ``set_IPAnema_inspired``), its six
-joints with their actuators.
+joints with their actuators, and so does SpiderBot_X52 (its arm on four joints).
 
 Planes map onto taut's ``(x, y)`` so that CASPR's gravity (9.81 m/s² along −z) stays along
 taut's −y: ``PLANAR_XZ`` takes ``(x, y) = (X, Z)`` and ``θ = −θ_CASPR`` (CASPR rotates about
@@ -499,7 +501,9 @@ def _read_cables(root: ET.Element, source: str, n_links: int, cable_set: str | N
             )
         cables.append(_read_cable(el, n_links, where))
     if not cables:
-        raise RobotFileError(f"{where}: the cable set holds no cables")
+        # CASPR accepts an empty set (PlanarSnakeArm's default: an arm moved by its joints alone);
+        # a well-formed file, but a robot taut does not model
+        raise UnsupportedRobotError(f"{where}: the cable set holds no cables; taut models robots moved by cables")
     return wanted, cables
 
 
