@@ -80,6 +80,9 @@ so an attachment ``r`` on it is exactly the point mass at the exit ``a − r``.
 Cable attachments are relative to the joint (``attachment_reference="joint"``) or to the
 centre of mass (``"com"``); inertia is given about the centre of mass (``ref="com"``) or the
 joint (``ref="joint"``, shifted to the centre of mass: ``I_G = I_O − m(|c|² E − c cᵀ)``).
+A ``force_max`` beyond ``MAX_MAGNITUDE`` (CASPR's models write "no bound" as 9999999999 N) is an
+unbounded tension; a ``<force_error>`` (an error model of the cable force) is refused with
+:class:`~taut.errors.UnsupportedRobotError`: taut's tensions are exact.
 ``cable_linear_spring``'s ``<K>`` is the cable's axial rigidity EA [N]: CASPR's stiffness is
 ``K / length`` [N/m]; taut's ``stiffness`` is EA. The platform link's ``q_min``/``q_max`` and
 every ``q_initial`` bound and start CASPR's simulations and are not part of the robot.
@@ -421,9 +424,17 @@ def _read_cable(elem: ET.Element, n_links: int, where: str) -> _Cable:
     props = _one(elem, "properties", where)
     pw = f"{where} <properties>"
     allowed = ("force_min", "force_max", "K") if elem.tag == "cable_linear_spring" else ("force_min", "force_max")
+    if props.find("force_error") is not None:
+        raise UnsupportedRobotError(
+            f"{pw} <force_error>: taut models no error of the cable force (its tensions are exact); "
+            "remove the element to read the robot without it"
+        )
     _children(props, allowed, pw)
     lo = _number(props, "force_min", pw)
     hi = _number(props, "force_max", pw, allow_inf=True)
+    if hi > MAX_MAGNITUDE:
+        # CASPR's models write "no bound" as a huge number (9999999999 N)
+        hi = math.inf
     stiffness = None
     if elem.tag == "cable_linear_spring":
         stiffness = _number(props, "K", pw)
