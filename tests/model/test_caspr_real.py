@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from axis_rotations import rx, ry, rz
 
-from taut.errors import RobotFileError, TautError, UnsupportedRobotError
+from taut.errors import TautError, UnsupportedRobotError
 from taut.kinematics import inverse_kinematics, jointed_structure_matrix
 from taut.model._caspr import cables_path, read_caspr
 
