@@ -101,3 +101,16 @@ def test_plan_section_draws_the_atlas_path_and_tension_envelope():
         lo, hi = tl[f"tension-min-{i}"], tl[f"tension-max-{i}"]
         assert len(lo) == len(res.path) and np.all(lo > 0) and np.all(hi < 1) and np.all(lo < hi)
     plt.close(fig)
+
+
+def test_calibration_section_finds_the_built_exits():
+    from taut.demo._calibration import BUILT_ERROR, NOISE, calibration_section
+
+    report = Report("t")
+    calibration_section(report)
+    (sec,) = report.sections
+    data = sec.json
+    assert data["identifiable"] and data["drawing_error_m"] > BUILT_ERROR / 2
+    # millimetres from centimetres: the estimate within a few of its standard deviations
+    assert data["exit_error_m"] < 20 * NOISE and data["worst_z"] < 4 and data["offset_error_m"] < 20 * NOISE
+    assert [f.filename for f in sec.figures] == ["printer-5cable-calibration.png"] and sec.figures[0].png

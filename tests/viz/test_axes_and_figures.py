@@ -279,3 +279,24 @@ def test_plot_plan_on_a_slice_with_a_free_position_coordinate():
     path = next(ln for ln in ax.lines if ln.get_gid() == "path").get_xydata()
     np.testing.assert_allclose(path[[0, -1]], [[0.0, 0.3], [0.1, 0.3]], atol=1e-9)
     assert fig.axes[1].get_xlabel() == "path length in (x, phi) [m, rad]"
+
+
+def test_plot_calibration_refuses_what_it_cannot_draw():
+    import matplotlib.pyplot as plt
+
+    from taut.calibration import calibrate, plan_poses, simulate_measurements
+    from taut.errors import ArgumentError
+    from taut.model import example
+    from taut.viz import plot_calibration
+
+    robot = example("printer-5cable")
+    res = calibrate(robot, simulate_measurements(robot, plan_poses(robot, 20).poses, sigma=1e-4, seed=1))
+    with pytest.raises(ArgumentError, match="truth"):
+        plot_calibration(robot, res, truth=np.zeros((4, 3)))
+    with pytest.raises(ArgumentError, match="cables"):
+        plot_calibration(example("planar-4cable"), res)
+    fig = plt.figure()
+    fig.add_subplot()
+    with pytest.raises(ArgumentError, match="empty figure"):
+        plot_calibration(robot, res, fig=fig)
+    plt.close("all")

@@ -6,6 +6,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from taut.demo._atlas import atlas_section
+from taut.demo._calibration import calibration_section
 from taut.demo._certified import certified_section
 from taut.demo._check import check_section
 from taut.demo._control import control_section
@@ -27,6 +28,7 @@ SECTIONS: list[Callable[[Report], object]] = [
     check_section,
     plan_section,
     control_section,
+    calibration_section,
 ]
 
 

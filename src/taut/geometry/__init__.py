@@ -1,4 +1,5 @@
-"""Pure geometry, no robot: rotations and pose conventions."""
+"""Pure geometry, no robot: rotations and pose conventions, intersections and distances, and the
+rigid alignment of point sets."""
 
 from __future__ import annotations
 
@@ -7,6 +8,7 @@ from typing import TYPE_CHECKING
 from taut._lazy import lazy_exports
 
 if TYPE_CHECKING:
+    from taut.geometry._alignment import rigid_alignment
     from taut.geometry._frames import axis_frames
     from taut.geometry._intersections import (
         circles_overlap,
@@ -24,6 +26,7 @@ if TYPE_CHECKING:
 
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
+    "rigid_alignment": "taut.geometry._alignment",
     "axis_frames": "taut.geometry._frames",
     "circles_overlap": "taut.geometry._intersections",
     "point_in_polygon": "taut.geometry._intersections",
@@ -61,6 +64,7 @@ __all__ = [
     "point_in_polygon",
     "rate_matrix",
     "rate_matrix_derivative",
+    "rigid_alignment",
     "rotate_about_axis",
     "rotation_into",
     "rotation_matrix",

@@ -24,7 +24,8 @@ argument a figure cannot be drawn from (``docs/architecture.md`` §2.7).
 A function that draws several panels takes ``fig: matplotlib.figure.Figure | None = None``
 instead and returns that ``Figure``: the given one, which must be empty (a figure that
 already has axes raises :class:`~taut.errors.ArgumentError`), or a new one.  These are
-:func:`taut.viz._atlas.plot_atlas`, :func:`taut.viz._check.plot_check`,
+:func:`taut.viz._atlas.plot_atlas`, :func:`taut.viz._calibration.plot_calibration`,
+:func:`taut.viz._check.plot_check`,
 :func:`taut.viz._dgp.plot_equilibria`, :func:`taut.viz._dgp.plot_tracking`,
 :func:`taut.viz._plan.plot_plan`, :func:`taut.viz._sag.plot_sag` and :func:`taut.viz._trajectory.plot_trajectory`.
 
@@ -39,6 +40,7 @@ from taut._lazy import lazy_exports
 
 if TYPE_CHECKING:
     from taut.viz._atlas import plot_atlas
+    from taut.viz._calibration import plot_calibration
     from taut.viz._certified import plot_certified
     from taut.viz._check import plot_check
     from taut.viz._dgp import plot_equilibria, plot_tracking
@@ -54,6 +56,7 @@ if TYPE_CHECKING:
 #: Every name is imported on first use (PEP 562), so that importing the package loads nothing heavy.
 _LAZY = {
     "plot_atlas": "taut.viz._atlas",
+    "plot_calibration": "taut.viz._calibration",
     "plot_certified": "taut.viz._certified",
     "plot_check": "taut.viz._check",
     "plot_equilibria": "taut.viz._dgp",
@@ -73,6 +76,7 @@ __all__ = [
     "Report",
     "draw_robot",
     "plot_atlas",
+    "plot_calibration",
     "plot_certified",
     "plot_check",
     "plot_control",
