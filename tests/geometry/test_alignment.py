@@ -59,3 +59,15 @@ def test_mirrored_points_get_a_rotation_not_a_reflection():
 def test_bad_point_sets(source, target):
     with pytest.raises(TautError, match="rigid_alignment"):
         rigid_alignment(source, target)
+
+
+def test_a_reflection_is_recovered_where_allowed():
+    rng = np.random.default_rng(3)
+    points = rng.normal(size=(6, 3))
+    mirror = np.diag([1.0, 1.0, -1.0]) @ Rotation.random(random_state=rng).as_matrix()
+    target = points @ mirror.T + [0.5, -1.0, 2.0]
+    Q, t = rigid_alignment(points, target, reflection=True)
+    np.testing.assert_allclose(Q, mirror, atol=1e-9)
+    np.testing.assert_allclose(points @ Q.T + t, target, atol=1e-9)
+    proper, _ = rigid_alignment(points, target)
+    assert np.linalg.det(proper) == pytest.approx(1.0)

@@ -4,8 +4,10 @@ measurements, by nonlinear least squares over all of them at once.
 The method is the self-calibration of Borgstrom et al. (2009) and the auto-calibration of
 Miermeister & Pott (2012): the redundant cable lengths measured at poses that are unknown (or
 measured by a tracker) determine the geometry and the encoder offsets together.  The problem is
-solved as a bundle adjustment (Triggs et al. 2000): ``scipy.optimize.least_squares`` (trust
-region reflective) with the analytic sparse Jacobian of :mod:`taut.calibration._model`.
+solved as a bundle adjustment (Triggs et al. 2000): Levenberg–Marquardt on the analytic sparse
+Jacobian of :mod:`taut.calibration._model`, each step solved exactly through the Schur
+complement of the pose blocks (:mod:`taut.calibration._solve`), so that a step costs time
+linear in the rows.
 
 Start.  The nominal robot is the start of its parameters; the poses and offsets start from a
 multi-start that needs no pose guess.  Every unknown pose is fitted to its own row on the nominal
@@ -31,7 +33,9 @@ same rows are flagged but kept.
 Gauge.  With no measured pose, a rigid motion of the exits and every pose together (and, when
 the anchors are estimated, a change of the platform frame) changes no length.  The rule: after
 the fit, the estimated exits are moved by the proper rigid motion that best aligns them onto
-the nominal ones in the least-squares sense (Kabsch 1976), and the poses with them; estimated
+the nominal ones in the least-squares sense (Kabsch 1976), and the poses with them — for a
+point mass the motion may be improper: a configuration and its mirror image give the same
+lengths, and the fit may land on either; estimated
 anchors likewise onto the nominal anchors, the poses' frames changing to match.  The standard
 deviations are those of that gauge: ``σ² Z (Zᵀ S Z)⁻¹ Zᵀ`` with ``S`` the information about
 the parameters once the poses are eliminated and ``Z`` the directions that the alignment leaves
@@ -69,8 +73,9 @@ from taut._results import Result, jsonable
 from taut.calibration._data import Measurements, refuse_unsupported
 from taut.calibration._identify import MAX_CONDITION, Identifiability, parse_estimate, report
 from taut.calibration._model import Layout, Problem, frames, partials
+from taut.calibration._solve import levenberg_marquardt
 from taut.errors import TautError
-from taut.geometry import angles_from_matrix
+from taut.geometry import angles_from_matrix, rigid_alignment
 from taut.model import Robot
 
 #: Robust losses ``robust`` takes (``scipy.optimize.least_squares``'s names).
@@ -130,7 +135,8 @@ MAX_EVALUATIONS = 200
 #: The rule that fixes the gauge, as the result and the CLI state it.
 GAUGE_RULE = (
     "no pose measured: the estimated exits are aligned onto the nominal ones by the least-squares "
-    "rigid motion (Kabsch), the poses moved with them"
+    "rigid motion (Kabsch; for a point mass, whose mirror image fits the same lengths, a reflection "
+    "too), the poses moved with them"
 )
 GAUGE_RULE_ANCHORS = "; the estimated anchors likewise onto the nominal anchors (the platform frame)"
 GAUGE_MEASURED = "measured poses fix the frame"
@@ -244,17 +250,6 @@ class CalibrationResult(Result):
             f"gauge: {self.gauge}; {'identifiable' if self.identifiable else 'NOT identifiable'}"
         )
         return robot.model_copy(update={"cables": tuple(cables), "description": note})
-
-
-def kabsch(source: np.ndarray, target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The proper rigid motion ``x ↦ Q x + t`` that best maps ``source (n, d)`` onto
-    ``target`` in the least-squares sense (Kabsch 1976): ``(Q, t)``."""
-    cs, ct = source.mean(axis=0), target.mean(axis=0)
-    U, _, Vt = np.linalg.svd((source - cs).T @ (target - ct))
-    D = np.eye(source.shape[1])
-    D[-1, -1] = np.sign(np.linalg.det(Vt.T @ U.T)) or 1.0
-    Q = Vt.T @ D @ U.T
-    return Q, ct - Q @ cs
 
 
 def _move_poses(robot: Robot, poses: np.ndarray, Q: np.ndarray, t: np.ndarray, body: bool) -> np.ndarray:
@@ -465,25 +460,24 @@ def _reseed(
 
 
 def _fit(problem: Problem, x0: np.ndarray, loss: str, scale: float, dense: bool, budget: int | None = None) -> Any:
+    max_nfev = budget or MAX_EVALUATIONS * max(len(x0), 1)
+    if not dense:
+        return levenberg_marquardt(problem, x0, loss=loss, scale=scale, max_nfev=max_nfev)
     from scipy.optimize import least_squares
 
-    jac = (lambda x: problem.jacobian(x).toarray()) if dense else problem.jacobian
     return least_squares(
         problem.residuals,
         x0,
-        jac=jac,
+        jac=lambda x: problem.jacobian(x).toarray(),
         method="trf",
-        tr_solver="exact" if dense else "lsmr",
-        # LSMR's default tolerances leave the trust-region steps inexact on these ill-conditioned
-        # problems: thousands of iterations instead of ten
-        **({} if dense else {"tr_options": {"atol": 1e-12, "btol": 1e-12}}),
+        tr_solver="exact",
         x_scale="jac",
         loss=loss,
         f_scale=scale,
         xtol=1e-12,
         ftol=1e-12,
         gtol=1e-10,
-        max_nfev=budget or MAX_EVALUATIONS * max(len(x0), 1),
+        max_nfev=max_nfev,
     )
 
 
@@ -530,7 +524,8 @@ def calibrate(
     scale : float
         The first robust fit's residual scale [m].
     dense : bool
-        Solve with a dense Jacobian (the benchmark's baseline; same answer, slower).
+        Solve with ``scipy.optimize.least_squares`` on the dense Jacobian (trust region
+        reflective; the benchmark's baseline).
 
     Returns
     -------
@@ -635,11 +630,12 @@ def calibrate(
     gauge = _gauge(layout)
     if gauge == GAUGE_RULE or gauge == GAUGE_RULE + GAUGE_RULE_ANCHORS:
         if anchors_on:
-            Q, t = kabsch(anchors, robot.anchors)
+            Q, t = rigid_alignment(anchors, robot.anchors)
             anchors = anchors @ Q.T + t
             poses = _move_poses(robot, poses, Q, t, body=True)
         if exits_on:
-            Q, t = kabsch(exits, robot.exits)
+            # lengths alone cannot tell a point mass's configuration from its mirror image
+            Q, t = rigid_alignment(exits, robot.exits, reflection=robot.is_point_mass)
             exits = exits @ Q.T + t
             poses = _move_poses(robot, poses, Q, t, body=False)
         x = layout.pack(exits, offsets, anchors, poses)

@@ -14,7 +14,9 @@ import numpy.typing as npt
 from taut.errors import TautError
 
 
-def rigid_alignment(source: npt.ArrayLike, target: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+def rigid_alignment(
+    source: npt.ArrayLike, target: npt.ArrayLike, *, reflection: bool = False
+) -> tuple[np.ndarray, np.ndarray]:
     """The proper rigid motion ``x ↦ Q x + t`` that maps ``source`` onto ``target`` best in the
     least-squares sense: the Kabsch rotation of the centred points (the SVD of their
     cross-covariance, its sign corrected so that ``det Q = +1``) and the centroids' offset.
@@ -23,6 +25,9 @@ def rigid_alignment(source: npt.ArrayLike, target: npt.ArrayLike) -> tuple[np.nd
     ----------
     source, target : array_like, shape (n, d)
         Corresponding points, ``d`` = 2 or 3.
+    reflection : bool
+        Allow an improper motion (``det Q = −1``, a rotation and a reflection) too, where it
+        fits better.
 
     Returns
     -------
@@ -62,6 +67,7 @@ def rigid_alignment(source: npt.ArrayLike, target: npt.ArrayLike) -> tuple[np.nd
     cs, ct = src.mean(axis=0), dst.mean(axis=0)
     U, _, Vt = np.linalg.svd((src - cs).T @ (dst - ct))
     D = np.eye(src.shape[1])
-    D[-1, -1] = np.sign(np.linalg.det(Vt.T @ U.T)) or 1.0
+    if not reflection:
+        D[-1, -1] = np.sign(np.linalg.det(Vt.T @ U.T)) or 1.0
     Q = Vt.T @ D @ U.T
     return Q, ct - Q @ cs
