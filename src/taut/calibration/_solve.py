@@ -29,6 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from taut.calibration._model import Problem
+from taut.errors import TautError
 
 #: The smallest damping factor: keeps the steps along unseen directions (the gauge) at zero.
 MIN_DAMPING = 1e-12
@@ -65,7 +66,7 @@ def _loss(r: np.ndarray, loss: str, scale: float) -> tuple[np.ndarray, np.ndarra
         zs = np.where(big, z, 1.0)
         rho0 = np.where(big, 2.0 * np.sqrt(zs) - 1.0, z)
         return rho0 * scale**2, np.where(big, zs**-0.5, 1.0), np.where(big, -0.5 * zs**-1.5, 0.0) / scale**2
-    raise ValueError(f"unknown loss {loss!r}")
+    raise TautError(f"loss: unknown loss {loss!r}; expected linear, soft_l1 or huber")
 
 
 def levenberg_marquardt(
