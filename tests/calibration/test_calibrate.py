@@ -165,9 +165,9 @@ def test_bad_arguments():
         calibrate(robot, data, robust="cauchy2")
     with pytest.raises(UnsupportedRobotError, match="point mass has no anchors"):
         calibrate(robot, data, estimate=("exits", "offsets", "anchors"))
-    with pytest.raises(UnsupportedRobotError, match="swivelling pulleys"):
-        calibrate(example("suspended-3pulley"), data)
-    with pytest.raises(UnsupportedRobotError, match="radii"):
+    with pytest.raises(UnsupportedRobotError, match="jointed bodies"):
+        calibrate(example("adjustable-8cable"), data)
+    with pytest.raises(UnsupportedRobotError, match="no radius to estimate"):
         calibrate(robot, data, estimate=("exits", "offsets", "radii"))
 
 

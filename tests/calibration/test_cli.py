@@ -111,7 +111,7 @@ def test_bad_options(tmp_path):
         (["calibrate", "printer-5cable", "--data", str(tmp_path / "none.csv")], "not a regular file"),
         (["calibrate", "printer-5cable", "--plan", "0"], "expected a whole number"),
         (["calibrate", "printer-5cable", "--data", "x.csv", "--out", str(tmp_path / "r.txt")], "must end in one of"),
-        (["calibrate", "printer-5cable", "--plan", "5", "--estimate", "exits,radii"], "pulley radii"),
+        (["calibrate", "printer-5cable", "--plan", "5", "--estimate", "exits,radii"], "no radius to estimate"),
     ]:
         run = run_taut(*argv)
         assert run.code == 2 and len(run.err.splitlines()) == 1 and message in run.err, (argv, run.err)

@@ -58,8 +58,8 @@ def test_bad_files_are_one_line(text, message):
 
 
 def test_unsupported_robots():
-    with pytest.raises(UnsupportedRobotError, match="swivelling pulleys"):
-        parse_measurements(example("suspended-3pulley"), "l1\n1\n")
+    with pytest.raises(UnsupportedRobotError, match="jointed bodies"):
+        parse_measurements(example("adjustable-8cable"), "l1\n1\n")
     with pytest.raises(UnsupportedRobotError, match="obstacles"):
         parse_measurements(example("vscr-four-cable"), "l1\n1\n")
 

@@ -16,7 +16,7 @@ from taut.statics import external_wrench
 
 
 def unsupported(robot) -> bool:
-    return bool(robot.swivel_cables or robot.n_joints or robot.obstacles or robot.routed_cables or robot.sagging_cables)
+    return bool(robot.n_joints or robot.obstacles or robot.routed_cables or robot.sagging_cables)
 
 
 @pytest.mark.parametrize("name", example_names())

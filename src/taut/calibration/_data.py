@@ -44,11 +44,8 @@ class MeasurementError(TautError):
 
 def refuse_unsupported(robot: Robot) -> None:
     """Raise :class:`UnsupportedRobotError` for a robot whose cable lengths calibration does
-    not model: straight cables from fixed exit points to anchors on one rigid body."""
-    if robot.swivel_cables:
-        raise UnsupportedRobotError(
-            f"{robot.name}: calibration models cables from fixed exit points; its cables leave through swivelling pulleys"
-        )
+    not model: straight cables from fixed exit points or swivelling pulleys to anchors on one
+    rigid body."""
     if robot.n_joints:
         raise UnsupportedRobotError(
             f"{robot.name}: calibration handles platforms without joints; its platform has jointed bodies"
@@ -307,7 +304,7 @@ def parse_measurements(robot: Robot, text: str, *, source: str = "measurements")
     MeasurementError
         One line naming the file, the row or column and what is wrong.
     UnsupportedRobotError
-        A robot with swivelling pulleys, jointed bodies or obstacles.
+        A robot with jointed bodies, obstacles, sagging or routed cables.
 
     Examples
     --------

@@ -71,8 +71,8 @@ import numpy as np
 from taut._checks import as_count, as_number
 from taut._results import Result, jsonable
 from taut.calibration._data import Measurements, refuse_unsupported
-from taut.calibration._identify import MAX_CONDITION, Identifiability, parse_estimate, report
-from taut.calibration._model import Layout, Problem, frames, partials
+from taut.calibration._identify import MAX_CONDITION, Identifiability, common_axis, parse_estimate, report
+from taut.calibration._model import Geometry, Layout, Problem, frames, partials
 from taut.calibration._solve import levenberg_marquardt
 from taut.errors import TautError
 from taut.geometry import angles_from_matrix, rigid_alignment
@@ -139,6 +139,10 @@ GAUGE_RULE = (
     "too), the poses moved with them"
 )
 GAUGE_RULE_ANCHORS = "; the estimated anchors likewise onto the nominal anchors (the platform frame)"
+GAUGE_RULE_SWIVEL = (
+    "; the swivel axes are fixed in the world, so the motion only translates, and turns about the axes' "
+    "common direction if they share one"
+)
 GAUGE_MEASURED = "measured poses fix the frame"
 GAUGE_FIXED_EXITS = "the nominal exits, not estimated, fix the frame"
 
@@ -162,6 +166,9 @@ class CalibrationResult(Result):
         The cables measured as length changes, whose offsets are estimated.
     anchors, anchors_std : ndarray, shape (n, d)
         Anchors in the platform frame [m] and their standard deviations.
+    radii, radii_std : ndarray, shape (n,)
+        Radii of the swivelling pulleys [m] (0 for a cable without one) and their standard
+        deviations.
     poses : ndarray, shape (N, pose_size)
         The pose of every row: measured, or estimated.
     pose_known : ndarray of bool, shape (N,)
@@ -194,6 +201,8 @@ class CalibrationResult(Result):
     changes: np.ndarray
     anchors: np.ndarray
     anchors_std: np.ndarray
+    radii: np.ndarray
+    radii_std: np.ndarray
     poses: np.ndarray
     pose_known: np.ndarray
     residual_rms: np.ndarray
@@ -219,8 +228,8 @@ class CalibrationResult(Result):
         return out
 
     def calibrated_robot(self, robot: Robot) -> Robot:
-        """``robot`` (the nominal robot of the fit) with the estimated exits, anchors and
-        encoder offsets (``cables[].length_offset``) written in and a description saying how it
+        """``robot`` (the nominal robot of the fit) with the estimated exits, anchors, pulley
+        radii and encoder offsets (``cables[].length_offset``) written in and a description saying how it
         was calibrated.
 
         Parameters
@@ -242,6 +251,8 @@ class CalibrationResult(Result):
                 update["length_offset"] = float(self.offsets[i])
             if "anchors" in self.estimate:
                 update["anchor"] = tuple(float(v) for v in self.anchors[i])
+            if "radii" in self.estimate and c.swivel is not None:
+                update["swivel"] = c.swivel.model_copy(update={"radius": float(self.radii[i])})
             cables.append(c.model_copy(update=update))
         rows = len(self.poses) - len(self.outliers) if self.robust else len(self.poses)
         note = (
@@ -274,13 +285,13 @@ def _move_poses(robot: Robot, poses: np.ndarray, Q: np.ndarray, t: np.ndarray, b
 
 def _row_poses(
     robot: Robot,
-    geometry: tuple[np.ndarray, np.ndarray],
+    geometry: Geometry,
     offsets: np.ndarray,
     data: Measurements,
     rows: np.ndarray,
     start: np.ndarray,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Each row's pose fitted to its own cables on the ``geometry`` (exits, anchors), from
+    """Each row's pose fitted to its own cables on the ``geometry``, from
     ``start (U, s)``: batched Levenberg–Marquardt with a weak prior holding the orientation near
     zero (:data:`START_PRIOR`); ``(poses (U, s), sum of squared residuals (U,))``."""
     n, s, d = robot.n_cables, robot.pose_size, robot.dimension
@@ -293,10 +304,10 @@ def _row_poses(
     prior[d:, d:] = START_PRIOR**2 * np.eye(s - d)
 
     def evaluate(q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        length, _, _, dq = partials(robot, geometry[0], geometry[1], q, rr, cc)
-        r = (length.reshape(U, n) - target) * mask
+        part = partials(robot, geometry, q, rr, cc)
+        r = (part.length.reshape(U, n) - target) * mask
         cost = (r * r).sum(axis=1) + START_PRIOR**2 * (q[:, d:] ** 2).sum(axis=1)
-        return r, dq.reshape(U, n, s) * mask[..., None], cost
+        return r, part.pose.reshape(U, n, s) * mask[..., None], cost
 
     q = start.copy()
     r, J, cost = evaluate(q)
@@ -336,7 +347,7 @@ def _starts(robot: Robot) -> np.ndarray:
 
 
 def _multistart_poses(
-    robot: Robot, geometry: tuple[np.ndarray, np.ndarray], offsets: np.ndarray, data: Measurements, rows: np.ndarray
+    robot: Robot, geometry: Geometry, offsets: np.ndarray, data: Measurements, rows: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
     """Each row's pose from the best of the :func:`_starts`; of two that fit equally (a pose and
     its mirror image in the plane of coplanar exits), the one lower along the weight."""
@@ -366,7 +377,7 @@ def _project(
     rr = np.repeat(used, n)
     cc = np.tile(np.arange(n), used.size)
     mask = data.measured[used]
-    nominal = (robot.exits, robot.anchors)
+    nominal = Geometry.of(robot)
     for step in range(START_ROUNDS):
         if rows.size:
             if step == 0:
@@ -379,8 +390,9 @@ def _project(
                     fresh, fresh_cost = _multistart_poses(robot, nominal, offsets, data, stray)
                     take = fresh_cost < cost[np.searchsorted(rows, stray)]
                     poses[stray[take]] = fresh[take]
-        length, _, _, dq = partials(robot, robot.exits, robot.anchors, poses, rr, cc)
-        r = (length.reshape(-1, n) - np.where(data.changes, offsets, 0.0) - data.values[used]) * mask
+        part = partials(robot, nominal, poses, rr, cc)
+        dq = part.pose
+        r = (part.length.reshape(-1, n) - np.where(data.changes, offsets, 0.0) - data.values[used]) * mask
         if not changed.size:
             break
         Jq = dq.reshape(-1, n, s) * (mask & unknown[:, None])[..., None]
@@ -442,18 +454,18 @@ def _reseed(
     its row markedly better (a row left in another branch of its pose, which its few redundant
     cables fit almost as well), take it and fit everything again.  ``(fit, x, moved, evaluations)``."""
     L = problem.layout
-    exits, offsets, anchors, poses = problem.unpack(x)
+    geometry, offsets, poses = problem.unpack(x)
     rows = L.unknown_rows
     if not rows.size:
         return fit, x, False, 0
-    fresh, cost = _multistart_poses(L.robot, (exits, anchors), offsets, data, rows)
+    fresh, cost = _multistart_poses(L.robot, geometry, offsets, data, rows)
     r = problem.residuals(x)
     now = np.bincount(L.rows, r * r, minlength=len(L.known_poses))[rows]
     better = cost < RESEED_GAIN * now
     if not better.any():
         return fit, x, False, 0
     poses[rows[better]] = fresh[better]
-    trial = _fit(problem, L.pack(exits, offsets, anchors, poses), loss[0], loss[1], dense)
+    trial = _fit(problem, L.pack(geometry, offsets, poses), loss[0], loss[1], dense)
     if trial.cost >= fit.cost:
         return fit, x, False, trial.nfev
     return trial, trial.x, True, trial.nfev
@@ -479,6 +491,43 @@ def _fit(problem: Problem, x0: np.ndarray, loss: str, scale: float, dense: bool,
         gtol=1e-10,
         max_nfev=max_nfev,
     )
+
+
+def _descend(
+    problem: Problem, data: Measurements, starts: list[np.ndarray], robust: str | None, scale: float, dense: bool
+) -> tuple[Any, np.ndarray, tuple[str, float], int]:
+    """The least-squares fit from the best of ``starts`` (module docstring): each fitted on a
+    short budget — with ``robust``, by that loss at ``scale`` and then at twice the residuals'
+    robust deviation — the best one to convergence, then re-seeded.  ``(fit, x, loss,
+    evaluations)``."""
+    evaluations = 0
+    best = None
+    for x in starts:
+        loss = ("linear", 1.0)
+        budget = None if len(starts) == 1 else START_EVALUATIONS
+        if robust is not None:
+            for f_scale in (scale, None):
+                if f_scale is None:
+                    f_scale = max(2.0 * _robust_sigma(problem.residuals(x)), 1e-12)
+                loss = (robust, f_scale)
+                fit = _fit(problem, x, *loss, dense, budget)
+                x, evaluations = fit.x, evaluations + fit.nfev
+        else:
+            fit = _fit(problem, x, *loss, dense, budget)
+            x, evaluations = fit.x, evaluations + fit.nfev
+        if best is None or fit.cost < best[0].cost:
+            best = (fit, x, loss)
+    assert best is not None
+    fit, x, loss = best
+    if len(starts) > 1:
+        fit = _fit(problem, x, *loss, dense)
+        x, evaluations = fit.x, evaluations + fit.nfev
+    for _ in range(RESEED_ROUNDS):
+        fit, x, moved, spent = _reseed(problem, data, fit, x, loss, dense)
+        evaluations += spent
+        if not moved:
+            break
+    return fit, x, loss, evaluations
 
 
 def _standardized(problem: Problem, x: np.ndarray) -> np.ndarray:
@@ -518,7 +567,7 @@ def calibrate(
         (:func:`read_measurements`, :func:`measurements`, :func:`simulate_measurements`).
     estimate : sequence of str
         From ``exits``, ``offsets`` (of the cables measured as changes: required with them),
-        ``anchors``; ``radii`` is refused (no modelled pulley has a radius).
+        ``anchors``, ``radii`` (of the swivelling pulleys).
     robust : {None, "soft_l1", "huber"}
         Robust loss of the outlier-resistant first fits.
     scale : float
@@ -534,8 +583,8 @@ def calibrate(
     Raises
     ------
     UnsupportedRobotError
-        A robot with swivelling pulleys, jointed bodies or obstacles; ``radii``; anchors of a
-        point mass.
+        A robot with jointed bodies, obstacles, sagging or routed cables; ``radii`` without
+        swivelling pulleys; anchors of a point mass.
     TautError
         An unknown estimate or loss; changes measured without estimating their offsets.
 
@@ -574,71 +623,55 @@ def calibrate(
         raise TautError(f"data: expected Measurements of {robot.name}'s {robot.n_cables} cables")
     if data.poses.shape[1] != robot.pose_size:
         raise TautError(f"data: its poses have {data.poses.shape[1]} coordinates, {robot.name}'s {robot.pose_size}")
-    exits_on, anchors_on = parse_estimate(robot, estimate, data)
-    names = tuple(e for e in ("exits", "offsets", "anchors") if e in estimate)
+    exits_on, anchors_on, radii_on = parse_estimate(robot, estimate, data)
+    names = tuple(e for e in ("exits", "offsets", "anchors", "radii") if e in estimate)
     if robust is not None and robust not in ROBUST_LOSSES:
         raise TautError(f"robust: unknown loss {robust!r}; expected None or one of {', '.join(ROBUST_LOSSES)}")
     scale = as_number(scale, "scale", positive=True)
     as_count(data.rows, "data rows")
     keep = np.ones(data.rows, bool)
-    layout = Layout.build(robot, data, exits=exits_on, anchors=anchors_on)
-    problem = Problem(layout, robot.exits, robot.anchors)
+    layout = Layout.build(robot, data, exits=exits_on, anchors=anchors_on, radii=radii_on)
+    problem = Problem(layout)
+    nominal = problem.nominal
+    starts = [layout.pack(nominal, offsets, poses) for poses, offsets in _start(robot, data, layout.unknown_rows, keep)]
     evaluations = 0
-    best = None
-    starts = _start(robot, data, layout.unknown_rows, keep)
-    # each start is fitted on a short budget, the best one to convergence
-    for poses, offsets in starts:
-        x = layout.pack(robot.exits, offsets, robot.anchors, poses)
-        loss = ("linear", 1.0)
-        if robust is not None:
-            for f_scale in (scale, None):
-                if f_scale is None:
-                    f_scale = max(2.0 * _robust_sigma(problem.residuals(x)), 1e-12)
-                loss = (robust, f_scale)
-                fit = _fit(problem, x, *loss, dense, None if len(starts) == 1 else START_EVALUATIONS)
-                x, evaluations = fit.x, evaluations + fit.nfev
-        else:
-            fit = _fit(problem, x, *loss, dense, None if len(starts) == 1 else START_EVALUATIONS)
-            x, evaluations = fit.x, evaluations + fit.nfev
-        if best is None or fit.cost < best[0].cost:
-            best = (fit, x, loss)
-    assert best is not None
-    fit, x, loss = best
-    if len(starts) > 1:
-        fit = _fit(problem, x, *loss, dense)
-        x, evaluations = fit.x, evaluations + fit.nfev
-    for _ in range(RESEED_ROUNDS):
-        fit, x, moved, spent = _reseed(problem, data, fit, x, loss, dense)
-        evaluations += spent
-        if not moved:
-            break
+    if radii_on:
+        # the radii, weakly seen beside the exits, wander off while the poses are still far
+        # from their own: the fit with the nominal radii starts the one that frees them
+        fixed = Problem(Layout.build(robot, data, exits=exits_on, anchors=anchors_on))
+        staged = [fixed.layout.pack(*problem.unpack(x)) for x in starts]
+        _, x, _, evaluations = _descend(fixed, data, staged, robust, scale, dense)
+        starts = [layout.pack(*fixed.unpack(x))]
+    fit, x, loss, spent = _descend(problem, data, starts, robust, scale, dense)
+    evaluations += spent
     scaled = _standardized(problem, x)
     noise = _robust_sigma(scaled)
     bad = np.abs(scaled) > OUTLIER_THRESHOLD * noise if noise > 0 else np.zeros(scaled.size, bool)
     outliers = np.unique(layout.rows[bad])
     if robust is not None:
         keep[outliers] = False
-        exits, offsets, anchors, poses = problem.unpack(x)
-        layout = Layout.build(robot, data, exits=exits_on, anchors=anchors_on, keep=keep)
-        problem = Problem(layout, robot.exits, robot.anchors)
-        fit = _fit(problem, layout.pack(exits, offsets, anchors, poses), "linear", 1.0, dense)
+        geometry, offsets, poses = problem.unpack(x)
+        layout = Layout.build(robot, data, exits=exits_on, anchors=anchors_on, radii=radii_on, keep=keep)
+        problem = Problem(layout)
+        fit = _fit(problem, layout.pack(geometry, offsets, poses), "linear", 1.0, dense)
         x, evaluations = fit.x, evaluations + fit.nfev
         full_poses = poses
-    exits, offsets, anchors, poses = problem.unpack(x)
+    geometry, offsets, poses = problem.unpack(x)
     if robust is not None:
         poses[~keep] = full_poses[~keep]
     gauge = _gauge(layout)
-    if gauge == GAUGE_RULE or gauge == GAUGE_RULE + GAUGE_RULE_ANCHORS:
+    exits, anchors = geometry.exits, geometry.anchors
+    if gauge.startswith(GAUGE_RULE):
         if anchors_on:
             Q, t = rigid_alignment(anchors, robot.anchors)
             anchors = anchors @ Q.T + t
             poses = _move_poses(robot, poses, Q, t, body=True)
         if exits_on:
-            # lengths alone cannot tell a point mass's configuration from its mirror image
-            Q, t = rigid_alignment(exits, robot.exits, reflection=robot.is_point_mass)
+            Q, t = _align_exits(robot, exits)
             exits = exits @ Q.T + t
             poses = _move_poses(robot, poses, Q, t, body=False)
-        x = layout.pack(exits, offsets, anchors, poses)
+        geometry = Geometry(exits, anchors, geometry.radii)
+        x = layout.pack(geometry, offsets, poses)
     residual = problem.residuals(x)
     rep = report(problem, x, data, keep)
     std = _std(layout, residual, rep)
@@ -647,6 +680,7 @@ def calibrate(
     exits_std = np.zeros((n, d))
     offsets_std = np.zeros(n)
     anchors_std = np.zeros((n, d))
+    radii_std = np.zeros(n)
     at = 0
     if exits_on:
         exits_std = std[: n * d].reshape(n, d)
@@ -655,6 +689,8 @@ def calibrate(
     at += layout.offset_cables.size
     if anchors_on:
         anchors_std = std[at : at + n * d].reshape(n, d)
+        at += n * d
+    radii_std[layout.radius_cables] = std[at : at + layout.radius_cables.size]
     sq = np.bincount(layout.cables, residual**2, minlength=n)
     count = np.bincount(layout.cables, minlength=n)
     return CalibrationResult(
@@ -667,6 +703,8 @@ def calibrate(
         changes=data.changes.copy(),
         anchors=anchors,
         anchors_std=anchors_std,
+        radii=geometry.radii.copy(),
+        radii_std=radii_std,
         poses=poses,
         pose_known=data.pose_known.copy(),
         residual_rms=np.sqrt(sq / np.maximum(count, 1)),
@@ -681,6 +719,33 @@ def calibrate(
     )
 
 
+def _align_exits(robot: Robot, exits: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The motion ``x ↦ Q x + t`` of the gauge rule that best aligns the estimated ``exits`` onto
+    the nominal ones: rigid (Kabsch), for a point mass improper too — its mirror image fits the
+    same lengths; with swivelling pulleys only what keeps their axes, fixed in the world: a turn
+    about their common axis (and, for a point mass, a mirror in a plane through it), or a
+    translation alone when the axes differ."""
+    nominal = robot.exits
+    mirror = robot.is_point_mass
+    if not robot.swivel_cables:
+        return rigid_alignment(exits, nominal, reflection=mirror)
+    d = robot.dimension
+    Q = np.eye(d)
+    k = common_axis(robot)
+    if k is not None:
+        from scipy.linalg import null_space
+
+        B = null_space(k[None])
+        src = (exits - exits.mean(axis=0)) @ B
+        dst = (nominal - nominal.mean(axis=0)) @ B
+        if d == 3:
+            turn = rigid_alignment(src, dst, reflection=mirror)[0]
+        else:
+            turn = -np.eye(1) if mirror and float(src[:, 0] @ dst[:, 0]) < 0 else np.eye(1)
+        Q = B @ turn @ B.T + np.outer(k, k)
+    return Q, nominal.mean(axis=0) - exits.mean(axis=0) @ Q.T
+
+
 def _gauge(layout: Layout) -> str:
     """The gauge rule that applies to ``layout``."""
     if layout.unknown_rows.size < len(layout.known_poses) or not layout.unknown_rows.size:
@@ -689,7 +754,8 @@ def _gauge(layout: Layout) -> str:
         return GAUGE_FIXED_EXITS
     if not layout.exits:
         return GAUGE_FIXED_EXITS + "; the estimated anchors are aligned onto the nominal ones (the platform frame)"
-    return GAUGE_RULE + (GAUGE_RULE_ANCHORS if layout.anchors else "")
+    swivel = GAUGE_RULE_SWIVEL if layout.robot.swivel_cables else ""
+    return GAUGE_RULE + swivel + (GAUGE_RULE_ANCHORS if layout.anchors else "")
 
 
 def _sigma(layout: Layout, residual: np.ndarray, rep: Any) -> float:

@@ -38,7 +38,7 @@ import numpy.typing as npt
 
 from taut._results import Result
 from taut.calibration._data import Measurements, measurements
-from taut.calibration._model import Layout, Problem
+from taut.calibration._model import Geometry, Layout, Problem, swivel_axes
 from taut.errors import TautError, UnsupportedRobotError
 from taut.model import Robot
 
@@ -55,6 +55,9 @@ RANK_RTOL = 1e-9
 #: were measured on a line by about the noise over the exits' errors (a few per cent): a design
 #: that close to degenerate leaves exits undetermined by decimetres.
 FLAT_RTOL = 0.05
+
+#: Swivel axes count as parallel when their unit vectors differ by less than this.
+AXIS_RTOL = 1e-9
 
 #: What ``estimate`` may name.
 ESTIMATES = ("exits", "offsets", "anchors", "radii")
@@ -97,13 +100,31 @@ class Identifiability(Result):
     ambiguities: tuple[str, ...]
 
 
-def _rigid_directions(points: np.ndarray) -> np.ndarray:
-    """``(n·d, g)``: the infinitesimal rigid motions of ``points (n, d)`` (translations, then
-    rotations about their centroid)."""
+def common_axis(robot: Robot) -> np.ndarray | None:
+    """The unit direction that every swivel axis of ``robot`` shares (up to sign), or None when
+    they differ; None too for a robot without swivelling pulleys."""
+    axes = swivel_axes(robot)[list(robot.swivel_cables)]
+    if not len(axes):
+        return None
+    k = axes[0]
+    if np.abs(np.cross(axes, k) if robot.dimension == 3 else axes[:, 0] * k[1] - axes[:, 1] * k[0]).max() > AXIS_RTOL:
+        return None
+    return k
+
+
+def _rigid_directions(points: np.ndarray, robot: Robot, *, frame: bool) -> np.ndarray:
+    """``(n·d, g)``: the infinitesimal rigid motions of ``points (n, d)`` that no length sees —
+    translations, then rotations about their centroid.  For the exits (``frame`` False) of a
+    robot with swivelling pulleys, whose axes are fixed in the world, only the rotations that
+    keep every axis: about their common axis in space, none otherwise."""
     n, d = points.shape
     c = points - points.mean(axis=0)
     cols = [np.tile(np.eye(d)[k], n) for k in range(d)]
-    if d == 2:
+    if not frame and robot.swivel_cables:
+        axis = common_axis(robot)
+        if axis is not None and d == 3:
+            cols.append(np.cross(axis, c).ravel())
+    elif d == 2:
         cols.append(np.column_stack([-c[:, 1], c[:, 0]]).ravel())
     else:
         for k in range(3):
@@ -111,7 +132,7 @@ def _rigid_directions(points: np.ndarray) -> np.ndarray:
     return np.column_stack(cols)
 
 
-def gauge_directions(layout: Layout, exits: np.ndarray, anchors: np.ndarray) -> np.ndarray:
+def gauge_directions(layout: Layout, geometry: Geometry) -> np.ndarray:
     """``(P, g)``: the parameter directions that a change of frame leaves unseen — the rigid
     motions of the exits when they are estimated, and of the anchors (the platform frame) when
     they are, if no row has a measured pose."""
@@ -120,13 +141,15 @@ def gauge_directions(layout: Layout, exits: np.ndarray, anchors: np.ndarray) -> 
     if not (~np.isin(np.arange(len(layout.known_poses)), layout.unknown_rows)).any() and layout.unknown_rows.size:
         nd = layout.n * layout.d
         if layout.exits:
-            g = np.zeros((P, _rigid_directions(exits).shape[1]))
-            g[:nd] = _rigid_directions(exits)
+            moves = _rigid_directions(geometry.exits, layout.robot, frame=False)
+            g = np.zeros((P, moves.shape[1]))
+            g[:nd] = moves
             cols.append(g)
         if layout.anchors:
             start = (nd if layout.exits else 0) + layout.offset_cables.size
-            g = np.zeros((P, _rigid_directions(anchors).shape[1]))
-            g[start : start + nd] = _rigid_directions(anchors)
+            moves = _rigid_directions(geometry.anchors, layout.robot, frame=True)
+            g = np.zeros((P, moves.shape[1]))
+            g[start : start + nd] = moves
             cols.append(g)
     return np.concatenate(cols, axis=1) if cols else np.zeros((P, 0))
 
@@ -170,7 +193,8 @@ def _designs(problem: Problem, x: np.ndarray, data: Measurements, keep: np.ndarr
     ambiguities)``, in words."""
     L = problem.layout
     robot = L.robot
-    exits, _, anchors, poses = problem.unpack(x)
+    geometry, _, poses = problem.unpack(x)
+    anchors = geometry.anchors
     undetermined: list[str] = []
     ambiguities: list[str] = []
     used = np.flatnonzero(keep & data.measured.any(axis=1))
@@ -181,14 +205,16 @@ def _designs(problem: Problem, x: np.ndarray, data: Measurements, keep: np.ndarr
         undetermined.append("a single pose")
     elif len(distinct) == 1:
         undetermined.append("all rows identical: the data hold a single pose")
-    gauge = gauge_directions(L, exits, anchors).shape[1]
+    gauge = gauge_directions(L, geometry).shape[1]
     free = L.n_unknowns - gauge
     if L.rows.size < free:
         undetermined.append(
             f"fewer measurements than unknowns: {L.rows.size} lengths for {free} unknowns "
             f"({L.n_params} parameters and {L.unknown_rows.size} poses of {L.s} coordinates, less {gauge} of gauge)"
         )
-    if not L.exits or len(used) < 2:
+    if not L.exits or len(used) < 2 or robot.swivel_cables:
+        # a swivel axis fixed in the world breaks the symmetries of these designs: the
+        # Jacobian's rank and condition judge them
         return undetermined, ambiguities
     d = robot.dimension
     p = poses[:, :d]
@@ -249,10 +275,10 @@ class Report:
 def report(problem: Problem, x: np.ndarray, data: Measurements, keep: np.ndarray) -> Report:
     """The identifiability of the estimate ``x`` of ``problem`` (module docstring)."""
     L = problem.layout
-    exits, _, anchors, _ = problem.unpack(x)
+    geometry, _, _ = problem.unpack(x)
     S_rows, ranks = row_information(problem, x)
     S = S_rows.sum(axis=0)
-    G = gauge_directions(L, exits, anchors)
+    G = gauge_directions(L, geometry)
     Z = gauge_basis(G, L.n_params)
     M = Z.T @ S @ Z
     w, V = np.linalg.eigh(M) if M.size else (np.zeros(0), np.zeros((0, 0)))
@@ -286,10 +312,10 @@ def report(problem: Problem, x: np.ndarray, data: Measurements, keep: np.ndarray
     return Report(result, Z, M, V[:, weak] if M.size else np.zeros((0, 0)))
 
 
-def parse_estimate(robot: Robot, estimate: object, data: Measurements | None = None) -> tuple[bool, bool]:
-    """``(exits, anchors)`` from ``estimate``, a sequence of :data:`ESTIMATES`; raises for an
-    unknown name, for ``radii`` (no pulley of a modelled robot has a radius that changes a
-    length), for anchors of a point mass and for changes without ``offsets``."""
+def parse_estimate(robot: Robot, estimate: object, data: Measurements | None = None) -> tuple[bool, bool, bool]:
+    """``(exits, anchors, radii)`` from ``estimate``, a sequence of :data:`ESTIMATES`; raises
+    for an unknown name, for ``radii`` of a robot without swivelling pulleys, for anchors of a
+    point mass and for changes without ``offsets``."""
     try:
         names: tuple[object, ...] = (estimate,) if isinstance(estimate, str) else tuple(estimate)  # type: ignore[arg-type]
     except TypeError:
@@ -299,15 +325,15 @@ def parse_estimate(robot: Robot, estimate: object, data: Measurements | None = N
             raise TautError(f"estimate: unknown {name!r}; expected names from {', '.join(ESTIMATES)}")
     if not names:
         raise TautError(f"estimate: expected at least one of {', '.join(ESTIMATES)}")
-    if "radii" in names:
+    if "radii" in names and not robot.swivel_cables:
         raise UnsupportedRobotError(
-            f"{robot.name}: estimating pulley radii needs swivelling pulleys, and calibration models cables from fixed exit points"
+            f"{robot.name}: no cable leaves through a swivelling pulley (cables[].swivel): no radius to estimate"
         )
     if "anchors" in names and robot.is_point_mass:
         raise UnsupportedRobotError(f"{robot.name}: a point mass has no anchors to estimate")
     if data is not None and data.changes.any() and "offsets" not in names:
         raise TautError("the data give length changes (dl columns): their offsets are unknown; estimate offsets too")
-    return "exits" in names, "anchors" in names
+    return "exits" in names, "anchors" in names, "radii" in names
 
 
 def identifiability(
@@ -327,7 +353,8 @@ def identifiability(
     poses : array_like, shape (N, pose_size)
         The poses to be measured.
     estimate : sequence of str
-        Names from :data:`ESTIMATES`: ``exits``, ``offsets``, ``anchors`` (``radii`` is refused).
+        Names from :data:`ESTIMATES`: ``exits``, ``offsets``, ``anchors``, ``radii`` (of the
+        swivelling pulleys).
     changes : bool
         The cables are measured as length changes from an encoder zero (offsets unknown).
     known_poses : bool
@@ -342,7 +369,8 @@ def identifiability(
     PoseError
         Poses that :func:`taut.kinematics.as_poses` refuses.
     UnsupportedRobotError
-        A robot with swivelling pulleys, jointed bodies or obstacles; anchors of a point mass.
+        A robot with jointed bodies, obstacles, sagging or routed cables; ``radii`` without
+        swivelling pulleys; anchors of a point mass.
 
     References
     ----------
@@ -384,7 +412,7 @@ def design(
         changes=lengths if changes else None,
         poses=poses if known_poses else None,
     )
-    exits_on, anchors_on = parse_estimate(robot, estimate, data)
-    layout = Layout.build(robot, data, exits=exits_on, anchors=anchors_on)
-    problem = Problem(layout, robot.exits, robot.anchors)
-    return problem, layout.pack(robot.exits, np.zeros(robot.n_cables), robot.anchors, poses), data
+    exits_on, anchors_on, radii_on = parse_estimate(robot, estimate, data)
+    layout = Layout.build(robot, data, exits=exits_on, anchors=anchors_on, radii=radii_on)
+    problem = Problem(layout)
+    return problem, layout.pack(problem.nominal, np.zeros(robot.n_cables), poses), data

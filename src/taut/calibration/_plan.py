@@ -162,17 +162,18 @@ def hanging_poses(robot: Robot, poses: np.ndarray) -> np.ndarray:
     balance ``W τ + w = 0`` solved together by Newton's method (Powell's hybrid) from there."""
     from scipy.optimize import minimize, root
 
-    from taut.calibration._model import frames, partials
+    from taut.calibration._model import Geometry, frames, partials
     from taut.workspace import evaluate_workspace
 
     d, n = robot.dimension, robot.n_cables
     force = _load(robot)
     point = np.zeros(d) if robot.platform.wrench_point is None else np.asarray(robot.platform.wrench_point, float)
     rows, cables = np.zeros(n, int), np.arange(n)
+    nominal = Geometry.of(robot)
 
     def lengths(q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        length, _, _, dq = partials(robot, robot.exits, robot.anchors, q[None], rows, cables)
-        return length, dq
+        part = partials(robot, nominal, q[None], rows, cables)
+        return part.length, part.pose
 
     def energy(q: np.ndarray) -> float:
         p, R, _ = frames(robot, q[None])
@@ -293,7 +294,7 @@ def plan_poses(
     Raises
     ------
     UnsupportedRobotError
-        A robot with swivelling pulleys, jointed bodies or obstacles.
+        A robot with jointed bodies, obstacles, sagging or routed cables.
     PoseError
         ``candidates`` that are not poses of the robot.
     TautError
@@ -339,7 +340,7 @@ def plan_poses(
     problem, x, _ = design(robot, pool, estimate=estimate, changes=changes, known_poses=known_poses)
     layout = problem.layout
     S, _ = row_information(problem, x)
-    Z = gauge_basis(gauge_directions(layout, robot.exits, robot.anchors), layout.n_params)
+    Z = gauge_basis(gauge_directions(layout, problem.nominal), layout.n_params)
     T = np.einsum("pa,kpq,qb->kab", Z, S, Z)
     p = T.shape[1]
     ridge = 1e-9 * float(np.einsum("kaa->", T)) / max(len(T) * p, 1) * np.eye(p)

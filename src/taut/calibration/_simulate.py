@@ -46,7 +46,7 @@ def simulate_measurements(
     PoseError
         Poses that :func:`taut.kinematics.as_poses` refuses, or where a cable has no length.
     UnsupportedRobotError
-        A robot with swivelling pulleys, jointed bodies or obstacles.
+        A robot with jointed bodies, obstacles, sagging or routed cables.
 
     Examples
     --------

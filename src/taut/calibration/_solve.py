@@ -139,7 +139,7 @@ def levenberg_marquardt(
         if U:
             # the s × s pose blocks A_k of JqᵀJq and the pose gradients, one bincount per entry
             obs = np.flatnonzero(has_pose)
-            vals = problem.evaluate(x)[3][obs] * weight[obs, None]
+            vals = problem.evaluate(x)[1].pose[obs] * weight[obs, None]
             for a in range(s):
                 gq[:, a] = np.bincount(block, vals[:, a] * f[obs], minlength=U)
                 for b in range(a, s):

@@ -1,5 +1,5 @@
 """``taut calibrate ROBOT --data FILE.csv [--out CALIBRATED.yaml]``: a built robot's exits, encoder
-offsets and anchors from its own cable measurements (:func:`taut.calibration.calibrate`); with
+offsets, anchors and pulley radii from its own cable measurements (:func:`taut.calibration.calibrate`); with
 ``--plan N``, N poses to measure, as a CSV (:func:`taut.calibration.plan_poses`)."""
 
 from __future__ import annotations
@@ -21,8 +21,8 @@ if TYPE_CHECKING:
 
 SUMMARY = "calibrate exits and encoder offsets from measured cable lengths, or plan where to measure"
 DESCRIPTION = (
-    "Estimate a built robot's exit points, encoder offsets (dl columns) and, with --estimate anchors, "
-    "its platform anchors, together with the unknown poses of the measurements, by sparse nonlinear "
+    "Estimate a built robot's exit points, encoder offsets (dl columns) and, with --estimate anchors "
+    "or radii, its platform anchors or the radii of its swivelling pulleys, together with the unknown poses of the measurements, by sparse nonlinear "
     "least squares. The data file has columns l1..ln (lengths) or dl1..dln (changes from the "
     "encoder zero), optional pose columns named as `taut fk` names them, one row per measurement; "
     "an empty cell is a cable not measured. With no pose measured, the frame is fixed by aligning "
@@ -39,7 +39,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--estimate",
         default="exits,offsets",
-        help="what to estimate: exits, offsets, anchors (comma-separated; default exits,offsets)",
+        help="what to estimate: exits, offsets, anchors, radii (comma-separated; default exits,offsets)",
     )
     parser.add_argument(
         "--robust",
@@ -61,7 +61,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def _estimate(text: str) -> tuple[str, ...]:
     names = tuple(part.strip() for part in text.split(",") if part.strip())
     if not names:
-        raise TautError(f"--estimate: expected names from exits, offsets, anchors, got {text!r}")
+        raise TautError(f"--estimate: expected names from exits, offsets, anchors, radii, got {text!r}")
     return names
 
 
@@ -144,6 +144,11 @@ def _human(robot: Robot, res: CalibrationResult, d: dict) -> None:
             for i in range(robot.n_cables)
         ]
         print_table(con, table("platform anchors", ["cable", *[f"anchor {a} [m]" for a in d_axes]], anchor_rows))
+    if "radii" in res.estimate:
+        radius_rows = [
+            [str(i + 1), f"{res.radii[i]:.5f} ± {res.radii_std[i] * 1000:.2g} mm"] for i in robot.swivel_cables
+        ]
+        print_table(con, table("swivelling pulleys", ["cable", "radius [m]"], radius_rows))
     con.print(f"residual {fmt(res.sigma * 1000)} mm over {ident.observations} lengths; gauge: {markup(res.gauge)}")
     con.print(
         f"identifiable: {'yes' if ident.identifiable else 'NO'} (rank {ident.rank} of {ident.unknowns}, "
