@@ -11,17 +11,20 @@ linear in the rows.
 
 Start.  The nominal robot is the start of its parameters; the poses and offsets start from a
 multi-start that needs no pose guess.  Every unknown pose is fitted to its own row on the nominal
-geometry (Levenberg–Marquardt per row, batched) from each of :data:`START_POSES` poses — the
-exits' centroid and six points around it along the axes — and keeps the best; the offsets of
-length changes then take a Gauss–Newton step of the variable projection (the residuals projected
-off each row's pose directions; Golub & Pereyra 1973), and the two alternate up to
-:data:`START_ROUNDS` times, rows that fit far worse than the others restarted from every start
-pose.  The offsets start from hypotheses — the medians of the changes measured at the centroid,
-or one of the :data:`START_ROWS` most central rows measured there — each fitted on a short
-budget; the best is fitted to convergence.  Then rows left in another branch of their pose are
-restarted on the fitted geometry and everything refitted (:data:`RESEED_ROUNDS`).  Where two
-starts fit a row equally (a pose and its mirror image in the plane of coplanar exits), the one
-lower along the platform's weight is kept: a suspended platform hangs below its exits.
+geometry (Levenberg–Marquardt per row, batched, a weak prior holding the orientation near zero)
+from each of :data:`START_POSES` poses — the exits' centroid and six points around it along the
+axes — and keeps the best; the offsets of length changes then take the Gauss–Newton step of
+offsets and poses together, the poses eliminated (the variable projection of Golub & Pereyra
+1973), halved while it raises the residuals, and the two alternate up to :data:`START_ROUNDS`
+times, rows that fit far worse than the others restarted from every start pose.  Where that
+descent stops, every row is fitted afresh from every start pose and the descent goes on, up to
+:data:`START_BRANCHES` times: rows fitted while the offsets were far off may sit in another
+branch of their pose.  The offsets start from hypotheses — the medians of the changes measured
+at the centroid, or one of the :data:`START_ROWS` most central rows measured there — each fitted
+on a short budget; the best is fitted to convergence.  Then rows left in another branch of their
+pose are restarted on the fitted geometry and everything refitted (:data:`RESEED_ROUNDS`).
+Where two starts fit a row equally (a pose and its mirror image in the plane of coplanar exits),
+the one lower along the platform's weight is kept: a suspended platform hangs below its exits.
 
 Robust fit.  With ``robust``, a first fit with that loss (``soft_l1`` or ``huber``, scale
 :data:`ROBUST_SCALE`), a second with the scale set to twice the residuals' robust standard
@@ -123,14 +126,25 @@ START_TOL = 1e-6
 RESTART_FACTOR = 4.0
 
 #: Gauss–Newton steps of the start's offsets (each after a refit of the rows' poses).
-START_ROUNDS = 12
+START_ROUNDS = 40
 
-#: Iterations of the per-row Levenberg–Marquardt of the start.
+#: Descents of the start's offsets, each from every row's pose fitted afresh, and the fraction
+#: by which one must lower the residuals' rms for another to follow.
+START_BRANCHES = 3
+START_GAIN = 0.01
+
+#: Iterations of the per-row Levenberg–Marquardt of the start, which stops sooner once every
+#: row has converged: its last step moved no coordinate by :data:`START_STEP` [m or rad], or
+#: its damping exceeds :data:`START_DAMPING` (its steps no longer lower its residuals).
 START_ITERATIONS = 30
+START_DAMPING = 1e3
+START_STEP = 1e-9
 
 #: Budget of residual evaluations of a least-squares fit, per unknown (scipy's default is 100
-#: per unknown for the dense solver).
-MAX_EVALUATIONS = 200
+#: per unknown for the dense solver).  The fits that converge take 1–6 per unknown; one that
+#: spends more is crawling along the floor of a false valley (measured: 69,000 evaluations,
+#: 160 s, for a cost 1 % lower), so it stops there and says it has not converged.
+MAX_EVALUATIONS = 20
 
 #: The rule that fixes the gauge, as the result and the CLI state it.
 GAUGE_RULE = (
@@ -319,6 +333,7 @@ def _row_poses(
         diag = np.einsum("kss->ks", A)
         A = A + (lam[:, None] * diag + 1e-12)[:, :, None] * np.eye(s)
         trial = q - np.linalg.solve(A, g[..., None])[..., 0]
+        step = np.abs(trial - q).max(axis=1)
         r2, J2, cost2 = evaluate(trial)
         better = cost2 < cost
         q = np.where(better[:, None], trial, q)
@@ -326,6 +341,8 @@ def _row_poses(
         J = np.where(better[:, None, None], J2, J)
         cost = np.where(better, cost2, cost)
         lam = np.where(better, lam / 3, lam * 4)
+        if ((step < START_STEP) | (lam > START_DAMPING)).all():
+            break
     return q, (r * r).sum(axis=1)
 
 
@@ -354,61 +371,112 @@ def _multistart_poses(
     weight = robot.weight[: robot.dimension]
     norm = float(np.linalg.norm(weight))
     down = weight / norm if norm > 0 else np.zeros(robot.dimension)
-    tries = [_row_poses(robot, geometry, offsets, data, rows, np.tile(q0, (rows.size, 1))) for q0 in _starts(robot)]
-    costs = np.array([c for _, c in tries])
+    starts = _starts(robot)
+    k, U = len(starts), rows.size
+    # one batch of every (start, row) pair: the per-row fits cost little beside their overhead
+    q, costs = _row_poses(robot, geometry, offsets, data, np.tile(rows, k), np.repeat(starts, U, axis=0))
+    q, costs = q.reshape(k, U, -1), costs.reshape(k, U)
     best = costs.min(axis=0)
-    height = np.array([-(q[:, : robot.dimension] @ down) for q, _ in tries])
+    height = -(q[..., : robot.dimension] @ down)
     pick = np.argmin(np.where(costs <= best * 1.01 + 1e-12, height, np.inf), axis=0)
-    return np.stack([q for q, _ in tries])[pick, np.arange(rows.size)], costs[pick, np.arange(rows.size)]
+    return q[pick, np.arange(U)], costs[pick, np.arange(U)]
 
 
 def _project(
     robot: Robot, data: Measurements, rows: np.ndarray, offsets: np.ndarray, used: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, float]:
     """Offsets by Gauss–Newton on the variable projection of the nominal-geometry problem: each
-    step refits every row's pose (multi-start in the first, warm afterwards), then moves the
-    offsets by the least-squares step of the residuals projected off each row's pose directions
-    (Golub & Pereyra 1973).  ``(poses (N, s), offsets (n,), rms over the rows used)``."""
-    n, s = robot.n_cables, robot.pose_size
+    step refits every row's pose, then moves the offsets by the Gauss–Newton step of offsets and
+    poses together with the poses eliminated (Golub & Pereyra 1973), halved while it raises the
+    residuals.  Where it stops, every row's pose is fitted afresh from each start
+    pose and the descent goes on from the better of the two, up to :data:`START_BRANCHES`
+    times: a row fitted on offsets far off may have been left in another branch of its pose.
+    ``(poses (N, s), offsets (n,), rms over the rows used)``, the poses fitted to those
+    offsets."""
     poses = np.where(data.pose_known[:, None], data.poses, 0.0)
+    nominal = Geometry.of(robot)
+    best: tuple[float, np.ndarray, np.ndarray] | None = None
+    for _ in range(START_BRANCHES):
+        if rows.size:
+            fresh, cost = _multistart_poses(robot, nominal, offsets, data, rows)
+            if best is not None:
+                warm, warm_cost = _row_poses(robot, nominal, offsets, data, rows, best[2][rows])
+                fresh = np.where((warm_cost <= cost)[:, None], warm, fresh)
+            poses[rows] = fresh
+        found = _descend_offsets(robot, nominal, data, rows, offsets, poses, used)
+        if best is not None and found[0] >= best[0] * (1.0 - START_GAIN):
+            break
+        best = found
+        if not data.changes.any():
+            break
+        offsets, poses = found[1].copy(), found[2].copy()
+    assert best is not None
+    return best[2], best[1], best[0]
+
+
+def _descend_offsets(
+    robot: Robot,
+    nominal: Geometry,
+    data: Measurements,
+    rows: np.ndarray,
+    offsets: np.ndarray,
+    poses: np.ndarray,
+    used: np.ndarray,
+) -> tuple[float, np.ndarray, np.ndarray]:
+    """:func:`_project`'s descent from ``poses`` fitted to ``offsets``: ``(rms, offsets,
+    poses)``, the poses fitted to those offsets."""
+    n, s, d = robot.n_cables, robot.pose_size, robot.dimension
     changed = np.flatnonzero(data.changes)
-    offsets = offsets.copy()
     unknown = np.isin(used, rows)
     rr = np.repeat(used, n)
     cc = np.tile(np.arange(n), used.size)
     mask = data.measured[used]
-    nominal = Geometry.of(robot)
+    poses = poses.copy()
+    best: tuple[float, np.ndarray, np.ndarray] | None = None
+    delta = np.zeros(changed.size)
     for step in range(START_ROUNDS):
-        if rows.size:
-            if step == 0:
-                poses[rows] = _multistart_poses(robot, nominal, offsets, data, rows)[0]
-            else:
-                poses[rows], cost = _row_poses(robot, nominal, offsets, data, rows, poses[rows])
-                # rows that fit far worse than the others may sit in another branch: start them afresh
-                stray = rows[cost > RESTART_FACTOR * np.median(cost)]
-                if stray.size:
-                    fresh, fresh_cost = _multistart_poses(robot, nominal, offsets, data, stray)
-                    take = fresh_cost < cost[np.searchsorted(rows, stray)]
-                    poses[stray[take]] = fresh[take]
+        if rows.size and step > 0:
+            poses[rows], cost = _row_poses(robot, nominal, offsets, data, rows, poses[rows])
+            # rows that fit far worse than the others may sit in another branch: start them afresh
+            stray = rows[cost > RESTART_FACTOR * np.median(cost)]
+            if stray.size:
+                fresh, fresh_cost = _multistart_poses(robot, nominal, offsets, data, stray)
+                take = fresh_cost < cost[np.searchsorted(rows, stray)]
+                poses[stray[take]] = fresh[take]
         part = partials(robot, nominal, poses, rr, cc)
-        dq = part.pose
         r = (part.length.reshape(-1, n) - np.where(data.changes, offsets, 0.0) - data.values[used]) * mask
+        rms = float(np.sqrt((r * r).sum() / max(int(mask.sum()), 1)))
+        if best is not None and rms >= best[0]:
+            # the step overshot: go back and take half of it
+            delta /= 2
+            if np.abs(delta).max() < START_TOL:
+                break
+            offsets = best[1].copy()
+            offsets[changed] -= delta
+            continue
+        best = (rms, offsets.copy(), poses.copy())
         if not changed.size:
             break
-        Jq = dq.reshape(-1, n, s) * (mask & unknown[:, None])[..., None]
-        A = np.einsum("kis,kit->kst", Jq, Jq) + 1e-12 * np.eye(s)
-        # the residuals and the offsets' columns (−1 on each changed cable's cell), projected off
-        # each row's pose directions
+        # the Gauss–Newton step of offsets and poses together, the poses eliminated (their
+        # orientation prior included, as the rows' fits have it)
+        Jq = part.pose.reshape(-1, n, s) * (mask & unknown[:, None])[..., None]
+        prior = np.zeros((s, s))
+        prior[d:, d:] = START_PRIOR**2 * np.eye(s - d)
+        P = unknown[:, None, None] * prior
+        A = np.einsum("kis,kit->kst", Jq, Jq) + P + 1e-12 * np.eye(s)
+        G = np.einsum("kis,ki->ks", Jq, r) + np.einsum("kst,kt->ks", P, poses[used])
         Jo = -(mask[:, :, None] & (np.arange(n)[:, None] == changed[None, :])[None]).astype(float)
-        X = np.linalg.solve(A, np.einsum("kis,kic->ksc", Jq, np.concatenate([Jo, r[..., None]], axis=2)))
-        proj = np.concatenate([Jo, r[..., None]], axis=2) - np.einsum("kis,ksc->kic", Jq, X)
-        H = np.einsum("kic,kid->cd", proj[..., :-1], proj[..., :-1])
-        g = np.einsum("kic,ki->c", proj[..., :-1], proj[..., -1])
+        C = np.einsum("kic,kis->kcs", Jo, Jq)
+        X = np.linalg.solve(A, np.concatenate([np.swapaxes(C, 1, 2), G[..., None]], axis=2))
+        H = np.einsum("kic,kid->cd", Jo, Jo) - np.einsum("kcs,ksd->cd", C, X[..., :-1])
+        g = np.einsum("kic,ki->c", Jo, r) - np.einsum("kcs,ks->c", C, X[..., -1])
         delta = np.linalg.lstsq(H, g, rcond=None)[0]
-        offsets[changed] -= delta
         if np.abs(delta).max() < START_TOL:
             break
-    return poses, offsets, float(np.sqrt((r * r).sum() / max(int(mask.sum()), 1)))
+        offsets = offsets.copy()
+        offsets[changed] -= delta
+    assert best is not None
+    return best
 
 
 def _start(robot: Robot, data: Measurements, rows: np.ndarray, keep: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:

@@ -154,6 +154,11 @@ def _human(robot: Robot, res: CalibrationResult, d: dict) -> None:
         f"identifiable: {'yes' if ident.identifiable else 'NO'} (rank {ident.rank} of {ident.unknowns}, "
         f"condition number {fmt(ident.condition)})"
     )
+    if not res.converged:
+        con.print(
+            f"NOT converged within the fits' budget ({res.evaluations} residual evaluations in all): "
+            "the estimate may sit in a false minimum"
+        )
     for text in ident.undetermined:
         con.print(f"  not determined: {markup(text)}")
     for text in ident.ambiguities:
