@@ -10,8 +10,8 @@ from taut.kinematics import cable_lengths
 from taut.model import example
 
 
-def pulley_robot(axis=(0.1, -0.2, 1.0), radius=0.07):
-    robot = example("spatial-8cable")
+def pulley_robot(axis=(0.1, -0.2, 1.0), radius=0.07, name="spatial-8cable"):
+    robot = example(name)
     swivel = {"swivel": {"axis": axis, "radius": radius}}
     return robot.model_copy(update={"cables": tuple(c.model_copy(update=swivel) for c in robot.cables)})
 
@@ -69,18 +69,21 @@ def test_radii_and_exits_come_back_from_tracked_poses():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("seed", range(10))
-def test_pulley_robot_with_unknown_poses_and_far_offsets(seed):
+@pytest.mark.parametrize(
+    ("name", "seed"), [("spatial-8cable", seed) for seed in range(10)] + [("cogiro", seed) for seed in range(4)]
+)
+def test_pulley_robot_with_unknown_poses_and_far_offsets(name, seed):
     """Encoder zeros 1–2 m off, exits up to 5 cm and radii up to 20 % off, 60 planned poses
-    none measured: the fit reaches the noise (a false minimum left 5–10 mm residuals in 3 of
-    these 10 seeds before the start's descent was made to converge) and its standard deviations
-    cover the truth."""
-    nominal = pulley_robot(axis=(0, 0, 1), radius=0.05)
+    none measured: the fit reaches the noise and its standard deviations cover the truth.
+    Before the start's descent was made to converge, a false minimum left 5–10 mm residuals in
+    3 of the 10 spatial seeds; before the robust fits found the basin, CoGiRo's seed 1 ended
+    at 4 mm."""
+    nominal = pulley_robot(axis=(0, 0, 1), radius=0.05, name=name)
     estimate = ("exits", "offsets", "radii")
     plan = plan_poses(nominal, 60, estimate=estimate, seed=0)
     rng = np.random.default_rng(seed)
     exits = nominal.exits + rng.uniform(-0.05, 0.05, nominal.exits.shape)
-    radii = 0.05 * rng.uniform(0.8, 1.2, 8)
+    radii = 0.05 * rng.uniform(0.8, 1.2, nominal.n_cables)
     built = nominal.model_copy(
         update={
             "cables": tuple(
@@ -89,7 +92,7 @@ def test_pulley_robot_with_unknown_poses_and_far_offsets(seed):
             )
         }
     )
-    offsets = rng.uniform(1, 2, 8)
+    offsets = rng.uniform(1, 2, nominal.n_cables)
     sigma = 3e-4
     data = simulate_measurements(built, plan.poses, offsets=offsets, sigma=sigma, seed=seed)
     res = calibrate(nominal, data, estimate=estimate)

@@ -26,6 +26,13 @@ pose are restarted on the fitted geometry and everything refitted (:data:`RESEED
 Where two starts fit a row equally (a pose and its mirror image in the plane of coplanar exits),
 the one lower along the platform's weight is kept: a suspended platform hangs below its exits.
 
+The fit itself starts robust: even without ``robust``, each start is fitted first by the
+:data:`BASIN_LOSS` loss, at :data:`ROBUST_SCALE` and then at twice the residuals' robust
+deviation, and the plain least-squares fit follows from its answer.  Rows the start left in
+another branch of their pose fit the nominal geometry no worse than the others, so nothing
+marks them at first; plain least squares lets them pull the exits into a false minimum, while
+the robust loss lets the other rows set the geometry, on which the re-seeding then finds them.
+
 Robust fit.  With ``robust``, a first fit with that loss (``soft_l1`` or ``huber``, scale
 :data:`ROBUST_SCALE`), a second with the scale set to twice the residuals' robust standard
 deviation (1.4826 × their median absolute value), then the rows with a residual beyond
@@ -109,6 +116,13 @@ SCORE_ROWS = 200
 
 #: Residual evaluations each start's fit may take before the best one is fitted to convergence.
 START_EVALUATIONS = 30
+
+#: The loss of the fits that find the basin when no robust loss is asked for: rows left in
+#: another branch of their pose by the start (their residuals no larger than the others' on the
+#: nominal geometry) would otherwise pull the exits into a false minimum, which plain least
+#: squares cannot leave (measured: CoGiRo with pulleys, 12 of 60 rows 0.3–1.4 m away, residual
+#: 4 mm against 0.3 mm of noise).
+BASIN_LOSS = "soft_l1"
 
 #: Rounds of re-seeding the poses after the fit (:func:`_reseed`), and the factor by which a
 #: row's new pose must lower its squared residuals to be taken.
@@ -312,36 +326,34 @@ def _row_poses(
     U = rows.size
     mask = data.measured[rows]
     target = data.values[rows] + np.where(data.changes, offsets, 0.0)
-    rr = np.repeat(np.arange(U), n)
-    cc = np.tile(np.arange(n), U)
     prior = np.zeros((s, s))
     prior[d:, d:] = START_PRIOR**2 * np.eye(s - d)
 
-    def evaluate(q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        part = partials(robot, geometry, q, rr, cc)
-        r = (part.length.reshape(U, n) - target) * mask
+    def evaluate(q: np.ndarray, k: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        part = partials(robot, geometry, q, np.repeat(np.arange(k.size), n), np.tile(np.arange(n), k.size))
+        r = (part.length.reshape(k.size, n) - target[k]) * mask[k]
         cost = (r * r).sum(axis=1) + START_PRIOR**2 * (q[:, d:] ** 2).sum(axis=1)
-        return r, part.pose.reshape(U, n, s) * mask[..., None], cost
+        return r, part.pose.reshape(k.size, n, s) * mask[k][..., None], cost
 
     q = start.copy()
-    r, J, cost = evaluate(q)
+    r, J, cost = evaluate(q, np.arange(U))
     lam = np.full(U, 1e-3)
+    # only the rows still moving are iterated: the others have converged
+    k = np.arange(U)
     for _ in range(START_ITERATIONS):
-        A = np.einsum("kis,kit->kst", J, J) + prior
-        g = np.einsum("kis,ki->ks", J, r)
-        g[:, d:] += START_PRIOR**2 * q[:, d:]
+        A = np.einsum("kis,kit->kst", J[k], J[k]) + prior
+        g = np.einsum("kis,ki->ks", J[k], r[k])
+        g[:, d:] += START_PRIOR**2 * q[k, d:]
         diag = np.einsum("kss->ks", A)
-        A = A + (lam[:, None] * diag + 1e-12)[:, :, None] * np.eye(s)
-        trial = q - np.linalg.solve(A, g[..., None])[..., 0]
-        step = np.abs(trial - q).max(axis=1)
-        r2, J2, cost2 = evaluate(trial)
-        better = cost2 < cost
-        q = np.where(better[:, None], trial, q)
-        r = np.where(better[:, None], r2, r)
-        J = np.where(better[:, None, None], J2, J)
-        cost = np.where(better, cost2, cost)
-        lam = np.where(better, lam / 3, lam * 4)
-        if ((step < START_STEP) | (lam > START_DAMPING)).all():
+        A = A + (lam[k, None] * diag + 1e-12)[:, :, None] * np.eye(s)
+        trial = q[k] - np.linalg.solve(A, g[..., None])[..., 0]
+        step = np.abs(trial - q[k]).max(axis=1)
+        r2, J2, cost2 = evaluate(trial, k)
+        better = cost2 < cost[k]
+        q[k[better]], r[k[better]], J[k[better]], cost[k[better]] = trial[better], r2[better], J2[better], cost2[better]
+        lam[k] = np.where(better, lam[k] / 3, lam[k] * 4)
+        k = k[(step >= START_STEP) & (lam[k] <= START_DAMPING)]
+        if not k.size:
             break
     return q, (r * r).sum(axis=1)
 
@@ -516,7 +528,13 @@ def _start(robot: Robot, data: Measurements, rows: np.ndarray, keep: np.ndarray)
 
 
 def _reseed(
-    problem: Problem, data: Measurements, fit: Any, x: np.ndarray, loss: tuple[str, float], dense: bool
+    problem: Problem,
+    data: Measurements,
+    fit: Any,
+    x: np.ndarray,
+    loss: tuple[str, float],
+    dense: bool,
+    budget: int | None = None,
 ) -> tuple[Any, np.ndarray, bool, int]:
     """Refit every unknown pose from the :func:`_starts` on the fitted geometry; where one fits
     its row markedly better (a row left in another branch of its pose, which its few redundant
@@ -533,7 +551,7 @@ def _reseed(
     if not better.any():
         return fit, x, False, 0
     poses[rows[better]] = fresh[better]
-    trial = _fit(problem, L.pack(geometry, offsets, poses), loss[0], loss[1], dense)
+    trial = _fit(problem, L.pack(geometry, offsets, poses), loss[0], loss[1], dense, budget)
     if trial.cost >= fit.cost:
         return fit, x, False, trial.nfev
     return trial, trial.x, True, trial.nfev
@@ -564,23 +582,19 @@ def _fit(problem: Problem, x0: np.ndarray, loss: str, scale: float, dense: bool,
 def _descend(
     problem: Problem, data: Measurements, starts: list[np.ndarray], robust: str | None, scale: float, dense: bool
 ) -> tuple[Any, np.ndarray, tuple[str, float], int]:
-    """The least-squares fit from the best of ``starts`` (module docstring): each fitted on a
-    short budget — with ``robust``, by that loss at ``scale`` and then at twice the residuals'
-    robust deviation — the best one to convergence, then re-seeded.  ``(fit, x, loss,
+    """The fit from the best of ``starts`` (module docstring): each fitted on a short budget by
+    the ``robust`` loss (:data:`BASIN_LOSS` without one) at ``scale`` and then at twice the
+    residuals' robust deviation, the best one to convergence, then re-seeded; without
+    ``robust``, the least-squares fit follows from there, re-seeded again.  ``(fit, x, loss,
     evaluations)``."""
     evaluations = 0
     best = None
     for x in starts:
-        loss = ("linear", 1.0)
         budget = None if len(starts) == 1 else START_EVALUATIONS
-        if robust is not None:
-            for f_scale in (scale, None):
-                if f_scale is None:
-                    f_scale = max(2.0 * _robust_sigma(problem.residuals(x)), 1e-12)
-                loss = (robust, f_scale)
-                fit = _fit(problem, x, *loss, dense, budget)
-                x, evaluations = fit.x, evaluations + fit.nfev
-        else:
+        for f_scale in (scale, None) if robust else (None,):
+            if f_scale is None:
+                f_scale = max(2.0 * _robust_sigma(problem.residuals(x)), 1e-12)
+            loss = (robust or BASIN_LOSS, f_scale)
             fit = _fit(problem, x, *loss, dense, budget)
             x, evaluations = fit.x, evaluations + fit.nfev
         if best is None or fit.cost < best[0].cost:
@@ -588,14 +602,40 @@ def _descend(
     assert best is not None
     fit, x, loss = best
     if len(starts) > 1:
+        # rows in another branch of their pose move before the fit to convergence, which
+        # would otherwise crawl along the valley they make
+        fit, x, spent = _reseeded(problem, data, fit, x, loss, dense, START_EVALUATIONS)
         fit = _fit(problem, x, *loss, dense)
-        x, evaluations = fit.x, evaluations + fit.nfev
+        x, evaluations = fit.x, evaluations + fit.nfev + spent
+    fit, x, spent = _reseeded(problem, data, fit, x, loss, dense)
+    evaluations += spent
+    if robust is None:
+        loss = ("linear", 1.0)
+        fit = _fit(problem, x, *loss, dense)
+        evaluations += fit.nfev
+        fit, x, spent = _reseeded(problem, data, fit, fit.x, loss, dense)
+        evaluations += spent
+    return fit, x, loss, evaluations
+
+
+def _reseeded(
+    problem: Problem,
+    data: Measurements,
+    fit: Any,
+    x: np.ndarray,
+    loss: tuple[str, float],
+    dense: bool,
+    budget: int | None = None,
+) -> tuple[Any, np.ndarray, int]:
+    """``fit`` re-seeded (:func:`_reseed`, its fits on ``budget``) until no row moves, at most
+    :data:`RESEED_ROUNDS` times: ``(fit, x, evaluations)``."""
+    evaluations = 0
     for _ in range(RESEED_ROUNDS):
-        fit, x, moved, spent = _reseed(problem, data, fit, x, loss, dense)
+        fit, x, moved, spent = _reseed(problem, data, fit, x, loss, dense, budget)
         evaluations += spent
         if not moved:
             break
-    return fit, x, loss, evaluations
+    return fit, x, evaluations
 
 
 def _standardized(problem: Problem, x: np.ndarray) -> np.ndarray:
