@@ -27,11 +27,11 @@ Where two starts fit a row equally (a pose and its mirror image in the plane of 
 the one lower along the platform's weight is kept: a suspended platform hangs below its exits.
 
 The fit itself starts robust: even without ``robust``, each start is fitted first by the
-:data:`BASIN_LOSS` loss, at :data:`ROBUST_SCALE` and then at twice the residuals' robust
-deviation, and the plain least-squares fit follows from its answer.  Rows the start left in
-another branch of their pose fit the nominal geometry no worse than the others, so nothing
-marks them at first; plain least squares lets them pull the exits into a false minimum, while
-the robust loss lets the other rows set the geometry, on which the re-seeding then finds them.
+:data:`BASIN_LOSS` loss at twice the residuals' robust deviation, re-seeded, and the plain
+least-squares fit follows from its answer.  Rows the start left in another branch of their
+pose fit the nominal geometry no worse than the others, so nothing marks them at first; plain
+least squares lets them pull the exits into a false minimum, while the robust loss lets the
+other rows set the geometry, on which the re-seeding then finds them.
 
 Robust fit.  With ``robust``, a first fit with that loss (``soft_l1`` or ``huber``, scale
 :data:`ROBUST_SCALE`), a second with the scale set to twice the residuals' robust standard
@@ -535,26 +535,29 @@ def _reseed(
     loss: tuple[str, float],
     dense: bool,
     budget: int | None = None,
-) -> tuple[Any, np.ndarray, bool, int]:
+) -> tuple[Any, np.ndarray, int]:
     """Refit every unknown pose from the :func:`_starts` on the fitted geometry; where one fits
     its row markedly better (a row left in another branch of its pose, which its few redundant
-    cables fit almost as well), take it and fit everything again.  ``(fit, x, moved, evaluations)``."""
+    cables fit almost as well), take it and fit everything again (on ``budget``), until no row
+    moves or :data:`RESEED_ROUNDS` times.  ``(fit, x, evaluations)``."""
     L = problem.layout
-    geometry, offsets, poses = problem.unpack(x)
     rows = L.unknown_rows
-    if not rows.size:
-        return fit, x, False, 0
-    fresh, cost = _multistart_poses(L.robot, geometry, offsets, data, rows)
-    r = problem.residuals(x)
-    now = np.bincount(L.rows, r * r, minlength=len(L.known_poses))[rows]
-    better = cost < RESEED_GAIN * now
-    if not better.any():
-        return fit, x, False, 0
-    poses[rows[better]] = fresh[better]
-    trial = _fit(problem, L.pack(geometry, offsets, poses), loss[0], loss[1], dense, budget)
-    if trial.cost >= fit.cost:
-        return fit, x, False, trial.nfev
-    return trial, trial.x, True, trial.nfev
+    evaluations = 0
+    for _ in range(RESEED_ROUNDS if rows.size else 0):
+        geometry, offsets, poses = problem.unpack(x)
+        fresh, cost = _multistart_poses(L.robot, geometry, offsets, data, rows)
+        r = problem.residuals(x)
+        now = np.bincount(L.rows, r * r, minlength=len(L.known_poses))[rows]
+        better = cost < RESEED_GAIN * now
+        if not better.any():
+            break
+        poses[rows[better]] = fresh[better]
+        trial = _fit(problem, L.pack(geometry, offsets, poses), loss[0], loss[1], dense, budget)
+        evaluations += trial.nfev
+        if trial.cost >= fit.cost:
+            break
+        fit, x = trial, trial.x
+    return fit, x, evaluations
 
 
 def _fit(problem: Problem, x0: np.ndarray, loss: str, scale: float, dense: bool, budget: int | None = None) -> Any:
@@ -583,10 +586,10 @@ def _descend(
     problem: Problem, data: Measurements, starts: list[np.ndarray], robust: str | None, scale: float, dense: bool
 ) -> tuple[Any, np.ndarray, tuple[str, float], int]:
     """The fit from the best of ``starts`` (module docstring): each fitted on a short budget by
-    the ``robust`` loss (:data:`BASIN_LOSS` without one) at ``scale`` and then at twice the
-    residuals' robust deviation, the best one to convergence, then re-seeded; without
-    ``robust``, the least-squares fit follows from there, re-seeded again.  ``(fit, x, loss,
-    evaluations)``."""
+    the ``robust`` loss at ``scale`` and then at twice the residuals' robust deviation (without
+    ``robust``, by :data:`BASIN_LOSS` at that deviation alone), the best one re-seeded, fitted
+    to convergence and re-seeded; without ``robust``, the least-squares fit follows from there,
+    re-seeded again.  ``(fit, x, loss, evaluations)``."""
     evaluations = 0
     best = None
     for x in starts:
@@ -604,38 +607,18 @@ def _descend(
     if len(starts) > 1:
         # rows in another branch of their pose move before the fit to convergence, which
         # would otherwise crawl along the valley they make
-        fit, x, spent = _reseeded(problem, data, fit, x, loss, dense, START_EVALUATIONS)
+        fit, x, spent = _reseed(problem, data, fit, x, loss, dense, START_EVALUATIONS)
         fit = _fit(problem, x, *loss, dense)
         x, evaluations = fit.x, evaluations + fit.nfev + spent
-    fit, x, spent = _reseeded(problem, data, fit, x, loss, dense)
+    fit, x, spent = _reseed(problem, data, fit, x, loss, dense)
     evaluations += spent
     if robust is None:
         loss = ("linear", 1.0)
         fit = _fit(problem, x, *loss, dense)
         evaluations += fit.nfev
-        fit, x, spent = _reseeded(problem, data, fit, fit.x, loss, dense)
+        fit, x, spent = _reseed(problem, data, fit, fit.x, loss, dense)
         evaluations += spent
     return fit, x, loss, evaluations
-
-
-def _reseeded(
-    problem: Problem,
-    data: Measurements,
-    fit: Any,
-    x: np.ndarray,
-    loss: tuple[str, float],
-    dense: bool,
-    budget: int | None = None,
-) -> tuple[Any, np.ndarray, int]:
-    """``fit`` re-seeded (:func:`_reseed`, its fits on ``budget``) until no row moves, at most
-    :data:`RESEED_ROUNDS` times: ``(fit, x, evaluations)``."""
-    evaluations = 0
-    for _ in range(RESEED_ROUNDS):
-        fit, x, moved, spent = _reseed(problem, data, fit, x, loss, dense, budget)
-        evaluations += spent
-        if not moved:
-            break
-    return fit, x, evaluations
 
 
 def _standardized(problem: Problem, x: np.ndarray) -> np.ndarray:
