@@ -147,9 +147,9 @@ START_ROUNDS = 40
 START_BRANCHES = 3
 START_GAIN = 0.01
 
-#: Iterations of the per-row Levenberg–Marquardt of the start, which stops sooner once every
-#: row has converged: its last step moved no coordinate by :data:`START_STEP` [m or rad], or
-#: its damping exceeds :data:`START_DAMPING` (its steps no longer lower its residuals).
+#: Iterations of the per-row Levenberg–Marquardt of the start.  A row stops sooner once it has
+#: converged: its last step moved no coordinate by :data:`START_STEP` [m or rad], or its damping
+#: exceeds :data:`START_DAMPING` (its steps no longer lower its residuals).
 START_ITERATIONS = 30
 START_DAMPING = 1e3
 START_STEP = 1e-9
@@ -419,7 +419,8 @@ def _project(
         if best is not None and found[0] >= best[0] * (1.0 - START_GAIN):
             break
         best = found
-        if not data.changes.any():
+        if not (rows.size and data.changes.any()):
+            # nothing to refit afresh, or no offsets to move: one descent is the answer
             break
         offsets, poses = found[1].copy(), found[2].copy()
     assert best is not None
