@@ -16,6 +16,18 @@ def pulley_robot(axis=(0.1, -0.2, 1.0), radius=0.07, name="spatial-8cable"):
     return robot.model_copy(update={"cables": tuple(c.model_copy(update=swivel) for c in robot.cables)})
 
 
+def built_robot(nominal, exits, radii):
+    """``nominal`` with its exits and pulley radii moved to where the robot was built."""
+    return nominal.model_copy(
+        update={
+            "cables": tuple(
+                c.model_copy(update={"exit": tuple(e), "swivel": c.swivel.model_copy(update={"radius": float(r)})})
+                for c, e, r in zip(nominal.cables, exits, radii)
+            )
+        }
+    )
+
+
 def poses(n, seed):
     rng = np.random.default_rng(seed)
     return np.column_stack([rng.uniform(-0.5, 0.5, (n, 3)), rng.uniform(-0.2, 0.2, (n, 3))])
@@ -50,14 +62,7 @@ def test_radii_and_exits_come_back_from_tracked_poses():
     rng = np.random.default_rng(3)
     exits = nominal.exits + rng.uniform(-0.02, 0.02, nominal.exits.shape)
     radii = rng.uniform(0.04, 0.06, 8)
-    built = nominal.model_copy(
-        update={
-            "cables": tuple(
-                c.model_copy(update={"exit": tuple(e), "swivel": c.swivel.model_copy(update={"radius": float(r)})})
-                for c, e, r in zip(nominal.cables, exits, radii)
-            )
-        }
-    )
+    built = built_robot(nominal, exits, radii)
     q = poses(60, 4)
     data = simulate_measurements(built, q, offsets=[1.5] * 8, sigma=1e-4, seed=5, known_poses=True)
     res = calibrate(nominal, data, estimate=("exits", "offsets", "radii"))
@@ -84,14 +89,7 @@ def test_pulley_robot_with_unknown_poses_and_far_offsets(name, seed):
     rng = np.random.default_rng(seed)
     exits = nominal.exits + rng.uniform(-0.05, 0.05, nominal.exits.shape)
     radii = 0.05 * rng.uniform(0.8, 1.2, nominal.n_cables)
-    built = nominal.model_copy(
-        update={
-            "cables": tuple(
-                c.model_copy(update={"exit": tuple(e), "swivel": c.swivel.model_copy(update={"radius": float(r)})})
-                for c, e, r in zip(nominal.cables, exits, radii)
-            )
-        }
-    )
+    built = built_robot(nominal, exits, radii)
     offsets = rng.uniform(1, 2, nominal.n_cables)
     sigma = 3e-4
     data = simulate_measurements(built, plan.poses, offsets=offsets, sigma=sigma, seed=seed)

@@ -311,6 +311,14 @@ def _move_poses(robot: Robot, poses: np.ndarray, Q: np.ndarray, t: np.ndarray, b
     return out
 
 
+def _start_prior(robot: Robot) -> np.ndarray:
+    """The ``s × s`` information of the start's orientation prior (:data:`START_PRIOR`)."""
+    s, d = robot.pose_size, robot.dimension
+    prior = np.zeros((s, s))
+    prior[d:, d:] = START_PRIOR**2 * np.eye(s - d)
+    return prior
+
+
 def _row_poses(
     robot: Robot,
     geometry: Geometry,
@@ -326,8 +334,7 @@ def _row_poses(
     U = rows.size
     mask = data.measured[rows]
     target = data.values[rows] + np.where(data.changes, offsets, 0.0)
-    prior = np.zeros((s, s))
-    prior[d:, d:] = START_PRIOR**2 * np.eye(s - d)
+    prior = _start_prior(robot)
 
     def evaluate(q: np.ndarray, k: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         part = partials(robot, geometry, q, np.repeat(np.arange(k.size), n), np.tile(np.arange(n), k.size))
@@ -438,9 +445,10 @@ def _descend_offsets(
 ) -> tuple[float, np.ndarray, np.ndarray]:
     """:func:`_project`'s descent from ``poses`` fitted to ``offsets``: ``(rms, offsets,
     poses)``, the poses fitted to those offsets."""
-    n, s, d = robot.n_cables, robot.pose_size, robot.dimension
+    n, s = robot.n_cables, robot.pose_size
     changed = np.flatnonzero(data.changes)
     unknown = np.isin(used, rows)
+    P = unknown[:, None, None] * _start_prior(robot)
     rr = np.repeat(used, n)
     cc = np.tile(np.arange(n), used.size)
     mask = data.measured[used]
@@ -473,9 +481,6 @@ def _descend_offsets(
         # the Gauss–Newton step of offsets and poses together, the poses eliminated (their
         # orientation prior included, as the rows' fits have it)
         Jq = part.pose.reshape(-1, n, s) * (mask & unknown[:, None])[..., None]
-        prior = np.zeros((s, s))
-        prior[d:, d:] = START_PRIOR**2 * np.eye(s - d)
-        P = unknown[:, None, None] * prior
         A = np.einsum("kis,kit->kst", Jq, Jq) + P + 1e-12 * np.eye(s)
         G = np.einsum("kis,ki->ks", Jq, r) + np.einsum("kst,kt->ks", P, poses[used])
         Jo = -(mask[:, :, None] & (np.arange(n)[:, None] == changed[None, :])[None]).astype(float)
